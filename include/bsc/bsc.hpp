@@ -1,0 +1,13 @@
+#pragma once
+// bsc: Basic Statecharts for C++20. Include this header to get the whole library.
+
+#include <bsc/chart.hpp>
+#include <bsc/compiled/machine.hpp>
+#include <bsc/configuration.hpp>
+#include <bsc/dsl/action.hpp>
+#include <bsc/dsl/guard.hpp>
+#include <bsc/dsl/row.hpp>
+#include <bsc/dsl/state.hpp>
+#include <bsc/dsl/tree.hpp>
+#include <bsc/observer.hpp>
+#include <bsc/outcome.hpp>

@@ -1,0 +1,66 @@
+#pragma once
+// bsc::make_chart: a chart is its state tree and its rows, checked when it is declared.
+
+#include <boost/hana/basic_tuple.hpp>
+#include <type_traits>
+#include <utility>
+
+#include <bsc/checks/checks.hpp>
+#include <bsc/detail/meta.hpp>
+#include <bsc/dsl/row.hpp>
+#include <bsc/dsl/tree.hpp>
+
+namespace bsc::error {
+
+template <class Argument>
+struct not_a_row {
+    static_assert(detail::dependent_false<Argument>,
+                  "bsc: after the state tree, every argument of make_chart must be a row: "
+                  "state<S> + event<E> [guard] / action = state<T>, state<S> [guard] = state<T>, "
+                  "state<S> + on_entry / action, or state<S> + on_exit / action");
+    static constexpr bool value = false;
+};
+
+template <class Root>
+struct root_must_be_composite {
+    static_assert(detail::dependent_false<Root>,
+                  "bsc: the first argument of make_chart is the root of the state tree and must be a "
+                  "bsc::composite<...>(...) or bsc::parallel<...>(...)");
+    static constexpr bool value = false;
+};
+
+}  // namespace bsc::error
+
+namespace bsc {
+
+/// A statechart over the context type `Context`: the state tree `Root` and the rows.
+/// Obtain one with make_chart; run it with bsc::machine.
+template <class Context, class Root, class... Rows>
+struct chart {
+    using context_type = Context;
+    using root_type = Root;
+    using row_types = detail::type_list<Rows...>;
+    boost::hana::basic_tuple<Rows...> rows;
+};
+
+/// Declares a chart: first the state tree, then the rows (transitions, entry and exit actions).
+/// The static checks run here; a malformed chart fails to compile with an error that names
+/// the offending state (see docs/checks.md).
+template <class Context, class Root, class... Rows>
+constexpr auto make_chart(Root, Rows... rows) {
+    if constexpr (!(detail::is_node<Root> &&
+                    (Root::node_kind == detail::kind::composite || Root::node_kind == detail::kind::parallel))) {
+        static_assert(error::root_must_be_composite<Root>::value);
+        return 0;
+    } else if constexpr (!(detail::is_row<Rows> && ...)) {
+        constexpr int bad = detail::index_in<std::false_type, std::bool_constant<detail::is_row<Rows>>...>();
+        static_assert(error::not_a_row<detail::at<bad, detail::type_list<Rows...>>>::value);
+        return 0;
+    } else {
+        using chart_type = chart<Context, Root, Rows...>;
+        static_assert(detail::check_chart<chart_type>());
+        return chart_type{boost::hana::make_basic_tuple(std::move(rows)...)};
+    }
+}
+
+}  // namespace bsc

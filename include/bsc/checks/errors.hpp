@@ -1,0 +1,122 @@
+#pragma once
+// The errors of the static checks. Each is a class template whose arguments are the
+// offending states (and events), so the compiler's "in instantiation of" line names them;
+// its static_assert says what is wrong and how to fix it. docs/checks.md lists them all.
+
+#include <bsc/detail/meta.hpp>
+
+namespace bsc::error {
+
+template <class State>
+struct unreachable_state {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: unreachable state: no initial entry, history or transition can activate this state "
+                  "from the initial configuration; add a transition to it (or make it an initial child), or "
+                  "remove it");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct dead_end_state {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: dead end: no transition leaves this non-final state (neither from it, nor from an "
+                  "ancestor, nor from an orthogonal region); add one, or declare it with bsc::final_state");
+    static constexpr bool value = false;
+};
+
+template <class Source, class Trigger>
+struct conflicting_transitions {
+    static_assert(detail::dependent_false<Source>,
+                  "bsc: conflicting transitions: two unguarded transitions leave this state on the same "
+                  "trigger, so the chart is nondeterministic; guard one of them or remove one");
+    static constexpr bool value = false;
+};
+
+template <class Source, class Trigger, class Target>
+struct shadowed_transition {
+    static_assert(detail::dependent_false<Source>,
+                  "bsc: shadowed transition: an earlier unguarded transition from this state on the same "
+                  "trigger always wins, so the transition to Target can never fire; guard the earlier one or "
+                  "move this one before it");
+    static constexpr bool value = false;
+};
+
+template <class Source, class Target>
+struct transition_between_orthogonal_regions {
+    static_assert(detail::dependent_false<Source>,
+                  "bsc: transition between orthogonal regions: the source and the target lie in different "
+                  "regions of the same parallel state, which are always active together; target a state "
+                  "outside the parallel state instead");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct state_not_in_chart {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: a row names a state that the state tree does not declare; declare it in the tree "
+                  "(bsc::state, bsc::composite, bsc::parallel or bsc::final_state) or fix the row");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct duplicate_state {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: this state is declared twice in the state tree; every state type may appear once");
+    static constexpr bool value = false;
+};
+
+template <class Composite>
+struct missing_initial_state {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: this composite state has no initial child; add bsc::initial<Child> to its declaration");
+    static constexpr bool value = false;
+};
+
+template <class Composite>
+struct multiple_initial_states {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: this composite state has more than one bsc::initial marker; keep exactly one");
+    static constexpr bool value = false;
+};
+
+template <class Composite, class Initial>
+struct initial_not_a_child {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: the initial state named by this composite is declared elsewhere in the tree, not as "
+                  "one of its children; name one of its own children in bsc::initial<...>");
+    static constexpr bool value = false;
+};
+
+template <class Composite>
+struct too_many_children {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: a composite state may have at most 255 children (its active child is kept in one "
+                  "byte); group some of them into a nested composite");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct eventless_livelock {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: eventless livelock: unguarded eventless transitions from this state lead back to it "
+                  "(or it has an unguarded eventless internal transition), so a dispatch would never settle; "
+                  "guard one of the transitions on the cycle or give it an event");
+    static constexpr bool value = false;
+};
+
+template <class Event>
+struct unhandled_event {
+    static_assert(detail::dependent_false<Event>,
+                  "bsc: no transition of this chart is triggered by the dispatched event type; add one, fix "
+                  "the event type, or dispatch with bsc::allow_unhandled to ignore it on purpose");
+    static constexpr bool value = false;
+};
+
+template <class Event>
+struct raised_event_not_in_chart {
+    static_assert(detail::dependent_false<Event>,
+                  "bsc: an action raises an event type that no transition of this chart handles");
+    static constexpr bool value = false;
+};
+
+}  // namespace bsc::error

@@ -1,0 +1,162 @@
+#pragma once
+// Compile-time dispatch plans: for a trigger, which states lead to a transition and, for each
+// basic state, which transitions are its candidates in SCXML order (deepest source first,
+// then declaration order). The compiled machine expands these into switches and straight-line
+// code; nothing here exists at run time.
+
+#include <array>
+
+#include <bsc/detail/topology.hpp>
+
+namespace bsc::detail {
+
+template <class An>
+struct plan {
+    static constexpr auto const& topo = An::topo;
+    static constexpr auto const& table = An::table;
+    static constexpr int N = An::N;
+    static constexpr int R = An::R;
+
+    static constexpr bool is_transition_on(int row, int trigger) {
+        return table.kinds[static_cast<std::size_t>(row)] == row_kind::transition &&
+               table.trigger[static_cast<std::size_t>(row)] == trigger;
+    }
+
+    static constexpr bool has_trigger(int trigger) {
+        for (int r = 0; r < R; ++r)
+            if (is_transition_on(r, trigger))
+                return true;
+        return false;
+    }
+
+    // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a descendant.
+    template <int Trigger>
+    static constexpr std::array<bool, static_cast<std::size_t>(N)> relevant = [] {
+        std::array<bool, static_cast<std::size_t>(N)> rel{};
+        for (int r = 0; r < R; ++r) {
+            if (!is_transition_on(r, Trigger))
+                continue;
+            int const src = table.source[static_cast<std::size_t>(r)];
+            for (int s = 0; s < N; ++s)
+                if (topo.contains(src, s) || topo.contains(s, src))
+                    rel[static_cast<std::size_t>(s)] = true;
+        }
+        return rel;
+    }();
+
+    static constexpr int candidate_count(int leaf, int trigger) {
+        int n = 0;
+        for (int a = leaf; a >= 0; a = topo.parent[static_cast<std::size_t>(a)])
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, trigger) && table.source[static_cast<std::size_t>(r)] == a)
+                    ++n;
+        return n;
+    }
+
+    template <int Leaf, int Trigger>
+    static constexpr auto candidates = [] {
+        std::array<int, static_cast<std::size_t>(candidate_count(Leaf, Trigger))> out{};
+        std::size_t n = 0;
+        for (int a = Leaf; a >= 0; a = topo.parent[static_cast<std::size_t>(a)])
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, Trigger) && table.source[static_cast<std::size_t>(r)] == a)
+                    out[n++] = r;
+        return out;
+    }();
+
+    static constexpr int transition_count(int trigger) {
+        int n = 0;
+        for (int r = 0; r < R; ++r) n += is_transition_on(r, trigger) ? 1 : 0;
+        return n;
+    }
+
+    // The transitions on a trigger, in declaration order; the selection buffer stores positions here.
+    template <int Trigger>
+    static constexpr auto transitions = [] {
+        std::array<int, static_cast<std::size_t>(transition_count(Trigger))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < R; ++r)
+            if (is_transition_on(r, Trigger))
+                out[n++] = r;
+        return out;
+    }();
+
+    template <int Trigger>
+    static constexpr int position_of(int row) {
+        for (std::size_t i = 0; i < transitions<Trigger>.size(); ++i)
+            if (transitions<Trigger>[i] == row)
+                return static_cast<int>(i);
+        return -1;
+    }
+
+    static constexpr int count_rows(row_kind k, int state) {
+        int n = 0;
+        for (int r = 0; r < R; ++r)
+            n += table.kinds[static_cast<std::size_t>(r)] == k && table.source[static_cast<std::size_t>(r)] == state;
+        return n;
+    }
+
+    // Entry or exit rows of a state, in declaration order.
+    template <row_kind K, int State>
+    static constexpr auto state_rows = [] {
+        std::array<int, static_cast<std::size_t>(count_rows(K, State))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < R; ++r)
+            if (table.kinds[static_cast<std::size_t>(r)] == K && table.source[static_cast<std::size_t>(r)] == State)
+                out[n++] = r;
+        return out;
+    }();
+
+    template <int S>
+    static constexpr auto children = [] {
+        std::array<int, static_cast<std::size_t>(topo.child_count[static_cast<std::size_t>(S)])> out{};
+        std::size_t n = 0;
+        for (int c = topo.first_child[static_cast<std::size_t>(S)]; c >= 0;
+             c = topo.next_sibling[static_cast<std::size_t>(c)])
+            out[n++] = c;
+        return out;
+    }();
+
+    // How many basic states can be active at once: the size of the selection buffer.
+    static constexpr int max_active_leaves(int s) {
+        auto const i = static_cast<std::size_t>(s);
+        if (topo.is_leaf(s))
+            return 1;
+        int result = 0;
+        for (int c = topo.first_child[i]; c >= 0; c = topo.next_sibling[static_cast<std::size_t>(c)]) {
+            int const m = max_active_leaves(c);
+            result = topo.kinds[i] == kind::parallel ? result + m : (m > result ? m : result);
+        }
+        return result;
+    }
+
+    static constexpr bool has_parallel = [] {
+        for (int s = 0; s < N; ++s)
+            if (topo.kinds[static_cast<std::size_t>(s)] == kind::parallel)
+                return true;
+        return false;
+    }();
+
+    // The initial configuration: every composite's byte at its initial child.
+    template <std::size_t Slots>
+    static constexpr std::array<std::uint8_t, Slots> initial_bytes() {
+        std::array<std::uint8_t, Slots> bytes{};
+        for (int s = 0; s < N; ++s) {
+            auto const i = static_cast<std::size_t>(s);
+            if (topo.slot[i] >= 0)
+                bytes[static_cast<std::size_t>(topo.slot[i])] =
+                    static_cast<std::uint8_t>(topo.ordinal[static_cast<std::size_t>(topo.initial[i])]);
+        }
+        return bytes;
+    }
+
+    // Two selected transitions conflict when their exit sets meet, i.e. when their domains nest.
+    static constexpr bool conflict(int r1, int r2) {
+        int const d1 = table.domain[static_cast<std::size_t>(r1)], d2 = table.domain[static_cast<std::size_t>(r2)];
+        if (d1 < 0 || d2 < 0)
+            return false;
+        return topo.contains(d1, d2) || topo.contains(d2, d1);
+    }
+};
+
+}  // namespace bsc::detail

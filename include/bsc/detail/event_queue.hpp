@@ -1,0 +1,85 @@
+#pragma once
+// The bounded internal event queue: a ring buffer of the chart's event types. No heap;
+// a push onto a full queue is refused and remembered, never written out of bounds.
+
+#include <array>
+#include <cstddef>
+#include <variant>
+
+#include <bsc/checks/errors.hpp>
+#include <bsc/detail/meta.hpp>
+
+namespace bsc::detail {
+
+template <std::size_t Capacity, class Events>
+class event_queue;
+
+template <std::size_t Capacity, class... Es>
+class event_queue<Capacity, type_list<Es...>> {
+public:
+    using value_type = std::variant<std::monostate, Es...>;
+
+    /// Raises e: queues it for processing after the current step. False if the queue is full.
+    template <class E>
+    constexpr bool operator()(E const& e) {
+        if constexpr (index_in<E, Es...>() < 0) {
+            static_assert(error::raised_event_not_in_chart<E>::value);
+            return false;
+        } else {
+            if (size_ == Capacity) {
+                overflowed_ = true;
+                return false;
+            }
+            items_[(head_ + size_) % Capacity] = value_type{std::in_place_type<E>, e};
+            ++size_;
+            return true;
+        }
+    }
+
+    constexpr bool empty() const { return size_ == 0; }
+    constexpr std::size_t size() const { return size_; }
+    static constexpr std::size_t capacity() { return Capacity; }
+    constexpr bool overflowed() const { return overflowed_; }
+    constexpr void clear_overflow() { overflowed_ = false; }
+    constexpr void clear() { head_ = size_ = 0; }
+
+    // Removes the oldest event and calls f with it.
+    template <class F>
+    constexpr void pop(F&& f) {
+        value_type item = std::move(items_[head_]);
+        head_ = (head_ + 1) % Capacity;
+        --size_;
+        visit_index<static_cast<int>(sizeof...(Es))>(static_cast<int>(item.index()) - 1,
+                                                     [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
+    }
+
+private:
+    std::array<value_type, Capacity> items_{};
+    std::size_t head_ = 0;
+    std::size_t size_ = 0;
+    bool overflowed_ = false;
+};
+
+// A chart whose queue capacity is zero raises nothing: every raise is an overflow.
+template <class... Es>
+class event_queue<0, type_list<Es...>> {
+public:
+    template <class E>
+    constexpr bool operator()(E const&) {
+        overflowed_ = true;
+        return false;
+    }
+    constexpr bool empty() const { return true; }
+    constexpr std::size_t size() const { return 0; }
+    static constexpr std::size_t capacity() { return 0; }
+    constexpr bool overflowed() const { return overflowed_; }
+    constexpr void clear_overflow() { overflowed_ = false; }
+    constexpr void clear() {}
+    template <class F>
+    constexpr void pop(F&&) {}
+
+private:
+    bool overflowed_ = false;
+};
+
+}  // namespace bsc::detail

@@ -1,0 +1,72 @@
+#pragma once
+// Guards, actions and entry/exit actions are plain callables that take as many of
+// (context, event, raise) as they need. These helpers call them with the longest
+// argument list they accept, so users never write parameters they do not use.
+
+#include <type_traits>
+#include <utility>
+
+#include <bsc/detail/meta.hpp>
+
+namespace bsc::error {
+
+template <class Callable>
+struct guard_signature_not_supported {
+    static_assert(detail::dependent_false<Callable>,
+                  "bsc: a guard must be callable as g(context const&, event const&), g(context const&) or g(), "
+                  "and return something convertible to bool; see the Callable type in this error");
+    static constexpr bool value = false;
+};
+
+template <class Callable>
+struct action_signature_not_supported {
+    static_assert(detail::dependent_false<Callable>,
+                  "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
+                  "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
+                  "Callable type in this error");
+    static constexpr bool value = false;
+};
+
+}  // namespace bsc::error
+
+namespace bsc::detail {
+
+template <class G, class Ctx, class E>
+constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) {
+    if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&, E const&>)
+        return static_cast<bool>(g(ctx, e));
+    else if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&>)
+        return static_cast<bool>(g(ctx));
+    else if constexpr (std::is_invocable_r_v<bool, G const&>)
+        return static_cast<bool>(g());
+    else
+        return error::guard_signature_not_supported<G>::value;
+}
+
+template <class A, class Ctx, class E, class Raise>
+constexpr void call_action(A const& a, Ctx& ctx, E const& e, Raise& raise) {
+    if constexpr (std::is_invocable_v<A const&, Ctx&, E const&, Raise&>)
+        a(ctx, e, raise);
+    else if constexpr (std::is_invocable_v<A const&, Ctx&, E const&>)
+        a(ctx, e);
+    else if constexpr (std::is_invocable_v<A const&, Ctx&>)
+        a(ctx);
+    else if constexpr (std::is_invocable_v<A const&>)
+        a();
+    else
+        static_assert(error::action_signature_not_supported<A>::value);
+}
+
+template <class A, class Ctx, class Raise>
+constexpr void call_state_action(A const& a, Ctx& ctx, Raise& raise) {
+    if constexpr (std::is_invocable_v<A const&, Ctx&, Raise&>)
+        a(ctx, raise);
+    else if constexpr (std::is_invocable_v<A const&, Ctx&>)
+        a(ctx);
+    else if constexpr (std::is_invocable_v<A const&>)
+        a();
+    else
+        static_assert(error::action_signature_not_supported<A>::value);
+}
+
+}  // namespace bsc::detail

@@ -1,0 +1,95 @@
+#pragma once
+// Small type-level toolkit: type lists, lookup by type and by position.
+// Everything heavier than this is done by constexpr functions over arrays.
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+namespace bsc::detail {
+
+template <class...>
+inline constexpr bool dependent_false = false;
+
+template <class T>
+struct type_id {
+    using type = T;
+};
+
+template <class... Ts>
+struct type_list {
+    static constexpr std::size_t size = sizeof...(Ts);
+};
+
+// Concatenation, written as a fold: (type_list<>{} + ... + lists{}).
+template <class... As, class... Bs>
+constexpr type_list<As..., Bs...> operator+(type_list<As...>, type_list<Bs...>) {
+    return {};
+}
+
+// Append-if-absent, written as a fold: (type_list<>{} | ... | type_id<T>{}).
+template <class... Ts, class U>
+constexpr auto operator|(type_list<Ts...>, type_id<U>) {
+    if constexpr ((std::is_same_v<Ts, U> || ...))
+        return type_list<Ts...>{};
+    else
+        return type_list<Ts..., U>{};
+}
+
+template <class... Ts>
+using unique_list = decltype((type_list<>{} | ... | type_id<Ts>{}));
+
+// Position of T in Ts..., or -1.
+template <class T, class... Ts>
+constexpr int index_in() {
+    constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
+    for (std::size_t i = 0; i < sizeof...(Ts); ++i)
+        if (same[i])
+            return static_cast<int>(i);
+    return -1;
+}
+
+template <class T, class List>
+struct index_of_impl;
+template <class T, class... Ts>
+struct index_of_impl<T, type_list<Ts...>> {
+    static constexpr int value = index_in<T, Ts...>();
+};
+template <class T, class List>
+inline constexpr int index_of = index_of_impl<T, List>::value;
+
+// O(1) access by position after one O(n) instantiation per list.
+template <std::size_t I, class T>
+struct indexed {
+    using type = T;
+};
+template <class Seq, class... Ts>
+struct indexer;
+template <std::size_t... Is, class... Ts>
+struct indexer<std::index_sequence<Is...>, Ts...> : indexed<Is, Ts>... {};
+template <std::size_t I, class T>
+indexed<I, T> select_indexed(indexed<I, T>);
+
+template <std::size_t I, class List>
+struct at_impl;
+template <std::size_t I, class... Ts>
+struct at_impl<I, type_list<Ts...>> {
+    using type = typename decltype(select_indexed<I>(indexer<std::index_sequence_for<Ts...>, Ts...>{}))::type;
+};
+template <std::size_t I, class List>
+using at = typename at_impl<I, List>::type;
+
+template <int I>
+using int_c = std::integral_constant<int, I>;
+
+// Calls f(int_c<I>) for the I in [0, N) equal to i; compilers turn the chain into a jump table.
+template <int N, class F, int... Is>
+constexpr void visit_index_impl(int i, F& f, std::integer_sequence<int, Is...>) {
+    (void)((i == Is ? (f(int_c<Is>{}), true) : false) || ...);
+}
+template <int N, class F>
+constexpr void visit_index(int i, F&& f) {
+    visit_index_impl<N>(i, f, std::make_integer_sequence<int, N>{});
+}
+
+}  // namespace bsc::detail

@@ -1,0 +1,253 @@
+#pragma once
+// The chart as data: the state tree and the rows flattened into constexpr arrays
+// (the BSTATE and BTRANS tables of the table-driven engine). The static checks and both
+// back ends read these arrays; only lookups by type use templates.
+
+#include <array>
+#include <cstdint>
+
+#include <bsc/detail/meta.hpp>
+#include <bsc/dsl/row.hpp>
+#include <bsc/dsl/tree.hpp>
+
+namespace bsc::detail {
+
+// The implicit top of every chart: the compound state above the user's root, so that a
+// transition may leave and re-enter the root (SCXML's <scxml> element plays this part).
+struct top_tag {};
+template <class Root>
+struct top_node : node_base {
+    using tag = top_tag;
+    static constexpr kind node_kind = kind::top;
+    static constexpr history hist = history::none;
+    static constexpr bool implicit = false;
+    using initials = type_list<typename Root::tag>;
+    using children = type_list<Root>;
+};
+
+template <class Node>
+constexpr auto flatten();
+template <class... C>
+constexpr auto flatten_all(type_list<C...>) {
+    return (type_list<>{} + ... + flatten<C>());
+}
+template <class Node>
+constexpr auto flatten() {
+    return type_list<Node>{} + flatten_all(typename Node::children{});
+}
+
+template <class List>
+struct tags_of;
+template <class... Nodes>
+struct tags_of<type_list<Nodes...>> {
+    using type = type_list<typename Nodes::tag...>;
+};
+
+enum class row_kind : std::uint8_t { transition, entry, exit };
+
+inline constexpr int eventless_id = -1;
+inline constexpr int no_state = -1;
+inline constexpr int unknown_state = -2;
+
+template <std::size_t N>
+struct topology {
+    std::array<kind, N> kinds{};
+    std::array<history, N> hist{};
+    std::array<int, N> parent{};
+    std::array<int, N> first_child{};
+    std::array<int, N> next_sibling{};
+    std::array<int, N> child_count{};
+    std::array<int, N> ordinal{};        // position among siblings
+    std::array<int, N> initial{};        // state index of the initial child, or -1
+    std::array<int, N> initial_count{};  // number of initial markers
+    std::array<int, N> depth{};
+    std::array<int, N> end{};   // one past the last descendant: d is below s iff s < d < end[s]
+    std::array<int, N> slot{};  // byte of the active configuration, composites only, else -1
+    std::array<bool, N> implicit{};
+    int slots = 0;
+
+    constexpr bool is_leaf(int s) const { return kinds[s] == kind::basic || kinds[s] == kind::final_state; }
+    constexpr bool is_compound(int s) const { return kinds[s] == kind::composite || kinds[s] == kind::top; }
+    // a is an ancestor of d, or d itself
+    constexpr bool contains(int a, int d) const { return a <= d && d < end[a]; }
+    constexpr bool is_proper_ancestor(int a, int d) const { return a < d && d < end[a]; }
+    constexpr int lca(int a, int b) const {
+        while (!contains(a, b)) a = parent[a];
+        return a;
+    }
+    // The child of `a` on the way down to its descendant d.
+    constexpr int child_toward(int a, int d) const {
+        int c = d;
+        while (parent[c] != a) c = parent[c];
+        return c;
+    }
+    constexpr bool under_parallel(int s) const {
+        for (int a = parent[s]; a >= 0; a = parent[a])
+            if (kinds[a] == kind::parallel)
+                return true;
+        return false;
+    }
+};
+
+template <class Node, std::size_t N>
+constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, int depth) {
+    t.kinds[static_cast<std::size_t>(index)] = Node::node_kind;
+    auto const i = static_cast<std::size_t>(index);
+    t.hist[i] = Node::hist;
+    t.parent[i] = parent;
+    t.ordinal[i] = ordinal;
+    t.depth[i] = depth;
+    t.implicit[i] = Node::implicit;
+    t.first_child[i] = -1;
+    t.next_sibling[i] = -1;
+    t.initial[i] = -1;
+    t.initial_count[i] = static_cast<int>(Node::initials::size);
+    t.slot[i] = -1;
+    if (Node::node_kind == kind::composite)
+        t.slot[i] = t.slots++;
+    int next = index + 1;
+    int count = 0;
+    int previous = -1;
+    [&]<class... C>(type_list<C...>) {
+        (
+            [&] {
+                int const child = next;
+                if (previous < 0)
+                    t.first_child[i] = child;
+                else
+                    t.next_sibling[static_cast<std::size_t>(previous)] = child;
+                previous = child;
+                next = fill_topology<C>(t, child, index, count++, depth + 1);
+            }(),
+            ...);
+        if constexpr (Node::initials::size == 1) {
+            constexpr int pos = index_in<at<0, typename Node::initials>, typename C::tag...>();
+            if (pos >= 0) {
+                int c = t.first_child[i];
+                for (int k = 0; k < pos; ++k) c = t.next_sibling[static_cast<std::size_t>(c)];
+                t.initial[i] = c;
+            }
+        }
+    }(typename Node::children{});
+    t.child_count[i] = count;
+    t.end[i] = next;
+    return next;
+}
+
+template <std::size_t R>
+struct row_table {
+    std::array<row_kind, R> kinds{};
+    std::array<int, R> source{};
+    std::array<int, R> target{};   // no_state for internal transitions and entry/exit rows
+    std::array<int, R> trigger{};  // eventless_id, or the event's position in the chart's event list
+    std::array<bool, R> guarded{};
+    std::array<int, R> domain{};  // the transition domain (SCXML), no_state if internal
+};
+
+template <class Row>
+constexpr row_kind kind_of_row() {
+    if constexpr (is_entry_row<Row>)
+        return row_kind::entry;
+    else if constexpr (is_exit_row<Row>)
+        return row_kind::exit;
+    else
+        return row_kind::transition;
+}
+
+template <class Row>
+struct trigger_event {
+    using type = void;
+};
+template <class S, class E, class G, class A, class T>
+struct trigger_event<transition_row<S, event_trigger<E>, G, A, T>> {
+    using type = E;
+};
+
+template <class List>
+struct event_list;
+template <class... Rows>
+struct event_list<type_list<Rows...>> {
+    using all = decltype((type_list<>{} | ... | type_id<typename trigger_event<Rows>::type>{}));
+};
+template <class List>
+struct drop_void;
+template <class... Es>
+struct drop_void<type_list<Es...>> {
+    using type = decltype((type_list<>{} + ... + std::conditional_t<std::is_void_v<Es>, type_list<>, type_list<Es>>{}));
+};
+
+template <class Tag, class Tags>
+constexpr int state_index() {
+    if constexpr (std::is_same_v<Tag, no_target>)
+        return no_state;
+    else {
+        constexpr int i = index_of<Tag, Tags>;
+        return i < 0 ? unknown_state : i;
+    }
+}
+
+template <std::size_t N>
+constexpr int transition_domain(topology<N> const& t, int source, int target) {
+    if (target < 0)
+        return no_state;
+    // SCXML: the nearest compound proper ancestor of the source that is a proper ancestor of the target.
+    for (int a = t.parent[static_cast<std::size_t>(source)]; a >= 0; a = t.parent[static_cast<std::size_t>(a)])
+        if (t.is_compound(a) && t.is_proper_ancestor(a, target))
+            return a;
+    return 0;
+}
+
+template <class Chart>
+struct analysis {
+    using root = typename Chart::root_type;
+    using nodes = decltype(flatten<top_node<root>>());
+    using tags = typename tags_of<nodes>::type;
+    using rows = typename Chart::row_types;
+    using events = typename drop_void<typename event_list<rows>::all>::type;
+
+    static constexpr int N = static_cast<int>(nodes::size);
+    static constexpr int R = static_cast<int>(rows::size);
+
+    static constexpr topology<nodes::size> topo = [] {
+        topology<nodes::size> t{};
+        fill_topology<top_node<root>>(t, 0, -1, 0, 0);
+        return t;
+    }();
+
+    static constexpr row_table<rows::size> table = []<class... Rs>(type_list<Rs...>) {
+        row_table<rows::size> r{};
+        std::size_t i = 0;
+        (
+            [&] {
+                r.kinds[i] = kind_of_row<Rs>();
+                r.source[i] = state_index<typename Rs::source, tags>();
+                r.target[i] = no_state;
+                r.trigger[i] = eventless_id;
+                r.guarded[i] = false;
+                if constexpr (is_transition_row<Rs>) {
+                    r.target[i] = state_index<typename Rs::target, tags>();
+                    r.guarded[i] = Rs::guarded;
+                    using E = typename trigger_event<Rs>::type;
+                    if constexpr (!std::is_void_v<E>)
+                        r.trigger[i] = index_of<E, events>;
+                }
+                r.domain[i] = no_state;
+                if (r.source[i] >= 0 && r.target[i] >= 0)
+                    r.domain[i] = transition_domain(topo, r.source[i], r.target[i]);
+                ++i;
+            }(),
+            ...);
+        return r;
+    }(rows{});
+
+    template <int I>
+    using tag_at = at<static_cast<std::size_t>(I), tags>;
+    template <int I>
+    using row_at = at<static_cast<std::size_t>(I), rows>;
+    template <class S>
+    static constexpr int index_of_state = index_of<S, tags>;
+    template <class E>
+    static constexpr int trigger_of = index_of<E, events>;
+};
+
+}  // namespace bsc::detail

@@ -1,0 +1,105 @@
+#pragma once
+// Actions: what a transition, an entry or an exit does to the context.
+// Wrap a callable with bsc::action to sequence it with the comma operator: / (a, b, c).
+
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include <bsc/detail/invoke.hpp>
+
+namespace bsc::detail {
+
+struct action_base {};  // marks bsc action wrappers, so operator, applies to them only
+
+template <class A>
+concept bsc_action = std::is_base_of_v<action_base, A>;
+
+template <class F>
+struct action_fn : action_base {
+    F fn;
+    template <class Ctx, class E, class Raise>
+    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const {
+        call_action(fn, ctx, e, raise);
+    }
+};
+
+template <class... As>
+struct action_seq : action_base {
+    std::tuple<As...> actions;
+    template <class Ctx, class E, class Raise>
+    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const {
+        std::apply([&](auto const&... a) { (a(ctx, e, raise), ...); }, actions);
+    }
+};
+
+template <class A>
+constexpr auto as_action(A a) {
+    if constexpr (bsc_action<A>)
+        return a;
+    else
+        return action_fn<A>{{}, std::move(a)};
+}
+
+template <class A>
+constexpr auto as_tuple(A a) {
+    if constexpr (requires { a.actions; })
+        return a.actions;
+    else
+        return std::tuple{as_action(std::move(a))};
+}
+
+template <class... As>
+constexpr auto make_seq(std::tuple<As...> t) {
+    return action_seq<As...>{{}, std::move(t)};
+}
+
+template <class L, class R>
+requires(bsc_action<L> || bsc_action<R>) constexpr auto operator,(L l, R r) {
+    return make_seq(std::tuple_cat(as_tuple(std::move(l)), as_tuple(std::move(r))));
+}
+
+struct no_action {
+    template <class Ctx, class E, class Raise>
+    constexpr void operator()(Ctx&, E const&, Raise&) const {}
+};
+
+// Entry and exit actions see the context (and the raise queue), never an event.
+template <class A>
+struct state_action {
+    A fn;
+    template <class Ctx, class Raise>
+    constexpr void operator()(Ctx& ctx, Raise& raise) const {
+        if constexpr (bsc_action<A>) {
+            struct entered {};
+            fn(ctx, entered{}, raise);
+        } else {
+            call_state_action(fn, ctx, raise);
+        }
+    }
+};
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// Wraps a callable as an action that sequences with others: `/ (bsc::action(a), b)`.
+template <class F>
+constexpr auto action(F f) {
+    return detail::action_fn<F>{{}, std::move(f)};
+}
+
+/// Runs the given actions in order.
+template <class... Fs>
+constexpr auto seq(Fs... fs) {
+    return detail::make_seq(std::tuple_cat(detail::as_tuple(std::move(fs))...));
+}
+
+/// An action that raises `e` into the machine's internal queue; it is processed after
+/// the current step, before dispatch returns.
+template <class E>
+constexpr auto raise(E e) {
+    return action([e](auto&, auto const&, auto& queue) { queue(e); });
+}
+
+}  // namespace bsc

@@ -1,0 +1,137 @@
+#pragma once
+// The chart's second table: transition rows `source + trigger [guard] / action = target`,
+// and entry/exit rows `state<S> + on_entry / action`.
+
+#include <type_traits>
+#include <utility>
+
+#include <bsc/dsl/action.hpp>
+#include <bsc/dsl/guard.hpp>
+
+namespace bsc::detail {
+
+template <class S>
+struct state_ref;
+
+/// The trigger of a transition taken without an event, when its guard holds.
+struct eventless_trigger {};
+template <class E>
+struct event_trigger {
+    using event = E;
+};
+/// The target of an internal transition: no exit, no entry.
+struct no_target {};
+
+struct row_base {};
+
+template <class Trigger, class G, class A>
+struct trigger_spec {
+    G guard;
+    A action;
+    template <class A2>
+    requires std::is_same_v<A, no_action>
+    constexpr auto operator/(A2 a) const {
+        using action_t = decltype(as_action(std::move(a)));
+        return trigger_spec<Trigger, G, action_t>{guard, as_action(std::move(a))};
+    }
+};
+
+template <class E>
+struct event_ref {
+    using event = E;
+    template <class G>
+    constexpr auto operator[](G g) const {
+        using guard_t = decltype(as_guard(std::move(g)));
+        return trigger_spec<event_trigger<E>, guard_t, no_action>{as_guard(std::move(g)), {}};
+    }
+    template <class A>
+    constexpr auto operator/(A a) const {
+        using action_t = decltype(as_action(std::move(a)));
+        return trigger_spec<event_trigger<E>, no_guard, action_t>{{}, as_action(std::move(a))};
+    }
+};
+
+template <class S, class Trigger, class G, class A, class T>
+struct transition_row : row_base {
+    using source = S;
+    using trigger = Trigger;
+    using target = T;
+    static constexpr bool guarded = !std::is_same_v<G, no_guard>;
+    G guard;
+    A action;
+
+    template <class T2>
+    requires std::is_same_v<T, no_target>
+    constexpr auto operator=(state_ref<T2>) const { return transition_row<S, Trigger, G, A, T2>{{}, guard, action}; }
+    template <class A2>
+    requires(std::is_same_v<A, no_action>&& std::is_same_v<T, no_target>) constexpr auto operator/(A2 a) const {
+        using action_t = decltype(as_action(std::move(a)));
+        return transition_row<S, Trigger, G, action_t, T>{{}, guard, as_action(std::move(a))};
+    }
+};
+
+template <class A>
+struct entry_spec {
+    A action;
+};
+template <class A>
+struct exit_spec {
+    A action;
+};
+struct entry_keyword {
+    template <class A>
+    constexpr auto operator/(A a) const {
+        return entry_spec<state_action<A>>{{std::move(a)}};
+    }
+};
+struct exit_keyword {
+    template <class A>
+    constexpr auto operator/(A a) const {
+        return exit_spec<state_action<A>>{{std::move(a)}};
+    }
+};
+
+template <class S, class A>
+struct entry_row : row_base {
+    using source = S;
+    A action;
+};
+template <class S, class A>
+struct exit_row : row_base {
+    using source = S;
+    A action;
+};
+
+template <class R>
+inline constexpr bool is_row = std::is_base_of_v<row_base, R>;
+template <class R>
+inline constexpr bool is_transition_row = false;
+template <class S, class Tr, class G, class A, class T>
+inline constexpr bool is_transition_row<transition_row<S, Tr, G, A, T>> = true;
+template <class R>
+inline constexpr bool is_entry_row = false;
+template <class S, class A>
+inline constexpr bool is_entry_row<entry_row<S, A>> = true;
+template <class R>
+inline constexpr bool is_exit_row = false;
+template <class S, class A>
+inline constexpr bool is_exit_row<exit_row<S, A>> = true;
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// Names an event type as a trigger: `state<A> + event<E> = state<B>`.
+template <class E>
+inline constexpr detail::event_ref<E> event{};
+
+/// Entry action row: `state<S> + on_entry / action`; runs each time S is entered.
+inline constexpr detail::entry_keyword on_entry{};
+
+/// Exit action row: `state<S> + on_exit / action`; runs each time S is exited.
+inline constexpr detail::exit_keyword on_exit{};
+
+/// The tag used in diagnostics and observers for a transition without an event.
+using eventless = detail::eventless_trigger;
+
+}  // namespace bsc

@@ -1,0 +1,56 @@
+#pragma once
+// bsc::state<S>: names state S, in the tree (as a basic state) and in the transition rows,
+// where it is the left-hand side of `state<S> + event<E> [guard] / action = state<T>`.
+
+#include <utility>
+
+#include <bsc/dsl/row.hpp>
+
+namespace bsc::detail {
+
+template <class S>
+struct state_ref {
+    using tag = S;
+
+    template <class E>
+    constexpr auto operator+(event_ref<E>) const {
+        return transition_row<S, event_trigger<E>, no_guard, no_action, no_target>{};
+    }
+    template <class Tr, class G, class A>
+    constexpr auto operator+(trigger_spec<Tr, G, A> spec) const {
+        return transition_row<S, Tr, G, A, no_target>{{}, std::move(spec.guard), std::move(spec.action)};
+    }
+    template <class A>
+    constexpr auto operator+(entry_spec<A> spec) const {
+        return entry_row<S, A>{{}, std::move(spec.action)};
+    }
+    template <class A>
+    constexpr auto operator+(exit_spec<A> spec) const {
+        return exit_row<S, A>{{}, std::move(spec.action)};
+    }
+    // Eventless transitions: state<S> [guard] / action = state<T>.
+    template <class G>
+    constexpr auto operator[](G g) const {
+        using guard_t = decltype(as_guard(std::move(g)));
+        return transition_row<S, eventless_trigger, guard_t, no_action, no_target>{{}, as_guard(std::move(g)), {}};
+    }
+    template <class A>
+    constexpr auto operator/(A a) const {
+        using action_t = decltype(as_action(std::move(a)));
+        return transition_row<S, eventless_trigger, no_guard, action_t, no_target>{{}, {}, as_action(std::move(a))};
+    }
+    template <class T>
+    constexpr auto operator=(state_ref<T>) const {
+        return transition_row<S, eventless_trigger, no_guard, no_action, T>{};
+    }
+};
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// Names the state S: a basic state in the tree, a source or target in a transition row.
+template <class S>
+inline constexpr detail::state_ref<S> state{};
+
+}  // namespace bsc

@@ -1,0 +1,206 @@
+#pragma once
+// The state tree: the chart's first table. Declarations are empty objects whose types
+// carry the structure (BSC's S, p and delta): basic, final, composite (OR) and parallel (AND)
+// states, initial children and history.
+
+#include <cstdint>
+#include <type_traits>
+
+#include <bsc/detail/meta.hpp>
+#include <bsc/dsl/state.hpp>
+
+namespace bsc::detail {
+
+enum class kind : std::uint8_t { top, basic, final_state, composite, parallel };
+enum class history : std::uint8_t { none, shallow, deep };
+
+struct node_base {};
+
+// A basic or final state. Implicit: declared by `initial<S>` alone, with no declaration of its own.
+template <class S, kind K, bool Implicit = false>
+struct leaf_node : node_base {
+    using tag = S;
+    static constexpr kind node_kind = K;
+    static constexpr history hist = history::none;
+    static constexpr bool implicit = Implicit;
+    using initials = type_list<>;
+    using children = type_list<>;
+};
+
+template <class S, history H, class Initials, class Children>
+struct composite_node : node_base {
+    using tag = S;
+    static constexpr kind node_kind = kind::composite;
+    static constexpr history hist = H;
+    static constexpr bool implicit = false;
+    using initials = Initials;
+    using children = Children;
+};
+
+template <class S, class Children>
+struct parallel_node : node_base {
+    using tag = S;
+    static constexpr kind node_kind = kind::parallel;
+    static constexpr history hist = history::none;
+    static constexpr bool implicit = false;
+    using initials = type_list<>;
+    using children = Children;
+};
+
+template <class S>
+struct initial_marker {
+    using tag = S;
+};
+template <history H>
+struct history_marker {};
+
+template <class A>
+inline constexpr bool is_node = std::is_base_of_v<node_base, A>;
+template <class A>
+inline constexpr bool is_state_ref = false;
+template <class S>
+inline constexpr bool is_state_ref<state_ref<S>> = true;
+template <class A>
+inline constexpr bool is_initial_marker = false;
+template <class S>
+inline constexpr bool is_initial_marker<initial_marker<S>> = true;
+template <class A>
+inline constexpr bool is_history_marker = false;
+template <history H>
+inline constexpr bool is_history_marker<history_marker<H>> = true;
+
+template <class A>
+struct tag_of {
+    using type = typename A::tag;
+};
+template <class S>
+struct tag_of<state_ref<S>> {
+    using type = S;
+};
+
+// The child declarations an argument of composite<S>(...) contributes, in document order.
+template <class A, class... Declared>
+constexpr auto children_from() {
+    if constexpr (is_node<A>)
+        return type_list<A>{};
+    else if constexpr (is_state_ref<A>)
+        return type_list<leaf_node<typename A::tag, kind::basic>>{};
+    else if constexpr (is_initial_marker<A>) {
+        using S = typename tag_of<A>::type;
+        if constexpr ((std::is_same_v<S, Declared> || ...))
+            return type_list<>{};
+        else
+            return type_list<leaf_node<S, kind::basic, true>>{};
+    } else
+        return type_list<>{};
+}
+
+template <class A>
+constexpr auto initials_from() {
+    if constexpr (is_initial_marker<A>)
+        return type_list<typename tag_of<A>::type>{};
+    else
+        return type_list<>{};
+}
+
+template <class A>
+constexpr auto declared_tag() {
+    if constexpr (is_node<A> || is_state_ref<A>)
+        return type_list<typename tag_of<A>::type>{};
+    else
+        return type_list<>{};
+}
+
+template <class... A>
+constexpr history history_from() {
+    history h = history::none;
+    ((h = std::is_same_v<A, history_marker<history::deep>>      ? history::deep
+          : std::is_same_v<A, history_marker<history::shallow>> ? history::shallow
+                                                                : h),
+     ...);
+    return h;
+}
+
+template <class Tags, class... A>
+struct composite_children;
+template <class... Declared, class... A>
+struct composite_children<type_list<Declared...>, A...> {
+    using type = decltype((type_list<>{} + ... + children_from<A, Declared...>()));
+};
+
+}  // namespace bsc::detail
+
+namespace bsc::error {
+
+template <class State, class Argument>
+struct not_a_state_declaration {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: an argument of this state's declaration is not a state or marker; a composite takes "
+                  "bsc::state, bsc::final_state, bsc::composite, bsc::parallel, bsc::initial, "
+                  "bsc::shallow_history and bsc::deep_history; a parallel state takes states only");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct conflicting_history_markers {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: this composite state has more than one history marker; keep one of "
+                  "bsc::shallow_history or bsc::deep_history");
+    static constexpr bool value = false;
+};
+
+}  // namespace bsc::error
+
+namespace bsc {
+
+/// Names the initial (default) child of a composite state. If no child of that name is
+/// declared among the composite's arguments, `initial<S>` also declares S as a basic child.
+template <class S>
+inline constexpr detail::initial_marker<S> initial{};
+
+/// Marks a composite state as remembering its last active child (restored on re-entry).
+inline constexpr detail::history_marker<detail::history::shallow> shallow_history{};
+
+/// Marks a composite state as remembering its whole last active sub-configuration.
+inline constexpr detail::history_marker<detail::history::deep> deep_history{};
+
+/// A final state: reaching it is an intended end, so it is exempt from the dead-end check.
+/// A final child of the root state halts the machine.
+template <class S>
+inline constexpr detail::leaf_node<S, detail::kind::final_state> final_state{};
+
+/// A composite (OR, exclusive) state: exactly one child is active while it is.
+template <class S, class... A>
+constexpr auto composite(A...) {
+    constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A> || detail::is_initial_marker<A> ||
+                                 detail::is_history_marker<A>)&&...);
+    constexpr int history_markers = (0 + ... + int{detail::is_history_marker<A>});
+    if constexpr (!all_valid) {
+        constexpr int bad =
+            detail::index_in<std::false_type,
+                             std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
+                                                detail::is_initial_marker<A> || detail::is_history_marker<A>>...>();
+        static_assert(error::not_a_state_declaration<S, detail::at<bad, detail::type_list<A...>>>::value);
+    } else if constexpr (history_markers > 1) {
+        static_assert(error::conflicting_history_markers<S>::value);
+    }
+    using declared = decltype((detail::type_list<>{} + ... + detail::declared_tag<A>()));
+    using children = typename detail::composite_children<declared, A...>::type;
+    using initials = decltype((detail::type_list<>{} + ... + detail::initials_from<A>()));
+    return detail::composite_node<S, detail::history_from<A...>(), initials, children>{};
+}
+
+/// A parallel (AND) state: all of its children (its components, or regions) are active while it is.
+template <class S, class... A>
+constexpr auto parallel(A...) {
+    constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A>)&&...);
+    if constexpr (!all_valid) {
+        constexpr int bad =
+            detail::index_in<std::false_type, std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>();
+        static_assert(error::not_a_state_declaration<S, detail::at<bad, detail::type_list<A...>>>::value);
+    }
+    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A>()));
+    return detail::parallel_node<S, children>{};
+}
+
+}  // namespace bsc

@@ -1,0 +1,36 @@
+#pragma once
+// What dispatch reports, and the limits a machine runs under.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace bsc {
+
+/// The result of dispatching one event (run to completion, internal events included).
+enum class outcome : std::uint8_t {
+    consumed,        ///< at least one transition fired for the dispatched event
+    ignored,         ///< no transition was enabled; the event was discarded (SCXML semantics)
+    queue_overflow,  ///< an action raised an event while the internal queue was full; that event was dropped
+    livelock,        ///< the eventless-step or internal-event limit was reached; the rest was abandoned
+    halted,          ///< the machine had reached a final child of its root; nothing was processed
+};
+
+/// The limits of a machine. Derive from it and override a member to change one:
+/// `struct my_limits : bsc::default_policy { static constexpr std::size_t queue_capacity = 32; };`
+struct default_policy {
+    /// Events an action may raise before the queue is drained; one more is an overflow.
+    static constexpr std::size_t queue_capacity = 8;
+    /// Eventless transitions taken in a row before dispatch reports a livelock.
+    static constexpr std::size_t max_eventless_steps = 64;
+    /// Internal events processed within one dispatch before it reports a livelock.
+    static constexpr std::size_t max_internal_events = 256;
+};
+
+/// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
+/// handles is then allowed (and ignored) instead of failing to compile.
+struct allow_unhandled_t {
+    explicit allow_unhandled_t() = default;
+};
+inline constexpr allow_unhandled_t allow_unhandled{};
+
+}  // namespace bsc

@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Generate the single-header distribution of bsc.
+
+Starting from include/bsc/bsc.hpp, every include that resolves to a file under
+include/ is inlined in place, depth-first and only the first time it is seen;
+all other includes are kept as they are. The output is deterministic so that it
+can be checked in and verified with --check.
+"""
+
+import argparse
+import difflib
+import re
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+INCLUDE_DIR = ROOT / "include"
+ENTRY = INCLUDE_DIR / "bsc" / "bsc.hpp"
+DEFAULT_OUTPUT = ROOT / "single_include" / "bsc" / "bsc.hpp"
+COMMAND = "python3 scripts/amalgamate.py"
+
+INCLUDE_RE = re.compile(r'^\s*#\s*include\s*(?:<(?P<angle>[^>]+)>|"(?P<quote>[^"]+)")')
+PRAGMA_ONCE_RE = re.compile(r"^\s*#\s*pragma\s+once\b")
+
+HEADER = f"""\
+#pragma once
+// bsc - Basic Statecharts, single-header distribution.
+// Generated from include/bsc/bsc.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+"""
+
+
+def relative(path: Path) -> str:
+    return path.relative_to(ROOT).as_posix()
+
+
+def resolve(line: str, current: Path) -> Path | None:
+    """Return the project header an include line refers to, or None to keep the line."""
+    match = INCLUDE_RE.match(line)
+    if not match:
+        return None
+    if match["angle"] is not None:
+        if not match["angle"].startswith("bsc/"):
+            return None
+        candidates = [INCLUDE_DIR / match["angle"]]
+    else:
+        candidates = [current.parent / match["quote"], INCLUDE_DIR / match["quote"]]
+    for candidate in candidates:
+        candidate = candidate.resolve()
+        if candidate.is_file() and candidate.is_relative_to(INCLUDE_DIR):
+            return candidate
+    if match["angle"] is not None:
+        # A missing <bsc/...> header would otherwise leak into the output unnoticed.
+        raise SystemExit(f"{relative(current)}: cannot resolve {line.strip()}")
+    return None
+
+
+def inline(path: Path, seen: set[Path], out: list[str]) -> None:
+    seen.add(path)
+    out.append(f"// begin {relative(path)}\n")
+    for line in path.read_text(encoding="utf-8").splitlines(keepends=True):
+        if PRAGMA_ONCE_RE.match(line):
+            continue
+        target = resolve(line, path)
+        if target is None:
+            out.append(line if line.endswith("\n") else line + "\n")
+        elif target not in seen:
+            inline(target, seen, out)
+    out.append(f"// end {relative(path)}\n")
+
+
+def amalgamate() -> str:
+    if not ENTRY.is_file():
+        raise SystemExit(f"missing entry header {relative(ENTRY)}")
+    out = [HEADER]
+    inline(ENTRY.resolve(), set(), out)
+    return "".join(out)
+
+
+def check(content: str, output: Path) -> int:
+    with tempfile.TemporaryDirectory() as tmp:
+        generated = Path(tmp) / output.name
+        generated.write_text(content, encoding="utf-8", newline="\n")
+        if not output.is_file():
+            print(f"{output} does not exist; run `{COMMAND}`", file=sys.stderr)
+            return 1
+        expected = generated.read_text(encoding="utf-8").splitlines(keepends=True)
+        actual = output.read_text(encoding="utf-8").splitlines(keepends=True)
+    if actual == expected:
+        print(f"{output} is up to date")
+        return 0
+    diff = list(difflib.unified_diff(actual, expected, str(output), "regenerated"))
+    added = sum(1 for d in diff if d.startswith("+") and not d.startswith("+++"))
+    removed = sum(1 for d in diff if d.startswith("-") and not d.startswith("---"))
+    print(f"{output} is out of date (+{added} -{removed} lines); run `{COMMAND}`",
+          file=sys.stderr)
+    sys.stderr.writelines(diff[:40])
+    if len(diff) > 40:
+        print(f"... {len(diff) - 40} more diff lines", file=sys.stderr)
+    return 1
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--output", type=Path, default=DEFAULT_OUTPUT,
+                        help=f"file to write or check (default: {relative(DEFAULT_OUTPUT)})")
+    parser.add_argument("--check", action="store_true",
+                        help="exit 1 if the output file differs from a fresh amalgamation")
+    args = parser.parse_args()
+
+    content = amalgamate()
+    if args.check:
+        return check(content, args.output)
+    args.output.parent.mkdir(parents=True, exist_ok=True)
+    args.output.write_text(content, encoding="utf-8", newline="\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

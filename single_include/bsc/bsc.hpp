@@ -1,0 +1,2533 @@
+#pragma once
+// bsc - Basic Statecharts, single-header distribution.
+// Generated from include/bsc/bsc.hpp by `python3 scripts/amalgamate.py`.
+// Do not edit: change the headers under include/ and regenerate.
+// begin include/bsc/bsc.hpp
+// bsc: Basic Statecharts for C++20. Include this header to get the whole library.
+
+// begin include/bsc/chart.hpp
+// bsc::make_chart: a chart is its state tree and its rows, checked when it is declared.
+
+#include <boost/hana/basic_tuple.hpp>
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/checks/checks.hpp
+// Runs every static check of a chart and turns a finding into the error that names it.
+// Structural checks come first: the others assume a well-formed tree.
+
+// begin include/bsc/checks/determinism.hpp
+// Determinism: two unguarded transitions on the same source and trigger conflict; a
+// transition after an unguarded one on the same source and trigger is shadowed.
+
+// begin include/bsc/detail/topology.hpp
+// The chart as data: the state tree and the rows flattened into constexpr arrays
+// (the BSTATE and BTRANS tables of the table-driven engine). The static checks and both
+// back ends read these arrays; only lookups by type use templates.
+
+#include <array>
+#include <cstdint>
+
+// begin include/bsc/detail/meta.hpp
+// Small type-level toolkit: type lists, lookup by type and by position.
+// Everything heavier than this is done by constexpr functions over arrays.
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+namespace bsc::detail {
+
+template <class...>
+inline constexpr bool dependent_false = false;
+
+template <class T>
+struct type_id {
+    using type = T;
+};
+
+template <class... Ts>
+struct type_list {
+    static constexpr std::size_t size = sizeof...(Ts);
+};
+
+// Concatenation, written as a fold: (type_list<>{} + ... + lists{}).
+template <class... As, class... Bs>
+constexpr type_list<As..., Bs...> operator+(type_list<As...>, type_list<Bs...>) {
+    return {};
+}
+
+// Append-if-absent, written as a fold: (type_list<>{} | ... | type_id<T>{}).
+template <class... Ts, class U>
+constexpr auto operator|(type_list<Ts...>, type_id<U>) {
+    if constexpr ((std::is_same_v<Ts, U> || ...))
+        return type_list<Ts...>{};
+    else
+        return type_list<Ts..., U>{};
+}
+
+template <class... Ts>
+using unique_list = decltype((type_list<>{} | ... | type_id<Ts>{}));
+
+// Position of T in Ts..., or -1.
+template <class T, class... Ts>
+constexpr int index_in() {
+    constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
+    for (std::size_t i = 0; i < sizeof...(Ts); ++i)
+        if (same[i])
+            return static_cast<int>(i);
+    return -1;
+}
+
+template <class T, class List>
+struct index_of_impl;
+template <class T, class... Ts>
+struct index_of_impl<T, type_list<Ts...>> {
+    static constexpr int value = index_in<T, Ts...>();
+};
+template <class T, class List>
+inline constexpr int index_of = index_of_impl<T, List>::value;
+
+// O(1) access by position after one O(n) instantiation per list.
+template <std::size_t I, class T>
+struct indexed {
+    using type = T;
+};
+template <class Seq, class... Ts>
+struct indexer;
+template <std::size_t... Is, class... Ts>
+struct indexer<std::index_sequence<Is...>, Ts...> : indexed<Is, Ts>... {};
+template <std::size_t I, class T>
+indexed<I, T> select_indexed(indexed<I, T>);
+
+template <std::size_t I, class List>
+struct at_impl;
+template <std::size_t I, class... Ts>
+struct at_impl<I, type_list<Ts...>> {
+    using type = typename decltype(select_indexed<I>(indexer<std::index_sequence_for<Ts...>, Ts...>{}))::type;
+};
+template <std::size_t I, class List>
+using at = typename at_impl<I, List>::type;
+
+template <int I>
+using int_c = std::integral_constant<int, I>;
+
+// Calls f(int_c<I>) for the I in [0, N) equal to i; compilers turn the chain into a jump table.
+template <int N, class F, int... Is>
+constexpr void visit_index_impl(int i, F& f, std::integer_sequence<int, Is...>) {
+    (void)((i == Is ? (f(int_c<Is>{}), true) : false) || ...);
+}
+template <int N, class F>
+constexpr void visit_index(int i, F&& f) {
+    visit_index_impl<N>(i, f, std::make_integer_sequence<int, N>{});
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/meta.hpp
+// begin include/bsc/dsl/row.hpp
+// The chart's second table: transition rows `source + trigger [guard] / action = target`,
+// and entry/exit rows `state<S> + on_entry / action`.
+
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/dsl/action.hpp
+// Actions: what a transition, an entry or an exit does to the context.
+// Wrap a callable with bsc::action to sequence it with the comma operator: / (a, b, c).
+
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/detail/invoke.hpp
+// Guards, actions and entry/exit actions are plain callables that take as many of
+// (context, event, raise) as they need. These helpers call them with the longest
+// argument list they accept, so users never write parameters they do not use.
+
+#include <type_traits>
+#include <utility>
+
+
+namespace bsc::error {
+
+template <class Callable>
+struct guard_signature_not_supported {
+    static_assert(detail::dependent_false<Callable>,
+                  "bsc: a guard must be callable as g(context const&, event const&), g(context const&) or g(), "
+                  "and return something convertible to bool; see the Callable type in this error");
+    static constexpr bool value = false;
+};
+
+template <class Callable>
+struct action_signature_not_supported {
+    static_assert(detail::dependent_false<Callable>,
+                  "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
+                  "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
+                  "Callable type in this error");
+    static constexpr bool value = false;
+};
+
+}  // namespace bsc::error
+
+namespace bsc::detail {
+
+template <class G, class Ctx, class E>
+constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) {
+    if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&, E const&>)
+        return static_cast<bool>(g(ctx, e));
+    else if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&>)
+        return static_cast<bool>(g(ctx));
+    else if constexpr (std::is_invocable_r_v<bool, G const&>)
+        return static_cast<bool>(g());
+    else
+        return error::guard_signature_not_supported<G>::value;
+}
+
+template <class A, class Ctx, class E, class Raise>
+constexpr void call_action(A const& a, Ctx& ctx, E const& e, Raise& raise) {
+    if constexpr (std::is_invocable_v<A const&, Ctx&, E const&, Raise&>)
+        a(ctx, e, raise);
+    else if constexpr (std::is_invocable_v<A const&, Ctx&, E const&>)
+        a(ctx, e);
+    else if constexpr (std::is_invocable_v<A const&, Ctx&>)
+        a(ctx);
+    else if constexpr (std::is_invocable_v<A const&>)
+        a();
+    else
+        static_assert(error::action_signature_not_supported<A>::value);
+}
+
+template <class A, class Ctx, class Raise>
+constexpr void call_state_action(A const& a, Ctx& ctx, Raise& raise) {
+    if constexpr (std::is_invocable_v<A const&, Ctx&, Raise&>)
+        a(ctx, raise);
+    else if constexpr (std::is_invocable_v<A const&, Ctx&>)
+        a(ctx);
+    else if constexpr (std::is_invocable_v<A const&>)
+        a();
+    else
+        static_assert(error::action_signature_not_supported<A>::value);
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/invoke.hpp
+
+namespace bsc::detail {
+
+struct action_base {};  // marks bsc action wrappers, so operator, applies to them only
+
+template <class A>
+concept bsc_action = std::is_base_of_v<action_base, A>;
+
+template <class F>
+struct action_fn : action_base {
+    F fn;
+    template <class Ctx, class E, class Raise>
+    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const {
+        call_action(fn, ctx, e, raise);
+    }
+};
+
+template <class... As>
+struct action_seq : action_base {
+    std::tuple<As...> actions;
+    template <class Ctx, class E, class Raise>
+    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const {
+        std::apply([&](auto const&... a) { (a(ctx, e, raise), ...); }, actions);
+    }
+};
+
+template <class A>
+constexpr auto as_action(A a) {
+    if constexpr (bsc_action<A>)
+        return a;
+    else
+        return action_fn<A>{{}, std::move(a)};
+}
+
+template <class A>
+constexpr auto as_tuple(A a) {
+    if constexpr (requires { a.actions; })
+        return a.actions;
+    else
+        return std::tuple{as_action(std::move(a))};
+}
+
+template <class... As>
+constexpr auto make_seq(std::tuple<As...> t) {
+    return action_seq<As...>{{}, std::move(t)};
+}
+
+template <class L, class R>
+requires(bsc_action<L> || bsc_action<R>) constexpr auto operator,(L l, R r) {
+    return make_seq(std::tuple_cat(as_tuple(std::move(l)), as_tuple(std::move(r))));
+}
+
+struct no_action {
+    template <class Ctx, class E, class Raise>
+    constexpr void operator()(Ctx&, E const&, Raise&) const {}
+};
+
+// Entry and exit actions see the context (and the raise queue), never an event.
+template <class A>
+struct state_action {
+    A fn;
+    template <class Ctx, class Raise>
+    constexpr void operator()(Ctx& ctx, Raise& raise) const {
+        if constexpr (bsc_action<A>) {
+            struct entered {};
+            fn(ctx, entered{}, raise);
+        } else {
+            call_state_action(fn, ctx, raise);
+        }
+    }
+};
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// Wraps a callable as an action that sequences with others: `/ (bsc::action(a), b)`.
+template <class F>
+constexpr auto action(F f) {
+    return detail::action_fn<F>{{}, std::move(f)};
+}
+
+/// Runs the given actions in order.
+template <class... Fs>
+constexpr auto seq(Fs... fs) {
+    return detail::make_seq(std::tuple_cat(detail::as_tuple(std::move(fs))...));
+}
+
+/// An action that raises `e` into the machine's internal queue; it is processed after
+/// the current step, before dispatch returns.
+template <class E>
+constexpr auto raise(E e) {
+    return action([e](auto&, auto const&, auto& queue) { queue(e); });
+}
+
+}  // namespace bsc
+// end include/bsc/dsl/action.hpp
+// begin include/bsc/dsl/guard.hpp
+// Guards: conditions on the context (and the event) that enable a transition.
+// Wrap a callable with bsc::guard to compose it with !, && and ||.
+
+#include <type_traits>
+#include <utility>
+
+
+namespace bsc::detail {
+
+struct guard_base {};  // marks bsc guard wrappers, so the operators below apply to them only
+
+template <class G>
+concept bsc_guard = std::is_base_of_v<guard_base, G>;
+
+template <class F>
+struct guard_fn : guard_base {
+    F fn;
+    template <class Ctx, class E>
+    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+        return call_guard(fn, ctx, e);
+    }
+};
+
+template <class G>
+struct not_guard : guard_base {
+    G g;
+    template <class Ctx, class E>
+    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+        return !g(ctx, e);
+    }
+};
+
+template <class L, class R>
+struct and_guard : guard_base {
+    L l;
+    R r;
+    template <class Ctx, class E>
+    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+        return l(ctx, e) && r(ctx, e);
+    }
+};
+
+template <class L, class R>
+struct or_guard : guard_base {
+    L l;
+    R r;
+    template <class Ctx, class E>
+    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+        return l(ctx, e) || r(ctx, e);
+    }
+};
+
+// The guard stored in a transition: always callable as g(ctx, event).
+template <class G>
+constexpr auto as_guard(G g) {
+    if constexpr (bsc_guard<G>)
+        return g;
+    else
+        return guard_fn<G>{{}, std::move(g)};
+}
+
+struct no_guard {
+    template <class Ctx, class E>
+    constexpr bool operator()(Ctx const&, E const&) const {
+        return true;
+    }
+};
+
+template <bsc_guard G>
+constexpr auto operator!(G g) {
+    return not_guard<G>{{}, std::move(g)};
+}
+template <bsc_guard L, class R>
+constexpr auto operator&&(L l, R r) {
+    using RG = decltype(as_guard(std::move(r)));
+    return and_guard<L, RG>{{}, std::move(l), as_guard(std::move(r))};
+}
+template <class L, bsc_guard R>
+requires(!bsc_guard<L>) constexpr auto operator&&(L l, R r) {
+    using LG = decltype(as_guard(std::move(l)));
+    return and_guard<LG, R>{{}, as_guard(std::move(l)), std::move(r)};
+}
+template <bsc_guard L, class R>
+constexpr auto operator||(L l, R r) {
+    using RG = decltype(as_guard(std::move(r)));
+    return or_guard<L, RG>{{}, std::move(l), as_guard(std::move(r))};
+}
+template <class L, bsc_guard R>
+requires(!bsc_guard<L>) constexpr auto operator||(L l, R r) {
+    using LG = decltype(as_guard(std::move(l)));
+    return or_guard<LG, R>{{}, as_guard(std::move(l)), std::move(r)};
+}
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// Wraps a callable as a guard that composes with `!`, `&&` and `||`.
+/// The callable is `g(context const&, event const&)`, `g(context const&)` or `g()`, returning bool.
+template <class F>
+constexpr auto guard(F f) {
+    return detail::guard_fn<F>{{}, std::move(f)};
+}
+
+}  // namespace bsc
+// end include/bsc/dsl/guard.hpp
+
+namespace bsc::detail {
+
+template <class S>
+struct state_ref;
+
+/// The trigger of a transition taken without an event, when its guard holds.
+struct eventless_trigger {};
+template <class E>
+struct event_trigger {
+    using event = E;
+};
+/// The target of an internal transition: no exit, no entry.
+struct no_target {};
+
+struct row_base {};
+
+template <class Trigger, class G, class A>
+struct trigger_spec {
+    G guard;
+    A action;
+    template <class A2>
+    requires std::is_same_v<A, no_action>
+    constexpr auto operator/(A2 a) const {
+        using action_t = decltype(as_action(std::move(a)));
+        return trigger_spec<Trigger, G, action_t>{guard, as_action(std::move(a))};
+    }
+};
+
+template <class E>
+struct event_ref {
+    using event = E;
+    template <class G>
+    constexpr auto operator[](G g) const {
+        using guard_t = decltype(as_guard(std::move(g)));
+        return trigger_spec<event_trigger<E>, guard_t, no_action>{as_guard(std::move(g)), {}};
+    }
+    template <class A>
+    constexpr auto operator/(A a) const {
+        using action_t = decltype(as_action(std::move(a)));
+        return trigger_spec<event_trigger<E>, no_guard, action_t>{{}, as_action(std::move(a))};
+    }
+};
+
+template <class S, class Trigger, class G, class A, class T>
+struct transition_row : row_base {
+    using source = S;
+    using trigger = Trigger;
+    using target = T;
+    static constexpr bool guarded = !std::is_same_v<G, no_guard>;
+    G guard;
+    A action;
+
+    template <class T2>
+    requires std::is_same_v<T, no_target>
+    constexpr auto operator=(state_ref<T2>) const { return transition_row<S, Trigger, G, A, T2>{{}, guard, action}; }
+    template <class A2>
+    requires(std::is_same_v<A, no_action>&& std::is_same_v<T, no_target>) constexpr auto operator/(A2 a) const {
+        using action_t = decltype(as_action(std::move(a)));
+        return transition_row<S, Trigger, G, action_t, T>{{}, guard, as_action(std::move(a))};
+    }
+};
+
+template <class A>
+struct entry_spec {
+    A action;
+};
+template <class A>
+struct exit_spec {
+    A action;
+};
+struct entry_keyword {
+    template <class A>
+    constexpr auto operator/(A a) const {
+        return entry_spec<state_action<A>>{{std::move(a)}};
+    }
+};
+struct exit_keyword {
+    template <class A>
+    constexpr auto operator/(A a) const {
+        return exit_spec<state_action<A>>{{std::move(a)}};
+    }
+};
+
+template <class S, class A>
+struct entry_row : row_base {
+    using source = S;
+    A action;
+};
+template <class S, class A>
+struct exit_row : row_base {
+    using source = S;
+    A action;
+};
+
+template <class R>
+inline constexpr bool is_row = std::is_base_of_v<row_base, R>;
+template <class R>
+inline constexpr bool is_transition_row = false;
+template <class S, class Tr, class G, class A, class T>
+inline constexpr bool is_transition_row<transition_row<S, Tr, G, A, T>> = true;
+template <class R>
+inline constexpr bool is_entry_row = false;
+template <class S, class A>
+inline constexpr bool is_entry_row<entry_row<S, A>> = true;
+template <class R>
+inline constexpr bool is_exit_row = false;
+template <class S, class A>
+inline constexpr bool is_exit_row<exit_row<S, A>> = true;
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// Names an event type as a trigger: `state<A> + event<E> = state<B>`.
+template <class E>
+inline constexpr detail::event_ref<E> event{};
+
+/// Entry action row: `state<S> + on_entry / action`; runs each time S is entered.
+inline constexpr detail::entry_keyword on_entry{};
+
+/// Exit action row: `state<S> + on_exit / action`; runs each time S is exited.
+inline constexpr detail::exit_keyword on_exit{};
+
+/// The tag used in diagnostics and observers for a transition without an event.
+using eventless = detail::eventless_trigger;
+
+}  // namespace bsc
+// end include/bsc/dsl/row.hpp
+// begin include/bsc/dsl/tree.hpp
+// The state tree: the chart's first table. Declarations are empty objects whose types
+// carry the structure (BSC's S, p and delta): basic, final, composite (OR) and parallel (AND)
+// states, initial children and history.
+
+#include <cstdint>
+#include <type_traits>
+
+// begin include/bsc/dsl/state.hpp
+// bsc::state<S>: names state S, in the tree (as a basic state) and in the transition rows,
+// where it is the left-hand side of `state<S> + event<E> [guard] / action = state<T>`.
+
+#include <utility>
+
+
+namespace bsc::detail {
+
+template <class S>
+struct state_ref {
+    using tag = S;
+
+    template <class E>
+    constexpr auto operator+(event_ref<E>) const {
+        return transition_row<S, event_trigger<E>, no_guard, no_action, no_target>{};
+    }
+    template <class Tr, class G, class A>
+    constexpr auto operator+(trigger_spec<Tr, G, A> spec) const {
+        return transition_row<S, Tr, G, A, no_target>{{}, std::move(spec.guard), std::move(spec.action)};
+    }
+    template <class A>
+    constexpr auto operator+(entry_spec<A> spec) const {
+        return entry_row<S, A>{{}, std::move(spec.action)};
+    }
+    template <class A>
+    constexpr auto operator+(exit_spec<A> spec) const {
+        return exit_row<S, A>{{}, std::move(spec.action)};
+    }
+    // Eventless transitions: state<S> [guard] / action = state<T>.
+    template <class G>
+    constexpr auto operator[](G g) const {
+        using guard_t = decltype(as_guard(std::move(g)));
+        return transition_row<S, eventless_trigger, guard_t, no_action, no_target>{{}, as_guard(std::move(g)), {}};
+    }
+    template <class A>
+    constexpr auto operator/(A a) const {
+        using action_t = decltype(as_action(std::move(a)));
+        return transition_row<S, eventless_trigger, no_guard, action_t, no_target>{{}, {}, as_action(std::move(a))};
+    }
+    template <class T>
+    constexpr auto operator=(state_ref<T>) const {
+        return transition_row<S, eventless_trigger, no_guard, no_action, T>{};
+    }
+};
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// Names the state S: a basic state in the tree, a source or target in a transition row.
+template <class S>
+inline constexpr detail::state_ref<S> state{};
+
+}  // namespace bsc
+// end include/bsc/dsl/state.hpp
+
+namespace bsc::detail {
+
+enum class kind : std::uint8_t { top, basic, final_state, composite, parallel };
+enum class history : std::uint8_t { none, shallow, deep };
+
+struct node_base {};
+
+// A basic or final state. Implicit: declared by `initial<S>` alone, with no declaration of its own.
+template <class S, kind K, bool Implicit = false>
+struct leaf_node : node_base {
+    using tag = S;
+    static constexpr kind node_kind = K;
+    static constexpr history hist = history::none;
+    static constexpr bool implicit = Implicit;
+    using initials = type_list<>;
+    using children = type_list<>;
+};
+
+template <class S, history H, class Initials, class Children>
+struct composite_node : node_base {
+    using tag = S;
+    static constexpr kind node_kind = kind::composite;
+    static constexpr history hist = H;
+    static constexpr bool implicit = false;
+    using initials = Initials;
+    using children = Children;
+};
+
+template <class S, class Children>
+struct parallel_node : node_base {
+    using tag = S;
+    static constexpr kind node_kind = kind::parallel;
+    static constexpr history hist = history::none;
+    static constexpr bool implicit = false;
+    using initials = type_list<>;
+    using children = Children;
+};
+
+template <class S>
+struct initial_marker {
+    using tag = S;
+};
+template <history H>
+struct history_marker {};
+
+template <class A>
+inline constexpr bool is_node = std::is_base_of_v<node_base, A>;
+template <class A>
+inline constexpr bool is_state_ref = false;
+template <class S>
+inline constexpr bool is_state_ref<state_ref<S>> = true;
+template <class A>
+inline constexpr bool is_initial_marker = false;
+template <class S>
+inline constexpr bool is_initial_marker<initial_marker<S>> = true;
+template <class A>
+inline constexpr bool is_history_marker = false;
+template <history H>
+inline constexpr bool is_history_marker<history_marker<H>> = true;
+
+template <class A>
+struct tag_of {
+    using type = typename A::tag;
+};
+template <class S>
+struct tag_of<state_ref<S>> {
+    using type = S;
+};
+
+// The child declarations an argument of composite<S>(...) contributes, in document order.
+template <class A, class... Declared>
+constexpr auto children_from() {
+    if constexpr (is_node<A>)
+        return type_list<A>{};
+    else if constexpr (is_state_ref<A>)
+        return type_list<leaf_node<typename A::tag, kind::basic>>{};
+    else if constexpr (is_initial_marker<A>) {
+        using S = typename tag_of<A>::type;
+        if constexpr ((std::is_same_v<S, Declared> || ...))
+            return type_list<>{};
+        else
+            return type_list<leaf_node<S, kind::basic, true>>{};
+    } else
+        return type_list<>{};
+}
+
+template <class A>
+constexpr auto initials_from() {
+    if constexpr (is_initial_marker<A>)
+        return type_list<typename tag_of<A>::type>{};
+    else
+        return type_list<>{};
+}
+
+template <class A>
+constexpr auto declared_tag() {
+    if constexpr (is_node<A> || is_state_ref<A>)
+        return type_list<typename tag_of<A>::type>{};
+    else
+        return type_list<>{};
+}
+
+template <class... A>
+constexpr history history_from() {
+    history h = history::none;
+    ((h = std::is_same_v<A, history_marker<history::deep>>      ? history::deep
+          : std::is_same_v<A, history_marker<history::shallow>> ? history::shallow
+                                                                : h),
+     ...);
+    return h;
+}
+
+template <class Tags, class... A>
+struct composite_children;
+template <class... Declared, class... A>
+struct composite_children<type_list<Declared...>, A...> {
+    using type = decltype((type_list<>{} + ... + children_from<A, Declared...>()));
+};
+
+}  // namespace bsc::detail
+
+namespace bsc::error {
+
+template <class State, class Argument>
+struct not_a_state_declaration {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: an argument of this state's declaration is not a state or marker; a composite takes "
+                  "bsc::state, bsc::final_state, bsc::composite, bsc::parallel, bsc::initial, "
+                  "bsc::shallow_history and bsc::deep_history; a parallel state takes states only");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct conflicting_history_markers {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: this composite state has more than one history marker; keep one of "
+                  "bsc::shallow_history or bsc::deep_history");
+    static constexpr bool value = false;
+};
+
+}  // namespace bsc::error
+
+namespace bsc {
+
+/// Names the initial (default) child of a composite state. If no child of that name is
+/// declared among the composite's arguments, `initial<S>` also declares S as a basic child.
+template <class S>
+inline constexpr detail::initial_marker<S> initial{};
+
+/// Marks a composite state as remembering its last active child (restored on re-entry).
+inline constexpr detail::history_marker<detail::history::shallow> shallow_history{};
+
+/// Marks a composite state as remembering its whole last active sub-configuration.
+inline constexpr detail::history_marker<detail::history::deep> deep_history{};
+
+/// A final state: reaching it is an intended end, so it is exempt from the dead-end check.
+/// A final child of the root state halts the machine.
+template <class S>
+inline constexpr detail::leaf_node<S, detail::kind::final_state> final_state{};
+
+/// A composite (OR, exclusive) state: exactly one child is active while it is.
+template <class S, class... A>
+constexpr auto composite(A...) {
+    constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A> || detail::is_initial_marker<A> ||
+                                 detail::is_history_marker<A>)&&...);
+    constexpr int history_markers = (0 + ... + int{detail::is_history_marker<A>});
+    if constexpr (!all_valid) {
+        constexpr int bad =
+            detail::index_in<std::false_type,
+                             std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
+                                                detail::is_initial_marker<A> || detail::is_history_marker<A>>...>();
+        static_assert(error::not_a_state_declaration<S, detail::at<bad, detail::type_list<A...>>>::value);
+    } else if constexpr (history_markers > 1) {
+        static_assert(error::conflicting_history_markers<S>::value);
+    }
+    using declared = decltype((detail::type_list<>{} + ... + detail::declared_tag<A>()));
+    using children = typename detail::composite_children<declared, A...>::type;
+    using initials = decltype((detail::type_list<>{} + ... + detail::initials_from<A>()));
+    return detail::composite_node<S, detail::history_from<A...>(), initials, children>{};
+}
+
+/// A parallel (AND) state: all of its children (its components, or regions) are active while it is.
+template <class S, class... A>
+constexpr auto parallel(A...) {
+    constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A>)&&...);
+    if constexpr (!all_valid) {
+        constexpr int bad =
+            detail::index_in<std::false_type, std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>();
+        static_assert(error::not_a_state_declaration<S, detail::at<bad, detail::type_list<A...>>>::value);
+    }
+    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A>()));
+    return detail::parallel_node<S, children>{};
+}
+
+}  // namespace bsc
+// end include/bsc/dsl/tree.hpp
+
+namespace bsc::detail {
+
+// The implicit top of every chart: the compound state above the user's root, so that a
+// transition may leave and re-enter the root (SCXML's <scxml> element plays this part).
+struct top_tag {};
+template <class Root>
+struct top_node : node_base {
+    using tag = top_tag;
+    static constexpr kind node_kind = kind::top;
+    static constexpr history hist = history::none;
+    static constexpr bool implicit = false;
+    using initials = type_list<typename Root::tag>;
+    using children = type_list<Root>;
+};
+
+template <class Node>
+constexpr auto flatten();
+template <class... C>
+constexpr auto flatten_all(type_list<C...>) {
+    return (type_list<>{} + ... + flatten<C>());
+}
+template <class Node>
+constexpr auto flatten() {
+    return type_list<Node>{} + flatten_all(typename Node::children{});
+}
+
+template <class List>
+struct tags_of;
+template <class... Nodes>
+struct tags_of<type_list<Nodes...>> {
+    using type = type_list<typename Nodes::tag...>;
+};
+
+enum class row_kind : std::uint8_t { transition, entry, exit };
+
+inline constexpr int eventless_id = -1;
+inline constexpr int no_state = -1;
+inline constexpr int unknown_state = -2;
+
+template <std::size_t N>
+struct topology {
+    std::array<kind, N> kinds{};
+    std::array<history, N> hist{};
+    std::array<int, N> parent{};
+    std::array<int, N> first_child{};
+    std::array<int, N> next_sibling{};
+    std::array<int, N> child_count{};
+    std::array<int, N> ordinal{};        // position among siblings
+    std::array<int, N> initial{};        // state index of the initial child, or -1
+    std::array<int, N> initial_count{};  // number of initial markers
+    std::array<int, N> depth{};
+    std::array<int, N> end{};   // one past the last descendant: d is below s iff s < d < end[s]
+    std::array<int, N> slot{};  // byte of the active configuration, composites only, else -1
+    std::array<bool, N> implicit{};
+    int slots = 0;
+
+    constexpr bool is_leaf(int s) const { return kinds[s] == kind::basic || kinds[s] == kind::final_state; }
+    constexpr bool is_compound(int s) const { return kinds[s] == kind::composite || kinds[s] == kind::top; }
+    // a is an ancestor of d, or d itself
+    constexpr bool contains(int a, int d) const { return a <= d && d < end[a]; }
+    constexpr bool is_proper_ancestor(int a, int d) const { return a < d && d < end[a]; }
+    constexpr int lca(int a, int b) const {
+        while (!contains(a, b)) a = parent[a];
+        return a;
+    }
+    // The child of `a` on the way down to its descendant d.
+    constexpr int child_toward(int a, int d) const {
+        int c = d;
+        while (parent[c] != a) c = parent[c];
+        return c;
+    }
+    constexpr bool under_parallel(int s) const {
+        for (int a = parent[s]; a >= 0; a = parent[a])
+            if (kinds[a] == kind::parallel)
+                return true;
+        return false;
+    }
+};
+
+template <class Node, std::size_t N>
+constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, int depth) {
+    t.kinds[static_cast<std::size_t>(index)] = Node::node_kind;
+    auto const i = static_cast<std::size_t>(index);
+    t.hist[i] = Node::hist;
+    t.parent[i] = parent;
+    t.ordinal[i] = ordinal;
+    t.depth[i] = depth;
+    t.implicit[i] = Node::implicit;
+    t.first_child[i] = -1;
+    t.next_sibling[i] = -1;
+    t.initial[i] = -1;
+    t.initial_count[i] = static_cast<int>(Node::initials::size);
+    t.slot[i] = -1;
+    if (Node::node_kind == kind::composite)
+        t.slot[i] = t.slots++;
+    int next = index + 1;
+    int count = 0;
+    int previous = -1;
+    [&]<class... C>(type_list<C...>) {
+        (
+            [&] {
+                int const child = next;
+                if (previous < 0)
+                    t.first_child[i] = child;
+                else
+                    t.next_sibling[static_cast<std::size_t>(previous)] = child;
+                previous = child;
+                next = fill_topology<C>(t, child, index, count++, depth + 1);
+            }(),
+            ...);
+        if constexpr (Node::initials::size == 1) {
+            constexpr int pos = index_in<at<0, typename Node::initials>, typename C::tag...>();
+            if (pos >= 0) {
+                int c = t.first_child[i];
+                for (int k = 0; k < pos; ++k) c = t.next_sibling[static_cast<std::size_t>(c)];
+                t.initial[i] = c;
+            }
+        }
+    }(typename Node::children{});
+    t.child_count[i] = count;
+    t.end[i] = next;
+    return next;
+}
+
+template <std::size_t R>
+struct row_table {
+    std::array<row_kind, R> kinds{};
+    std::array<int, R> source{};
+    std::array<int, R> target{};   // no_state for internal transitions and entry/exit rows
+    std::array<int, R> trigger{};  // eventless_id, or the event's position in the chart's event list
+    std::array<bool, R> guarded{};
+    std::array<int, R> domain{};  // the transition domain (SCXML), no_state if internal
+};
+
+template <class Row>
+constexpr row_kind kind_of_row() {
+    if constexpr (is_entry_row<Row>)
+        return row_kind::entry;
+    else if constexpr (is_exit_row<Row>)
+        return row_kind::exit;
+    else
+        return row_kind::transition;
+}
+
+template <class Row>
+struct trigger_event {
+    using type = void;
+};
+template <class S, class E, class G, class A, class T>
+struct trigger_event<transition_row<S, event_trigger<E>, G, A, T>> {
+    using type = E;
+};
+
+template <class List>
+struct event_list;
+template <class... Rows>
+struct event_list<type_list<Rows...>> {
+    using all = decltype((type_list<>{} | ... | type_id<typename trigger_event<Rows>::type>{}));
+};
+template <class List>
+struct drop_void;
+template <class... Es>
+struct drop_void<type_list<Es...>> {
+    using type = decltype((type_list<>{} + ... + std::conditional_t<std::is_void_v<Es>, type_list<>, type_list<Es>>{}));
+};
+
+template <class Tag, class Tags>
+constexpr int state_index() {
+    if constexpr (std::is_same_v<Tag, no_target>)
+        return no_state;
+    else {
+        constexpr int i = index_of<Tag, Tags>;
+        return i < 0 ? unknown_state : i;
+    }
+}
+
+template <std::size_t N>
+constexpr int transition_domain(topology<N> const& t, int source, int target) {
+    if (target < 0)
+        return no_state;
+    // SCXML: the nearest compound proper ancestor of the source that is a proper ancestor of the target.
+    for (int a = t.parent[static_cast<std::size_t>(source)]; a >= 0; a = t.parent[static_cast<std::size_t>(a)])
+        if (t.is_compound(a) && t.is_proper_ancestor(a, target))
+            return a;
+    return 0;
+}
+
+template <class Chart>
+struct analysis {
+    using root = typename Chart::root_type;
+    using nodes = decltype(flatten<top_node<root>>());
+    using tags = typename tags_of<nodes>::type;
+    using rows = typename Chart::row_types;
+    using events = typename drop_void<typename event_list<rows>::all>::type;
+
+    static constexpr int N = static_cast<int>(nodes::size);
+    static constexpr int R = static_cast<int>(rows::size);
+
+    static constexpr topology<nodes::size> topo = [] {
+        topology<nodes::size> t{};
+        fill_topology<top_node<root>>(t, 0, -1, 0, 0);
+        return t;
+    }();
+
+    static constexpr row_table<rows::size> table = []<class... Rs>(type_list<Rs...>) {
+        row_table<rows::size> r{};
+        std::size_t i = 0;
+        (
+            [&] {
+                r.kinds[i] = kind_of_row<Rs>();
+                r.source[i] = state_index<typename Rs::source, tags>();
+                r.target[i] = no_state;
+                r.trigger[i] = eventless_id;
+                r.guarded[i] = false;
+                if constexpr (is_transition_row<Rs>) {
+                    r.target[i] = state_index<typename Rs::target, tags>();
+                    r.guarded[i] = Rs::guarded;
+                    using E = typename trigger_event<Rs>::type;
+                    if constexpr (!std::is_void_v<E>)
+                        r.trigger[i] = index_of<E, events>;
+                }
+                r.domain[i] = no_state;
+                if (r.source[i] >= 0 && r.target[i] >= 0)
+                    r.domain[i] = transition_domain(topo, r.source[i], r.target[i]);
+                ++i;
+            }(),
+            ...);
+        return r;
+    }(rows{});
+
+    template <int I>
+    using tag_at = at<static_cast<std::size_t>(I), tags>;
+    template <int I>
+    using row_at = at<static_cast<std::size_t>(I), rows>;
+    template <class S>
+    static constexpr int index_of_state = index_of<S, tags>;
+    template <class E>
+    static constexpr int trigger_of = index_of<E, events>;
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/topology.hpp
+
+namespace bsc::detail {
+
+struct row_pair {
+    int first = -1;
+    int second = -1;
+    constexpr bool found() const { return first >= 0; }
+};
+
+template <std::size_t R>
+constexpr row_pair find_same_trigger_pair(row_table<R> const& r, bool second_guarded) {
+    for (std::size_t i = 0; i < R; ++i) {
+        if (r.kinds[i] != row_kind::transition || r.guarded[i])
+            continue;
+        for (std::size_t j = i + 1; j < R; ++j)
+            if (r.kinds[j] == row_kind::transition && r.source[j] == r.source[i] && r.trigger[j] == r.trigger[i] &&
+                r.guarded[j] == second_guarded)
+                return {static_cast<int>(i), static_cast<int>(j)};
+    }
+    return {};
+}
+
+template <std::size_t R>
+constexpr row_pair find_conflict(row_table<R> const& r) {
+    return find_same_trigger_pair(r, false);
+}
+template <std::size_t R>
+constexpr row_pair find_shadowed(row_table<R> const& r) {
+    return find_same_trigger_pair(r, true);
+}
+
+}  // namespace bsc::detail
+// end include/bsc/checks/determinism.hpp
+// begin include/bsc/checks/errors.hpp
+// The errors of the static checks. Each is a class template whose arguments are the
+// offending states (and events), so the compiler's "in instantiation of" line names them;
+// its static_assert says what is wrong and how to fix it. docs/checks.md lists them all.
+
+
+namespace bsc::error {
+
+template <class State>
+struct unreachable_state {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: unreachable state: no initial entry, history or transition can activate this state "
+                  "from the initial configuration; add a transition to it (or make it an initial child), or "
+                  "remove it");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct dead_end_state {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: dead end: no transition leaves this non-final state (neither from it, nor from an "
+                  "ancestor, nor from an orthogonal region); add one, or declare it with bsc::final_state");
+    static constexpr bool value = false;
+};
+
+template <class Source, class Trigger>
+struct conflicting_transitions {
+    static_assert(detail::dependent_false<Source>,
+                  "bsc: conflicting transitions: two unguarded transitions leave this state on the same "
+                  "trigger, so the chart is nondeterministic; guard one of them or remove one");
+    static constexpr bool value = false;
+};
+
+template <class Source, class Trigger, class Target>
+struct shadowed_transition {
+    static_assert(detail::dependent_false<Source>,
+                  "bsc: shadowed transition: an earlier unguarded transition from this state on the same "
+                  "trigger always wins, so the transition to Target can never fire; guard the earlier one or "
+                  "move this one before it");
+    static constexpr bool value = false;
+};
+
+template <class Source, class Target>
+struct transition_between_orthogonal_regions {
+    static_assert(detail::dependent_false<Source>,
+                  "bsc: transition between orthogonal regions: the source and the target lie in different "
+                  "regions of the same parallel state, which are always active together; target a state "
+                  "outside the parallel state instead");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct state_not_in_chart {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: a row names a state that the state tree does not declare; declare it in the tree "
+                  "(bsc::state, bsc::composite, bsc::parallel or bsc::final_state) or fix the row");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct duplicate_state {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: this state is declared twice in the state tree; every state type may appear once");
+    static constexpr bool value = false;
+};
+
+template <class Composite>
+struct missing_initial_state {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: this composite state has no initial child; add bsc::initial<Child> to its declaration");
+    static constexpr bool value = false;
+};
+
+template <class Composite>
+struct multiple_initial_states {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: this composite state has more than one bsc::initial marker; keep exactly one");
+    static constexpr bool value = false;
+};
+
+template <class Composite, class Initial>
+struct initial_not_a_child {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: the initial state named by this composite is declared elsewhere in the tree, not as "
+                  "one of its children; name one of its own children in bsc::initial<...>");
+    static constexpr bool value = false;
+};
+
+template <class Composite>
+struct too_many_children {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: a composite state may have at most 255 children (its active child is kept in one "
+                  "byte); group some of them into a nested composite");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct eventless_livelock {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: eventless livelock: unguarded eventless transitions from this state lead back to it "
+                  "(or it has an unguarded eventless internal transition), so a dispatch would never settle; "
+                  "guard one of the transitions on the cycle or give it an event");
+    static constexpr bool value = false;
+};
+
+template <class Event>
+struct unhandled_event {
+    static_assert(detail::dependent_false<Event>,
+                  "bsc: no transition of this chart is triggered by the dispatched event type; add one, fix "
+                  "the event type, or dispatch with bsc::allow_unhandled to ignore it on purpose");
+    static constexpr bool value = false;
+};
+
+template <class Event>
+struct raised_event_not_in_chart {
+    static_assert(detail::dependent_false<Event>,
+                  "bsc: an action raises an event type that no transition of this chart handles");
+    static constexpr bool value = false;
+};
+
+}  // namespace bsc::error
+// end include/bsc/checks/errors.hpp
+// begin include/bsc/checks/livelock.hpp
+// Eventless livelock: a cycle of unguarded eventless transitions, which dispatch would
+// follow forever. Nodes are basic states; u -> v when an unguarded eventless transition
+// enabled in u (its source is u or an ancestor) enters v.
+
+// begin include/bsc/checks/reachability.hpp
+// Reachability (structure only, guards ignored) and dead ends.
+
+
+namespace bsc::detail {
+
+// Marks s and the states its default entry activates (initial children, all regions).
+template <std::size_t N>
+constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, int s) {
+    m[static_cast<std::size_t>(s)] = true;
+    auto const i = static_cast<std::size_t>(s);
+    if (t.is_compound(s)) {
+        if (t.initial[i] >= 0)
+            mark_default_entry(t, m, t.initial[i]);
+    } else if (t.kinds[i] == kind::parallel) {
+        for (int c = t.first_child[i]; c >= 0; c = t.next_sibling[static_cast<std::size_t>(c)])
+            mark_default_entry(t, m, c);
+    }
+}
+
+// Marks the states a transition into `target` enters below `domain`: the path, the default
+// entries of parallel siblings on the path, and the default entry of the target.
+template <std::size_t N>
+constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int domain, int target) {
+    for (int a = target; a != domain && a >= 0; a = t.parent[static_cast<std::size_t>(a)]) {
+        m[static_cast<std::size_t>(a)] = true;
+        int const p = t.parent[static_cast<std::size_t>(a)];
+        if (p >= 0 && p != domain && t.kinds[static_cast<std::size_t>(p)] == kind::parallel)
+            for (int c = t.first_child[static_cast<std::size_t>(p)]; c >= 0;
+                 c = t.next_sibling[static_cast<std::size_t>(c)])
+                if (c != a)
+                    mark_default_entry(t, m, c);
+    }
+    mark_default_entry(t, m, target);
+}
+
+template <std::size_t N, std::size_t R>
+constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R> const& r) {
+    std::array<bool, N> reach{};
+    std::array<bool, R> applied{};
+    mark_default_entry(t, reach, 0);
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t i = 0; i < R; ++i) {
+            if (applied[i] || r.kinds[i] != row_kind::transition || r.target[i] < 0)
+                continue;
+            if (!reach[static_cast<std::size_t>(r.source[i])])
+                continue;
+            applied[i] = changed = true;
+            mark_entry(t, reach, -1, r.target[i]);
+        }
+    }
+    return reach;
+}
+
+template <std::size_t N, std::size_t R>
+constexpr int find_unreachable(topology<N> const& t, row_table<R> const& r) {
+    auto const reach = reachable_states(t, r);
+    for (std::size_t s = 1; s < N; ++s)
+        if (!reach[s])
+            return static_cast<int>(s);
+    return -1;
+}
+
+// A transition can exit leaf x if it has a target, its domain is above x, and its source is
+// active whenever x may be: x itself, an ancestor of x, or a state in an orthogonal region.
+template <std::size_t N, std::size_t R>
+constexpr bool can_leave(topology<N> const& t, row_table<R> const& r, int x) {
+    for (std::size_t i = 0; i < R; ++i) {
+        if (r.kinds[i] != row_kind::transition || r.target[i] < 0)
+            continue;
+        int const s = r.source[i];
+        if (!t.is_proper_ancestor(r.domain[i], x))
+            continue;
+        if (t.contains(s, x) || t.kinds[static_cast<std::size_t>(t.lca(s, x))] == kind::parallel)
+            return true;
+    }
+    return false;
+}
+
+template <std::size_t N, std::size_t R>
+constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r) {
+    auto const reach = reachable_states(t, r);
+    for (std::size_t s = 1; s < N; ++s)
+        if (t.kinds[s] == kind::basic && reach[s] && !can_leave(t, r, static_cast<int>(s)))
+            return static_cast<int>(s);
+    return -1;
+}
+
+}  // namespace bsc::detail
+// end include/bsc/checks/reachability.hpp
+
+namespace bsc::detail {
+
+template <std::size_t N, std::size_t R>
+constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) {
+    std::array<std::array<bool, N>, N> edge{};
+    std::array<int, N> source_of{};
+    for (std::size_t i = 0; i < R; ++i) {
+        if (r.kinds[i] != row_kind::transition || r.guarded[i] || r.trigger[i] != eventless_id)
+            continue;
+        int const s = r.source[i];
+        std::array<bool, N> entered{};
+        if (r.target[i] < 0)
+            entered = {};  // internal: stays in the same states, and fires again
+        else
+            mark_entry(t, entered, r.domain[i], r.target[i]);
+        for (std::size_t u = 0; u < N; ++u) {
+            if (!t.is_leaf(static_cast<int>(u)) || !t.contains(s, static_cast<int>(u)))
+                continue;
+            if (r.target[i] < 0) {
+                edge[u][u] = true;
+                source_of[u] = s;
+            }
+            for (std::size_t v = 0; v < N; ++v)
+                if (entered[v] && t.is_leaf(static_cast<int>(v))) {
+                    edge[u][v] = true;
+                    source_of[u] = s;
+                }
+        }
+    }
+    // Peel off states that no edge enters; what stays with an outgoing edge lies on a cycle.
+    std::array<bool, N> removed{};
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t v = 0; v < N; ++v) {
+            if (removed[v])
+                continue;
+            bool entered_by_edge = false;
+            for (std::size_t u = 0; u < N && !entered_by_edge; ++u) entered_by_edge = !removed[u] && edge[u][v];
+            if (!entered_by_edge)
+                removed[v] = changed = true;
+        }
+    }
+    for (std::size_t u = 0; u < N; ++u)
+        if (!removed[u])
+            return source_of[u];
+    return -1;
+}
+
+}  // namespace bsc::detail
+// end include/bsc/checks/livelock.hpp
+// begin include/bsc/checks/structure.hpp
+// Structural checks: every state declared once, every row's states in the tree, exactly one
+// initial child per composite, no transition between orthogonal regions.
+
+
+namespace bsc::detail {
+
+// The second declaration of a state declared twice, or -1.
+template <class... Tags>
+constexpr int find_duplicate(type_list<Tags...>) {
+    constexpr int first[] = {index_in<Tags, Tags...>()..., 0};
+    for (int i = 0; i < static_cast<int>(sizeof...(Tags)); ++i)
+        if (first[i] != i)
+            return i;
+    return -1;
+}
+
+template <std::size_t N>
+constexpr int find_initial_problem(topology<N> const& t) {
+    for (std::size_t s = 1; s < N; ++s)
+        if (t.kinds[s] == kind::composite && (t.initial_count[s] != 1 || t.child_count[s] > 255))
+            return static_cast<int>(s);
+    return -1;
+}
+
+template <std::size_t R>
+constexpr int find_unknown_state(row_table<R> const& r) {
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.source[i] == unknown_state || r.target[i] == unknown_state)
+            return static_cast<int>(i);
+    return -1;
+}
+
+template <std::size_t N, std::size_t R>
+constexpr int find_orthogonal_transition(topology<N> const& t, row_table<R> const& r) {
+    for (std::size_t i = 0; i < R; ++i) {
+        int const s = r.source[i], d = r.target[i];
+        if (r.kinds[i] != row_kind::transition || d < 0)
+            continue;
+        int const l = t.lca(s, d);
+        if (t.kinds[static_cast<std::size_t>(l)] == kind::parallel && l != s && l != d)
+            return static_cast<int>(i);
+    }
+    return -1;
+}
+
+}  // namespace bsc::detail
+// end include/bsc/checks/structure.hpp
+
+namespace bsc::detail {
+
+template <class Row>
+struct trigger_type {
+    using type = typename trigger_event<Row>::type;
+};
+template <class S, class G, class A, class T>
+struct trigger_type<transition_row<S, eventless_trigger, G, A, T>> {
+    using type = eventless_trigger;
+};
+
+template <class Chart>
+constexpr bool check_structure() {
+    using an = analysis<Chart>;
+    constexpr int duplicate = find_duplicate(typename an::tags{});
+    if constexpr (duplicate >= 0) {
+        using S = typename an::template tag_at<duplicate>;
+        constexpr int first = an::template index_of_state<S>;
+        constexpr int implicit = an::topo.implicit[duplicate] ? duplicate : an::topo.implicit[first] ? first : -1;
+        if constexpr (implicit >= 0)
+            return error::initial_not_a_child<typename an::template tag_at<an::topo.parent[implicit]>, S>::value;
+        else
+            return error::duplicate_state<S>::value;
+    } else {
+        constexpr int unknown = find_unknown_state(an::table);
+        if constexpr (unknown >= 0) {
+            using row = typename an::template row_at<unknown>;
+            if constexpr (an::table.source[unknown] == unknown_state)
+                return error::state_not_in_chart<typename row::source>::value;
+            else
+                return error::state_not_in_chart<typename row::target>::value;
+        } else {
+            constexpr int composite = find_initial_problem(an::topo);
+            if constexpr (composite >= 0) {
+                using S = typename an::template tag_at<composite>;
+                if constexpr (an::topo.child_count[composite] > 255)
+                    return error::too_many_children<S>::value;
+                else if constexpr (an::topo.initial_count[composite] == 0)
+                    return error::missing_initial_state<S>::value;
+                else
+                    return error::multiple_initial_states<S>::value;
+            } else {
+                return true;
+            }
+        }
+    }
+}
+
+template <class Chart>
+constexpr bool check_orthogonality() {
+    using an = analysis<Chart>;
+    constexpr int row = find_orthogonal_transition(an::topo, an::table);
+    if constexpr (row >= 0) {
+        using R = typename an::template row_at<row>;
+        return error::transition_between_orthogonal_regions<typename R::source, typename R::target>::value;
+    } else {
+        return true;
+    }
+}
+
+template <class Chart>
+constexpr bool check_determinism() {
+    using an = analysis<Chart>;
+    constexpr row_pair conflict = find_conflict(an::table);
+    constexpr row_pair shadowed = find_shadowed(an::table);
+    if constexpr (conflict.found()) {
+        using R = typename an::template row_at<conflict.second>;
+        return error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>::value;
+    } else if constexpr (shadowed.found()) {
+        using R = typename an::template row_at<shadowed.second>;
+        return error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
+                                          typename R::target>::value;
+    } else {
+        return true;
+    }
+}
+
+template <class Chart>
+constexpr bool check_reachability() {
+    using an = analysis<Chart>;
+    constexpr int unreachable = find_unreachable(an::topo, an::table);
+    if constexpr (unreachable >= 0) {
+        return error::unreachable_state<typename an::template tag_at<unreachable>>::value;
+    } else {
+        constexpr int dead_end = find_dead_end(an::topo, an::table);
+        if constexpr (dead_end >= 0)
+            return error::dead_end_state<typename an::template tag_at<dead_end>>::value;
+        else
+            return true;
+    }
+}
+
+template <class Chart>
+constexpr bool check_livelock() {
+    using an = analysis<Chart>;
+    constexpr int source = find_eventless_cycle(an::topo, an::table);
+    if constexpr (source >= 0)
+        return error::eventless_livelock<typename an::template tag_at<source>>::value;
+    else
+        return true;
+}
+
+// True for a well-formed chart; otherwise one of the bsc::error templates fails to instantiate.
+template <class Chart>
+constexpr bool check_chart() {
+    if constexpr (!check_structure<Chart>())
+        return false;
+    else {
+        // Each check is evaluated, so one build reports every kind of problem it finds.
+        constexpr bool orthogonal = check_orthogonality<Chart>();
+        constexpr bool deterministic = check_determinism<Chart>();
+        constexpr bool reachable = check_reachability<Chart>();
+        constexpr bool settles = check_livelock<Chart>();
+        return orthogonal && deterministic && reachable && settles;
+    }
+}
+
+}  // namespace bsc::detail
+// end include/bsc/checks/checks.hpp
+
+namespace bsc::error {
+
+template <class Argument>
+struct not_a_row {
+    static_assert(detail::dependent_false<Argument>,
+                  "bsc: after the state tree, every argument of make_chart must be a row: "
+                  "state<S> + event<E> [guard] / action = state<T>, state<S> [guard] = state<T>, "
+                  "state<S> + on_entry / action, or state<S> + on_exit / action");
+    static constexpr bool value = false;
+};
+
+template <class Root>
+struct root_must_be_composite {
+    static_assert(detail::dependent_false<Root>,
+                  "bsc: the first argument of make_chart is the root of the state tree and must be a "
+                  "bsc::composite<...>(...) or bsc::parallel<...>(...)");
+    static constexpr bool value = false;
+};
+
+}  // namespace bsc::error
+
+namespace bsc {
+
+/// A statechart over the context type `Context`: the state tree `Root` and the rows.
+/// Obtain one with make_chart; run it with bsc::machine.
+template <class Context, class Root, class... Rows>
+struct chart {
+    using context_type = Context;
+    using root_type = Root;
+    using row_types = detail::type_list<Rows...>;
+    boost::hana::basic_tuple<Rows...> rows;
+};
+
+/// Declares a chart: first the state tree, then the rows (transitions, entry and exit actions).
+/// The static checks run here; a malformed chart fails to compile with an error that names
+/// the offending state (see docs/checks.md).
+template <class Context, class Root, class... Rows>
+constexpr auto make_chart(Root, Rows... rows) {
+    if constexpr (!(detail::is_node<Root> &&
+                    (Root::node_kind == detail::kind::composite || Root::node_kind == detail::kind::parallel))) {
+        static_assert(error::root_must_be_composite<Root>::value);
+        return 0;
+    } else if constexpr (!(detail::is_row<Rows> && ...)) {
+        constexpr int bad = detail::index_in<std::false_type, std::bool_constant<detail::is_row<Rows>>...>();
+        static_assert(error::not_a_row<detail::at<bad, detail::type_list<Rows...>>>::value);
+        return 0;
+    } else {
+        using chart_type = chart<Context, Root, Rows...>;
+        static_assert(detail::check_chart<chart_type>());
+        return chart_type{boost::hana::make_basic_tuple(std::move(rows)...)};
+    }
+}
+
+}  // namespace bsc
+// end include/bsc/chart.hpp
+// begin include/bsc/compiled/machine.hpp
+// bsc::machine: the compiled back end. For an event type, dispatch is a nest of switches on
+// the configuration bytes that visits only the states where a transition on that event can
+// leave; at each basic state the candidate transitions, their exits, action and entries are
+// straight-line code fixed at compile time. Parallel regions select first and fire after,
+// as SCXML's microstep does.
+
+#include <array>
+#include <boost/hana/at.hpp>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+// begin include/bsc/compiled/plan.hpp
+// Compile-time dispatch plans: for a trigger, which states lead to a transition and, for each
+// basic state, which transitions are its candidates in SCXML order (deepest source first,
+// then declaration order). The compiled machine expands these into switches and straight-line
+// code; nothing here exists at run time.
+
+#include <array>
+
+
+namespace bsc::detail {
+
+template <class An>
+struct plan {
+    static constexpr auto const& topo = An::topo;
+    static constexpr auto const& table = An::table;
+    static constexpr int N = An::N;
+    static constexpr int R = An::R;
+
+    static constexpr bool is_transition_on(int row, int trigger) {
+        return table.kinds[static_cast<std::size_t>(row)] == row_kind::transition &&
+               table.trigger[static_cast<std::size_t>(row)] == trigger;
+    }
+
+    static constexpr bool has_trigger(int trigger) {
+        for (int r = 0; r < R; ++r)
+            if (is_transition_on(r, trigger))
+                return true;
+        return false;
+    }
+
+    // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a descendant.
+    template <int Trigger>
+    static constexpr std::array<bool, static_cast<std::size_t>(N)> relevant = [] {
+        std::array<bool, static_cast<std::size_t>(N)> rel{};
+        for (int r = 0; r < R; ++r) {
+            if (!is_transition_on(r, Trigger))
+                continue;
+            int const src = table.source[static_cast<std::size_t>(r)];
+            for (int s = 0; s < N; ++s)
+                if (topo.contains(src, s) || topo.contains(s, src))
+                    rel[static_cast<std::size_t>(s)] = true;
+        }
+        return rel;
+    }();
+
+    static constexpr int candidate_count(int leaf, int trigger) {
+        int n = 0;
+        for (int a = leaf; a >= 0; a = topo.parent[static_cast<std::size_t>(a)])
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, trigger) && table.source[static_cast<std::size_t>(r)] == a)
+                    ++n;
+        return n;
+    }
+
+    template <int Leaf, int Trigger>
+    static constexpr auto candidates = [] {
+        std::array<int, static_cast<std::size_t>(candidate_count(Leaf, Trigger))> out{};
+        std::size_t n = 0;
+        for (int a = Leaf; a >= 0; a = topo.parent[static_cast<std::size_t>(a)])
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, Trigger) && table.source[static_cast<std::size_t>(r)] == a)
+                    out[n++] = r;
+        return out;
+    }();
+
+    static constexpr int transition_count(int trigger) {
+        int n = 0;
+        for (int r = 0; r < R; ++r) n += is_transition_on(r, trigger) ? 1 : 0;
+        return n;
+    }
+
+    // The transitions on a trigger, in declaration order; the selection buffer stores positions here.
+    template <int Trigger>
+    static constexpr auto transitions = [] {
+        std::array<int, static_cast<std::size_t>(transition_count(Trigger))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < R; ++r)
+            if (is_transition_on(r, Trigger))
+                out[n++] = r;
+        return out;
+    }();
+
+    template <int Trigger>
+    static constexpr int position_of(int row) {
+        for (std::size_t i = 0; i < transitions<Trigger>.size(); ++i)
+            if (transitions<Trigger>[i] == row)
+                return static_cast<int>(i);
+        return -1;
+    }
+
+    static constexpr int count_rows(row_kind k, int state) {
+        int n = 0;
+        for (int r = 0; r < R; ++r)
+            n += table.kinds[static_cast<std::size_t>(r)] == k && table.source[static_cast<std::size_t>(r)] == state;
+        return n;
+    }
+
+    // Entry or exit rows of a state, in declaration order.
+    template <row_kind K, int State>
+    static constexpr auto state_rows = [] {
+        std::array<int, static_cast<std::size_t>(count_rows(K, State))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < R; ++r)
+            if (table.kinds[static_cast<std::size_t>(r)] == K && table.source[static_cast<std::size_t>(r)] == State)
+                out[n++] = r;
+        return out;
+    }();
+
+    template <int S>
+    static constexpr auto children = [] {
+        std::array<int, static_cast<std::size_t>(topo.child_count[static_cast<std::size_t>(S)])> out{};
+        std::size_t n = 0;
+        for (int c = topo.first_child[static_cast<std::size_t>(S)]; c >= 0;
+             c = topo.next_sibling[static_cast<std::size_t>(c)])
+            out[n++] = c;
+        return out;
+    }();
+
+    // How many basic states can be active at once: the size of the selection buffer.
+    static constexpr int max_active_leaves(int s) {
+        auto const i = static_cast<std::size_t>(s);
+        if (topo.is_leaf(s))
+            return 1;
+        int result = 0;
+        for (int c = topo.first_child[i]; c >= 0; c = topo.next_sibling[static_cast<std::size_t>(c)]) {
+            int const m = max_active_leaves(c);
+            result = topo.kinds[i] == kind::parallel ? result + m : (m > result ? m : result);
+        }
+        return result;
+    }
+
+    static constexpr bool has_parallel = [] {
+        for (int s = 0; s < N; ++s)
+            if (topo.kinds[static_cast<std::size_t>(s)] == kind::parallel)
+                return true;
+        return false;
+    }();
+
+    // The initial configuration: every composite's byte at its initial child.
+    template <std::size_t Slots>
+    static constexpr std::array<std::uint8_t, Slots> initial_bytes() {
+        std::array<std::uint8_t, Slots> bytes{};
+        for (int s = 0; s < N; ++s) {
+            auto const i = static_cast<std::size_t>(s);
+            if (topo.slot[i] >= 0)
+                bytes[static_cast<std::size_t>(topo.slot[i])] =
+                    static_cast<std::uint8_t>(topo.ordinal[static_cast<std::size_t>(topo.initial[i])]);
+        }
+        return bytes;
+    }
+
+    // Two selected transitions conflict when their exit sets meet, i.e. when their domains nest.
+    static constexpr bool conflict(int r1, int r2) {
+        int const d1 = table.domain[static_cast<std::size_t>(r1)], d2 = table.domain[static_cast<std::size_t>(r2)];
+        if (d1 < 0 || d2 < 0)
+            return false;
+        return topo.contains(d1, d2) || topo.contains(d2, d1);
+    }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/compiled/plan.hpp
+// begin include/bsc/configuration.hpp
+// The active configuration, and the list of active state names it yields for traces.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace bsc {
+
+/// The active configuration: one byte per composite state, holding the position of its active
+/// child. An inactive composite keeps the child it had when it was last active, which is all
+/// that shallow and deep history need. Parallel and basic states take no storage.
+template <std::size_t Composites>
+struct configuration {
+    std::array<std::uint8_t, Composites> active{};
+    friend constexpr bool operator==(configuration const&, configuration const&) = default;
+};
+template <>
+struct configuration<0> {
+    friend constexpr bool operator==(configuration const&, configuration const&) = default;
+};
+
+/// The names of the active states, outermost first in document order (no allocation).
+template <std::size_t Capacity>
+class state_names {
+public:
+    constexpr void push_back(std::string_view name) { names_[size_++] = name; }
+    constexpr std::size_t size() const { return size_; }
+    constexpr bool empty() const { return size_ == 0; }
+    constexpr std::string_view operator[](std::size_t i) const { return names_[i]; }
+    constexpr auto begin() const { return names_.begin(); }
+    constexpr auto end() const { return names_.begin() + static_cast<std::ptrdiff_t>(size_); }
+    constexpr bool contains(std::string_view name) const {
+        for (auto n : *this)
+            if (n == name)
+                return true;
+        return false;
+    }
+    /// The names joined by `separator`, e.g. "Mcs On Auto Mem".
+    std::string joined(std::string_view separator = " ") const {
+        std::string out;
+        for (std::size_t i = 0; i < size_; ++i) {
+            if (i)
+                out += separator;
+            out += names_[i];
+        }
+        return out;
+    }
+
+private:
+    std::array<std::string_view, Capacity> names_{};
+    std::size_t size_ = 0;
+};
+
+}  // namespace bsc
+// end include/bsc/configuration.hpp
+// begin include/bsc/detail/event_queue.hpp
+// The bounded internal event queue: a ring buffer of the chart's event types. No heap;
+// a push onto a full queue is refused and remembered, never written out of bounds.
+
+#include <array>
+#include <cstddef>
+#include <variant>
+
+
+namespace bsc::detail {
+
+template <std::size_t Capacity, class Events>
+class event_queue;
+
+template <std::size_t Capacity, class... Es>
+class event_queue<Capacity, type_list<Es...>> {
+public:
+    using value_type = std::variant<std::monostate, Es...>;
+
+    /// Raises e: queues it for processing after the current step. False if the queue is full.
+    template <class E>
+    constexpr bool operator()(E const& e) {
+        if constexpr (index_in<E, Es...>() < 0) {
+            static_assert(error::raised_event_not_in_chart<E>::value);
+            return false;
+        } else {
+            if (size_ == Capacity) {
+                overflowed_ = true;
+                return false;
+            }
+            items_[(head_ + size_) % Capacity] = value_type{std::in_place_type<E>, e};
+            ++size_;
+            return true;
+        }
+    }
+
+    constexpr bool empty() const { return size_ == 0; }
+    constexpr std::size_t size() const { return size_; }
+    static constexpr std::size_t capacity() { return Capacity; }
+    constexpr bool overflowed() const { return overflowed_; }
+    constexpr void clear_overflow() { overflowed_ = false; }
+    constexpr void clear() { head_ = size_ = 0; }
+
+    // Removes the oldest event and calls f with it.
+    template <class F>
+    constexpr void pop(F&& f) {
+        value_type item = std::move(items_[head_]);
+        head_ = (head_ + 1) % Capacity;
+        --size_;
+        visit_index<static_cast<int>(sizeof...(Es))>(static_cast<int>(item.index()) - 1,
+                                                     [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
+    }
+
+private:
+    std::array<value_type, Capacity> items_{};
+    std::size_t head_ = 0;
+    std::size_t size_ = 0;
+    bool overflowed_ = false;
+};
+
+// A chart whose queue capacity is zero raises nothing: every raise is an overflow.
+template <class... Es>
+class event_queue<0, type_list<Es...>> {
+public:
+    template <class E>
+    constexpr bool operator()(E const&) {
+        overflowed_ = true;
+        return false;
+    }
+    constexpr bool empty() const { return true; }
+    constexpr std::size_t size() const { return 0; }
+    static constexpr std::size_t capacity() { return 0; }
+    constexpr bool overflowed() const { return overflowed_; }
+    constexpr void clear_overflow() { overflowed_ = false; }
+    constexpr void clear() {}
+    template <class F>
+    constexpr void pop(F&&) {}
+
+private:
+    bool overflowed_ = false;
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/event_queue.hpp
+// begin include/bsc/detail/type_name.hpp
+// Compile-time type names without RTTI, read from the compiler's function signature.
+
+#include <string_view>
+
+namespace bsc::detail {
+
+template <class T>
+constexpr std::string_view signature() {
+    return __PRETTY_FUNCTION__;
+}
+
+// GCC: "... [with T = ns::Name; std::string_view = ...]", Clang: "... [T = ns::Name]".
+constexpr std::string_view type_from_signature(std::string_view sig) {
+    constexpr std::string_view key = "T = ";
+    const auto start = sig.find(key) + key.size();
+    auto end = start;
+    int depth = 0;
+    for (; end < sig.size(); ++end) {
+        const char c = sig[end];
+        if (c == '<' || c == '(' || c == '[')
+            ++depth;
+        if (c == '>' || c == ')')
+            --depth;
+        if (depth < 0 || (depth == 0 && (c == ';' || c == ']')))
+            break;
+        if (c == ']')
+            --depth;
+    }
+    return sig.substr(start, end - start);
+}
+
+// "ns::outer::Name<ns::X>" -> "Name<ns::X>": the last scope at bracket depth zero.
+constexpr std::string_view unqualified(std::string_view name) {
+    std::size_t cut = 0;
+    int depth = 0;
+    for (std::size_t i = 0; i + 1 < name.size(); ++i) {
+        if (name[i] == '<')
+            ++depth;
+        if (name[i] == '>')
+            --depth;
+        if (depth == 0 && name[i] == ':' && name[i + 1] == ':')
+            cut = i + 2;
+    }
+    return name.substr(cut);
+}
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// The fully qualified name of a type, e.g. "mcs::Tape", computed at compile time.
+template <class T>
+inline constexpr std::string_view qualified_name = detail::type_from_signature(detail::signature<T>());
+
+/// The name of a type without its namespaces, e.g. "Tape"; used for states in traces.
+template <class T>
+inline constexpr std::string_view name_of = detail::unqualified(qualified_name<T>);
+
+}  // namespace bsc
+// end include/bsc/detail/type_name.hpp
+// begin include/bsc/observer.hpp
+// Observer hooks: entry, exit and transition notifications for traces and tests. An
+// observer implements any subset of the hooks; a machine without one pays nothing.
+
+#include <string_view>
+
+
+namespace bsc {
+
+/// Identifies a state in observer calls: `tag.name` is its unqualified name, `type` the state.
+template <class S>
+struct state_tag {
+    using type = S;
+    static constexpr std::string_view name = name_of<S>;
+};
+
+/// The target reported for an internal transition, which exits and enters nothing.
+struct internal {};
+
+/// The default observer: no hooks, no cost.
+struct no_observer {};
+
+/// An observer may define, each optional:
+///   void on_entry(auto state);              // after state's entry actions
+///   void on_exit(auto state);               // after state's exit actions
+///   void on_transition(auto source, auto target, auto const& event);  // before the action
+/// where `state`, `source` and `target` are bsc::state_tag<S> (target: state_tag<bsc::internal>
+/// for an internal transition) and `event` is the event (bsc::eventless for eventless ones).
+namespace detail {
+template <class O, class Tag>
+concept observes_entry = requires(O& o) {
+    o.on_entry(Tag{});
+};
+template <class O, class Tag>
+concept observes_exit = requires(O& o) {
+    o.on_exit(Tag{});
+};
+template <class O, class Src, class Dst, class E>
+concept observes_transition = requires(O& o, E const& e) {
+    o.on_transition(Src{}, Dst{}, e);
+};
+}  // namespace detail
+
+}  // namespace bsc
+// end include/bsc/observer.hpp
+// begin include/bsc/outcome.hpp
+// What dispatch reports, and the limits a machine runs under.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace bsc {
+
+/// The result of dispatching one event (run to completion, internal events included).
+enum class outcome : std::uint8_t {
+    consumed,        ///< at least one transition fired for the dispatched event
+    ignored,         ///< no transition was enabled; the event was discarded (SCXML semantics)
+    queue_overflow,  ///< an action raised an event while the internal queue was full; that event was dropped
+    livelock,        ///< the eventless-step or internal-event limit was reached; the rest was abandoned
+    halted,          ///< the machine had reached a final child of its root; nothing was processed
+};
+
+/// The limits of a machine. Derive from it and override a member to change one:
+/// `struct my_limits : bsc::default_policy { static constexpr std::size_t queue_capacity = 32; };`
+struct default_policy {
+    /// Events an action may raise before the queue is drained; one more is an overflow.
+    static constexpr std::size_t queue_capacity = 8;
+    /// Eventless transitions taken in a row before dispatch reports a livelock.
+    static constexpr std::size_t max_eventless_steps = 64;
+    /// Internal events processed within one dispatch before it reports a livelock.
+    static constexpr std::size_t max_internal_events = 256;
+};
+
+/// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
+/// handles is then allowed (and ignored) instead of failing to compile.
+struct allow_unhandled_t {
+    explicit allow_unhandled_t() = default;
+};
+inline constexpr allow_unhandled_t allow_unhandled{};
+
+}  // namespace bsc
+// end include/bsc/outcome.hpp
+
+namespace bsc {
+
+/// A running instance of a chart: its context, its active configuration and its internal
+/// event queue. Construction enters the initial configuration; dispatch(e) processes one
+/// event to completion. No heap, no virtual calls, no RTTI, no exceptions.
+///
+/// Requirements: `Chart` comes from bsc::make_chart; `Policy` has the members of
+/// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
+template <class Chart, class Policy = default_policy, class Observer = no_observer>
+class machine {
+    using an = detail::analysis<Chart>;
+    using plan = detail::plan<an>;
+    static constexpr auto const& topo = an::topo;
+    static constexpr auto const& table = an::table;
+    static constexpr int root = 1;
+
+public:
+    using chart_type = Chart;
+    using context_type = typename Chart::context_type;
+    using configuration_type = configuration<static_cast<std::size_t>(topo.slots)>;
+    using queue_type = detail::event_queue<Policy::queue_capacity, typename an::events>;
+    using event_types = typename an::events;
+
+    /// Enters the initial configuration (entry actions run) and settles eventless transitions.
+    constexpr explicit machine(Chart const& chart, context_type context = {}, Observer observer = {})
+        : chart_(chart), context_(std::move(context)), observer_(std::move(observer)) {
+        if constexpr (topo.slots > 0)
+            config_.active = plan::template initial_bytes<topo.slots>();
+        enter_default<root>();
+        last_ = finish(false);
+    }
+
+    /// Processes e to completion: the transitions it enables, then eventless transitions and
+    /// raised events until none remain. Fails to compile if no transition handles E.
+    template <class E>
+    constexpr outcome dispatch(E const& e) {
+        constexpr int trigger = an::template trigger_of<E>;
+        if constexpr (trigger < 0) {
+            static_assert(error::unhandled_event<E>::value);
+            return outcome::ignored;
+        } else {
+            return process<trigger>(e);
+        }
+    }
+
+    /// As dispatch(e), but an event type that no transition handles is accepted and ignored.
+    template <class E>
+    constexpr outcome dispatch(E const& e, allow_unhandled_t) {
+        constexpr int trigger = an::template trigger_of<E>;
+        if constexpr (trigger < 0)
+            return last_ = outcome::ignored;
+        else
+            return process<trigger>(e);
+    }
+
+    /// True if state S is active.
+    template <class S>
+    constexpr bool is() const {
+        constexpr int s = an::template index_of_state<S>;
+        if constexpr (s < 0) {
+            static_assert(error::state_not_in_chart<S>::value);
+            return false;
+        } else {
+            return active_on_path<s>();
+        }
+    }
+
+    /// True once a final child of the root is active: the machine processes nothing more.
+    constexpr bool halted() const {
+        if constexpr (has_final_root_child) {
+            bool result = false;
+            detail::visit_index<topo.child_count[root]>(active_child<root>(), [&](auto i) {
+                result = topo.kinds[static_cast<std::size_t>(plan::template children<root>[decltype(i)::value])] ==
+                         detail::kind::final_state;
+            });
+            return result;
+        } else {
+            return false;
+        }
+    }
+
+    /// The names of the active states, outermost first, in document order.
+    constexpr auto active_states() const {
+        state_names<static_cast<std::size_t>(an::N)> names;
+        std::array<bool, static_cast<std::size_t>(an::N)> active{};
+        active[0] = true;
+        for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s) {
+            auto const p = static_cast<std::size_t>(topo.parent[s]);
+            active[s] = active[p] &&
+                        (topo.slot[p] < 0 || config_byte(topo.slot[p]) == static_cast<std::uint8_t>(topo.ordinal[s]));
+            if (active[s])
+                names.push_back(state_name_table[s]);
+        }
+        return names;
+    }
+
+    /// The outcome of the last dispatch (or of construction).
+    constexpr outcome last_outcome() const { return last_; }
+
+    constexpr context_type& context() { return context_; }
+    constexpr context_type const& context() const { return context_; }
+    constexpr configuration_type const& active_configuration() const { return config_; }
+    constexpr Observer& observer() { return observer_; }
+    constexpr Observer const& observer() const { return observer_; }
+    constexpr queue_type const& queue() const { return queue_; }
+
+private:
+    // ---- state access ------------------------------------------------------------------
+    constexpr std::uint8_t config_byte(int slot) const {
+        if constexpr (topo.slots > 0)
+            return config_.active[static_cast<std::size_t>(slot)];
+        else
+            return 0;
+    }
+    template <int S>
+    constexpr int active_child() const {
+        if constexpr (topo.slot[S] >= 0)
+            return config_.active[static_cast<std::size_t>(topo.slot[S])];
+        else
+            return 0;  // the top has one child
+    }
+    template <int S>
+    constexpr void set_active_child(int ordinal) {
+        if constexpr (topo.slot[S] >= 0)
+            config_.active[static_cast<std::size_t>(topo.slot[S])] = static_cast<std::uint8_t>(ordinal);
+    }
+    template <int S>
+    constexpr bool active_on_path() const {
+        if constexpr (S <= root) {
+            return true;
+        } else {
+            constexpr int p = topo.parent[S];
+            if constexpr (topo.slot[p] >= 0)
+                return active_child<p>() == topo.ordinal[S] && active_on_path<p>();
+            else
+                return active_on_path<p>();
+        }
+    }
+
+    static constexpr bool has_final_root_child = [] {
+        if (topo.kinds[root] != detail::kind::composite)
+            return false;
+        for (int c : plan::template children<root>)
+            if (topo.kinds[static_cast<std::size_t>(c)] == detail::kind::final_state)
+                return true;
+        return false;
+    }();
+
+    static constexpr auto state_name_table = []<class... Tags>(detail::type_list<Tags...>) {
+        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
+    }(typename an::tags{});
+
+    template <int Row>
+    constexpr auto const& row() const {
+        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart_.rows);
+    }
+
+    // ---- entry and exit ----------------------------------------------------------------
+    template <int S>
+    constexpr void run_entry() {
+        constexpr auto const& rows = plan::template state_rows<detail::row_kind::entry, S>;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (row<rows[I]>().action(context_, queue_), ...);
+        }
+        (std::make_index_sequence<rows.size()>{});
+        using tag = state_tag<typename an::template tag_at<S>>;
+        if constexpr (detail::observes_entry<Observer, tag>)
+            observer_.on_entry(tag{});
+    }
+
+    template <int S>
+    constexpr void run_exit() {
+        constexpr auto const& rows = plan::template state_rows<detail::row_kind::exit, S>;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (row<rows[I]>().action(context_, queue_), ...);
+        }
+        (std::make_index_sequence<rows.size()>{});
+        using tag = state_tag<typename an::template tag_at<S>>;
+        if constexpr (detail::observes_exit<Observer, tag>)
+            observer_.on_exit(tag{});
+    }
+
+    template <int S, class F>
+    static constexpr void for_each_child(F&& f) {
+        constexpr auto const& kids = plan::template children<S>;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (f(detail::int_c<kids[I]>{}), ...);
+        }
+        (std::make_index_sequence<kids.size()>{});
+    }
+
+    template <int S, class F>
+    constexpr void with_active_child(F&& f) const {
+        constexpr auto const& kids = plan::template children<S>;
+        detail::visit_index<static_cast<int>(kids.size())>(
+            active_child<S>(), [&](auto i) { f(detail::int_c<kids[decltype(i)::value]>{}); });
+    }
+
+    // Enters S and its default (or history) completion.
+    template <int S>
+    constexpr void enter_default() {
+        run_entry<S>();
+        enter_content<S>();
+    }
+
+    template <int S>
+    constexpr void enter_content() {
+        constexpr auto k = topo.kinds[S];
+        if constexpr (k == detail::kind::composite) {
+            constexpr auto h = topo.hist[S];
+            if constexpr (h == detail::history::none) {
+                constexpr int init = topo.initial[S];
+                set_active_child<S>(topo.ordinal[init]);
+                enter_default<init>();
+            } else if constexpr (h == detail::history::shallow) {
+                with_active_child<S>([&](auto c) { enter_default<decltype(c)::value>(); });
+            } else {
+                with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
+            }
+        } else if constexpr (k == detail::kind::parallel) {
+            for_each_child<S>([&](auto c) { enter_default<decltype(c)::value>(); });
+        }
+    }
+
+    // Deep history: re-enters S and the sub-configuration its bytes remember.
+    template <int S>
+    constexpr void enter_restore() {
+        run_entry<S>();
+        constexpr auto k = topo.kinds[S];
+        if constexpr (k == detail::kind::composite)
+            with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
+        else if constexpr (k == detail::kind::parallel)
+            for_each_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
+    }
+
+    // Enters, below the active state D, the path to Target (and parallel siblings on the way).
+    template <int D, int Target>
+    constexpr void enter_toward() {
+        constexpr int c = topo.child_toward(D, Target);
+        if constexpr (topo.kinds[D] == detail::kind::parallel) {
+            for_each_child<D>([&](auto k) {
+                if constexpr (decltype(k)::value == c)
+                    enter_path_node<c, Target>();
+                else
+                    enter_default<decltype(k)::value>();
+            });
+        } else {
+            set_active_child<D>(topo.ordinal[c]);
+            enter_path_node<c, Target>();
+        }
+    }
+    template <int C, int Target>
+    constexpr void enter_path_node() {
+        run_entry<C>();
+        if constexpr (C == Target)
+            enter_content<C>();
+        else
+            enter_toward<C, Target>();
+    }
+
+    // Exits the active descendants of S, innermost first, in reverse document order.
+    template <int S>
+    constexpr void exit_below() {
+        constexpr auto k = topo.kinds[S];
+        if constexpr (k == detail::kind::composite || k == detail::kind::top) {
+            with_active_child<S>([&](auto c) {
+                exit_below<decltype(c)::value>();
+                run_exit<decltype(c)::value>();
+            });
+        } else if constexpr (k == detail::kind::parallel) {
+            constexpr auto const& kids = plan::template children<S>;
+            [&]<std::size_t... I>(std::index_sequence<I...>) {
+                ((exit_below<kids[kids.size() - 1 - I]>(), run_exit<kids[kids.size() - 1 - I]>()), ...);
+            }
+            (std::make_index_sequence<kids.size()>{});
+        }
+    }
+
+    // Exits the known path from basic state X up to, not including, D.
+    template <int X, int D>
+    constexpr void exit_up() {
+        if constexpr (X != D) {
+            run_exit<X>();
+            exit_up<topo.parent[X], D>();
+        }
+    }
+
+    // ---- transitions -------------------------------------------------------------------
+    template <int Row, class E>
+    constexpr bool guard_holds(E const& e) const {
+        if constexpr (table.guarded[Row])
+            return row<Row>().guard(context_, e);
+        else
+            return true;
+    }
+
+    template <int Row, class E>
+    constexpr void run_action(E const& e) {
+        using R = typename an::template row_at<Row>;
+        using src = state_tag<typename R::source>;
+        using dst = std::conditional_t<std::is_same_v<typename R::target, detail::no_target>, state_tag<internal>,
+                                       state_tag<typename R::target>>;
+        if constexpr (detail::observes_transition<Observer, src, dst, E>)
+            observer_.on_transition(src{}, dst{}, e);
+        row<Row>().action(context_, e, queue_);
+    }
+
+    template <int Row>
+    constexpr void run_entries() {
+        constexpr int d = table.domain[Row];
+        if constexpr (d >= 0)
+            enter_toward<d, table.target[Row]>();
+    }
+
+    // Fires a transition selected at basic state Leaf, which no parallel state contains:
+    // the exit path is known, so exits, action and entries are straight-line code.
+    template <int Leaf, int Row, class E>
+    constexpr void fire_from(E const& e) {
+        constexpr int d = table.domain[Row];
+        if constexpr (d >= 0)
+            exit_up<Leaf, d>();
+        run_action<Row>(e);
+        run_entries<Row>();
+    }
+
+    // The transitions selected in parallel regions, fired together after selection.
+    struct selection {
+        std::array<std::uint16_t, static_cast<std::size_t>(plan::max_active_leaves(root))> rows{};
+        std::size_t size = 0;
+        constexpr void add(int position) {
+            for (std::size_t i = 0; i < size; ++i)
+                if (rows[i] == position)
+                    return;
+            rows[size++] = static_cast<std::uint16_t>(position);
+        }
+    };
+
+    template <int Leaf, int Trigger, int Row, class E>
+    constexpr bool try_row(E const& e, selection& sel) {
+        if (!guard_holds<Row>(e))
+            return false;
+        if constexpr (topo.under_parallel(Leaf))
+            sel.add(plan::template position_of<Trigger>(Row));
+        else
+            fire_from<Leaf, Row>(e);
+        return true;
+    }
+
+    template <int Leaf, int Trigger, class E>
+    constexpr bool try_leaf(E const& e, selection& sel) {
+        constexpr auto const& cands = plan::template candidates<Leaf, Trigger>;
+        return [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return (try_row<Leaf, Trigger, cands[I]>(e, sel) || ...);
+        }
+        (std::make_index_sequence<cands.size()>{});
+    }
+
+    // Walks the active configuration below S, visiting only states relevant to the trigger.
+    template <int S, int Trigger, class E>
+    constexpr bool select(E const& e, selection& sel) {
+        constexpr auto k = topo.kinds[S];
+        if constexpr (!plan::template relevant<Trigger>[S]) {
+            return false;
+        } else if constexpr (k == detail::kind::basic || k == detail::kind::final_state) {
+            return try_leaf<S, Trigger>(e, sel);
+        } else if constexpr (k == detail::kind::parallel) {
+            bool any = false;
+            for_each_child<S>([&](auto c) { any = select<decltype(c)::value, Trigger>(e, sel) || any; });
+            return any;
+        } else {
+            bool any = false;
+            with_active_child<S>([&](auto c) {
+                if constexpr (plan::template relevant<Trigger>[decltype(c)::value])
+                    any = select<decltype(c)::value, Trigger>(e, sel);
+            });
+            return any;
+        }
+    }
+
+    template <int Trigger, class F>
+    static constexpr void with_transition(int position, F&& f) {
+        constexpr auto const& rows = plan::template transitions<Trigger>;
+        detail::visit_index<static_cast<int>(rows.size())>(
+            position, [&](auto i) { f(detail::int_c<rows[decltype(i)::value]>{}); });
+    }
+
+    // SCXML: drop transitions whose exit sets meet an earlier one's, unless the later one's
+    // source is a descendant of the earlier one's (then it preempts it); then exit all,
+    // run the actions in order, enter all.
+    template <int Trigger, class E>
+    constexpr void fire_selected(E const& e, selection const& sel) {
+        constexpr auto const& rows = plan::template transitions<Trigger>;
+        selection kept;
+        for (std::size_t i = 0; i < sel.size; ++i) {
+            int const t1 = rows[sel.rows[i]];
+            bool preempted = false;
+            selection survivors;
+            for (std::size_t j = 0; j < kept.size; ++j) {
+                int const t2 = rows[kept.rows[j]];
+                if (!plan::conflict(t1, t2)) {
+                    survivors.add(kept.rows[j]);
+                } else if (topo.is_proper_ancestor(table.source[static_cast<std::size_t>(t2)],
+                                                   table.source[static_cast<std::size_t>(t1)])) {
+                    continue;  // t1 preempts t2
+                } else {
+                    preempted = true;
+                    break;
+                }
+            }
+            if (!preempted) {
+                survivors.add(sel.rows[i]);
+                kept = survivors;
+            }
+        }
+        for (std::size_t i = kept.size; i-- > 0;)
+            with_transition<Trigger>(kept.rows[i], [&](auto r) {
+                constexpr int d = table.domain[decltype(r)::value];
+                if constexpr (d >= 0)
+                    exit_below<d>();
+            });
+        for (std::size_t i = 0; i < kept.size; ++i)
+            with_transition<Trigger>(kept.rows[i], [&](auto r) { run_action<decltype(r)::value>(e); });
+        for (std::size_t i = 0; i < kept.size; ++i)
+            with_transition<Trigger>(kept.rows[i], [&](auto r) { run_entries<decltype(r)::value>(); });
+    }
+
+    // One microstep on a trigger; true if a transition fired.
+    template <int Trigger, class E>
+    constexpr bool microstep(E const& e) {
+        if constexpr (!plan::has_trigger(Trigger)) {
+            return false;
+        } else {
+            selection sel;
+            bool const any = select<0, Trigger>(e, sel);
+            if constexpr (plan::has_parallel)
+                if (sel.size > 0)
+                    fire_selected<Trigger>(e, sel);
+            return any;
+        }
+    }
+
+    template <int Trigger, class E>
+    constexpr outcome process(E const& e) {
+        if (halted())
+            return last_ = outcome::halted;
+        return last_ = finish(microstep<Trigger>(e));
+    }
+
+    // Settles the machine after a microstep: eventless transitions until none is enabled,
+    // then the raised events one by one, each followed by its eventless transitions.
+    constexpr outcome finish(bool consumed) {
+        std::size_t internal_events = 0;
+        for (;;) {
+            if constexpr (plan::has_trigger(detail::eventless_id)) {
+                // Up to max_eventless_steps transitions settle; one more means the chart cycles.
+                for (std::size_t steps = 0; !halted() && microstep<detail::eventless_id>(eventless{});)
+                    if (++steps > Policy::max_eventless_steps)
+                        return abandon();
+            }
+            if (queue_.empty() || halted())
+                break;
+            if (++internal_events > Policy::max_internal_events)
+                return abandon();
+            queue_.pop([&](auto const& ev) { microstep<an::template trigger_of<std::decay_t<decltype(ev)>>>(ev); });
+        }
+        if (queue_.overflowed()) {
+            queue_.clear_overflow();
+            return outcome::queue_overflow;
+        }
+        return consumed ? outcome::consumed : outcome::ignored;
+    }
+
+    constexpr outcome abandon() {
+        queue_.clear();
+        queue_.clear_overflow();
+        return outcome::livelock;
+    }
+
+    [[no_unique_address]] Chart chart_;
+    context_type context_;
+    configuration_type config_{};
+    queue_type queue_{};
+    outcome last_ = outcome::ignored;
+    [[no_unique_address]] Observer observer_;
+};
+
+template <class C, class Ctx>
+machine(C const&, Ctx) -> machine<C>;
+template <class C>
+machine(C const&) -> machine<C>;
+template <class C, class Ctx, class O>
+machine(C const&, Ctx, O) -> machine<C, default_policy, O>;
+
+}  // namespace bsc
+// end include/bsc/compiled/machine.hpp
+// end include/bsc/bsc.hpp

@@ -1,0 +1,408 @@
+// Each test case pins down one sentence of docs/semantics.md (quoted in the case name).
+
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "trace.hpp"
+
+using bsc_test::trace_observer;
+
+namespace sem {
+struct go {};
+struct back {};
+struct tick {};
+struct ping {};
+struct pong {};
+struct A;
+struct A1;
+struct A2;
+struct B;
+struct B1;
+struct B2;
+struct Root;
+struct ctx {
+    int value = 0;
+    bool flag = false;
+    std::string log;
+};
+inline constexpr auto log = [](char const* what) {
+    return bsc::action([what](ctx& c) {
+        if (!c.log.empty()) c.log += ' ';
+        c.log += what;
+    });
+};
+}  // namespace sem
+
+using namespace sem;
+
+TEST_CASE("a transition exits innermost first, runs its action, then enters outermost first") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>,
+                             bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A2>)),
+                             bsc::composite<B>(bsc::initial<B1>, bsc::composite<B1>(bsc::initial<B2>))),
+        bsc::state<A2> + bsc::event<go> / log("action") = bsc::state<B>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>,
+        bsc::state<A> + bsc::on_exit / log("exit A"), bsc::state<A1> + bsc::on_exit / log("exit A1"),
+        bsc::state<A2> + bsc::on_exit / log("exit A2"), bsc::state<B> + bsc::on_entry / log("enter B"),
+        bsc::state<B1> + bsc::on_entry / log("enter B1"), bsc::state<B2> + bsc::on_entry / log("enter B2"));
+    bsc::machine m{chart, ctx{}};
+    CHECK(m.active_states().joined() == "Root A A1 A2");
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "exit A2 exit A1 exit A action enter B enter B1 enter B2");
+    CHECK(m.active_states().joined() == "Root B B1 B2");
+}
+
+namespace sem {
+struct C;
+struct C1;
+struct C2;
+struct D;
+}  // namespace sem
+
+TEST_CASE("the deepest source wins; among equals, the first enabled in declaration order") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>), bsc::state<B>,
+                             bsc::state<C>),
+        bsc::state<A> + bsc::event<go> = bsc::state<B>,                                   // ancestor
+        bsc::state<A1> + bsc::event<go>[([](ctx const& c) { return c.value == 1; })] = bsc::state<C>,
+        bsc::state<A1> + bsc::event<go>[([](ctx const& c) { return c.value >= 1; })] = bsc::state<A2>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>, bsc::state<C> + bsc::event<back> = bsc::state<A>,
+        bsc::state<A2> + bsc::event<back> = bsc::state<A1>);
+    SUBCASE("no guard of the leaf holds: the ancestor's transition fires") {
+        bsc::machine m{chart, ctx{}};
+        m.dispatch(go{});
+        CHECK(m.is<B>());
+    }
+    SUBCASE("both leaf guards hold: the first declared fires") {
+        bsc::machine m{chart, ctx{1, false, {}}};
+        m.dispatch(go{});
+        CHECK(m.is<C>());
+    }
+    SUBCASE("only the second leaf guard holds: it fires, not the ancestor's") {
+        bsc::machine m{chart, ctx{2, false, {}}};
+        m.dispatch(go{});
+        CHECK(m.is<A2>());
+    }
+}
+
+TEST_CASE("an event that enables no transition is ignored and changes nothing") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+        bsc::state<A> + bsc::event<go>[([](ctx const& c) { return c.flag; })] = bsc::state<B>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    bsc::machine m{chart, ctx{}};
+    auto const before = m.active_configuration();
+    CHECK(m.dispatch(go{}) == bsc::outcome::ignored);
+    CHECK(m.dispatch(back{}) == bsc::outcome::ignored);
+    CHECK(m.active_configuration() == before);
+    m.context().flag = true;
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.is<B>());
+}
+
+TEST_CASE("the transition domain: siblings keep their parent, self and ancestor/descendant targets re-enter") {
+    std::string trace;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>), bsc::state<B>),
+        bsc::state<A1> + bsc::event<go> = bsc::state<A2>,    // siblings: A stays
+        bsc::state<A2> + bsc::event<go> = bsc::state<A2>,    // external self-transition
+        bsc::state<A2> + bsc::event<back> = bsc::state<A>,   // to an ancestor: A re-entered
+        bsc::state<A> + bsc::event<tick> = bsc::state<A2>,   // to a descendant: A re-entered
+        bsc::state<A> + bsc::event<ping> = bsc::state<B>, bsc::state<B> + bsc::event<ping> = bsc::state<A>);
+    bsc::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    trace.clear();
+    m.dispatch(go{});
+    CHECK(trace == "-A1 A1>A2 +A2");
+    trace.clear();
+    m.dispatch(go{});
+    CHECK(trace == "-A2 A2>A2 +A2");
+    trace.clear();
+    m.dispatch(back{});
+    CHECK(trace == "-A2 -A A2>A +A +A1");
+    trace.clear();
+    m.dispatch(tick{});
+    CHECK(trace == "-A1 -A A>A2 +A +A2");
+}
+
+TEST_CASE("an internal transition (no target) runs its action and exits and enters nothing") {
+    std::string trace;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>)),
+        bsc::state<A> + bsc::event<go> / [](ctx& c) { ++c.value; },
+        bsc::state<A1> + bsc::event<back> = bsc::state<A2>, bsc::state<A2> + bsc::event<back> = bsc::state<A1>);
+    bsc::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    trace.clear();
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(trace == "A>internal");
+    CHECK(m.context().value == 1);
+    CHECK(m.active_states().joined() == "Root A A1");
+}
+
+TEST_CASE("shallow history restores the last active child; its own children take their defaults") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>,
+                             bsc::composite<A>(bsc::shallow_history, bsc::initial<A1>,
+                                               bsc::composite<A1>(bsc::initial<C1>, bsc::state<C2>),
+                                               bsc::state<A2>),
+                             bsc::state<B>),
+        bsc::state<C1> + bsc::event<tick> = bsc::state<C2>, bsc::state<C2> + bsc::event<tick> = bsc::state<C1>,
+        bsc::state<A1> + bsc::event<ping> = bsc::state<A2>, bsc::state<A2> + bsc::event<ping> = bsc::state<A1>,
+        bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<B> + bsc::event<back> = bsc::state<A>,
+        bsc::state<B> + bsc::event<pong> = bsc::state<C2>);
+    bsc::machine m{chart, ctx{}};
+    m.dispatch(tick{});  // A1/C2
+    m.dispatch(go{});
+    m.dispatch(back{});
+    CHECK(m.active_states().joined() == "Root A A1 C1");  // A1 remembered, C default
+    m.dispatch(ping{});                                    // A2
+    m.dispatch(go{});
+    m.dispatch(back{});
+    CHECK(m.active_states().joined() == "Root A A2");
+    SUBCASE("an explicit target inside the history state wins over history") {
+        m.dispatch(go{});
+        m.dispatch(pong{});
+        CHECK(m.active_states().joined() == "Root A A1 C2");
+    }
+}
+
+TEST_CASE("deep history restores the whole last active sub-configuration") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>,
+                             bsc::composite<A>(bsc::deep_history, bsc::initial<A1>,
+                                               bsc::composite<A1>(bsc::initial<C1>, bsc::state<C2>),
+                                               bsc::state<A2>),
+                             bsc::state<B>),
+        bsc::state<C1> + bsc::event<tick> = bsc::state<C2>, bsc::state<C2> + bsc::event<tick> = bsc::state<C1>,
+        bsc::state<A1> + bsc::event<ping> = bsc::state<A2>, bsc::state<A2> + bsc::event<ping> = bsc::state<A1>,
+        bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    bsc::machine m{chart, ctx{}};
+    CHECK(m.active_states().joined() == "Root A A1 C1");  // never visited: defaults
+    m.dispatch(tick{});
+    m.dispatch(go{});
+    CHECK(m.active_states().joined() == "Root B");
+    m.dispatch(back{});
+    CHECK(m.active_states().joined() == "Root A A1 C2");
+}
+
+namespace sem {
+struct P;
+struct R1;
+struct R2;
+struct X1;
+struct X2;
+struct Y1;
+struct Y2;
+struct Out;
+struct e1 {};
+struct e2 {};
+}  // namespace sem
+
+TEST_CASE("a parallel state: entered region by region, events broadcast to every region") {
+    std::string trace;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<P>,
+                             bsc::parallel<P>(bsc::composite<R1>(bsc::initial<X1>, bsc::state<X2>),
+                                              bsc::composite<R2>(bsc::initial<Y1>, bsc::state<Y2>)),
+                             bsc::state<Out>),
+        bsc::state<X1> + bsc::event<go> = bsc::state<X2>, bsc::state<Y1> + bsc::event<go> = bsc::state<Y2>,
+        bsc::state<X2> + bsc::event<back> = bsc::state<X1>, bsc::state<Y2> + bsc::event<back> = bsc::state<Y1>,
+        bsc::state<P> + bsc::event<tick> = bsc::state<Out>, bsc::state<Out> + bsc::event<tick> = bsc::state<Y2>,
+        bsc::state<X2> + bsc::event<ping> / log("x2") = bsc::state<X1>,
+        bsc::state<Y2> + bsc::event<ping> / log("y2") = bsc::state<Out>,
+        bsc::state<X2> + bsc::event<pong> / log("x2") = bsc::state<Out>,
+        bsc::state<Y2> + bsc::event<pong> / log("y2") = bsc::state<Y1>,
+        bsc::state<P> + bsc::event<e1> = bsc::state<Out>, bsc::state<Y2> + bsc::event<e1> = bsc::state<Y1>,
+        bsc::state<X1> + bsc::event<e2> = bsc::state<X2>, bsc::state<Y2> + bsc::event<e2> / log("y2"));
+    bsc::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    CHECK(trace == "+Root +P +R1 +X1 +R2 +Y1");
+    trace.clear();
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    // SCXML microstep: all exits (reverse document order), then actions, then entries.
+    CHECK(trace == "-Y1 -X1 X1>X2 Y1>Y2 +X2 +Y2");
+    CHECK(m.active_states().joined() == "Root P R1 X2 R2 Y2");
+
+    SUBCASE("a transition of the parallel state itself fires once, whatever the number of regions") {
+        trace.clear();
+        m.dispatch(tick{});
+        CHECK(trace == "-Y2 -R2 -X2 -R1 -P P>Out +Out");
+        SUBCASE("entering a region's state enters the other regions by default, in document order") {
+            trace.clear();
+            m.dispatch(tick{});
+            CHECK(trace == "-Out Out>Y2 +P +R1 +X1 +R2 +Y2");
+        }
+    }
+    SUBCASE("conflicting exit sets: the transition selected in the earlier region wins") {
+        m.dispatch(ping{});  // X2 -> X1 stays in R1; Y2 -> Out would leave P: dropped
+        CHECK(m.active_states().joined() == "Root P R1 X1 R2 Y2");
+        CHECK(m.context().log == "x2");
+        m.dispatch(go{});
+        m.context().log.clear();
+        m.dispatch(pong{});  // X2 -> Out leaves P; Y2 -> Y1 conflicts with it: dropped
+        CHECK(m.active_states().joined() == "Root Out");
+        CHECK(m.context().log == "x2");
+    }
+    SUBCASE("conflicting exit sets: a later transition from a descendant preempts an ancestor's") {
+        trace.clear();
+        m.dispatch(e1{});  // P -> Out is selected by X2, but Y2 -> Y1 from inside P preempts it
+        CHECK(trace == "-Y2 Y2>Y1 +Y1");
+        CHECK(m.active_states().joined() == "Root P R1 X2 R2 Y1");
+    }
+    SUBCASE("internal transitions have empty exit sets and never conflict") {
+        m.dispatch(ping{});
+        m.context().log.clear();
+        m.dispatch(e2{});  // X1 -> X2 and Y2's internal transition both fire
+        CHECK(m.context().log == "y2");
+        CHECK(m.active_states().joined() == "Root P R1 X2 R2 Y2");
+    }
+}
+
+TEST_CASE("guards compose with !, && and ||; actions run in sequence; event data reaches both") {
+    struct number {
+        int n;
+    };
+    struct big;
+    static constexpr auto positive = bsc::guard([](ctx const&, number const& e) { return e.n > 0; });
+    static constexpr auto even = bsc::guard([](ctx const&, number const& e) { return e.n % 2 == 0; });
+    static constexpr auto flagged = bsc::guard([](ctx const& c) { return c.flag; });
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<big>),
+        bsc::state<A> + bsc::event<number>[positive && even && !flagged] /
+                            (bsc::action([](ctx& c, number const& e) { c.value += e.n; }), log("first"),
+                             [](ctx& c) { c.log += " second"; }),
+        bsc::state<A> + bsc::event<number>[flagged || !positive] / log("other"),
+        bsc::state<A> + bsc::event<go> = bsc::state<big>, bsc::state<big> + bsc::event<go> = bsc::state<A>);
+    bsc::machine m{chart, ctx{}};
+    CHECK(m.dispatch(number{3}) == bsc::outcome::ignored);
+    CHECK(m.dispatch(number{4}) == bsc::outcome::consumed);
+    CHECK(m.context().value == 4);
+    CHECK(m.context().log == "first second");
+    m.context().log.clear();
+    m.context().flag = true;
+    CHECK(m.dispatch(number{4}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "other");
+    CHECK(m.context().value == 4);
+}
+
+TEST_CASE("eventless transitions run after each microstep until none is enabled, and at construction") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>, bsc::state<D>),
+        bsc::state<A>[([](ctx const& c) { return c.value > 0; })] / log("A>B") = bsc::state<B>,
+        bsc::state<B> / log("B>C") = bsc::state<C>,
+        bsc::state<C> + bsc::event<go> / [](ctx& c) { c.value = 10; } = bsc::state<D>,
+        bsc::state<D>[([](ctx const& c) { return c.value == 10; })] / log("D>A") = bsc::state<A>);
+    SUBCASE("at construction") {
+        bsc::machine m{chart, ctx{1, false, {}}};
+        CHECK(m.is<C>());
+        CHECK(m.context().log == "A>B B>C");
+    }
+    SUBCASE("after an event, the chain runs before dispatch returns") {
+        bsc::machine m{chart, ctx{0, false, {}}};
+        CHECK(m.is<A>());
+        m.context().value = 0;
+        CHECK(m.dispatch(go{}) == bsc::outcome::ignored);
+        m.context().value = 1;
+        CHECK(m.dispatch(go{}) == bsc::outcome::ignored);  // the event fires nothing; A>B>C follow it
+        CHECK(m.is<C>());
+        m.context().log.clear();
+        CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+        CHECK(m.context().log == "D>A A>B B>C");
+        CHECK(m.is<C>());
+    }
+}
+
+TEST_CASE("an eventless transition is also evaluated when the dispatched event fired nothing") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+        bsc::state<A>[([](ctx const& c) { return c.flag; })] = bsc::state<B>,
+        bsc::state<B> + bsc::event<go> = bsc::state<A>, bsc::state<A> + bsc::event<back> / log("back"));
+    bsc::machine m{chart, ctx{}};
+    m.context().flag = true;  // written by the environment between dispatches
+    CHECK(m.dispatch(go{}) == bsc::outcome::ignored);
+    CHECK(m.is<B>());
+}
+
+TEST_CASE("a guarded eventless cycle that stays enabled is stopped and reported as a livelock") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+        bsc::state<A>[([](ctx const& c) { return c.flag; })] / [](ctx& c) { ++c.value; } = bsc::state<B>,
+        bsc::state<B>[([](ctx const& c) { return c.flag; })] / [](ctx& c) { ++c.value; } = bsc::state<A>,
+        bsc::state<A> + bsc::event<go> / [](ctx& c) { c.flag = true; });
+    bsc::machine m{chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::livelock);
+    // max_eventless_steps transitions settle normally; the one after them is reported.
+    CHECK(m.context().value == static_cast<int>(bsc::default_policy::max_eventless_steps) + 1);
+    CHECK(m.last_outcome() == bsc::outcome::livelock);
+}
+
+TEST_CASE("raised events are queued and processed in order after the current step, before dispatch returns") {
+    std::string trace;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+        bsc::state<A> + bsc::event<go> / (bsc::raise(ping{}), bsc::raise(pong{}), log("go")) = bsc::state<B>,
+        bsc::state<B> + bsc::on_entry / log("enter B"),
+        bsc::state<B> + bsc::event<ping> / log("ping") = bsc::state<C>,
+        bsc::state<C> + bsc::event<pong> / [](ctx& c, pong const&, auto& raise) {
+            c.log += " pong";
+            raise(back{});
+        },
+        bsc::state<C> + bsc::event<back> / log("back") = bsc::state<A>);
+    bsc::machine m{chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "go enter B ping pong back");
+    CHECK(m.is<A>());
+    CHECK(m.queue().empty());
+}
+
+namespace sem {
+struct tiny_queue : bsc::default_policy {
+    static constexpr std::size_t queue_capacity = 2;
+};
+}  // namespace sem
+
+TEST_CASE("queue overflow is reported, the extra event is dropped and the rest is processed") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>),
+        bsc::state<A> + bsc::event<go> / (bsc::raise(ping{}), bsc::raise(ping{}), bsc::raise(ping{})),
+        bsc::state<A> + bsc::event<ping> / [](ctx& c) { ++c.value; }, bsc::state<A> + bsc::event<back> = bsc::state<A>);
+    bsc::machine<decltype(chart), tiny_queue> m{chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::queue_overflow);
+    CHECK(m.context().value == 2);
+    CHECK(m.dispatch(go{}) == bsc::outcome::queue_overflow);
+    CHECK(m.context().value == 4);
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);  // the overflow is reported once, not forever
+}
+
+TEST_CASE("events that keep raising each other are stopped and reported as a livelock") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>),
+        bsc::state<A> + bsc::event<ping> / (bsc::raise(pong{}), bsc::action([](ctx& c) { ++c.value; })),
+        bsc::state<A> + bsc::event<pong> / bsc::raise(ping{}), bsc::state<A> + bsc::event<back> = bsc::state<A>);
+    bsc::machine m{chart, ctx{}};
+    CHECK(m.dispatch(ping{}) == bsc::outcome::livelock);
+    CHECK(m.queue().empty());
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
+}
+
+TEST_CASE("a final child of the root halts the machine") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::final_state<B>),
+        bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<A> + bsc::event<back> / log("back"));
+    bsc::machine m{chart, ctx{}};
+    CHECK_FALSE(m.halted());
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.halted());
+    CHECK(m.dispatch(back{}) == bsc::outcome::halted);
+    CHECK(m.context().log.empty());
+}
+
+TEST_CASE("a transition from the root to a descendant exits and re-enters the root") {
+    std::string trace;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), bsc::state<Root> + bsc::event<go> = bsc::state<B>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    bsc::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    trace.clear();
+    m.dispatch(go{});
+    CHECK(trace == "-A -Root Root>B +Root +B");
+}
