@@ -4,6 +4,8 @@
 #include <bsc/chart.hpp>
 #include <bsc/compiled/machine.hpp>
 #include <bsc/configuration.hpp>
+#include <bsc/data/channel.hpp>
+#include <bsc/data/timer.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
 #include <bsc/dsl/row.hpp>

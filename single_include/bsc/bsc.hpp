@@ -131,6 +131,78 @@ constexpr void visit_index(int i, F&& f) {
 #include <type_traits>
 #include <utility>
 
+// begin include/bsc/data/timer.hpp
+// BSC timers (seed 002, section III.C): data in the context, started or reset by actions,
+// updated by the machine at the beginning of each cycle. A timer started during cycle k begins
+// timing at cycle k+1; its expired flag `tm()` turns true at the first cycle whose time is at
+// least the limit after that.
+
+#include <chrono>
+#include <cstdint>
+
+namespace bsc {
+
+/// The machine's notion of time: a duration since an arbitrary origin, given to step(now).
+using duration = std::chrono::nanoseconds;
+
+namespace detail {
+struct timer_base {};
+}  // namespace detail
+
+/// A timer with a fixed limit. Requirements: limit >= 0.
+class timer : detail::timer_base {
+public:
+    constexpr timer() = default;
+    constexpr explicit timer(duration limit) : limit_(limit) {}
+
+    /// Starts (or restarts) the timer; timing begins at the next cycle. Clears tm().
+    constexpr void start() {
+        phase_ = phase::pending;
+        expired_ = false;
+    }
+    /// Stops the timer and clears tm().
+    constexpr void reset() {
+        phase_ = phase::idle;
+        expired_ = false;
+    }
+    /// The paper's `tm`: the limit has been reached or passed.
+    constexpr bool tm() const { return expired_; }
+    constexpr bool expired() const { return expired_; }
+    constexpr bool running() const { return phase_ == phase::running && !expired_; }
+    constexpr duration limit() const { return limit_; }
+    /// Time since timing began (zero unless running or expired).
+    constexpr duration elapsed() const { return elapsed_; }
+
+    /// Called by the machine at the beginning of each cycle with the cycle's time.
+    constexpr void update(duration now) {
+        if (phase_ == phase::pending) {
+            phase_ = phase::running;
+            started_ = now;
+        }
+        if (phase_ == phase::running) {
+            elapsed_ = now - started_;
+            if (elapsed_ >= limit_) expired_ = true;
+        } else {
+            elapsed_ = duration::zero();
+        }
+    }
+
+    friend constexpr bool operator==(timer const& a, timer const& b) {
+        return a.limit_ == b.limit_ && a.started_ == b.started_ && a.elapsed_ == b.elapsed_ &&
+               a.phase_ == b.phase_ && a.expired_ == b.expired_;
+    }
+
+private:
+    enum class phase : std::uint8_t { idle, pending, running };
+    duration limit_{};
+    duration started_{};
+    duration elapsed_{};
+    phase phase_ = phase::idle;
+    bool expired_ = false;
+};
+
+}  // namespace bsc
+// end include/bsc/data/timer.hpp
 // begin include/bsc/dsl/action.hpp
 // Actions: what a transition, an entry or an exit does to the context.
 // Wrap a callable with bsc::action to sequence it with the comma operator: / (a, b, c).
@@ -259,7 +331,8 @@ constexpr auto make_seq(std::tuple<As...> t) {
 }
 
 template <class L, class R>
-requires(bsc_action<L> || bsc_action<R>) constexpr auto operator,(L l, R r) {
+    requires(bsc_action<L> || bsc_action<R>)
+constexpr auto operator,(L l, R r) {
     return make_seq(std::tuple_cat(as_tuple(std::move(l)), as_tuple(std::move(r))));
 }
 
@@ -387,7 +460,8 @@ constexpr auto operator&&(L l, R r) {
     return and_guard<L, RG>{{}, std::move(l), as_guard(std::move(r))};
 }
 template <class L, bsc_guard R>
-requires(!bsc_guard<L>) constexpr auto operator&&(L l, R r) {
+    requires(!bsc_guard<L>)
+constexpr auto operator&&(L l, R r) {
     using LG = decltype(as_guard(std::move(l)));
     return and_guard<LG, R>{{}, as_guard(std::move(l)), std::move(r)};
 }
@@ -397,7 +471,8 @@ constexpr auto operator||(L l, R r) {
     return or_guard<L, RG>{{}, std::move(l), as_guard(std::move(r))};
 }
 template <class L, bsc_guard R>
-requires(!bsc_guard<L>) constexpr auto operator||(L l, R r) {
+    requires(!bsc_guard<L>)
+constexpr auto operator||(L l, R r) {
     using LG = decltype(as_guard(std::move(l)));
     return or_guard<LG, R>{{}, as_guard(std::move(l)), std::move(r)};
 }
@@ -427,6 +502,10 @@ template <class E>
 struct event_trigger {
     using event = E;
 };
+/// The trigger of a state-scoped timeout: the source has been active for `delay`.
+struct timeout_trigger {
+    duration delay;
+};
 /// The target of an internal transition: no exit, no entry.
 struct no_target {};
 
@@ -434,13 +513,14 @@ struct row_base {};
 
 template <class Trigger, class G, class A>
 struct trigger_spec {
+    [[no_unique_address]] Trigger trigger;
     G guard;
     A action;
     template <class A2>
-    requires std::is_same_v<A, no_action>
+        requires std::is_same_v<A, no_action>
     constexpr auto operator/(A2 a) const {
         using action_t = decltype(as_action(std::move(a)));
-        return trigger_spec<Trigger, G, action_t>{guard, as_action(std::move(a))};
+        return trigger_spec<Trigger, G, action_t>{trigger, guard, as_action(std::move(a))};
     }
 };
 
@@ -450,12 +530,26 @@ struct event_ref {
     template <class G>
     constexpr auto operator[](G g) const {
         using guard_t = decltype(as_guard(std::move(g)));
-        return trigger_spec<event_trigger<E>, guard_t, no_action>{as_guard(std::move(g)), {}};
+        return trigger_spec<event_trigger<E>, guard_t, no_action>{{}, as_guard(std::move(g)), {}};
     }
     template <class A>
     constexpr auto operator/(A a) const {
         using action_t = decltype(as_action(std::move(a)));
-        return trigger_spec<event_trigger<E>, no_guard, action_t>{{}, as_action(std::move(a))};
+        return trigger_spec<event_trigger<E>, no_guard, action_t>{{}, {}, as_action(std::move(a))};
+    }
+};
+
+struct timeout_ref {
+    duration delay;
+    template <class G>
+    constexpr auto operator[](G g) const {
+        using guard_t = decltype(as_guard(std::move(g)));
+        return trigger_spec<timeout_trigger, guard_t, no_action>{{delay}, as_guard(std::move(g)), {}};
+    }
+    template <class A>
+    constexpr auto operator/(A a) const {
+        using action_t = decltype(as_action(std::move(a)));
+        return trigger_spec<timeout_trigger, no_guard, action_t>{{delay}, {}, as_action(std::move(a))};
     }
 };
 
@@ -465,16 +559,20 @@ struct transition_row : row_base {
     using trigger = Trigger;
     using target = T;
     static constexpr bool guarded = !std::is_same_v<G, no_guard>;
+    [[no_unique_address]] Trigger trigger_value;
     G guard;
     A action;
 
     template <class T2>
-    requires std::is_same_v<T, no_target>
-    constexpr auto operator=(state_ref<T2>) const { return transition_row<S, Trigger, G, A, T2>{{}, guard, action}; }
+        requires std::is_same_v<T, no_target>
+    constexpr auto operator=(state_ref<T2>) const {
+        return transition_row<S, Trigger, G, A, T2>{{}, trigger_value, guard, action};
+    }
     template <class A2>
-    requires(std::is_same_v<A, no_action>&& std::is_same_v<T, no_target>) constexpr auto operator/(A2 a) const {
+        requires(std::is_same_v<A, no_action> && std::is_same_v<T, no_target>)
+    constexpr auto operator/(A2 a) const {
         using action_t = decltype(as_action(std::move(a)));
-        return transition_row<S, Trigger, G, action_t, T>{{}, guard, as_action(std::move(a))};
+        return transition_row<S, Trigger, G, action_t, T>{{}, trigger_value, guard, as_action(std::move(a))};
     }
 };
 
@@ -517,6 +615,10 @@ inline constexpr bool is_transition_row = false;
 template <class S, class Tr, class G, class A, class T>
 inline constexpr bool is_transition_row<transition_row<S, Tr, G, A, T>> = true;
 template <class R>
+inline constexpr bool is_timeout_row = false;
+template <class S, class G, class A, class T>
+inline constexpr bool is_timeout_row<transition_row<S, timeout_trigger, G, A, T>> = true;
+template <class R>
 inline constexpr bool is_entry_row = false;
 template <class S, class A>
 inline constexpr bool is_entry_row<entry_row<S, A>> = true;
@@ -541,6 +643,13 @@ inline constexpr detail::exit_keyword on_exit{};
 
 /// The tag used in diagnostics and observers for a transition without an event.
 using eventless = detail::eventless_trigger;
+
+/// A state-scoped timeout trigger: `state<S> + after(3s) = state<T>` fires in the first cycle
+/// (step) at which S has been active for at least 3 s. Armed when S is entered.
+template <class Rep, class Period>
+constexpr detail::timeout_ref after(std::chrono::duration<Rep, Period> delay) {
+    return {std::chrono::duration_cast<duration>(delay)};
+}
 
 }  // namespace bsc
 // end include/bsc/dsl/row.hpp
@@ -571,7 +680,10 @@ struct state_ref {
     }
     template <class Tr, class G, class A>
     constexpr auto operator+(trigger_spec<Tr, G, A> spec) const {
-        return transition_row<S, Tr, G, A, no_target>{{}, std::move(spec.guard), std::move(spec.action)};
+        return transition_row<S, Tr, G, A, no_target>{{}, spec.trigger, std::move(spec.guard), std::move(spec.action)};
+    }
+    constexpr auto operator+(timeout_ref t) const {
+        return transition_row<S, timeout_trigger, no_guard, no_action, no_target>{{}, {t.delay}, {}, {}};
     }
     template <class A>
     constexpr auto operator+(entry_spec<A> spec) const {
@@ -585,12 +697,12 @@ struct state_ref {
     template <class G>
     constexpr auto operator[](G g) const {
         using guard_t = decltype(as_guard(std::move(g)));
-        return transition_row<S, eventless_trigger, guard_t, no_action, no_target>{{}, as_guard(std::move(g)), {}};
+        return transition_row<S, eventless_trigger, guard_t, no_action, no_target>{{}, {}, as_guard(std::move(g)), {}};
     }
     template <class A>
     constexpr auto operator/(A a) const {
         using action_t = decltype(as_action(std::move(a)));
-        return transition_row<S, eventless_trigger, no_guard, action_t, no_target>{{}, {}, as_action(std::move(a))};
+        return transition_row<S, eventless_trigger, no_guard, action_t, no_target>{{}, {}, {}, as_action(std::move(a))};
     }
     template <class T>
     constexpr auto operator=(state_ref<T>) const {
@@ -842,6 +954,10 @@ struct tags_of<type_list<Nodes...>> {
 enum class row_kind : std::uint8_t { transition, entry, exit };
 
 inline constexpr int eventless_id = -1;
+// Every timeout row has a trigger of its own, so two timeouts on one state never "conflict".
+constexpr int timeout_trigger_id(int row) { return -2 - row; }
+// Eventless and timeout transitions are condition-driven: the ones a BSC cycle considers.
+inline constexpr int any_condition = -1'000'000;
 inline constexpr int no_state = -1;
 inline constexpr int unknown_state = -2;
 
@@ -1024,8 +1140,8 @@ struct analysis {
                     r.target[i] = state_index<typename Rs::target, tags>();
                     r.guarded[i] = Rs::guarded;
                     using E = typename trigger_event<Rs>::type;
-                    if constexpr (!std::is_void_v<E>)
-                        r.trigger[i] = index_of<E, events>;
+                    if constexpr (!std::is_void_v<E>) r.trigger[i] = index_of<E, events>;
+                    if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
                 }
                 r.domain[i] = no_state;
                 if (r.source[i] >= 0 && r.target[i] >= 0)
@@ -1605,9 +1721,11 @@ struct plan {
     static constexpr int N = An::N;
     static constexpr int R = An::R;
 
+    // `trigger` is an event's position, eventless_id, or any_condition (eventless or timeout).
     static constexpr bool is_transition_on(int row, int trigger) {
-        return table.kinds[static_cast<std::size_t>(row)] == row_kind::transition &&
-               table.trigger[static_cast<std::size_t>(row)] == trigger;
+        auto const r = static_cast<std::size_t>(row);
+        if (table.kinds[r] != row_kind::transition) return false;
+        return trigger == any_condition ? table.trigger[r] < 0 : table.trigger[r] == trigger;
     }
 
     static constexpr bool has_trigger(int trigger) {
@@ -1650,6 +1768,69 @@ struct plan {
                 if (is_transition_on(r, Trigger) && table.source[static_cast<std::size_t>(r)] == a)
                     out[n++] = r;
         return out;
+    }();
+
+    // BSC components: the root and every child of a parallel state, in document order. In a
+    // cycle each fires at most one condition-driven transition, chosen from the states between
+    // its active frontier (a basic state, or a parallel state whose children are components of
+    // their own) and its root.
+    static constexpr int component_count() {
+        int n = 1;
+        for (int s = 2; s < N; ++s)
+            n += topo.kinds[static_cast<std::size_t>(topo.parent[static_cast<std::size_t>(s)])] == kind::parallel;
+        return n;
+    }
+    static constexpr auto components = [] {
+        std::array<int, static_cast<std::size_t>(component_count())> out{};
+        std::size_t n = 0;
+        out[n++] = 1;
+        for (int s = 2; s < N; ++s)
+            if (topo.kinds[static_cast<std::size_t>(topo.parent[static_cast<std::size_t>(s)])] == kind::parallel)
+                out[n++] = s;
+        return out;
+    }();
+
+    static constexpr int component_candidate_count(int frontier, int component) {
+        int n = 0;
+        for (int a = frontier;; a = topo.parent[static_cast<std::size_t>(a)]) {
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, any_condition) && table.source[static_cast<std::size_t>(r)] == a) ++n;
+            if (a == component) break;
+        }
+        return n;
+    }
+    template <int Frontier, int Component>
+    static constexpr auto component_candidates = [] {
+        std::array<int, static_cast<std::size_t>(component_candidate_count(Frontier, Component))> out{};
+        std::size_t n = 0;
+        for (int a = Frontier;; a = topo.parent[static_cast<std::size_t>(a)]) {
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, any_condition) && table.source[static_cast<std::size_t>(r)] == a)
+                    out[n++] = r;
+            if (a == Component) break;
+        }
+        return out;
+    }();
+
+    static constexpr bool has_timeout(int s) {
+        for (int r = 0; r < R; ++r)
+            if (table.trigger[static_cast<std::size_t>(r)] <= timeout_trigger_id(0) &&
+                table.kinds[static_cast<std::size_t>(r)] == row_kind::transition &&
+                table.source[static_cast<std::size_t>(r)] == s)
+                return true;
+        return false;
+    }
+    // States that are the source of a timeout row get a slot for the time they were entered.
+    static constexpr auto timeout_slot = [] {
+        std::array<int, static_cast<std::size_t>(N)> slot{};
+        int n = 0;
+        for (int s = 0; s < N; ++s) slot[static_cast<std::size_t>(s)] = has_timeout(s) ? n++ : -1;
+        return slot;
+    }();
+    static constexpr int timeout_slots = [] {
+        int n = 0;
+        for (int s = 0; s < N; ++s) n += has_timeout(s);
+        return n;
     }();
 
     static constexpr int transition_count(int trigger) {
@@ -1807,6 +1988,299 @@ private:
 
 }  // namespace bsc
 // end include/bsc/configuration.hpp
+// begin include/bsc/detail/context_data.hpp
+// The machine's view of a context's data model: it latches input channels, commits output
+// channels and updates timers by visiting the context's members. A context that is not an
+// aggregate, or has no channel or timer, costs nothing.
+
+#include <tuple>
+#include <type_traits>
+
+// begin include/bsc/data/channel.hpp
+// Data channels of a Basic Statechart (seed 002): the context's members through which a chart
+// talks to its environment and to other charts. Plain members of the context are the chart's
+// internal variables: an action's write is visible at once to every later guard.
+
+#include <type_traits>
+
+namespace bsc::detail {
+struct channel_base {};  // lets the machine find channels among the context's members
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// An input channel: written by the environment between cycles (`set`), latched at the start
+/// of each cycle (and each dispatch), so that every component of a cycle reads the same value.
+/// Requirements: T is copyable.
+template <class T>
+class input : detail::channel_base {
+public:
+    constexpr input() = default;
+    constexpr input(T initial) : next_(initial), now_(initial) {}  // NOLINT: a channel is its value
+    /// The latched value, as guards and actions see it during this cycle.
+    constexpr T const& get() const { return now_; }
+    constexpr operator T const&() const { return now_; }  // NOLINT
+    /// Written by the environment; visible from the next cycle on.
+    constexpr void set(T value) { next_ = value; }
+    /// The value that the next cycle will latch.
+    constexpr T const& pending() const { return next_; }
+    constexpr void latch() { now_ = next_; }
+    constexpr void commit() {}
+    friend constexpr bool operator==(input const&, input const&) = default;
+
+private:
+    T next_{};
+    T now_{};
+};
+
+/// An output channel, double-buffered: actions write the next value (`set`); the published
+/// value (`get`) changes at the end of the cycle (or dispatch), when every component has run.
+template <class T>
+class output : detail::channel_base {
+public:
+    constexpr output() = default;
+    constexpr output(T initial) : next_(initial), now_(initial) {}  // NOLINT
+    /// The published value: what the environment and other charts read.
+    constexpr T const& get() const { return now_; }
+    constexpr operator T const&() const { return now_; }  // NOLINT
+    /// Written by actions; published at the end of the cycle.
+    constexpr void set(T value) { next_ = value; }
+    constexpr T const& pending() const { return next_; }
+    constexpr void latch() {}
+    constexpr void commit() { now_ = next_; }
+    friend constexpr bool operator==(output const&, output const&) = default;
+
+private:
+    T next_{};
+    T now_{};
+};
+
+/// A channel that is both input and output (seed 002 allows it): written by the environment or
+/// by actions, read as the value latched at the start of the cycle; writes take effect at the
+/// next cycle boundary.
+template <class T>
+class inout : detail::channel_base {
+public:
+    constexpr inout() = default;
+    constexpr inout(T initial) : next_(initial), now_(initial) {}  // NOLINT
+    constexpr T const& get() const { return now_; }
+    constexpr operator T const&() const { return now_; }  // NOLINT
+    constexpr void set(T value) { next_ = value; }
+    constexpr T const& pending() const { return next_; }
+    constexpr void latch() { now_ = next_; }
+    constexpr void commit() { now_ = next_; }
+    friend constexpr bool operator==(inout const&, inout const&) = default;
+
+private:
+    T next_{};
+    T now_{};
+};
+
+template <class T>
+inline constexpr bool is_channel = std::is_base_of_v<detail::channel_base, T>;
+
+}  // namespace bsc
+// end include/bsc/data/channel.hpp
+// begin include/bsc/detail/fields.hpp
+// Field access for plain aggregates, without macros or reflection: the number of fields is
+// the largest N for which T{any, ..., any} (N times) compiles, and structured bindings give
+// references to them. Used to find the channels and timers of a context. Supports aggregates
+// of up to 32 fields without base classes or C arrays (use std::array instead).
+
+#include <cstddef>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+
+namespace bsc::detail {
+
+struct any_field {
+    template <class T>
+    constexpr operator T() const;  // only used in unevaluated contexts
+};
+
+template <class T, std::size_t... I>
+constexpr bool brace_constructible(std::index_sequence<I...>) {
+    return requires { T{(void(I), any_field{})...}; };
+}
+
+template <class T, std::size_t N = 0>
+constexpr std::size_t field_count() {
+    if constexpr (N > 32)
+        return N;
+    else if constexpr (brace_constructible<T>(std::make_index_sequence<N + 1>{}))
+        return field_count<T, N + 1>();
+    else
+        return N;
+}
+
+// A tuple of references to the fields of an aggregate.
+template <class T>
+constexpr auto tie_fields(T& t) {
+    constexpr std::size_t n = field_count<std::remove_const_t<T>>();
+    static_assert(std::is_aggregate_v<std::remove_const_t<T>>,
+                  "bsc: the context must be an aggregate (a struct with public members and no constructors)");
+    static_assert(n <= 32, "bsc: the context has more than 32 fields; group some of them into a nested struct");
+    if constexpr (n == 0) {
+        return std::tuple<>{};
+    } else if constexpr (n == 1) {
+        auto& [f0] = t;
+        return std::tie(f0);
+    } else if constexpr (n == 2) {
+        auto& [f0, f1] = t;
+        return std::tie(f0, f1);
+    } else if constexpr (n == 3) {
+        auto& [f0, f1, f2] = t;
+        return std::tie(f0, f1, f2);
+    } else if constexpr (n == 4) {
+        auto& [f0, f1, f2, f3] = t;
+        return std::tie(f0, f1, f2, f3);
+    } else if constexpr (n == 5) {
+        auto& [f0, f1, f2, f3, f4] = t;
+        return std::tie(f0, f1, f2, f3, f4);
+    } else if constexpr (n == 6) {
+        auto& [f0, f1, f2, f3, f4, f5] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5);
+    } else if constexpr (n == 7) {
+        auto& [f0, f1, f2, f3, f4, f5, f6] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6);
+    } else if constexpr (n == 8) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7);
+    } else if constexpr (n == 9) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8);
+    } else if constexpr (n == 10) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9);
+    } else if constexpr (n == 11) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10);
+    } else if constexpr (n == 12) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11);
+    } else if constexpr (n == 13) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12);
+    } else if constexpr (n == 14) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13);
+    } else if constexpr (n == 15) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14);
+    } else if constexpr (n == 16) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15);
+    } else if constexpr (n == 17) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16);
+    } else if constexpr (n == 18) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17);
+    } else if constexpr (n == 19) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18);
+    } else if constexpr (n == 20) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19);
+    } else if constexpr (n == 21) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20);
+    } else if constexpr (n == 22) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21);
+    } else if constexpr (n == 23) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22);
+    } else if constexpr (n == 24) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23);
+    } else if constexpr (n == 25) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24);
+    } else if constexpr (n == 26) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25);
+    } else if constexpr (n == 27) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26);
+    } else if constexpr (n == 28) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27);
+    } else if constexpr (n == 29) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28);
+    } else if constexpr (n == 30) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29);
+    } else if constexpr (n == 31) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30);
+    } else if constexpr (n == 32) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31);
+    }
+}
+
+// Calls f(field) for each field of an aggregate, in declaration order.
+template <class T, class F>
+constexpr void for_each_field(T& t, F&& f) {
+    std::apply([&](auto&... field) { (f(field), ...); }, tie_fields(t));
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/fields.hpp
+
+namespace bsc::detail {
+
+template <class Tuple>
+struct field_kinds;
+template <class... Fields>
+struct field_kinds<std::tuple<Fields&...>> {
+    static constexpr bool channels = (is_channel<std::remove_cv_t<Fields>> || ...);
+    static constexpr bool timers = (std::is_base_of_v<timer_base, std::remove_cv_t<Fields>> || ...);
+};
+
+template <class Ctx>
+constexpr auto context_field_kinds() {
+    if constexpr (std::is_aggregate_v<Ctx> && !std::is_array_v<Ctx>)
+        return field_kinds<decltype(tie_fields(std::declval<Ctx&>()))>{};
+    else
+        return field_kinds<std::tuple<>>{};
+}
+
+template <class Ctx>
+inline constexpr bool has_channels = decltype(context_field_kinds<Ctx>())::channels;
+template <class Ctx>
+inline constexpr bool has_timers = decltype(context_field_kinds<Ctx>())::timers;
+
+template <class Ctx>
+constexpr void latch_inputs(Ctx& ctx) {
+    if constexpr (has_channels<Ctx>)
+        for_each_field(ctx, [](auto& f) {
+            if constexpr (is_channel<std::remove_cvref_t<decltype(f)>>) f.latch();
+        });
+}
+
+template <class Ctx>
+constexpr void commit_outputs(Ctx& ctx) {
+    if constexpr (has_channels<Ctx>)
+        for_each_field(ctx, [](auto& f) {
+            if constexpr (is_channel<std::remove_cvref_t<decltype(f)>>) f.commit();
+        });
+}
+
+template <class Ctx>
+constexpr void update_timers(Ctx& ctx, duration now) {
+    if constexpr (has_timers<Ctx>)
+        for_each_field(ctx, [now](auto& f) {
+            if constexpr (std::is_base_of_v<timer_base, std::remove_cvref_t<decltype(f)>>) f.update(now);
+        });
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/context_data.hpp
 // begin include/bsc/detail/event_queue.hpp
 // The bounded internal event queue: a ring buffer of the chart's event types. No heap;
 // a push onto a full queue is refused and remembered, never written out of bounds.
@@ -2037,9 +2511,17 @@ inline constexpr allow_unhandled_t allow_unhandled{};
 
 namespace bsc {
 
+/// What one BSC execution cycle did.
+struct step_report {
+    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
+    int transitions = 0;                ///< condition-driven transitions fired by the components
+    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
+};
+
 /// A running instance of a chart: its context, its active configuration and its internal
 /// event queue. Construction enters the initial configuration; dispatch(e) processes one
-/// event to completion. No heap, no virtual calls, no RTTI, no exceptions.
+/// event to completion; step(now) runs one BSC execution cycle. No heap, no virtual calls,
+/// no RTTI, no exceptions.
 ///
 /// Requirements: `Chart` comes from bsc::make_chart; `Policy` has the members of
 /// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
@@ -2063,9 +2545,45 @@ public:
         : chart_(chart), context_(std::move(context)), observer_(std::move(observer)) {
         if constexpr (topo.slots > 0)
             config_.active = plan::template initial_bytes<topo.slots>();
+        detail::latch_inputs(context_);
         enter_default<root>();
         last_ = finish(false);
+        detail::commit_outputs(context_);
     }
+
+    /// One BSC execution cycle at time `now` (seed 002): timers are updated, input channels
+    /// latched; then each component (the root and every region of a parallel state), in
+    /// document order, fires at most one eventless or timeout transition, its actions' writes
+    /// visible at once to the components after it; events raised meanwhile are processed; output
+    /// channels are committed. Components entered during the cycle first run in the next one.
+    /// Time never runs backwards for the machine: an earlier `now` is reported and ignored.
+    constexpr step_report step(duration now) {
+        step_report report;
+        if (halted()) {
+            report.status = last_ = outcome::halted;
+            return report;
+        }
+        if (now < clock_)
+            report.clock_went_backwards = true;
+        else
+            clock_ = now;
+        detail::update_timers(context_, clock_);
+        detail::latch_inputs(context_);
+        constexpr auto const& comps = plan::components;
+        std::array<bool, comps.size()> active_at_start{};
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((active_at_start[I] = active_on_path<comps[I]>()), ...);
+            ((report.transitions += active_at_start[I] && active_on_path<comps[I]>() &&
+                                    component_step<comps[I], comps[I]>()),
+             ...);
+        }(std::make_index_sequence<comps.size()>{});
+        report.status = last_ = drain_queue(report.transitions > 0);
+        detail::commit_outputs(context_);
+        return report;
+    }
+
+    /// The time of the last cycle (the machine's clock).
+    constexpr duration now() const { return clock_; }
 
     /// Processes e to completion: the transitions it enables, then eventless transitions and
     /// raised events until none remain. Fails to compile if no transition handles E.
@@ -2200,6 +2718,8 @@ private:
             (row<rows[I]>().action(context_, queue_), ...);
         }
         (std::make_index_sequence<rows.size()>{});
+        if constexpr (plan::timeout_slot[S] >= 0)
+            armed_[static_cast<std::size_t>(plan::timeout_slot[S])] = clock_;
         using tag = state_tag<typename an::template tag_at<S>>;
         if constexpr (detail::observes_entry<Observer, tag>)
             observer_.on_entry(tag{});
@@ -2480,7 +3000,73 @@ private:
     constexpr outcome process(E const& e) {
         if (halted())
             return last_ = outcome::halted;
-        return last_ = finish(microstep<Trigger>(e));
+        detail::latch_inputs(context_);
+        last_ = finish(microstep<Trigger>(e));
+        detail::commit_outputs(context_);
+        return last_;
+    }
+
+    // ---- the BSC cycle -----------------------------------------------------------------
+    template <int Row>
+    constexpr bool condition_holds() const {
+        if constexpr (table.trigger[Row] <= detail::timeout_trigger_id(0)) {
+            constexpr int slot = plan::timeout_slot[table.source[Row]];
+            if (clock_ - armed_[static_cast<std::size_t>(slot)] < row<Row>().trigger_value.delay)
+                return false;
+        }
+        return guard_holds<Row>(eventless{});
+    }
+
+    template <int Row>
+    constexpr void fire_condition() {
+        constexpr int d = table.domain[Row];
+        if constexpr (d >= 0)
+            exit_below<d>();
+        run_action<Row>(eventless{});
+        run_entries<Row>();
+    }
+
+    template <int Frontier, int Component>
+    constexpr bool try_component_candidates() {
+        constexpr auto const& cands = plan::template component_candidates<Frontier, Component>;
+        return [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return ((condition_holds<cands[I]>() && (fire_condition<cands[I]>(), true)) || ...);
+        }(std::make_index_sequence<cands.size()>{});
+    }
+
+    // Walks a component from S down to its active frontier and fires its first enabled
+    // condition-driven transition, if any.
+    template <int S, int Component>
+    constexpr bool component_step() {
+        constexpr auto k = topo.kinds[S];
+        if constexpr (!plan::template relevant<detail::any_condition>[S]) {
+            return false;
+        } else if constexpr (k == detail::kind::composite) {
+            bool fired = false;
+            with_active_child<S>([&](auto c) {
+                // An irrelevant child has no condition-driven transition on it or above it.
+                if constexpr (plan::template relevant<detail::any_condition>[decltype(c)::value])
+                    fired = component_step<decltype(c)::value, Component>();
+            });
+            return fired;
+        } else {
+            return try_component_candidates<S, Component>();
+        }
+    }
+
+    // Raised events of a cycle: each one microstep, no eventless settling (one transition
+    // per component per cycle).
+    constexpr outcome drain_queue(bool consumed) {
+        for (std::size_t n = 0; !queue_.empty() && !halted();) {
+            if (++n > Policy::max_internal_events)
+                return abandon();
+            queue_.pop([&](auto const& ev) { microstep<an::template trigger_of<std::decay_t<decltype(ev)>>>(ev); });
+        }
+        if (queue_.overflowed()) {
+            queue_.clear_overflow();
+            return outcome::queue_overflow;
+        }
+        return consumed ? outcome::consumed : outcome::ignored;
     }
 
     // Settles the machine after a microstep: eventless transitions until none is enabled,
@@ -2517,6 +3103,8 @@ private:
     context_type context_;
     configuration_type config_{};
     queue_type queue_{};
+    duration clock_{};
+    std::array<duration, static_cast<std::size_t>(plan::timeout_slots)> armed_{};  // entry times
     outcome last_ = outcome::ignored;
     [[no_unique_address]] Observer observer_;
 };

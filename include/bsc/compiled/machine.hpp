@@ -15,6 +15,7 @@
 #include <bsc/checks/errors.hpp>
 #include <bsc/compiled/plan.hpp>
 #include <bsc/configuration.hpp>
+#include <bsc/detail/context_data.hpp>
 #include <bsc/detail/event_queue.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/detail/topology.hpp>
@@ -24,9 +25,17 @@
 
 namespace bsc {
 
+/// What one BSC execution cycle did.
+struct step_report {
+    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
+    int transitions = 0;                ///< condition-driven transitions fired by the components
+    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
+};
+
 /// A running instance of a chart: its context, its active configuration and its internal
 /// event queue. Construction enters the initial configuration; dispatch(e) processes one
-/// event to completion. No heap, no virtual calls, no RTTI, no exceptions.
+/// event to completion; step(now) runs one BSC execution cycle. No heap, no virtual calls,
+/// no RTTI, no exceptions.
 ///
 /// Requirements: `Chart` comes from bsc::make_chart; `Policy` has the members of
 /// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
@@ -50,9 +59,45 @@ public:
         : chart_(chart), context_(std::move(context)), observer_(std::move(observer)) {
         if constexpr (topo.slots > 0)
             config_.active = plan::template initial_bytes<topo.slots>();
+        detail::latch_inputs(context_);
         enter_default<root>();
         last_ = finish(false);
+        detail::commit_outputs(context_);
     }
+
+    /// One BSC execution cycle at time `now` (seed 002): timers are updated, input channels
+    /// latched; then each component (the root and every region of a parallel state), in
+    /// document order, fires at most one eventless or timeout transition, its actions' writes
+    /// visible at once to the components after it; events raised meanwhile are processed; output
+    /// channels are committed. Components entered during the cycle first run in the next one.
+    /// Time never runs backwards for the machine: an earlier `now` is reported and ignored.
+    constexpr step_report step(duration now) {
+        step_report report;
+        if (halted()) {
+            report.status = last_ = outcome::halted;
+            return report;
+        }
+        if (now < clock_)
+            report.clock_went_backwards = true;
+        else
+            clock_ = now;
+        detail::update_timers(context_, clock_);
+        detail::latch_inputs(context_);
+        constexpr auto const& comps = plan::components;
+        std::array<bool, comps.size()> active_at_start{};
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((active_at_start[I] = active_on_path<comps[I]>()), ...);
+            ((report.transitions += active_at_start[I] && active_on_path<comps[I]>() &&
+                                    component_step<comps[I], comps[I]>()),
+             ...);
+        }(std::make_index_sequence<comps.size()>{});
+        report.status = last_ = drain_queue(report.transitions > 0);
+        detail::commit_outputs(context_);
+        return report;
+    }
+
+    /// The time of the last cycle (the machine's clock).
+    constexpr duration now() const { return clock_; }
 
     /// Processes e to completion: the transitions it enables, then eventless transitions and
     /// raised events until none remain. Fails to compile if no transition handles E.
@@ -187,6 +232,8 @@ private:
             (row<rows[I]>().action(context_, queue_), ...);
         }
         (std::make_index_sequence<rows.size()>{});
+        if constexpr (plan::timeout_slot[S] >= 0)
+            armed_[static_cast<std::size_t>(plan::timeout_slot[S])] = clock_;
         using tag = state_tag<typename an::template tag_at<S>>;
         if constexpr (detail::observes_entry<Observer, tag>)
             observer_.on_entry(tag{});
@@ -467,7 +514,73 @@ private:
     constexpr outcome process(E const& e) {
         if (halted())
             return last_ = outcome::halted;
-        return last_ = finish(microstep<Trigger>(e));
+        detail::latch_inputs(context_);
+        last_ = finish(microstep<Trigger>(e));
+        detail::commit_outputs(context_);
+        return last_;
+    }
+
+    // ---- the BSC cycle -----------------------------------------------------------------
+    template <int Row>
+    constexpr bool condition_holds() const {
+        if constexpr (table.trigger[Row] <= detail::timeout_trigger_id(0)) {
+            constexpr int slot = plan::timeout_slot[table.source[Row]];
+            if (clock_ - armed_[static_cast<std::size_t>(slot)] < row<Row>().trigger_value.delay)
+                return false;
+        }
+        return guard_holds<Row>(eventless{});
+    }
+
+    template <int Row>
+    constexpr void fire_condition() {
+        constexpr int d = table.domain[Row];
+        if constexpr (d >= 0)
+            exit_below<d>();
+        run_action<Row>(eventless{});
+        run_entries<Row>();
+    }
+
+    template <int Frontier, int Component>
+    constexpr bool try_component_candidates() {
+        constexpr auto const& cands = plan::template component_candidates<Frontier, Component>;
+        return [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return ((condition_holds<cands[I]>() && (fire_condition<cands[I]>(), true)) || ...);
+        }(std::make_index_sequence<cands.size()>{});
+    }
+
+    // Walks a component from S down to its active frontier and fires its first enabled
+    // condition-driven transition, if any.
+    template <int S, int Component>
+    constexpr bool component_step() {
+        constexpr auto k = topo.kinds[S];
+        if constexpr (!plan::template relevant<detail::any_condition>[S]) {
+            return false;
+        } else if constexpr (k == detail::kind::composite) {
+            bool fired = false;
+            with_active_child<S>([&](auto c) {
+                // An irrelevant child has no condition-driven transition on it or above it.
+                if constexpr (plan::template relevant<detail::any_condition>[decltype(c)::value])
+                    fired = component_step<decltype(c)::value, Component>();
+            });
+            return fired;
+        } else {
+            return try_component_candidates<S, Component>();
+        }
+    }
+
+    // Raised events of a cycle: each one microstep, no eventless settling (one transition
+    // per component per cycle).
+    constexpr outcome drain_queue(bool consumed) {
+        for (std::size_t n = 0; !queue_.empty() && !halted();) {
+            if (++n > Policy::max_internal_events)
+                return abandon();
+            queue_.pop([&](auto const& ev) { microstep<an::template trigger_of<std::decay_t<decltype(ev)>>>(ev); });
+        }
+        if (queue_.overflowed()) {
+            queue_.clear_overflow();
+            return outcome::queue_overflow;
+        }
+        return consumed ? outcome::consumed : outcome::ignored;
     }
 
     // Settles the machine after a microstep: eventless transitions until none is enabled,
@@ -504,6 +617,8 @@ private:
     context_type context_;
     configuration_type config_{};
     queue_type queue_{};
+    duration clock_{};
+    std::array<duration, static_cast<std::size_t>(plan::timeout_slots)> armed_{};  // entry times
     outcome last_ = outcome::ignored;
     [[no_unique_address]] Observer observer_;
 };

@@ -17,9 +17,11 @@ struct plan {
     static constexpr int N = An::N;
     static constexpr int R = An::R;
 
+    // `trigger` is an event's position, eventless_id, or any_condition (eventless or timeout).
     static constexpr bool is_transition_on(int row, int trigger) {
-        return table.kinds[static_cast<std::size_t>(row)] == row_kind::transition &&
-               table.trigger[static_cast<std::size_t>(row)] == trigger;
+        auto const r = static_cast<std::size_t>(row);
+        if (table.kinds[r] != row_kind::transition) return false;
+        return trigger == any_condition ? table.trigger[r] < 0 : table.trigger[r] == trigger;
     }
 
     static constexpr bool has_trigger(int trigger) {
@@ -62,6 +64,69 @@ struct plan {
                 if (is_transition_on(r, Trigger) && table.source[static_cast<std::size_t>(r)] == a)
                     out[n++] = r;
         return out;
+    }();
+
+    // BSC components: the root and every child of a parallel state, in document order. In a
+    // cycle each fires at most one condition-driven transition, chosen from the states between
+    // its active frontier (a basic state, or a parallel state whose children are components of
+    // their own) and its root.
+    static constexpr int component_count() {
+        int n = 1;
+        for (int s = 2; s < N; ++s)
+            n += topo.kinds[static_cast<std::size_t>(topo.parent[static_cast<std::size_t>(s)])] == kind::parallel;
+        return n;
+    }
+    static constexpr auto components = [] {
+        std::array<int, static_cast<std::size_t>(component_count())> out{};
+        std::size_t n = 0;
+        out[n++] = 1;
+        for (int s = 2; s < N; ++s)
+            if (topo.kinds[static_cast<std::size_t>(topo.parent[static_cast<std::size_t>(s)])] == kind::parallel)
+                out[n++] = s;
+        return out;
+    }();
+
+    static constexpr int component_candidate_count(int frontier, int component) {
+        int n = 0;
+        for (int a = frontier;; a = topo.parent[static_cast<std::size_t>(a)]) {
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, any_condition) && table.source[static_cast<std::size_t>(r)] == a) ++n;
+            if (a == component) break;
+        }
+        return n;
+    }
+    template <int Frontier, int Component>
+    static constexpr auto component_candidates = [] {
+        std::array<int, static_cast<std::size_t>(component_candidate_count(Frontier, Component))> out{};
+        std::size_t n = 0;
+        for (int a = Frontier;; a = topo.parent[static_cast<std::size_t>(a)]) {
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, any_condition) && table.source[static_cast<std::size_t>(r)] == a)
+                    out[n++] = r;
+            if (a == Component) break;
+        }
+        return out;
+    }();
+
+    static constexpr bool has_timeout(int s) {
+        for (int r = 0; r < R; ++r)
+            if (table.trigger[static_cast<std::size_t>(r)] <= timeout_trigger_id(0) &&
+                table.kinds[static_cast<std::size_t>(r)] == row_kind::transition &&
+                table.source[static_cast<std::size_t>(r)] == s)
+                return true;
+        return false;
+    }
+    // States that are the source of a timeout row get a slot for the time they were entered.
+    static constexpr auto timeout_slot = [] {
+        std::array<int, static_cast<std::size_t>(N)> slot{};
+        int n = 0;
+        for (int s = 0; s < N; ++s) slot[static_cast<std::size_t>(s)] = has_timeout(s) ? n++ : -1;
+        return slot;
+    }();
+    static constexpr int timeout_slots = [] {
+        int n = 0;
+        for (int s = 0; s < N; ++s) n += has_timeout(s);
+        return n;
     }();
 
     static constexpr int transition_count(int trigger) {

@@ -46,6 +46,10 @@ struct tags_of<type_list<Nodes...>> {
 enum class row_kind : std::uint8_t { transition, entry, exit };
 
 inline constexpr int eventless_id = -1;
+// Every timeout row has a trigger of its own, so two timeouts on one state never "conflict".
+constexpr int timeout_trigger_id(int row) { return -2 - row; }
+// Eventless and timeout transitions are condition-driven: the ones a BSC cycle considers.
+inline constexpr int any_condition = -1'000'000;
 inline constexpr int no_state = -1;
 inline constexpr int unknown_state = -2;
 
@@ -228,8 +232,8 @@ struct analysis {
                     r.target[i] = state_index<typename Rs::target, tags>();
                     r.guarded[i] = Rs::guarded;
                     using E = typename trigger_event<Rs>::type;
-                    if constexpr (!std::is_void_v<E>)
-                        r.trigger[i] = index_of<E, events>;
+                    if constexpr (!std::is_void_v<E>) r.trigger[i] = index_of<E, events>;
+                    if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
                 }
                 r.domain[i] = no_state;
                 if (r.source[i] >= 0 && r.target[i] >= 0)

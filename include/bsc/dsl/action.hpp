@@ -55,7 +55,8 @@ constexpr auto make_seq(std::tuple<As...> t) {
 }
 
 template <class L, class R>
-requires(bsc_action<L> || bsc_action<R>) constexpr auto operator,(L l, R r) {
+    requires(bsc_action<L> || bsc_action<R>)
+constexpr auto operator,(L l, R r) {
     return make_seq(std::tuple_cat(as_tuple(std::move(l)), as_tuple(std::move(r))));
 }
 

@@ -78,7 +78,8 @@ constexpr auto operator&&(L l, R r) {
     return and_guard<L, RG>{{}, std::move(l), as_guard(std::move(r))};
 }
 template <class L, bsc_guard R>
-requires(!bsc_guard<L>) constexpr auto operator&&(L l, R r) {
+    requires(!bsc_guard<L>)
+constexpr auto operator&&(L l, R r) {
     using LG = decltype(as_guard(std::move(l)));
     return and_guard<LG, R>{{}, as_guard(std::move(l)), std::move(r)};
 }
@@ -88,7 +89,8 @@ constexpr auto operator||(L l, R r) {
     return or_guard<L, RG>{{}, std::move(l), as_guard(std::move(r))};
 }
 template <class L, bsc_guard R>
-requires(!bsc_guard<L>) constexpr auto operator||(L l, R r) {
+    requires(!bsc_guard<L>)
+constexpr auto operator||(L l, R r) {
     using LG = decltype(as_guard(std::move(l)));
     return or_guard<LG, R>{{}, as_guard(std::move(l)), std::move(r)};
 }

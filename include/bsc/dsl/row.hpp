@@ -5,6 +5,7 @@
 #include <type_traits>
 #include <utility>
 
+#include <bsc/data/timer.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
 
@@ -19,6 +20,10 @@ template <class E>
 struct event_trigger {
     using event = E;
 };
+/// The trigger of a state-scoped timeout: the source has been active for `delay`.
+struct timeout_trigger {
+    duration delay;
+};
 /// The target of an internal transition: no exit, no entry.
 struct no_target {};
 
@@ -26,13 +31,14 @@ struct row_base {};
 
 template <class Trigger, class G, class A>
 struct trigger_spec {
+    [[no_unique_address]] Trigger trigger;
     G guard;
     A action;
     template <class A2>
-    requires std::is_same_v<A, no_action>
+        requires std::is_same_v<A, no_action>
     constexpr auto operator/(A2 a) const {
         using action_t = decltype(as_action(std::move(a)));
-        return trigger_spec<Trigger, G, action_t>{guard, as_action(std::move(a))};
+        return trigger_spec<Trigger, G, action_t>{trigger, guard, as_action(std::move(a))};
     }
 };
 
@@ -42,12 +48,26 @@ struct event_ref {
     template <class G>
     constexpr auto operator[](G g) const {
         using guard_t = decltype(as_guard(std::move(g)));
-        return trigger_spec<event_trigger<E>, guard_t, no_action>{as_guard(std::move(g)), {}};
+        return trigger_spec<event_trigger<E>, guard_t, no_action>{{}, as_guard(std::move(g)), {}};
     }
     template <class A>
     constexpr auto operator/(A a) const {
         using action_t = decltype(as_action(std::move(a)));
-        return trigger_spec<event_trigger<E>, no_guard, action_t>{{}, as_action(std::move(a))};
+        return trigger_spec<event_trigger<E>, no_guard, action_t>{{}, {}, as_action(std::move(a))};
+    }
+};
+
+struct timeout_ref {
+    duration delay;
+    template <class G>
+    constexpr auto operator[](G g) const {
+        using guard_t = decltype(as_guard(std::move(g)));
+        return trigger_spec<timeout_trigger, guard_t, no_action>{{delay}, as_guard(std::move(g)), {}};
+    }
+    template <class A>
+    constexpr auto operator/(A a) const {
+        using action_t = decltype(as_action(std::move(a)));
+        return trigger_spec<timeout_trigger, no_guard, action_t>{{delay}, {}, as_action(std::move(a))};
     }
 };
 
@@ -57,16 +77,20 @@ struct transition_row : row_base {
     using trigger = Trigger;
     using target = T;
     static constexpr bool guarded = !std::is_same_v<G, no_guard>;
+    [[no_unique_address]] Trigger trigger_value;
     G guard;
     A action;
 
     template <class T2>
-    requires std::is_same_v<T, no_target>
-    constexpr auto operator=(state_ref<T2>) const { return transition_row<S, Trigger, G, A, T2>{{}, guard, action}; }
+        requires std::is_same_v<T, no_target>
+    constexpr auto operator=(state_ref<T2>) const {
+        return transition_row<S, Trigger, G, A, T2>{{}, trigger_value, guard, action};
+    }
     template <class A2>
-    requires(std::is_same_v<A, no_action>&& std::is_same_v<T, no_target>) constexpr auto operator/(A2 a) const {
+        requires(std::is_same_v<A, no_action> && std::is_same_v<T, no_target>)
+    constexpr auto operator/(A2 a) const {
         using action_t = decltype(as_action(std::move(a)));
-        return transition_row<S, Trigger, G, action_t, T>{{}, guard, as_action(std::move(a))};
+        return transition_row<S, Trigger, G, action_t, T>{{}, trigger_value, guard, as_action(std::move(a))};
     }
 };
 
@@ -109,6 +133,10 @@ inline constexpr bool is_transition_row = false;
 template <class S, class Tr, class G, class A, class T>
 inline constexpr bool is_transition_row<transition_row<S, Tr, G, A, T>> = true;
 template <class R>
+inline constexpr bool is_timeout_row = false;
+template <class S, class G, class A, class T>
+inline constexpr bool is_timeout_row<transition_row<S, timeout_trigger, G, A, T>> = true;
+template <class R>
 inline constexpr bool is_entry_row = false;
 template <class S, class A>
 inline constexpr bool is_entry_row<entry_row<S, A>> = true;
@@ -133,5 +161,12 @@ inline constexpr detail::exit_keyword on_exit{};
 
 /// The tag used in diagnostics and observers for a transition without an event.
 using eventless = detail::eventless_trigger;
+
+/// A state-scoped timeout trigger: `state<S> + after(3s) = state<T>` fires in the first cycle
+/// (step) at which S has been active for at least 3 s. Armed when S is entered.
+template <class Rep, class Period>
+constexpr detail::timeout_ref after(std::chrono::duration<Rep, Period> delay) {
+    return {std::chrono::duration_cast<duration>(delay)};
+}
 
 }  // namespace bsc

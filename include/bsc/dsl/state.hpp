@@ -18,7 +18,10 @@ struct state_ref {
     }
     template <class Tr, class G, class A>
     constexpr auto operator+(trigger_spec<Tr, G, A> spec) const {
-        return transition_row<S, Tr, G, A, no_target>{{}, std::move(spec.guard), std::move(spec.action)};
+        return transition_row<S, Tr, G, A, no_target>{{}, spec.trigger, std::move(spec.guard), std::move(spec.action)};
+    }
+    constexpr auto operator+(timeout_ref t) const {
+        return transition_row<S, timeout_trigger, no_guard, no_action, no_target>{{}, {t.delay}, {}, {}};
     }
     template <class A>
     constexpr auto operator+(entry_spec<A> spec) const {
@@ -32,12 +35,12 @@ struct state_ref {
     template <class G>
     constexpr auto operator[](G g) const {
         using guard_t = decltype(as_guard(std::move(g)));
-        return transition_row<S, eventless_trigger, guard_t, no_action, no_target>{{}, as_guard(std::move(g)), {}};
+        return transition_row<S, eventless_trigger, guard_t, no_action, no_target>{{}, {}, as_guard(std::move(g)), {}};
     }
     template <class A>
     constexpr auto operator/(A a) const {
         using action_t = decltype(as_action(std::move(a)));
-        return transition_row<S, eventless_trigger, no_guard, action_t, no_target>{{}, {}, as_action(std::move(a))};
+        return transition_row<S, eventless_trigger, no_guard, action_t, no_target>{{}, {}, {}, as_action(std::move(a))};
     }
     template <class T>
     constexpr auto operator=(state_ref<T>) const {
