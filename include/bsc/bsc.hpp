@@ -13,3 +13,4 @@
 #include <bsc/dsl/tree.hpp>
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
+#include <bsc/system.hpp>

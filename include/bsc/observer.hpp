@@ -25,6 +25,7 @@ struct no_observer {};
 ///   void on_entry(auto state);              // after state's entry actions
 ///   void on_exit(auto state);               // after state's exit actions
 ///   void on_transition(auto source, auto target, auto const& event);  // before the action
+///   void on_row(int row);                   // the same moment: the row's position in make_chart
 /// where `state`, `source` and `target` are bsc::state_tag<S> (target: state_tag<bsc::internal>
 /// for an internal transition) and `event` is the event (bsc::eventless for eventless ones).
 namespace detail {
@@ -39,6 +40,10 @@ concept observes_exit = requires(O& o) {
 template <class O, class Src, class Dst, class E>
 concept observes_transition = requires(O& o, E const& e) {
     o.on_transition(Src{}, Dst{}, e);
+};
+template <class O>
+concept observes_rows = requires(O& o) {
+    o.on_row(0);
 };
 }  // namespace detail
 

@@ -147,6 +147,7 @@ using duration = std::chrono::nanoseconds;
 
 namespace detail {
 struct timer_base {};
+struct timer_access;
 }  // namespace detail
 
 /// A timer with a fixed limit. Requirements: limit >= 0.
@@ -193,6 +194,7 @@ public:
     }
 
 private:
+    friend struct detail::timer_access;
     enum class phase : std::uint8_t { idle, pending, running };
     duration limit_{};
     duration started_{};
@@ -200,6 +202,20 @@ private:
     phase phase_ = phase::idle;
     bool expired_ = false;
 };
+
+namespace detail {
+// Read-write access to a timer's state, for the state-space explorer only.
+struct timer_access {
+    static constexpr std::uint8_t phase(timer const& t) { return static_cast<std::uint8_t>(t.phase_); }
+    static constexpr duration started(timer const& t) { return t.started_; }
+    static constexpr void set(timer& t, std::uint8_t phase, bool expired, duration started, duration elapsed) {
+        t.phase_ = static_cast<timer::phase>(phase);
+        t.expired_ = expired;
+        t.started_ = started;
+        t.elapsed_ = elapsed;
+    }
+};
+}  // namespace detail
 
 }  // namespace bsc
 // end include/bsc/data/timer.hpp
@@ -1697,6 +1713,7 @@ constexpr auto make_chart(Root, Rows... rows) {
 // straight-line code fixed at compile time. Parallel regions select first and fire after,
 // as SCXML's microstep does.
 
+#include <algorithm>
 #include <array>
 #include <boost/hana/at.hpp>
 #include <cstddef>
@@ -2452,6 +2469,7 @@ struct no_observer {};
 ///   void on_entry(auto state);              // after state's entry actions
 ///   void on_exit(auto state);               // after state's exit actions
 ///   void on_transition(auto source, auto target, auto const& event);  // before the action
+///   void on_row(int row);                   // the same moment: the row's position in make_chart
 /// where `state`, `source` and `target` are bsc::state_tag<S> (target: state_tag<bsc::internal>
 /// for an internal transition) and `event` is the event (bsc::eventless for eventless ones).
 namespace detail {
@@ -2466,6 +2484,10 @@ concept observes_exit = requires(O& o) {
 template <class O, class Src, class Dst, class E>
 concept observes_transition = requires(O& o, E const& e) {
     o.on_transition(Src{}, Dst{}, e);
+};
+template <class O>
+concept observes_rows = requires(O& o) {
+    o.on_row(0);
 };
 }  // namespace detail
 
@@ -2509,6 +2531,44 @@ inline constexpr allow_unhandled_t allow_unhandled{};
 }  // namespace bsc
 // end include/bsc/outcome.hpp
 
+namespace bsc::detail {
+// Read-write access to a machine's run-time state, for the state-space explorer only.
+struct machine_access {
+    template <class M>
+    static constexpr auto& configuration(M& m) {
+        return m.config_;
+    }
+    template <class M>
+    static constexpr auto& clock(M& m) {
+        return m.clock_;
+    }
+    template <class M>
+    static constexpr auto& armed(M& m) {
+        return m.armed_;
+    }
+    template <class M>
+    static constexpr auto& last_outcome(M& m) {
+        return m.last_;
+    }
+    template <class M>
+    static constexpr auto longest_timeout(M const& m) {
+        return m.longest_timeout();
+    }
+    template <class M>
+    static constexpr auto canonical_configuration(M const& m) {
+        return m.canonical_configuration();
+    }
+    template <class M>
+    static constexpr bool timeout_armed(M const& m, std::size_t slot) {
+        return m.timeout_armed(slot);
+    }
+    template <class M>
+    static constexpr auto active_flags(M const& m) {
+        return m.active_flags();
+    }
+};
+}  // namespace bsc::detail
+
 namespace bsc {
 
 /// What one BSC execution cycle did.
@@ -2527,15 +2587,15 @@ struct step_report {
 /// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
 template <class Chart, class Policy = default_policy, class Observer = no_observer>
 class machine {
-    using an = detail::analysis<Chart>;
+    using an = detail::analysis<std::remove_cv_t<Chart>>;
     using plan = detail::plan<an>;
     static constexpr auto const& topo = an::topo;
     static constexpr auto const& table = an::table;
     static constexpr int root = 1;
 
 public:
-    using chart_type = Chart;
-    using context_type = typename Chart::context_type;
+    using chart_type = std::remove_cv_t<Chart>;
+    using context_type = typename chart_type::context_type;
     using configuration_type = configuration<static_cast<std::size_t>(topo.slots)>;
     using queue_type = detail::event_queue<Policy::queue_capacity, typename an::events>;
     using event_types = typename an::events;
@@ -2637,15 +2697,9 @@ public:
     /// The names of the active states, outermost first, in document order.
     constexpr auto active_states() const {
         state_names<static_cast<std::size_t>(an::N)> names;
-        std::array<bool, static_cast<std::size_t>(an::N)> active{};
-        active[0] = true;
-        for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s) {
-            auto const p = static_cast<std::size_t>(topo.parent[s]);
-            active[s] = active[p] &&
-                        (topo.slot[p] < 0 || config_byte(topo.slot[p]) == static_cast<std::uint8_t>(topo.ordinal[s]));
-            if (active[s])
-                names.push_back(state_name_table[s]);
-        }
+        auto const active = active_flags();
+        for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s)
+            if (active[s]) names.push_back(state_name_table[s]);
         return names;
     }
 
@@ -2859,6 +2913,10 @@ private:
                                        state_tag<typename R::target>>;
         if constexpr (detail::observes_transition<Observer, src, dst, E>)
             observer_.on_transition(src{}, dst{}, e);
+        if constexpr (detail::observes_rows<Observer>)
+            observer_.on_row(Row);
+        if constexpr (detail::observes_rows<Observer>)
+            observer_.on_row(Row);
         row<Row>().action(context_, e, queue_);
     }
 
@@ -3054,6 +3112,60 @@ private:
         }
     }
 
+    // Which states are active, by index (outermost first, so one pass suffices).
+    constexpr std::array<bool, static_cast<std::size_t>(an::N)> active_flags() const {
+        std::array<bool, static_cast<std::size_t>(an::N)> active{};
+        active[0] = true;
+        for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s) {
+            auto const p = static_cast<std::size_t>(topo.parent[s]);
+            active[s] = active[p] && (topo.slot[p] < 0 ||
+                                      config_byte(topo.slot[p]) == static_cast<std::uint8_t>(topo.ordinal[s]));
+        }
+        return active;
+    }
+
+    // The configuration with every byte that can never matter again reset to its initial
+    // child: the byte of an inactive composite that neither has history nor lies below a
+    // deep history. Two machines with equal canonical configurations behave the same.
+    constexpr configuration_type canonical_configuration() const {
+        configuration_type c = config_;
+        if constexpr (topo.slots > 0) {
+            auto const active = active_flags();
+            for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s) {
+                if (topo.slot[s] < 0 || active[s]) continue;
+                bool remembered = topo.hist[s] != detail::history::none;
+                for (int a = topo.parent[s]; a > 0 && !remembered; a = topo.parent[static_cast<std::size_t>(a)])
+                    remembered = topo.hist[static_cast<std::size_t>(a)] == detail::history::deep;
+                if (!remembered)
+                    c.active[static_cast<std::size_t>(topo.slot[s])] = static_cast<std::uint8_t>(
+                        topo.ordinal[static_cast<std::size_t>(topo.initial[s])]);
+            }
+        }
+        return c;
+    }
+
+    // A timeout slot's age matters only while its state is active.
+    constexpr bool timeout_armed(std::size_t slot) const {
+        auto const active = active_flags();
+        for (std::size_t s = 0; s < static_cast<std::size_t>(an::N); ++s)
+            if (plan::timeout_slot[s] == static_cast<int>(slot)) return active[s];
+        return false;
+    }
+
+    // The longest delay of any timeout row: past it, a state's age no longer matters.
+    constexpr duration longest_timeout() const {
+        duration longest{};
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (
+                [&] {
+                    if constexpr (table.trigger[I] <= detail::timeout_trigger_id(0))
+                        longest = std::max(longest, row<static_cast<int>(I)>().trigger_value.delay);
+                }(),
+                ...);
+        }(std::make_index_sequence<static_cast<std::size_t>(an::R)>{});
+        return longest;
+    }
+
     // Raised events of a cycle: each one microstep, no eventless settling (one transition
     // per component per cycle).
     constexpr outcome drain_queue(bool consumed) {
@@ -3072,6 +3184,14 @@ private:
     // Settles the machine after a microstep: eventless transitions until none is enabled,
     // then the raised events one by one, each followed by its eventless transitions.
     constexpr outcome finish(bool consumed) {
+        // The common case, kept inline: nothing raised, and no eventless transition to try.
+        if constexpr (!plan::has_trigger(detail::eventless_id))
+            if (queue_.empty() && !queue_.overflowed())
+                return consumed ? outcome::consumed : outcome::ignored;
+        return settle(consumed);
+    }
+
+    constexpr outcome settle(bool consumed) {
         std::size_t internal_events = 0;
         for (;;) {
             if constexpr (plan::has_trigger(detail::eventless_id)) {
@@ -3099,7 +3219,9 @@ private:
         return outcome::livelock;
     }
 
-    [[no_unique_address]] Chart chart_;
+    friend struct detail::machine_access;
+
+    [[no_unique_address]] chart_type chart_;
     context_type context_;
     configuration_type config_{};
     queue_type queue_{};
@@ -3109,13 +3231,88 @@ private:
     [[no_unique_address]] Observer observer_;
 };
 
+// Charts are declared `constexpr`, so `machine{chart, ...}` and `machine<decltype(chart)>` name
+// the same type.
 template <class C, class Ctx>
-machine(C const&, Ctx) -> machine<C>;
+machine(C const&, Ctx) -> machine<C const>;
 template <class C>
-machine(C const&) -> machine<C>;
+machine(C const&) -> machine<C const>;
 template <class C, class Ctx, class O>
-machine(C const&, Ctx, O) -> machine<C, default_policy, O>;
+machine(C const&, Ctx, O) -> machine<C const, default_policy, O>;
 
 }  // namespace bsc
 // end include/bsc/compiled/machine.hpp
+// begin include/bsc/system.hpp
+// Systems of actors (seed 003; seed 001's modules): several machines — controllers and plant
+// models — wired by typed signals from output channels to input channels, stepped in a declared
+// order with the time given from outside. The wiring is one list, the system's actor diagram.
+
+#include <cstddef>
+#include <type_traits>
+
+
+namespace bsc {
+
+/// A signal: the published value of output channel `FromChannel` of actor `FromActor` is
+/// written into input channel `ToChannel` of actor `ToActor` just before `ToActor` steps.
+/// Actors are members of the system's aggregate; channels are members of their contexts.
+template <auto FromActor, auto FromChannel, auto ToActor, auto ToChannel>
+struct link {
+    template <class Actors>
+    static constexpr void transfer(Actors& actors) {
+        auto const& source = (actors.*FromActor).context().*FromChannel;
+        ((actors.*ToActor).context().*ToChannel).set(source.get());
+    }
+    template <auto Actor>
+    static constexpr bool targets() {
+        if constexpr (std::is_same_v<decltype(Actor), decltype(ToActor)>)
+            return Actor == ToActor;
+        else
+            return false;
+    }
+};
+
+/// The order in which a system steps its actors, as pointers to the aggregate's members.
+template <auto... Actors>
+struct order {};
+
+/// What one system step did.
+struct system_report {
+    int transitions = 0;  ///< condition-driven transitions fired by all actors
+    bool queue_overflow = false;
+    bool livelock = false;
+};
+
+template <class Actors, class Order, class... Links>
+struct system;
+
+/// A system: the aggregate `Actors` of machines (anything with `context()` and `step(now)`),
+/// stepped in `Order`, with `Links` delivering signals. `actors` is a public member, so a
+/// system is itself an aggregate that the explorer can encode. No heap.
+template <class Actors, auto... Steps, class... Links>
+struct system<Actors, order<Steps...>, Links...> {
+    Actors actors;
+
+    /// One step of every actor, in order: each first receives the signals linked to it (the
+    /// outputs its senders published, this step for senders earlier in the order, the last
+    /// step for the others), then runs one cycle at `now`.
+    constexpr system_report step(duration now) {
+        system_report report;
+        (step_one<Steps>(now, report), ...);
+        return report;
+    }
+
+private:
+    template <auto Actor>
+    constexpr void step_one(duration now, system_report& report) {
+        ((Links::template targets<Actor>() ? Links::transfer(actors) : void()), ...);
+        auto const r = (actors.*Actor).step(now);
+        report.transitions += r.transitions;
+        report.queue_overflow = report.queue_overflow || r.status == outcome::queue_overflow;
+        report.livelock = report.livelock || r.status == outcome::livelock;
+    }
+};
+
+}  // namespace bsc
+// end include/bsc/system.hpp
 // end include/bsc/bsc.hpp

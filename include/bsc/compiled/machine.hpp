@@ -5,6 +5,7 @@
 // straight-line code fixed at compile time. Parallel regions select first and fire after,
 // as SCXML's microstep does.
 
+#include <algorithm>
 #include <array>
 #include <boost/hana/at.hpp>
 #include <cstddef>
@@ -22,6 +23,44 @@
 #include <bsc/detail/type_name.hpp>
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
+
+namespace bsc::detail {
+// Read-write access to a machine's run-time state, for the state-space explorer only.
+struct machine_access {
+    template <class M>
+    static constexpr auto& configuration(M& m) {
+        return m.config_;
+    }
+    template <class M>
+    static constexpr auto& clock(M& m) {
+        return m.clock_;
+    }
+    template <class M>
+    static constexpr auto& armed(M& m) {
+        return m.armed_;
+    }
+    template <class M>
+    static constexpr auto& last_outcome(M& m) {
+        return m.last_;
+    }
+    template <class M>
+    static constexpr auto longest_timeout(M const& m) {
+        return m.longest_timeout();
+    }
+    template <class M>
+    static constexpr auto canonical_configuration(M const& m) {
+        return m.canonical_configuration();
+    }
+    template <class M>
+    static constexpr bool timeout_armed(M const& m, std::size_t slot) {
+        return m.timeout_armed(slot);
+    }
+    template <class M>
+    static constexpr auto active_flags(M const& m) {
+        return m.active_flags();
+    }
+};
+}  // namespace bsc::detail
 
 namespace bsc {
 
@@ -41,15 +80,15 @@ struct step_report {
 /// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
 template <class Chart, class Policy = default_policy, class Observer = no_observer>
 class machine {
-    using an = detail::analysis<Chart>;
+    using an = detail::analysis<std::remove_cv_t<Chart>>;
     using plan = detail::plan<an>;
     static constexpr auto const& topo = an::topo;
     static constexpr auto const& table = an::table;
     static constexpr int root = 1;
 
 public:
-    using chart_type = Chart;
-    using context_type = typename Chart::context_type;
+    using chart_type = std::remove_cv_t<Chart>;
+    using context_type = typename chart_type::context_type;
     using configuration_type = configuration<static_cast<std::size_t>(topo.slots)>;
     using queue_type = detail::event_queue<Policy::queue_capacity, typename an::events>;
     using event_types = typename an::events;
@@ -151,15 +190,9 @@ public:
     /// The names of the active states, outermost first, in document order.
     constexpr auto active_states() const {
         state_names<static_cast<std::size_t>(an::N)> names;
-        std::array<bool, static_cast<std::size_t>(an::N)> active{};
-        active[0] = true;
-        for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s) {
-            auto const p = static_cast<std::size_t>(topo.parent[s]);
-            active[s] = active[p] &&
-                        (topo.slot[p] < 0 || config_byte(topo.slot[p]) == static_cast<std::uint8_t>(topo.ordinal[s]));
-            if (active[s])
-                names.push_back(state_name_table[s]);
-        }
+        auto const active = active_flags();
+        for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s)
+            if (active[s]) names.push_back(state_name_table[s]);
         return names;
     }
 
@@ -373,6 +406,10 @@ private:
                                        state_tag<typename R::target>>;
         if constexpr (detail::observes_transition<Observer, src, dst, E>)
             observer_.on_transition(src{}, dst{}, e);
+        if constexpr (detail::observes_rows<Observer>)
+            observer_.on_row(Row);
+        if constexpr (detail::observes_rows<Observer>)
+            observer_.on_row(Row);
         row<Row>().action(context_, e, queue_);
     }
 
@@ -568,6 +605,60 @@ private:
         }
     }
 
+    // Which states are active, by index (outermost first, so one pass suffices).
+    constexpr std::array<bool, static_cast<std::size_t>(an::N)> active_flags() const {
+        std::array<bool, static_cast<std::size_t>(an::N)> active{};
+        active[0] = true;
+        for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s) {
+            auto const p = static_cast<std::size_t>(topo.parent[s]);
+            active[s] = active[p] && (topo.slot[p] < 0 ||
+                                      config_byte(topo.slot[p]) == static_cast<std::uint8_t>(topo.ordinal[s]));
+        }
+        return active;
+    }
+
+    // The configuration with every byte that can never matter again reset to its initial
+    // child: the byte of an inactive composite that neither has history nor lies below a
+    // deep history. Two machines with equal canonical configurations behave the same.
+    constexpr configuration_type canonical_configuration() const {
+        configuration_type c = config_;
+        if constexpr (topo.slots > 0) {
+            auto const active = active_flags();
+            for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s) {
+                if (topo.slot[s] < 0 || active[s]) continue;
+                bool remembered = topo.hist[s] != detail::history::none;
+                for (int a = topo.parent[s]; a > 0 && !remembered; a = topo.parent[static_cast<std::size_t>(a)])
+                    remembered = topo.hist[static_cast<std::size_t>(a)] == detail::history::deep;
+                if (!remembered)
+                    c.active[static_cast<std::size_t>(topo.slot[s])] = static_cast<std::uint8_t>(
+                        topo.ordinal[static_cast<std::size_t>(topo.initial[s])]);
+            }
+        }
+        return c;
+    }
+
+    // A timeout slot's age matters only while its state is active.
+    constexpr bool timeout_armed(std::size_t slot) const {
+        auto const active = active_flags();
+        for (std::size_t s = 0; s < static_cast<std::size_t>(an::N); ++s)
+            if (plan::timeout_slot[s] == static_cast<int>(slot)) return active[s];
+        return false;
+    }
+
+    // The longest delay of any timeout row: past it, a state's age no longer matters.
+    constexpr duration longest_timeout() const {
+        duration longest{};
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (
+                [&] {
+                    if constexpr (table.trigger[I] <= detail::timeout_trigger_id(0))
+                        longest = std::max(longest, row<static_cast<int>(I)>().trigger_value.delay);
+                }(),
+                ...);
+        }(std::make_index_sequence<static_cast<std::size_t>(an::R)>{});
+        return longest;
+    }
+
     // Raised events of a cycle: each one microstep, no eventless settling (one transition
     // per component per cycle).
     constexpr outcome drain_queue(bool consumed) {
@@ -586,6 +677,14 @@ private:
     // Settles the machine after a microstep: eventless transitions until none is enabled,
     // then the raised events one by one, each followed by its eventless transitions.
     constexpr outcome finish(bool consumed) {
+        // The common case, kept inline: nothing raised, and no eventless transition to try.
+        if constexpr (!plan::has_trigger(detail::eventless_id))
+            if (queue_.empty() && !queue_.overflowed())
+                return consumed ? outcome::consumed : outcome::ignored;
+        return settle(consumed);
+    }
+
+    constexpr outcome settle(bool consumed) {
         std::size_t internal_events = 0;
         for (;;) {
             if constexpr (plan::has_trigger(detail::eventless_id)) {
@@ -613,7 +712,9 @@ private:
         return outcome::livelock;
     }
 
-    [[no_unique_address]] Chart chart_;
+    friend struct detail::machine_access;
+
+    [[no_unique_address]] chart_type chart_;
     context_type context_;
     configuration_type config_{};
     queue_type queue_{};
@@ -623,11 +724,13 @@ private:
     [[no_unique_address]] Observer observer_;
 };
 
+// Charts are declared `constexpr`, so `machine{chart, ...}` and `machine<decltype(chart)>` name
+// the same type.
 template <class C, class Ctx>
-machine(C const&, Ctx) -> machine<C>;
+machine(C const&, Ctx) -> machine<C const>;
 template <class C>
-machine(C const&) -> machine<C>;
+machine(C const&) -> machine<C const>;
 template <class C, class Ctx, class O>
-machine(C const&, Ctx, O) -> machine<C, default_policy, O>;
+machine(C const&, Ctx, O) -> machine<C const, default_policy, O>;
 
 }  // namespace bsc

@@ -14,6 +14,7 @@ using duration = std::chrono::nanoseconds;
 
 namespace detail {
 struct timer_base {};
+struct timer_access;
 }  // namespace detail
 
 /// A timer with a fixed limit. Requirements: limit >= 0.
@@ -60,6 +61,7 @@ public:
     }
 
 private:
+    friend struct detail::timer_access;
     enum class phase : std::uint8_t { idle, pending, running };
     duration limit_{};
     duration started_{};
@@ -67,5 +69,19 @@ private:
     phase phase_ = phase::idle;
     bool expired_ = false;
 };
+
+namespace detail {
+// Read-write access to a timer's state, for the state-space explorer only.
+struct timer_access {
+    static constexpr std::uint8_t phase(timer const& t) { return static_cast<std::uint8_t>(t.phase_); }
+    static constexpr duration started(timer const& t) { return t.started_; }
+    static constexpr void set(timer& t, std::uint8_t phase, bool expired, duration started, duration elapsed) {
+        t.phase_ = static_cast<timer::phase>(phase);
+        t.expired_ = expired;
+        t.started_ = started;
+        t.elapsed_ = elapsed;
+    }
+};
+}  // namespace detail
 
 }  // namespace bsc

@@ -1,0 +1,74 @@
+#pragma once
+// Systems of actors (seed 003; seed 001's modules): several machines — controllers and plant
+// models — wired by typed signals from output channels to input channels, stepped in a declared
+// order with the time given from outside. The wiring is one list, the system's actor diagram.
+
+#include <cstddef>
+#include <type_traits>
+
+#include <bsc/data/timer.hpp>
+#include <bsc/outcome.hpp>
+
+namespace bsc {
+
+/// A signal: the published value of output channel `FromChannel` of actor `FromActor` is
+/// written into input channel `ToChannel` of actor `ToActor` just before `ToActor` steps.
+/// Actors are members of the system's aggregate; channels are members of their contexts.
+template <auto FromActor, auto FromChannel, auto ToActor, auto ToChannel>
+struct link {
+    template <class Actors>
+    static constexpr void transfer(Actors& actors) {
+        auto const& source = (actors.*FromActor).context().*FromChannel;
+        ((actors.*ToActor).context().*ToChannel).set(source.get());
+    }
+    template <auto Actor>
+    static constexpr bool targets() {
+        if constexpr (std::is_same_v<decltype(Actor), decltype(ToActor)>)
+            return Actor == ToActor;
+        else
+            return false;
+    }
+};
+
+/// The order in which a system steps its actors, as pointers to the aggregate's members.
+template <auto... Actors>
+struct order {};
+
+/// What one system step did.
+struct system_report {
+    int transitions = 0;  ///< condition-driven transitions fired by all actors
+    bool queue_overflow = false;
+    bool livelock = false;
+};
+
+template <class Actors, class Order, class... Links>
+struct system;
+
+/// A system: the aggregate `Actors` of machines (anything with `context()` and `step(now)`),
+/// stepped in `Order`, with `Links` delivering signals. `actors` is a public member, so a
+/// system is itself an aggregate that the explorer can encode. No heap.
+template <class Actors, auto... Steps, class... Links>
+struct system<Actors, order<Steps...>, Links...> {
+    Actors actors;
+
+    /// One step of every actor, in order: each first receives the signals linked to it (the
+    /// outputs its senders published, this step for senders earlier in the order, the last
+    /// step for the others), then runs one cycle at `now`.
+    constexpr system_report step(duration now) {
+        system_report report;
+        (step_one<Steps>(now, report), ...);
+        return report;
+    }
+
+private:
+    template <auto Actor>
+    constexpr void step_one(duration now, system_report& report) {
+        ((Links::template targets<Actor>() ? Links::transfer(actors) : void()), ...);
+        auto const r = (actors.*Actor).step(now);
+        report.transitions += r.transitions;
+        report.queue_overflow = report.queue_overflow || r.status == outcome::queue_overflow;
+        report.livelock = report.livelock || r.status == outcome::livelock;
+    }
+};
+
+}  // namespace bsc

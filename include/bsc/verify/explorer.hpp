@@ -1,0 +1,175 @@
+#pragma once
+// bsc::verify::explorer: breadth-first exploration of every state a closed model can reach.
+// States are stored once, as fixed-size byte keys in one arena (the BFS queue itself), found
+// again through an open-addressing hash table of indices; the graph is kept as compact
+// adjacency arrays, so properties are checked after exploration without re-running the model.
+// Breadth-first order makes every counterexample a shortest one.
+//
+// A model provides:
+//   using state = ...;                                   // copyable
+//   static constexpr std::size_t key_size;               // bytes of encode()
+//   state initial() const;
+//   void encode(state const&, std::byte* out) const;
+//   state decode(std::byte const* in) const;
+//   void successors(state const&, F&& emit) const;       // emit(std::uint16_t label, state const&)
+//   std::string label(std::uint16_t) const;              // for traces
+//   std::string describe(state const&) const;            // for traces: the configuration by name
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace bsc::verify {
+
+/// Bounds that stop exploration with a report instead of exhausting the machine.
+struct limits {
+    std::size_t max_states = 20'000'000;
+    std::size_t max_memory_bytes = std::size_t{8} << 30;
+};
+
+/// What an exploration did.
+struct statistics {
+    std::size_t states = 0;
+    std::size_t transitions = 0;  ///< edges of the state graph (successors, duplicates included)
+    std::size_t depth = 0;        ///< breadth-first levels: the longest shortest path
+    double seconds = 0;
+    std::size_t memory_bytes = 0;  ///< held by the explorer at the end
+    std::size_t key_bytes = 0;     ///< bytes stored per state for its encoding
+    bool complete = false;         ///< false if a bound stopped exploration
+    std::string stopped_by;        ///< which bound, if any
+};
+
+template <class Model>
+class explorer {
+public:
+    using state = typename Model::state;
+    static constexpr std::size_t key_size = Model::key_size;
+    static constexpr std::uint32_t none = 0xffffffffu;
+
+    explicit explorer(Model model, limits bounds = {}) : model_(std::move(model)), bounds_(bounds) {}
+
+    /// Explores every reachable state (once; later calls return the same figures).
+    statistics const& run() {
+        if (ran_) return stats_;
+        ran_ = true;
+        auto const start = std::chrono::steady_clock::now();
+        table_.assign(1u << 16, none);
+        std::vector<std::byte> scratch(key_size);
+        state const init = model_.initial();
+        model_.encode(init, scratch.data());
+        insert(scratch.data(), none, 0, 0);
+        std::size_t level_end = 1;
+        for (std::size_t i = 0; i < count(); ++i) {
+            if (i == level_end) {
+                ++stats_.depth;
+                level_end = count();
+            }
+            if (!within_bounds()) break;
+            edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
+            state const s = model_.decode(key(i));
+            model_.successors(s, [&](std::uint16_t label, state const& next) {
+                model_.encode(next, scratch.data());
+                std::uint32_t const j = insert(scratch.data(), static_cast<std::uint32_t>(i), label, depth_[i] + 1u);
+                edge_to_.push_back(j);
+                edge_label_.push_back(label);
+            });
+        }
+        stats_.complete = stats_.stopped_by.empty();
+        while (edge_begin_.size() < count()) edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
+        edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
+        stats_.states = count();
+        stats_.transitions = edge_to_.size();
+        stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats_.memory_bytes = memory();
+        stats_.key_bytes = key_size;
+        return stats_;
+    }
+
+    statistics const& stats() const { return stats_; }
+    std::size_t count() const { return keys_.size() / key_size; }
+    state at(std::size_t i) const { return model_.decode(key(i)); }
+    Model const& model() const { return model_; }
+
+    // The graph, for property checks.
+    std::uint32_t edges_begin(std::size_t i) const { return edge_begin_[i]; }
+    std::uint32_t edges_end(std::size_t i) const { return edge_begin_[i + 1]; }
+    std::uint32_t edge_target(std::size_t e) const { return edge_to_[e]; }
+    std::uint16_t edge_label(std::size_t e) const { return edge_label_[e]; }
+    std::uint32_t parent(std::size_t i) const { return parent_[i]; }
+    std::uint16_t parent_label(std::size_t i) const { return via_[i]; }
+
+private:
+    std::byte const* key(std::size_t i) const { return keys_.data() + i * key_size; }
+
+    static std::uint64_t hash(std::byte const* k) {
+        std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a, then a final mix
+        for (std::size_t i = 0; i < key_size; ++i) h = (h ^ static_cast<std::uint64_t>(k[i])) * 0x100000001b3ull;
+        h ^= h >> 32;
+        return h * 0x9e3779b97f4a7c15ull;
+    }
+
+    std::uint32_t insert(std::byte const* k, std::uint32_t from, std::uint16_t label, std::uint32_t depth) {
+        if ((count() + 1) * 2 > table_.size()) grow();
+        std::size_t const mask = table_.size() - 1;
+        for (std::size_t slot = hash(k) & mask;; slot = (slot + 1) & mask) {
+            std::uint32_t const at = table_[slot];
+            if (at == none) {
+                auto const index = static_cast<std::uint32_t>(count());
+                table_[slot] = index;
+                keys_.insert(keys_.end(), k, k + key_size);
+                parent_.push_back(from);
+                via_.push_back(label);
+                depth_.push_back(depth);
+                return index;
+            }
+            if (std::memcmp(key(at), k, key_size) == 0) return at;
+        }
+    }
+
+    void grow() {
+        std::vector<std::uint32_t> bigger(table_.size() * 2, none);
+        std::size_t const mask = bigger.size() - 1;
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            std::size_t slot = hash(key(i)) & mask;
+            while (bigger[slot] != none) slot = (slot + 1) & mask;
+            bigger[slot] = i;
+        }
+        table_.swap(bigger);
+    }
+
+    std::size_t memory() const {
+        return keys_.capacity() + table_.capacity() * 4 + parent_.capacity() * 4 + via_.capacity() * 2 +
+               depth_.capacity() * 4 + edge_begin_.capacity() * 4 + edge_to_.capacity() * 4 +
+               edge_label_.capacity() * 2;
+    }
+
+    bool within_bounds() {
+        if (count() > bounds_.max_states) {
+            stats_.stopped_by = "max_states (" + std::to_string(bounds_.max_states) + ")";
+            return false;
+        }
+        if (memory() > bounds_.max_memory_bytes) {
+            stats_.stopped_by = "max_memory_bytes (" + std::to_string(bounds_.max_memory_bytes) + ")";
+            return false;
+        }
+        return true;
+    }
+
+    Model model_;
+    limits bounds_;
+    statistics stats_;
+    bool ran_ = false;
+    std::vector<std::byte> keys_;
+    std::vector<std::uint32_t> table_;
+    std::vector<std::uint32_t> parent_;
+    std::vector<std::uint16_t> via_;
+    std::vector<std::uint32_t> depth_;
+    std::vector<std::uint32_t> edge_begin_;
+    std::vector<std::uint32_t> edge_to_;
+    std::vector<std::uint16_t> edge_label_;
+};
+
+}  // namespace bsc::verify

@@ -1,0 +1,145 @@
+#pragma once
+// Closed models of bsc machines for the explorer:
+//  - event_model: a machine to which every listed event is offered in every state;
+//  - cycle_model: a machine stepped with a fixed period, its inputs drawn each cycle from
+//    a finite set of choices the user declares;
+//  - system_model: any aggregate of machines and plant models, stepped by a user function
+//    with a finite set of choices per cycle (the closed loop of seeds 002 and 003).
+// Time is made relative: every explored state is decoded with its machines' clocks at the
+// same origin, so states that differ only in absolute time are one state.
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+
+#include <bsc/detail/type_name.hpp>
+#include <bsc/verify/codec.hpp>
+
+namespace bsc::verify {
+
+namespace detail {
+// The clock every explored state is decoded at; far enough from zero that relative times fit.
+inline constexpr duration origin = std::chrono::hours{1};
+
+template <class T>
+struct codec {
+    static constexpr std::size_t key_size = encoded_size<T>();
+    duration period{};
+    void encode(T const& s, std::byte* out) const { detail::encode(s, out, time_frame{origin + period, period}); }
+    T decode(T prototype, std::byte const* in) const {
+        detail::decode(prototype, in, time_frame{origin, period});
+        return prototype;
+    }
+};
+}  // namespace detail
+
+/// Offers each of the events Es... to the machine in every state (dispatch).
+template <class Machine, class... Es>
+class event_model {
+public:
+    using state = Machine;
+    static constexpr std::size_t key_size = detail::codec<Machine>::key_size;
+
+    explicit event_model(Machine initial) : initial_(std::move(initial)) {}
+
+    state initial() const { return initial_; }
+    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
+    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
+    template <class Emit>
+    void successors(state const& s, Emit&& emit) const {
+        std::uint16_t label = 0;
+        (
+            [&] {
+                state next = s;
+                next.dispatch(Es{});
+                emit(label++, next);
+            }(),
+            ...);
+    }
+    std::string label(std::uint16_t i) const {
+        constexpr std::string_view names[] = {name_of<Es>...};
+        return std::string(names[i]);
+    }
+    std::string describe(state const& s) const { return s.active_states().joined(); }
+
+private:
+    Machine initial_;
+    detail::codec<Machine> codec_{};
+};
+
+/// Steps the machine with a fixed period; before each cycle, `apply(context, choice)` sets the
+/// inputs for one of `choices` alternatives, and every alternative is explored.
+template <class Machine, class Apply>
+class cycle_model {
+public:
+    using state = Machine;
+    static constexpr std::size_t key_size = detail::codec<Machine>::key_size;
+
+    cycle_model(Machine initial, duration period, std::size_t choices, Apply apply)
+        : initial_(std::move(initial)), choices_(choices), apply_(std::move(apply)), codec_{period} {}
+
+    state initial() const { return initial_; }
+    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
+    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
+    template <class Emit>
+    void successors(state const& s, Emit&& emit) const {
+        for (std::size_t c = 0; c < choices_; ++c) {
+            state next = s;
+            apply_(next.context(), c);
+            next.step(detail::origin + codec_.period);
+            emit(static_cast<std::uint16_t>(c), next);
+        }
+    }
+    std::string label(std::uint16_t i) const { return "cycle, inputs #" + std::to_string(i); }
+    std::string describe(state const& s) const { return s.active_states().joined(); }
+
+private:
+    Machine initial_;
+    std::size_t choices_;
+    Apply apply_;
+    detail::codec<Machine> codec_;
+};
+
+/// A closed system: an aggregate `System` of machines and plant data, advanced by
+/// `step(system, choice, now)` for each of `choices` alternatives per cycle. `describe`
+/// names a system state for traces; `label(choice)` names an alternative.
+template <class System, class Step, class Describe, class Label>
+class system_model {
+public:
+    using state = System;
+    static constexpr std::size_t key_size = detail::codec<System>::key_size;
+
+    system_model(System initial, duration period, std::size_t choices, Step step, Describe describe, Label label)
+        : initial_(std::move(initial)),
+          choices_(choices),
+          step_(std::move(step)),
+          describe_(std::move(describe)),
+          label_(std::move(label)),
+          codec_{period} {}
+
+    state initial() const { return initial_; }
+    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
+    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
+    template <class Emit>
+    void successors(state const& s, Emit&& emit) const {
+        for (std::size_t c = 0; c < choices_; ++c) {
+            state next = s;
+            step_(next, c, detail::origin + codec_.period);
+            emit(static_cast<std::uint16_t>(c), next);
+        }
+    }
+    std::string label(std::uint16_t i) const { return label_(i); }
+    std::string describe(state const& s) const { return describe_(s); }
+
+private:
+    System initial_;
+    std::size_t choices_;
+    Step step_;
+    Describe describe_;
+    Label label_;
+    detail::codec<System> codec_;
+};
+
+}  // namespace bsc::verify

@@ -1,0 +1,203 @@
+#pragma once
+// Properties checked on an explored state graph, each with a verdict and, when it fails, a
+// shortest counterexample in the chart's own names: deadlock freedom, invariants (A[] p),
+// reachability (E<> p), reinitiability and leads-to (p --> q).
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <bsc/verify/explorer.hpp>
+
+namespace bsc::verify {
+
+/// One step of a trace: what was applied (an event, an input choice) and the configuration after.
+struct trace_step {
+    std::string label;
+    std::string configuration;
+};
+
+/// The outcome of one property.
+struct verdict {
+    enum class status { holds, fails, inconclusive };
+    std::string property;
+    status result = status::inconclusive;
+    std::vector<trace_step> trace;  ///< counterexample (or witness, for reachability)
+    std::string detail;             ///< e.g. where a leads-to counterexample starts to loop
+
+    bool holds() const { return result == status::holds; }
+    bool fails() const { return result == status::fails; }
+
+    /// A readable report: the verdict, then the trace one step per line.
+    std::string to_string() const {
+        std::string out = property + ": " +
+                          (result == status::holds ? "holds" : result == status::fails ? "FAILS" : "inconclusive");
+        if (!detail.empty()) out += " (" + detail + ")";
+        out += '\n';
+        for (std::size_t i = 0; i < trace.size(); ++i)
+            out += "  " + std::to_string(i) + ". " + trace[i].label + " -> " + trace[i].configuration + '\n';
+        return out;
+    }
+};
+
+namespace detail {
+
+template <class Model>
+void append_step(explorer<Model> const& ex, std::vector<trace_step>& out, std::string label, std::size_t i) {
+    out.push_back({std::move(label), ex.model().describe(ex.at(i))});
+}
+
+// The shortest path from the initial state to state i (breadth-first tree).
+template <class Model>
+std::vector<trace_step> path_to(explorer<Model> const& ex, std::size_t i) {
+    std::vector<std::size_t> chain;
+    for (std::size_t s = i; s != explorer<Model>::none; s = ex.parent(s)) chain.push_back(s);
+    std::vector<trace_step> out;
+    for (std::size_t k = chain.size(); k-- > 0;) {
+        std::size_t const s = chain[k];
+        append_step(ex, out, k + 1 == chain.size() ? "(initial)" : ex.model().label(ex.parent_label(s)), s);
+    }
+    return out;
+}
+
+template <class Model>
+verdict incomplete(explorer<Model> const& ex, std::string property) {
+    verdict v{std::move(property), verdict::status::inconclusive, {}, "exploration stopped by " + ex.stats().stopped_by};
+    return v;
+}
+
+}  // namespace detail
+
+/// A[] p: p holds in every reachable state. `p` takes the model's state.
+template <class Model, class Pred>
+verdict always(explorer<Model>& ex, std::string name, Pred p) {
+    ex.run();
+    for (std::size_t i = 0; i < ex.count(); ++i)
+        if (!p(ex.at(i))) return {"A[] " + name, verdict::status::fails, detail::path_to(ex, i), {}};
+    if (!ex.stats().complete) return detail::incomplete(ex, "A[] " + name);
+    return {"A[] " + name, verdict::status::holds, {}, {}};
+}
+
+/// E<> p: some reachable state satisfies p; the trace is a shortest witness.
+template <class Model, class Pred>
+verdict reachable(explorer<Model>& ex, std::string name, Pred p) {
+    ex.run();
+    for (std::size_t i = 0; i < ex.count(); ++i)
+        if (p(ex.at(i))) return {"E<> " + name, verdict::status::holds, detail::path_to(ex, i), {}};
+    if (!ex.stats().complete) return detail::incomplete(ex, "E<> " + name);
+    return {"E<> " + name, verdict::status::fails, {}, {}};
+}
+
+/// Every reachable state has a successor other than itself, unless `is_final` holds in it.
+template <class Model, class Final>
+verdict deadlock_free(explorer<Model>& ex, Final is_final) {
+    ex.run();
+    std::string const name = "deadlock freedom";
+    for (std::size_t i = 0; i < ex.count(); ++i) {
+        bool moves = false;
+        for (auto e = ex.edges_begin(i); e < ex.edges_end(i) && !moves; ++e) moves = ex.edge_target(e) != i;
+        if (!moves && !is_final(ex.at(i)) && (ex.stats().complete || ex.edges_end(i) > ex.edges_begin(i)))
+            return {name, verdict::status::fails, detail::path_to(ex, i), "no successor but itself"};
+    }
+    if (!ex.stats().complete) return detail::incomplete(ex, name);
+    return {name, verdict::status::holds, {}, {}};
+}
+
+template <class Model>
+verdict deadlock_free(explorer<Model>& ex) {
+    return deadlock_free(ex, [](auto const&) { return false; });
+}
+
+/// The initial state is reachable from every reachable state (seed 002's reinitiability).
+template <class Model>
+verdict reinitiable(explorer<Model>& ex) {
+    ex.run();
+    std::string const name = "reinitiability";
+    if (!ex.stats().complete) return detail::incomplete(ex, name);
+    std::size_t const n = ex.count();
+    // Reverse adjacency, then a backward search from the initial state.
+    std::vector<std::uint32_t> begin(n + 1, 0), from(ex.stats().transitions);
+    for (std::size_t i = 0; i < n; ++i)
+        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e) ++begin[ex.edge_target(e) + 1];
+    for (std::size_t i = 0; i < n; ++i) begin[i + 1] += begin[i];
+    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e)
+            from[fill[ex.edge_target(e)]++] = static_cast<std::uint32_t>(i);
+    std::vector<bool> back(n, false);
+    std::vector<std::uint32_t> queue{0};
+    back[0] = true;
+    for (std::size_t k = 0; k < queue.size(); ++k)
+        for (auto e = begin[queue[k]]; e < begin[queue[k] + 1]; ++e)
+            if (!back[from[e]]) {
+                back[from[e]] = true;
+                queue.push_back(from[e]);
+            }
+    for (std::size_t i = 0; i < n; ++i)
+        if (!back[i]) return {name, verdict::status::fails, detail::path_to(ex, i), "the initial state is unreachable from the last state"};
+    return {name, verdict::status::holds, {}, {}};
+}
+
+/// p --> q: from every reachable p-state, every path reaches a q-state. No fairness is
+/// assumed: a cycle of non-q states, or a deadlock, after a p-state is a counterexample
+/// (the trace ends where the loop closes).
+template <class Model, class P, class Q>
+verdict leads_to(explorer<Model>& ex, std::string name, P p, Q q) {
+    ex.run();
+    name = name.empty() ? "p --> q" : name;
+    if (!ex.stats().complete) return detail::incomplete(ex, name);
+    std::size_t const n = ex.count();
+    std::vector<char> is_q(n), is_p(n), sure(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        auto const s = ex.at(i);
+        is_q[i] = q(s);
+        is_p[i] = p(s);
+    }
+    // sure[i]: every path from i reaches q. Least fixpoint, iterated to stability.
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (sure[i]) continue;
+            bool all = is_q[i] != 0;
+            if (!all && ex.edges_end(i) > ex.edges_begin(i)) {
+                all = true;
+                for (auto e = ex.edges_begin(i); e < ex.edges_end(i) && all; ++e) all = sure[ex.edge_target(e)] != 0;
+            }
+            if (all) sure[i] = changed = true;
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!is_p[i] || sure[i]) continue;
+        auto trace = detail::path_to(ex, i);
+        // Continue through states that can avoid q until one repeats or nothing follows.
+        std::vector<char> seen(n, 0);
+        std::size_t s = i;
+        seen[s] = 1;
+        std::string how = "no successor";
+        for (;;) {
+            std::size_t next = n;
+            std::uint16_t label = 0;
+            for (auto e = ex.edges_begin(s); e < ex.edges_end(s); ++e)
+                if (!sure[ex.edge_target(e)]) {
+                    next = ex.edge_target(e);
+                    label = ex.edge_label(e);
+                    break;
+                }
+            if (next == n) break;
+            detail::append_step(ex, trace, ex.model().label(label), next);
+            if (seen[next]) {
+                how = "loops without reaching q";
+                break;
+            }
+            seen[next] = 1;
+            s = next;
+        }
+        return {name, verdict::status::fails, std::move(trace),
+                "from step " + std::to_string(detail::path_to(ex, i).size() - 1) + ": " + how};
+    }
+    return {name, verdict::status::holds, {}, {}};
+}
+
+}  // namespace bsc::verify
