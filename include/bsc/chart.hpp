@@ -31,6 +31,16 @@ struct root_must_be_composite {
 
 }  // namespace bsc::error
 
+namespace bsc::detail {
+template <class Root>
+constexpr bool is_compound_root() {
+    if constexpr (is_node<Root>)
+        return Root::node_kind == kind::composite || Root::node_kind == kind::parallel;
+    else
+        return false;
+}
+}  // namespace bsc::detail
+
 namespace bsc {
 
 /// A statechart over the context type `Context`: the state tree `Root` and the rows.
@@ -48,8 +58,7 @@ struct chart {
 /// the offending state (see docs/checks.md).
 template <class Context, class Root, class... Rows>
 constexpr auto make_chart(Root, Rows... rows) {
-    if constexpr (!(detail::is_node<Root> &&
-                    (Root::node_kind == detail::kind::composite || Root::node_kind == detail::kind::parallel))) {
+    if constexpr (!detail::is_compound_root<Root>()) {
         static_assert(error::root_must_be_composite<Root>::value);
         return 0;
     } else if constexpr (!(detail::is_row<Rows> && ...)) {

@@ -807,7 +807,8 @@ struct tag_of<state_ref<S>> {
 };
 
 // The child declarations an argument of composite<S>(...) contributes, in document order.
-template <class A, class... Declared>
+// An initial<X> declares X only if no argument declares it and no earlier initial<X> did.
+template <class A, bool FirstOfItsKind, class... Declared>
 constexpr auto children_from() {
     if constexpr (is_node<A>)
         return type_list<A>{};
@@ -815,12 +816,22 @@ constexpr auto children_from() {
         return type_list<leaf_node<typename A::tag, kind::basic>>{};
     else if constexpr (is_initial_marker<A>) {
         using S = typename tag_of<A>::type;
-        if constexpr ((std::is_same_v<S, Declared> || ...))
+        if constexpr ((std::is_same_v<S, Declared> || ...) || !FirstOfItsKind)
             return type_list<>{};
         else
             return type_list<leaf_node<S, kind::basic, true>>{};
     } else
         return type_list<>{};
+}
+
+template <std::size_t I, class... A>
+constexpr bool first_of_its_kind() {
+    using list = type_list<A...>;
+    using T = at<I, list>;
+    constexpr bool same[] = {std::is_same_v<T, A>...};
+    for (std::size_t k = 0; k < I; ++k)
+        if (same[k]) return false;
+    return true;
 }
 
 template <class A>
@@ -849,11 +860,11 @@ constexpr history history_from() {
     return h;
 }
 
-template <class Tags, class... A>
+template <class Tags, class Seq, class... A>
 struct composite_children;
-template <class... Declared, class... A>
-struct composite_children<type_list<Declared...>, A...> {
-    using type = decltype((type_list<>{} + ... + children_from<A, Declared...>()));
+template <class... Declared, std::size_t... I, class... A>
+struct composite_children<type_list<Declared...>, std::index_sequence<I...>, A...> {
+    using type = decltype((type_list<>{} + ... + children_from<A, first_of_its_kind<I, A...>(), Declared...>()));
 };
 
 }  // namespace bsc::detail
@@ -913,7 +924,7 @@ constexpr auto composite(A...) {
         static_assert(error::conflicting_history_markers<S>::value);
     }
     using declared = decltype((detail::type_list<>{} + ... + detail::declared_tag<A>()));
-    using children = typename detail::composite_children<declared, A...>::type;
+    using children = typename detail::composite_children<declared, std::index_sequence_for<A...>, A...>::type;
     using initials = decltype((detail::type_list<>{} + ... + detail::initials_from<A>()));
     return detail::composite_node<S, detail::history_from<A...>(), initials, children>{};
 }
@@ -927,7 +938,7 @@ constexpr auto parallel(A...) {
             detail::index_in<std::false_type, std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>();
         static_assert(error::not_a_state_declaration<S, detail::at<bad, detail::type_list<A...>>>::value);
     }
-    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A>()));
+    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true>()));
     return detail::parallel_node<S, children>{};
 }
 
@@ -1189,26 +1200,43 @@ struct row_pair {
     constexpr bool found() const { return first >= 0; }
 };
 
-template <std::size_t R>
-constexpr row_pair find_same_trigger_pair(row_table<R> const& r, bool second_guarded) {
-    for (std::size_t i = 0; i < R; ++i) {
-        if (r.kinds[i] != row_kind::transition || r.guarded[i])
-            continue;
-        for (std::size_t j = i + 1; j < R; ++j)
-            if (r.kinds[j] == row_kind::transition && r.source[j] == r.source[i] && r.trigger[j] == r.trigger[i] &&
-                r.guarded[j] == second_guarded)
-                return {static_cast<int>(i), static_cast<int>(j)};
-    }
-    return {};
-}
+struct determinism_findings {
+    row_pair conflict;  // the first pair of unguarded rows on one source and trigger
+    row_pair shadowed;  // the first unguarded row followed by a guarded one
+};
 
-template <std::size_t R>
-constexpr row_pair find_conflict(row_table<R> const& r) {
-    return find_same_trigger_pair(r, false);
-}
-template <std::size_t R>
-constexpr row_pair find_shadowed(row_table<R> const& r) {
-    return find_same_trigger_pair(r, true);
+// Rows are bucketed by source (a counting sort keeps declaration order inside a bucket), so
+// only rows of the same source are compared: linear in the chart for the usual few rows
+// per state.
+template <std::size_t N, std::size_t R>
+constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table<R> const& r) {
+    determinism_findings found;
+    std::array<int, N + 1> begin{};
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.kinds[i] == row_kind::transition) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
+    for (std::size_t s = 0; s < N; ++s) begin[s + 1] += begin[s];
+    std::array<int, R + 1> order{};
+    std::array<int, N + 1> fill = begin;
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.kinds[i] == row_kind::transition)
+            order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
+    // Report the pair a reader meets first: by the earlier row, then by the later one.
+    auto earlier = [](row_pair const& a, int i, int j) {
+        return !a.found() || i < a.first || (i == a.first && j < a.second);
+    };
+    for (std::size_t s = 0; s < N; ++s)
+        for (int a = begin[s]; a < begin[s + 1]; ++a) {
+            auto const i = static_cast<std::size_t>(order[static_cast<std::size_t>(a)]);
+            if (r.guarded[i]) continue;
+            for (int b = a + 1; b < begin[s + 1]; ++b) {
+                auto const j = static_cast<std::size_t>(order[static_cast<std::size_t>(b)]);
+                if (r.trigger[j] != r.trigger[i]) continue;
+                row_pair& slot = r.guarded[j] ? found.shadowed : found.conflict;
+                if (earlier(slot, static_cast<int>(i), static_cast<int>(j)))
+                    slot = {static_cast<int>(i), static_cast<int>(j)};
+            }
+        }
+    return found;
 }
 
 }  // namespace bsc::detail
@@ -1395,37 +1423,47 @@ constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R
     return reach;
 }
 
-template <std::size_t N, std::size_t R>
-constexpr int find_unreachable(topology<N> const& t, row_table<R> const& r) {
-    auto const reach = reachable_states(t, r);
+template <std::size_t N>
+constexpr int find_unreachable(topology<N> const&, std::array<bool, N> const& reach) {
     for (std::size_t s = 1; s < N; ++s)
-        if (!reach[s])
-            return static_cast<int>(s);
+        if (!reach[s]) return static_cast<int>(s);
     return -1;
 }
 
-// A transition can exit leaf x if it has a target, its domain is above x, and its source is
-// active whenever x may be: x itself, an ancestor of x, or a state in an orthogonal region.
+// A basic state x is left by a transition with a target whose domain is above x and whose
+// source is active whenever x may be: x itself or an ancestor (then the domain is above x
+// too), or a state in another region of a parallel ancestor of x, if the domain is above that
+// parallel state. Computed with two flags per state, so the cost is linear in the chart.
 template <std::size_t N, std::size_t R>
-constexpr bool can_leave(topology<N> const& t, row_table<R> const& r, int x) {
+constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::array<bool, N> const& reach) {
+    std::array<bool, N> leaves_from{};     // a targeted transition leaves this state
+    std::array<bool, N> region_exits{};    // ... leaves, from inside this region, its parallel parent
+    std::array<int, N> exiting_regions{};  // per parallel state: how many of its regions do so
     for (std::size_t i = 0; i < R; ++i) {
-        if (r.kinds[i] != row_kind::transition || r.target[i] < 0)
-            continue;
-        int const s = r.source[i];
-        if (!t.is_proper_ancestor(r.domain[i], x))
-            continue;
-        if (t.contains(s, x) || t.kinds[static_cast<std::size_t>(t.lca(s, x))] == kind::parallel)
-            return true;
+        if (r.kinds[i] != row_kind::transition || r.target[i] < 0) continue;
+        int const src = r.source[i];
+        leaves_from[static_cast<std::size_t>(src)] = true;
+        for (int a = src; t.parent[static_cast<std::size_t>(a)] >= 0; a = t.parent[static_cast<std::size_t>(a)]) {
+            int const p = t.parent[static_cast<std::size_t>(a)];
+            if (t.kinds[static_cast<std::size_t>(p)] == kind::parallel && t.is_proper_ancestor(r.domain[i], p) &&
+                !region_exits[static_cast<std::size_t>(a)]) {
+                region_exits[static_cast<std::size_t>(a)] = true;
+                ++exiting_regions[static_cast<std::size_t>(p)];
+            }
+        }
     }
-    return false;
-}
-
-template <std::size_t N, std::size_t R>
-constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r) {
-    auto const reach = reachable_states(t, r);
-    for (std::size_t s = 1; s < N; ++s)
-        if (t.kinds[s] == kind::basic && reach[s] && !can_leave(t, r, static_cast<int>(s)))
-            return static_cast<int>(s);
+    for (std::size_t x = 1; x < N; ++x) {
+        if (t.kinds[x] != kind::basic || !reach[x]) continue;
+        bool leaves = false;
+        for (int a = static_cast<int>(x); a > 0 && !leaves; a = t.parent[static_cast<std::size_t>(a)]) {
+            auto const ai = static_cast<std::size_t>(a);
+            int const p = t.parent[ai];
+            leaves = leaves_from[ai] ||
+                     (t.kinds[static_cast<std::size_t>(p)] == kind::parallel &&
+                      exiting_regions[static_cast<std::size_t>(p)] - int{region_exits[ai]} > 0);
+        }
+        if (!leaves) return static_cast<int>(x);
+    }
     return -1;
 }
 
@@ -1434,50 +1472,73 @@ constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r) {
 
 namespace bsc::detail {
 
-template <std::size_t N, std::size_t R>
-constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) {
-    std::array<std::array<bool, N>, N> edge{};
-    std::array<int, N> source_of{};
+template <std::size_t R>
+constexpr bool has_unguarded_eventless(row_table<R> const& r) {
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.kinds[i] == row_kind::transition && !r.guarded[i] && r.trigger[i] == eventless_id) return true;
+    return false;
+}
+
+// Calls f(u, v, source) for each edge u -> v between basic states that an unguarded eventless
+// transition (from `source`, enabled in u) makes.
+template <std::size_t N, std::size_t R, class F>
+constexpr void for_each_eventless_edge(topology<N> const& t, row_table<R> const& r, F&& f) {
     for (std::size_t i = 0; i < R; ++i) {
-        if (r.kinds[i] != row_kind::transition || r.guarded[i] || r.trigger[i] != eventless_id)
-            continue;
+        if (r.kinds[i] != row_kind::transition || r.guarded[i] || r.trigger[i] != eventless_id) continue;
         int const s = r.source[i];
         std::array<bool, N> entered{};
-        if (r.target[i] < 0)
-            entered = {};  // internal: stays in the same states, and fires again
-        else
-            mark_entry(t, entered, r.domain[i], r.target[i]);
-        for (std::size_t u = 0; u < N; ++u) {
-            if (!t.is_leaf(static_cast<int>(u)) || !t.contains(s, static_cast<int>(u)))
-                continue;
+        if (r.target[i] >= 0) mark_entry(t, entered, r.domain[i], r.target[i]);
+        for (int u = s; u < t.end[static_cast<std::size_t>(s)]; ++u) {
+            if (!t.is_leaf(u)) continue;
             if (r.target[i] < 0) {
-                edge[u][u] = true;
-                source_of[u] = s;
-            }
-            for (std::size_t v = 0; v < N; ++v)
-                if (entered[v] && t.is_leaf(static_cast<int>(v))) {
-                    edge[u][v] = true;
-                    source_of[u] = s;
-                }
-        }
-    }
-    // Peel off states that no edge enters; what stays with an outgoing edge lies on a cycle.
-    std::array<bool, N> removed{};
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (std::size_t v = 0; v < N; ++v) {
-            if (removed[v])
+                f(u, u, s);  // internal: it stays in the same states and fires again
                 continue;
-            bool entered_by_edge = false;
-            for (std::size_t u = 0; u < N && !entered_by_edge; ++u) entered_by_edge = !removed[u] && edge[u][v];
-            if (!entered_by_edge)
-                removed[v] = changed = true;
+            }
+            for (int v = 0; v < static_cast<int>(N); ++v)
+                if (entered[static_cast<std::size_t>(v)] && t.is_leaf(v)) f(u, v, s);
         }
     }
-    for (std::size_t u = 0; u < N; ++u)
-        if (!removed[u])
-            return source_of[u];
-    return -1;
+}
+
+template <std::size_t N, std::size_t R>
+constexpr std::size_t count_eventless_edges(topology<N> const& t, row_table<R> const& r) {
+    std::size_t n = 0;
+    if (has_unguarded_eventless(r)) for_each_eventless_edge(t, r, [&](int, int, int) { ++n; });
+    return n;
+}
+
+// Returns the source of an unguarded eventless transition on a cycle, or -1. E is the number
+// of edges (count_eventless_edges); zero in the common case, which then costs nothing more.
+template <std::size_t E, std::size_t N, std::size_t R>
+constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) {
+    if constexpr (E == 0) {
+        return -1;
+    } else {
+        struct edge {
+            int from, to, source;
+        };
+        std::array<edge, E> edges{};
+        std::size_t count = 0;
+        for_each_eventless_edge(t, r, [&](int u, int v, int s) { edges[count++] = {u, v, s}; });
+        // Peel off states without incoming or without outgoing edges among the rest: what remains
+        // is the union of the cycles.
+        std::array<bool, N> removed{};
+        for (bool changed = true; changed;) {
+            changed = false;
+            std::array<int, N> in{}, out{};
+            for (std::size_t e = 0; e < count; ++e)
+                if (!removed[static_cast<std::size_t>(edges[e].from)] && !removed[static_cast<std::size_t>(edges[e].to)]) {
+                    ++out[static_cast<std::size_t>(edges[e].from)];
+                    ++in[static_cast<std::size_t>(edges[e].to)];
+                }
+            for (std::size_t v = 0; v < N; ++v)
+                if (!removed[v] && (in[v] == 0 || out[v] == 0)) removed[v] = changed = true;
+        }
+        for (std::size_t e = 0; e < count; ++e)
+            if (!removed[static_cast<std::size_t>(edges[e].from)] && !removed[static_cast<std::size_t>(edges[e].to)])
+                return edges[e].source;
+        return -1;
+    }
 }
 
 }  // namespace bsc::detail
@@ -1542,6 +1603,15 @@ struct trigger_type<transition_row<S, eventless_trigger, G, A, T>> {
     using type = eventless_trigger;
 };
 
+// Whether the tree and the rows are well formed, computed without reporting anything, so
+// that the other checks are not even instantiated on a malformed chart.
+template <class Chart>
+constexpr bool structure_valid() {
+    using an = analysis<Chart>;
+    return find_duplicate(typename an::tags{}) < 0 && find_unknown_state(an::table) < 0 &&
+           find_initial_problem(an::topo) < 0;
+}
+
 template <class Chart>
 constexpr bool check_structure() {
     using an = analysis<Chart>;
@@ -1594,8 +1664,9 @@ constexpr bool check_orthogonality() {
 template <class Chart>
 constexpr bool check_determinism() {
     using an = analysis<Chart>;
-    constexpr row_pair conflict = find_conflict(an::table);
-    constexpr row_pair shadowed = find_shadowed(an::table);
+    constexpr determinism_findings found = find_nondeterminism(an::topo, an::table);
+    constexpr row_pair conflict = found.conflict;
+    constexpr row_pair shadowed = found.shadowed;
     if constexpr (conflict.found()) {
         using R = typename an::template row_at<conflict.second>;
         return error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>::value;
@@ -1611,11 +1682,12 @@ constexpr bool check_determinism() {
 template <class Chart>
 constexpr bool check_reachability() {
     using an = analysis<Chart>;
-    constexpr int unreachable = find_unreachable(an::topo, an::table);
+    constexpr auto reach = reachable_states(an::topo, an::table);
+    constexpr int unreachable = find_unreachable(an::topo, reach);
     if constexpr (unreachable >= 0) {
         return error::unreachable_state<typename an::template tag_at<unreachable>>::value;
     } else {
-        constexpr int dead_end = find_dead_end(an::topo, an::table);
+        constexpr int dead_end = find_dead_end(an::topo, an::table, reach);
         if constexpr (dead_end >= 0)
             return error::dead_end_state<typename an::template tag_at<dead_end>>::value;
         else
@@ -1626,7 +1698,8 @@ constexpr bool check_reachability() {
 template <class Chart>
 constexpr bool check_livelock() {
     using an = analysis<Chart>;
-    constexpr int source = find_eventless_cycle(an::topo, an::table);
+    constexpr std::size_t edges = count_eventless_edges(an::topo, an::table);
+    constexpr int source = find_eventless_cycle<edges>(an::topo, an::table);
     if constexpr (source >= 0)
         return error::eventless_livelock<typename an::template tag_at<source>>::value;
     else
@@ -1636,8 +1709,8 @@ constexpr bool check_livelock() {
 // True for a well-formed chart; otherwise one of the bsc::error templates fails to instantiate.
 template <class Chart>
 constexpr bool check_chart() {
-    if constexpr (!check_structure<Chart>())
-        return false;
+    if constexpr (!structure_valid<Chart>())
+        return check_structure<Chart>();
     else {
         // Each check is evaluated, so one build reports every kind of problem it finds.
         constexpr bool orthogonal = check_orthogonality<Chart>();
@@ -1672,6 +1745,16 @@ struct root_must_be_composite {
 
 }  // namespace bsc::error
 
+namespace bsc::detail {
+template <class Root>
+constexpr bool is_compound_root() {
+    if constexpr (is_node<Root>)
+        return Root::node_kind == kind::composite || Root::node_kind == kind::parallel;
+    else
+        return false;
+}
+}  // namespace bsc::detail
+
 namespace bsc {
 
 /// A statechart over the context type `Context`: the state tree `Root` and the rows.
@@ -1689,8 +1772,7 @@ struct chart {
 /// the offending state (see docs/checks.md).
 template <class Context, class Root, class... Rows>
 constexpr auto make_chart(Root, Rows... rows) {
-    if constexpr (!(detail::is_node<Root> &&
-                    (Root::node_kind == detail::kind::composite || Root::node_kind == detail::kind::parallel))) {
+    if constexpr (!detail::is_compound_root<Root>()) {
         static_assert(error::root_must_be_composite<Root>::value);
         return 0;
     } else if constexpr (!(detail::is_row<Rows> && ...)) {

@@ -20,6 +20,15 @@ struct trigger_type<transition_row<S, eventless_trigger, G, A, T>> {
     using type = eventless_trigger;
 };
 
+// Whether the tree and the rows are well formed, computed without reporting anything, so
+// that the other checks are not even instantiated on a malformed chart.
+template <class Chart>
+constexpr bool structure_valid() {
+    using an = analysis<Chart>;
+    return find_duplicate(typename an::tags{}) < 0 && find_unknown_state(an::table) < 0 &&
+           find_initial_problem(an::topo) < 0;
+}
+
 template <class Chart>
 constexpr bool check_structure() {
     using an = analysis<Chart>;
@@ -72,8 +81,9 @@ constexpr bool check_orthogonality() {
 template <class Chart>
 constexpr bool check_determinism() {
     using an = analysis<Chart>;
-    constexpr row_pair conflict = find_conflict(an::table);
-    constexpr row_pair shadowed = find_shadowed(an::table);
+    constexpr determinism_findings found = find_nondeterminism(an::topo, an::table);
+    constexpr row_pair conflict = found.conflict;
+    constexpr row_pair shadowed = found.shadowed;
     if constexpr (conflict.found()) {
         using R = typename an::template row_at<conflict.second>;
         return error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>::value;
@@ -89,11 +99,12 @@ constexpr bool check_determinism() {
 template <class Chart>
 constexpr bool check_reachability() {
     using an = analysis<Chart>;
-    constexpr int unreachable = find_unreachable(an::topo, an::table);
+    constexpr auto reach = reachable_states(an::topo, an::table);
+    constexpr int unreachable = find_unreachable(an::topo, reach);
     if constexpr (unreachable >= 0) {
         return error::unreachable_state<typename an::template tag_at<unreachable>>::value;
     } else {
-        constexpr int dead_end = find_dead_end(an::topo, an::table);
+        constexpr int dead_end = find_dead_end(an::topo, an::table, reach);
         if constexpr (dead_end >= 0)
             return error::dead_end_state<typename an::template tag_at<dead_end>>::value;
         else
@@ -104,7 +115,8 @@ constexpr bool check_reachability() {
 template <class Chart>
 constexpr bool check_livelock() {
     using an = analysis<Chart>;
-    constexpr int source = find_eventless_cycle(an::topo, an::table);
+    constexpr std::size_t edges = count_eventless_edges(an::topo, an::table);
+    constexpr int source = find_eventless_cycle<edges>(an::topo, an::table);
     if constexpr (source >= 0)
         return error::eventless_livelock<typename an::template tag_at<source>>::value;
     else
@@ -114,8 +126,8 @@ constexpr bool check_livelock() {
 // True for a well-formed chart; otherwise one of the bsc::error templates fails to instantiate.
 template <class Chart>
 constexpr bool check_chart() {
-    if constexpr (!check_structure<Chart>())
-        return false;
+    if constexpr (!structure_valid<Chart>())
+        return check_structure<Chart>();
     else {
         // Each check is evaluated, so one build reports every kind of problem it finds.
         constexpr bool orthogonal = check_orthogonality<Chart>();

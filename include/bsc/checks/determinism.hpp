@@ -12,26 +12,43 @@ struct row_pair {
     constexpr bool found() const { return first >= 0; }
 };
 
-template <std::size_t R>
-constexpr row_pair find_same_trigger_pair(row_table<R> const& r, bool second_guarded) {
-    for (std::size_t i = 0; i < R; ++i) {
-        if (r.kinds[i] != row_kind::transition || r.guarded[i])
-            continue;
-        for (std::size_t j = i + 1; j < R; ++j)
-            if (r.kinds[j] == row_kind::transition && r.source[j] == r.source[i] && r.trigger[j] == r.trigger[i] &&
-                r.guarded[j] == second_guarded)
-                return {static_cast<int>(i), static_cast<int>(j)};
-    }
-    return {};
-}
+struct determinism_findings {
+    row_pair conflict;  // the first pair of unguarded rows on one source and trigger
+    row_pair shadowed;  // the first unguarded row followed by a guarded one
+};
 
-template <std::size_t R>
-constexpr row_pair find_conflict(row_table<R> const& r) {
-    return find_same_trigger_pair(r, false);
-}
-template <std::size_t R>
-constexpr row_pair find_shadowed(row_table<R> const& r) {
-    return find_same_trigger_pair(r, true);
+// Rows are bucketed by source (a counting sort keeps declaration order inside a bucket), so
+// only rows of the same source are compared: linear in the chart for the usual few rows
+// per state.
+template <std::size_t N, std::size_t R>
+constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table<R> const& r) {
+    determinism_findings found;
+    std::array<int, N + 1> begin{};
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.kinds[i] == row_kind::transition) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
+    for (std::size_t s = 0; s < N; ++s) begin[s + 1] += begin[s];
+    std::array<int, R + 1> order{};
+    std::array<int, N + 1> fill = begin;
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.kinds[i] == row_kind::transition)
+            order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
+    // Report the pair a reader meets first: by the earlier row, then by the later one.
+    auto earlier = [](row_pair const& a, int i, int j) {
+        return !a.found() || i < a.first || (i == a.first && j < a.second);
+    };
+    for (std::size_t s = 0; s < N; ++s)
+        for (int a = begin[s]; a < begin[s + 1]; ++a) {
+            auto const i = static_cast<std::size_t>(order[static_cast<std::size_t>(a)]);
+            if (r.guarded[i]) continue;
+            for (int b = a + 1; b < begin[s + 1]; ++b) {
+                auto const j = static_cast<std::size_t>(order[static_cast<std::size_t>(b)]);
+                if (r.trigger[j] != r.trigger[i]) continue;
+                row_pair& slot = r.guarded[j] ? found.shadowed : found.conflict;
+                if (earlier(slot, static_cast<int>(i), static_cast<int>(j)))
+                    slot = {static_cast<int>(i), static_cast<int>(j)};
+            }
+        }
+    return found;
 }
 
 }  // namespace bsc::detail

@@ -54,37 +54,47 @@ constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R
     return reach;
 }
 
-template <std::size_t N, std::size_t R>
-constexpr int find_unreachable(topology<N> const& t, row_table<R> const& r) {
-    auto const reach = reachable_states(t, r);
+template <std::size_t N>
+constexpr int find_unreachable(topology<N> const&, std::array<bool, N> const& reach) {
     for (std::size_t s = 1; s < N; ++s)
-        if (!reach[s])
-            return static_cast<int>(s);
+        if (!reach[s]) return static_cast<int>(s);
     return -1;
 }
 
-// A transition can exit leaf x if it has a target, its domain is above x, and its source is
-// active whenever x may be: x itself, an ancestor of x, or a state in an orthogonal region.
+// A basic state x is left by a transition with a target whose domain is above x and whose
+// source is active whenever x may be: x itself or an ancestor (then the domain is above x
+// too), or a state in another region of a parallel ancestor of x, if the domain is above that
+// parallel state. Computed with two flags per state, so the cost is linear in the chart.
 template <std::size_t N, std::size_t R>
-constexpr bool can_leave(topology<N> const& t, row_table<R> const& r, int x) {
+constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::array<bool, N> const& reach) {
+    std::array<bool, N> leaves_from{};     // a targeted transition leaves this state
+    std::array<bool, N> region_exits{};    // ... leaves, from inside this region, its parallel parent
+    std::array<int, N> exiting_regions{};  // per parallel state: how many of its regions do so
     for (std::size_t i = 0; i < R; ++i) {
-        if (r.kinds[i] != row_kind::transition || r.target[i] < 0)
-            continue;
-        int const s = r.source[i];
-        if (!t.is_proper_ancestor(r.domain[i], x))
-            continue;
-        if (t.contains(s, x) || t.kinds[static_cast<std::size_t>(t.lca(s, x))] == kind::parallel)
-            return true;
+        if (r.kinds[i] != row_kind::transition || r.target[i] < 0) continue;
+        int const src = r.source[i];
+        leaves_from[static_cast<std::size_t>(src)] = true;
+        for (int a = src; t.parent[static_cast<std::size_t>(a)] >= 0; a = t.parent[static_cast<std::size_t>(a)]) {
+            int const p = t.parent[static_cast<std::size_t>(a)];
+            if (t.kinds[static_cast<std::size_t>(p)] == kind::parallel && t.is_proper_ancestor(r.domain[i], p) &&
+                !region_exits[static_cast<std::size_t>(a)]) {
+                region_exits[static_cast<std::size_t>(a)] = true;
+                ++exiting_regions[static_cast<std::size_t>(p)];
+            }
+        }
     }
-    return false;
-}
-
-template <std::size_t N, std::size_t R>
-constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r) {
-    auto const reach = reachable_states(t, r);
-    for (std::size_t s = 1; s < N; ++s)
-        if (t.kinds[s] == kind::basic && reach[s] && !can_leave(t, r, static_cast<int>(s)))
-            return static_cast<int>(s);
+    for (std::size_t x = 1; x < N; ++x) {
+        if (t.kinds[x] != kind::basic || !reach[x]) continue;
+        bool leaves = false;
+        for (int a = static_cast<int>(x); a > 0 && !leaves; a = t.parent[static_cast<std::size_t>(a)]) {
+            auto const ai = static_cast<std::size_t>(a);
+            int const p = t.parent[ai];
+            leaves = leaves_from[ai] ||
+                     (t.kinds[static_cast<std::size_t>(p)] == kind::parallel &&
+                      exiting_regions[static_cast<std::size_t>(p)] - int{region_exits[ai]} > 0);
+        }
+        if (!leaves) return static_cast<int>(x);
+    }
     return -1;
 }
 

@@ -79,7 +79,8 @@ struct tag_of<state_ref<S>> {
 };
 
 // The child declarations an argument of composite<S>(...) contributes, in document order.
-template <class A, class... Declared>
+// An initial<X> declares X only if no argument declares it and no earlier initial<X> did.
+template <class A, bool FirstOfItsKind, class... Declared>
 constexpr auto children_from() {
     if constexpr (is_node<A>)
         return type_list<A>{};
@@ -87,12 +88,22 @@ constexpr auto children_from() {
         return type_list<leaf_node<typename A::tag, kind::basic>>{};
     else if constexpr (is_initial_marker<A>) {
         using S = typename tag_of<A>::type;
-        if constexpr ((std::is_same_v<S, Declared> || ...))
+        if constexpr ((std::is_same_v<S, Declared> || ...) || !FirstOfItsKind)
             return type_list<>{};
         else
             return type_list<leaf_node<S, kind::basic, true>>{};
     } else
         return type_list<>{};
+}
+
+template <std::size_t I, class... A>
+constexpr bool first_of_its_kind() {
+    using list = type_list<A...>;
+    using T = at<I, list>;
+    constexpr bool same[] = {std::is_same_v<T, A>...};
+    for (std::size_t k = 0; k < I; ++k)
+        if (same[k]) return false;
+    return true;
 }
 
 template <class A>
@@ -121,11 +132,11 @@ constexpr history history_from() {
     return h;
 }
 
-template <class Tags, class... A>
+template <class Tags, class Seq, class... A>
 struct composite_children;
-template <class... Declared, class... A>
-struct composite_children<type_list<Declared...>, A...> {
-    using type = decltype((type_list<>{} + ... + children_from<A, Declared...>()));
+template <class... Declared, std::size_t... I, class... A>
+struct composite_children<type_list<Declared...>, std::index_sequence<I...>, A...> {
+    using type = decltype((type_list<>{} + ... + children_from<A, first_of_its_kind<I, A...>(), Declared...>()));
 };
 
 }  // namespace bsc::detail
@@ -185,7 +196,7 @@ constexpr auto composite(A...) {
         static_assert(error::conflicting_history_markers<S>::value);
     }
     using declared = decltype((detail::type_list<>{} + ... + detail::declared_tag<A>()));
-    using children = typename detail::composite_children<declared, A...>::type;
+    using children = typename detail::composite_children<declared, std::index_sequence_for<A...>, A...>::type;
     using initials = decltype((detail::type_list<>{} + ... + detail::initials_from<A>()));
     return detail::composite_node<S, detail::history_from<A...>(), initials, children>{};
 }
@@ -199,7 +210,7 @@ constexpr auto parallel(A...) {
             detail::index_in<std::false_type, std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>();
         static_assert(error::not_a_state_declaration<S, detail::at<bad, detail::type_list<A...>>>::value);
     }
-    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A>()));
+    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true>()));
     return detail::parallel_node<S, children>{};
 }
 

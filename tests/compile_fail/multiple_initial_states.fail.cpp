@@ -1,0 +1,22 @@
+// EXPECT: (bsc::error::multiple_initial_states<cf::Busy>.*bsc: this composite state has more than one bsc::initial marker|bsc: this composite state has more than one bsc::initial marker.*bsc::error::multiple_initial_states<cf::Busy>)
+// The composite Busy names two initial children.
+#include <bsc/bsc.hpp>
+
+namespace cf {
+struct go {};
+struct stop {};
+struct Root;
+struct Idle;
+struct Busy;
+struct Sub1;
+struct Sub2;
+struct ctx {};
+
+inline constexpr auto chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>,
+                         bsc::composite<Busy>(bsc::initial<Sub1>, bsc::initial<Sub2>, bsc::state<Sub1>,
+                                              bsc::state<Sub2>)),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+    bsc::state<Sub1> + bsc::event<go> = bsc::state<Sub2>,
+    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+}  // namespace cf

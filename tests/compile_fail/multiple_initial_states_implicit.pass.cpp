@@ -1,0 +1,17 @@
+// Twin of multiple_initial_states_implicit.fail.cpp: one marker.
+#include <bsc/bsc.hpp>
+
+namespace cf {
+struct go {};
+struct stop {};
+struct Root;
+struct Idle;
+struct Busy;
+struct Sub1;
+struct ctx {};
+
+inline constexpr auto chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::composite<Busy>(bsc::initial<Sub1>)),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+}  // namespace cf

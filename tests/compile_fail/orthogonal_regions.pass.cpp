@@ -1,0 +1,23 @@
+// Twin of orthogonal_regions.fail.cpp: the transition from A now targets Done, outside P.
+#include <bsc/bsc.hpp>
+
+namespace cf {
+struct go {};
+struct stop {};
+struct Root;
+struct P;
+struct R1;
+struct R2;
+struct A;
+struct B;
+struct Done;
+struct ctx {};
+
+inline constexpr auto chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<P>,
+                         bsc::parallel<P>(bsc::composite<R1>(bsc::initial<A>), bsc::composite<R2>(bsc::initial<B>)),
+                         bsc::state<Done>),
+    bsc::state<A> + bsc::event<go> = bsc::state<Done>,
+    bsc::state<B> + bsc::event<stop> = bsc::state<Done>,
+    bsc::state<Done> + bsc::event<go> = bsc::state<P>);
+}  // namespace cf
