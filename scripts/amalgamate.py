@@ -3,8 +3,9 @@
 
 Starting from include/bsc/bsc.hpp, every include that resolves to a file under
 include/ is inlined in place, depth-first and only the first time it is seen;
-all other includes are kept as they are. The output is deterministic so that it
-can be checked in and verified with --check.
+all other includes are kept as they are. The explorer, include/bsc/verify.hpp,
+becomes a second file that includes the first and adds only what it lacks. The
+output is deterministic so that it can be checked in and verified with --check.
 """
 
 import argparse
@@ -17,6 +18,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 INCLUDE_DIR = ROOT / "include"
 ENTRY = INCLUDE_DIR / "bsc" / "bsc.hpp"
+VERIFY_ENTRY = INCLUDE_DIR / "bsc" / "verify.hpp"
 DEFAULT_OUTPUT = ROOT / "single_include" / "bsc" / "bsc.hpp"
 COMMAND = "python3 scripts/amalgamate.py"
 
@@ -28,6 +30,14 @@ HEADER = f"""\
 // bsc - Basic Statecharts, single-header distribution.
 // Generated from include/bsc/bsc.hpp by `{COMMAND}`.
 // Do not edit: change the headers under include/ and regenerate.
+"""
+
+VERIFY_HEADER = f"""\
+#pragma once
+// bsc::verify - the state-space explorer, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/verify.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
 """
 
 
@@ -70,12 +80,16 @@ def inline(path: Path, seen: set[Path], out: list[str]) -> None:
     out.append(f"// end {relative(path)}\n")
 
 
-def amalgamate() -> str:
+def amalgamate() -> tuple[str, str]:
+    """The single header, and the explorer's header that includes it."""
     if not ENTRY.is_file():
         raise SystemExit(f"missing entry header {relative(ENTRY)}")
+    seen: set[Path] = set()
     out = [HEADER]
-    inline(ENTRY.resolve(), set(), out)
-    return "".join(out)
+    inline(ENTRY.resolve(), seen, out)
+    verify = [VERIFY_HEADER]
+    inline(VERIFY_ENTRY.resolve(), seen, verify)
+    return "".join(out), "".join(verify)
 
 
 def check(content: str, output: Path) -> int:
@@ -109,11 +123,13 @@ def main() -> int:
                         help="exit 1 if the output file differs from a fresh amalgamation")
     args = parser.parse_args()
 
-    content = amalgamate()
+    content, verify = amalgamate()
+    outputs = [(content, args.output), (verify, args.output.parent / "verify.hpp")]
     if args.check:
-        return check(content, args.output)
-    args.output.parent.mkdir(parents=True, exist_ok=True)
-    args.output.write_text(content, encoding="utf-8", newline="\n")
+        return max(check(text, path) for text, path in outputs)
+    for text, path in outputs:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text, encoding="utf-8", newline="\n")
     return 0
 
 

@@ -1,0 +1,779 @@
+#pragma once
+// bsc::verify - the state-space explorer, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/verify.hpp by `python3 scripts/amalgamate.py`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+// begin include/bsc/verify.hpp
+// bsc::verify: exhaustive exploration of closed models of bsc machines, and the properties
+// checked on it. Not included by <bsc/bsc.hpp>: it uses the heap and the standard library's
+// strings and vectors, which the machines themselves never need.
+
+// begin include/bsc/verify/codec.hpp
+// Fixed-size byte encodings of explored states: a machine's configuration bytes, its context
+// member by member (no hand-written code for plain aggregates), and time made relative to the
+// machine's clock and counted in cycles, capped where more time changes nothing. Two states
+// with equal encodings behave the same.
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+
+namespace bsc::verify::detail {
+
+using bsc::detail::machine_access;
+using bsc::detail::timer_access;
+
+template <class T>
+inline constexpr bool is_machine = false;
+template <class C, class P, class O>
+inline constexpr bool is_machine<bsc::machine<C, P, O>> = true;
+
+template <class T>
+constexpr bool is_aggregate_class() {
+    return std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_base_of_v<bsc::detail::channel_base, T>;
+}
+
+// Time as the codec sees it: the clock of the enclosing machine and the cycle period
+// (zero for models that never step, where time does not pass).
+struct time_frame {
+    duration clock{};
+    duration period{};
+    constexpr std::uint16_t cycles(duration d, duration cap) const {
+        if (period <= duration::zero() || d <= duration::zero()) return 0;
+        auto const capped = std::min(d, cap + period);
+        return static_cast<std::uint16_t>(capped / period);
+    }
+};
+
+template <class T>
+constexpr std::size_t encoded_size();
+
+template <class Tuple>
+struct fields_size;
+template <class... F>
+struct fields_size<std::tuple<F&...>> {
+    static constexpr std::size_t value = (std::size_t{0} + ... + encoded_size<std::remove_cv_t<F>>());
+};
+
+template <class T>
+constexpr std::size_t encoded_size() {
+    if constexpr (is_machine<T>) {
+        using ctx = typename T::context_type;
+        return (std::is_empty_v<typename T::configuration_type> ? 0 : sizeof(typename T::configuration_type)) +
+               encoded_size<ctx>() +
+               2 * std::tuple_size_v<std::remove_reference_t<decltype(machine_access::armed(std::declval<T&>()))>>;
+    } else if constexpr (std::is_same_v<T, timer>) {
+        return 4;
+    } else if constexpr (is_aggregate_class<T>()) {
+        return fields_size<decltype(bsc::detail::tie_fields(std::declval<T&>()))>::value;
+    } else {
+        static_assert(std::is_trivially_copyable_v<T>,
+                      "bsc: the explorer encodes scalars, enums, channels, timers, machines and aggregates of "
+                      "them; this member type is none of those");
+        return sizeof(T);
+    }
+}
+
+template <class T>
+void encode(T const& value, std::byte*& out, time_frame frame);
+template <class T>
+void decode(T& value, std::byte const*& in, time_frame frame);
+
+inline void put16(std::byte*& out, std::uint16_t v) {
+    std::memcpy(out, &v, 2);
+    out += 2;
+}
+inline std::uint16_t get16(std::byte const*& in) {
+    std::uint16_t v;
+    std::memcpy(&v, in, 2);
+    in += 2;
+    return v;
+}
+
+template <class T>
+void encode(T const& value, std::byte*& out, time_frame frame) {
+    if constexpr (is_machine<T>) {
+        auto& m = const_cast<T&>(value);
+        auto const cfg = machine_access::canonical_configuration(m);
+        if constexpr (!std::is_empty_v<std::remove_cvref_t<decltype(cfg)>>) {
+            std::memcpy(out, cfg.active.data(), cfg.active.size());
+            out += cfg.active.size();
+        }
+        time_frame const own{machine_access::clock(m), frame.period};
+        encode(m.context(), out, own);
+        auto const& armed = machine_access::armed(m);
+        for (std::size_t i = 0; i < armed.size(); ++i)
+            put16(out, machine_access::timeout_armed(m, i)
+                           ? own.cycles(own.clock - armed[i], machine_access::longest_timeout(m))
+                           : 0);
+    } else if constexpr (std::is_same_v<T, timer>) {
+        *out++ = static_cast<std::byte>(timer_access::phase(value));
+        *out++ = static_cast<std::byte>(value.expired());
+        bool const timing = timer_access::phase(value) == 2;  // running, expired or not
+        put16(out, timing ? frame.cycles(frame.clock - timer_access::started(value), value.limit()) : 0);
+    } else if constexpr (is_aggregate_class<T>()) {
+        bsc::detail::for_each_field(value, [&](auto const& field) { encode(field, out, frame); });
+    } else {
+        std::memcpy(out, &value, sizeof(T));
+        out += sizeof(T);
+    }
+}
+
+template <class T>
+void decode(T& value, std::byte const*& in, time_frame frame) {
+    if constexpr (is_machine<T>) {
+        auto& cfg = machine_access::configuration(value);
+        if constexpr (!std::is_empty_v<std::remove_cvref_t<decltype(cfg)>>) {
+            std::memcpy(cfg.active.data(), in, cfg.active.size());
+            in += cfg.active.size();
+        }
+        machine_access::clock(value) = frame.clock;
+        decode(value.context(), in, frame);
+        for (auto& armed : machine_access::armed(value)) armed = frame.clock - get16(in) * frame.period;
+    } else if constexpr (std::is_same_v<T, timer>) {
+        auto const phase = static_cast<std::uint8_t>(*in++);
+        bool const expired = *in++ != std::byte{0};
+        auto const elapsed = get16(in) * frame.period;
+        timer_access::set(value, phase, expired, frame.clock - elapsed, elapsed);
+    } else if constexpr (is_aggregate_class<T>()) {
+        bsc::detail::for_each_field(value, [&](auto& field) { decode(field, in, frame); });
+    } else {
+        std::memcpy(&value, in, sizeof(T));
+        in += sizeof(T);
+    }
+}
+
+}  // namespace bsc::verify::detail
+// end include/bsc/verify/codec.hpp
+// begin include/bsc/verify/coverage.hpp
+// Coverage of a chart by the explored state space: the states never active in any reachable
+// state and the transition rows never fired on any explored step. Unlike the static checks,
+// this accounts for guards and data: a row whose guard can never hold is reported here.
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+// begin include/bsc/verify/explorer.hpp
+// bsc::verify::explorer: breadth-first exploration of every state a closed model can reach.
+// States are stored once, as fixed-size byte keys in one arena (the BFS queue itself), found
+// again through an open-addressing hash table of indices; the graph is kept as compact
+// adjacency arrays, so properties are checked after exploration without re-running the model.
+// Breadth-first order makes every counterexample a shortest one.
+//
+// A model provides:
+//   using state = ...;                                   // copyable
+//   static constexpr std::size_t key_size;               // bytes of encode()
+//   state initial() const;
+//   void encode(state const&, std::byte* out) const;
+//   state decode(std::byte const* in) const;
+//   void successors(state const&, F&& emit) const;       // emit(std::uint16_t label, state const&)
+//   std::string label(std::uint16_t) const;              // for traces
+//   std::string describe(state const&) const;            // for traces: the configuration by name
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace bsc::verify {
+
+/// Bounds that stop exploration with a report instead of exhausting the machine.
+struct limits {
+    std::size_t max_states = 20'000'000;
+    std::size_t max_memory_bytes = std::size_t{8} << 30;
+};
+
+/// What an exploration did.
+struct statistics {
+    std::size_t states = 0;
+    std::size_t transitions = 0;  ///< edges of the state graph (successors, duplicates included)
+    std::size_t depth = 0;        ///< breadth-first levels: the longest shortest path
+    double seconds = 0;
+    std::size_t memory_bytes = 0;  ///< held by the explorer at the end
+    std::size_t key_bytes = 0;     ///< bytes stored per state for its encoding
+    bool complete = false;         ///< false if a bound stopped exploration
+    std::string stopped_by;        ///< which bound, if any
+};
+
+template <class Model>
+class explorer {
+public:
+    using state = typename Model::state;
+    static constexpr std::size_t key_size = Model::key_size;
+    static constexpr std::uint32_t none = 0xffffffffu;
+
+    explicit explorer(Model model, limits bounds = {}) : model_(std::move(model)), bounds_(bounds) {}
+
+    /// Explores every reachable state (once; later calls return the same figures).
+    statistics const& run() {
+        if (ran_) return stats_;
+        ran_ = true;
+        auto const start = std::chrono::steady_clock::now();
+        table_.assign(1u << 16, none);
+        std::vector<std::byte> scratch(key_size);
+        state const init = model_.initial();
+        model_.encode(init, scratch.data());
+        insert(scratch.data(), none, 0, 0);
+        std::size_t level_end = 1;
+        for (std::size_t i = 0; i < count(); ++i) {
+            if (i == level_end) {
+                ++stats_.depth;
+                level_end = count();
+            }
+            if (!within_bounds()) break;
+            edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
+            state const s = model_.decode(key(i));
+            model_.successors(s, [&](std::uint16_t label, state const& next) {
+                model_.encode(next, scratch.data());
+                std::uint32_t const j = insert(scratch.data(), static_cast<std::uint32_t>(i), label, depth_[i] + 1u);
+                edge_to_.push_back(j);
+                edge_label_.push_back(label);
+            });
+        }
+        stats_.complete = stats_.stopped_by.empty();
+        while (edge_begin_.size() < count()) edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
+        edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
+        stats_.states = count();
+        stats_.transitions = edge_to_.size();
+        stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats_.memory_bytes = memory();
+        stats_.key_bytes = key_size;
+        return stats_;
+    }
+
+    statistics const& stats() const { return stats_; }
+    std::size_t count() const { return keys_.size() / key_size; }
+    state at(std::size_t i) const { return model_.decode(key(i)); }
+    Model const& model() const { return model_; }
+
+    // The graph, for property checks.
+    std::uint32_t edges_begin(std::size_t i) const { return edge_begin_[i]; }
+    std::uint32_t edges_end(std::size_t i) const { return edge_begin_[i + 1]; }
+    std::uint32_t edge_target(std::size_t e) const { return edge_to_[e]; }
+    std::uint16_t edge_label(std::size_t e) const { return edge_label_[e]; }
+    std::uint32_t parent(std::size_t i) const { return parent_[i]; }
+    std::uint16_t parent_label(std::size_t i) const { return via_[i]; }
+
+private:
+    std::byte const* key(std::size_t i) const { return keys_.data() + i * key_size; }
+
+    static std::uint64_t hash(std::byte const* k) {
+        std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a, then a final mix
+        for (std::size_t i = 0; i < key_size; ++i) h = (h ^ static_cast<std::uint64_t>(k[i])) * 0x100000001b3ull;
+        h ^= h >> 32;
+        return h * 0x9e3779b97f4a7c15ull;
+    }
+
+    std::uint32_t insert(std::byte const* k, std::uint32_t from, std::uint16_t label, std::uint32_t depth) {
+        if ((count() + 1) * 2 > table_.size()) grow();
+        std::size_t const mask = table_.size() - 1;
+        for (std::size_t slot = hash(k) & mask;; slot = (slot + 1) & mask) {
+            std::uint32_t const at = table_[slot];
+            if (at == none) {
+                auto const index = static_cast<std::uint32_t>(count());
+                table_[slot] = index;
+                keys_.insert(keys_.end(), k, k + key_size);
+                parent_.push_back(from);
+                via_.push_back(label);
+                depth_.push_back(depth);
+                return index;
+            }
+            if (std::memcmp(key(at), k, key_size) == 0) return at;
+        }
+    }
+
+    void grow() {
+        std::vector<std::uint32_t> bigger(table_.size() * 2, none);
+        std::size_t const mask = bigger.size() - 1;
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            std::size_t slot = hash(key(i)) & mask;
+            while (bigger[slot] != none) slot = (slot + 1) & mask;
+            bigger[slot] = i;
+        }
+        table_.swap(bigger);
+    }
+
+    std::size_t memory() const {
+        return keys_.capacity() + table_.capacity() * 4 + parent_.capacity() * 4 + via_.capacity() * 2 +
+               depth_.capacity() * 4 + edge_begin_.capacity() * 4 + edge_to_.capacity() * 4 +
+               edge_label_.capacity() * 2;
+    }
+
+    bool within_bounds() {
+        if (count() > bounds_.max_states) {
+            stats_.stopped_by = "max_states (" + std::to_string(bounds_.max_states) + ")";
+            return false;
+        }
+        if (memory() > bounds_.max_memory_bytes) {
+            stats_.stopped_by = "max_memory_bytes (" + std::to_string(bounds_.max_memory_bytes) + ")";
+            return false;
+        }
+        return true;
+    }
+
+    Model model_;
+    limits bounds_;
+    statistics stats_;
+    bool ran_ = false;
+    std::vector<std::byte> keys_;
+    std::vector<std::uint32_t> table_;
+    std::vector<std::uint32_t> parent_;
+    std::vector<std::uint16_t> via_;
+    std::vector<std::uint32_t> depth_;
+    std::vector<std::uint32_t> edge_begin_;
+    std::vector<std::uint32_t> edge_to_;
+    std::vector<std::uint16_t> edge_label_;
+};
+
+}  // namespace bsc::verify
+// end include/bsc/verify/explorer.hpp
+
+namespace bsc::verify {
+
+/// An observer that records which rows fire. Give it to the explored machine:
+/// `bsc::machine<decltype(chart), bsc::default_policy, bsc::verify::row_recorder>`; copies of
+/// the machine share the record.
+struct row_recorder {
+    std::vector<bool>* fired = nullptr;
+    void on_row(int row) {
+        if (fired && static_cast<std::size_t>(row) < fired->size()) (*fired)[static_cast<std::size_t>(row)] = true;
+    }
+};
+
+struct coverage_report {
+    std::vector<std::string> dead_states;       ///< never active in an explored state
+    std::vector<std::string> dead_transitions;  ///< never fired on an explored step
+    bool complete() const { return dead_states.empty() && dead_transitions.empty(); }
+    std::string to_string() const {
+        std::string out;
+        for (auto const& s : dead_states) out += "never active: " + s + '\n';
+        for (auto const& t : dead_transitions) out += "never fired: " + t + '\n';
+        return out.empty() ? "every state and transition is exercised\n" : out;
+    }
+};
+
+namespace detail {
+template <class Row>
+std::string trigger_name() {
+    if constexpr (bsc::detail::is_timeout_row<Row>)
+        return "after";
+    else if constexpr (std::is_void_v<typename bsc::detail::trigger_event<Row>::type>)
+        return "[eventless]";
+    else
+        return std::string(name_of<typename bsc::detail::trigger_event<Row>::type>);
+}
+}  // namespace detail
+
+/// "Source + event -> Target" (or "Source + event (internal)") for each transition row of a
+/// chart, by position in make_chart; empty for entry and exit rows.
+template <class Chart>
+std::vector<std::string> row_names() {
+    using an = bsc::detail::analysis<std::remove_cv_t<Chart>>;
+    std::vector<std::string> names(static_cast<std::size_t>(an::R));
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (
+            [&] {
+                using R = typename an::template row_at<static_cast<int>(I)>;
+                if constexpr (bsc::detail::is_transition_row<R>) {
+                    std::string n = std::string(name_of<typename R::source>) + " + " + detail::trigger_name<R>();
+                    if constexpr (std::is_same_v<typename R::target, bsc::detail::no_target>)
+                        n += " (internal)";
+                    else
+                        n += " -> " + std::string(name_of<typename R::target>);
+                    names[I] = n;
+                }
+            }(),
+            ...);
+    }(std::make_index_sequence<static_cast<std::size_t>(an::R)>{});
+    return names;
+}
+
+/// Coverage of the chart of the machines that `get(state)` returns, over an explorer that
+/// has run with a row_recorder writing to `fired`.
+template <class Model, class Get>
+coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired, Get get) {
+    ex.run();
+    using machine_type = std::remove_cvref_t<decltype(get(ex.at(0)))>;
+    using chart = typename machine_type::chart_type;
+    using an = bsc::detail::analysis<chart>;
+    std::vector<bool> seen(static_cast<std::size_t>(an::N), false);
+    for (std::size_t i = 0; i < ex.count(); ++i) {
+        auto const s = ex.at(i);
+        auto const active = bsc::detail::machine_access::active_flags(get(s));
+        for (std::size_t k = 0; k < active.size(); ++k) seen[k] = seen[k] || active[k];
+    }
+    coverage_report report;
+    constexpr auto names = []<class... Tags>(bsc::detail::type_list<Tags...>) {
+        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
+    }(typename an::tags{});
+    for (std::size_t k = 1; k < seen.size(); ++k)
+        if (!seen[k]) report.dead_states.emplace_back(names[k]);
+    auto const rows = row_names<chart>();
+    for (std::size_t r = 0; r < rows.size(); ++r)
+        if (!rows[r].empty() && (r >= fired.size() || !fired[r])) report.dead_transitions.push_back(rows[r]);
+    return report;
+}
+
+/// Coverage for models whose state is the machine itself.
+template <class Model>
+coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired) {
+    return coverage(ex, fired, [](auto const& m) -> auto const& { return m; });
+}
+
+}  // namespace bsc::verify
+// end include/bsc/verify/coverage.hpp
+// begin include/bsc/verify/models.hpp
+// Closed models of bsc machines for the explorer:
+//  - event_model: a machine to which every listed event is offered in every state;
+//  - cycle_model: a machine stepped with a fixed period, its inputs drawn each cycle from
+//    a finite set of choices the user declares;
+//  - system_model: any aggregate of machines and plant models, stepped by a user function
+//    with a finite set of choices per cycle (the closed loop of seeds 002 and 003).
+// Time is made relative: every explored state is decoded with its machines' clocks at the
+// same origin, so states that differ only in absolute time are one state.
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+
+
+namespace bsc::verify {
+
+namespace detail {
+// The clock every explored state is decoded at; far enough from zero that relative times fit.
+inline constexpr duration origin = std::chrono::hours{1};
+
+template <class T>
+struct codec {
+    static constexpr std::size_t key_size = encoded_size<T>();
+    duration period{};
+    void encode(T const& s, std::byte* out) const { detail::encode(s, out, time_frame{origin + period, period}); }
+    T decode(T prototype, std::byte const* in) const {
+        detail::decode(prototype, in, time_frame{origin, period});
+        return prototype;
+    }
+};
+}  // namespace detail
+
+/// Offers each of the events Es... to the machine in every state (dispatch).
+template <class Machine, class... Es>
+class event_model {
+public:
+    using state = Machine;
+    static constexpr std::size_t key_size = detail::codec<Machine>::key_size;
+
+    explicit event_model(Machine initial) : initial_(std::move(initial)) {}
+
+    state initial() const { return initial_; }
+    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
+    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
+    template <class Emit>
+    void successors(state const& s, Emit&& emit) const {
+        std::uint16_t label = 0;
+        (
+            [&] {
+                state next = s;
+                next.dispatch(Es{});
+                emit(label++, next);
+            }(),
+            ...);
+    }
+    std::string label(std::uint16_t i) const {
+        constexpr std::string_view names[] = {name_of<Es>...};
+        return std::string(names[i]);
+    }
+    std::string describe(state const& s) const { return s.active_states().joined(); }
+
+private:
+    Machine initial_;
+    detail::codec<Machine> codec_{};
+};
+
+/// Steps the machine with a fixed period; before each cycle, `apply(context, choice)` sets the
+/// inputs for one of `choices` alternatives, and every alternative is explored.
+template <class Machine, class Apply>
+class cycle_model {
+public:
+    using state = Machine;
+    static constexpr std::size_t key_size = detail::codec<Machine>::key_size;
+
+    cycle_model(Machine initial, duration period, std::size_t choices, Apply apply)
+        : initial_(std::move(initial)), choices_(choices), apply_(std::move(apply)), codec_{period} {}
+
+    state initial() const { return initial_; }
+    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
+    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
+    template <class Emit>
+    void successors(state const& s, Emit&& emit) const {
+        for (std::size_t c = 0; c < choices_; ++c) {
+            state next = s;
+            apply_(next.context(), c);
+            next.step(detail::origin + codec_.period);
+            emit(static_cast<std::uint16_t>(c), next);
+        }
+    }
+    std::string label(std::uint16_t i) const { return "cycle, inputs #" + std::to_string(i); }
+    std::string describe(state const& s) const { return s.active_states().joined(); }
+
+private:
+    Machine initial_;
+    std::size_t choices_;
+    Apply apply_;
+    detail::codec<Machine> codec_;
+};
+
+/// A closed system: an aggregate `System` of machines and plant data, advanced by
+/// `step(system, choice, now)` for each of `choices` alternatives per cycle. `describe`
+/// names a system state for traces; `label(choice)` names an alternative.
+template <class System, class Step, class Describe, class Label>
+class system_model {
+public:
+    using state = System;
+    static constexpr std::size_t key_size = detail::codec<System>::key_size;
+
+    system_model(System initial, duration period, std::size_t choices, Step step, Describe describe, Label label)
+        : initial_(std::move(initial)),
+          choices_(choices),
+          step_(std::move(step)),
+          describe_(std::move(describe)),
+          label_(std::move(label)),
+          codec_{period} {}
+
+    state initial() const { return initial_; }
+    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
+    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
+    template <class Emit>
+    void successors(state const& s, Emit&& emit) const {
+        for (std::size_t c = 0; c < choices_; ++c) {
+            state next = s;
+            step_(next, c, detail::origin + codec_.period);
+            emit(static_cast<std::uint16_t>(c), next);
+        }
+    }
+    std::string label(std::uint16_t i) const { return label_(i); }
+    std::string describe(state const& s) const { return describe_(s); }
+
+private:
+    System initial_;
+    std::size_t choices_;
+    Step step_;
+    Describe describe_;
+    Label label_;
+    detail::codec<System> codec_;
+};
+
+}  // namespace bsc::verify
+// end include/bsc/verify/models.hpp
+// begin include/bsc/verify/properties.hpp
+// Properties checked on an explored state graph, each with a verdict and, when it fails, a
+// shortest counterexample in the chart's own names: deadlock freedom, invariants (A[] p),
+// reachability (E<> p), reinitiability and leads-to (p --> q).
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+
+namespace bsc::verify {
+
+/// One step of a trace: what was applied (an event, an input choice) and the configuration after.
+struct trace_step {
+    std::string label;
+    std::string configuration;
+};
+
+/// The outcome of one property.
+struct verdict {
+    enum class status { holds, fails, inconclusive };
+    std::string property;
+    status result = status::inconclusive;
+    std::vector<trace_step> trace;  ///< counterexample (or witness, for reachability)
+    std::string detail;             ///< e.g. where a leads-to counterexample starts to loop
+
+    bool holds() const { return result == status::holds; }
+    bool fails() const { return result == status::fails; }
+
+    /// A readable report: the verdict, then the trace one step per line.
+    std::string to_string() const {
+        std::string out = property + ": " +
+                          (result == status::holds ? "holds" : result == status::fails ? "FAILS" : "inconclusive");
+        if (!detail.empty()) out += " (" + detail + ")";
+        out += '\n';
+        for (std::size_t i = 0; i < trace.size(); ++i)
+            out += "  " + std::to_string(i) + ". " + trace[i].label + " -> " + trace[i].configuration + '\n';
+        return out;
+    }
+};
+
+namespace detail {
+
+template <class Model>
+void append_step(explorer<Model> const& ex, std::vector<trace_step>& out, std::string label, std::size_t i) {
+    out.push_back({std::move(label), ex.model().describe(ex.at(i))});
+}
+
+// The shortest path from the initial state to state i (breadth-first tree).
+template <class Model>
+std::vector<trace_step> path_to(explorer<Model> const& ex, std::size_t i) {
+    std::vector<std::size_t> chain;
+    for (std::size_t s = i; s != explorer<Model>::none; s = ex.parent(s)) chain.push_back(s);
+    std::vector<trace_step> out;
+    for (std::size_t k = chain.size(); k-- > 0;) {
+        std::size_t const s = chain[k];
+        append_step(ex, out, k + 1 == chain.size() ? "(initial)" : ex.model().label(ex.parent_label(s)), s);
+    }
+    return out;
+}
+
+template <class Model>
+verdict incomplete(explorer<Model> const& ex, std::string property) {
+    verdict v{std::move(property), verdict::status::inconclusive, {}, "exploration stopped by " + ex.stats().stopped_by};
+    return v;
+}
+
+}  // namespace detail
+
+/// A[] p: p holds in every reachable state. `p` takes the model's state.
+template <class Model, class Pred>
+verdict always(explorer<Model>& ex, std::string name, Pred p) {
+    ex.run();
+    for (std::size_t i = 0; i < ex.count(); ++i)
+        if (!p(ex.at(i))) return {"A[] " + name, verdict::status::fails, detail::path_to(ex, i), {}};
+    if (!ex.stats().complete) return detail::incomplete(ex, "A[] " + name);
+    return {"A[] " + name, verdict::status::holds, {}, {}};
+}
+
+/// E<> p: some reachable state satisfies p; the trace is a shortest witness.
+template <class Model, class Pred>
+verdict reachable(explorer<Model>& ex, std::string name, Pred p) {
+    ex.run();
+    for (std::size_t i = 0; i < ex.count(); ++i)
+        if (p(ex.at(i))) return {"E<> " + name, verdict::status::holds, detail::path_to(ex, i), {}};
+    if (!ex.stats().complete) return detail::incomplete(ex, "E<> " + name);
+    return {"E<> " + name, verdict::status::fails, {}, {}};
+}
+
+/// Every reachable state has a successor other than itself, unless `is_final` holds in it.
+template <class Model, class Final>
+verdict deadlock_free(explorer<Model>& ex, Final is_final) {
+    ex.run();
+    std::string const name = "deadlock freedom";
+    for (std::size_t i = 0; i < ex.count(); ++i) {
+        bool moves = false;
+        for (auto e = ex.edges_begin(i); e < ex.edges_end(i) && !moves; ++e) moves = ex.edge_target(e) != i;
+        if (!moves && !is_final(ex.at(i)) && (ex.stats().complete || ex.edges_end(i) > ex.edges_begin(i)))
+            return {name, verdict::status::fails, detail::path_to(ex, i), "no successor but itself"};
+    }
+    if (!ex.stats().complete) return detail::incomplete(ex, name);
+    return {name, verdict::status::holds, {}, {}};
+}
+
+template <class Model>
+verdict deadlock_free(explorer<Model>& ex) {
+    return deadlock_free(ex, [](auto const&) { return false; });
+}
+
+/// The initial state is reachable from every reachable state (seed 002's reinitiability).
+template <class Model>
+verdict reinitiable(explorer<Model>& ex) {
+    ex.run();
+    std::string const name = "reinitiability";
+    if (!ex.stats().complete) return detail::incomplete(ex, name);
+    std::size_t const n = ex.count();
+    // Reverse adjacency, then a backward search from the initial state.
+    std::vector<std::uint32_t> begin(n + 1, 0), from(ex.stats().transitions);
+    for (std::size_t i = 0; i < n; ++i)
+        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e) ++begin[ex.edge_target(e) + 1];
+    for (std::size_t i = 0; i < n; ++i) begin[i + 1] += begin[i];
+    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e)
+            from[fill[ex.edge_target(e)]++] = static_cast<std::uint32_t>(i);
+    std::vector<bool> back(n, false);
+    std::vector<std::uint32_t> queue{0};
+    back[0] = true;
+    for (std::size_t k = 0; k < queue.size(); ++k)
+        for (auto e = begin[queue[k]]; e < begin[queue[k] + 1]; ++e)
+            if (!back[from[e]]) {
+                back[from[e]] = true;
+                queue.push_back(from[e]);
+            }
+    for (std::size_t i = 0; i < n; ++i)
+        if (!back[i]) return {name, verdict::status::fails, detail::path_to(ex, i), "the initial state is unreachable from the last state"};
+    return {name, verdict::status::holds, {}, {}};
+}
+
+/// p --> q: from every reachable p-state, every path reaches a q-state. No fairness is
+/// assumed: a cycle of non-q states, or a deadlock, after a p-state is a counterexample
+/// (the trace ends where the loop closes).
+template <class Model, class P, class Q>
+verdict leads_to(explorer<Model>& ex, std::string name, P p, Q q) {
+    ex.run();
+    name = name.empty() ? "p --> q" : name;
+    if (!ex.stats().complete) return detail::incomplete(ex, name);
+    std::size_t const n = ex.count();
+    std::vector<char> is_q(n), is_p(n), sure(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        auto const s = ex.at(i);
+        is_q[i] = q(s);
+        is_p[i] = p(s);
+    }
+    // sure[i]: every path from i reaches q. Least fixpoint, iterated to stability.
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (sure[i]) continue;
+            bool all = is_q[i] != 0;
+            if (!all && ex.edges_end(i) > ex.edges_begin(i)) {
+                all = true;
+                for (auto e = ex.edges_begin(i); e < ex.edges_end(i) && all; ++e) all = sure[ex.edge_target(e)] != 0;
+            }
+            if (all) sure[i] = changed = true;
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!is_p[i] || sure[i]) continue;
+        auto trace = detail::path_to(ex, i);
+        // Continue through states that can avoid q until one repeats or nothing follows.
+        std::vector<char> seen(n, 0);
+        std::size_t s = i;
+        seen[s] = 1;
+        std::string how = "no successor";
+        for (;;) {
+            std::size_t next = n;
+            std::uint16_t label = 0;
+            for (auto e = ex.edges_begin(s); e < ex.edges_end(s); ++e)
+                if (!sure[ex.edge_target(e)]) {
+                    next = ex.edge_target(e);
+                    label = ex.edge_label(e);
+                    break;
+                }
+            if (next == n) break;
+            detail::append_step(ex, trace, ex.model().label(label), next);
+            if (seen[next]) {
+                how = "loops without reaching q";
+                break;
+            }
+            seen[next] = 1;
+            s = next;
+        }
+        return {name, verdict::status::fails, std::move(trace),
+                "from step " + std::to_string(detail::path_to(ex, i).size() - 1) + ": " + how};
+    }
+    return {name, verdict::status::holds, {}, {}};
+}
+
+}  // namespace bsc::verify
+// end include/bsc/verify/properties.hpp
+// end include/bsc/verify.hpp
