@@ -9,6 +9,7 @@
 // bsc::make_chart: a chart is its state tree and its rows, checked when it is declared.
 
 #include <boost/hana/basic_tuple.hpp>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -1746,6 +1747,23 @@ struct root_must_be_composite {
 }  // namespace bsc::error
 
 namespace bsc::detail {
+template <class... Rows>
+struct row_group {
+    std::tuple<Rows...> rows;
+};
+template <class A>
+inline constexpr bool is_row_group = false;
+template <class... Rows>
+inline constexpr bool is_row_group<row_group<Rows...>> = true;
+
+template <class A>
+constexpr auto row_tuple(A a) {
+    if constexpr (is_row_group<A>)
+        return a.rows;
+    else
+        return std::tuple<A>{std::move(a)};
+}
+
 template <class Root>
 constexpr bool is_compound_root() {
     if constexpr (is_node<Root>)
@@ -1770,9 +1788,21 @@ struct chart {
 /// Declares a chart: first the state tree, then the rows (transitions, entry and exit actions).
 /// The static checks run here; a malformed chart fails to compile with an error that names
 /// the offending state (see docs/checks.md).
+/// Groups rows so that a set of rules can be defined once and reused in several charts:
+/// `inline constexpr auto pause_rules = bsc::rows(row1, row2);` then
+/// `bsc::make_chart<C>(tree, base_rules, pause_rules, row3)`. Groups may nest.
+template <class... Rows>
+constexpr auto rows(Rows... rows) {
+    return std::apply([](auto... r) { return detail::row_group<decltype(r)...>{{std::move(r)...}}; },
+                      std::tuple_cat(detail::row_tuple(std::move(rows))...));
+}
+
 template <class Context, class Root, class... Rows>
-constexpr auto make_chart(Root, Rows... rows) {
-    if constexpr (!detail::is_compound_root<Root>()) {
+constexpr auto make_chart(Root root, Rows... rows) {
+    if constexpr ((detail::is_row_group<Rows> || ...)) {
+        return std::apply([&](auto... r) { return make_chart<Context>(root, std::move(r)...); },
+                          std::tuple_cat(detail::row_tuple(std::move(rows))...));
+    } else if constexpr (!detail::is_compound_root<Root>()) {
         static_assert(error::root_must_be_composite<Root>::value);
         return 0;
     } else if constexpr (!(detail::is_row<Rows> && ...)) {
@@ -2995,8 +3025,6 @@ private:
                                        state_tag<typename R::target>>;
         if constexpr (detail::observes_transition<Observer, src, dst, E>)
             observer_.on_transition(src{}, dst{}, e);
-        if constexpr (detail::observes_rows<Observer>)
-            observer_.on_row(Row);
         if constexpr (detail::observes_rows<Observer>)
             observer_.on_row(Row);
         row<Row>().action(context_, e, queue_);

@@ -40,6 +40,14 @@ struct partial {  // only one hook: the others are not required
     int exits = 0;
     void on_exit(auto) { ++exits; }
 };
+struct row_log {  // on_row: the position of the fired row in make_chart's arguments
+    int calls = 0;
+    int last = -1;
+    void on_row(int row) {
+        ++calls;
+        last = row;
+    }
+};
 }  // namespace mt
 
 TEST_CASE("the active configuration takes one byte per composite state") {
@@ -93,6 +101,13 @@ TEST_CASE("observers see entries, exits and transitions in order; a machine with
     bsc::machine<decltype(mt::chart), bsc::default_policy, partial> p{mt::chart, mt::counter{}, partial{}};
     p.dispatch(mt::go{});
     CHECK(p.observer().exits == 1);
+    bsc::machine<decltype(mt::chart), bsc::default_policy, mt::row_log> r{mt::chart, mt::counter{}, mt::row_log{}};
+    r.dispatch(mt::go{});  // A1 -> A2, the first row
+    CHECK(r.observer().calls == 1);
+    CHECK(r.observer().last == 0);
+    r.dispatch(mt::go{});  // A2 -> B, the second
+    CHECK(r.observer().calls == 2);
+    CHECK(r.observer().last == 1);
     CHECK(sizeof(bsc::machine<decltype(mt::chart)>) ==
           sizeof(bsc::machine<decltype(mt::chart), bsc::default_policy, bsc::no_observer>));
 }
@@ -146,4 +161,27 @@ TEST_CASE("dispatch with allow_unhandled accepts an event no transition handles,
     bsc::machine m{mt::chart, mt::counter{}};
     CHECK(m.dispatch(stranger{}, bsc::allow_unhandled) == bsc::outcome::ignored);
     CHECK(m.is<mt::A1>());
+}
+
+namespace mt {
+// Rules defined once and reused: two charts share a group of rows.
+inline constexpr auto common_rules = bsc::rows(bsc::state<A> + bsc::event<go> = bsc::state<B>,
+                                               bsc::rows(bsc::state<B> + bsc::event<back> = bsc::state<A>));
+inline constexpr auto base = bsc::make_chart<counter>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+                                                      common_rules);
+inline constexpr auto extended = bsc::make_chart<counter>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), common_rules,
+    bsc::state<B> + bsc::event<go> / [](counter& c) { ++c.count; });
+}  // namespace mt
+
+TEST_CASE("groups of rows (bsc::rows) are flattened into the chart, so rules can be shared") {
+    bsc::machine b{mt::base, mt::counter{}};
+    bsc::machine e{mt::extended, mt::counter{}};
+    b.dispatch(mt::go{});
+    e.dispatch(mt::go{});
+    CHECK(b.dispatch(mt::go{}) == bsc::outcome::ignored);
+    CHECK(e.dispatch(mt::go{}) == bsc::outcome::consumed);
+    CHECK(e.context().count == 1);
+    CHECK(b.dispatch(mt::back{}) == bsc::outcome::consumed);
+    CHECK(b.is<mt::A>());
 }

@@ -408,8 +408,6 @@ private:
             observer_.on_transition(src{}, dst{}, e);
         if constexpr (detail::observes_rows<Observer>)
             observer_.on_row(Row);
-        if constexpr (detail::observes_rows<Observer>)
-            observer_.on_row(Row);
         row<Row>().action(context_, e, queue_);
     }
 
