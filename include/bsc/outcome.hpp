@@ -24,6 +24,17 @@ struct default_policy {
     static constexpr std::size_t max_eventless_steps = 64;
     /// Internal events processed within one dispatch before it reports a livelock.
     static constexpr std::size_t max_internal_events = 256;
+    /// true (SCXML): construction and dispatch take eventless transitions until none is
+    /// enabled. false (BSC scan): eventless transitions are taken only by step(), at most one
+    /// per component per cycle.
+    static constexpr bool settle_eventless = true;
+};
+
+/// The limits of a machine driven by BSC execution cycles (seed 002): eventless transitions
+/// are condition-driven and run only in step(), so a chart whose components keep reacting to
+/// each other (a PLC scan loop) neither livelocks at construction nor in dispatch.
+struct scan_policy : default_policy {
+    static constexpr bool settle_eventless = false;
 };
 
 /// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition

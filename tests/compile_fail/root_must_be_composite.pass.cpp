@@ -5,9 +5,11 @@ namespace cf {
 struct go {};
 struct Root;
 struct Idle;
+struct Busy;
 struct ctx {};
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Idle>);
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+    bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace cf

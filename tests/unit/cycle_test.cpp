@@ -279,3 +279,47 @@ TEST_CASE("events raised in a cycle are processed at its end, before the outputs
     m.dispatch(cyc::kick{});  // back to S, and the eventless S -> T follows at once
     CHECK(m.is<T>());
 }
+
+namespace cyc {
+struct A1;
+struct A2;
+struct B1;
+struct B2;
+struct CA;
+struct CB;
+struct Both;
+struct flags {
+    bool flag = false;
+    int sets = 0;
+};
+inline constexpr auto set_flag = [](flags& c) {
+    c.flag = true;
+    ++c.sets;
+};
+inline constexpr auto clear_flag = [](flags& c) { c.flag = false; };
+inline constexpr auto unset = bsc::guard([](flags const& c) { return !c.flag; });
+inline constexpr auto is_set = bsc::guard([](flags const& c) { return c.flag; });
+// Two components that keep answering each other, as a PLC scan loop does by design.
+inline constexpr auto ping_pong = bsc::make_chart<flags>(
+    bsc::parallel<Both>(bsc::composite<CA>(bsc::initial<A1>, bsc::state<A2>),
+                        bsc::composite<CB>(bsc::initial<B1>, bsc::state<B2>)),
+    bsc::state<A1>[unset] / set_flag = bsc::state<A2>, bsc::state<A2>[unset] / set_flag = bsc::state<A1>,
+    bsc::state<B1>[is_set] / clear_flag = bsc::state<B2>, bsc::state<B2>[is_set] / clear_flag = bsc::state<B1>,
+    bsc::state<Both> + bsc::event<kick> / [](flags& c) { c.sets = 0; });
+}  // namespace cyc
+
+TEST_CASE("with bsc::scan_policy, eventless transitions run only in step, one per component per cycle") {
+    bsc::machine<decltype(cyc::ping_pong), bsc::scan_policy> m{cyc::ping_pong, cyc::flags{}};
+    CHECK(m.last_outcome() == bsc::outcome::ignored);  // construction settles nothing
+    CHECK(m.active_states().joined() == "Both CA A1 CB B1");
+    CHECK(m.dispatch(cyc::kick{}) == bsc::outcome::consumed);  // nor does dispatch
+    CHECK(m.active_states().joined() == "Both CA A1 CB B1");
+    auto const r = m.step(0ms);  // CA sets the flag, CB (after it) sees it and clears it
+    CHECK(r.transitions == 2);
+    CHECK(m.active_states().joined() == "Both CA A2 CB B2");
+    CHECK(m.context().sets == 1);
+
+    // The same chart under the default (SCXML) policy settles at construction, and here never can.
+    bsc::machine settling{cyc::ping_pong, cyc::flags{}};
+    CHECK(settling.last_outcome() == bsc::outcome::livelock);
+}

@@ -675,6 +675,8 @@ private:
     // Settles the machine after a microstep: eventless transitions until none is enabled,
     // then the raised events one by one, each followed by its eventless transitions.
     constexpr outcome finish(bool consumed) {
+        if constexpr (!Policy::settle_eventless)
+            return drain_queue(consumed);
         // The common case, kept inline: nothing raised, and no eventless transition to try.
         if constexpr (!plan::has_trigger(detail::eventless_id))
             if (queue_.empty() && !queue_.overflowed())
