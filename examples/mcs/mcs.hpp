@@ -20,7 +20,7 @@
 //   Figure 12, Entry and Exit columns       the on_entry / on_exit rows, all calling Show
 //   Show                                    mcs::show_entry<S> / mcs::show_exit<S>: they put "+S"
 //                                           or "-S" on the panel's display (mcs::display)
-//   Figure 13 (transition table)            the first transition rows of mcs::chart, one for one
+//   Figure 13 (transition table)            mcs::figure13(cond): its rows one for one
 //   the 13 events (button pushes)           mcs::on_p ... mcs::setup_p; Button::name is the
 //                                           paper's name in capitals ("ON_P", "ESTOP_P"; the
 //                                           paper does not name Handle's: "HND_P")
@@ -184,9 +184,9 @@ inline constexpr auto show_exit = [](panel& p) { p.display.show(bsc::name_of<S>,
 
 // ---- The chart ----------------------------------------------------------------------------------
 
-inline constexpr auto chart = bsc::make_chart<panel>(
-    // Table 1 and Figure 12: the topology, one level per indentation, siblings in Figure 12's
-    // order (Off, Estop, On).
+// Table 1 and Figure 12: the topology, one level per indentation, siblings in Figure 12's
+// order (Off, Estop, On).
+inline constexpr auto tree =
     bsc::composite<MCS>(bsc::initial<Off>,
         bsc::state<Off>,
         bsc::state<Estop>,
@@ -200,8 +200,11 @@ inline constexpr auto chart = bsc::make_chart<panel>(
             // Manual button names its mode, and On's history names the mode it restores.
             bsc::composite<Manual>(bsc::initial<Handle>, bsc::state<Jog>, bsc::state<Rpd>, bsc::state<Zrn>),
             bsc::state<Edit>,
-            bsc::state<Setup>)),
+            bsc::state<Setup>));
 
+// The chart's rows come in groups (bsc::rows), so that the verification tests can build
+// deliberately broken variants from the same parts.
+inline constexpr auto show_rows = bsc::rows(
     // Figure 12, columns Entry and Exit: every state calls Show when entered and when left.
     bsc::state<MCS>    + bsc::on_entry / show_entry<MCS>,    bsc::state<MCS>    + bsc::on_exit / show_exit<MCS>,
     bsc::state<Off>    + bsc::on_entry / show_entry<Off>,    bsc::state<Off>    + bsc::on_exit / show_exit<Off>,
@@ -217,25 +220,33 @@ inline constexpr auto chart = bsc::make_chart<panel>(
     bsc::state<Handle> + bsc::on_entry / show_entry<Handle>, bsc::state<Handle> + bsc::on_exit / show_exit<Handle>,
     bsc::state<Jog>    + bsc::on_entry / show_entry<Jog>,    bsc::state<Jog>    + bsc::on_exit / show_exit<Jog>,
     bsc::state<Rpd>    + bsc::on_entry / show_entry<Rpd>,    bsc::state<Rpd>    + bsc::on_exit / show_exit<Rpd>,
-    bsc::state<Zrn>    + bsc::on_entry / show_entry<Zrn>,    bsc::state<Zrn>    + bsc::on_exit / show_exit<Zrn>,
+    bsc::state<Zrn>    + bsc::on_entry / show_entry<Zrn>,    bsc::state<Zrn>    + bsc::on_exit / show_exit<Zrn>);
 
-    // Figure 13: origin state + event [guard] / action = destination state.
-    bsc::state<Off>   + bsc::event<on_p>                     = bsc::state<On>,
-    bsc::state<Estop> + bsc::event<reset_p> / set_error0     = bsc::state<Estop>,  // external: Show -Estop +Estop
-    bsc::state<Estop> + bsc::event<off_p> [cond]             = bsc::state<Off>,
-    bsc::state<On>    + bsc::event<off_p>                    = bsc::state<Off>,
-    bsc::state<On>    + bsc::event<estop_p> / set_error1     = bsc::state<Estop>,
+/// Figure 13, with its guard `cond` as a parameter (the chart uses mcs::cond).
+template <class Cond>
+constexpr auto figure13(Cond c) {
+    return bsc::rows(
+        // Figure 13: origin state + event [guard] / action = destination state.
+        bsc::state<Off>   + bsc::event<on_p>                     = bsc::state<On>,
+        bsc::state<Estop> + bsc::event<reset_p> / set_error0     = bsc::state<Estop>,  // external: Show -Estop +Estop
+        bsc::state<Estop> + bsc::event<off_p> [c]                = bsc::state<Off>,
+        bsc::state<On>    + bsc::event<off_p>                    = bsc::state<Off>,
+        bsc::state<On>    + bsc::event<estop_p> / set_error1     = bsc::state<Estop>);
+}
 
+inline constexpr auto estop_rows = bsc::rows(
     // Paper silent: the E-stop button acts in every state, not only in On. While Off it latches
     // the stop too, so the machine cannot be switched on before the stop is acknowledged; in
     // Estop after a reset it latches the stop again (without this row a second E-stop pushed
     // after RESET_P would be ignored and OFF_P would then pass cond).
     bsc::state<Off>   + bsc::event<estop_p> / set_error1     = bsc::state<Estop>,
-    bsc::state<Estop> + bsc::event<estop_p> / set_error1     = bsc::state<Estop>,
+    bsc::state<Estop> + bsc::event<estop_p> / set_error1     = bsc::state<Estop>
     // Paper silent, and left without a row, so ignored: ON_P while On or in Estop (from Estop
     // the way back is RESET_P, OFF_P, ON_P), OFF_P while Off, RESET_P outside Estop (there is
     // nothing to reset: the error is 0 whenever the machine is not in Estop).
+);
 
+inline constexpr auto mode_rows = bsc::rows(
     // The mode buttons (section 4: "when the machine is working in MEM mode and the MDI mode
     // button is pushed, the machine will be changed to MDI mode"), for every mode: a mode button
     // selects its mode from any other mode of On. Within a group the row leaves the mode (Mem
@@ -299,6 +310,8 @@ inline constexpr auto chart = bsc::make_chart<panel>(
     bsc::state<Auto>   + bsc::event<setup_p> = bsc::state<Setup>,
     bsc::state<Manual> + bsc::event<setup_p> = bsc::state<Setup>,
     bsc::state<Edit>   + bsc::event<setup_p> = bsc::state<Setup>);
+
+inline constexpr auto chart = bsc::make_chart<panel>(tree, show_rows, figure13(cond), estop_rows, mode_rows);
 
 /// The supervisor: the chart running over a panel.
 using machine = bsc::machine<decltype(chart)>;

@@ -170,3 +170,14 @@ TEST_CASE("coverage reports the states and transitions that no explored run exer
     CHECK(report.dead_states == std::vector<std::string>{"E"});
     CHECK(report.dead_transitions == std::vector<std::string>{"B + go -> E", "E + back -> A"});
 }
+
+TEST_CASE("AG EF p: from every reachable state a p-state can be reached") {
+    bsc::verify::explorer ex{ver::model()};
+    CHECK(bsc::verify::always_reachable(ex, "C", ver::in_c).holds());
+    bsc::verify::explorer trapped{
+        bsc::verify::event_model<bsc::machine<decltype(ver::trap)>, ver::go, ver::back, ver::halt>{
+            bsc::machine{ver::trap, ver::ctx{}}}};
+    auto const v = bsc::verify::always_reachable(trapped, "A", [](auto const& m) { return m.template is<ver::A>(); });
+    REQUIRE(v.fails());
+    CHECK(v.trace.back().configuration == "Root D");  // the first state cut off from A
+}

@@ -24,6 +24,18 @@ inline constexpr bool is_machine = false;
 template <class C, class P, class O>
 inline constexpr bool is_machine<bsc::machine<C, P, O>> = true;
 
+}  // namespace bsc::verify::detail
+
+namespace bsc::verify {
+/// Specialize as true for a context member type that does not influence behaviour (a log, a
+/// display, statistics): the explorer neither stores nor compares it, so it cannot split or
+/// multiply states. Decoded states keep the initial value of such members.
+template <class T>
+inline constexpr bool unexplored = false;
+}  // namespace bsc::verify
+
+namespace bsc::verify::detail {
+
 template <class T>
 constexpr bool is_aggregate_class() {
     return std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_base_of_v<bsc::detail::channel_base, T>;
@@ -53,7 +65,9 @@ struct fields_size<std::tuple<F&...>> {
 
 template <class T>
 constexpr std::size_t encoded_size() {
-    if constexpr (is_machine<T>) {
+    if constexpr (unexplored<T>) {
+        return 0;
+    } else if constexpr (is_machine<T>) {
         using ctx = typename T::context_type;
         return (std::is_empty_v<typename T::configuration_type> ? 0 : sizeof(typename T::configuration_type)) +
                encoded_size<ctx>() +
@@ -88,7 +102,9 @@ inline std::uint16_t get16(std::byte const*& in) {
 
 template <class T>
 void encode(T const& value, std::byte*& out, time_frame frame) {
-    if constexpr (is_machine<T>) {
+    if constexpr (unexplored<T>) {
+        return;
+    } else if constexpr (is_machine<T>) {
         auto& m = const_cast<T&>(value);
         auto const cfg = machine_access::canonical_configuration(m);
         if constexpr (!std::is_empty_v<std::remove_cvref_t<decltype(cfg)>>) {
@@ -117,7 +133,9 @@ void encode(T const& value, std::byte*& out, time_frame frame) {
 
 template <class T>
 void decode(T& value, std::byte const*& in, time_frame frame) {
-    if constexpr (is_machine<T>) {
+    if constexpr (unexplored<T>) {
+        return;
+    } else if constexpr (is_machine<T>) {
         auto& cfg = machine_access::configuration(value);
         if constexpr (!std::is_empty_v<std::remove_cvref_t<decltype(cfg)>>) {
             std::memcpy(cfg.active.data(), in, cfg.active.size());

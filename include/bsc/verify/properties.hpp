@@ -110,34 +110,91 @@ verdict deadlock_free(explorer<Model>& ex) {
     return deadlock_free(ex, [](auto const&) { return false; });
 }
 
+namespace detail {
+// The graph's edges reversed, as adjacency arrays: the predecessors of i are
+// from[begin[i]] .. from[begin[i + 1] - 1] (one entry per edge).
+struct reverse_graph {
+    std::vector<std::uint32_t> begin, from;
+};
+template <class Model>
+reverse_graph reversed(explorer<Model> const& ex) {
+    std::size_t const n = ex.count();
+    reverse_graph g{std::vector<std::uint32_t>(n + 1, 0), std::vector<std::uint32_t>(ex.stats().transitions)};
+    for (std::size_t i = 0; i < n; ++i)
+        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e) ++g.begin[ex.edge_target(e) + 1];
+    for (std::size_t i = 0; i < n; ++i) g.begin[i + 1] += g.begin[i];
+    std::vector<std::uint32_t> fill(g.begin.begin(), g.begin.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e)
+            g.from[fill[ex.edge_target(e)]++] = static_cast<std::uint32_t>(i);
+    return g;
+}
+
+// The first state (in breadth-first order, so with a shortest path to it) from which no
+// state marked in `goal` can be reached, or none.
+template <class Model>
+std::size_t first_cut_off(explorer<Model> const& ex, std::vector<char> const& goal) {
+    std::size_t const n = ex.count();
+    reverse_graph const g = reversed(ex);
+    std::vector<char> back(n, 0);
+    std::vector<std::uint32_t> queue;
+    for (std::size_t i = 0; i < n; ++i)
+        if (goal[i]) {
+            back[i] = 1;
+            queue.push_back(static_cast<std::uint32_t>(i));
+        }
+    for (std::size_t k = 0; k < queue.size(); ++k)
+        for (auto e = g.begin[queue[k]]; e < g.begin[queue[k] + 1]; ++e)
+            if (!back[g.from[e]]) {
+                back[g.from[e]] = 1;
+                queue.push_back(g.from[e]);
+            }
+    for (std::size_t i = 0; i < n; ++i)
+        if (!back[i]) return i;
+    return explorer<Model>::none;
+}
+}  // namespace detail
+
+/// AG EF p: from every reachable state, some path reaches a p-state (seed 002's vivacity, for
+/// p = "the device operates"). Fails with a path to a state from which p is out of reach.
+template <class Model, class Pred>
+verdict always_reachable(explorer<Model>& ex, std::string name, Pred p) {
+    ex.run();
+    name = "AG EF " + name;
+    if (!ex.stats().complete) return detail::incomplete(ex, name);
+    std::vector<char> goal(ex.count());
+    for (std::size_t i = 0; i < ex.count(); ++i) goal[i] = p(ex.at(i));
+    std::size_t const cut = detail::first_cut_off(ex, goal);
+    if (cut != explorer<Model>::none)
+        return {name, verdict::status::fails, detail::path_to(ex, cut), "unreachable from the last state"};
+    return {name, verdict::status::holds, {}, {}};
+}
+
 /// The initial state is reachable from every reachable state (seed 002's reinitiability).
 template <class Model>
 verdict reinitiable(explorer<Model>& ex) {
     ex.run();
     std::string const name = "reinitiability";
     if (!ex.stats().complete) return detail::incomplete(ex, name);
-    std::size_t const n = ex.count();
-    // Reverse adjacency, then a backward search from the initial state.
-    std::vector<std::uint32_t> begin(n + 1, 0), from(ex.stats().transitions);
-    for (std::size_t i = 0; i < n; ++i)
-        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e) ++begin[ex.edge_target(e) + 1];
-    for (std::size_t i = 0; i < n; ++i) begin[i + 1] += begin[i];
-    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
-    for (std::size_t i = 0; i < n; ++i)
-        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e)
-            from[fill[ex.edge_target(e)]++] = static_cast<std::uint32_t>(i);
-    std::vector<bool> back(n, false);
-    std::vector<std::uint32_t> queue{0};
-    back[0] = true;
-    for (std::size_t k = 0; k < queue.size(); ++k)
-        for (auto e = begin[queue[k]]; e < begin[queue[k] + 1]; ++e)
-            if (!back[from[e]]) {
-                back[from[e]] = true;
-                queue.push_back(from[e]);
-            }
-    for (std::size_t i = 0; i < n; ++i)
-        if (!back[i]) return {name, verdict::status::fails, detail::path_to(ex, i), "the initial state is unreachable from the last state"};
+    std::vector<char> goal(ex.count(), 0);
+    goal[0] = 1;
+    std::size_t const cut = detail::first_cut_off(ex, goal);
+    if (cut != explorer<Model>::none)
+        return {name, verdict::status::fails, detail::path_to(ex, cut),
+                "the initial state is unreachable from the last state"};
     return {name, verdict::status::holds, {}, {}};
+}
+
+/// Reinitiability up to an equivalence: from every reachable state, a state `equivalent` to the
+/// initial one can be reached, e.g. the same active configuration whatever the variables
+/// (seed 002's reachability tree is over configurations). `equivalent(state, initial)`.
+template <class Model, class Equivalent>
+verdict reinitiable(explorer<Model>& ex, Equivalent equivalent) {
+    ex.run();
+    auto const initial = ex.at(0);
+    verdict v = always_reachable(ex, "", [&](auto const& s) { return equivalent(s, initial); });
+    v.property = "reinitiability (up to equivalence)";
+    return v;
 }
 
 /// p --> q: from every reachable p-state, every path reaches a q-state. No fairness is
@@ -155,19 +212,25 @@ verdict leads_to(explorer<Model>& ex, std::string name, P p, Q q) {
         is_q[i] = q(s);
         is_p[i] = p(s);
     }
-    // sure[i]: every path from i reaches q. Least fixpoint, iterated to stability.
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (sure[i]) continue;
-            bool all = is_q[i] != 0;
-            if (!all && ex.edges_end(i) > ex.edges_begin(i)) {
-                all = true;
-                for (auto e = ex.edges_begin(i); e < ex.edges_end(i) && all; ++e) all = sure[ex.edge_target(e)] != 0;
-            }
-            if (all) sure[i] = changed = true;
+    // sure[i]: every path from i reaches q. The least fixpoint, by a backward worklist: a
+    // state with successors becomes sure when its last unsure successor does.
+    detail::reverse_graph const g = detail::reversed(ex);
+    std::vector<std::uint32_t> unsure_successors(n), queue;
+    for (std::size_t i = 0; i < n; ++i) {
+        unsure_successors[i] = ex.edges_end(i) - ex.edges_begin(i);
+        if (is_q[i]) {
+            sure[i] = 1;
+            queue.push_back(static_cast<std::uint32_t>(i));
         }
     }
+    for (std::size_t k = 0; k < queue.size(); ++k)
+        for (auto e = g.begin[queue[k]]; e < g.begin[queue[k] + 1]; ++e) {
+            std::uint32_t const i = g.from[e];
+            if (!sure[i] && --unsure_successors[i] == 0) {
+                sure[i] = 1;
+                queue.push_back(i);
+            }
+        }
     for (std::size_t i = 0; i < n; ++i) {
         if (!is_p[i] || sure[i]) continue;
         auto trace = detail::path_to(ex, i);
