@@ -39,6 +39,7 @@ struct system_report {
     int transitions = 0;  ///< condition-driven transitions fired by all actors
     bool queue_overflow = false;
     bool livelock = false;
+    bool halted = false;  ///< some actor is halted (a final child of its root is active)
 };
 
 template <class Actors, class Order, class... Links>
@@ -68,6 +69,7 @@ private:
         report.transitions += r.transitions;
         report.queue_overflow = report.queue_overflow || r.status == outcome::queue_overflow;
         report.livelock = report.livelock || r.status == outcome::livelock;
+        report.halted = report.halted || r.status == outcome::halted || (actors.*Actor).halted();
     }
 };
 

@@ -101,3 +101,30 @@ TEST_CASE("a closed-loop system is explored like a single machine") {
     REQUIRE(witness.holds());
     CHECK(witness.trace.back().configuration == "Root Running | Root At");
 }
+
+namespace sys {
+struct Broken;
+struct fragile_io {
+    bsc::input<bool> motor;
+};
+// A plant that breaks if the motor runs: a final Damage state halts it.
+inline constexpr auto fragile = bsc::make_chart<fragile_io>(
+    bsc::composite<Root>(bsc::initial<Still>, bsc::final_state<Broken>),
+    bsc::state<Still>[([](fragile_io const& p) { return p.motor.get(); })] = bsc::state<Broken>);
+struct fragile_actors {
+    bsc::machine<decltype(controller)> control{controller};
+    bsc::machine<decltype(fragile)> part{fragile};
+};
+using fragile_cell =
+    bsc::system<fragile_actors, bsc::order<&fragile_actors::control, &fragile_actors::part>,
+                bsc::link<&fragile_actors::control, &controller_io::motor, &fragile_actors::part, &fragile_io::motor>>;
+}  // namespace sys
+
+TEST_CASE("the system report flags an actor that has halted") {
+    sys::fragile_cell s{};
+    CHECK_FALSE(s.step(0ms).halted);
+    s.actors.control.context().request.set(true);
+    auto const r = s.step(100ms);
+    CHECK(r.halted);
+    CHECK(s.actors.part.halted());
+}
