@@ -272,3 +272,46 @@ TEST_CASE("production cell: exploration with bsc::verify::system_model, the arri
     });
     CHECK(efficient.holds());
 }
+
+namespace {
+// The closed model of the exploration above, for any system built from the cell's parts.
+template <class System>
+void put_or_wait(System& s, std::size_t choice, bsc::duration now, std::uint8_t bricks) {
+    auto& belt = s.actors.env_feed_belt.context();
+    bool const put = choice == 1 && belt.fed < bricks && belt.start_free.get();
+    belt.put.set(put ? pcell::brick{static_cast<std::uint8_t>(belt.fed + 1), false} : pcell::brick{});
+    s.step(now);
+}
+template <class System>
+System switched_on() {
+    System s{};
+    s.actors.feed_belt.context().on.set(true);
+    s.actors.table.context().on.set(true);
+    s.actors.robot.context().on.set(true);
+    s.actors.press.context().on.set(true);
+    s.actors.deposit_belt.context().on.set(true);
+    return s;
+}
+}  // namespace
+
+TEST_CASE("production cell: exploring the broken press controller finds the damage, and the trace replays it") {
+    using broken = pcell::system_of<pcell::basic_actors<false>>;
+    auto step = [](broken& s, std::size_t choice, bsc::duration now) { put_or_wait(s, choice, now, 1); };
+    auto describe = [](broken const& s) { return s.actors.press.active_states().joined(); };
+    auto label = [](std::uint16_t c) { return std::string(c == 1 ? "put a brick" : "wait"); };
+    bsc::verify::explorer ex{bsc::verify::system_model{switched_on<broken>(), pcell::period, 2, step, describe, label}};
+    auto const r3 = bsc::verify::always(ex, "R3: no plant model in Damage", [](broken const& s) {
+        return s.actors.env_press.template is<pcell::Damage>() == false;
+    });
+    REQUIRE(r3.fails());
+    CHECK(r3.trace.size() > 2);
+    // Replay the counterexample's choices on a fresh system: it must end in the press's Damage.
+    broken s = switched_on<broken>();
+    bsc::duration now{};
+    for (std::size_t i = 1; i < r3.trace.size(); ++i) {
+        now += pcell::period;
+        put_or_wait(s, r3.trace[i].label == "put a brick" ? 1 : 0, now, 1);
+    }
+    CHECK(s.actors.env_press.is<pcell::Damage>());
+    CHECK(s.actors.press.is<pcell::PsForge>());
+}
