@@ -15,10 +15,13 @@
 // with equal encodings behave the same.
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 
 
 namespace bsc::verify::detail {
@@ -30,6 +33,18 @@ template <class T>
 inline constexpr bool is_machine = false;
 template <class C, class P, class O>
 inline constexpr bool is_machine<bsc::machine<C, P, O>> = true;
+
+}  // namespace bsc::verify::detail
+
+namespace bsc::verify {
+/// Specialize as true for a context member type that does not influence behaviour (a log, a
+/// display, statistics): the explorer neither stores nor compares it, so it cannot split or
+/// multiply states. Decoded states keep the initial value of such members.
+template <class T>
+inline constexpr bool unexplored = false;
+}  // namespace bsc::verify
+
+namespace bsc::verify::detail {
 
 template <class T>
 constexpr bool is_aggregate_class() {
@@ -48,101 +63,202 @@ struct time_frame {
     }
 };
 
-template <class T>
-constexpr std::size_t encoded_size();
+// Keys are bit strings: a flag takes one bit, a composite's byte only the bits its number of
+// children needs, so a state of a controller with a dozen flags takes a few bytes.
+class bit_writer {
+public:
+    explicit bit_writer(std::byte* out) : out_(out) {}
+    void put(std::uint64_t value, unsigned bits) {
+        while (bits > 0) {  // a byte (or what is left of it) at a time
+            unsigned const offset = bit_ % 8;
+            unsigned const n = bits < 8 - offset ? bits : 8 - offset;
+            out_[bit_ / 8] |= static_cast<std::byte>((value & ((1u << n) - 1u)) << offset);
+            value >>= n;
+            bits -= n;
+            bit_ += n;
+        }
+    }
+    void put_bytes(void const* data, std::size_t n) {
+        auto const* bytes = static_cast<unsigned char const*>(data);
+        for (std::size_t k = 0; k < n; ++k) put(bytes[k], 8);
+    }
 
-template <class Tuple>
-struct fields_size;
-template <class... F>
-struct fields_size<std::tuple<F&...>> {
-    static constexpr std::size_t value = (std::size_t{0} + ... + encoded_size<std::remove_cv_t<F>>());
+private:
+    std::byte* out_;
+    std::size_t bit_ = 0;
 };
 
+class bit_reader {
+public:
+    explicit bit_reader(std::byte const* in) : in_(in) {}
+    std::uint64_t get(unsigned bits) {
+        std::uint64_t value = 0;
+        for (unsigned done = 0; done < bits;) {
+            unsigned const offset = bit_ % 8;
+            unsigned const n = bits - done < 8 - offset ? bits - done : 8 - offset;
+            std::uint64_t const chunk = (static_cast<unsigned>(in_[bit_ / 8]) >> offset) & ((1u << n) - 1u);
+            value |= chunk << done;
+            done += n;
+            bit_ += n;
+        }
+        return value;
+    }
+    void get_bytes(void* data, std::size_t n) {
+        auto* bytes = static_cast<unsigned char*>(data);
+        for (std::size_t k = 0; k < n; ++k) bytes[k] = static_cast<unsigned char>(get(8));
+    }
+
+private:
+    std::byte const* in_;
+    std::size_t bit_ = 0;
+};
+
+constexpr unsigned bits_for(int values) {
+    unsigned bits = 0;
+    while ((1 << bits) < values) ++bits;
+    return bits;
+}
+
+// The bits of each composite's byte, by slot: enough for its number of children.
+template <class M>
+constexpr auto slot_bits() {
+    using an = bsc::detail::analysis<typename M::chart_type>;
+    std::array<unsigned, static_cast<std::size_t>(an::topo.slots)> bits{};
+    for (std::size_t s = 0; s < static_cast<std::size_t>(an::N); ++s)
+        if (an::topo.slot[s] >= 0) bits[static_cast<std::size_t>(an::topo.slot[s])] = bits_for(an::topo.child_count[s]);
+    return bits;
+}
+
+template <class C>
+using channel_value = std::remove_cvref_t<decltype(std::declval<C const&>().get())>;
+
 template <class T>
-constexpr std::size_t encoded_size() {
-    if constexpr (is_machine<T>) {
-        using ctx = typename T::context_type;
-        return (std::is_empty_v<typename T::configuration_type> ? 0 : sizeof(typename T::configuration_type)) +
-               encoded_size<ctx>() +
-               2 * std::tuple_size_v<std::remove_reference_t<decltype(machine_access::armed(std::declval<T&>()))>>;
+constexpr std::size_t encoded_bits();
+
+template <class Tuple>
+struct fields_bits;
+template <class... F>
+struct fields_bits<std::tuple<F&...>> {
+    static constexpr std::size_t value = (std::size_t{0} + ... + encoded_bits<std::remove_cv_t<F>>());
+};
+
+inline constexpr unsigned cycle_bits = 16;  // periods since a timer or timeout started, capped
+
+template <class T>
+constexpr std::size_t encoded_bits() {
+    if constexpr (unexplored<T>) {
+        return 0;
+    } else if constexpr (is_machine<T>) {
+        std::size_t config = 0;
+        for (unsigned b : slot_bits<T>()) config += b;
+        constexpr std::size_t timeouts =
+            std::tuple_size_v<std::remove_reference_t<decltype(machine_access::armed(std::declval<T&>()))>>;
+        return config + encoded_bits<typename T::context_type>() + cycle_bits * timeouts;
     } else if constexpr (std::is_same_v<T, timer>) {
-        return 4;
+        return 2 + 1 + cycle_bits;  // phase, expired, periods since timing began
+    } else if constexpr (std::is_same_v<T, bool>) {
+        return 1;
+    } else if constexpr (is_channel<T>) {
+        return 2 * encoded_bits<channel_value<T>>();  // pending and current values
     } else if constexpr (is_aggregate_class<T>()) {
-        return fields_size<decltype(bsc::detail::tie_fields(std::declval<T&>()))>::value;
+        return fields_bits<decltype(bsc::detail::tie_fields(std::declval<T&>()))>::value;
     } else {
         static_assert(std::is_trivially_copyable_v<T>,
                       "bsc: the explorer encodes scalars, enums, channels, timers, machines and aggregates of "
                       "them; this member type is none of those");
-        return sizeof(T);
+        return 8 * sizeof(T);
     }
 }
 
 template <class T>
-void encode(T const& value, std::byte*& out, time_frame frame);
-template <class T>
-void decode(T& value, std::byte const*& in, time_frame frame);
-
-inline void put16(std::byte*& out, std::uint16_t v) {
-    std::memcpy(out, &v, 2);
-    out += 2;
-}
-inline std::uint16_t get16(std::byte const*& in) {
-    std::uint16_t v;
-    std::memcpy(&v, in, 2);
-    in += 2;
-    return v;
+constexpr std::size_t encoded_size() {
+    return (encoded_bits<T>() + 7) / 8;
 }
 
 template <class T>
-void encode(T const& value, std::byte*& out, time_frame frame) {
-    if constexpr (is_machine<T>) {
+void encode(T const& value, bit_writer& out, time_frame frame);
+template <class T>
+void decode(T& value, bit_reader& in, time_frame frame);
+
+template <class V>
+void encode_value(V const& v, bit_writer& out) {
+    if constexpr (std::is_same_v<V, bool>)
+        out.put(v ? 1u : 0u, 1);
+    else
+        out.put_bytes(&v, sizeof(V));
+}
+template <class V>
+V decode_value(bit_reader& in) {
+    if constexpr (std::is_same_v<V, bool>) {
+        return in.get(1) != 0;
+    } else {
+        V v;
+        in.get_bytes(&v, sizeof(V));
+        return v;
+    }
+}
+
+template <class T>
+void encode(T const& value, bit_writer& out, time_frame frame) {
+    if constexpr (unexplored<T>) {
+        return;
+    } else if constexpr (is_machine<T>) {
         auto& m = const_cast<T&>(value);
         auto const cfg = machine_access::canonical_configuration(m);
-        if constexpr (!std::is_empty_v<std::remove_cvref_t<decltype(cfg)>>) {
-            std::memcpy(out, cfg.active.data(), cfg.active.size());
-            out += cfg.active.size();
-        }
+        constexpr auto bits = slot_bits<T>();
+        for (std::size_t k = 0; k < bits.size(); ++k) out.put(cfg.active[k], bits[k]);
         time_frame const own{machine_access::clock(m), frame.period};
         encode(m.context(), out, own);
         auto const& armed = machine_access::armed(m);
         for (std::size_t i = 0; i < armed.size(); ++i)
-            put16(out, machine_access::timeout_armed(m, i)
-                           ? own.cycles(own.clock - armed[i], machine_access::longest_timeout(m))
-                           : 0);
+            out.put(machine_access::timeout_armed(m, i)
+                        ? own.cycles(own.clock - armed[i], machine_access::longest_timeout(m))
+                        : 0,
+                    cycle_bits);
     } else if constexpr (std::is_same_v<T, timer>) {
-        *out++ = static_cast<std::byte>(timer_access::phase(value));
-        *out++ = static_cast<std::byte>(value.expired());
+        out.put(timer_access::phase(value), 2);
+        out.put(value.expired() ? 1u : 0u, 1);
         bool const timing = timer_access::phase(value) == 2;  // running, expired or not
-        put16(out, timing ? frame.cycles(frame.clock - timer_access::started(value), value.limit()) : 0);
+        out.put(timing ? frame.cycles(frame.clock - timer_access::started(value), value.limit()) : 0, cycle_bits);
+    } else if constexpr (is_channel<T>) {
+        encode_value(value.pending(), out);
+        encode_value(value.get(), out);
     } else if constexpr (is_aggregate_class<T>()) {
         bsc::detail::for_each_field(value, [&](auto const& field) { encode(field, out, frame); });
     } else {
-        std::memcpy(out, &value, sizeof(T));
-        out += sizeof(T);
+        encode_value(value, out);
     }
 }
 
 template <class T>
-void decode(T& value, std::byte const*& in, time_frame frame) {
-    if constexpr (is_machine<T>) {
+void decode(T& value, bit_reader& in, time_frame frame) {
+    if constexpr (unexplored<T>) {
+        return;
+    } else if constexpr (is_machine<T>) {
         auto& cfg = machine_access::configuration(value);
-        if constexpr (!std::is_empty_v<std::remove_cvref_t<decltype(cfg)>>) {
-            std::memcpy(cfg.active.data(), in, cfg.active.size());
-            in += cfg.active.size();
-        }
+        constexpr auto bits = slot_bits<T>();
+        for (std::size_t k = 0; k < bits.size(); ++k) cfg.active[k] = static_cast<std::uint8_t>(in.get(bits[k]));
         machine_access::clock(value) = frame.clock;
         decode(value.context(), in, frame);
-        for (auto& armed : machine_access::armed(value)) armed = frame.clock - get16(in) * frame.period;
+        for (auto& armed : machine_access::armed(value))
+            armed = frame.clock - static_cast<int>(in.get(cycle_bits)) * frame.period;
     } else if constexpr (std::is_same_v<T, timer>) {
-        auto const phase = static_cast<std::uint8_t>(*in++);
-        bool const expired = *in++ != std::byte{0};
-        auto const elapsed = get16(in) * frame.period;
+        auto const phase = static_cast<std::uint8_t>(in.get(2));
+        bool const expired = in.get(1) != 0;
+        auto const elapsed = static_cast<int>(in.get(cycle_bits)) * frame.period;
         timer_access::set(value, phase, expired, frame.clock - elapsed, elapsed);
+    } else if constexpr (is_channel<T>) {
+        using V = channel_value<T>;
+        V const pending = decode_value<V>(in);
+        V const current = decode_value<V>(in);
+        value.set(current);  // both values, through the channel's own cycle boundary
+        value.latch();
+        value.commit();
+        value.set(pending);
     } else if constexpr (is_aggregate_class<T>()) {
         bsc::detail::for_each_field(value, [&](auto& field) { decode(field, in, frame); });
     } else {
-        std::memcpy(&value, in, sizeof(T));
-        in += sizeof(T);
+        value = decode_value<T>(in);
     }
 }
 
@@ -220,7 +336,7 @@ public:
         std::vector<std::byte> scratch(key_size);
         state const init = model_.initial();
         model_.encode(init, scratch.data());
-        insert(scratch.data(), none, 0, 0);
+        insert(scratch.data(), none, 0);
         std::size_t level_end = 1;
         for (std::size_t i = 0; i < count(); ++i) {
             if (i == level_end) {
@@ -232,7 +348,7 @@ public:
             state const s = model_.decode(key(i));
             model_.successors(s, [&](std::uint16_t label, state const& next) {
                 model_.encode(next, scratch.data());
-                std::uint32_t const j = insert(scratch.data(), static_cast<std::uint32_t>(i), label, depth_[i] + 1u);
+                std::uint32_t const j = insert(scratch.data(), static_cast<std::uint32_t>(i), label);
                 edge_to_.push_back(j);
                 edge_label_.push_back(label);
             });
@@ -271,7 +387,7 @@ private:
         return h * 0x9e3779b97f4a7c15ull;
     }
 
-    std::uint32_t insert(std::byte const* k, std::uint32_t from, std::uint16_t label, std::uint32_t depth) {
+    std::uint32_t insert(std::byte const* k, std::uint32_t from, std::uint16_t label) {
         if ((count() + 1) * 2 > table_.size()) grow();
         std::size_t const mask = table_.size() - 1;
         for (std::size_t slot = hash(k) & mask;; slot = (slot + 1) & mask) {
@@ -282,7 +398,6 @@ private:
                 keys_.insert(keys_.end(), k, k + key_size);
                 parent_.push_back(from);
                 via_.push_back(label);
-                depth_.push_back(depth);
                 return index;
             }
             if (std::memcmp(key(at), k, key_size) == 0) return at;
@@ -302,7 +417,7 @@ private:
 
     std::size_t memory() const {
         return keys_.capacity() + table_.capacity() * 4 + parent_.capacity() * 4 + via_.capacity() * 2 +
-               depth_.capacity() * 4 + edge_begin_.capacity() * 4 + edge_to_.capacity() * 4 +
+               edge_begin_.capacity() * 4 + edge_to_.capacity() * 4 +
                edge_label_.capacity() * 2;
     }
 
@@ -326,7 +441,6 @@ private:
     std::vector<std::uint32_t> table_;
     std::vector<std::uint32_t> parent_;
     std::vector<std::uint16_t> via_;
-    std::vector<std::uint32_t> depth_;
     std::vector<std::uint32_t> edge_begin_;
     std::vector<std::uint32_t> edge_to_;
     std::vector<std::uint16_t> edge_label_;
@@ -442,6 +556,7 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired) {
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <utility>
 
@@ -456,9 +571,14 @@ template <class T>
 struct codec {
     static constexpr std::size_t key_size = encoded_size<T>();
     duration period{};
-    void encode(T const& s, std::byte* out) const { detail::encode(s, out, time_frame{origin + period, period}); }
+    void encode(T const& s, std::byte* out) const {
+        std::memset(out, 0, key_size);
+        bit_writer writer{out};
+        detail::encode(s, writer, time_frame{origin + period, period});
+    }
     T decode(T prototype, std::byte const* in) const {
-        detail::decode(prototype, in, time_frame{origin, period});
+        bit_reader reader{in};
+        detail::decode(prototype, reader, time_frame{origin, period});
         return prototype;
     }
 };
@@ -684,34 +804,91 @@ verdict deadlock_free(explorer<Model>& ex) {
     return deadlock_free(ex, [](auto const&) { return false; });
 }
 
+namespace detail {
+// The graph's edges reversed, as adjacency arrays: the predecessors of i are
+// from[begin[i]] .. from[begin[i + 1] - 1] (one entry per edge).
+struct reverse_graph {
+    std::vector<std::uint32_t> begin, from;
+};
+template <class Model>
+reverse_graph reversed(explorer<Model> const& ex) {
+    std::size_t const n = ex.count();
+    reverse_graph g{std::vector<std::uint32_t>(n + 1, 0), std::vector<std::uint32_t>(ex.stats().transitions)};
+    for (std::size_t i = 0; i < n; ++i)
+        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e) ++g.begin[ex.edge_target(e) + 1];
+    for (std::size_t i = 0; i < n; ++i) g.begin[i + 1] += g.begin[i];
+    std::vector<std::uint32_t> fill(g.begin.begin(), g.begin.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e)
+            g.from[fill[ex.edge_target(e)]++] = static_cast<std::uint32_t>(i);
+    return g;
+}
+
+// The first state (in breadth-first order, so with a shortest path to it) from which no
+// state marked in `goal` can be reached, or none.
+template <class Model>
+std::size_t first_cut_off(explorer<Model> const& ex, std::vector<char> const& goal) {
+    std::size_t const n = ex.count();
+    reverse_graph const g = reversed(ex);
+    std::vector<char> back(n, 0);
+    std::vector<std::uint32_t> queue;
+    for (std::size_t i = 0; i < n; ++i)
+        if (goal[i]) {
+            back[i] = 1;
+            queue.push_back(static_cast<std::uint32_t>(i));
+        }
+    for (std::size_t k = 0; k < queue.size(); ++k)
+        for (auto e = g.begin[queue[k]]; e < g.begin[queue[k] + 1]; ++e)
+            if (!back[g.from[e]]) {
+                back[g.from[e]] = 1;
+                queue.push_back(g.from[e]);
+            }
+    for (std::size_t i = 0; i < n; ++i)
+        if (!back[i]) return i;
+    return explorer<Model>::none;
+}
+}  // namespace detail
+
+/// AG EF p: from every reachable state, some path reaches a p-state (seed 002's vivacity, for
+/// p = "the device operates"). Fails with a path to a state from which p is out of reach.
+template <class Model, class Pred>
+verdict always_reachable(explorer<Model>& ex, std::string name, Pred p) {
+    ex.run();
+    name = "AG EF " + name;
+    if (!ex.stats().complete) return detail::incomplete(ex, name);
+    std::vector<char> goal(ex.count());
+    for (std::size_t i = 0; i < ex.count(); ++i) goal[i] = p(ex.at(i));
+    std::size_t const cut = detail::first_cut_off(ex, goal);
+    if (cut != explorer<Model>::none)
+        return {name, verdict::status::fails, detail::path_to(ex, cut), "unreachable from the last state"};
+    return {name, verdict::status::holds, {}, {}};
+}
+
 /// The initial state is reachable from every reachable state (seed 002's reinitiability).
 template <class Model>
 verdict reinitiable(explorer<Model>& ex) {
     ex.run();
     std::string const name = "reinitiability";
     if (!ex.stats().complete) return detail::incomplete(ex, name);
-    std::size_t const n = ex.count();
-    // Reverse adjacency, then a backward search from the initial state.
-    std::vector<std::uint32_t> begin(n + 1, 0), from(ex.stats().transitions);
-    for (std::size_t i = 0; i < n; ++i)
-        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e) ++begin[ex.edge_target(e) + 1];
-    for (std::size_t i = 0; i < n; ++i) begin[i + 1] += begin[i];
-    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
-    for (std::size_t i = 0; i < n; ++i)
-        for (auto e = ex.edges_begin(i); e < ex.edges_end(i); ++e)
-            from[fill[ex.edge_target(e)]++] = static_cast<std::uint32_t>(i);
-    std::vector<bool> back(n, false);
-    std::vector<std::uint32_t> queue{0};
-    back[0] = true;
-    for (std::size_t k = 0; k < queue.size(); ++k)
-        for (auto e = begin[queue[k]]; e < begin[queue[k] + 1]; ++e)
-            if (!back[from[e]]) {
-                back[from[e]] = true;
-                queue.push_back(from[e]);
-            }
-    for (std::size_t i = 0; i < n; ++i)
-        if (!back[i]) return {name, verdict::status::fails, detail::path_to(ex, i), "the initial state is unreachable from the last state"};
+    std::vector<char> goal(ex.count(), 0);
+    goal[0] = 1;
+    std::size_t const cut = detail::first_cut_off(ex, goal);
+    if (cut != explorer<Model>::none)
+        return {name, verdict::status::fails, detail::path_to(ex, cut),
+                "the initial state is unreachable from the last state"};
     return {name, verdict::status::holds, {}, {}};
+}
+
+/// Reinitiability up to an equivalence: from every reachable state, a state `equivalent` to the
+/// initial one can be reached, e.g. the same active configuration whatever the variables
+/// (seed 002's reachability tree is over configurations). `equivalent(state, initial)`.
+template <class Model, class Equivalent>
+verdict reinitiable(explorer<Model>& ex, Equivalent equivalent) {
+    ex.run();
+    auto const initial = ex.at(0);
+    verdict v = always_reachable(ex, "", [&](auto const& s) { return equivalent(s, initial); });
+    v.property = "reinitiability (up to equivalence)";
+    return v;
 }
 
 /// p --> q: from every reachable p-state, every path reaches a q-state. No fairness is
@@ -729,19 +906,25 @@ verdict leads_to(explorer<Model>& ex, std::string name, P p, Q q) {
         is_q[i] = q(s);
         is_p[i] = p(s);
     }
-    // sure[i]: every path from i reaches q. Least fixpoint, iterated to stability.
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (sure[i]) continue;
-            bool all = is_q[i] != 0;
-            if (!all && ex.edges_end(i) > ex.edges_begin(i)) {
-                all = true;
-                for (auto e = ex.edges_begin(i); e < ex.edges_end(i) && all; ++e) all = sure[ex.edge_target(e)] != 0;
-            }
-            if (all) sure[i] = changed = true;
+    // sure[i]: every path from i reaches q. The least fixpoint, by a backward worklist: a
+    // state with successors becomes sure when its last unsure successor does.
+    detail::reverse_graph const g = detail::reversed(ex);
+    std::vector<std::uint32_t> unsure_successors(n), queue;
+    for (std::size_t i = 0; i < n; ++i) {
+        unsure_successors[i] = ex.edges_end(i) - ex.edges_begin(i);
+        if (is_q[i]) {
+            sure[i] = 1;
+            queue.push_back(static_cast<std::uint32_t>(i));
         }
     }
+    for (std::size_t k = 0; k < queue.size(); ++k)
+        for (auto e = g.begin[queue[k]]; e < g.begin[queue[k] + 1]; ++e) {
+            std::uint32_t const i = g.from[e];
+            if (!sure[i] && --unsure_successors[i] == 0) {
+                sure[i] = 1;
+                queue.push_back(i);
+            }
+        }
     for (std::size_t i = 0; i < n; ++i) {
         if (!is_p[i] || sure[i]) continue;
         auto trace = detail::path_to(ex, i);

@@ -5,10 +5,13 @@
 // with equal encodings behave the same.
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 
 #include <bsc/compiled/machine.hpp>
 #include <bsc/data/timer.hpp>
@@ -53,107 +56,202 @@ struct time_frame {
     }
 };
 
-template <class T>
-constexpr std::size_t encoded_size();
+// Keys are bit strings: a flag takes one bit, a composite's byte only the bits its number of
+// children needs, so a state of a controller with a dozen flags takes a few bytes.
+class bit_writer {
+public:
+    explicit bit_writer(std::byte* out) : out_(out) {}
+    void put(std::uint64_t value, unsigned bits) {
+        while (bits > 0) {  // a byte (or what is left of it) at a time
+            unsigned const offset = bit_ % 8;
+            unsigned const n = bits < 8 - offset ? bits : 8 - offset;
+            out_[bit_ / 8] |= static_cast<std::byte>((value & ((1u << n) - 1u)) << offset);
+            value >>= n;
+            bits -= n;
+            bit_ += n;
+        }
+    }
+    void put_bytes(void const* data, std::size_t n) {
+        auto const* bytes = static_cast<unsigned char const*>(data);
+        for (std::size_t k = 0; k < n; ++k) put(bytes[k], 8);
+    }
 
-template <class Tuple>
-struct fields_size;
-template <class... F>
-struct fields_size<std::tuple<F&...>> {
-    static constexpr std::size_t value = (std::size_t{0} + ... + encoded_size<std::remove_cv_t<F>>());
+private:
+    std::byte* out_;
+    std::size_t bit_ = 0;
 };
 
+class bit_reader {
+public:
+    explicit bit_reader(std::byte const* in) : in_(in) {}
+    std::uint64_t get(unsigned bits) {
+        std::uint64_t value = 0;
+        for (unsigned done = 0; done < bits;) {
+            unsigned const offset = bit_ % 8;
+            unsigned const n = bits - done < 8 - offset ? bits - done : 8 - offset;
+            std::uint64_t const chunk = (static_cast<unsigned>(in_[bit_ / 8]) >> offset) & ((1u << n) - 1u);
+            value |= chunk << done;
+            done += n;
+            bit_ += n;
+        }
+        return value;
+    }
+    void get_bytes(void* data, std::size_t n) {
+        auto* bytes = static_cast<unsigned char*>(data);
+        for (std::size_t k = 0; k < n; ++k) bytes[k] = static_cast<unsigned char>(get(8));
+    }
+
+private:
+    std::byte const* in_;
+    std::size_t bit_ = 0;
+};
+
+constexpr unsigned bits_for(int values) {
+    unsigned bits = 0;
+    while ((1 << bits) < values) ++bits;
+    return bits;
+}
+
+// The bits of each composite's byte, by slot: enough for its number of children.
+template <class M>
+constexpr auto slot_bits() {
+    using an = bsc::detail::analysis<typename M::chart_type>;
+    std::array<unsigned, static_cast<std::size_t>(an::topo.slots)> bits{};
+    for (std::size_t s = 0; s < static_cast<std::size_t>(an::N); ++s)
+        if (an::topo.slot[s] >= 0) bits[static_cast<std::size_t>(an::topo.slot[s])] = bits_for(an::topo.child_count[s]);
+    return bits;
+}
+
+template <class C>
+using channel_value = std::remove_cvref_t<decltype(std::declval<C const&>().get())>;
+
 template <class T>
-constexpr std::size_t encoded_size() {
+constexpr std::size_t encoded_bits();
+
+template <class Tuple>
+struct fields_bits;
+template <class... F>
+struct fields_bits<std::tuple<F&...>> {
+    static constexpr std::size_t value = (std::size_t{0} + ... + encoded_bits<std::remove_cv_t<F>>());
+};
+
+inline constexpr unsigned cycle_bits = 16;  // periods since a timer or timeout started, capped
+
+template <class T>
+constexpr std::size_t encoded_bits() {
     if constexpr (unexplored<T>) {
         return 0;
     } else if constexpr (is_machine<T>) {
-        using ctx = typename T::context_type;
-        return (std::is_empty_v<typename T::configuration_type> ? 0 : sizeof(typename T::configuration_type)) +
-               encoded_size<ctx>() +
-               2 * std::tuple_size_v<std::remove_reference_t<decltype(machine_access::armed(std::declval<T&>()))>>;
+        std::size_t config = 0;
+        for (unsigned b : slot_bits<T>()) config += b;
+        constexpr std::size_t timeouts =
+            std::tuple_size_v<std::remove_reference_t<decltype(machine_access::armed(std::declval<T&>()))>>;
+        return config + encoded_bits<typename T::context_type>() + cycle_bits * timeouts;
     } else if constexpr (std::is_same_v<T, timer>) {
-        return 4;
+        return 2 + 1 + cycle_bits;  // phase, expired, periods since timing began
+    } else if constexpr (std::is_same_v<T, bool>) {
+        return 1;
+    } else if constexpr (is_channel<T>) {
+        return 2 * encoded_bits<channel_value<T>>();  // pending and current values
     } else if constexpr (is_aggregate_class<T>()) {
-        return fields_size<decltype(bsc::detail::tie_fields(std::declval<T&>()))>::value;
+        return fields_bits<decltype(bsc::detail::tie_fields(std::declval<T&>()))>::value;
     } else {
         static_assert(std::is_trivially_copyable_v<T>,
                       "bsc: the explorer encodes scalars, enums, channels, timers, machines and aggregates of "
                       "them; this member type is none of those");
-        return sizeof(T);
+        return 8 * sizeof(T);
     }
 }
 
 template <class T>
-void encode(T const& value, std::byte*& out, time_frame frame);
-template <class T>
-void decode(T& value, std::byte const*& in, time_frame frame);
-
-inline void put16(std::byte*& out, std::uint16_t v) {
-    std::memcpy(out, &v, 2);
-    out += 2;
-}
-inline std::uint16_t get16(std::byte const*& in) {
-    std::uint16_t v;
-    std::memcpy(&v, in, 2);
-    in += 2;
-    return v;
+constexpr std::size_t encoded_size() {
+    return (encoded_bits<T>() + 7) / 8;
 }
 
 template <class T>
-void encode(T const& value, std::byte*& out, time_frame frame) {
+void encode(T const& value, bit_writer& out, time_frame frame);
+template <class T>
+void decode(T& value, bit_reader& in, time_frame frame);
+
+template <class V>
+void encode_value(V const& v, bit_writer& out) {
+    if constexpr (std::is_same_v<V, bool>)
+        out.put(v ? 1u : 0u, 1);
+    else
+        out.put_bytes(&v, sizeof(V));
+}
+template <class V>
+V decode_value(bit_reader& in) {
+    if constexpr (std::is_same_v<V, bool>) {
+        return in.get(1) != 0;
+    } else {
+        V v;
+        in.get_bytes(&v, sizeof(V));
+        return v;
+    }
+}
+
+template <class T>
+void encode(T const& value, bit_writer& out, time_frame frame) {
     if constexpr (unexplored<T>) {
         return;
     } else if constexpr (is_machine<T>) {
         auto& m = const_cast<T&>(value);
         auto const cfg = machine_access::canonical_configuration(m);
-        if constexpr (!std::is_empty_v<std::remove_cvref_t<decltype(cfg)>>) {
-            std::memcpy(out, cfg.active.data(), cfg.active.size());
-            out += cfg.active.size();
-        }
+        constexpr auto bits = slot_bits<T>();
+        for (std::size_t k = 0; k < bits.size(); ++k) out.put(cfg.active[k], bits[k]);
         time_frame const own{machine_access::clock(m), frame.period};
         encode(m.context(), out, own);
         auto const& armed = machine_access::armed(m);
         for (std::size_t i = 0; i < armed.size(); ++i)
-            put16(out, machine_access::timeout_armed(m, i)
-                           ? own.cycles(own.clock - armed[i], machine_access::longest_timeout(m))
-                           : 0);
+            out.put(machine_access::timeout_armed(m, i)
+                        ? own.cycles(own.clock - armed[i], machine_access::longest_timeout(m))
+                        : 0,
+                    cycle_bits);
     } else if constexpr (std::is_same_v<T, timer>) {
-        *out++ = static_cast<std::byte>(timer_access::phase(value));
-        *out++ = static_cast<std::byte>(value.expired());
+        out.put(timer_access::phase(value), 2);
+        out.put(value.expired() ? 1u : 0u, 1);
         bool const timing = timer_access::phase(value) == 2;  // running, expired or not
-        put16(out, timing ? frame.cycles(frame.clock - timer_access::started(value), value.limit()) : 0);
+        out.put(timing ? frame.cycles(frame.clock - timer_access::started(value), value.limit()) : 0, cycle_bits);
+    } else if constexpr (is_channel<T>) {
+        encode_value(value.pending(), out);
+        encode_value(value.get(), out);
     } else if constexpr (is_aggregate_class<T>()) {
         bsc::detail::for_each_field(value, [&](auto const& field) { encode(field, out, frame); });
     } else {
-        std::memcpy(out, &value, sizeof(T));
-        out += sizeof(T);
+        encode_value(value, out);
     }
 }
 
 template <class T>
-void decode(T& value, std::byte const*& in, time_frame frame) {
+void decode(T& value, bit_reader& in, time_frame frame) {
     if constexpr (unexplored<T>) {
         return;
     } else if constexpr (is_machine<T>) {
         auto& cfg = machine_access::configuration(value);
-        if constexpr (!std::is_empty_v<std::remove_cvref_t<decltype(cfg)>>) {
-            std::memcpy(cfg.active.data(), in, cfg.active.size());
-            in += cfg.active.size();
-        }
+        constexpr auto bits = slot_bits<T>();
+        for (std::size_t k = 0; k < bits.size(); ++k) cfg.active[k] = static_cast<std::uint8_t>(in.get(bits[k]));
         machine_access::clock(value) = frame.clock;
         decode(value.context(), in, frame);
-        for (auto& armed : machine_access::armed(value)) armed = frame.clock - get16(in) * frame.period;
+        for (auto& armed : machine_access::armed(value))
+            armed = frame.clock - static_cast<int>(in.get(cycle_bits)) * frame.period;
     } else if constexpr (std::is_same_v<T, timer>) {
-        auto const phase = static_cast<std::uint8_t>(*in++);
-        bool const expired = *in++ != std::byte{0};
-        auto const elapsed = get16(in) * frame.period;
+        auto const phase = static_cast<std::uint8_t>(in.get(2));
+        bool const expired = in.get(1) != 0;
+        auto const elapsed = static_cast<int>(in.get(cycle_bits)) * frame.period;
         timer_access::set(value, phase, expired, frame.clock - elapsed, elapsed);
+    } else if constexpr (is_channel<T>) {
+        using V = channel_value<T>;
+        V const pending = decode_value<V>(in);
+        V const current = decode_value<V>(in);
+        value.set(current);  // both values, through the channel's own cycle boundary
+        value.latch();
+        value.commit();
+        value.set(pending);
     } else if constexpr (is_aggregate_class<T>()) {
         bsc::detail::for_each_field(value, [&](auto& field) { decode(field, in, frame); });
     } else {
-        std::memcpy(&value, in, sizeof(T));
-        in += sizeof(T);
+        value = decode_value<T>(in);
     }
 }
 

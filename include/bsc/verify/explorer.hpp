@@ -60,7 +60,7 @@ public:
         std::vector<std::byte> scratch(key_size);
         state const init = model_.initial();
         model_.encode(init, scratch.data());
-        insert(scratch.data(), none, 0, 0);
+        insert(scratch.data(), none, 0);
         std::size_t level_end = 1;
         for (std::size_t i = 0; i < count(); ++i) {
             if (i == level_end) {
@@ -72,7 +72,7 @@ public:
             state const s = model_.decode(key(i));
             model_.successors(s, [&](std::uint16_t label, state const& next) {
                 model_.encode(next, scratch.data());
-                std::uint32_t const j = insert(scratch.data(), static_cast<std::uint32_t>(i), label, depth_[i] + 1u);
+                std::uint32_t const j = insert(scratch.data(), static_cast<std::uint32_t>(i), label);
                 edge_to_.push_back(j);
                 edge_label_.push_back(label);
             });
@@ -111,7 +111,7 @@ private:
         return h * 0x9e3779b97f4a7c15ull;
     }
 
-    std::uint32_t insert(std::byte const* k, std::uint32_t from, std::uint16_t label, std::uint32_t depth) {
+    std::uint32_t insert(std::byte const* k, std::uint32_t from, std::uint16_t label) {
         if ((count() + 1) * 2 > table_.size()) grow();
         std::size_t const mask = table_.size() - 1;
         for (std::size_t slot = hash(k) & mask;; slot = (slot + 1) & mask) {
@@ -122,7 +122,6 @@ private:
                 keys_.insert(keys_.end(), k, k + key_size);
                 parent_.push_back(from);
                 via_.push_back(label);
-                depth_.push_back(depth);
                 return index;
             }
             if (std::memcmp(key(at), k, key_size) == 0) return at;
@@ -142,7 +141,7 @@ private:
 
     std::size_t memory() const {
         return keys_.capacity() + table_.capacity() * 4 + parent_.capacity() * 4 + via_.capacity() * 2 +
-               depth_.capacity() * 4 + edge_begin_.capacity() * 4 + edge_to_.capacity() * 4 +
+               edge_begin_.capacity() * 4 + edge_to_.capacity() * 4 +
                edge_label_.capacity() * 2;
     }
 
@@ -166,7 +165,6 @@ private:
     std::vector<std::uint32_t> table_;
     std::vector<std::uint32_t> parent_;
     std::vector<std::uint16_t> via_;
-    std::vector<std::uint32_t> depth_;
     std::vector<std::uint32_t> edge_begin_;
     std::vector<std::uint32_t> edge_to_;
     std::vector<std::uint16_t> edge_label_;

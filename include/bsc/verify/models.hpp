@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <utility>
 
@@ -27,9 +28,14 @@ template <class T>
 struct codec {
     static constexpr std::size_t key_size = encoded_size<T>();
     duration period{};
-    void encode(T const& s, std::byte* out) const { detail::encode(s, out, time_frame{origin + period, period}); }
+    void encode(T const& s, std::byte* out) const {
+        std::memset(out, 0, key_size);
+        bit_writer writer{out};
+        detail::encode(s, writer, time_frame{origin + period, period});
+    }
     T decode(T prototype, std::byte const* in) const {
-        detail::decode(prototype, in, time_frame{origin, period});
+        bit_reader reader{in};
+        detail::decode(prototype, reader, time_frame{origin, period});
         return prototype;
     }
 };
