@@ -362,9 +362,10 @@ struct tiny_queue : bsc::default_policy {
 
 TEST_CASE("queue overflow is reported, the extra event is dropped and the rest is processed") {
     static constexpr auto chart = bsc::make_chart<ctx>(
-        bsc::composite<Root>(bsc::initial<A>),
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A> + bsc::event<go> / (bsc::raise(ping{}), bsc::raise(ping{}), bsc::raise(ping{})),
-        bsc::state<A> + bsc::event<ping> / [](ctx& c) { ++c.value; }, bsc::state<A> + bsc::event<back> = bsc::state<A>);
+        bsc::state<A> + bsc::event<ping> / [](ctx& c) { ++c.value; }, bsc::state<A> + bsc::event<back> = bsc::state<B>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>);
     bsc::machine<decltype(chart), tiny_queue> m{chart, ctx{}};
     CHECK(m.dispatch(go{}) == bsc::outcome::queue_overflow);
     CHECK(m.context().value == 2);
@@ -375,9 +376,10 @@ TEST_CASE("queue overflow is reported, the extra event is dropped and the rest i
 
 TEST_CASE("events that keep raising each other are stopped and reported as a livelock") {
     static constexpr auto chart = bsc::make_chart<ctx>(
-        bsc::composite<Root>(bsc::initial<A>),
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A> + bsc::event<ping> / (bsc::raise(pong{}), bsc::action([](ctx& c) { ++c.value; })),
-        bsc::state<A> + bsc::event<pong> / bsc::raise(ping{}), bsc::state<A> + bsc::event<back> = bsc::state<A>);
+        bsc::state<A> + bsc::event<pong> / bsc::raise(ping{}), bsc::state<A> + bsc::event<back> = bsc::state<B>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>);
     bsc::machine m{chart, ctx{}};
     CHECK(m.dispatch(ping{}) == bsc::outcome::livelock);
     CHECK(m.queue().empty());

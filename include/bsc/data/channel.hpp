@@ -18,7 +18,7 @@ template <class T>
 class input : detail::channel_base {
 public:
     constexpr input() = default;
-    constexpr input(T initial) : next_(initial), now_(initial) {}  // NOLINT: a channel is its value
+    constexpr explicit input(T initial) : next_(initial), now_(initial) {}
     /// The latched value, as guards and actions see it during this cycle.
     constexpr T const& get() const { return now_; }
     constexpr operator T const&() const { return now_; }  // NOLINT
@@ -41,7 +41,7 @@ template <class T>
 class output : detail::channel_base {
 public:
     constexpr output() = default;
-    constexpr output(T initial) : next_(initial), now_(initial) {}  // NOLINT
+    constexpr explicit output(T initial) : next_(initial), now_(initial) {}
     /// The published value: what the environment and other charts read.
     constexpr T const& get() const { return now_; }
     constexpr operator T const&() const { return now_; }  // NOLINT
@@ -64,7 +64,7 @@ template <class T>
 class inout : detail::channel_base {
 public:
     constexpr inout() = default;
-    constexpr inout(T initial) : next_(initial), now_(initial) {}  // NOLINT
+    constexpr explicit inout(T initial) : next_(initial), now_(initial) {}
     constexpr T const& get() const { return now_; }
     constexpr operator T const&() const { return now_; }  // NOLINT
     constexpr void set(T value) { next_ = value; }
