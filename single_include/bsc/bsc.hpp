@@ -1431,39 +1431,60 @@ constexpr int find_unreachable(topology<N> const&, std::array<bool, N> const& re
     return -1;
 }
 
-// A basic state x is left by a transition with a target whose domain is above x and whose
-// source is active whenever x may be: x itself or an ancestor (then the domain is above x
-// too), or a state in another region of a parallel ancestor of x, if the domain is above that
-// parallel state. Computed with two flags per state, so the cost is linear in the chart.
+// Whether entering `target` necessarily enters basic state x again: x itself, or an ancestor
+// whose initial children (or history, which remembers x) lead back down to x.
+template <std::size_t N>
+constexpr bool reenters(topology<N> const& t, int target, int x) {
+    if (target == x) return true;
+    if (!t.is_proper_ancestor(target, x)) return false;
+    for (int c = target; c != x;) {
+        auto const ci = static_cast<std::size_t>(c);
+        int const toward = t.child_toward(c, x);
+        if (t.kinds[ci] == kind::composite) {
+            if (t.hist[ci] == history::deep) return true;
+            if (t.hist[ci] == history::none && t.initial[ci] != toward) return false;
+        }
+        c = toward;
+    }
+    return true;
+}
+
+// A basic state x has a way out if some transition with a target can fire while x is active,
+// exits x (its domain is above x) and does not necessarily enter x again. Such a transition
+// leaves x itself or an ancestor of x, or a state in another region of a parallel ancestor of x
+// (then its domain must be above that parallel state). Rows are bucketed by source, in
+// document order, so both kinds are found without scanning every row for every state.
 template <std::size_t N, std::size_t R>
 constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::array<bool, N> const& reach) {
-    std::array<bool, N> leaves_from{};     // a targeted transition leaves this state
-    std::array<bool, N> region_exits{};    // ... leaves, from inside this region, its parallel parent
-    std::array<int, N> exiting_regions{};  // per parallel state: how many of its regions do so
-    for (std::size_t i = 0; i < R; ++i) {
-        if (r.kinds[i] != row_kind::transition || r.target[i] < 0) continue;
-        int const src = r.source[i];
-        leaves_from[static_cast<std::size_t>(src)] = true;
-        for (int a = src; t.parent[static_cast<std::size_t>(a)] >= 0; a = t.parent[static_cast<std::size_t>(a)]) {
-            int const p = t.parent[static_cast<std::size_t>(a)];
-            if (t.kinds[static_cast<std::size_t>(p)] == kind::parallel && t.is_proper_ancestor(r.domain[i], p) &&
-                !region_exits[static_cast<std::size_t>(a)]) {
-                region_exits[static_cast<std::size_t>(a)] = true;
-                ++exiting_regions[static_cast<std::size_t>(p)];
-            }
+    std::array<int, N + 1> begin{};
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.kinds[i] == row_kind::transition && r.target[i] >= 0) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
+    for (std::size_t s = 0; s < N; ++s) begin[s + 1] += begin[s];
+    std::array<int, R + 1> order{};
+    std::array<int, N + 1> fill = begin;
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.kinds[i] == row_kind::transition && r.target[i] >= 0)
+            order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
+    // Rows whose source lies in the states [lo, hi) of document order.
+    auto way_out_among = [&](int lo, int hi, int x, int above) {
+        for (int k = begin[static_cast<std::size_t>(lo)]; k < begin[static_cast<std::size_t>(hi)]; ++k) {
+            auto const i = static_cast<std::size_t>(order[static_cast<std::size_t>(k)]);
+            if (t.is_proper_ancestor(r.domain[i], above) && !reenters(t, r.target[i], x)) return true;
         }
-    }
-    for (std::size_t x = 1; x < N; ++x) {
-        if (t.kinds[x] != kind::basic || !reach[x]) continue;
+        return false;
+    };
+    for (std::size_t xi = 1; xi < N; ++xi) {
+        if (t.kinds[xi] != kind::basic || !reach[xi]) continue;
+        int const x = static_cast<int>(xi);
         bool leaves = false;
-        for (int a = static_cast<int>(x); a > 0 && !leaves; a = t.parent[static_cast<std::size_t>(a)]) {
-            auto const ai = static_cast<std::size_t>(a);
-            int const p = t.parent[ai];
-            leaves = leaves_from[ai] ||
-                     (t.kinds[static_cast<std::size_t>(p)] == kind::parallel &&
-                      exiting_regions[static_cast<std::size_t>(p)] - int{region_exits[ai]} > 0);
+        for (int a = x; a > 0 && !leaves; a = t.parent[static_cast<std::size_t>(a)]) {
+            leaves = way_out_among(a, a + 1, x, x);
+            int const p = t.parent[static_cast<std::size_t>(a)];
+            if (!leaves && t.kinds[static_cast<std::size_t>(p)] == kind::parallel)
+                leaves = way_out_among(p + 1, a, x, p) || way_out_among(t.end[static_cast<std::size_t>(a)],
+                                                                       t.end[static_cast<std::size_t>(p)], x, p);
         }
-        if (!leaves) return static_cast<int>(x);
+        if (!leaves) return x;
     }
     return -1;
 }
@@ -2145,7 +2166,7 @@ template <class T>
 class input : detail::channel_base {
 public:
     constexpr input() = default;
-    constexpr input(T initial) : next_(initial), now_(initial) {}  // NOLINT: a channel is its value
+    constexpr explicit input(T initial) : next_(initial), now_(initial) {}
     /// The latched value, as guards and actions see it during this cycle.
     constexpr T const& get() const { return now_; }
     constexpr operator T const&() const { return now_; }  // NOLINT
@@ -2168,7 +2189,7 @@ template <class T>
 class output : detail::channel_base {
 public:
     constexpr output() = default;
-    constexpr output(T initial) : next_(initial), now_(initial) {}  // NOLINT
+    constexpr explicit output(T initial) : next_(initial), now_(initial) {}
     /// The published value: what the environment and other charts read.
     constexpr T const& get() const { return now_; }
     constexpr operator T const&() const { return now_; }  // NOLINT
@@ -2191,7 +2212,7 @@ template <class T>
 class inout : detail::channel_base {
 public:
     constexpr inout() = default;
-    constexpr inout(T initial) : next_(initial), now_(initial) {}  // NOLINT
+    constexpr explicit inout(T initial) : next_(initial), now_(initial) {}
     constexpr T const& get() const { return now_; }
     constexpr operator T const&() const { return now_; }  // NOLINT
     constexpr void set(T value) { next_ = value; }
@@ -2631,6 +2652,17 @@ struct default_policy {
     static constexpr std::size_t max_eventless_steps = 64;
     /// Internal events processed within one dispatch before it reports a livelock.
     static constexpr std::size_t max_internal_events = 256;
+    /// true (SCXML): construction and dispatch take eventless transitions until none is
+    /// enabled. false (BSC scan): eventless transitions are taken only by step(), at most one
+    /// per component per cycle.
+    static constexpr bool settle_eventless = true;
+};
+
+/// The limits of a machine driven by BSC execution cycles (seed 002): eventless transitions
+/// are condition-driven and run only in step(), so a chart whose components keep reacting to
+/// each other (a PLC scan loop) neither livelocks at construction nor in dispatch.
+struct scan_policy : default_policy {
+    static constexpr bool settle_eventless = false;
 };
 
 /// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
@@ -3294,6 +3326,8 @@ private:
     // Settles the machine after a microstep: eventless transitions until none is enabled,
     // then the raised events one by one, each followed by its eventless transitions.
     constexpr outcome finish(bool consumed) {
+        if constexpr (!Policy::settle_eventless)
+            return drain_queue(consumed);
         // The common case, kept inline: nothing raised, and no eventless transition to try.
         if constexpr (!plan::has_trigger(detail::eventless_id))
             if (queue_.empty() && !queue_.overflowed())
@@ -3391,6 +3425,7 @@ struct system_report {
     int transitions = 0;  ///< condition-driven transitions fired by all actors
     bool queue_overflow = false;
     bool livelock = false;
+    bool halted = false;  ///< some actor is halted (a final child of its root is active)
 };
 
 template <class Actors, class Order, class... Links>
@@ -3420,6 +3455,7 @@ private:
         report.transitions += r.transitions;
         report.queue_overflow = report.queue_overflow || r.status == outcome::queue_overflow;
         report.livelock = report.livelock || r.status == outcome::livelock;
+        report.halted = report.halted || r.status == outcome::halted || (actors.*Actor).halted();
     }
 };
 
