@@ -181,3 +181,37 @@ TEST_CASE("AG EF p: from every reachable state a p-state can be reached") {
     REQUIRE(v.fails());
     CHECK(v.trace.back().configuration == "Root D");  // the first state cut off from A
 }
+
+namespace ver {
+struct item {
+    std::uint8_t id = 0;
+    bool checked = false;
+};
+struct carrier {
+    bsc::input<item> incoming;
+    bsc::output<item> outgoing;
+    bsc::input<bool> flag;
+};
+}  // namespace ver
+
+TEST_CASE("the codec encodes channels of aggregates member by member, and decodes them back") {
+    using codec = bsc::verify::detail::codec<ver::carrier>;
+    // 2 x (8 + 1) bits per item channel, 2 bits for the flag: 38 bits.
+    CHECK(codec::key_size == 5);
+    ver::carrier c{};
+    c.incoming.set({7, true});
+    c.incoming.latch();
+    c.incoming.set({9, false});
+    c.outgoing.set({3, true});
+    c.flag.set(true);
+    std::vector<std::byte> key(codec::key_size);
+    codec{}.encode(c, key.data());
+    ver::carrier const back = codec{}.decode(ver::carrier{}, key.data());
+    CHECK(back.incoming.get().id == 7);
+    CHECK(back.incoming.get().checked);
+    CHECK(back.incoming.pending().id == 9);
+    CHECK(back.outgoing.pending().id == 3);
+    CHECK(back.outgoing.get().id == 0);
+    CHECK(back.flag.pending());
+    CHECK_FALSE(back.flag.get());
+}

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -30,12 +31,14 @@ struct codec {
     duration period{};
     void encode(T const& s, std::byte* out) const {
         std::memset(out, 0, key_size);
-        bit_writer writer{out};
+        bit_writer writer{out, encoded_bits<T>()};
         detail::encode(s, writer, time_frame{origin + period, period});
+        if (writer.bits() != encoded_bits<T>()) std::abort();  // the size computed from the types is exact
     }
     T decode(T prototype, std::byte const* in) const {
-        bit_reader reader{in};
+        bit_reader reader{in, encoded_bits<T>()};
         detail::decode(prototype, reader, time_frame{origin, period});
+        if (reader.bits() != encoded_bits<T>()) std::abort();
         return prototype;
     }
 };
