@@ -14,3 +14,4 @@
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/system.hpp>
+#include <bsc/table/engine.hpp>

@@ -61,3 +61,19 @@ TEST_CASE("construction and dispatch allocate nothing") {
     CHECK(n == 101);
     CHECK(after == before);
 }
+
+TEST_CASE("the table-driven machine allocates nothing either") {
+    std::size_t const before = allocations;
+    int n = 0;
+    {
+        bsc::table::machine m{alloc::chart, alloc::ctx{}};
+        for (int i = 0; i < 100; ++i) {
+            m.dispatch(alloc::go{});
+            m.dispatch(alloc::ping{});
+        }
+        n = m.context().n;
+    }
+    std::size_t const after = allocations;
+    CHECK(n == 101);
+    CHECK(after == before);
+}

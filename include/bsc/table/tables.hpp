@@ -248,6 +248,9 @@ private:
         return row;
     }
 
+    static_assert(analysis::N <= 0xffff, "bsc::table: a chart has at most 65535 states");
+    static_assert(transition_count <= 0x7fff, "bsc::table: a chart has at most 32767 transitions");
+
 public:
     /// Number of rows of each table.
     static constexpr std::size_t state_count = static_cast<std::size_t>(analysis::N);

@@ -1,0 +1,241 @@
+#pragma once
+// Drives the compiled back end (bsc::machine) and the table-driven one (bsc::table::machine)
+// side by side with the same events and compares them after every step: the outcome, the
+// active configuration's bytes, active_states(), is<S>() for every state, halted(), the
+// queue, the context and the observer's full trace. Used by differential_test.cpp and by the
+// fuzz target tests/fuzz/differential_fuzz.cpp. A fixture (see fixtures.hpp) provides chart,
+// policy, initial() and perturb(context&, r), and same(a, b) if its context has no ==.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include <bsc/bsc.hpp>
+#include <bsc/table/engine.hpp>
+
+namespace bsc_diff {
+
+/// An event type no chart handles: dispatched with bsc::allow_unhandled.
+struct stray {};
+
+/// One observer call: an entry (+), an exit (-) or a transition (>) with the type of the event
+/// it received and the event's data (if it has an `n`).
+struct record {
+    char what = '+';
+    std::string_view state;   // the state entered or left, or the transition's source
+    std::string_view target;  // a transition's target ("internal" for an internal transition)
+    std::string_view event;   // the event type
+    int data = 0;
+    friend bool operator==(record const&, record const&) = default;
+};
+
+/// An observer that records what trace_observer records, and more: the event each transition
+/// received. Records hold views of the names bsc keeps, so recording costs no string copy.
+struct recorder {
+    std::vector<record>* log;
+    void on_entry(auto state) const { log->push_back({'+', state.name, {}, {}, 0}); }
+    void on_exit(auto state) const { log->push_back({'-', state.name, {}, {}, 0}); }
+    template <class E>
+    void on_transition(auto source, auto target, E const& e) const {
+        int data = 0;
+        if constexpr (requires { e.n; })
+            data = e.n;
+        log->push_back({'>', source.name, target.name, bsc::name_of<E>, data});
+    }
+};
+
+/// A trace as text: "-A1 A1>A2(go) +A2".
+inline std::string text(std::vector<record> const& trace) {
+    std::string out;
+    for (auto const& r : trace) {
+        if (!out.empty())
+            out += ' ';
+        if (r.what == '>') {
+            out.append(r.state).append(">").append(r.target).append("(").append(r.event);
+            out.append(":").append(std::to_string(r.data)).append(")");
+        } else {
+            out += r.what;
+            out.append(r.state);
+        }
+    }
+    return out;
+}
+
+inline char const* name(bsc::outcome o) {
+    switch (o) {
+        case bsc::outcome::consumed: return "consumed";
+        case bsc::outcome::ignored: return "ignored";
+        case bsc::outcome::queue_overflow: return "queue_overflow";
+        case bsc::outcome::livelock: return "livelock";
+        case bsc::outcome::halted: return "halted";
+    }
+    return "?";
+}
+
+/// How often each outcome was seen, and how many restarts after a halt.
+struct tally {
+    std::size_t steps = 0;
+    std::size_t outcomes[5] = {};
+    std::size_t restarts = 0;
+};
+
+template <class Fixture>
+class twin {
+public:
+    using chart_type = std::remove_cvref_t<decltype(Fixture::chart)>;
+    using policy = typename Fixture::policy;
+    using compiled_type = bsc::machine<chart_type, policy, recorder>;
+    using table_type = bsc::table::machine<chart_type, policy, recorder>;
+    using events = typename compiled_type::event_types;
+    using tags = typename bsc::detail::analysis<chart_type>::tags;
+
+    static_assert(std::is_same_v<typename compiled_type::configuration_type, typename table_type::configuration_type>);
+    static_assert(std::is_same_v<typename compiled_type::queue_type, typename table_type::queue_type>);
+    static_assert(std::is_same_v<events, typename table_type::event_types>);
+
+    /// Number of choices step() maps a random number onto: the chart's events, an unhandled
+    /// event, and a write to the context by the environment.
+    static constexpr std::uint32_t choices = static_cast<std::uint32_t>(events::size) + 2;
+
+    twin() = default;
+    twin(twin const&) = delete;
+    twin& operator=(twin const&) = delete;
+
+    /// (Re)starts both machines; returns a description of the first difference, or "".
+    std::string start() {
+        compiled_trace_.clear();
+        table_trace_.clear();
+        compiled_.emplace(Fixture::chart, Fixture::initial(), recorder{&compiled_trace_});
+        table_.emplace(Fixture::chart, Fixture::initial(), recorder{&table_trace_});
+        return compare("construction", compiled_->last_outcome(), table_->last_outcome());
+    }
+
+    /// One step chosen by `choice` (below `choices`), with `arg` as the event's data or the
+    /// environment's write. A halted pair is restarted one time in four instead.
+    std::string step(std::uint32_t choice, std::uint32_t arg) {
+        if (!compiled_)
+            return start();
+        ++tally_.steps;
+        if (compiled_->halted() && table_->halted() && arg % 4 == 0) {
+            ++tally_.restarts;
+            return start();
+        }
+        if (choice < events::size)
+            return dispatch_at(choice, static_cast<int>(arg % 8));
+        if (choice == events::size) {
+            auto const a = compiled_->dispatch(stray{}, bsc::allow_unhandled);
+            auto const b = table_->dispatch(stray{}, bsc::allow_unhandled);
+            return compare("stray", a, b);
+        }
+        Fixture::perturb(compiled_->context(), arg);
+        Fixture::perturb(table_->context(), arg);
+        return compare("environment write", compiled_->last_outcome(), table_->last_outcome());
+    }
+
+    compiled_type const& compiled() const { return *compiled_; }
+    table_type const& table() const { return *table_; }
+    tally const& counts() const { return tally_; }
+
+private:
+    template <class E>
+    static E make_event(int n) {
+        if constexpr (requires { E{n}; } && !std::is_empty_v<E>)
+            return E{n};
+        else
+            return E{};
+    }
+
+    template <std::size_t I = 0>
+    std::string dispatch_at(std::uint32_t choice, int n) {
+        if constexpr (I < events::size) {
+            if (choice != I)
+                return dispatch_at<I + 1>(choice, n);
+            using E = bsc::detail::at<I, events>;
+            E const e = make_event<E>(n);
+            auto const a = compiled_->dispatch(e);
+            auto const b = table_->dispatch(e);
+            return compare(bsc::name_of<E>, a, b);
+        } else {
+            return "no such event";
+        }
+    }
+
+    // A fixture whose context has no operator== provides same(a, b).
+    static bool same_context(typename compiled_type::context_type const& a,
+                             typename compiled_type::context_type const& b) {
+        if constexpr (requires { Fixture::same(a, b); })
+            return Fixture::same(a, b);
+        else
+            return a == b;
+    }
+
+    template <class... Tags>
+    bool same_is_for(bsc::detail::type_list<Tags...>) const {
+        return ((compiled_->template is<Tags>() == table_->template is<Tags>()) && ...);
+    }
+    template <class... Tags>
+    std::string is_differences(bsc::detail::type_list<Tags...>) const {
+        std::string out;
+        (
+            [&] {
+                if (compiled_->template is<Tags>() != table_->template is<Tags>())
+                    out += " is<" + std::string(bsc::name_of<Tags>) + ">";
+            }(),
+            ...);
+        return out;
+    }
+
+    std::string compare(std::string_view what, bsc::outcome a, bsc::outcome b) {
+        ++tally_.outcomes[static_cast<std::size_t>(a)];
+        auto const states_c = compiled_->active_states();
+        auto const states_t = table_->active_states();
+        bool same_states = states_c.size() == states_t.size();
+        for (std::size_t i = 0; same_states && i < states_c.size(); ++i) same_states = states_c[i] == states_t[i];
+        bool const same_is = same_is_for(tags{});
+        bool const same = a == b && compiled_->last_outcome() == table_->last_outcome() &&
+                          compiled_->active_configuration() == table_->active_configuration() && same_states &&
+                          compiled_->halted() == table_->halted() &&
+                          compiled_->queue().size() == table_->queue().size() &&
+                          same_context(compiled_->context(), table_->context()) && compiled_trace_ == table_trace_ &&
+                          same_is;
+        std::string report;
+        if (!same) {
+            std::string diff;
+            if (a != b)
+                diff += " outcome";
+            if (compiled_->last_outcome() != table_->last_outcome())
+                diff += " last_outcome";
+            if (!(compiled_->active_configuration() == table_->active_configuration()))
+                diff += " configuration";
+            if (!same_states)
+                diff += " active_states";
+            if (compiled_->halted() != table_->halted())
+                diff += " halted";
+            if (compiled_->queue().size() != table_->queue().size())
+                diff += " queue";
+            if (!same_context(compiled_->context(), table_->context()))
+                diff += " context";
+            if (compiled_trace_ != table_trace_)
+                diff += " trace";
+            diff += is_differences(tags{});
+            report = "after " + std::string(what) + " (step " + std::to_string(tally_.steps) + "), differ:" + diff +
+                     "\n  compiled: " + name(a) + " [" + states_c.joined() + "] " + text(compiled_trace_) +
+                     "\n  table:    " + name(b) + " [" + states_t.joined() + "] " + text(table_trace_);
+        }
+        compiled_trace_.clear();
+        table_trace_.clear();
+        return report;
+    }
+
+    std::vector<record> compiled_trace_;
+    std::vector<record> table_trace_;
+    std::optional<compiled_type> compiled_;
+    std::optional<table_type> table_;
+    tally tally_;
+};
+
+}  // namespace bsc_diff

@@ -1,0 +1,361 @@
+#pragma once
+// Hand-written charts shared by the back-end equivalence tests (differential_test.cpp and
+// tests/fuzz/differential_fuzz.cpp). Each fixture is a struct with
+//   chart                    the chart
+//   policy                   the limits it runs under
+//   initial()                the context it starts from
+//   perturb(context&, r)     a write by the environment between two dispatches
+// Their contexts keep a hash of every action, entry and exit in the order they ran, so a
+// difference of order shows in the context as well as in the observer's trace.
+
+#include <cstdint>
+
+#include <bsc/bsc.hpp>
+
+namespace fx {
+
+struct go {};
+struct back {};
+struct tick {};
+struct ping {};
+struct pong {};
+struct e1 {};
+struct num {
+    int n = 0;
+};
+
+struct ctx {
+    int a = 0;
+    int b = 0;
+    int c = 0;
+    std::uint32_t log = 0;  // the order of everything that ran
+    friend constexpr bool operator==(ctx const&, ctx const&) = default;
+};
+
+constexpr std::uint32_t mix(std::uint32_t h, std::uint32_t v) { return (h ^ v) * 16777619u + 1u; }
+
+/// An action (entry, exit or transition) that records `id` in the context's log.
+template <int Id>
+inline constexpr auto note = bsc::action([](ctx& c) { c.log = mix(c.log, Id); });
+
+inline constexpr auto a_even = bsc::guard([](ctx const& c) { return c.a % 2 == 0; });
+inline constexpr auto a_big = bsc::guard([](ctx const& c) { return c.a > 2; });
+inline constexpr auto n_even = bsc::guard([](ctx const&, num const& e) { return e.n % 2 == 0; });
+inline constexpr auto n_triple = bsc::guard([](ctx const&, num const& e) { return e.n % 3 == 0; });
+inline constexpr auto add_n = bsc::action([](ctx& c, num const& e) {
+    c.a = (c.a + e.n) % 8;
+    c.log = mix(c.log, 100u + static_cast<std::uint32_t>(e.n));
+});
+inline constexpr auto inc_a = bsc::action([](ctx& c) { c.a = (c.a + 1) % 8; });
+inline constexpr auto inc_b = bsc::action([](ctx& c) { c.b = (c.b + 1) % 8; });
+
+inline void perturb_ab(ctx& c, std::uint32_t r) {
+    if (r & 1u)
+        c.a = static_cast<int>((r >> 1) % 8);
+    else
+        c.b = static_cast<int>((r >> 1) % 8);
+}
+
+// ---- hierarchy: nesting, domains, self transitions, transitions of the root, internal ones -----
+namespace hier {
+struct Root;
+struct A;
+struct A1;
+struct A11;
+struct A12;
+struct A2;
+struct B;
+struct B1;
+struct B2;
+struct B21;
+struct B22;
+struct C;
+}  // namespace hier
+
+struct hierarchy {
+    using policy = bsc::default_policy;
+    static constexpr auto chart = [] {
+        using namespace hier;
+        using bsc::state, bsc::event, bsc::on_entry, bsc::on_exit;
+        return bsc::make_chart<ctx>(
+            bsc::composite<Root>(bsc::initial<A>,
+                                 bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A11>, state<A12>),
+                                                   state<A2>),
+                                 bsc::composite<B>(bsc::initial<B1>, state<B1>,
+                                                   bsc::composite<B2>(bsc::initial<B21>, state<B22>)),
+                                 state<C>),
+            state<A11> + event<go> = state<A12>, state<A12> + event<go> / note<1> = state<A2>,
+            state<A2> + event<go> = state<B>, state<B1> + event<go> = state<B22>,
+            state<B22> + event<go> = state<B21>, state<B21> + event<go> / note<2> = state<C>,
+            state<C> + event<go> = state<A11>,
+            state<A> + event<back> = state<B>,                  // an ancestor's transition
+            state<A1> + event<back>[a_even] / inc_a = state<A1>,  // external self-transition of a composite
+            state<B> + event<back> = state<A>, state<B2> + event<back> = state<B>,  // to an ancestor
+            state<C> + event<back> = state<A2>,
+            state<Root> + event<tick> = state<B2>,               // exits and re-enters the root
+            state<A1> + event<tick>[a_big] = state<A12>,         // to a descendant
+            state<C> + event<tick> / note<3> = state<C>,
+            state<A> + event<ping> / note<4>,                    // internal
+            state<B2> + event<ping> / inc_a, state<Root> + event<ping> / inc_b,
+            state<A12> + event<num>[n_even] / add_n = state<A11>, state<A12> + event<num>[n_triple] = state<B>,
+            state<A> + event<num> / add_n, state<B22> + event<num>[n_even] / add_n = state<B1>,
+            state<Root> + event<e1>[a_even] = state<Root>,      // the root re-enters itself
+            state<Root> + on_entry / note<10>, state<Root> + on_exit / note<11>, state<A> + on_entry / note<12>,
+            state<A> + on_exit / note<13>, state<A1> + on_entry / note<14>, state<A1> + on_exit / note<15>,
+            state<A11> + on_entry / note<16>, state<A12> + on_exit / note<17>, state<B> + on_entry / note<18>,
+            state<B> + on_exit / note<19>, state<B2> + on_entry / note<20>, state<B2> + on_exit / note<21>,
+            state<B22> + on_entry / note<22>, state<C> + on_exit / note<23>, state<C> + on_entry / note<24>,
+            state<C> + on_entry / note<25>);  // two entry actions: declaration order
+    }();
+    static ctx initial() { return {}; }
+    static void perturb(ctx& c, std::uint32_t r) { perturb_ab(c, r); }
+};
+
+// ---- parallel regions: broadcast, conflicts, preemption, nested parallel states ----------------
+namespace par {
+struct Root;
+struct P;
+struct R1;
+struct R2;
+struct X1;
+struct X2;
+struct Y1;
+struct Y2;
+struct Q;
+struct Q1;
+struct Z1;
+struct Z2;
+struct W;
+struct Out;
+}  // namespace par
+
+struct parallel {
+    using policy = bsc::default_policy;
+    static constexpr auto chart = [] {
+        using namespace par;
+        using bsc::state, bsc::event, bsc::on_entry, bsc::on_exit;
+        return bsc::make_chart<ctx>(
+            bsc::composite<Root>(
+                bsc::initial<P>,
+                bsc::parallel<P>(bsc::composite<R1>(bsc::initial<X1>, state<X2>),
+                                 bsc::composite<R2>(bsc::initial<Y1>, state<Y2>,
+                                                    bsc::parallel<Q>(bsc::composite<Q1>(bsc::initial<Z1>, state<Z2>),
+                                                                     state<W>))),
+                state<Out>),
+            state<X1> + event<go> = state<X2>, state<Y1> + event<go> = state<Y2>,
+            state<X2> + event<back> = state<X1>, state<Y2> + event<back> = state<Y1>,
+            state<P> + event<tick> = state<Out>, state<Out> + event<tick> = state<Y2>,
+            state<X2> + event<ping> / note<1> = state<X1>, state<Y2> + event<ping> / note<2> = state<Out>,
+            state<X2> + event<pong> / note<3> = state<Out>, state<Y2> + event<pong> / note<4> = state<Y1>,
+            state<P> + event<e1> = state<Out>, state<Y2> + event<e1> = state<Y1>,
+            state<X1> + event<e1> / note<5> = state<X2>, state<Y2> + event<num> / add_n,
+            state<Y1> + event<tick>[a_even] = state<Q>,  // preempts P + tick when a is even
+            state<Z1> + event<go> = state<Z2>, state<Z2> + event<go> = state<Z1>, state<W> + event<go> / note<6>,
+            state<Q> + event<back> = state<Y1>, state<Z2> + event<pong> / note<7> = state<Out>,
+            state<W> + event<e1> = state<Y2>, state<Z1> + event<num>[n_even] / add_n = state<Z2>,
+            state<W> + event<num>[n_triple] / note<8> = state<W>, state<Out> + event<go> = state<P>,
+            state<Out> + event<back> = state<X2>, state<Out> + event<num>[a_big] = state<Z2>,
+            state<P> + event<num>[a_even] / inc_a,  // internal, from above both regions
+            state<P> + on_entry / note<10>, state<P> + on_exit / note<11>, state<R1> + on_entry / note<12>,
+            state<R2> + on_exit / note<13>, state<Q> + on_entry / note<14>, state<Q> + on_exit / note<15>,
+            state<W> + on_entry / note<16>, state<Z2> + on_exit / note<17>, state<Out> + on_entry / note<18>,
+            state<X2> + on_entry / note<19>, state<Y2> + on_exit / note<20>);
+    }();
+    static ctx initial() { return {}; }
+    static void perturb(ctx& c, std::uint32_t r) { perturb_ab(c, r); }
+};
+
+// ---- history: shallow and deep, nested, with explicit targets inside ----------------------------
+namespace hist {
+struct Root;
+struct H;
+struct H1;
+struct K1;
+struct K2;
+struct L1;
+struct L2;
+struct H2;
+struct M;
+struct M1;
+struct M2;
+struct N;
+struct N1;
+struct N2;
+struct S;
+struct S1;
+struct S2;
+struct T1;
+struct T2;
+struct O;
+}  // namespace hist
+
+struct history {
+    using policy = bsc::default_policy;
+    static constexpr auto chart = [] {
+        using namespace hist;
+        using bsc::state, bsc::event, bsc::on_entry, bsc::on_exit;
+        return bsc::make_chart<ctx>(
+            bsc::composite<Root>(
+                bsc::initial<H>,
+                bsc::composite<H>(bsc::deep_history, bsc::initial<H1>,
+                                  bsc::composite<H1>(bsc::shallow_history, bsc::initial<K1>,
+                                                     bsc::composite<K2>(bsc::initial<L1>, state<L2>)),
+                                  bsc::parallel<H2>(bsc::composite<M>(bsc::initial<M1>, state<M2>),
+                                                    bsc::composite<N>(bsc::shallow_history, bsc::initial<N1>,
+                                                                      state<N2>))),
+                bsc::composite<S>(bsc::shallow_history, bsc::initial<S1>,
+                                  bsc::composite<S2>(bsc::initial<T1>, state<T2>)),
+                state<O>),
+            state<K1> + event<go> = state<K2>, state<L1> + event<go> = state<L2>, state<L2> + event<go> = state<K1>,
+            state<H1> + event<tick> = state<H2>, state<M1> + event<go> = state<M2>, state<M2> + event<go> = state<M1>,
+            state<N1> + event<tick> = state<N2>, state<N2> + event<tick> = state<H1>,
+            state<H> + event<back> = state<S>,          // leave H: its history is kept
+            state<S1> + event<go> = state<S2>, state<T1> + event<go> = state<T2>, state<T2> + event<go> = state<S1>,
+            state<S> + event<back> = state<O>, state<O> + event<back> = state<H>,  // re-enter H by history
+            state<O> + event<go> = state<S>,                                   // re-enter S by history
+            state<O> + event<pong> = state<L2>,   // explicit targets inside history states win
+            state<O> + event<e1> = state<N2>, state<O> + event<ping> = state<T2>,
+            state<S> + event<tick> = state<H>, state<H2> + event<back>[a_even] = state<M2>,
+            state<M> + event<ping> / inc_a = state<M>, state<N> + event<pong> = state<N>,
+            state<K2> + event<e1> = state<O>, state<H1> + event<num>[n_even] / add_n = state<H1>,
+            state<S2> + event<num>[n_triple] = state<T1>,
+            state<H> + on_entry / note<10>, state<H> + on_exit / note<11>, state<H1> + on_entry / note<12>,
+            state<K2> + on_entry / note<13>, state<L2> + on_exit / note<14>, state<H2> + on_entry / note<15>,
+            state<N> + on_exit / note<16>, state<N2> + on_entry / note<17>, state<S> + on_entry / note<18>,
+            state<T2> + on_entry / note<19>, state<O> + on_exit / note<20>);
+    }();
+    static ctx initial() { return {}; }
+    static void perturb(ctx& c, std::uint32_t r) { perturb_ab(c, r); }
+};
+
+// ---- guards over the context and eventless transitions ------------------------------------------
+namespace cond {
+struct Root;
+struct A;
+struct A1;
+struct A2;
+struct B;
+struct C;
+struct C1;
+struct C2;
+struct D;
+}  // namespace cond
+
+struct conditions {
+    using policy = bsc::default_policy;
+    static constexpr auto chart = [] {
+        using namespace cond;
+        using bsc::state, bsc::event, bsc::on_entry, bsc::on_exit;
+        auto const a_over_3 = bsc::guard([](ctx const& c) { return c.a > 3; });
+        auto const b_odd = bsc::guard([](ctx const& c) { return c.b % 2 == 1; });
+        auto const c_over_5 = bsc::guard([](ctx const& c) { return c.c > 5; });
+        auto const n_positive = bsc::guard([](ctx const&, num const& e) { return e.n > 0; });
+        return bsc::make_chart<ctx>(
+            bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, state<A2>), state<B>,
+                                 bsc::composite<C>(bsc::initial<C1>, state<C2>), state<D>),
+            state<A1>[a_over_3] / [](ctx& c) { c.a -= 2; } = state<A2>,  // eventless
+            state<A2>[b_odd] / inc_b = state<B>,
+            state<B> + event<num>[n_positive] / add_n = state<C>,
+            state<B> + event<num> / inc_b,  // an internal transition after a guarded one
+            state<C1> + event<go>[a_even] = state<C2>, state<C1> + event<go> = state<A>,
+            state<C2>[c_over_5] / [](ctx& c) { c.c = 0; } = state<A1>,
+            state<C2> + event<tick> / [](ctx& c) { c.c += 3; },
+            state<C>[!a_even && a_big] = state<D>,  // eventless from a composite
+            state<D> + event<go> / inc_a = state<B>, state<D>[b_odd && a_even] = state<A2>,
+            state<A> + event<num> / add_n, state<A2> + event<go> = state<A1>, state<B> + event<go> = state<A>,
+            state<A> + event<tick> / inc_b, state<B> + event<tick>[a_even] / inc_a = state<B>,
+            state<A> + on_entry / note<10>, state<A> + on_exit / note<11>, state<B> + on_entry / note<12>,
+            state<C2> + on_entry / note<13>, state<D> + on_exit / note<14>);
+    }();
+    static ctx initial() { return {}; }
+    static void perturb(ctx& c, std::uint32_t r) {
+        if (r % 3 == 2)
+            c.c = static_cast<int>((r >> 2) % 8);
+        else
+            perturb_ab(c, r);
+    }
+};
+
+// ---- raised events, a small queue and low limits: overflow and livelock outcomes ---------------
+namespace rais {
+struct Root;
+struct A;
+struct B;
+struct C;
+struct C1;
+struct C2;
+}  // namespace rais
+
+struct small_limits : bsc::default_policy {
+    static constexpr std::size_t queue_capacity = 3;
+    static constexpr std::size_t max_eventless_steps = 5;
+    static constexpr std::size_t max_internal_events = 12;
+};
+
+struct raising {
+    using policy = small_limits;
+    static constexpr auto chart = [] {
+        using namespace rais;
+        using bsc::state, bsc::event, bsc::on_entry, bsc::on_exit;
+        auto const a_is_7 = bsc::guard([](ctx const& c) { return c.a == 7; });
+        return bsc::make_chart<ctx>(
+            bsc::composite<Root>(bsc::initial<A>, state<B>, bsc::composite<C>(bsc::initial<C1>, state<C2>)),
+            state<A> + event<go> / (bsc::raise(ping{}), bsc::raise(pong{}), note<1>) = state<B>,
+            state<B> + event<ping> / note<2> = state<C>,
+            state<C> + event<pong> / bsc::seq(bsc::raise(back{}), note<3>),
+            state<C> + event<back> = state<A>,
+            state<B> + on_entry / bsc::raise(tick{}),
+            state<C1> + event<tick> = state<C2>,
+            state<C2> + event<tick>[a_even] / bsc::raise(tick{}),  // raises itself: stopped by the limit
+            state<C2> + event<go> = state<C1>,
+            state<A> + event<num>[([](ctx const&, num const& e) { return e.n > 3; })] /
+                           [](ctx& c, num const& e, auto& raise) {
+                               c.log = mix(c.log, static_cast<std::uint32_t>(e.n));
+                               raise(num{e.n - 1});
+                               raise(num{e.n - 2});  // the queue fills up: overflow
+                           },
+            state<A> + event<num> / inc_b, state<B> + event<num> / add_n, state<B> + event<back> = state<A>,
+            state<A>[a_is_7] / inc_b = state<B>,  // a guarded eventless cycle while a == 7
+            state<B>[a_is_7] / note<4> = state<A>,
+            state<C> + event<e1> / bsc::raise(e1{}),  // raises itself
+            state<A> + event<e1> = state<C2>,
+            state<A> + on_entry / note<10>, state<A> + on_exit / note<11>, state<C> + on_entry / note<12>,
+            state<C2> + on_exit / note<13>);
+    }();
+    static ctx initial() { return {}; }
+    static void perturb(ctx& c, std::uint32_t r) {
+        if (r % 4 == 0)
+            c.a = 7;
+        else
+            perturb_ab(c, r);
+    }
+};
+
+// ---- a final child of the root: the machine halts ------------------------------------------------
+namespace halt {
+struct Root;
+struct A;
+struct B;
+struct B1;
+struct B2;
+struct F;
+}  // namespace halt
+
+struct halting {
+    using policy = bsc::default_policy;
+    static constexpr auto chart = [] {
+        using namespace halt;
+        using bsc::state, bsc::event, bsc::on_entry, bsc::on_exit;
+        return bsc::make_chart<ctx>(
+            bsc::composite<Root>(bsc::initial<A>, bsc::composite<B>(bsc::initial<B1>, state<B2>), bsc::final_state<F>),
+            state<A> + event<go> = state<B>, state<B1> + event<go> = state<B2>,
+            state<B2> + event<go>[a_big] / note<1> = state<F>, state<B2> + event<back> = state<A>,
+            state<A> + event<tick> = state<B2>, state<B> + event<e1>[a_even] = state<F>,
+            state<B1> + event<num> / add_n, state<B> + event<back> = state<A>,
+            state<F> + on_entry / note<10>, state<B> + on_exit / note<11>);
+    }();
+    static ctx initial() { return {}; }
+    static void perturb(ctx& c, std::uint32_t r) { perturb_ab(c, r); }
+};
+
+}  // namespace fx

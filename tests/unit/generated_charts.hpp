@@ -1,0 +1,500 @@
+#pragma once
+// Random charts built at compile time: gen::chart<Seed> is a bsc chart whose state tree and
+// rows are computed by constexpr functions from Seed. States are the types gen::S<Seed, I>,
+// events gen::ev<Seed, K>; guards and actions are small function objects whose behaviour is
+// also drawn from the seed. The generator only produces charts that pass bsc's static checks:
+//   - a transition never joins two regions of a parallel state (targets are redrawn);
+//   - no two unguarded transitions share a source and a trigger, and no guarded one follows an
+//     unguarded one (later rows are dropped);
+//   - every eventless transition is guarded (no eventless livelock can be built);
+//   - every state is reachable (an unreachable one gets a transition from a reachable state);
+//   - every basic state has a way out (one is added where missing).
+// gen::generated<Seed> wraps a chart as a fixture for differential.hpp.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+#include <bsc/bsc.hpp>
+
+namespace gen {
+
+inline constexpr int max_states = 16;
+inline constexpr int max_rows = 80;
+inline constexpr int max_events = 5;
+
+enum class node_kind : std::uint8_t { basic, final_state, composite, parallel };
+enum class row_kind : std::uint8_t { transition, entry, exit };
+
+struct node {
+    int parent = -1;
+    node_kind kind = node_kind::basic;
+    int history = 0;  // 0 none, 1 shallow, 2 deep
+    int initial = -1;
+};
+
+struct row {
+    row_kind kind = row_kind::transition;
+    int from = 0;
+    int event = -1;  // -1: eventless
+    int to = -1;     // -1: internal
+    bool guarded = false;
+    bool acts = false;  // has an action
+};
+
+struct spec {
+    int n = 0;
+    std::array<node, max_states> nodes{};
+    int events = 0;
+    int r = 0;
+    std::array<row, max_rows> rows{};
+
+    constexpr int child_count(int s) const {
+        int c = 0;
+        for (int i = 0; i < n; ++i) c += nodes[static_cast<std::size_t>(i)].parent == s;
+        return c;
+    }
+    constexpr int child_at(int s, int k) const {
+        for (int i = 0; i < n; ++i)
+            if (nodes[static_cast<std::size_t>(i)].parent == s && k-- == 0)
+                return i;
+        return -1;
+    }
+    constexpr bool contains(int a, int d) const {
+        for (; d >= 0; d = nodes[static_cast<std::size_t>(d)].parent)
+            if (d == a)
+                return true;
+        return false;
+    }
+    constexpr int lca(int a, int b) const {
+        while (!contains(a, b)) a = nodes[static_cast<std::size_t>(a)].parent;
+        return a;
+    }
+    constexpr node_kind kind(int s) const { return nodes[static_cast<std::size_t>(s)].kind; }
+    constexpr bool orthogonal(int from, int to) const {
+        int const l = lca(from, to);
+        return kind(l) == node_kind::parallel && l != from && l != to;
+    }
+    // The domain (SCXML) of from -> to: the nearest composite proper ancestor of `from` that
+    // is a proper ancestor of `to`; -1 stands for the implicit top.
+    constexpr int domain(int from, int to) const {
+        for (int a = nodes[static_cast<std::size_t>(from)].parent; a >= 0; a = nodes[static_cast<std::size_t>(a)].parent)
+            if (kind(a) == node_kind::composite && a != to && contains(a, to))
+                return a;
+        return -1;
+    }
+    // Adding a row on (from, event) with this guardedness keeps the chart deterministic.
+    constexpr bool may_add(int from, int event, bool guarded) const {
+        for (int i = 0; i < r; ++i) {
+            auto const& x = rows[static_cast<std::size_t>(i)];
+            if (x.kind == row_kind::transition && x.from == from && x.event == event && !x.guarded)
+                return false;
+        }
+        return guarded || event >= 0;
+    }
+    constexpr void add(row x) { rows[static_cast<std::size_t>(r++)] = x; }
+
+    // bsc's reachability (guards ignored): default entries, then the targets of transitions
+    // whose source is reachable, with the default entries of parallel siblings on the way.
+    constexpr void mark_default(std::array<bool, max_states>& m, int s) const {
+        m[static_cast<std::size_t>(s)] = true;
+        auto const& nd = nodes[static_cast<std::size_t>(s)];
+        if (nd.kind == node_kind::composite)
+            mark_default(m, nd.initial);
+        else if (nd.kind == node_kind::parallel)
+            for (int k = 0; k < child_count(s); ++k) mark_default(m, child_at(s, k));
+    }
+    constexpr void mark_entry(std::array<bool, max_states>& m, int target) const {
+        for (int a = target; a >= 0; a = nodes[static_cast<std::size_t>(a)].parent) {
+            m[static_cast<std::size_t>(a)] = true;
+            int const p = nodes[static_cast<std::size_t>(a)].parent;
+            if (p >= 0 && kind(p) == node_kind::parallel)
+                for (int k = 0; k < child_count(p); ++k)
+                    if (child_at(p, k) != a)
+                        mark_default(m, child_at(p, k));
+        }
+        mark_default(m, target);
+    }
+    constexpr std::array<bool, max_states> reachable() const {
+        std::array<bool, max_states> m{};
+        mark_default(m, 0);
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (int i = 0; i < r; ++i) {
+                auto const& x = rows[static_cast<std::size_t>(i)];
+                if (x.kind != row_kind::transition || x.to < 0 || !m[static_cast<std::size_t>(x.from)] ||
+                    m[static_cast<std::size_t>(x.to)])
+                    continue;
+                mark_entry(m, x.to);
+                changed = true;
+            }
+        }
+        return m;
+    }
+    constexpr int child_toward(int a, int d) const {
+        while (nodes[static_cast<std::size_t>(d)].parent != a) d = nodes[static_cast<std::size_t>(d)].parent;
+        return d;
+    }
+    // Entering `target` necessarily enters x again: x itself, or an ancestor whose initial
+    // children (or history, which remembers x) lead back down to x.
+    constexpr bool reenters(int target, int x) const {
+        if (target == x)
+            return true;
+        if (!contains(target, x))
+            return false;
+        for (int c = target; c != x;) {
+            auto const& nd = nodes[static_cast<std::size_t>(c)];
+            int const toward = child_toward(c, x);
+            if (nd.kind == node_kind::composite) {
+                if (nd.history == 2)
+                    return true;
+                if (nd.history == 0 && nd.initial != toward)
+                    return false;
+            }
+            c = toward;
+        }
+        return true;
+    }
+    // a is a proper ancestor of d; -1, the implicit top, is above everything.
+    constexpr bool above(int a, int d) const { return a < 0 || (a != d && contains(a, d)); }
+    // bsc's dead-end rule: some transition with a target that does not necessarily enter x
+    // again can fire while x is active and exits x: its source is x or above x (and its domain
+    // above x), or in another region of a parallel state above x (and its domain above that).
+    constexpr bool can_leave(int x) const {
+        for (int i = 0; i < r; ++i) {
+            auto const& t = rows[static_cast<std::size_t>(i)];
+            if (t.kind != row_kind::transition || t.to < 0 || reenters(t.to, x))
+                continue;
+            int const d = domain(t.from, t.to);
+            if (contains(t.from, x)) {
+                if (above(d, x))
+                    return true;
+            } else if (int const l = lca(t.from, x); kind(l) == node_kind::parallel && above(d, l)) {
+                return true;
+            }
+        }
+        return false;
+    }
+};
+
+struct rng {
+    std::uint64_t state;
+    constexpr std::uint64_t next() {
+        state += 0x9e3779b97f4a7c15ull;
+        std::uint64_t z = state;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+    constexpr int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
+    constexpr bool chance(int percent) { return below(100) < percent; }
+};
+
+constexpr spec make_spec(std::uint64_t seed) {
+    rng g{seed * 0x2545f4914f6cdd1dull + 17};
+    spec s{};
+    s.n = 8 + g.below(max_states - 8 + 1);
+    s.events = 3 + g.below(max_events - 3 + 1);
+
+    // The tree: each state hangs below an earlier one, at most four levels deep.
+    std::array<int, max_states> depth{};
+    s.nodes[0].kind = g.chance(25) ? node_kind::parallel : node_kind::composite;
+    for (int i = 1; i < s.n; ++i) {
+        int p = 0;
+        do {
+            p = g.chance(50) ? g.below(i) : i - 1 - g.below(i < 3 ? i : 3);
+        } while (depth[static_cast<std::size_t>(p)] >= 3);
+        s.nodes[static_cast<std::size_t>(i)].parent = p;
+        depth[static_cast<std::size_t>(i)] = depth[static_cast<std::size_t>(p)] + 1;
+    }
+    for (int i = 0; i < s.n; ++i)
+        if (s.child_count(i) == 0)
+            s.nodes[static_cast<std::size_t>(i)].kind = g.chance(8) ? node_kind::final_state : node_kind::basic;
+    for (int i = 0; i < s.n; ++i) {
+        auto& nd = s.nodes[static_cast<std::size_t>(i)];
+        if (s.child_count(i) == 0)
+            continue;
+        if (i > 0)
+            nd.kind = g.chance(22) ? node_kind::parallel : node_kind::composite;
+        if (nd.kind == node_kind::composite) {
+            int const h = g.below(10);
+            nd.history = h < 6 ? 0 : h < 8 ? 1 : 2;
+            // The initial child is never final: the machine would halt or stop at once.
+            int const k = g.below(s.child_count(i));
+            int const c = s.child_at(i, k);
+            if (s.kind(c) == node_kind::final_state)
+                s.nodes[static_cast<std::size_t>(c)].kind = node_kind::basic;
+            nd.initial = c;
+        }
+    }
+
+    auto pick_source = [&] {
+        // Mostly basic states, sometimes any state.
+        for (int tries = 0; tries < 8; ++tries) {
+            int const x = g.below(s.n);
+            if (s.child_count(x) == 0 || g.chance(30))
+                return x;
+        }
+        return g.below(s.n);
+    };
+    auto pick_target = [&](int from) {
+        for (int tries = 0; tries < 6; ++tries) {
+            int const t = g.below(s.n);
+            if (!s.orthogonal(from, t))
+                return t;
+        }
+        return from;
+    };
+
+    // Random transitions.
+    int const wanted = s.n * 2 + g.below(s.n);
+    for (int i = 0; i < wanted && s.r < max_rows - 3 * max_states + 4; ++i) {
+        row x{};
+        x.from = pick_source();
+        x.event = g.chance(7) ? -1 : g.below(s.events);
+        x.guarded = x.event < 0 || g.chance(50);
+        // An eventless internal transition would fire again at once: eventless ones have targets.
+        x.to = x.event >= 0 && g.chance(12) ? -1 : pick_target(x.from);
+        x.acts = x.event < 0 || g.chance(65);
+        if (s.may_add(x.from, x.event, x.guarded))
+            s.add(x);
+    }
+    // Every event triggers something, so that actions may raise any of them.
+    for (int e = 0; e < s.events; ++e) {
+        bool used = false;
+        for (int i = 0; i < s.r; ++i) used = used || s.rows[static_cast<std::size_t>(i)].event == e;
+        if (!used)
+            s.add(row{row_kind::transition, 0, e, -1, true, true});
+    }
+    // Every state reachable.
+    for (auto m = s.reachable();; m = s.reachable()) {
+        int t = -1;
+        for (int i = 0; i < s.n && t < 0; ++i)
+            if (!m[static_cast<std::size_t>(i)])
+                t = i;
+        if (t < 0)
+            break;
+        int from = 0;
+        for (int tries = 0; tries < 12; ++tries) {
+            int const c = g.below(s.n);
+            if (m[static_cast<std::size_t>(c)] && !s.orthogonal(c, t)) {
+                from = c;
+                break;
+            }
+        }
+        int event = -1;
+        for (int e = 0; e < s.events; ++e)
+            if (s.may_add(from, e, true))
+                event = e;
+        s.add(row{row_kind::transition, from, event, t, true, event < 0 || g.chance(50)});
+    }
+    // Every basic state has a way out: a transition to a state that does not lead back to it
+    // (or, failing that, the state becomes final).
+    for (int x = 0; x < s.n; ++x) {
+        if (s.kind(x) != node_kind::basic || s.can_leave(x))
+            continue;
+        int event = -1;
+        for (int e = 0; e < s.events; ++e)
+            if (s.may_add(x, e, false))
+                event = e;
+        int to = -1;
+        for (int tries = 0; tries < 24 && to < 0; ++tries) {
+            int const c = g.below(s.n);
+            if (!s.orthogonal(x, c) && !s.reenters(c, x))
+                to = c;
+        }
+        if (to < 0)
+            s.nodes[static_cast<std::size_t>(x)].kind = node_kind::final_state;
+        else
+            s.add(row{row_kind::transition, x, event, to, event < 0 || g.chance(40), event < 0 || g.chance(50)});
+    }
+    // Entry and exit actions.
+    for (int x = 0; x < s.n && s.r < max_rows - 1; ++x) {
+        if (g.chance(45))
+            s.add(row{row_kind::entry, x, -1, -1, false, true});
+        if (g.chance(45) && s.r < max_rows)
+            s.add(row{row_kind::exit, x, -1, -1, false, true});
+    }
+    return s;
+}
+
+template <std::uint64_t Seed>
+inline constexpr spec spec_of = make_spec(Seed);
+
+// What a guard or an action does, drawn from the seed and the row.
+struct behaviour {
+    int var = 0;
+    int mod = 2;
+    int rem = 0;
+    int add = 1;
+    bool use_event = false;
+    int raise = -1;
+};
+// Variables: v[0] and v[1] are written by entry and exit actions and by transitions on
+// events; v[2] only by eventless transitions, which read it alone, and each of which makes its
+// own guard false, so that an eventless run settles unless several of them cycle.
+constexpr behaviour behaviour_of(std::uint64_t seed, row const& x, int index, int events) {
+    rng g{seed * 1000003ull + static_cast<std::uint64_t>(index) * 7919ull + 5};
+    behaviour b{};
+    b.var = x.kind == row_kind::transition && x.event < 0 ? 2 : g.below(x.kind == row_kind::transition ? 3 : 2);
+    b.mod = 2 + g.below(3);
+    b.rem = g.below(b.mod);
+    b.add = 1 + g.below(5);
+    if (b.add % b.mod == 0)  // an eventless transition's action falsifies its own guard
+        ++b.add;
+    b.use_event = x.event >= 0 && g.chance(40);
+    // Entry and exit actions raise nothing.
+    b.raise = x.kind == row_kind::transition && g.chance(9) ? g.below(events) : -1;
+    return b;
+}
+
+
+// ---- the chart's types ---------------------------------------------------------------------------
+
+/// The context: three small variables the guards read and the actions write (see
+/// behaviour_of), and the log of every action, entry and exit, in order.
+struct gctx {
+    std::array<int, 3> v{};
+    std::uint32_t log = 0;
+    friend constexpr bool operator==(gctx const&, gctx const&) = default;
+};
+
+template <std::uint64_t Seed, int I>
+struct S {};
+template <std::uint64_t Seed, int K>
+struct ev {
+    int n = 0;
+};
+
+template <class E>
+constexpr int payload(E const& e) {
+    if constexpr (requires { e.n; })
+        return e.n;
+    else
+        return 0;
+}
+
+template <std::uint64_t Seed, int Row>
+inline constexpr behaviour behaviour_at =
+    behaviour_of(Seed, spec_of<Seed>.rows[static_cast<std::size_t>(Row)], Row, spec_of<Seed>.events);
+
+template <std::uint64_t Seed, int Row>
+struct guard {
+    template <class E>
+    constexpr bool operator()(gctx const& c, E const& e) const {
+        constexpr behaviour b = behaviour_at<Seed, Row>;
+        int const x = c.v[static_cast<std::size_t>(b.var)] + (b.use_event ? payload(e) : 0);
+        return x % b.mod == b.rem;
+    }
+};
+
+template <std::uint64_t Seed, int Row>
+constexpr void act_on(gctx& c, int data, auto& raise) {
+    constexpr behaviour b = behaviour_at<Seed, Row>;
+    auto& v = c.v[static_cast<std::size_t>(b.var)];
+    c.log = (c.log ^ static_cast<std::uint32_t>(Row)) * 16777619u + 1u;
+    v = (v + b.add + (b.use_event ? data : 0)) % 16;
+    if constexpr (b.raise >= 0)
+        raise(ev<Seed, b.raise>{v % 8});
+}
+
+template <std::uint64_t Seed, int Row>
+struct action {
+    template <class E, class Raise>
+    constexpr void operator()(gctx& c, E const& e, Raise& raise) const {
+        act_on<Seed, Row>(c, payload(e), raise);
+    }
+};
+
+template <std::uint64_t Seed, int Row>
+struct state_action {
+    template <class Raise>
+    constexpr void operator()(gctx& c, Raise& raise) const {
+        act_on<Seed, Row>(c, 0, raise);
+    }
+};
+
+template <std::uint64_t Seed, int I>
+constexpr auto make_node() {
+    constexpr node nd = spec_of<Seed>.nodes[static_cast<std::size_t>(I)];
+    using self = S<Seed, I>;
+    if constexpr (nd.kind == node_kind::basic) {
+        return bsc::state<self>;
+    } else if constexpr (nd.kind == node_kind::final_state) {
+        return bsc::final_state<self>;
+    } else {
+        return []<std::size_t... K>(std::index_sequence<K...>) {
+            constexpr node n = spec_of<Seed>.nodes[static_cast<std::size_t>(I)];
+            using init = S<Seed, n.initial>;
+            if constexpr (n.kind == node_kind::parallel)
+                return bsc::parallel<self>(make_node<Seed, spec_of<Seed>.child_at(I, static_cast<int>(K))>()...);
+            else if constexpr (n.history == 0)
+                return bsc::composite<self>(bsc::initial<init>,
+                                            make_node<Seed, spec_of<Seed>.child_at(I, static_cast<int>(K))>()...);
+            else if constexpr (n.history == 1)
+                return bsc::composite<self>(bsc::shallow_history, bsc::initial<init>,
+                                            make_node<Seed, spec_of<Seed>.child_at(I, static_cast<int>(K))>()...);
+            else
+                return bsc::composite<self>(bsc::deep_history, bsc::initial<init>,
+                                            make_node<Seed, spec_of<Seed>.child_at(I, static_cast<int>(K))>()...);
+        }(std::make_index_sequence<static_cast<std::size_t>(spec_of<Seed>.child_count(I))>{});
+    }
+}
+
+template <std::uint64_t Seed, int J>
+inline constexpr row row_at = spec_of<Seed>.rows[static_cast<std::size_t>(J)];
+
+template <std::uint64_t Seed, int J>
+constexpr auto make_row() {
+    constexpr row x = row_at<Seed, J>;
+    using from = S<Seed, x.from>;
+    if constexpr (x.kind == row_kind::entry) {
+        return bsc::state<from> + bsc::on_entry / state_action<Seed, J>{};
+    } else if constexpr (x.kind == row_kind::exit) {
+        return bsc::state<from> + bsc::on_exit / state_action<Seed, J>{};
+    } else {
+        auto const triggered = [] {
+            if constexpr (row_at<Seed, J>.event < 0)
+                return bsc::state<from>[guard<Seed, J>{}];
+            else if constexpr (row_at<Seed, J>.guarded)
+                return bsc::state<from> + bsc::event<ev<Seed, row_at<Seed, J>.event>>[guard<Seed, J>{}];
+            else
+                return bsc::state<from> + bsc::event<ev<Seed, row_at<Seed, J>.event>>;
+        }();
+        auto const acted = [&] {
+            if constexpr (row_at<Seed, J>.acts)
+                return triggered / action<Seed, J>{};
+            else
+                return triggered;
+        }();
+        if constexpr (x.to >= 0)
+            return acted = bsc::state<S<Seed, x.to>>;
+        else
+            return acted;
+    }
+}
+
+template <std::uint64_t Seed>
+inline constexpr auto chart = []<std::size_t... J>(std::index_sequence<J...>) {
+    return bsc::make_chart<gctx>(make_node<Seed, 0>(), make_row<Seed, static_cast<int>(J)>()...);
+}(std::make_index_sequence<static_cast<std::size_t>(spec_of<Seed>.r)>{});
+
+/// Low limits: a generated chart may well raise events in a cycle, and then each dispatch
+/// runs up to the limit.
+struct limits : bsc::default_policy {
+    static constexpr std::size_t queue_capacity = 4;
+    static constexpr std::size_t max_eventless_steps = 4;
+    static constexpr std::size_t max_internal_events = 12;
+};
+
+/// A generated chart as a fixture of differential.hpp.
+template <std::uint64_t Seed>
+struct generated {
+    using policy = limits;
+    static constexpr auto const& chart = gen::chart<Seed>;
+    static gctx initial() { return {}; }
+    static void perturb(gctx& c, std::uint32_t r) { c.v[r % 3] = static_cast<int>((r >> 2) % 16); }
+};
+
+}  // namespace gen

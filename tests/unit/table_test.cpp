@@ -1,0 +1,666 @@
+// The cases of semantics_test.cpp, each pinning down one sentence of docs/semantics.md, run
+// against the table-driven back end (bsc::table::machine); then what is particular to it: the
+// tables themselves, and the interface it shares with bsc::machine.
+
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include <bsc/table/engine.hpp>
+
+#include "trace.hpp"
+
+using bsc_test::trace_observer;
+
+namespace tbl {
+struct go {};
+struct back {};
+struct tick {};
+struct ping {};
+struct pong {};
+struct A;
+struct A1;
+struct A2;
+struct B;
+struct B1;
+struct B2;
+struct Root;
+struct ctx {
+    int value = 0;
+    bool flag = false;
+    std::string log;
+};
+inline constexpr auto log = [](char const* what) {
+    return bsc::action([what](ctx& c) {
+        if (!c.log.empty()) c.log += ' ';
+        c.log += what;
+    });
+};
+}  // namespace tbl
+
+using namespace tbl;
+
+TEST_CASE("table: a transition exits innermost first, runs its action, then enters outermost first") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>,
+                             bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A2>)),
+                             bsc::composite<B>(bsc::initial<B1>, bsc::composite<B1>(bsc::initial<B2>))),
+        bsc::state<A2> + bsc::event<go> / log("action") = bsc::state<B>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>,
+        bsc::state<A> + bsc::on_exit / log("exit A"), bsc::state<A1> + bsc::on_exit / log("exit A1"),
+        bsc::state<A2> + bsc::on_exit / log("exit A2"), bsc::state<B> + bsc::on_entry / log("enter B"),
+        bsc::state<B1> + bsc::on_entry / log("enter B1"), bsc::state<B2> + bsc::on_entry / log("enter B2"));
+    bsc::table::machine m{chart, ctx{}};
+    CHECK(m.active_states().joined() == "Root A A1 A2");
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "exit A2 exit A1 exit A action enter B enter B1 enter B2");
+    CHECK(m.active_states().joined() == "Root B B1 B2");
+}
+
+namespace tbl {
+struct C;
+struct C1;
+struct C2;
+struct D;
+}  // namespace tbl
+
+TEST_CASE("table: the deepest source wins; among equals, the first enabled in declaration order") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>), bsc::state<B>,
+                             bsc::state<C>),
+        bsc::state<A> + bsc::event<go> = bsc::state<B>,                                   // ancestor
+        bsc::state<A1> + bsc::event<go>[([](ctx const& c) { return c.value == 1; })] = bsc::state<C>,
+        bsc::state<A1> + bsc::event<go>[([](ctx const& c) { return c.value >= 1; })] = bsc::state<A2>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>, bsc::state<C> + bsc::event<back> = bsc::state<A>,
+        bsc::state<A2> + bsc::event<back> = bsc::state<A1>);
+    SUBCASE("no guard of the leaf holds: the ancestor's transition fires") {
+        bsc::table::machine m{chart, ctx{}};
+        m.dispatch(go{});
+        CHECK(m.is<B>());
+    }
+    SUBCASE("both leaf guards hold: the first declared fires") {
+        bsc::table::machine m{chart, ctx{1, false, {}}};
+        m.dispatch(go{});
+        CHECK(m.is<C>());
+    }
+    SUBCASE("only the second leaf guard holds: it fires, not the ancestor's") {
+        bsc::table::machine m{chart, ctx{2, false, {}}};
+        m.dispatch(go{});
+        CHECK(m.is<A2>());
+    }
+}
+
+TEST_CASE("table: an event that enables no transition is ignored and changes nothing") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+        bsc::state<A> + bsc::event<go>[([](ctx const& c) { return c.flag; })] = bsc::state<B>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    bsc::table::machine m{chart, ctx{}};
+    auto const before = m.active_configuration();
+    CHECK(m.dispatch(go{}) == bsc::outcome::ignored);
+    CHECK(m.dispatch(back{}) == bsc::outcome::ignored);
+    CHECK(m.active_configuration() == before);
+    m.context().flag = true;
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.is<B>());
+}
+
+TEST_CASE("table: the transition domain: siblings keep their parent, self and ancestor/descendant targets re-enter") {
+    std::string trace;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>), bsc::state<B>),
+        bsc::state<A1> + bsc::event<go> = bsc::state<A2>,    // siblings: A stays
+        bsc::state<A2> + bsc::event<go> = bsc::state<A2>,    // external self-transition
+        bsc::state<A2> + bsc::event<back> = bsc::state<A>,   // to an ancestor: A re-entered
+        bsc::state<A> + bsc::event<tick> = bsc::state<A2>,   // to a descendant: A re-entered
+        bsc::state<A> + bsc::event<ping> = bsc::state<B>, bsc::state<B> + bsc::event<ping> = bsc::state<A>);
+    bsc::table::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    trace.clear();
+    m.dispatch(go{});
+    CHECK(trace == "-A1 A1>A2 +A2");
+    trace.clear();
+    m.dispatch(go{});
+    CHECK(trace == "-A2 A2>A2 +A2");
+    trace.clear();
+    m.dispatch(back{});
+    CHECK(trace == "-A2 -A A2>A +A +A1");
+    trace.clear();
+    m.dispatch(tick{});
+    CHECK(trace == "-A1 -A A>A2 +A +A2");
+}
+
+TEST_CASE("table: an internal transition (no target) runs its action and exits and enters nothing") {
+    std::string trace;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>)),
+        bsc::state<A> + bsc::event<go> / [](ctx& c) { ++c.value; },
+        bsc::state<A1> + bsc::event<back> = bsc::state<A2>, bsc::state<A2> + bsc::event<back> = bsc::state<A1>);
+    bsc::table::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    trace.clear();
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(trace == "A>internal");
+    CHECK(m.context().value == 1);
+    CHECK(m.active_states().joined() == "Root A A1");
+}
+
+TEST_CASE("table: shallow history restores the last active child; its own children take their defaults") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>,
+                             bsc::composite<A>(bsc::shallow_history, bsc::initial<A1>,
+                                               bsc::composite<A1>(bsc::initial<C1>, bsc::state<C2>),
+                                               bsc::state<A2>),
+                             bsc::state<B>),
+        bsc::state<C1> + bsc::event<tick> = bsc::state<C2>, bsc::state<C2> + bsc::event<tick> = bsc::state<C1>,
+        bsc::state<A1> + bsc::event<ping> = bsc::state<A2>, bsc::state<A2> + bsc::event<ping> = bsc::state<A1>,
+        bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<B> + bsc::event<back> = bsc::state<A>,
+        bsc::state<B> + bsc::event<pong> = bsc::state<C2>);
+    bsc::table::machine m{chart, ctx{}};
+    m.dispatch(tick{});  // A1/C2
+    m.dispatch(go{});
+    m.dispatch(back{});
+    CHECK(m.active_states().joined() == "Root A A1 C1");  // A1 remembered, C default
+    m.dispatch(ping{});                                    // A2
+    m.dispatch(go{});
+    m.dispatch(back{});
+    CHECK(m.active_states().joined() == "Root A A2");
+    SUBCASE("an explicit target inside the history state wins over history") {
+        m.dispatch(go{});
+        m.dispatch(pong{});
+        CHECK(m.active_states().joined() == "Root A A1 C2");
+    }
+}
+
+TEST_CASE("table: deep history restores the whole last active sub-configuration") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>,
+                             bsc::composite<A>(bsc::deep_history, bsc::initial<A1>,
+                                               bsc::composite<A1>(bsc::initial<C1>, bsc::state<C2>),
+                                               bsc::state<A2>),
+                             bsc::state<B>),
+        bsc::state<C1> + bsc::event<tick> = bsc::state<C2>, bsc::state<C2> + bsc::event<tick> = bsc::state<C1>,
+        bsc::state<A1> + bsc::event<ping> = bsc::state<A2>, bsc::state<A2> + bsc::event<ping> = bsc::state<A1>,
+        bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    bsc::table::machine m{chart, ctx{}};
+    CHECK(m.active_states().joined() == "Root A A1 C1");  // never visited: defaults
+    m.dispatch(tick{});
+    m.dispatch(go{});
+    CHECK(m.active_states().joined() == "Root B");
+    m.dispatch(back{});
+    CHECK(m.active_states().joined() == "Root A A1 C2");
+}
+
+namespace tbl {
+struct P;
+struct R1;
+struct R2;
+struct X1;
+struct X2;
+struct Y1;
+struct Y2;
+struct Out;
+struct e1 {};
+struct e2 {};
+}  // namespace tbl
+
+TEST_CASE("table: a parallel state: entered region by region, events broadcast to every region") {
+    std::string trace;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<P>,
+                             bsc::parallel<P>(bsc::composite<R1>(bsc::initial<X1>, bsc::state<X2>),
+                                              bsc::composite<R2>(bsc::initial<Y1>, bsc::state<Y2>)),
+                             bsc::state<Out>),
+        bsc::state<X1> + bsc::event<go> = bsc::state<X2>, bsc::state<Y1> + bsc::event<go> = bsc::state<Y2>,
+        bsc::state<X2> + bsc::event<back> = bsc::state<X1>, bsc::state<Y2> + bsc::event<back> = bsc::state<Y1>,
+        bsc::state<P> + bsc::event<tick> = bsc::state<Out>, bsc::state<Out> + bsc::event<tick> = bsc::state<Y2>,
+        bsc::state<X2> + bsc::event<ping> / log("x2") = bsc::state<X1>,
+        bsc::state<Y2> + bsc::event<ping> / log("y2") = bsc::state<Out>,
+        bsc::state<X2> + bsc::event<pong> / log("x2") = bsc::state<Out>,
+        bsc::state<Y2> + bsc::event<pong> / log("y2") = bsc::state<Y1>,
+        bsc::state<P> + bsc::event<e1> = bsc::state<Out>, bsc::state<Y2> + bsc::event<e1> = bsc::state<Y1>,
+        bsc::state<X1> + bsc::event<e2> = bsc::state<X2>, bsc::state<Y2> + bsc::event<e2> / log("y2"));
+    bsc::table::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    CHECK(trace == "+Root +P +R1 +X1 +R2 +Y1");
+    trace.clear();
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    // SCXML microstep: all exits (reverse document order), then actions, then entries.
+    CHECK(trace == "-Y1 -X1 X1>X2 Y1>Y2 +X2 +Y2");
+    CHECK(m.active_states().joined() == "Root P R1 X2 R2 Y2");
+
+    SUBCASE("a transition of the parallel state itself fires once, whatever the number of regions") {
+        trace.clear();
+        m.dispatch(tick{});
+        CHECK(trace == "-Y2 -R2 -X2 -R1 -P P>Out +Out");
+        SUBCASE("entering a region's state enters the other regions by default, in document order") {
+            trace.clear();
+            m.dispatch(tick{});
+            CHECK(trace == "-Out Out>Y2 +P +R1 +X1 +R2 +Y2");
+        }
+    }
+    SUBCASE("conflicting exit sets: the transition selected in the earlier region wins") {
+        m.dispatch(ping{});  // X2 -> X1 stays in R1; Y2 -> Out would leave P: dropped
+        CHECK(m.active_states().joined() == "Root P R1 X1 R2 Y2");
+        CHECK(m.context().log == "x2");
+        m.dispatch(go{});
+        m.context().log.clear();
+        m.dispatch(pong{});  // X2 -> Out leaves P; Y2 -> Y1 conflicts with it: dropped
+        CHECK(m.active_states().joined() == "Root Out");
+        CHECK(m.context().log == "x2");
+    }
+    SUBCASE("conflicting exit sets: a later transition from a descendant preempts an ancestor's") {
+        trace.clear();
+        m.dispatch(e1{});  // P -> Out is selected by X2, but Y2 -> Y1 from inside P preempts it
+        CHECK(trace == "-Y2 Y2>Y1 +Y1");
+        CHECK(m.active_states().joined() == "Root P R1 X2 R2 Y1");
+    }
+    SUBCASE("internal transitions have empty exit sets and never conflict") {
+        m.dispatch(ping{});
+        m.context().log.clear();
+        m.dispatch(e2{});  // X1 -> X2 and Y2's internal transition both fire
+        CHECK(m.context().log == "y2");
+        CHECK(m.active_states().joined() == "Root P R1 X2 R2 Y2");
+    }
+}
+
+TEST_CASE("table: guards compose with !, && and ||; actions run in sequence; event data reaches both") {
+    struct number {
+        int n;
+    };
+    struct big;
+    static constexpr auto positive = bsc::guard([](ctx const&, number const& e) { return e.n > 0; });
+    static constexpr auto even = bsc::guard([](ctx const&, number const& e) { return e.n % 2 == 0; });
+    static constexpr auto flagged = bsc::guard([](ctx const& c) { return c.flag; });
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<big>),
+        bsc::state<A> + bsc::event<number>[positive && even && !flagged] /
+                            (bsc::action([](ctx& c, number const& e) { c.value += e.n; }), log("first"),
+                             [](ctx& c) { c.log += " second"; }),
+        bsc::state<A> + bsc::event<number>[flagged || !positive] / log("other"),
+        bsc::state<A> + bsc::event<go> = bsc::state<big>, bsc::state<big> + bsc::event<go> = bsc::state<A>);
+    bsc::table::machine m{chart, ctx{}};
+    CHECK(m.dispatch(number{3}) == bsc::outcome::ignored);
+    CHECK(m.dispatch(number{4}) == bsc::outcome::consumed);
+    CHECK(m.context().value == 4);
+    CHECK(m.context().log == "first second");
+    m.context().log.clear();
+    m.context().flag = true;
+    CHECK(m.dispatch(number{4}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "other");
+    CHECK(m.context().value == 4);
+}
+
+TEST_CASE("table: eventless transitions run after each microstep until none is enabled, and at construction") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>, bsc::state<D>),
+        bsc::state<A>[([](ctx const& c) { return c.value > 0; })] / log("A>B") = bsc::state<B>,
+        bsc::state<B> / log("B>C") = bsc::state<C>,
+        bsc::state<C> + bsc::event<go> / [](ctx& c) { c.value = 10; } = bsc::state<D>,
+        bsc::state<D>[([](ctx const& c) { return c.value == 10; })] / log("D>A") = bsc::state<A>);
+    SUBCASE("at construction") {
+        bsc::table::machine m{chart, ctx{1, false, {}}};
+        CHECK(m.is<C>());
+        CHECK(m.context().log == "A>B B>C");
+    }
+    SUBCASE("after an event, the chain runs before dispatch returns") {
+        bsc::table::machine m{chart, ctx{0, false, {}}};
+        CHECK(m.is<A>());
+        m.context().value = 0;
+        CHECK(m.dispatch(go{}) == bsc::outcome::ignored);
+        m.context().value = 1;
+        CHECK(m.dispatch(go{}) == bsc::outcome::ignored);  // the event fires nothing; A>B>C follow it
+        CHECK(m.is<C>());
+        m.context().log.clear();
+        CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+        CHECK(m.context().log == "D>A A>B B>C");
+        CHECK(m.is<C>());
+    }
+}
+
+TEST_CASE("table: an eventless transition is also evaluated when the dispatched event fired nothing") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+        bsc::state<A>[([](ctx const& c) { return c.flag; })] = bsc::state<B>,
+        bsc::state<B> + bsc::event<go> = bsc::state<A>, bsc::state<A> + bsc::event<back> / log("back"));
+    bsc::table::machine m{chart, ctx{}};
+    m.context().flag = true;  // written by the environment between dispatches
+    CHECK(m.dispatch(go{}) == bsc::outcome::ignored);
+    CHECK(m.is<B>());
+}
+
+TEST_CASE("table: a guarded eventless cycle that stays enabled is stopped and reported as a livelock") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+        bsc::state<A>[([](ctx const& c) { return c.flag; })] / [](ctx& c) { ++c.value; } = bsc::state<B>,
+        bsc::state<B>[([](ctx const& c) { return c.flag; })] / [](ctx& c) { ++c.value; } = bsc::state<A>,
+        bsc::state<A> + bsc::event<go> / [](ctx& c) { c.flag = true; });
+    bsc::table::machine m{chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::livelock);
+    // max_eventless_steps transitions settle normally; the one after them is reported.
+    CHECK(m.context().value == static_cast<int>(bsc::default_policy::max_eventless_steps) + 1);
+    CHECK(m.last_outcome() == bsc::outcome::livelock);
+}
+
+TEST_CASE("table: raised events are queued and processed in order after the current step, before dispatch returns") {
+    std::string trace;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+        bsc::state<A> + bsc::event<go> / (bsc::raise(ping{}), bsc::raise(pong{}), log("go")) = bsc::state<B>,
+        bsc::state<B> + bsc::on_entry / log("enter B"),
+        bsc::state<B> + bsc::event<ping> / log("ping") = bsc::state<C>,
+        bsc::state<C> + bsc::event<pong> / [](ctx& c, pong const&, auto& raise) {
+            c.log += " pong";
+            raise(back{});
+        },
+        bsc::state<C> + bsc::event<back> / log("back") = bsc::state<A>);
+    bsc::table::machine m{chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "go enter B ping pong back");
+    CHECK(m.is<A>());
+    CHECK(m.queue().empty());
+}
+
+namespace tbl {
+struct tiny_queue : bsc::default_policy {
+    static constexpr std::size_t queue_capacity = 2;
+};
+}  // namespace tbl
+
+TEST_CASE("table: queue overflow is reported, the extra event is dropped and the rest is processed") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+        bsc::state<A> + bsc::event<go> / (bsc::raise(ping{}), bsc::raise(ping{}), bsc::raise(ping{})),
+        bsc::state<A> + bsc::event<ping> / [](ctx& c) { ++c.value; }, bsc::state<A> + bsc::event<back> = bsc::state<B>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    bsc::table::machine<decltype(chart), tiny_queue> m{chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::queue_overflow);
+    CHECK(m.context().value == 2);
+    CHECK(m.dispatch(go{}) == bsc::outcome::queue_overflow);
+    CHECK(m.context().value == 4);
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);  // the overflow is reported once, not forever
+}
+
+TEST_CASE("table: events that keep raising each other are stopped and reported as a livelock") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+        bsc::state<A> + bsc::event<ping> / (bsc::raise(pong{}), bsc::action([](ctx& c) { ++c.value; })),
+        bsc::state<A> + bsc::event<pong> / bsc::raise(ping{}), bsc::state<A> + bsc::event<back> = bsc::state<B>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    bsc::table::machine m{chart, ctx{}};
+    CHECK(m.dispatch(ping{}) == bsc::outcome::livelock);
+    CHECK(m.queue().empty());
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
+}
+
+TEST_CASE("table: a final child of the root halts the machine") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::final_state<B>),
+        bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<A> + bsc::event<back> / log("back"));
+    bsc::table::machine m{chart, ctx{}};
+    CHECK_FALSE(m.halted());
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.halted());
+    CHECK(m.dispatch(back{}) == bsc::outcome::halted);
+    CHECK(m.context().log.empty());
+}
+
+TEST_CASE("table: a transition from the root to a descendant exits and re-enters the root") {
+    std::string trace;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), bsc::state<Root> + bsc::event<go> = bsc::state<B>,
+        bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    bsc::table::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    trace.clear();
+    m.dispatch(go{});
+    CHECK(trace == "-A -Root Root>B +Root +B");
+}
+
+// ---- the tables ---------------------------------------------------------------------------------
+
+// The part of the Mode Control Supervisor that Figures 12 and 13 of seed 000 show.
+namespace tbl::mcs_like {
+struct on_p {};
+struct off_p {};
+struct estop_p {};
+struct reset_p {};
+struct mem_p {};
+struct mdi_p {};
+struct jog_p {};
+struct MCS;
+struct Off;
+struct Estop;
+struct On;
+struct Auto;
+struct Manual;
+struct MEM;
+struct MDI;
+struct JOG;
+struct panel {
+    int error = 0;
+    std::string shown;
+};
+template <class S>
+inline constexpr auto show_entry = [](panel& p) { p.shown += "+" + std::string(bsc::name_of<S>); };
+template <class S>
+inline constexpr auto show_exit = [](panel& p) { p.shown += "-" + std::string(bsc::name_of<S>); };
+inline constexpr auto set_error0 = [](panel& p) { p.error = 0; };
+inline constexpr auto set_error1 = [](panel& p) { p.error = 1; };
+inline constexpr auto cond = [](panel const& p) { return p.error == 0; };
+
+inline constexpr auto chart = [] {
+    using bsc::state, bsc::event, bsc::on_entry, bsc::on_exit;
+    return bsc::make_chart<panel>(
+        bsc::composite<MCS>(bsc::initial<Off>, state<Off>, state<Estop>,
+                            bsc::composite<On>(bsc::deep_history, bsc::initial<Auto>,
+                                               bsc::composite<Auto>(bsc::initial<MEM>, state<MDI>),
+                                               bsc::composite<Manual>(bsc::initial<JOG>))),
+        state<MCS> + on_entry / show_entry<MCS>, state<MCS> + on_exit / show_exit<MCS>,
+        state<Off> + on_entry / show_entry<Off>, state<Off> + on_exit / show_exit<Off>,
+        state<Estop> + on_entry / show_entry<Estop>, state<Estop> + on_exit / show_exit<Estop>,
+        state<On> + on_entry / show_entry<On>, state<On> + on_exit / show_exit<On>,
+        state<Auto> + on_entry / show_entry<Auto>, state<MEM> + on_exit / show_exit<MEM>,
+        // Figure 13
+        state<Off> + event<on_p> = state<On>,
+        state<Estop> + event<reset_p> / set_error0 = state<Estop>,
+        state<Estop> + event<off_p>[cond] = state<Off>,
+        state<On> + event<off_p> = state<Off>,
+        state<On> + event<estop_p> / set_error1 = state<Estop>,
+        // mode changes
+        state<MEM> + event<mdi_p> = state<MDI>, state<MDI> + event<mem_p> = state<MEM>,
+        state<Auto> + event<jog_p> = state<JOG>, state<Manual> + event<mem_p> = state<MEM>);
+}();
+using tables = bsc::table::tables<decltype(chart)>;
+template <class S>
+constexpr bsc::table::state_id id = static_cast<bsc::table::state_id>(tables::analysis::index_of_state<S>);
+template <class E>
+constexpr bsc::table::event_id event_id = static_cast<bsc::table::event_id>(tables::analysis::trigger_of<E>);
+
+// Whether a function pointer column is set. Checked at run time: GCC does not fold the
+// comparison of a function's address with null in a constant expression under sanitizers.
+template <class P>
+bool set(P p) {
+    return p != nullptr;
+}
+}  // namespace tbl::mcs_like
+
+TEST_CASE("table: the topology table of the MCS holds the rows of Figure 12") {
+    using namespace tbl::mcs_like;
+    using bsc::table::history_kind;
+    using bsc::table::none;
+    using bsc::table::state_kind;
+    constexpr auto const& st = tables::states;
+    static_assert(st.size() == tables::state_count && tables::state_count == 10);
+    // Row 0 is the implicit top: the ancestor of the root, as 0 is MCS's ancestor in Figure 12.
+    static_assert(st[0].status.kind == state_kind::top && st[0].descendant == id<MCS>);
+    // { MCS, Off, 0, 0, _noHist, Show, Show }
+    static_assert(id<MCS> == 1 && st[1].state == 1);
+    static_assert(st[id<MCS>].descendant == id<Off> && st[id<MCS>].sibling == none && st[id<MCS>].ancestor == 0);
+    static_assert(st[id<MCS>].status == bsc::table::state_status{state_kind::or_state, history_kind::none});
+    CHECK((set(st[id<MCS>].entry) && set(st[id<MCS>].exit)));
+    // { Off, 0, Estop, MCS, _noHist, Show, Show }, { Estop, 0, On, MCS, _noHist, Show, Show }
+    static_assert(st[id<Off>].descendant == none && st[id<Off>].sibling == id<Estop> && st[id<Off>].ancestor == id<MCS>);
+    static_assert(st[id<Off>].status.kind == state_kind::basic);
+    static_assert(st[id<Estop>].sibling == id<On> && st[id<On>].sibling == none);
+    // { On, Auto, 0, MCS, _Hist, Show, Show }, { Auto, MEM, Manual, On, _noHist, Show, 0 }
+    static_assert(st[id<On>].descendant == id<Auto> && st[id<On>].ancestor == id<MCS>);
+    static_assert(st[id<On>].status == bsc::table::state_status{state_kind::or_state, history_kind::deep});
+    static_assert(st[id<Auto>].descendant == id<MEM> && st[id<Auto>].sibling == id<Manual>);
+    CHECK((set(st[id<Auto>].entry) && !set(st[id<Auto>].exit)));
+    static_assert(st[id<MEM>].ancestor == id<Auto>);
+    CHECK((!set(st[id<MEM>].entry) && set(st[id<MEM>].exit)));
+    // The Entry and Exit columns call Show.
+    panel p;
+    bsc::table::machine<decltype(chart)>::queue_type raise;
+    st[id<On>].entry(chart, p, raise);
+    st[id<MEM>].exit(chart, p, raise);
+    CHECK(p.shown == "+On-MEM");
+    // The derived columns: initial children, configuration bytes, subtrees.
+    static_assert(st[id<MCS>].initial == id<Off> && st[id<Manual>].initial == id<JOG>);
+    static_assert(st[id<MCS>].slot == 0 && st[id<On>].slot == 1 && st[id<Off>].slot == -1);
+    static_assert(st[id<Estop>].ordinal == 1 && st[id<On>].ordinal == 2);
+    static_assert(tables::contains(id<On>, id<JOG>) && !tables::contains(id<On>, id<Estop>));
+    static_assert(tables::initial_bytes[1] == 0);  // On starts in Auto
+    CHECK(tables::names[id<Manual>] == "Manual");
+}
+
+TEST_CASE("table: the transition table of the MCS holds the rows of Figure 13") {
+    using namespace tbl::mcs_like;
+    using bsc::table::none;
+    constexpr auto const& t = tables::transitions;
+    static_assert(t.size() == 9);
+    // { Off, On_P, On, 0, 0 }
+    static_assert(t[0].from == id<Off> && t[0].event == event_id<on_p> && t[0].to == id<On>);
+    static_assert(t[0].domain == id<MCS>);
+    CHECK((!set(t[0].guard) && !set(t[0].action)));
+    // { Estop, Reset_P, Estop, 0, Set_Error0 }
+    static_assert(t[1].from == id<Estop> && t[1].to == id<Estop>);
+    CHECK((!set(t[1].guard) && set(t[1].action)));
+    // { Estop, Off_P, Off, cond, 0 }
+    static_assert(t[2].from == id<Estop> && t[2].event == event_id<off_p>);
+    CHECK((set(t[2].guard) && !set(t[2].action)));
+    // { On, Off_P, Off, 0, 0 }, { On, EStop_P, EStop, 0, Set_Error1 }
+    static_assert(t[3].from == id<On> && t[3].to == id<Off> && t[4].to == id<Estop>);
+    CHECK(set(t[4].action));
+    // The domain of a transition from a state to its parent's child is the parent.
+    static_assert(t[5].domain == id<Auto> && t[7].domain == id<On>);
+    // The pointers call the chart's guard and action with the context and the event.
+    panel p;
+    off_p const off{};
+    reset_p const reset{};
+    bsc::table::machine<decltype(chart)>::queue_type raise;
+    p.error = 1;
+    CHECK_FALSE(t[2].guard(chart, p, &off));
+    t[1].action(chart, p, &reset, raise);
+    CHECK(p.error == 0);
+    CHECK(t[2].guard(chart, p, &off));
+    // The transitions out of each state, threaded through the table in declaration order.
+    static_assert(tables::first_out[id<Estop>] == 1 && tables::next_out[1] == 2 && tables::next_out[2] == -1);
+    static_assert(tables::first_out[id<MCS>] == -1);
+    static_assert(tables::event_count == 7 && !tables::has_eventless && tables::handles(event_id<jog_p>));
+}
+
+TEST_CASE("table: the MCS interpreted from its tables") {
+    using namespace tbl::mcs_like;
+    bsc::table::machine m{chart, panel{}};
+    CHECK(m.context().shown == "+MCS+Off");
+    m.dispatch(on_p{});
+    m.dispatch(mdi_p{});
+    CHECK(m.active_states().joined() == "MCS On Auto MDI");
+    m.dispatch(estop_p{});
+    CHECK(m.context().error == 1);
+    CHECK(m.dispatch(off_p{}) == bsc::outcome::ignored);  // cond: the error is still set
+    m.dispatch(reset_p{});
+    m.dispatch(off_p{});
+    m.dispatch(on_p{});  // deep history: back in MDI
+    CHECK(m.active_states().joined() == "MCS On Auto MDI");
+}
+
+TEST_CASE("table: an internal transition has no destination; an eventless one has event -1") {
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+        bsc::state<A>[([](ctx const& c) { return c.flag; })] = bsc::state<B>,
+        bsc::state<B> + bsc::event<go> / log("go"), bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    using tables = bsc::table::tables<decltype(chart)>;
+    using tbl::mcs_like::set;
+    static_assert(tables::transitions[0].event == bsc::table::eventless_id);
+    CHECK(set(tables::transitions[0].guard));
+    static_assert(tables::transitions[1].to == bsc::table::none);
+    CHECK(set(tables::transitions[1].action));
+    static_assert(tables::first_out[2] == 0 && tables::first_out[3] == 1 && tables::next_out[1] == 2);
+    static_assert(tables::next_out[2] == -1);
+}
+
+// ---- the interface shared with bsc::machine -------------------------------------------------------
+
+namespace tbl {
+struct A11;
+struct counter {
+    int count = 0;
+};
+inline constexpr auto shared_chart = bsc::make_chart<counter>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>),
+                         bsc::composite<B>(bsc::deep_history, bsc::initial<B1>, bsc::state<B2>),
+                         bsc::parallel<P>(bsc::composite<R1>(bsc::initial<X1>), bsc::state<Y1>)),
+    bsc::state<A1> + bsc::event<go> = bsc::state<A2>, bsc::state<A2> + bsc::event<go> = bsc::state<B>,
+    bsc::state<B1> + bsc::event<go> / [](counter& c) { ++c.count; } = bsc::state<B2>,
+    bsc::state<B2> + bsc::event<go> = bsc::state<P>, bsc::state<P> + bsc::event<back> = bsc::state<A>,
+    bsc::state<B> + bsc::event<back> = bsc::state<A>, bsc::state<A> + bsc::event<back> = bsc::state<B>);
+
+struct partial {
+    int exits = 0;
+    void on_exit(auto) { ++exits; }
+};
+}  // namespace tbl
+
+TEST_CASE("table: the same types and the same configuration bytes as bsc::machine") {
+    using compiled = bsc::machine<decltype(shared_chart)>;
+    using table = bsc::table::machine<decltype(shared_chart)>;
+    static_assert(std::is_same_v<compiled::configuration_type, table::configuration_type>);
+    static_assert(std::is_same_v<compiled::queue_type, table::queue_type>);
+    static_assert(std::is_same_v<compiled::event_types, table::event_types>);
+    static_assert(std::is_same_v<compiled::context_type, table::context_type>);
+    CHECK(sizeof(table::configuration_type) == 4);
+    bsc::machine a{shared_chart, counter{}};
+    bsc::table::machine b{shared_chart, counter{}};
+    for (int i = 0; i < 4; ++i) {
+        CHECK(a.dispatch(go{}) == b.dispatch(go{}));
+        CHECK(a.active_configuration() == b.active_configuration());
+    }
+    CHECK(b.active_states().joined() == "Root P R1 X1 Y1");
+    CHECK(b.is<P>());
+    CHECK(b.is<X1>());
+    CHECK_FALSE(b.is<B1>());  // B's byte says B1, but B is inactive
+    CHECK(b.context().count == 1);
+    b.dispatch(back{});
+    b.dispatch(back{});  // B's deep history: B2
+    CHECK(b.active_states().joined() == "Root B B2");
+    CHECK(b.last_outcome() == bsc::outcome::consumed);
+}
+
+TEST_CASE("table: a machine is a value, observers may have any subset of the hooks") {
+    bsc::table::machine a{shared_chart, counter{}};
+    a.dispatch(go{});
+    auto b = a;
+    b.dispatch(go{});
+    CHECK(a.is<A2>());
+    CHECK(b.is<B1>());
+
+    std::string trace;
+    bsc::table::machine t{shared_chart, counter{}, trace_observer{&trace}};
+    CHECK(trace == "+Root +A +A1");
+    trace.clear();
+    t.dispatch(go{});
+    t.dispatch(go{});
+    CHECK(trace == "-A1 A1>A2 +A2 -A2 -A A2>B +B +B1");
+
+    bsc::table::machine<decltype(shared_chart), bsc::default_policy, partial> p{shared_chart, counter{}, partial{}};
+    p.dispatch(go{});
+    CHECK(p.observer().exits == 1);
+    CHECK(sizeof(bsc::table::machine<decltype(shared_chart)>) ==
+          sizeof(bsc::table::machine<decltype(shared_chart), bsc::default_policy, bsc::no_observer>));
+}
+
+TEST_CASE("table: dispatch with allow_unhandled accepts an event no transition handles, and ignores it") {
+    struct stranger {};
+    bsc::table::machine m{shared_chart, counter{}};
+    CHECK(m.dispatch(stranger{}, bsc::allow_unhandled) == bsc::outcome::ignored);
+    CHECK(m.is<A1>());
+}
