@@ -3461,4 +3461,885 @@ private:
 
 }  // namespace bsc
 // end include/bsc/system.hpp
+// begin include/bsc/table/engine.hpp
+// bsc::table::machine: the table-driven back end. A generic engine (seed 000, section 3.3.2)
+// interprets the two tables of bsc/table/tables.hpp: it knows states and transitions only by
+// their numbers, and reaches the chart's guards and actions through the tables' function
+// pointers. Its public interface and its behaviour are those of bsc::machine, so a program
+// changes back end by changing one type.
+//
+// The paper's engine and this one:
+//
+//   StartStEng(st, qtStates, tm, qtTrans)   the constructor: start()
+//   stEng(event)                            dispatch(e): process(event, e), one microstep per
+//                                           event taken from the environment or the queue
+//   deActivPath(from, to, inclusive)        deactivate_path(domain)
+//   activPath(from, to, hist)               activate_path(domain, target)
+//   StopStEng()                             the destructor (the engine owns no resource)
+//
+// and the five steps of its Figure 9 are those of microstep().
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/table/tables.hpp
+// The operation rules of the table-driven runtime: a chart as the two constant tables of
+// seed 000 (section 3.3.1), the topology table (the paper's BSTATE, one row per state) and
+// the transition table (BTRANS, one row per transition). The chart's guards, actions, entry
+// and exit actions are reached through plain function pointers: one small generated function
+// ("thunk") per row, which receives the chart object and the context and calls the row's
+// callable. Everything here is computed by the compiler; bsc::table::machine interprets it.
+
+#include <array>
+#include <boost/hana/at.hpp>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+
+namespace bsc::table {
+
+/// A state's number: its row in the topology table. Row 0 is the implicit top above the
+/// chart's root (the paper's ancestor 0 of MCS); since the top is nobody's child or sibling,
+/// 0 also means "none" in the descendant, sibling, initial and `to` columns.
+using state_id = std::uint16_t;
+inline constexpr state_id none = 0;
+
+/// An event's number: the position of its type in detail::analysis<Chart>::events.
+using event_id = std::int16_t;
+inline constexpr event_id eventless_id = -1;  ///< a transition without an event
+inline constexpr event_id timeout_id = -2;    ///< a timeout transition, taken by a BSC cycle only
+
+/// The paper's status column, split in two: the kind of state and its history.
+enum class state_kind : std::uint8_t {
+    top,          ///< the implicit state above the root (row 0)
+    basic,        ///< an atomic state
+    final_state,  ///< an atomic state that ends its parent (the root: the machine halts)
+    or_state,     ///< a composite: exactly one child active (the paper's hierarchical state)
+    and_state,    ///< a parallel state: all children active (the paper's concurrent state)
+};
+enum class history_kind : std::uint8_t { none, shallow, deep };
+
+struct state_status {
+    state_kind kind = state_kind::basic;
+    history_kind history = history_kind::none;
+    friend constexpr bool operator==(state_status, state_status) = default;
+};
+
+/// One row of the topology table (the paper's BSTATE, Figure 7), then the columns the engine
+/// would otherwise recompute by walking the tree.
+template <class Chart, class Raise>
+struct state_row {
+    using context_type = typename Chart::context_type;
+    /// Runs the state's entry (or exit) actions, in declaration order.
+    using state_action = void (*)(Chart const& chart, context_type& context, Raise& raise);
+
+    state_id state = none;       ///< this row's number
+    state_id descendant = none;  ///< first child in document order
+    state_id sibling = none;     ///< next sibling in document order
+    state_id ancestor = none;    ///< parent (0, the top, for the root)
+    state_status status{};
+    state_action entry = nullptr;  ///< null: no entry action
+    state_action exit = nullptr;   ///< null: no exit action
+
+    // Derived columns.
+    state_id initial = none;   ///< default child of an OR state
+    std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
+    std::int16_t slot = -1;    ///< the byte of the configuration an OR state owns, -1 for others
+    state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
+};
+
+/// One row of the transition table (the paper's BTRANS, Figure 8).
+template <class Chart, class Raise>
+struct transition_row {
+    using context_type = typename Chart::context_type;
+    /// The guard, called with the event the transition is triggered by (bsc::eventless{} for
+    /// eventless transitions) passed as `event`.
+    using guard_fn = bool (*)(Chart const& chart, context_type const& context, void const* event);
+    using action_fn = void (*)(Chart const& chart, context_type& context, void const* event, Raise& raise);
+
+    state_id from = none;          ///< origin state
+    event_id event = eventless_id; ///< trigger, or `eventless_id` / `timeout_id`
+    state_id to = none;            ///< destination state; none: an internal transition
+    guard_fn guard = nullptr;      ///< null: unguarded
+    action_fn action = nullptr;    ///< null: no action
+    state_id domain = none;        ///< the transition domain: the state whose active descendants it exits
+};
+
+namespace detail_tables {
+
+template <class R>
+constexpr bool has_action() {
+    using A = std::remove_cvref_t<decltype(std::declval<R const&>().action)>;
+    return !std::is_same_v<A, bsc::detail::no_action>;
+}
+
+// The event type a transition row's guard and action receive.
+template <class R>
+using event_type_of =
+    std::conditional_t<std::is_void_v<typename bsc::detail::trigger_event<R>::type>, bsc::eventless,
+                       typename bsc::detail::trigger_event<R>::type>;
+
+constexpr state_kind kind_of(bsc::detail::kind k) {
+    switch (k) {
+        case bsc::detail::kind::top: return state_kind::top;
+        case bsc::detail::kind::basic: return state_kind::basic;
+        case bsc::detail::kind::final_state: return state_kind::final_state;
+        case bsc::detail::kind::composite: return state_kind::or_state;
+        case bsc::detail::kind::parallel: return state_kind::and_state;
+    }
+    return state_kind::basic;
+}
+
+constexpr history_kind history_of(bsc::detail::history h) {
+    switch (h) {
+        case bsc::detail::history::none: return history_kind::none;
+        case bsc::detail::history::shallow: return history_kind::shallow;
+        case bsc::detail::history::deep: return history_kind::deep;
+    }
+    return history_kind::none;
+}
+
+}  // namespace detail_tables
+
+/// The operation rules of `Chart`: its topology table `states` and transition table
+/// `transitions`, plus the indexes the engine uses to read them. `Policy` only fixes the
+/// capacity of the queue that actions raise events into (the `Raise` argument of the thunks).
+template <class Chart, class Policy = default_policy>
+struct tables {
+    using chart_type = std::remove_cv_t<Chart>;
+    using analysis = bsc::detail::analysis<chart_type>;
+    using context_type = typename chart_type::context_type;
+    using raise_type = bsc::detail::event_queue<Policy::queue_capacity, typename analysis::events>;
+    using state_row_type = state_row<chart_type, raise_type>;
+    using transition_row_type = transition_row<chart_type, raise_type>;
+
+private:
+    static constexpr auto const& topo = analysis::topo;
+    static constexpr auto const& rows = analysis::table;
+
+    static constexpr std::size_t transition_count = [] {
+        std::size_t n = 0;
+        for (int r = 0; r < analysis::R; ++r)
+            n += rows.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition;
+        return n;
+    }();
+
+    // The chart row of each transition, in declaration order.
+    static constexpr auto chart_row = [] {
+        std::array<int, transition_count> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < analysis::R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition)
+                out[n++] = r;
+        return out;
+    }();
+
+    static constexpr int count_rows(bsc::detail::row_kind k, int state) {
+        int n = 0;
+        for (int r = 0; r < analysis::R; ++r)
+            n += rows.kinds[static_cast<std::size_t>(r)] == k && rows.source[static_cast<std::size_t>(r)] == state;
+        return n;
+    }
+
+    // The entry or exit rows of a state, in declaration order.
+    template <bsc::detail::row_kind K, int S>
+    static constexpr auto rows_of = [] {
+        std::array<int, static_cast<std::size_t>(count_rows(K, S))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < analysis::R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == K && rows.source[static_cast<std::size_t>(r)] == S)
+                out[n++] = r;
+        return out;
+    }();
+
+    // ---- the thunks: one per state and per transition ---------------------------------------
+    template <bsc::detail::row_kind K, int S>
+    static void state_thunk(chart_type const& chart, context_type& context, raise_type& raise) {
+        constexpr auto const& list = rows_of<K, S>;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (boost::hana::at_c<static_cast<std::size_t>(list[I])>(chart.rows).action(context, raise), ...);
+        }(std::make_index_sequence<list.size()>{});
+    }
+
+    template <int Row>
+    static bool guard_thunk(chart_type const& chart, context_type const& context, void const* event) {
+        using E = detail_tables::event_type_of<typename analysis::template row_at<Row>>;
+        return static_cast<bool>(
+            boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).guard(context, *static_cast<E const*>(event)));
+    }
+
+    template <int Row>
+    static void action_thunk(chart_type const& chart, context_type& context, void const* event, raise_type& raise) {
+        using E = detail_tables::event_type_of<typename analysis::template row_at<Row>>;
+        boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).action(context, *static_cast<E const*>(event),
+                                                                            raise);
+    }
+
+    template <bsc::detail::row_kind K, int S>
+    static constexpr typename state_row_type::state_action state_action_of() {
+        if constexpr (rows_of<K, S>.size() == 0)
+            return nullptr;
+        else
+            return &state_thunk<K, S>;
+    }
+
+    static constexpr state_id id(int s) { return s < 0 ? none : static_cast<state_id>(s); }
+
+    template <int S>
+    static constexpr state_row_type make_state_row() {
+        constexpr auto i = static_cast<std::size_t>(S);
+        state_row_type row{};
+        row.state = static_cast<state_id>(S);
+        row.descendant = id(topo.first_child[i]);
+        row.sibling = id(topo.next_sibling[i]);
+        row.ancestor = id(topo.parent[i]);
+        row.status = {detail_tables::kind_of(topo.kinds[i]), detail_tables::history_of(topo.hist[i])};
+        row.entry = state_action_of<bsc::detail::row_kind::entry, S>();
+        row.exit = state_action_of<bsc::detail::row_kind::exit, S>();
+        row.initial = id(topo.initial[i]);
+        row.ordinal = static_cast<std::uint8_t>(topo.ordinal[i]);
+        row.slot = static_cast<std::int16_t>(topo.slot[i]);
+        row.end = static_cast<state_id>(topo.end[i]);
+        return row;
+    }
+
+    template <std::size_t K>
+    static constexpr transition_row_type make_transition_row() {
+        constexpr int r = chart_row[K];
+        constexpr auto i = static_cast<std::size_t>(r);
+        using R = typename analysis::template row_at<r>;
+        transition_row_type row{};
+        row.from = id(rows.source[i]);
+        row.event = rows.trigger[i] >= 0                            ? static_cast<event_id>(rows.trigger[i])
+                    : rows.trigger[i] == bsc::detail::eventless_id ? eventless_id
+                                                                    : timeout_id;
+        row.to = id(rows.target[i]);
+        if constexpr (rows.guarded[i])
+            row.guard = &guard_thunk<r>;
+        if constexpr (detail_tables::has_action<R>())
+            row.action = &action_thunk<r>;
+        row.domain = id(rows.domain[i]);
+        return row;
+    }
+
+    static_assert(analysis::N <= 0xffff, "bsc::table: a chart has at most 65535 states");
+    static_assert(transition_count <= 0x7fff, "bsc::table: a chart has at most 32767 transitions");
+
+public:
+    /// Number of rows of each table.
+    static constexpr std::size_t state_count = static_cast<std::size_t>(analysis::N);
+    static constexpr std::size_t transition_rows = transition_count;
+    /// Number of event types (valid event ids are 0 .. event_count - 1).
+    static constexpr std::size_t event_count = analysis::events::size;
+    /// Bytes of the active configuration: one per OR state.
+    static constexpr std::size_t slots = static_cast<std::size_t>(topo.slots);
+    /// The root of the chart (row 1; row 0 is the implicit top).
+    static constexpr state_id root = 1;
+
+    /// The topology table (BSTATE), in document order: row s describes state s.
+    static constexpr std::array<state_row_type, state_count> states =
+        []<std::size_t... S>(std::index_sequence<S...>) {
+            return std::array<state_row_type, state_count>{make_state_row<static_cast<int>(S)>()...};
+        }(std::make_index_sequence<state_count>{});
+
+    /// The transition table (BTRANS), in declaration order.
+    static constexpr std::array<transition_row_type, transition_count> transitions =
+        []<std::size_t... K>(std::index_sequence<K...>) {
+            return std::array<transition_row_type, transition_count>{make_transition_row<K>()...};
+        }(std::make_index_sequence<transition_count>{});
+
+    /// The unqualified names of the states, by row (row 0, the top, has an internal name).
+    static constexpr auto names = []<class... Tags>(bsc::detail::type_list<Tags...>) {
+        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
+    }(typename analysis::tags{});
+
+    /// The transitions leaving each state, as a list threaded through the transition table in
+    /// declaration order: first_out[s] is the first, next_out[t] the one after t (-1: no more).
+    static constexpr auto first_out = [] {
+        std::array<std::int16_t, state_count> first{};
+        for (auto& f : first) f = -1;
+        for (std::size_t t = transition_count; t-- > 0;)
+            first[transitions[t].from] = static_cast<std::int16_t>(t);
+        return first;
+    }();
+    static constexpr auto next_out = [] {
+        std::array<std::int16_t, transition_count> next{};
+        for (std::size_t t = 0; t < transition_count; ++t) {
+            next[t] = -1;
+            for (std::size_t u = t + 1; u < transition_count; ++u)
+                if (transitions[u].from == transitions[t].from) {
+                    next[t] = static_cast<std::int16_t>(u);
+                    break;
+                }
+        }
+        return next;
+    }();
+
+    /// True if some transition is triggered by `event` (an event id, or `eventless_id`).
+    static constexpr bool handles(event_id event) {
+        for (auto const& t : transitions)
+            if (t.event == event)
+                return true;
+        return false;
+    }
+    static constexpr bool has_eventless = handles(eventless_id);
+
+    /// How many basic states can be active at once: the most transitions one event can select.
+    static constexpr std::size_t max_active_leaves = [] {
+        std::array<std::size_t, state_count> leaves{};
+        for (std::size_t s = state_count; s-- > 0;) {
+            auto const& row = states[s];
+            if (row.descendant == none) {
+                leaves[s] = 1;
+                continue;
+            }
+            std::size_t n = 0;
+            for (state_id c = row.descendant; c != none; c = states[c].sibling)
+                n = row.status.kind == state_kind::and_state ? n + leaves[c] : (leaves[c] > n ? leaves[c] : n);
+            leaves[s] = n;
+        }
+        return leaves[0];
+    }();
+
+    /// True if a final state is a child of the root, so that the machine can halt.
+    static constexpr bool can_halt = [] {
+        if (states[root].status.kind != state_kind::or_state)
+            return false;
+        for (state_id c = states[root].descendant; c != none; c = states[c].sibling)
+            if (states[c].status.kind == state_kind::final_state)
+                return true;
+        return false;
+    }();
+
+    /// The configuration every OR state starts from: its initial child.
+    static constexpr auto initial_bytes = [] {
+        std::array<std::uint8_t, slots> bytes{};
+        for (auto const& row : states)
+            if (row.slot >= 0)
+                bytes[static_cast<std::size_t>(row.slot)] = states[row.initial].ordinal;
+        return bytes;
+    }();
+
+    /// a is d or one of its ancestors.
+    static constexpr bool contains(state_id a, state_id d) { return a <= d && d < states[a].end; }
+};
+
+}  // namespace bsc::table
+// end include/bsc/table/tables.hpp
+
+namespace bsc::table {
+
+/// The observer's hooks as data: one function pointer per state for on_entry and on_exit and
+/// one per transition for on_transition, each null where the observer lacks the hook. They
+/// turn the engine's state numbers back into the bsc::state_tag<S> the hooks expect.
+template <class Chart, class Policy, class Observer>
+struct observer_hooks {
+    using rules = tables<Chart, Policy>;
+    using analysis = typename rules::analysis;
+    using state_hook = void (*)(Observer& observer);
+    using transition_hook = void (*)(Observer& observer, void const* event);
+
+private:
+    template <std::size_t S>
+    using tag = state_tag<typename analysis::template tag_at<static_cast<int>(S)>>;
+
+    template <std::size_t S>
+    static void entered(Observer& o) {
+        o.on_entry(tag<S>{});
+    }
+    template <std::size_t S>
+    static void exited(Observer& o) {
+        o.on_exit(tag<S>{});
+    }
+
+    template <int Row>
+    using row_type = typename analysis::template row_at<Row>;
+    template <int Row>
+    using source_tag = state_tag<typename row_type<Row>::source>;
+    template <int Row>
+    using target_tag =
+        std::conditional_t<std::is_same_v<typename row_type<Row>::target, bsc::detail::no_target>,
+                           state_tag<internal>, state_tag<typename row_type<Row>::target>>;
+    template <int Row>
+    using event_type = detail_tables::event_type_of<row_type<Row>>;
+
+    template <int Row>
+    static void transition(Observer& o, void const* event) {
+        o.on_transition(source_tag<Row>{}, target_tag<Row>{}, *static_cast<event_type<Row> const*>(event));
+    }
+
+    template <std::size_t S>
+    static constexpr state_hook entry_hook() {
+        if constexpr (S > 0 && bsc::detail::observes_entry<Observer, tag<S>>)
+            return &entered<S>;
+        else
+            return nullptr;
+    }
+    template <std::size_t S>
+    static constexpr state_hook exit_hook() {
+        if constexpr (S > 0 && bsc::detail::observes_exit<Observer, tag<S>>)
+            return &exited<S>;
+        else
+            return nullptr;
+    }
+
+    // The chart row of transition K.
+    static constexpr int chart_row(std::size_t k) {
+        for (int r = 0; r < analysis::R; ++r)
+            if (analysis::table.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition && k-- == 0)
+                return r;
+        return -1;
+    }
+    template <std::size_t K>
+    static constexpr transition_hook transition_hook_of() {
+        constexpr int r = chart_row(K);
+        if constexpr (bsc::detail::observes_transition<Observer, source_tag<r>, target_tag<r>, event_type<r>>)
+            return &transition<r>;
+        else
+            return nullptr;
+    }
+
+public:
+    static constexpr std::array<state_hook, rules::state_count> on_entry =
+        []<std::size_t... S>(std::index_sequence<S...>) {
+            return std::array<state_hook, rules::state_count>{entry_hook<S>()...};
+        }(std::make_index_sequence<rules::state_count>{});
+    static constexpr std::array<state_hook, rules::state_count> on_exit =
+        []<std::size_t... S>(std::index_sequence<S...>) {
+            return std::array<state_hook, rules::state_count>{exit_hook<S>()...};
+        }(std::make_index_sequence<rules::state_count>{});
+    static constexpr std::array<transition_hook, rules::transition_rows> on_transition =
+        []<std::size_t... K>(std::index_sequence<K...>) {
+            return std::array<transition_hook, rules::transition_rows>{transition_hook_of<K>()...};
+        }(std::make_index_sequence<rules::transition_rows>{});
+};
+
+/// The observer hooks of an observer without hooks: no table at all.
+template <class Chart, class Policy>
+struct observer_hooks<Chart, Policy, no_observer> {};
+
+/// A running instance of a chart, interpreted from its tables: its context, its active
+/// configuration and its internal event queue. Same interface and same behaviour as
+/// bsc::machine; no heap, no virtual calls, no RTTI, no exceptions. Unlike bsc::machine it
+/// cannot run in constant expressions (its function pointers take the event as `void const*`).
+///
+/// Requirements: `Chart` comes from bsc::make_chart; `Policy` has the members of
+/// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
+template <class Chart, class Policy = default_policy, class Observer = no_observer>
+class machine {
+    using rules = tables<Chart, Policy>;
+    using analysis = typename rules::analysis;
+    using hooks = observer_hooks<Chart, Policy, Observer>;
+    static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
+    static constexpr std::size_t N = rules::state_count;
+    static constexpr auto const& states = rules::states;
+    static constexpr auto const& transitions = rules::transitions;
+
+public:
+    using chart_type = Chart;
+    using context_type = typename Chart::context_type;
+    using configuration_type = configuration<rules::slots>;
+    using queue_type = typename rules::raise_type;
+    using event_types = typename analysis::events;
+    /// The operation rules this machine interprets.
+    using tables_type = rules;
+
+    /// Enters the initial configuration (entry actions run) and settles eventless transitions.
+    explicit machine(Chart const& chart, context_type context = {}, Observer observer = {})
+        : chart_(chart), context_(std::move(context)), observer_(std::move(observer)) {
+        start();
+    }
+
+    /// Processes e to completion: the transitions it enables, then eventless transitions and
+    /// raised events until none remain. Fails to compile if no transition handles E.
+    template <class E>
+    outcome dispatch(E const& e) {
+        constexpr int trigger = analysis::template trigger_of<E>;
+        if constexpr (trigger < 0) {
+            static_assert(error::unhandled_event<E>::value);
+            return outcome::ignored;
+        } else {
+            return process(static_cast<event_id>(trigger), &e);
+        }
+    }
+
+    /// As dispatch(e), but an event type that no transition handles is accepted and ignored.
+    template <class E>
+    outcome dispatch(E const& e, allow_unhandled_t) {
+        constexpr int trigger = analysis::template trigger_of<E>;
+        if constexpr (trigger < 0)
+            return last_ = outcome::ignored;
+        else
+            return process(static_cast<event_id>(trigger), &e);
+    }
+
+    /// True if state S is active.
+    template <class S>
+    bool is() const {
+        constexpr int s = analysis::template index_of_state<S>;
+        if constexpr (s < 0) {
+            static_assert(error::state_not_in_chart<S>::value);
+            return false;
+        } else {
+            return active(static_cast<state_id>(s));
+        }
+    }
+
+    /// True once a final child of the root is active: the machine processes nothing more.
+    bool halted() const {
+        if constexpr (rules::can_halt)
+            return states[active_child(rules::root)].status.kind == state_kind::final_state;
+        else
+            return false;
+    }
+
+    /// The names of the active states, outermost first, in document order.
+    auto active_states() const {
+        state_names<N> names;
+        for (state_id s = rules::root; s < N;) {
+            if (!selected(s)) {
+                s = states[s].end;
+                continue;
+            }
+            names.push_back(rules::names[s]);
+            ++s;
+        }
+        return names;
+    }
+
+    /// The outcome of the last dispatch (or of construction).
+    outcome last_outcome() const { return last_; }
+
+    context_type& context() { return context_; }
+    context_type const& context() const { return context_; }
+    configuration_type const& active_configuration() const { return config_; }
+    Observer& observer() { return observer_; }
+    Observer const& observer() const { return observer_; }
+    queue_type const& queue() const { return queue_; }
+
+private:
+    // ---- the configuration ----------------------------------------------------------------
+    std::uint8_t byte(std::int16_t slot) const {
+        if constexpr (rules::slots > 0)
+            return config_.active[static_cast<std::size_t>(slot)];
+        else
+            return 0;
+    }
+    void set_byte(std::int16_t slot, std::uint8_t value) {
+        if constexpr (rules::slots > 0)
+            config_.active[static_cast<std::size_t>(slot)] = value;
+    }
+    // The child of an OR state (or of the top) that its byte selects.
+    state_id active_child(state_id s) const {
+        state_id c = states[s].descendant;
+        if (states[s].slot >= 0)
+            for (std::uint8_t k = byte(states[s].slot); k > 0; --k) c = states[c].sibling;
+        return c;
+    }
+    // s is active if its parent is: an OR parent selects it, an AND parent or the top always does.
+    bool selected(state_id s) const {
+        auto const slot = states[states[s].ancestor].slot;
+        return slot < 0 || byte(slot) == states[s].ordinal;
+    }
+    bool active(state_id s) const {
+        for (; s > rules::root; s = states[s].ancestor)
+            if (!selected(s))
+                return false;
+        return true;
+    }
+    static bool is_leaf(state_id s) { return states[s].descendant == none; }
+
+    // ---- entry and exit -------------------------------------------------------------------
+    void run_entry(state_id s) {
+        if (auto const f = states[s].entry)
+            f(chart_, context_, queue_);
+        if constexpr (observed)
+            if (auto const h = hooks::on_entry[s])
+                h(observer_);
+    }
+    void run_exit(state_id s) {
+        if (auto const f = states[s].exit)
+            f(chart_, context_, queue_);
+        if constexpr (observed)
+            if (auto const h = hooks::on_exit[s])
+                h(observer_);
+    }
+
+    // Enters s and its default completion: the initial child of an OR state, or the child its
+    // history remembers; every child of an AND state.
+    void enter_default(state_id s) {
+        run_entry(s);
+        enter_content(s);
+    }
+    void enter_content(state_id s) {
+        auto const& row = states[s];
+        if (row.status.kind == state_kind::or_state) {
+            switch (row.status.history) {
+                case history_kind::none:
+                    set_byte(row.slot, states[row.initial].ordinal);
+                    enter_default(row.initial);
+                    break;
+                case history_kind::shallow: enter_default(active_child(s)); break;
+                case history_kind::deep: enter_restore(active_child(s)); break;
+            }
+        } else if (row.status.kind == state_kind::and_state) {
+            for (state_id c = row.descendant; c != none; c = states[c].sibling) enter_default(c);
+        }
+    }
+    // Deep history: re-enters s and the whole sub-configuration the bytes remember.
+    void enter_restore(state_id s) {
+        run_entry(s);
+        auto const& row = states[s];
+        if (row.status.kind == state_kind::or_state)
+            enter_restore(active_child(s));
+        else if (row.status.kind == state_kind::and_state)
+            for (state_id c = row.descendant; c != none; c = states[c].sibling) enter_restore(c);
+    }
+
+    // The paper's activPath: enters, below the active state `domain`, the states on the path
+    // down to `target` (and, at every AND state on the way, its other children by default),
+    // then the target's default completion, which follows its history. Entries run outermost
+    // first, in document order.
+    void activate_path(state_id domain, state_id target) {
+        state_id c = target;
+        while (states[c].ancestor != domain) c = states[c].ancestor;
+        if (states[domain].status.kind == state_kind::and_state) {
+            for (state_id k = states[domain].descendant; k != none; k = states[k].sibling) {
+                if (k == c)
+                    enter_path_node(c, target);
+                else
+                    enter_default(k);
+            }
+        } else {
+            if (states[domain].slot >= 0)
+                set_byte(states[domain].slot, states[c].ordinal);
+            enter_path_node(c, target);
+        }
+    }
+    void enter_path_node(state_id s, state_id target) {
+        run_entry(s);
+        if (s == target)
+            enter_content(s);
+        else
+            activate_path(s, target);
+    }
+
+    // The paper's deActivPath: exits every active descendant of `domain`, innermost first and
+    // in reverse document order (the reverse of their document order), running exit actions.
+    // The bytes are left as they are: they are the history of the states left.
+    void deactivate_path(state_id domain) {
+        std::array<state_id, N> path{};
+        std::size_t n = 0;
+        for (state_id s = domain + 1; s < states[domain].end;) {
+            if (!selected(s)) {
+                s = states[s].end;
+                continue;
+            }
+            path[n++] = s;
+            ++s;
+        }
+        while (n > 0) run_exit(path[--n]);
+    }
+
+    // ---- transitions ----------------------------------------------------------------------
+    struct selection {
+        std::array<std::int16_t, rules::max_active_leaves> rows{};
+        std::size_t size = 0;
+        void add(std::int16_t t) {
+            for (std::size_t i = 0; i < size; ++i)
+                if (rows[i] == t)
+                    return;
+            rows[size++] = t;
+        }
+    };
+
+    bool guard_holds(std::int16_t t, void const* e) const {
+        auto const g = transitions[static_cast<std::size_t>(t)].guard;
+        return g == nullptr || g(chart_, context_, e);
+    }
+
+    // Step 2 for one active basic state: its candidates are the transitions on the event from
+    // the state itself, then from its parent, and so on up to the root (deepest first); among
+    // those of one origin, declaration order. The first whose guard holds is selected.
+    bool select_from(state_id leaf, event_id event, void const* e, selection& sel) const {
+        for (state_id a = leaf; a != none; a = states[a].ancestor)
+            for (std::int16_t t = rules::first_out[a]; t >= 0; t = rules::next_out[static_cast<std::size_t>(t)])
+                if (transitions[static_cast<std::size_t>(t)].event == event && guard_holds(t, e)) {
+                    sel.add(t);
+                    return true;
+                }
+        return false;
+    }
+
+    // Two transitions conflict when their exit sets meet: when their domains nest.
+    static bool conflict(std::int16_t t1, std::int16_t t2) {
+        auto const& a = transitions[static_cast<std::size_t>(t1)];
+        auto const& b = transitions[static_cast<std::size_t>(t2)];
+        if (a.to == none || b.to == none)
+            return false;
+        return rules::contains(a.domain, b.domain) || rules::contains(b.domain, a.domain);
+    }
+    static bool proper_ancestor(state_id a, state_id d) { return a != d && rules::contains(a, d); }
+
+    // SCXML's conflict resolution: walking the selection in order, a transition that conflicts
+    // with one kept earlier replaces it if its origin lies below the earlier one's, and is
+    // dropped otherwise.
+    static selection resolve(selection const& sel) {
+        selection kept;
+        for (std::size_t i = 0; i < sel.size; ++i) {
+            std::int16_t const t1 = sel.rows[i];
+            bool preempted = false;
+            selection survivors;
+            for (std::size_t j = 0; j < kept.size; ++j) {
+                std::int16_t const t2 = kept.rows[j];
+                if (!conflict(t1, t2))
+                    survivors.add(t2);
+                else if (proper_ancestor(transitions[static_cast<std::size_t>(t2)].from,
+                                         transitions[static_cast<std::size_t>(t1)].from))
+                    continue;  // t1 preempts t2
+                else {
+                    preempted = true;
+                    break;
+                }
+            }
+            if (!preempted) {
+                survivors.add(t1);
+                kept = survivors;
+            }
+        }
+        return kept;
+    }
+
+    void run_action(std::int16_t t, void const* e) {
+        auto const& row = transitions[static_cast<std::size_t>(t)];
+        if constexpr (observed)
+            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)])
+                h(observer_, e);
+        if (row.action)
+            row.action(chart_, context_, e, queue_);
+    }
+
+    // One microstep for an event, the five steps of the paper's Figure 9; true if a
+    // transition was selected.
+    bool microstep(event_id event, void const* e) {
+        // 1. Sense the event: an event no transition is triggered by changes nothing.
+        if (!rules::handles(event))
+            return false;
+
+        // 2. Determine the transitions: every active basic state, in document order, selects
+        //    its first enabled candidate (the event is broadcast to all parallel regions).
+        selection sel;
+        bool any = false;
+        for (state_id s = rules::root; s < N;) {
+            if (!selected(s)) {
+                s = states[s].end;
+                continue;
+            }
+            if (is_leaf(s) && select_from(s, event, e, sel))
+                any = true;
+            ++s;
+        }
+        if (sel.size == 0)
+            return any;
+        selection const fired = resolve(sel);
+
+        // 3. Deactivate the states the transitions leave, running their exit actions.
+        for (std::size_t i = fired.size; i-- > 0;) {
+            auto const& row = transitions[static_cast<std::size_t>(fired.rows[i])];
+            if (row.to != none)
+                deactivate_path(row.domain);
+        }
+        // 4. Perform the transition actions, in selection order.
+        for (std::size_t i = 0; i < fired.size; ++i) run_action(fired.rows[i], e);
+        // 5. Activate the states they enter, running entry actions, defaults and history.
+        for (std::size_t i = 0; i < fired.size; ++i) {
+            auto const& row = transitions[static_cast<std::size_t>(fired.rows[i])];
+            if (row.to != none)
+                activate_path(row.domain, row.to);
+        }
+        return any;
+    }
+
+    // ---- running --------------------------------------------------------------------------
+    // The paper's StartStEng: the initial configuration, entered from the root down.
+    void start() {
+        if constexpr (rules::slots > 0)
+            config_.active = rules::initial_bytes;
+        latch();
+        enter_default(rules::root);
+        last_ = finish(false);
+        commit();
+    }
+
+    // The paper's stEng: one event from the environment, processed to completion.
+    outcome process(event_id event, void const* e) {
+        if (halted())
+            return last_ = outcome::halted;
+        latch();
+        last_ = finish(microstep(event, e));
+        commit();
+        return last_;
+    }
+
+    // Settles the machine after a microstep: eventless transitions until none is enabled,
+    // then the raised events one by one, each followed by its eventless transitions.
+    outcome finish(bool consumed) {
+        std::size_t internal_events = 0;
+        for (;;) {
+            if constexpr (rules::has_eventless) {
+                static constexpr bsc::eventless no_event{};
+                // Up to max_eventless_steps transitions settle; one more means the chart cycles.
+                for (std::size_t steps = 0; !halted() && microstep(eventless_id, &no_event);)
+                    if (++steps > Policy::max_eventless_steps)
+                        return abandon();
+            }
+            if (queue_.empty() || halted())
+                break;
+            if (++internal_events > Policy::max_internal_events)
+                return abandon();
+            queue_.pop([&](auto const& ev) {
+                microstep(static_cast<event_id>(analysis::template trigger_of<std::decay_t<decltype(ev)>>), &ev);
+            });
+        }
+        if (queue_.overflowed()) {
+            queue_.clear_overflow();
+            return outcome::queue_overflow;
+        }
+        return consumed ? outcome::consumed : outcome::ignored;
+    }
+
+    outcome abandon() {
+        queue_.clear();
+        queue_.clear_overflow();
+        return outcome::livelock;
+    }
+
+    // Input and output channels of the context, latched and committed around each dispatch
+    // as bsc::machine does.
+    void latch() { bsc::detail::latch_inputs(context_); }
+    void commit() { bsc::detail::commit_outputs(context_); }
+
+    [[no_unique_address]] Chart chart_;
+    context_type context_;
+    configuration_type config_{};
+    queue_type queue_{};
+    outcome last_ = outcome::ignored;
+    [[no_unique_address]] Observer observer_;
+};
+
+template <class C, class Ctx>
+machine(C const&, Ctx) -> machine<C>;
+template <class C>
+machine(C const&) -> machine<C>;
+template <class C, class Ctx, class O>
+machine(C const&, Ctx, O) -> machine<C, default_policy, O>;
+
+}  // namespace bsc::table
+// end include/bsc/table/engine.hpp
 // end include/bsc/bsc.hpp

@@ -18,6 +18,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <tuple>
 #include <type_traits>
@@ -67,8 +68,10 @@ struct time_frame {
 // children needs, so a state of a controller with a dozen flags takes a few bytes.
 class bit_writer {
 public:
-    explicit bit_writer(std::byte* out) : out_(out) {}
+    bit_writer(std::byte* out, std::size_t capacity_bits) : out_(out), capacity_(capacity_bits) {}
     void put(std::uint64_t value, unsigned bits) {
+        if (bit_ + bits > capacity_) std::abort();  // never write past the key
+
         while (bits > 0) {  // a byte (or what is left of it) at a time
             unsigned const offset = bit_ % 8;
             unsigned const n = bits < 8 - offset ? bits : 8 - offset;
@@ -83,15 +86,20 @@ public:
         for (std::size_t k = 0; k < n; ++k) put(bytes[k], 8);
     }
 
+    std::size_t bits() const { return bit_; }
+
 private:
     std::byte* out_;
+    std::size_t capacity_;
     std::size_t bit_ = 0;
 };
 
 class bit_reader {
 public:
-    explicit bit_reader(std::byte const* in) : in_(in) {}
+    bit_reader(std::byte const* in, std::size_t capacity_bits) : in_(in), capacity_(capacity_bits) {}
     std::uint64_t get(unsigned bits) {
+        if (bit_ + bits > capacity_) std::abort();  // never read past the key
+
         std::uint64_t value = 0;
         for (unsigned done = 0; done < bits;) {
             unsigned const offset = bit_ % 8;
@@ -108,8 +116,11 @@ public:
         for (std::size_t k = 0; k < n; ++k) bytes[k] = static_cast<unsigned char>(get(8));
     }
 
+    std::size_t bits() const { return bit_; }
+
 private:
     std::byte const* in_;
+    std::size_t capacity_;
     std::size_t bit_ = 0;
 };
 
@@ -221,8 +232,8 @@ void encode(T const& value, bit_writer& out, time_frame frame) {
         bool const timing = timer_access::phase(value) == 2;  // running, expired or not
         out.put(timing ? frame.cycles(frame.clock - timer_access::started(value), value.limit()) : 0, cycle_bits);
     } else if constexpr (is_channel<T>) {
-        encode_value(value.pending(), out);
-        encode_value(value.get(), out);
+        encode(value.pending(), out, frame);  // a channel of an aggregate: member by member too
+        encode(value.get(), out, frame);
     } else if constexpr (is_aggregate_class<T>()) {
         bsc::detail::for_each_field(value, [&](auto const& field) { encode(field, out, frame); });
     } else {
@@ -249,8 +260,10 @@ void decode(T& value, bit_reader& in, time_frame frame) {
         timer_access::set(value, phase, expired, frame.clock - elapsed, elapsed);
     } else if constexpr (is_channel<T>) {
         using V = channel_value<T>;
-        V const pending = decode_value<V>(in);
-        V const current = decode_value<V>(in);
+        V pending = value.pending();
+        V current = value.get();
+        decode(pending, in, frame);
+        decode(current, in, frame);
         value.set(current);  // both values, through the channel's own cycle boundary
         value.latch();
         value.commit();
@@ -556,6 +569,7 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired) {
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -573,12 +587,14 @@ struct codec {
     duration period{};
     void encode(T const& s, std::byte* out) const {
         std::memset(out, 0, key_size);
-        bit_writer writer{out};
+        bit_writer writer{out, encoded_bits<T>()};
         detail::encode(s, writer, time_frame{origin + period, period});
+        if (writer.bits() != encoded_bits<T>()) std::abort();  // the size computed from the types is exact
     }
     T decode(T prototype, std::byte const* in) const {
-        bit_reader reader{in};
+        bit_reader reader{in, encoded_bits<T>()};
         detail::decode(prototype, reader, time_frame{origin, period});
+        if (reader.bits() != encoded_bits<T>()) std::abort();
         return prototype;
     }
 };
