@@ -4,8 +4,9 @@
 Starting from include/bsc/bsc.hpp, every include that resolves to a file under
 include/ is inlined in place, depth-first and only the first time it is seen;
 all other includes are kept as they are. The explorer, include/bsc/verify.hpp,
-becomes a second file that includes the first and adds only what it lacks. The
-output is deterministic so that it can be checked in and verified with --check.
+and the diagram exports, include/bsc/export.hpp, become files of their own that
+include the first and add only what it lacks. The output is deterministic so
+that it can be checked in and verified with --check.
 """
 
 import argparse
@@ -19,6 +20,7 @@ ROOT = Path(__file__).resolve().parent.parent
 INCLUDE_DIR = ROOT / "include"
 ENTRY = INCLUDE_DIR / "bsc" / "bsc.hpp"
 VERIFY_ENTRY = INCLUDE_DIR / "bsc" / "verify.hpp"
+EXPORT_ENTRY = INCLUDE_DIR / "bsc" / "export.hpp"
 DEFAULT_OUTPUT = ROOT / "single_include" / "bsc" / "bsc.hpp"
 COMMAND = "python3 scripts/amalgamate.py"
 
@@ -36,6 +38,14 @@ VERIFY_HEADER = f"""\
 #pragma once
 // bsc::verify - the state-space explorer, single-header distribution (needs bsc.hpp beside it).
 // Generated from include/bsc/verify.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+EXPORT_HEADER = f"""\
+#pragma once
+// bsc exports - Mermaid, Graphviz, PlantUML and SCXML, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/export.hpp by `{COMMAND}`.
 // Do not edit: change the headers under include/ and regenerate.
 #include "bsc.hpp"
 """
@@ -80,16 +90,26 @@ def inline(path: Path, seen: set[Path], out: list[str]) -> None:
     out.append(f"// end {relative(path)}\n")
 
 
-def amalgamate() -> tuple[str, str]:
-    """The single header, and the explorer's header that includes it."""
+def amalgamate() -> tuple[str, str, str]:
+    """The single header, and the explorer's and the exports' headers that include it."""
     if not ENTRY.is_file():
         raise SystemExit(f"missing entry header {relative(ENTRY)}")
     seen: set[Path] = set()
     out = [HEADER]
     inline(ENTRY.resolve(), seen, out)
+    in_single_header = set(seen)
     verify = [VERIFY_HEADER]
     inline(VERIFY_ENTRY.resolve(), seen, verify)
-    return "".join(out), "".join(verify)
+    exports = [EXPORT_HEADER]
+    export_seen = set(in_single_header)
+    inline(EXPORT_ENTRY.resolve(), export_seen, exports)
+    # verify.hpp and export.hpp may be included together: neither may repeat a header of the other.
+    shared = (seen - in_single_header) & (export_seen - in_single_header)
+    if shared:
+        names = ", ".join(sorted(relative(p) for p in shared))
+        raise SystemExit(f"{names}: included by both bsc/verify.hpp and bsc/export.hpp but not by "
+                         "bsc/bsc.hpp; include it from bsc/bsc.hpp")
+    return "".join(out), "".join(verify), "".join(exports)
 
 
 def check(content: str, output: Path) -> int:
@@ -123,8 +143,9 @@ def main() -> int:
                         help="exit 1 if the output file differs from a fresh amalgamation")
     args = parser.parse_args()
 
-    content, verify = amalgamate()
-    outputs = [(content, args.output), (verify, args.output.parent / "verify.hpp")]
+    content, verify, exports = amalgamate()
+    outputs = [(content, args.output), (verify, args.output.parent / "verify.hpp"),
+               (exports, args.output.parent / "export.hpp")]
     if args.check:
         return max(check(text, path) for text, path in outputs)
     for text, path in outputs:

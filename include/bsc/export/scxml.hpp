@@ -1,0 +1,124 @@
+#pragma once
+// bsc::to_scxml: a chart as a W3C SCXML document.
+//
+// The state tree maps one for one: composite states are <state> with `initial`, parallel
+// states <parallel>, final states <final> (a final state with outgoing transitions stays a
+// <state>, since <final> may have none), the chart's root is the <scxml> element's initial.
+// Transitions are children of their source, in declaration order (which is SCXML's priority
+// among transitions of one source):
+//   - `event` is the event's type name, made a valid token; eventless transitions have none;
+//   - a state-scoped timeout `after(3s)` is a transition on the event "after(3s)", with a
+//     comment: SCXML has no timeouts, a platform would send that event delayed from <onentry>;
+//   - `cond` is the guard's name (bsc::named), or "guard";
+//   - an internal transition (a row without a target) is type="internal" without a target;
+//   - actions, and entry and exit actions (<onentry>, <onexit>), are <script> placeholders that
+//     name the action in a comment.
+// History: bsc restores a composite with history on every entry that does not name a state
+// inside it, which is what entering its <history> pseudo-state does in SCXML; so such a
+// composite's <initial> targets its <history>, whose default transition targets the initial child.
+
+#include <string>
+#include <string_view>
+
+#include <bsc/export/model.hpp>
+
+namespace bsc::detail::exporting {
+
+/// Text inside an XML comment, which may not contain "--".
+inline std::string scxml_comment(std::string_view text) {
+    return replace_all(xml_escaped(text), "--", "- -");
+}
+
+inline std::string scxml_script(std::string_view action) {
+    return "<script>/* " + xml_escaped(replace_all(std::string(action), "*/", "* /")) + " */</script>";
+}
+
+/// The id of the <history> pseudo-state of a composite: "<id>_history", unique among the states.
+inline std::string history_id(chart_model const& m, int s) {
+    std::string id = m[s].id + "_history";
+    for (bool clash = true; clash;) {
+        clash = false;
+        for (auto const& st : m.states)
+            if (st.id == id) {
+                id += '_';
+                clash = true;
+            }
+    }
+    return id;
+}
+
+inline void scxml_transition(chart_model const& m, transition_info const& t, int level, std::string& out) {
+    auto const pad = indent(level);
+    if (t.trigger == trigger_kind::timeout)
+        out += pad + "<!-- " + t.event + ": a timeout, enabled once " + scxml_comment(m[t.source].label) +
+               " has been active for " + t.delay + " -->\n";
+    out += pad + "<transition";
+    if (t.trigger == trigger_kind::timeout)
+        out += " event=\"" + xml_escaped(t.event) + "\"";
+    else if (t.trigger == trigger_kind::event)
+        out += " event=\"" + identifier(t.event) + "\"";
+    if (!t.guard.empty()) out += " cond=\"" + xml_escaped(t.guard) + "\"";
+    if (t.target >= 0)
+        out += " target=\"" + m[t.target].id + "\"";
+    else
+        out += " type=\"internal\"";
+    if (t.action.empty())
+        out += "/>\n";
+    else
+        out += ">\n" + pad + "    " + scxml_script(t.action) + "\n" + pad + "</transition>\n";
+}
+
+inline void scxml_state(chart_model const& m, int s, int level, std::string& out) {
+    auto const& st = m[s];
+    auto const pad = indent(level);
+    bool has_transitions = false;
+    for (auto const& t : m.transitions) has_transitions = has_transitions || t.source == s;
+    std::string element = "state";
+    if (st.node_kind == kind::parallel) element = "parallel";
+    if (st.node_kind == kind::final_state && !has_transitions) element = "final";
+    out += pad + "<" + element + " id=\"" + st.id + "\"";
+    if (st.initial >= 0 && st.hist == history::none) out += " initial=\"" + m[st.initial].id + "\"";
+    bool const empty = st.children.empty() && st.entry.empty() && st.exit.empty() && !has_transitions;
+    if (empty) {
+        out += "/>\n";
+        return;
+    }
+    out += ">\n";
+    auto const inner = indent(level + 1);
+    if (st.node_kind == kind::final_state && element == "state")
+        out += inner + "<!-- a final state of the chart; <final> may not have transitions -->\n";
+    if (st.initial >= 0 && st.hist != history::none) {
+        auto const h = history_id(m, s);
+        out += inner + "<initial>\n" + inner + "    <transition target=\"" + h + "\"/>\n" + inner + "</initial>\n";
+        out += inner + "<history id=\"" + h + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") +
+               "\">\n" + inner + "    <transition target=\"" + m[st.initial].id + "\"/>\n" + inner + "</history>\n";
+    }
+    for (auto const& a : st.entry) out += inner + "<onentry>" + scxml_script(a) + "</onentry>\n";
+    for (auto const& a : st.exit) out += inner + "<onexit>" + scxml_script(a) + "</onexit>\n";
+    for (auto const& t : m.transitions)
+        if (t.source == s) scxml_transition(m, t, level + 1, out);
+    for (int const c : st.children) scxml_state(m, c, level + 1, out);
+    out += pad + "</" + element + ">\n";
+}
+
+inline std::string to_scxml(chart_model const& m) {
+    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    out += "<!-- The chart " + scxml_comment(m[0].label) +
+           ": cond names the guard, the <script> comments name the actions. -->\n";
+    out += "<scxml xmlns=\"http://www.w3.org/2005/07/scxml\" version=\"1.0\" name=\"" + m[0].id + "\" initial=\"" +
+           m[0].id + "\">\n";
+    scxml_state(m, 0, 1, out);
+    return out + "</scxml>\n";
+}
+
+}  // namespace bsc::detail::exporting
+
+namespace bsc {
+
+/// The chart as a W3C SCXML document.
+template <class Chart>
+std::string to_scxml(Chart const& chart) {
+    return detail::exporting::to_scxml(detail::exporting::model_of(chart));
+}
+
+}  // namespace bsc

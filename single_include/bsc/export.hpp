@@ -1,0 +1,806 @@
+#pragma once
+// bsc exports - Mermaid, Graphviz, PlantUML and SCXML, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/export.hpp by `python3 scripts/amalgamate.py`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+// begin include/bsc/export.hpp
+// bsc exports: a chart as a diagram or as a document for other tools.
+//
+//   bsc::to_mermaid(chart)   Mermaid stateDiagram-v2
+//   bsc::to_dot(chart)       Graphviz DOT
+//   bsc::to_plantuml(chart)  PlantUML state diagram
+//   bsc::to_scxml(chart)     W3C SCXML
+//
+// Not included by <bsc/bsc.hpp>: the exports build std::string, which machines never need.
+// Guards and actions appear by name when they have one (bsc::named, <bsc/dsl/named.hpp>).
+
+// begin include/bsc/export/dot.hpp
+// bsc::to_dot: a chart as a Graphviz digraph (render it with `dot -Tsvg`).
+//
+// Basic and final states are rounded boxes (a final state with a double border) whose label
+// lists the entry and exit actions and the internal transitions under the name. Composite and
+// parallel states are clusters; the regions of a parallel state are dashed clusters. A
+// composite's initial child is marked by an edge from a small black dot; history by a circled
+// H (shallow) or H* (deep) inside the composite. Transitions are edges labelled
+// "event [guard] / action"; an edge from or to a composite or parallel state starts or ends at
+// the cluster's border (`compound=true` with `ltail`/`lhead`, through an invisible anchor node
+// inside the cluster).
+
+#include <string>
+#include <string_view>
+
+// begin include/bsc/export/model.hpp
+// The chart as the diagram exports see it: its states in document order with their names,
+// identifiers, kinds, initial children, history and entry/exit actions, and its transitions
+// with the labels of their triggers, guards and actions. Built at run time from a chart object
+// (the names of guards and actions given with bsc::named, and the delays of timeouts, are
+// values in the chart); each format of <bsc/export.hpp> is a walk over this model.
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <boost/hana/at.hpp>
+#include <boost/hana/basic_tuple.hpp>
+
+
+namespace bsc::detail::exporting {
+
+// ---- Labels of guards and actions -------------------------------------------------------------
+
+/// A guard or action that has a name (bsc::named, or any callable with a `name` member).
+template <class T>
+concept has_name = requires(T const& t) { std::string_view{t.name}; };
+
+template <class T>
+inline constexpr bool is_not_guard = false;
+template <class G>
+inline constexpr bool is_not_guard<not_guard<G>> = true;
+template <class T>
+inline constexpr bool is_and_guard = false;
+template <class L, class R>
+inline constexpr bool is_and_guard<and_guard<L, R>> = true;
+template <class T>
+inline constexpr bool is_or_guard = false;
+template <class L, class R>
+inline constexpr bool is_or_guard<or_guard<L, R>> = true;
+template <class T>
+inline constexpr bool is_guard_fn = false;
+template <class F>
+inline constexpr bool is_guard_fn<guard_fn<F>> = true;
+template <class T>
+inline constexpr bool is_action_fn = false;
+template <class F>
+inline constexpr bool is_action_fn<action_fn<F>> = true;
+template <class T>
+inline constexpr bool is_action_seq = false;
+template <class... As>
+inline constexpr bool is_action_seq<action_seq<As...>> = true;
+template <class T>
+inline constexpr bool is_state_action = false;
+template <class A>
+inline constexpr bool is_state_action<state_action<A>> = true;
+
+/// A label and whether any part of it was named; `precedence` places parentheses:
+/// 1 for ||, 2 for &&, 3 for a name or a negation.
+struct expression {
+    std::string text;
+    bool named = false;
+    int precedence = 3;
+};
+
+inline std::string parenthesized(expression const& e, int context) {
+    return e.precedence < context ? "(" + e.text + ")" : e.text;
+}
+
+template <class G>
+expression guard_expression(G const& g) {
+    if constexpr (has_name<G>) {
+        return {std::string(std::string_view{g.name}), true, 3};
+    } else if constexpr (is_not_guard<G>) {
+        auto const inner = guard_expression(g.g);
+        return {"!" + parenthesized(inner, 3), inner.named, 3};
+    } else if constexpr (is_and_guard<G> || is_or_guard<G>) {
+        int const precedence = is_and_guard<G> ? 2 : 1;
+        auto const l = guard_expression(g.l);
+        auto const r = guard_expression(g.r);
+        return {parenthesized(l, precedence) + (is_and_guard<G> ? " && " : " || ") + parenthesized(r, precedence),
+                l.named || r.named, precedence};
+    } else if constexpr (is_guard_fn<G>) {
+        return guard_expression(g.fn);
+    } else {
+        return {"guard", false, 3};
+    }
+}
+
+/// The label of a guard: its name, a composition of named guards ("!released && at_home", an
+/// unnamed part shown as "guard"), or "guard" when no part has a name.
+template <class G>
+std::string guard_label(G const& g) {
+    auto const e = guard_expression(g);
+    return e.named ? e.text : "guard";
+}
+
+template <class A>
+expression action_expression(A const& a) {
+    if constexpr (has_name<A>) {
+        return {std::string(std::string_view{a.name}), true, 3};
+    } else if constexpr (is_action_seq<A>) {
+        expression out{"", false, 3};
+        std::apply(
+            [&](auto const&... parts) {
+                (
+                    [&](expression const& part) {
+                        if (!out.text.empty()) out.text += ", ";
+                        out.text += part.text;
+                        out.named = out.named || part.named;
+                    }(action_expression(parts)),
+                    ...);
+            },
+            a.actions);
+        return out;
+    } else if constexpr (is_action_fn<A> || is_state_action<A>) {
+        return action_expression(a.fn);
+    } else {
+        return {"action", false, 3};
+    }
+}
+
+/// The label of an action: its name, the names of a sequence's parts separated by ", " (an
+/// unnamed part shown as "action"), or "action" when no part has a name.
+template <class A>
+std::string action_label(A const& a) {
+    auto const e = action_expression(a);
+    return e.named ? e.text : "action";
+}
+
+/// "3s", "250ms", "20us" or "7ns": the largest unit that divides the delay.
+inline std::string delay_label(std::chrono::nanoseconds d) {
+    auto const n = d.count();
+    if (n % 1'000'000'000 == 0) return std::to_string(n / 1'000'000'000) + "s";
+    if (n % 1'000'000 == 0) return std::to_string(n / 1'000'000) + "ms";
+    if (n % 1'000 == 0) return std::to_string(n / 1'000) + "us";
+    return std::to_string(n) + "ns";
+}
+
+// ---- Identifiers ---------------------------------------------------------------------------
+
+/// An identifier valid in every format: ASCII letters, digits and '_', not starting with a
+/// digit. "Slot<cell::P1>" becomes "Slot_cell_P1".
+inline std::string identifier(std::string_view name) {
+    std::string out;
+    bool gap = false;
+    for (char const c : name) {
+        bool const word = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+        if (word) {
+            if (gap && !out.empty()) out += '_';
+            out += c;
+            gap = false;
+        } else {
+            gap = true;
+        }
+    }
+    if (out.empty()) out = "unnamed";
+    if (out.front() >= '0' && out.front() <= '9') out.insert(0, "s_");
+    // Words that some of the formats reserve.
+    for (std::string_view const reserved :
+         {"state", "note", "end", "as", "direction", "class", "classDef", "style", "click", "graph", "digraph",
+          "subgraph", "node", "edge", "strict", "scxml", "default", "hide"})
+        if (out == reserved) out += '_';
+    return out;
+}
+
+// ---- The model -----------------------------------------------------------------------------
+
+enum class trigger_kind : std::uint8_t { event, eventless, timeout };
+
+struct state_info {
+    std::string id;     ///< unique identifier, valid in every format
+    std::string label;  ///< the state's name: bsc::name_of<S>, with scopes where two states share it
+    kind node_kind = kind::basic;
+    history hist = history::none;
+    int parent = -1;  ///< index in chart_model::states; -1 for the root
+    std::vector<int> children;
+    int initial = -1;  ///< the initial child of a composite state
+    std::vector<std::string> entry;  ///< labels of the entry actions, in declaration order
+    std::vector<std::string> exit;   ///< labels of the exit actions
+    std::vector<int> internal;       ///< internal transitions (indices in chart_model::transitions)
+
+    bool is_leaf() const { return node_kind == kind::basic || node_kind == kind::final_state; }
+};
+
+struct transition_info {
+    int row = 0;     ///< position of the row in make_chart
+    int source = 0;  ///< index in chart_model::states
+    int target = -1;  ///< -1: an internal transition (no target)
+    trigger_kind trigger = trigger_kind::event;
+    std::string event;  ///< the event's name, "after(3s)" for a timeout, empty if eventless
+    std::string delay;  ///< a timeout's delay, "3s"
+    std::string guard;  ///< empty if unguarded
+    std::string action;  ///< empty if no action
+
+    /// "event [guard] / action", with the parts that exist.
+    std::string label() const {
+        std::string out = event;
+        if (!guard.empty()) out += (out.empty() ? "[" : " [") + guard + "]";
+        if (!action.empty()) out += (out.empty() ? "/ " : " / ") + action;
+        return out;
+    }
+};
+
+struct chart_model {
+    std::vector<state_info> states;  ///< document order; states[0] is the root
+    std::vector<transition_info> transitions;  ///< declaration order, internal ones included
+
+    /// s is a or below a.
+    bool contains(int a, int s) const {
+        for (; s >= 0; s = states[static_cast<std::size_t>(s)].parent)
+            if (s == a) return true;
+        return false;
+    }
+    state_info const& operator[](int s) const { return states[static_cast<std::size_t>(s)]; }
+};
+
+template <class Tags>
+struct state_names;
+template <class... Tags>
+struct state_names<type_list<Tags...>> {
+    static std::vector<std::string_view> unqualified() { return {name_of<Tags>...}; }
+    static std::vector<std::string_view> qualified() { return {qualified_name<Tags>...}; }
+};
+
+/// The last `scopes` components of a qualified name: ("ns::a::Idle", 2) is "a::Idle".
+inline std::string_view last_scopes(std::string_view qualified, int scopes) {
+    int depth = 0;
+    for (std::size_t i = qualified.size(); i-- > 1;) {
+        if (qualified[i] == '>') ++depth;
+        if (qualified[i] == '<') --depth;
+        if (depth == 0 && qualified[i] == ':' && qualified[i - 1] == ':' && --scopes == 0)
+            return qualified.substr(i + 1);
+    }
+    return qualified;
+}
+
+/// The names the exports show: the unqualified name, or where two states share it (a::Idle,
+/// b::Idle) as many enclosing scopes as tell them apart.
+inline std::vector<std::string> unique_names(std::vector<std::string_view> const& names,
+                                             std::vector<std::string_view> const& qualified) {
+    std::vector<std::string> out(names.begin(), names.end());
+    for (int scopes = 2; scopes < 16; ++scopes) {
+        bool clash = false;
+        std::vector<std::string> next = out;
+        for (std::size_t i = 0; i < out.size(); ++i)
+            for (std::size_t j = 0; j < out.size(); ++j)
+                if (i != j && out[i] == out[j]) {
+                    next[i] = std::string(last_scopes(qualified[i], scopes));
+                    clash = true;
+                }
+        if (!clash) break;
+        out = next;
+    }
+    return out;
+}
+
+/// Identifiers for the states, from their names; a numbered suffix where two names give the
+/// same identifier ("A_B" and "A<B>").
+inline std::vector<std::string> unique_identifiers(std::vector<std::string> const& names) {
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        std::string id = identifier(names[i]);
+        for (std::size_t j = 0; j < out.size(); ++j)
+            if (out[j] == id) {
+                id += "_" + std::to_string(i);
+                break;
+            }
+        out.push_back(id);
+    }
+    return out;
+}
+
+template <class Row>
+void add_row(chart_model& m, Row const& row, int index, int source) {
+    if constexpr (is_entry_row<Row>) {
+        m.states[static_cast<std::size_t>(source)].entry.push_back(action_label(row.action));
+    } else if constexpr (is_exit_row<Row>) {
+        m.states[static_cast<std::size_t>(source)].exit.push_back(action_label(row.action));
+    } else {
+        transition_info t;
+        t.row = index;
+        t.source = source;
+        using trigger = typename Row::trigger;
+        if constexpr (std::is_same_v<trigger, timeout_trigger>) {
+            t.trigger = trigger_kind::timeout;
+            t.delay = delay_label(row.trigger_value.delay);
+            t.event = "after(" + t.delay + ")";
+        } else if constexpr (std::is_same_v<trigger, eventless_trigger>) {
+            t.trigger = trigger_kind::eventless;
+        } else {
+            t.trigger = trigger_kind::event;
+            t.event = std::string(name_of<typename trigger::event>);
+        }
+        if constexpr (Row::guarded) t.guard = guard_label(row.guard);
+        if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row.action)>, no_action>)
+            t.action = action_label(row.action);
+        m.transitions.push_back(std::move(t));
+    }
+}
+
+/// The model of a chart (a bsc::make_chart result).
+template <class Chart>
+chart_model model_of(Chart const& chart) {
+    using an = analysis<std::remove_cv_t<Chart>>;
+    constexpr auto const& topo = an::topo;
+    chart_model m;
+    auto const names = state_names<typename an::tags>::unqualified();
+    auto const qualified = state_names<typename an::tags>::qualified();
+    // Index 0 of the analysis is the implicit top above the root; the model starts at the root.
+    std::vector<std::string_view> const own(names.begin() + 1, names.end());
+    std::vector<std::string_view> const own_qualified(qualified.begin() + 1, qualified.end());
+    auto const labels = unique_names(own, own_qualified);
+    auto const ids = unique_identifiers(labels);
+    for (int s = 1; s < an::N; ++s) {
+        auto const i = static_cast<std::size_t>(s);
+        state_info info;
+        info.id = ids[i - 1];
+        info.label = labels[i - 1];
+        info.node_kind = topo.kinds[i];
+        info.hist = topo.hist[i];
+        info.parent = topo.parent[i] - 1;
+        info.initial = topo.initial[i] >= 0 ? topo.initial[i] - 1 : -1;
+        for (int c = topo.first_child[i]; c >= 0; c = topo.next_sibling[static_cast<std::size_t>(c)])
+            info.children.push_back(c - 1);
+        m.states.push_back(std::move(info));
+    }
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (add_row(m, boost::hana::at_c<I>(chart.rows), static_cast<int>(I), an::table.source[I] - 1), ...);
+    }(std::make_index_sequence<static_cast<std::size_t>(an::R)>{});
+    for (std::size_t k = 0; k < m.transitions.size(); ++k) {
+        auto& t = m.transitions[k];
+        t.target = an::table.target[static_cast<std::size_t>(t.row)] >= 0
+                       ? an::table.target[static_cast<std::size_t>(t.row)] - 1
+                       : -1;
+        if (t.target < 0) m.states[static_cast<std::size_t>(t.source)].internal.push_back(static_cast<int>(k));
+    }
+    return m;
+}
+
+// ---- Text helpers shared by the formats ----------------------------------------------------
+
+inline std::string indent(int level) { return std::string(static_cast<std::size_t>(level) * 4, ' '); }
+
+inline std::string replace_all(std::string text, std::string_view from, std::string_view to) {
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+        text.replace(at, from.size(), to);
+    return text;
+}
+
+/// Text for an XML attribute value or element content.
+inline std::string xml_escaped(std::string_view text) {
+    std::string out;
+    for (char const c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+/// " [H]" or " [H*]" after the name of a composite state with shallow or deep history.
+inline std::string history_suffix(history h) {
+    return h == history::deep ? " [H*]" : h == history::shallow ? " [H]" : "";
+}
+
+/// Lines that describe a state besides its name: "entry / a", "exit / b", and its internal
+/// transitions "event [guard] / action".
+inline std::vector<std::string> activity_lines(chart_model const& m, int s) {
+    std::vector<std::string> lines;
+    for (auto const& a : m[s].entry) lines.push_back("entry / " + a);
+    for (auto const& a : m[s].exit) lines.push_back("exit / " + a);
+    for (int const t : m[s].internal) lines.push_back(m.transitions[static_cast<std::size_t>(t)].label());
+    return lines;
+}
+
+}  // namespace bsc::detail::exporting
+// end include/bsc/export/model.hpp
+
+namespace bsc::detail::exporting {
+
+/// A double-quoted DOT string.
+inline std::string dot_quoted(std::string_view text) {
+    std::string out = "\"";
+    for (char const c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (c == '\n')
+            out += "\\n";
+        else
+            out += c;
+    }
+    return out + "\"";
+}
+
+inline std::string dot_cluster(chart_model const& m, int s) { return dot_quoted("cluster_" + m[s].id); }
+inline std::string dot_anchor(chart_model const& m, int s) { return dot_quoted(m[s].id + ":anchor"); }
+/// The node an edge to or from state s attaches to.
+inline std::string dot_node(chart_model const& m, int s) {
+    return m[s].is_leaf() ? dot_quoted(m[s].id) : dot_anchor(m, s);
+}
+
+inline std::string dot_label(chart_model const& m, int s) {
+    std::string label = m[s].label;
+    for (auto const& line : activity_lines(m, s)) label += "\n" + line;
+    return label;
+}
+
+inline void dot_state(chart_model const& m, int s, int level, bool region, std::string& out) {
+    auto const& st = m[s];
+    auto const pad = indent(level);
+    if (st.is_leaf()) {
+        if (region) {  // a basic state as a region of a parallel state: its own dashed cluster
+            out += pad + "subgraph " + dot_quoted("cluster_region_" + st.id) + " {\n";
+            out += pad + "    label=\"\"; style=\"rounded,dashed\";\n";
+            dot_state(m, s, level + 1, false, out);
+            out += pad + "}\n";
+            return;
+        }
+        out += pad + dot_quoted(st.id) + " [label=" + dot_quoted(dot_label(m, s));
+        if (st.node_kind == kind::final_state) out += ", peripheries=2";
+        out += "];\n";
+        return;
+    }
+    out += pad + "subgraph " + dot_cluster(m, s) + " {\n";
+    out += pad + "    label=" + dot_quoted(dot_label(m, s)) + "; style=" +
+           (region ? "\"rounded,dashed\"" : "\"rounded\"") + ";\n";
+    out += pad + "    " + dot_anchor(m, s) + " [shape=point, style=invis, width=0, height=0, label=\"\"];\n";
+    if (st.initial >= 0) {
+        auto const initial = dot_quoted(st.id + ":initial");
+        out += pad + "    " + initial + " [shape=point, width=0.12, label=\"\"];\n";
+        out += pad + "    " + initial + " -> " + dot_node(m, st.initial);
+        if (!m[st.initial].is_leaf()) out += " [lhead=" + dot_cluster(m, st.initial) + "]";
+        out += ";\n";
+    }
+    if (st.hist != history::none)
+        out += pad + "    " + dot_quoted(st.id + ":history") + " [shape=circle, label=" +
+               (st.hist == history::deep ? "\"H*\"" : "\"H\"") + ", width=0.3, fixedsize=true, fontsize=9];\n";
+    for (int const c : st.children) dot_state(m, c, level + 1, st.node_kind == kind::parallel, out);
+    out += pad + "}\n";
+}
+
+inline std::string to_dot(chart_model const& m) {
+    std::string out = "digraph " + dot_quoted(m[0].label) + " {\n";
+    out += "    compound=true;\n";
+    out += "    fontname=\"Helvetica\"; fontsize=11;\n";
+    out += "    node [shape=box, style=rounded, fontname=\"Helvetica\", fontsize=11];\n";
+    out += "    edge [fontname=\"Helvetica\", fontsize=9];\n";
+    out += "    \":start\" [shape=point, width=0.12, label=\"\"];\n";
+    out += "    \":start\" -> " + dot_node(m, 0) + " [lhead=" + dot_cluster(m, 0) + "];\n";
+    dot_state(m, 0, 1, false, out);
+    for (auto const& t : m.transitions) {
+        if (t.target < 0) continue;  // internal: listed in its state
+        out += "    " + dot_node(m, t.source) + " -> " + dot_node(m, t.target);
+        std::string attributes;
+        auto const add = [&](std::string const& a) { attributes += (attributes.empty() ? "" : ", ") + a; };
+        auto const label = t.label();
+        if (!label.empty()) add("label=" + dot_quoted(label));
+        // Graphviz ignores ltail when the head is inside the tail's cluster, and lhead when
+        // the tail is inside the head's cluster; such an edge starts or ends at the anchor.
+        if (!m[t.source].is_leaf() && !m.contains(t.source, t.target)) add("ltail=" + dot_cluster(m, t.source));
+        if (!m[t.target].is_leaf() && !m.contains(t.target, t.source)) add("lhead=" + dot_cluster(m, t.target));
+        out += (attributes.empty() ? "" : " [" + attributes + "]") + ";\n";
+    }
+    out += "}\n";
+    return out;
+}
+
+}  // namespace bsc::detail::exporting
+
+namespace bsc {
+
+/// The chart as a Graphviz digraph with clusters for composite and parallel states.
+template <class Chart>
+std::string to_dot(Chart const& chart) {
+    return detail::exporting::to_dot(detail::exporting::model_of(chart));
+}
+
+}  // namespace bsc
+// end include/bsc/export/dot.hpp
+// begin include/bsc/export/mermaid.hpp
+// bsc::to_mermaid: a chart as a Mermaid state diagram (stateDiagram-v2), which GitHub and
+// many Markdown viewers render.
+//
+// The state tree comes first: composite states as `state X { ... }` starting with
+// `[*] --> initial`, the regions of a parallel state separated by `--`, a final state followed
+// by `--> [*]`. Entry and exit actions and internal transitions are lines under the state's
+// name. Mermaid has no history pseudo-state: a composite state with history shows [H] (shallow)
+// or [H*] (deep) after its name. The transitions follow, after the whole tree, as
+// `A --> B : event [guard] / action`: Mermaid places a state in the last composite block that
+// mentions it, so a transition written inside a block could move a state out of its parent.
+
+#include <string>
+#include <string_view>
+
+
+namespace bsc::detail::exporting {
+
+/// Text inside a quoted Mermaid label or after `:`; `;` would end the statement and `<`
+/// would start HTML.
+inline std::string mermaid_text(std::string_view text) {
+    std::string out;
+    for (char const c : text) {
+        switch (c) {
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += '\''; break;
+            case ';': out += ','; break;
+            case '#': out += "&num;"; break;
+            case '\n': out += ' '; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+inline void mermaid_state(chart_model const& m, int s, int level, std::string& out) {
+    auto const& st = m[s];
+    auto const activities = activity_lines(m, s);
+    if (st.is_leaf()) {
+        if (st.label != st.id || !activities.empty())
+            out += indent(level) + "state \"" + mermaid_text(st.label) + "\" as " + st.id + "\n";
+        else
+            out += indent(level) + st.id + "\n";
+        for (auto const& line : activities) out += indent(level) + st.id + " : " + mermaid_text(line) + "\n";
+        if (st.node_kind == kind::final_state) out += indent(level) + st.id + " --> [*]\n";
+        return;
+    }
+    // A composite state's description would replace its name: its activities go into its title.
+    std::string title = mermaid_text(st.label) + history_suffix(st.hist);
+    for (auto const& line : activities) title += "<br/>" + mermaid_text(line);
+    out += indent(level) + "state \"" + title + "\" as " + st.id + " {\n";
+    if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + "\n";
+    bool first = true;
+    for (int const c : st.children) {
+        if (st.node_kind == kind::parallel && !first) out += indent(level + 1) + "--\n";
+        first = false;
+        mermaid_state(m, c, level + 1, out);
+    }
+    out += indent(level) + "}\n";
+}
+
+inline std::string to_mermaid(chart_model const& m) {
+    std::string out = "stateDiagram-v2\n";
+    out += indent(1) + "[*] --> " + m[0].id + "\n";
+    mermaid_state(m, 0, 1, out);
+    for (auto const& t : m.transitions) {
+        if (t.target < 0) continue;  // internal: shown in its state
+        out += indent(1) + m[t.source].id + " --> " + m[t.target].id;
+        auto const label = t.label();
+        if (!label.empty()) out += " : " + mermaid_text(label);
+        out += "\n";
+    }
+    return out;
+}
+
+}  // namespace bsc::detail::exporting
+
+namespace bsc {
+
+/// The chart as a Mermaid state diagram (`stateDiagram-v2`).
+template <class Chart>
+std::string to_mermaid(Chart const& chart) {
+    return detail::exporting::to_mermaid(detail::exporting::model_of(chart));
+}
+
+}  // namespace bsc
+// end include/bsc/export/mermaid.hpp
+// begin include/bsc/export/plantuml.hpp
+// bsc::to_plantuml: a chart as a PlantUML state diagram (@startuml ... @enduml).
+//
+// Composite and parallel states are `state "Name" as Id { ... }`, a composite's initial child is
+// `[*] --> Child`, the regions of a parallel state are separated by `--`, a final state is
+// followed by `--> [*]`; entry and exit actions and internal transitions are description lines
+// `Id : entry / action`. A composite state with history shows [H] or [H*] after its name (the
+// [H*] pseudo-state is not understood by every PlantUML release). The transitions follow the
+// tree: `A --> B : event [guard] / action`.
+
+#include <string>
+#include <string_view>
+
+
+namespace bsc::detail::exporting {
+
+/// Text of a quoted PlantUML name or of a label after `:`.
+inline std::string plantuml_text(std::string_view text) {
+    std::string out;
+    for (char const c : text) {
+        if (c == '"')
+            out += '\'';
+        else if (c == '\n')
+            out += ' ';
+        else
+            out += c;
+    }
+    return out;
+}
+
+inline void plantuml_state(chart_model const& m, int s, int level, std::string& out) {
+    auto const& st = m[s];
+    auto const pad = indent(level);
+    out += pad + "state \"" + plantuml_text(st.label + history_suffix(st.hist)) + "\" as " + st.id;
+    if (st.is_leaf()) {
+        out += "\n";
+    } else {
+        out += " {\n";
+        if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + "\n";
+        bool first = true;
+        for (int const c : st.children) {
+            if (st.node_kind == kind::parallel && !first) out += indent(level + 1) + "--\n";
+            first = false;
+            plantuml_state(m, c, level + 1, out);
+        }
+        out += pad + "}\n";
+    }
+    for (auto const& line : activity_lines(m, s)) out += pad + st.id + " : " + plantuml_text(line) + "\n";
+    if (st.node_kind == kind::final_state) out += pad + st.id + " --> [*]\n";
+}
+
+inline std::string to_plantuml(chart_model const& m) {
+    std::string out = "@startuml\nhide empty description\n";
+    out += "[*] --> " + m[0].id + "\n";
+    plantuml_state(m, 0, 0, out);
+    for (auto const& t : m.transitions) {
+        if (t.target < 0) continue;  // internal: a description line of its state
+        out += m[t.source].id + " --> " + m[t.target].id;
+        auto const label = t.label();
+        if (!label.empty()) out += " : " + plantuml_text(label);
+        out += "\n";
+    }
+    return out + "@enduml\n";
+}
+
+}  // namespace bsc::detail::exporting
+
+namespace bsc {
+
+/// The chart as a PlantUML state diagram.
+template <class Chart>
+std::string to_plantuml(Chart const& chart) {
+    return detail::exporting::to_plantuml(detail::exporting::model_of(chart));
+}
+
+}  // namespace bsc
+// end include/bsc/export/plantuml.hpp
+// begin include/bsc/export/scxml.hpp
+// bsc::to_scxml: a chart as a W3C SCXML document.
+//
+// The state tree maps one for one: composite states are <state> with `initial`, parallel
+// states <parallel>, final states <final> (a final state with outgoing transitions stays a
+// <state>, since <final> may have none), the chart's root is the <scxml> element's initial.
+// Transitions are children of their source, in declaration order (which is SCXML's priority
+// among transitions of one source):
+//   - `event` is the event's type name, made a valid token; eventless transitions have none;
+//   - a state-scoped timeout `after(3s)` is a transition on the event "after(3s)", with a
+//     comment: SCXML has no timeouts, a platform would send that event delayed from <onentry>;
+//   - `cond` is the guard's name (bsc::named), or "guard";
+//   - an internal transition (a row without a target) is type="internal" without a target;
+//   - actions, and entry and exit actions (<onentry>, <onexit>), are <script> placeholders that
+//     name the action in a comment.
+// History: bsc restores a composite with history on every entry that does not name a state
+// inside it, which is what entering its <history> pseudo-state does in SCXML; so such a
+// composite's <initial> targets its <history>, whose default transition targets the initial child.
+
+#include <string>
+#include <string_view>
+
+
+namespace bsc::detail::exporting {
+
+/// Text inside an XML comment, which may not contain "--".
+inline std::string scxml_comment(std::string_view text) {
+    return replace_all(xml_escaped(text), "--", "- -");
+}
+
+inline std::string scxml_script(std::string_view action) {
+    return "<script>/* " + xml_escaped(replace_all(std::string(action), "*/", "* /")) + " */</script>";
+}
+
+/// The id of the <history> pseudo-state of a composite: "<id>_history", unique among the states.
+inline std::string history_id(chart_model const& m, int s) {
+    std::string id = m[s].id + "_history";
+    for (bool clash = true; clash;) {
+        clash = false;
+        for (auto const& st : m.states)
+            if (st.id == id) {
+                id += '_';
+                clash = true;
+            }
+    }
+    return id;
+}
+
+inline void scxml_transition(chart_model const& m, transition_info const& t, int level, std::string& out) {
+    auto const pad = indent(level);
+    if (t.trigger == trigger_kind::timeout)
+        out += pad + "<!-- " + t.event + ": a timeout, enabled once " + scxml_comment(m[t.source].label) +
+               " has been active for " + t.delay + " -->\n";
+    out += pad + "<transition";
+    if (t.trigger == trigger_kind::timeout)
+        out += " event=\"" + xml_escaped(t.event) + "\"";
+    else if (t.trigger == trigger_kind::event)
+        out += " event=\"" + identifier(t.event) + "\"";
+    if (!t.guard.empty()) out += " cond=\"" + xml_escaped(t.guard) + "\"";
+    if (t.target >= 0)
+        out += " target=\"" + m[t.target].id + "\"";
+    else
+        out += " type=\"internal\"";
+    if (t.action.empty())
+        out += "/>\n";
+    else
+        out += ">\n" + pad + "    " + scxml_script(t.action) + "\n" + pad + "</transition>\n";
+}
+
+inline void scxml_state(chart_model const& m, int s, int level, std::string& out) {
+    auto const& st = m[s];
+    auto const pad = indent(level);
+    bool has_transitions = false;
+    for (auto const& t : m.transitions) has_transitions = has_transitions || t.source == s;
+    std::string element = "state";
+    if (st.node_kind == kind::parallel) element = "parallel";
+    if (st.node_kind == kind::final_state && !has_transitions) element = "final";
+    out += pad + "<" + element + " id=\"" + st.id + "\"";
+    if (st.initial >= 0 && st.hist == history::none) out += " initial=\"" + m[st.initial].id + "\"";
+    bool const empty = st.children.empty() && st.entry.empty() && st.exit.empty() && !has_transitions;
+    if (empty) {
+        out += "/>\n";
+        return;
+    }
+    out += ">\n";
+    auto const inner = indent(level + 1);
+    if (st.node_kind == kind::final_state && element == "state")
+        out += inner + "<!-- a final state of the chart; <final> may not have transitions -->\n";
+    if (st.initial >= 0 && st.hist != history::none) {
+        auto const h = history_id(m, s);
+        out += inner + "<initial>\n" + inner + "    <transition target=\"" + h + "\"/>\n" + inner + "</initial>\n";
+        out += inner + "<history id=\"" + h + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") +
+               "\">\n" + inner + "    <transition target=\"" + m[st.initial].id + "\"/>\n" + inner + "</history>\n";
+    }
+    for (auto const& a : st.entry) out += inner + "<onentry>" + scxml_script(a) + "</onentry>\n";
+    for (auto const& a : st.exit) out += inner + "<onexit>" + scxml_script(a) + "</onexit>\n";
+    for (auto const& t : m.transitions)
+        if (t.source == s) scxml_transition(m, t, level + 1, out);
+    for (int const c : st.children) scxml_state(m, c, level + 1, out);
+    out += pad + "</" + element + ">\n";
+}
+
+inline std::string to_scxml(chart_model const& m) {
+    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    out += "<!-- The chart " + scxml_comment(m[0].label) +
+           ": cond names the guard, the <script> comments name the actions. -->\n";
+    out += "<scxml xmlns=\"http://www.w3.org/2005/07/scxml\" version=\"1.0\" name=\"" + m[0].id + "\" initial=\"" +
+           m[0].id + "\">\n";
+    scxml_state(m, 0, 1, out);
+    return out + "</scxml>\n";
+}
+
+}  // namespace bsc::detail::exporting
+
+namespace bsc {
+
+/// The chart as a W3C SCXML document.
+template <class Chart>
+std::string to_scxml(Chart const& chart) {
+    return detail::exporting::to_scxml(detail::exporting::model_of(chart));
+}
+
+}  // namespace bsc
+// end include/bsc/export/scxml.hpp
+// end include/bsc/export.hpp

@@ -1,0 +1,34 @@
+// A turnstile, with bsc found by find_package: the machine and the Mermaid export.
+#include <bsc/bsc.hpp>
+#include <bsc/export.hpp>
+
+#include <cstdio>
+#include <string>
+
+namespace turnstile {
+struct coin {};
+struct push {};
+struct Turnstile;
+struct Locked;
+struct Unlocked;
+struct counter {
+    int coins = 0;
+};
+inline constexpr auto add_coin = bsc::named<"add_coin">([](counter& c) { ++c.coins; });
+inline constexpr auto chart = bsc::make_chart<counter>(
+    bsc::composite<Turnstile>(bsc::initial<Locked>, bsc::state<Unlocked>),
+    bsc::state<Locked> + bsc::event<coin> / add_coin = bsc::state<Unlocked>,
+    bsc::state<Unlocked> + bsc::event<push> = bsc::state<Locked>);
+}  // namespace turnstile
+
+int main() {
+    bsc::machine m{turnstile::chart, turnstile::counter{}};
+    m.dispatch(turnstile::coin{});
+    m.dispatch(turnstile::push{});
+    m.dispatch(turnstile::coin{});
+    std::string const diagram = bsc::to_mermaid(turnstile::chart);
+    bool const ok = m.is<turnstile::Unlocked>() && m.context().coins == 2 &&
+                    diagram.find("Locked --> Unlocked : coin / add_coin") != std::string::npos;
+    std::puts(ok ? "find_package: ok" : "find_package: FAILED");
+    return ok ? 0 : 1;
+}

@@ -1,0 +1,381 @@
+// The diagram exports (<bsc/export.hpp>) and the names of guards and actions (bsc::named):
+// named guards and actions behave and compose as before; each format shows every state and
+// transition of the four examples, with their structure (initial states, history, parallel
+// regions); and a chart built for the purpose checks labels, identifiers and the rarer parts
+// (final states, timeouts, internal transitions, template and clashing state names).
+// SCXML well-formedness and Graphviz rendering are checked by ctests on the exported files
+// (tests/export/check_exports.py).
+
+#include <doctest/doctest.h>
+
+#include <bsc/bsc.hpp>
+#include <bsc/export.hpp>
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "../../examples/eca_cell/pause.hpp"
+#include "../../examples/manufacturing_cell/controller.hpp"
+#include "../../examples/mcs/mcs.hpp"
+#include "../../examples/production_cell/controllers.hpp"
+
+namespace export_test {
+
+using namespace std::chrono_literals;
+
+struct go {};
+struct stop {};
+struct tick {};
+
+struct Root;
+namespace a {
+struct Idle;
+}
+namespace b {
+struct Idle;
+}
+struct Work;
+template <int N>
+struct Slot;
+struct Both;
+struct Left;
+struct L1;
+struct L2;
+struct Right;
+struct Done;
+
+struct ctx {
+    bool ready = false;
+    int count = 0;
+    int resets = 0;
+};
+
+inline constexpr auto ready = bsc::named<"ready">(bsc::guard([](ctx const& c) { return c.ready; }));
+inline constexpr auto positive = bsc::named("positive", bsc::guard([](ctx const& c) { return c.count > 0; }));
+inline constexpr auto below_ten = bsc::guard([](ctx const& c) { return c.count < 10; });
+inline constexpr auto count_up = bsc::named<"count_up">(bsc::action([](ctx& c) { ++c.count; }));
+inline constexpr auto reset = bsc::named<"reset">([](ctx& c) {  // a plain callable, named
+    c.count = 0;
+    ++c.resets;
+});
+
+inline constexpr auto chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<a::Idle>, bsc::state<b::Idle>,
+                         bsc::composite<Work>(bsc::shallow_history, bsc::initial<Slot<1>>, bsc::state<Slot<2>>,
+                                              bsc::parallel<Both>(bsc::composite<Left>(bsc::initial<L1>, bsc::state<L2>),
+                                                                  bsc::state<Right>)),
+                         bsc::final_state<Done>),
+    bsc::state<a::Idle> + bsc::event<go>[ready && !positive] / (count_up, reset) = bsc::state<Work>,
+    bsc::state<a::Idle> + bsc::event<stop> = bsc::state<Done>,
+    bsc::state<b::Idle>[below_ten || ready] = bsc::state<a::Idle>,
+    bsc::state<Slot<1>> + bsc::after(1500ms) = bsc::state<Slot<2>>,
+    bsc::state<Slot<2>> + bsc::event<tick> / count_up,
+    bsc::state<Slot<2>> + bsc::event<go> = bsc::state<Both>,
+    bsc::state<L1> + bsc::event<tick>[positive] = bsc::state<L2>,
+    bsc::state<Work> + bsc::event<stop> / reset = bsc::state<b::Idle>,
+    bsc::state<Work> + bsc::on_entry / count_up,
+    bsc::state<Slot<1>> + bsc::on_exit / [](ctx& c) { c.ready = false; });
+
+}  // namespace export_test
+
+namespace {
+
+bool has(std::string const& text, std::string_view part) { return text.find(part) != std::string::npos; }
+
+std::size_t count(std::string const& text, std::string_view part) {
+    std::size_t n = 0;
+    for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size())) ++n;
+    return n;
+}
+
+/// A chart's states and transitions, read from bsc's own tables rather than from the model
+/// the exports use: names by bsc::name_of, transitions "Source --> Target" by position.
+template <class Chart>
+struct expected {
+    using an = bsc::detail::analysis<Chart>;
+    std::vector<std::string> states;
+    std::vector<std::pair<std::string, std::string>> transitions;  // with a target
+    int internal = 0;
+    int composites = 0;  // composite states: one initial marker each
+    int parallels = 0;
+    int history = 0;
+
+    expected() {
+        states = []<class... Tags>(bsc::detail::type_list<Tags...>) {
+            return std::vector<std::string>{std::string(bsc::name_of<Tags>)...};
+        }(typename an::tags{});
+        states.erase(states.begin());  // the implicit top
+        for (int s = 1; s < an::N; ++s) {
+            auto const i = static_cast<std::size_t>(s);
+            composites += an::topo.kinds[i] == bsc::detail::kind::composite ? 1 : 0;
+            parallels += an::topo.kinds[i] == bsc::detail::kind::parallel ? 1 : 0;
+            history += an::topo.hist[i] != bsc::detail::history::none ? 1 : 0;
+        }
+        for (int r = 0; r < an::R; ++r) {
+            auto const i = static_cast<std::size_t>(r);
+            if (an::table.kinds[i] != bsc::detail::row_kind::transition) continue;
+            if (an::table.target[i] < 0) {
+                ++internal;
+                continue;
+            }
+            transitions.emplace_back(states[static_cast<std::size_t>(an::table.source[i] - 1)],
+                                     states[static_cast<std::size_t>(an::table.target[i] - 1)]);
+        }
+    }
+};
+
+/// Every state and every transition of an example (whose state names are identifiers) is in
+/// each format, and the structure is there: one initial marker per composite, history, regions.
+template <class Chart>
+void check_example(Chart const& chart) {
+    expected<Chart> const e;
+    auto const mermaid = bsc::to_mermaid(chart);
+    auto const dot = bsc::to_dot(chart);
+    auto const plantuml = bsc::to_plantuml(chart);
+    auto const scxml = bsc::to_scxml(chart);
+    CAPTURE(mermaid);
+
+    CHECK(mermaid.starts_with("stateDiagram-v2\n"));
+    CHECK(has(mermaid, "    [*] --> " + e.states[0] + "\n"));
+    CHECK(dot.starts_with("digraph \"" + e.states[0] + "\" {\n"));
+    CHECK(dot.ends_with("}\n"));
+    CHECK(plantuml.starts_with("@startuml\n"));
+    CHECK(plantuml.ends_with("@enduml\n"));
+    CHECK(has(scxml, "<scxml xmlns=\"http://www.w3.org/2005/07/scxml\" version=\"1.0\" name=\"" + e.states[0] +
+                         "\" initial=\"" + e.states[0] + "\">"));
+
+    for (auto const& s : e.states) {
+        CAPTURE(s);
+        CHECK((has(mermaid, "    " + s + "\n") || has(mermaid, "as " + s + "\n") || has(mermaid, "as " + s + " {\n")));
+        CHECK((has(dot, "\"" + s + "\" [label=\"" + s) || has(dot, "subgraph \"cluster_" + s + "\" {")));
+        CHECK(has(plantuml, "state \"" + s));
+        CHECK(has(scxml, " id=\"" + s + "\""));
+    }
+    for (auto const& transition : e.transitions) {
+        auto const& source = transition.first;  // not a structured binding: CAPTURE is a lambda
+        auto const& target = transition.second;
+        CAPTURE(source);
+        CAPTURE(target);
+        CHECK(has(mermaid, "    " + source + " --> " + target));
+        CHECK(has(plantuml, "\n" + source + " --> " + target));
+        CHECK(has(scxml, "target=\"" + target + "\""));
+    }
+    // Mermaid: the root's marker, one per composite, one line per transition with a target.
+    CHECK(count(mermaid, " --> ") == 1 + static_cast<std::size_t>(e.composites) + e.transitions.size());
+    // DOT: the start edge, one initial edge per composite, one edge per transition with a target.
+    CHECK(count(dot, " -> ") == 1 + static_cast<std::size_t>(e.composites) + e.transitions.size());
+    CHECK(count(dot, "subgraph ") >= static_cast<std::size_t>(e.composites + e.parallels));
+    CHECK(count(dot, "shape=circle, label=\"H") == static_cast<std::size_t>(e.history));
+    // SCXML: every row a transition; a history composite adds two (<initial>, <history>).
+    CHECK(count(scxml, "<transition") == e.transitions.size() + static_cast<std::size_t>(e.internal + 2 * e.history));
+    CHECK(count(scxml, "type=\"internal\"") == static_cast<std::size_t>(e.internal));
+    CHECK(count(scxml, "<parallel ") == static_cast<std::size_t>(e.parallels));
+    CHECK(count(scxml, "<history ") == static_cast<std::size_t>(e.history));
+}
+
+}  // namespace
+
+TEST_CASE("a named guard or action behaves as the unnamed one and composes the same way") {
+    using namespace export_test;
+    // Naming keeps the wrapped kind: guards compose with !, && and ||, actions with `,`.
+    static_assert(bsc::detail::bsc_guard<std::remove_cvref_t<decltype(ready)>>);
+    static_assert(bsc::detail::bsc_action<std::remove_cvref_t<decltype(count_up)>>);
+    static_assert(!bsc::detail::bsc_guard<std::remove_cvref_t<decltype(reset)>>);
+    // The name given as a template argument takes no room.
+    constexpr auto lambda = [](ctx const& c) { return c.ready; };
+    static_assert(sizeof(bsc::named<"x">(bsc::guard(lambda))) == sizeof(bsc::guard(lambda)));
+    static_assert(sizeof(bsc::named<"x">(lambda)) == sizeof(lambda));
+    static_assert(bsc::named<"x">(bsc::guard(lambda)).name == "x");
+    static_assert(bsc::named<"y">(bsc::named<"x">(bsc::guard(lambda))).name == "y");  // renamed
+    static_assert(positive.name == "positive");
+
+    // The composed guards and the sequence run as they would unnamed.
+    ctx c{};
+    static_assert((ready && !positive)(ctx{true, 0, 0}, go{}));
+    static_assert(!(ready && !positive)(ctx{true, 1, 0}, go{}));
+    static_assert((below_ten || ready)(ctx{false, 3, 0}, go{}));
+    static_assert(!(!ready || positive)(ctx{true, 0, 0}, go{}));
+    int raised = 0;
+    auto raise = [&](auto const&) {
+        ++raised;
+        return true;
+    };
+    c.count = 5;
+    (count_up, reset, count_up)(c, go{}, raise);
+    CHECK(c.count == 1);
+    CHECK(c.resets == 1);
+    bsc::seq(reset, count_up, count_up)(c, go{}, raise);
+    CHECK(c.count == 2);
+    CHECK(c.resets == 2);
+    CHECK(raised == 0);
+
+    // And in a machine.
+    bsc::machine m{chart, ctx{}};
+    CHECK(m.is<a::Idle>());
+    CHECK(m.dispatch(go{}) == bsc::outcome::ignored);  // not ready
+    m.context().ready = true;
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.is<Slot<1>>());
+    CHECK(m.context().count == 1);  // count_up, reset, then Work's entry count_up
+    CHECK(m.context().resets == 1);
+    CHECK(m.dispatch(stop{}) == bsc::outcome::consumed);  // Work + stop / reset, then b::Idle [below_ten]
+    CHECK(m.is<a::Idle>());
+    CHECK(!m.context().ready);  // Slot<1>'s exit action
+    CHECK(m.context().count == 0);
+    CHECK(m.context().resets == 2);
+}
+
+TEST_CASE("named guards and actions appear by name; unnamed ones as guard and action") {
+    using namespace export_test;
+    auto const mermaid = bsc::to_mermaid(chart);
+    CAPTURE(mermaid);
+    CHECK(has(mermaid, "    a_Idle --> Work : go [ready && !positive] / count_up, reset\n"));
+    CHECK(has(mermaid, "    a_Idle --> Done : stop\n"));
+    CHECK(has(mermaid, "    b_Idle --> a_Idle : [guard || ready]\n"));
+    CHECK(has(mermaid, "    Slot_1 --> Slot_2 : after(1500ms)\n"));
+    CHECK(has(mermaid, "    L1 --> L2 : tick [positive]\n"));
+    CHECK(has(mermaid, "    Work --> b_Idle : stop / reset\n"));
+    // Activities: entry and exit actions and internal transitions under the state's name; a
+    // composite's in its title. History in the title too.
+    CHECK(has(mermaid, "state \"Work [H]<br/>entry / count_up\" as Work {\n"));
+    CHECK(has(mermaid, "state \"Slot&lt;1&gt;\" as Slot_1\n"));
+    CHECK(has(mermaid, "Slot_1 : exit / action\n"));
+    CHECK(has(mermaid, "Slot_2 : tick / count_up\n"));
+    CHECK(has(mermaid, "Done --> [*]\n"));
+    // A parallel state's regions are separated by --; a composite starts with its initial state.
+    CHECK(has(mermaid, "state \"Both\" as Both {\n"));
+    CHECK(has(mermaid, "[*] --> L1\n"));
+    CHECK(count(mermaid, "        --\n") == 1);
+    // Unguarded, actionless eventless transitions have no label; a guard with no named part is [guard].
+    CHECK(bsc::detail::exporting::guard_label(bsc::guard([] { return true; })) == "guard");
+    CHECK(bsc::detail::exporting::guard_label(!below_ten && below_ten) == "guard");
+    CHECK(bsc::detail::exporting::guard_label((ready || positive) && !(ready && positive)) ==
+          "(ready || positive) && !(ready && positive)");
+    CHECK(bsc::detail::exporting::action_label(bsc::seq([] {}, [] {})) == "action");
+    CHECK(bsc::detail::exporting::action_label(bsc::named<"boot">(bsc::seq([] {}, [] {}))) == "boot");
+}
+
+TEST_CASE("state identifiers are valid in every format and unique") {
+    using bsc::detail::exporting::identifier;
+    CHECK(identifier("Slot<1>") == "Slot_1");
+    CHECK(identifier("Pair<ns::A, 2>") == "Pair_ns_A_2");
+    CHECK(identifier("3rd") == "s_3rd");
+    CHECK(identifier("end") == "end_");
+    CHECK(identifier("state") == "state_");
+    CHECK(identifier("<>") == "unnamed");
+    // Two states with one unqualified name are told apart by their enclosing scopes.
+    auto const names = bsc::detail::exporting::unique_names({"Idle", "Idle", "Busy", "A_B", "A<B>"},
+                                                            {"x::a::Idle", "x::b::Idle", "x::Busy", "A_B", "A<B>"});
+    CHECK(names == std::vector<std::string>{"a::Idle", "b::Idle", "Busy", "A_B", "A<B>"});
+    CHECK(bsc::detail::exporting::unique_identifiers(names) ==
+          std::vector<std::string>{"a_Idle", "b_Idle", "Busy", "A_B", "A_B_4"});
+    CHECK(bsc::detail::exporting::last_scopes("n::Pair<n::A, n::B>", 1) == "Pair<n::A, n::B>");
+    CHECK(bsc::detail::exporting::last_scopes("m::n::Pair<n::A>", 2) == "n::Pair<n::A>");
+}
+
+TEST_CASE("Graphviz: clusters, regions as dashed clusters, edges to and from clusters") {
+    using namespace export_test;
+    auto const dot = bsc::to_dot(chart);
+    CAPTURE(dot);
+    CHECK(has(dot, "compound=true;"));
+    CHECK(has(dot, "subgraph \"cluster_Work\" {\n"));
+    CHECK(has(dot, "label=\"Work\\nentry / count_up\"; style=\"rounded\";"));
+    CHECK(has(dot, "subgraph \"cluster_Left\" {\n"));
+    CHECK(has(dot, "label=\"Left\"; style=\"rounded,dashed\";"));           // a region
+    CHECK(has(dot, "subgraph \"cluster_region_Right\" {\n"));               // a basic region
+    CHECK(has(dot, "\"Work:history\" [shape=circle, label=\"H\""));
+    CHECK(has(dot, "\"Done\" [label=\"Done\", peripheries=2];"));
+    CHECK(has(dot, "\"Slot_1\" [label=\"Slot<1>\\nexit / action\"];"));
+    CHECK(has(dot, "\"Root:initial\" -> \"a_Idle\";"));
+    CHECK(has(dot, "\"Work:initial\" -> \"Slot_1\";"));
+    CHECK(has(dot, "\"a_Idle\" -> \"Work:anchor\" [label=\"go [ready && !positive] / count_up, reset\", "
+                   "lhead=\"cluster_Work\"];"));
+    CHECK(has(dot, "\"Work:anchor\" -> \"b_Idle\" [label=\"stop / reset\", ltail=\"cluster_Work\"];"));
+    CHECK(has(dot, "\"b_Idle\" -> \"a_Idle\" [label=\"[guard || ready]\"];"));
+}
+
+TEST_CASE("PlantUML: nested states, regions, history, final states") {
+    using namespace export_test;
+    auto const puml = bsc::to_plantuml(chart);
+    CAPTURE(puml);
+    CHECK(has(puml, "hide empty description\n[*] --> Root\nstate \"Root\" as Root {\n    [*] --> a_Idle\n"));
+    CHECK(has(puml, "    state \"Work [H]\" as Work {\n        [*] --> Slot_1\n"));
+    CHECK(has(puml, "    Work : entry / count_up\n"));
+    CHECK(has(puml, "            --\n"));
+    CHECK(has(puml, "    Done --> [*]\n"));
+    CHECK(has(puml, "\nSlot_1 --> Slot_2 : after(1500ms)\n"));
+}
+
+TEST_CASE("SCXML: states, history with its default, eventless, timeout and internal transitions") {
+    using namespace export_test;
+    auto const scxml = bsc::to_scxml(chart);
+    CAPTURE(scxml);
+    CHECK(scxml.starts_with("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"));
+    CHECK(has(scxml, "<state id=\"Root\" initial=\"a_Idle\">"));
+    CHECK(has(scxml, "<transition event=\"go\" cond=\"ready &amp;&amp; !positive\" target=\"Work\">\n"
+                     "                <script>/* count_up, reset */</script>\n"
+                     "            </transition>"));
+    CHECK(has(scxml, "<transition cond=\"guard || ready\" target=\"a_Idle\"/>"));  // eventless
+    CHECK(has(scxml, "<state id=\"Work\">\n"
+                     "            <initial>\n"
+                     "                <transition target=\"Work_history\"/>\n"
+                     "            </initial>\n"
+                     "            <history id=\"Work_history\" type=\"shallow\">\n"
+                     "                <transition target=\"Slot_1\"/>\n"
+                     "            </history>\n"
+                     "            <onentry><script>/* count_up */</script></onentry>\n"));
+    CHECK(has(scxml, "<!-- after(1500ms): a timeout, enabled once Slot&lt;1&gt; has been active for 1500ms -->\n"
+                     "                <transition event=\"after(1500ms)\" target=\"Slot_2\"/>"));
+    CHECK(has(scxml, "<onexit><script>/* action */</script></onexit>"));
+    CHECK(has(scxml, "<transition event=\"tick\" type=\"internal\">"));
+    CHECK(has(scxml, "<parallel id=\"Both\">"));
+    CHECK(has(scxml, "<final id=\"Done\"/>"));
+}
+
+TEST_CASE("exports of the examples: every state and transition, and the structure") {
+    SUBCASE("MCS") {
+        check_example(mcs::chart);
+        auto const mermaid = bsc::to_mermaid(mcs::chart);
+        CHECK(has(mermaid, "    Off --> On : on_p\n"));
+        CHECK(has(mermaid, "    Estop --> Off : off_p [guard]\n"));
+        CHECK(has(mermaid, "    On --> Estop : estop_p / action\n"));
+        CHECK(has(mermaid, "state \"On [H*]<br/>entry / action<br/>exit / action\" as On {\n"));
+        CHECK(has(mermaid, "[*] --> Auto\n"));
+        auto const scxml = bsc::to_scxml(mcs::chart);
+        CHECK(has(scxml, "<history id=\"On_history\" type=\"deep\">\n"));
+        CHECK(has(scxml, "<transition event=\"reset_p\" target=\"Estop\">"));
+    }
+    SUBCASE("manufacturing cell") {
+        check_example(cell::chart);
+        auto const mermaid = bsc::to_mermaid(cell::chart);
+        CHECK(count(mermaid, "        --\n") == 4);  // five regions
+        CHECK(has(mermaid, "    BeltOff --> BeltOn : [guard] / action\n"));
+        CHECK(has(mermaid, "DrillOff : [guard] / action\n"));  // an internal transition
+        CHECK(count(bsc::to_dot(cell::chart), "style=\"rounded,dashed\"") == 5);
+        CHECK(has(bsc::to_scxml(cell::chart), "<parallel id=\"Cell\">"));
+    }
+    SUBCASE("production cell actors") {
+        check_example(pcell::feed_belt_chart);
+        check_example(pcell::table_chart);
+        check_example(pcell::robot_chart);
+        check_example(pcell::press_chart);
+        check_example(pcell::deposit_belt_chart);
+        auto const robot = bsc::to_mermaid(pcell::robot_chart);
+        CHECK(has(robot, "    A1Grip --> A1Lift : after(300ms)\n"));
+        CHECK(has(robot, "state \"On [H*]<br/>exit / action\" as On {\n"));
+        CHECK(has(bsc::to_scxml(pcell::deposit_belt_chart), "event=\"after("));
+    }
+    SUBCASE("ECA cell main") {
+        check_example(eca::main_chart);
+        check_example(eca::extended_main_chart);
+        auto const mermaid = bsc::to_mermaid(eca::main_chart);
+        CHECK(has(mermaid, "    Idle --> QueryRobotOnPress : press\n"));
+        CHECK(has(mermaid, "    QueryRobotOnPress --> Idle : [guard] / action\n"));
+        CHECK(has(bsc::to_scxml(eca::extended_main_chart), "<transition event=\"continue_\""));
+    }
+}
