@@ -1,4 +1,6 @@
-// Each test case pins down one sentence of docs/semantics.md (quoted in the case name).
+// Each test case pins down one sentence of docs/semantics.md (quoted in the case name), and
+// runs against both back ends: the compiled bsc::machine and the table-driven
+// bsc::table::machine.
 
 #include <doctest/doctest.h>
 
@@ -7,6 +9,19 @@
 #include "trace.hpp"
 
 using bsc_test::trace_observer;
+
+namespace {
+struct compiled {
+    template <class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
+    using machine = bsc::machine<Chart, Policy, Observer>;
+};
+struct table {
+    template <class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
+    using machine = bsc::table::machine<Chart, Policy, Observer>;
+};
+template <class Backend, class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
+using machine_t = typename Backend::template machine<Chart, Policy, Observer>;
+}  // namespace
 
 namespace sem {
 struct go {};
@@ -36,7 +51,7 @@ inline constexpr auto log = [](char const* what) {
 
 using namespace sem;
 
-TEST_CASE("a transition exits innermost first, runs its action, then enters outermost first") {
+TEST_CASE_TEMPLATE("a transition exits innermost first, runs its action, then enters outermost first", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>,
                              bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A2>)),
@@ -46,7 +61,7 @@ TEST_CASE("a transition exits innermost first, runs its action, then enters oute
         bsc::state<A> + bsc::on_exit / log("exit A"), bsc::state<A1> + bsc::on_exit / log("exit A1"),
         bsc::state<A2> + bsc::on_exit / log("exit A2"), bsc::state<B> + bsc::on_entry / log("enter B"),
         bsc::state<B1> + bsc::on_entry / log("enter B1"), bsc::state<B2> + bsc::on_entry / log("enter B2"));
-    bsc::machine m{chart, ctx{}};
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK(m.active_states().joined() == "Root A A1 A2");
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(m.context().log == "exit A2 exit A1 exit A action enter B enter B1 enter B2");
@@ -60,7 +75,7 @@ struct C2;
 struct D;
 }  // namespace sem
 
-TEST_CASE("the deepest source wins; among equals, the first enabled in declaration order") {
+TEST_CASE_TEMPLATE("the deepest source wins; among equals, the first enabled in declaration order", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>), bsc::state<B>,
                              bsc::state<C>),
@@ -70,38 +85,38 @@ TEST_CASE("the deepest source wins; among equals, the first enabled in declarati
         bsc::state<B> + bsc::event<back> = bsc::state<A>, bsc::state<C> + bsc::event<back> = bsc::state<A>,
         bsc::state<A2> + bsc::event<back> = bsc::state<A1>);
     SUBCASE("no guard of the leaf holds: the ancestor's transition fires") {
-        bsc::machine m{chart, ctx{}};
+        machine_t<Backend, decltype(chart)> m{chart, ctx{}};
         m.dispatch(go{});
-        CHECK(m.is<B>());
+        CHECK(m.template is<B>());
     }
     SUBCASE("both leaf guards hold: the first declared fires") {
-        bsc::machine m{chart, ctx{1, false, {}}};
+        machine_t<Backend, decltype(chart)> m{chart, ctx{1, false, {}}};
         m.dispatch(go{});
-        CHECK(m.is<C>());
+        CHECK(m.template is<C>());
     }
     SUBCASE("only the second leaf guard holds: it fires, not the ancestor's") {
-        bsc::machine m{chart, ctx{2, false, {}}};
+        machine_t<Backend, decltype(chart)> m{chart, ctx{2, false, {}}};
         m.dispatch(go{});
-        CHECK(m.is<A2>());
+        CHECK(m.template is<A2>());
     }
 }
 
-TEST_CASE("an event that enables no transition is ignored and changes nothing") {
+TEST_CASE_TEMPLATE("an event that enables no transition is ignored and changes nothing", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A> + bsc::event<go>[([](ctx const& c) { return c.flag; })] = bsc::state<B>,
         bsc::state<B> + bsc::event<back> = bsc::state<A>);
-    bsc::machine m{chart, ctx{}};
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     auto const before = m.active_configuration();
     CHECK(m.dispatch(go{}) == bsc::outcome::ignored);
     CHECK(m.dispatch(back{}) == bsc::outcome::ignored);
     CHECK(m.active_configuration() == before);
     m.context().flag = true;
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
-    CHECK(m.is<B>());
+    CHECK(m.template is<B>());
 }
 
-TEST_CASE("the transition domain: siblings keep their parent, self and ancestor/descendant targets re-enter") {
+TEST_CASE_TEMPLATE("the transition domain: siblings keep their parent, self and ancestor/descendant targets re-enter", Backend, compiled, table) {
     std::string trace;
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>), bsc::state<B>),
@@ -110,7 +125,7 @@ TEST_CASE("the transition domain: siblings keep their parent, self and ancestor/
         bsc::state<A2> + bsc::event<back> = bsc::state<A>,   // to an ancestor: A re-entered
         bsc::state<A> + bsc::event<tick> = bsc::state<A2>,   // to a descendant: A re-entered
         bsc::state<A> + bsc::event<ping> = bsc::state<B>, bsc::state<B> + bsc::event<ping> = bsc::state<A>);
-    bsc::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
     trace.clear();
     m.dispatch(go{});
     CHECK(trace == "-A1 A1>A2 +A2");
@@ -125,13 +140,13 @@ TEST_CASE("the transition domain: siblings keep their parent, self and ancestor/
     CHECK(trace == "-A1 -A A>A2 +A +A2");
 }
 
-TEST_CASE("an internal transition (no target) runs its action and exits and enters nothing") {
+TEST_CASE_TEMPLATE("an internal transition (no target) runs its action and exits and enters nothing", Backend, compiled, table) {
     std::string trace;
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>)),
         bsc::state<A> + bsc::event<go> / [](ctx& c) { ++c.value; },
         bsc::state<A1> + bsc::event<back> = bsc::state<A2>, bsc::state<A2> + bsc::event<back> = bsc::state<A1>);
-    bsc::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
     trace.clear();
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(trace == "A>internal");
@@ -139,7 +154,7 @@ TEST_CASE("an internal transition (no target) runs its action and exits and ente
     CHECK(m.active_states().joined() == "Root A A1");
 }
 
-TEST_CASE("shallow history restores the last active child; its own children take their defaults") {
+TEST_CASE_TEMPLATE("shallow history restores the last active child; its own children take their defaults", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>,
                              bsc::composite<A>(bsc::shallow_history, bsc::initial<A1>,
@@ -150,7 +165,7 @@ TEST_CASE("shallow history restores the last active child; its own children take
         bsc::state<A1> + bsc::event<ping> = bsc::state<A2>, bsc::state<A2> + bsc::event<ping> = bsc::state<A1>,
         bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<B> + bsc::event<back> = bsc::state<A>,
         bsc::state<B> + bsc::event<pong> = bsc::state<C2>);
-    bsc::machine m{chart, ctx{}};
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     m.dispatch(tick{});  // A1/C2
     m.dispatch(go{});
     m.dispatch(back{});
@@ -166,7 +181,7 @@ TEST_CASE("shallow history restores the last active child; its own children take
     }
 }
 
-TEST_CASE("deep history restores the whole last active sub-configuration") {
+TEST_CASE_TEMPLATE("deep history restores the whole last active sub-configuration", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>,
                              bsc::composite<A>(bsc::deep_history, bsc::initial<A1>,
@@ -176,7 +191,7 @@ TEST_CASE("deep history restores the whole last active sub-configuration") {
         bsc::state<C1> + bsc::event<tick> = bsc::state<C2>, bsc::state<C2> + bsc::event<tick> = bsc::state<C1>,
         bsc::state<A1> + bsc::event<ping> = bsc::state<A2>, bsc::state<A2> + bsc::event<ping> = bsc::state<A1>,
         bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<B> + bsc::event<back> = bsc::state<A>);
-    bsc::machine m{chart, ctx{}};
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK(m.active_states().joined() == "Root A A1 C1");  // never visited: defaults
     m.dispatch(tick{});
     m.dispatch(go{});
@@ -198,7 +213,7 @@ struct e1 {};
 struct e2 {};
 }  // namespace sem
 
-TEST_CASE("a parallel state: entered region by region, events broadcast to every region") {
+TEST_CASE_TEMPLATE("a parallel state: entered region by region, events broadcast to every region", Backend, compiled, table) {
     std::string trace;
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<P>,
@@ -214,7 +229,7 @@ TEST_CASE("a parallel state: entered region by region, events broadcast to every
         bsc::state<Y2> + bsc::event<pong> / log("y2") = bsc::state<Y1>,
         bsc::state<P> + bsc::event<e1> = bsc::state<Out>, bsc::state<Y2> + bsc::event<e1> = bsc::state<Y1>,
         bsc::state<X1> + bsc::event<e2> = bsc::state<X2>, bsc::state<Y2> + bsc::event<e2> / log("y2"));
-    bsc::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
     CHECK(trace == "+Root +P +R1 +X1 +R2 +Y1");
     trace.clear();
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
@@ -257,7 +272,7 @@ TEST_CASE("a parallel state: entered region by region, events broadcast to every
     }
 }
 
-TEST_CASE("guards compose with !, && and ||; actions run in sequence; event data reaches both") {
+TEST_CASE_TEMPLATE("guards compose with !, && and ||; actions run in sequence; event data reaches both", Backend, compiled, table) {
     struct number {
         int n;
     };
@@ -272,7 +287,7 @@ TEST_CASE("guards compose with !, && and ||; actions run in sequence; event data
                              [](ctx& c) { c.log += " second"; }),
         bsc::state<A> + bsc::event<number>[flagged || !positive] / log("other"),
         bsc::state<A> + bsc::event<go> = bsc::state<big>, bsc::state<big> + bsc::event<go> = bsc::state<A>);
-    bsc::machine m{chart, ctx{}};
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK(m.dispatch(number{3}) == bsc::outcome::ignored);
     CHECK(m.dispatch(number{4}) == bsc::outcome::consumed);
     CHECK(m.context().value == 4);
@@ -284,7 +299,7 @@ TEST_CASE("guards compose with !, && and ||; actions run in sequence; event data
     CHECK(m.context().value == 4);
 }
 
-TEST_CASE("eventless transitions run after each microstep until none is enabled, and at construction") {
+TEST_CASE_TEMPLATE("eventless transitions run after each microstep until none is enabled, and at construction", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>, bsc::state<D>),
         bsc::state<A>[([](ctx const& c) { return c.value > 0; })] / log("A>B") = bsc::state<B>,
@@ -292,50 +307,50 @@ TEST_CASE("eventless transitions run after each microstep until none is enabled,
         bsc::state<C> + bsc::event<go> / [](ctx& c) { c.value = 10; } = bsc::state<D>,
         bsc::state<D>[([](ctx const& c) { return c.value == 10; })] / log("D>A") = bsc::state<A>);
     SUBCASE("at construction") {
-        bsc::machine m{chart, ctx{1, false, {}}};
-        CHECK(m.is<C>());
+        machine_t<Backend, decltype(chart)> m{chart, ctx{1, false, {}}};
+        CHECK(m.template is<C>());
         CHECK(m.context().log == "A>B B>C");
     }
     SUBCASE("after an event, the chain runs before dispatch returns") {
-        bsc::machine m{chart, ctx{0, false, {}}};
-        CHECK(m.is<A>());
+        machine_t<Backend, decltype(chart)> m{chart, ctx{0, false, {}}};
+        CHECK(m.template is<A>());
         m.context().value = 0;
         CHECK(m.dispatch(go{}) == bsc::outcome::ignored);
         m.context().value = 1;
         CHECK(m.dispatch(go{}) == bsc::outcome::ignored);  // the event fires nothing; A>B>C follow it
-        CHECK(m.is<C>());
+        CHECK(m.template is<C>());
         m.context().log.clear();
         CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
         CHECK(m.context().log == "D>A A>B B>C");
-        CHECK(m.is<C>());
+        CHECK(m.template is<C>());
     }
 }
 
-TEST_CASE("an eventless transition is also evaluated when the dispatched event fired nothing") {
+TEST_CASE_TEMPLATE("an eventless transition is also evaluated when the dispatched event fired nothing", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A>[([](ctx const& c) { return c.flag; })] = bsc::state<B>,
         bsc::state<B> + bsc::event<go> = bsc::state<A>, bsc::state<A> + bsc::event<back> / log("back"));
-    bsc::machine m{chart, ctx{}};
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     m.context().flag = true;  // written by the environment between dispatches
     CHECK(m.dispatch(go{}) == bsc::outcome::ignored);
-    CHECK(m.is<B>());
+    CHECK(m.template is<B>());
 }
 
-TEST_CASE("a guarded eventless cycle that stays enabled is stopped and reported as a livelock") {
+TEST_CASE_TEMPLATE("a guarded eventless cycle that stays enabled is stopped and reported as a livelock", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A>[([](ctx const& c) { return c.flag; })] / [](ctx& c) { ++c.value; } = bsc::state<B>,
         bsc::state<B>[([](ctx const& c) { return c.flag; })] / [](ctx& c) { ++c.value; } = bsc::state<A>,
         bsc::state<A> + bsc::event<go> / [](ctx& c) { c.flag = true; });
-    bsc::machine m{chart, ctx{}};
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK(m.dispatch(go{}) == bsc::outcome::livelock);
     // max_eventless_steps transitions settle normally; the one after them is reported.
     CHECK(m.context().value == static_cast<int>(bsc::default_policy::max_eventless_steps) + 1);
     CHECK(m.last_outcome() == bsc::outcome::livelock);
 }
 
-TEST_CASE("raised events are queued and processed in order after the current step, before dispatch returns") {
+TEST_CASE_TEMPLATE("raised events are queued and processed in order after the current step, before dispatch returns", Backend, compiled, table) {
     std::string trace;
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
@@ -347,10 +362,10 @@ TEST_CASE("raised events are queued and processed in order after the current ste
             raise(back{});
         },
         bsc::state<C> + bsc::event<back> / log("back") = bsc::state<A>);
-    bsc::machine m{chart, ctx{}};
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(m.context().log == "go enter B ping pong back");
-    CHECK(m.is<A>());
+    CHECK(m.template is<A>());
     CHECK(m.queue().empty());
 }
 
@@ -360,13 +375,13 @@ struct tiny_queue : bsc::default_policy {
 };
 }  // namespace sem
 
-TEST_CASE("queue overflow is reported, the extra event is dropped and the rest is processed") {
+TEST_CASE_TEMPLATE("queue overflow is reported, the extra event is dropped and the rest is processed", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A> + bsc::event<go> / (bsc::raise(ping{}), bsc::raise(ping{}), bsc::raise(ping{})),
         bsc::state<A> + bsc::event<ping> / [](ctx& c) { ++c.value; }, bsc::state<A> + bsc::event<back> = bsc::state<B>,
         bsc::state<B> + bsc::event<back> = bsc::state<A>);
-    bsc::machine<decltype(chart), tiny_queue> m{chart, ctx{}};
+    machine_t<Backend, decltype(chart), tiny_queue> m{chart, ctx{}};
     CHECK(m.dispatch(go{}) == bsc::outcome::queue_overflow);
     CHECK(m.context().value == 2);
     CHECK(m.dispatch(go{}) == bsc::outcome::queue_overflow);
@@ -374,23 +389,23 @@ TEST_CASE("queue overflow is reported, the extra event is dropped and the rest i
     CHECK(m.dispatch(back{}) == bsc::outcome::consumed);  // the overflow is reported once, not forever
 }
 
-TEST_CASE("events that keep raising each other are stopped and reported as a livelock") {
+TEST_CASE_TEMPLATE("events that keep raising each other are stopped and reported as a livelock", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A> + bsc::event<ping> / (bsc::raise(pong{}), bsc::action([](ctx& c) { ++c.value; })),
         bsc::state<A> + bsc::event<pong> / bsc::raise(ping{}), bsc::state<A> + bsc::event<back> = bsc::state<B>,
         bsc::state<B> + bsc::event<back> = bsc::state<A>);
-    bsc::machine m{chart, ctx{}};
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK(m.dispatch(ping{}) == bsc::outcome::livelock);
     CHECK(m.queue().empty());
     CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
 }
 
-TEST_CASE("a final child of the root halts the machine") {
+TEST_CASE_TEMPLATE("a final child of the root halts the machine", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::final_state<B>),
         bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<A> + bsc::event<back> / log("back"));
-    bsc::machine m{chart, ctx{}};
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK_FALSE(m.halted());
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(m.halted());
@@ -398,12 +413,12 @@ TEST_CASE("a final child of the root halts the machine") {
     CHECK(m.context().log.empty());
 }
 
-TEST_CASE("a transition from the root to a descendant exits and re-enters the root") {
+TEST_CASE_TEMPLATE("a transition from the root to a descendant exits and re-enters the root", Backend, compiled, table) {
     std::string trace;
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), bsc::state<Root> + bsc::event<go> = bsc::state<B>,
         bsc::state<B> + bsc::event<back> = bsc::state<A>);
-    bsc::machine<decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
+    machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
     trace.clear();
     m.dispatch(go{});
     CHECK(trace == "-A -Root Root>B +Root +B");
