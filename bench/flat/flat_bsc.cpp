@@ -1,0 +1,42 @@
+// Workload flat, bsc: the compiled back end (bsc::machine) and the table-driven back end
+// (bsc::table::machine) on the generated chart of flat/flat_chart_bsc.hpp.
+
+#include <bsc/table/engine.hpp>
+
+#include "flat_chart_bsc.hpp"
+#include "flat_workload.hpp"
+
+namespace {
+
+constexpr std::size_t N = flat_bench::workload::states;
+constexpr auto const& chart = flat_bsc::chart<N>;
+using chart_type = decltype(flat_bsc::chart<N>);
+
+template <class Machine>
+class flat_machine {
+public:
+    void on(std::uint8_t event) {
+        bench::with_index<N>(event, [&](auto i) { m_.dispatch(flat_bsc::E<decltype(i)::value>{}); });
+    }
+
+    flat_bench::workload::observation observe() const {
+        std::size_t state = 0;
+        bench::with_index<1>(0, [&](auto) {
+            [&]<std::size_t... I>(std::index_sequence<I...>) {
+                ((m_.template is<flat_bsc::S<I>>() ? (void)(state = I) : (void)0), ...);
+            }(std::make_index_sequence<N>{});
+        });
+        return {state, m_.context().count};
+    }
+
+private:
+    Machine m_{chart};
+};
+
+using compiled = bsc::machine<chart_type>;
+using table = decltype(bsc::table::machine{chart});
+
+}  // namespace
+
+BENCH_IMPL(flat_bench::workload, "bsc_compiled", flat_machine<compiled>);
+BENCH_IMPL(flat_bench::workload, "bsc_table", flat_machine<table>);

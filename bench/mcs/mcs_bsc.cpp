@@ -1,0 +1,59 @@
+// Workload mcs, bsc: the chart of examples/mcs/mcs.hpp run by the compiled back end
+// (bsc::machine) and by the table-driven back end (bsc::table::machine).
+
+#include <bsc/table/engine.hpp>
+
+#include "../../examples/mcs/mcs.hpp"
+#include "mcs_workload.hpp"
+
+namespace {
+
+using namespace mcs_bench;
+
+template <std::size_t I, class List>
+struct button_at;
+template <std::size_t I, class B, class... Bs>
+struct button_at<I, mcs::button_list<B, Bs...>> : button_at<I - 1, mcs::button_list<Bs...>> {};
+template <class B, class... Bs>
+struct button_at<0, mcs::button_list<B, Bs...>> {
+    using type = B;
+};
+
+template <class Machine>
+class supervisor {
+public:
+    void on(std::uint8_t event) {
+        bench::with_index<event_count>(event, [&](auto i) {
+            m_.dispatch(typename button_at<decltype(i)::value, mcs::buttons>::type{});
+        });
+    }
+
+    workload::observation observe() const {
+        return workload::observe(active(), m_.context().error, m_.context().display);
+    }
+
+private:
+    leaf active() const {
+        if (m_.template is<mcs::Off>()) return leaf::Off;
+        if (m_.template is<mcs::Estop>()) return leaf::Estop;
+        if (m_.template is<mcs::Mem>()) return leaf::Mem;
+        if (m_.template is<mcs::Mdi>()) return leaf::Mdi;
+        if (m_.template is<mcs::Tape>()) return leaf::Tape;
+        if (m_.template is<mcs::Handle>()) return leaf::Handle;
+        if (m_.template is<mcs::Jog>()) return leaf::Jog;
+        if (m_.template is<mcs::Rpd>()) return leaf::Rpd;
+        if (m_.template is<mcs::Zrn>()) return leaf::Zrn;
+        if (m_.template is<mcs::Edit>()) return leaf::Edit;
+        return leaf::Setup;
+    }
+
+    Machine m_{mcs::chart};
+};
+
+using compiled = bsc::machine<decltype(mcs::chart)>;
+using table = decltype(bsc::table::machine{mcs::chart});
+
+}  // namespace
+
+BENCH_IMPL(mcs_bench::workload, "bsc_compiled", supervisor<compiled>);
+BENCH_IMPL(mcs_bench::workload, "bsc_table", supervisor<table>);

@@ -1,0 +1,97 @@
+#pragma once
+// Workload `mcs`: the Mode Control Supervisor of examples/mcs/mcs.hpp on a recorded random
+// sequence of button presses (10,000 presses of the 13 buttons, uniform, seed 2024).
+//
+// Event indices follow mcs::buttons: 0 ON_P, 1 OFF_P, 2 ESTOP_P, 3 RESET_P, 4 MEM_P, 5 MDI_P,
+// 6 TAPE_P, 7 HND_P, 8 JOG_P, 9 RPD_P, 10 ZRN_P, 11 EDIT_P, 12 SETUP_P.
+//
+// Every implementation does the chart's work: Show on every entry and exit (a line on a
+// 16-line display), Set_Error0/Set_Error1, the guard cond, and On's deep history. The
+// observation after each event is the active leaf, the error flag and the whole display.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "../harness.hpp"
+
+namespace mcs_bench {
+
+inline constexpr std::size_t event_count = 13;
+
+enum class leaf : std::uint8_t { Off, Estop, Mem, Mdi, Tape, Handle, Jog, Rpd, Zrn, Edit, Setup };
+
+/// The display of examples/mcs/mcs.hpp, for the implementations that do not use bsc: the last
+/// 16 lines Show wrote, "+S" on entry and "-S" on exit.
+class display {
+public:
+    static constexpr std::size_t capacity = 16;
+    struct line {
+        std::string_view state;
+        bool entered = false;
+        bool operator==(line const& o) const { return state == o.state && entered == o.entered; }
+    };
+    void show(std::string_view state, bool entered) {
+        lines_[count_ % capacity] = {state, entered};
+        ++count_;
+    }
+    std::size_t size() const { return count_ < capacity ? count_ : capacity; }
+    line operator[](std::size_t i) const {
+        std::size_t const first = count_ < capacity ? 0 : count_ - capacity;
+        return lines_[(first + i) % capacity];
+    }
+
+private:
+    std::array<line, capacity> lines_{};
+    std::size_t count_ = 0;
+};
+
+struct panel {
+    int error = 0;
+    mcs_bench::display display;
+};
+
+struct workload {
+    static constexpr char const* name = "mcs";
+
+    struct observation {
+        leaf active = leaf::Off;
+        int error = 0;
+        std::size_t lines = 0;
+        std::array<display::line, display::capacity> shown{};
+        bool operator==(observation const& o) const {
+            return active == o.active && error == o.error && lines == o.lines && shown == o.shown;
+        }
+    };
+
+    /// Observes any display with size() and operator[] returning {state, entered}.
+    template <class Display>
+    static observation observe(leaf active, int error, Display const& d) {
+        observation o{active, error, d.size(), {}};
+        for (std::size_t i = 0; i < d.size(); ++i) o.shown[i] = {d[i].state, d[i].entered};
+        return o;
+    }
+
+    static std::string describe(observation const& o) {
+        static constexpr char const* names[] = {"Off", "Estop", "Mem", "Mdi",  "Tape", "Handle",
+                                                "Jog", "Rpd",   "Zrn", "Edit", "Setup"};
+        std::string s = std::string("leaf ") + names[static_cast<int>(o.active)] + " error " +
+                        std::to_string(o.error) + " display";
+        for (std::size_t i = 0; i < o.lines; ++i) {
+            s += o.shown[i].entered ? " +" : " -";
+            s += o.shown[i].state;
+        }
+        return s;
+    }
+
+    static bench::sequence record() {
+        bench::rng r{2024};
+        bench::sequence s(10000);
+        for (auto& e : s) e = static_cast<std::uint8_t>(r.below(event_count));
+        return s;
+    }
+};
+
+}  // namespace mcs_bench
