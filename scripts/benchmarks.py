@@ -19,11 +19,14 @@ Steps, each logged with the exact command it runs:
    compilers, the load during the runs and the commands. The section between the
    `analysis:begin` and `analysis:end` markers is kept as it is.
 
-Timings are taken only when the 1-minute load average is below 1.2 (the script waits for it,
-up to --max-wait seconds, and records the load before and after each run); a run during which
-the process was descheduled (real time more than 10% above CPU time) or the load rose is
-repeated, up to three times. Plots are drawn when matplotlib is installed, and skipped
-otherwise. Only the Python standard library is required.
+Timings are taken only when the 1-minute load average is below 1.2: the script waits for it
+before each measurement, up to --max-wait seconds each and --wait-budget seconds in all, and
+records the load before and after each run; a run during which the process was descheduled
+(real time more than 10% above CPU time) or the load rose is repeated, up to three times. A
+compilation is stopped after 900 s. --skip-timings and --skip-compile-time keep the results of
+the previous run (build/release/benchmark-results/results.json) for that part. Plots are drawn
+when matplotlib is installed, and skipped otherwise. Only the Python standard library is
+required.
 """
 
 import argparse
@@ -72,8 +75,13 @@ def log(msg):
     print(f"[benchmarks] {msg}", flush=True)
 
 
+def shown(cmd):
+    """A command as the report shows it: paths relative to the repository."""
+    return cmd.replace(str(ROOT) + "/", "")
+
+
 def run(cmd, **kw):
-    commands.append(" ".join(str(c) for c in cmd))
+    commands.append(shown(" ".join(str(c) for c in cmd)))
     log("$ " + commands[-1])
     return subprocess.run([str(c) for c in cmd], check=True, **kw)
 
@@ -83,16 +91,22 @@ def load1():
         return float(f.read().split()[0])
 
 
+wait_budget = [3600.0]  # seconds of waiting left for the whole run (--wait-budget)
+
+
 def wait_quiet(max_wait):
-    """Waits until the 1-minute load average is below LOAD_LIMIT; returns the load then."""
+    """Waits until the 1-minute load average is below LOAD_LIMIT, at most max_wait seconds and
+    at most what is left of the run's waiting budget; returns the load then."""
     start = time.time()
+    limit = min(max_wait, wait_budget[0])
     load = load1()
-    while load >= LOAD_LIMIT and time.time() - start < max_wait:
+    while load >= LOAD_LIMIT and time.time() - start < limit:
         log(f"load average {load:.2f} >= {LOAD_LIMIT}: waiting")
         time.sleep(20)
         load = load1()
+    wait_budget[0] = max(0.0, wait_budget[0] - (time.time() - start))
     if load >= LOAD_LIMIT:
-        log(f"load average still {load:.2f} after {max_wait} s: measuring anyway (recorded)")
+        log(f"load average still {load:.2f}: measuring anyway (recorded)")
     return load
 
 
@@ -218,7 +232,7 @@ def compile_probe(lib, n, max_wait):
     cmd = ["/usr/bin/time", "-f", "%e %M %U %S", "g++", std, "-O2", "-DNDEBUG", f"-I{ROOT / 'include'}",
            f"-I{ROOT / 'bench'}", "-c", str(src), "-o", str(ct / f"flat_{lib}_{n}.o")]
     load = wait_quiet(max_wait)
-    commands.append(" ".join(cmd))
+    commands.append(shown(" ".join(cmd)))
     log("$ " + commands[-1])
 
     def limit():
@@ -333,7 +347,7 @@ def verdicts(times, insns, compile_times):
         if c and h:
             r = c / h
             rows.append((f"compiled within 1.1x of hand-written: {w}", f"{r:.2f}x",
-                         "met" if r <= 1.1 else f"missed by {r / 1.1:.2f}x"))
+                         "met" if r <= 1.1 else f"missed: {100 * (r / 1.1 - 1):.0f}% over 1.1x"))
     t = times.get("mcs", {})
     c, tb = t.get("bsc_compiled", {}).get("ns"), t.get("bsc_table", {}).get("ns")
     if c and tb:
@@ -352,15 +366,21 @@ def verdicts(times, insns, compile_times):
     bsc = compile_times.get("bsc", {})
     for n, limit in ((50, 1.5), (200, 10.0)):
         s = bsc.get(n, {}).get("seconds")
-        if s is None:
-            rows.append((f"{n}-state flat chart compiles in < {limit} s (g++ -O2)", "—", "not measured"))
+        note = bsc.get(n, {}).get("note", "")
+        if s is None and note.startswith("stopped"):
+            rows.append((f"{n}-state flat chart compiles in < {limit} s (g++ -O2)", f"> {COMPILE_TIMEOUT} s",
+                         f"missed by more than {COMPILE_TIMEOUT / limit:.0f}x ({note})"))
+        elif s is None:
+            rows.append((f"{n}-state flat chart compiles in < {limit} s (g++ -O2)", "—", "not measured " + note))
         else:
             rows.append((f"{n}-state flat chart compiles in < {limit} s (g++ -O2)", f"{s:.2f} s",
                          "met" if s < limit else f"missed by {s / limit:.1f}x"))
     e = bsc.get("exponent_above_headers")
     if e is not None:
+        measured = [n for n in SIZES if bsc.get(n, {}).get("seconds")]
         rows.append(("compile time grows no faster than linearly in transitions",
-                     f"exponent {e:.2f}", "met" if e <= 1.15 else "missed: superlinear"))
+                     f"exponent {e:.2f} ({measured[0]} to {measured[-1]} states, above the headers)",
+                     "met" if e <= 1.15 else "missed: superlinear"))
     lines = ["| target | measured | verdict |", "| --- | ---: | --- |"]
     lines += [f"| {a} | {b} | {c} |" for a, b, c in rows]
     return lines
@@ -388,7 +408,7 @@ def compile_table(compile_times):
                          f"{r['load']:.2f} / {'—' if after is None else f'{after:.2f}'} |")
         e, e0 = res.get("exponent"), res.get("exponent_above_headers")
         if e is not None:
-            lines.append(f"| {label} | growth exponent, 25 to 200 states | {e:.2f} | | | "
+            lines.append(f"| {label} | growth exponent over the sizes that finished | {e:.2f} | | | "
                          f"{'' if e0 is None else f'{e0:.2f}'} | |")
     return lines
 
@@ -435,7 +455,7 @@ def kept_analysis():
     return "<!-- analysis:begin -->\n(no analysis yet)\n<!-- analysis:end -->"
 
 
-def write_report(times, insns, compile_times, conditions, started, finished, table_ready):
+def write_report(times, insns, compile_times, conditions, timings_at, compile_at, table_ready):
     plot_files = plots(times, compile_times)
     lines = [
         "# Benchmarks",
@@ -457,7 +477,8 @@ def write_report(times, insns, compile_times, conditions, started, finished, tab
         "(python3 standard library only; plots need Debian's `python3-matplotlib` and are skipped",
         "without it). It waits for the 1-minute load average to fall below 1.2 before each timing and",
         "repeats a run that was disturbed. Needs the Debian packages `libbenchmark-dev`, `libboost-dev`,",
-        "`valgrind` and `time`.",
+        "`valgrind` and `time`. `--skip-timings` or `--skip-compile-time` reuse the previous run's",
+        "results for that part (`python3 scripts/benchmarks.py --help`).",
         "",
         "## The workloads",
         "",
@@ -483,7 +504,7 @@ def write_report(times, insns, compile_times, conditions, started, finished, tab
         "## Machine, compilers and conditions",
         "",
         *machine_description(),
-        f"- Run: {started} to {finished} (UTC)",
+        f"- Dispatch timings and instruction counts: {timings_at} (UTC); compile times: {compile_at} (UTC)",
         "",
         "Load during the timed runs (1-minute load average; the benchmark itself adds about 1; "
         "`real/cpu` is the largest ratio of wall to CPU time among the medians of that run: near 1.0 "
@@ -522,8 +543,9 @@ def write_report(times, insns, compile_times, conditions, started, finished, tab
         "MPL's limits raised as its documentation says (`BOOST_MPL_CFG_NO_PREPROCESSED_HEADERS`,",
         "`BOOST_MPL_LIMIT_VECTOR_SIZE`, `BOOST_MPL_LIMIT_MAP_SIZE`), and above 50 rows the numbered",
         "`vectorN` templates generated the way MPL generates its own (`bench/flat/flat_chart_msm.hpp`).",
-        "The growth exponent is the least-squares slope of log(time) against log(N) over 25..200",
-        "states (1: linear, 2: quadratic), on the total time and on the time above the headers alone.",
+        "The growth exponent is the least-squares slope of log(time) against log(N) over the sizes",
+        "that finished (1: linear, 2: quadratic), on the total elapsed time and on the time above the",
+        "headers alone.",
         "",
         *compile_table(compile_times),
         "",
@@ -551,12 +573,15 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--max-wait", type=int, default=1800,
                     help="seconds to wait for a quiet machine before each measurement (default 1800)")
+    ap.add_argument("--wait-budget", type=int, default=3600,
+                    help="seconds of waiting for a quiet machine in the whole run (default 3600)")
     ap.add_argument("--skip-timings", action="store_true",
                     help="keep the dispatch timings and instruction counts of the last run")
     ap.add_argument("--skip-compile-time", action="store_true", help="keep the compile-time results of the last run")
     ap.add_argument("--skip-msm-compile-time", action="store_true",
                     help="measure bsc's compile times only, keep Boost.MSM's from the last run")
     args = ap.parse_args()
+    wait_budget[0] = float(args.wait_budget)
 
     for tool in ("cmake", "g++", "valgrind"):
         if not shutil.which(tool):
@@ -570,6 +595,10 @@ def main():
     prev_path = OUT / "results.json"
     if prev_path.exists():
         previous = json.loads(prev_path.read_text())
+    if "timings_at" not in previous and DOC.exists():
+        m = re.search(r"^- Run: (.*) \(UTC\)$", DOC.read_text(), re.M)
+        if m:
+            previous["timings_at"] = m.group(1)
     if "commands" not in previous and DOC.exists():
         m = re.search(r"## Commands\n.*?```\n(.*?)```", DOC.read_text(), re.S)
         previous["commands"] = m.group(1).splitlines() if m else []
@@ -580,10 +609,10 @@ def main():
     build(targets)
     table_ready = (ROOT / "include" / "bsc" / "table" / "engine.hpp").exists()
 
+    timings_at = previous.get("timings_at", "")
     if args.skip_timings and "times" in previous:
         times, insns, conditions = previous["times"], previous["insns"], previous["conditions"]
-        started = previous.get("started", started)
-        commands.extend(c for c in previous.get("commands", []) if c.split()[0] not in ("cmake", "/usr/bin/time"))
+        commands.extend(shown(c) for c in previous.get("commands", []) if c.split()[0] not in ("cmake", "/usr/bin/time"))
     else:
         times, conditions = {}, {}
         for w in ALL_WORKLOADS:
@@ -592,15 +621,18 @@ def main():
             times[w] = parse_timings(w, data)
             conditions[exe.name] = cond
         insns = {w: instructions(w) for w in WORKLOADS}
+        timings_at = f"{started} to {datetime.datetime.utcnow().strftime('%Y-%m-%d %H:%M')}"
 
     compile_times = {k: {int(n): v for n, v in d.items() if n.isdigit()} | {x: d[x] for x in d if not x.isdigit()}
                      for k, d in previous.get("compile_times", {}).items()}
     kept_compile = [] if not args.skip_compile_time else ["bsc", "msm"]
     if args.skip_msm_compile_time:
         kept_compile = ["msm"]
-    commands.extend(c for c in previous.get("commands", [])
+    commands.extend(shown(c) for c in previous.get("commands", [])
                     if c.startswith("/usr/bin/time") and any(f"/flat_{lib}_" in c for lib in kept_compile))
+    compile_at = previous.get("compile_at", "")
     if not args.skip_compile_time:
+        compile_at = datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M")
         libs = ["bsc"] if args.skip_msm_compile_time else ["bsc", "msm"]
         for lib in libs:
             res = {}
@@ -613,11 +645,12 @@ def main():
                 [(n, res[n]["seconds"] - base) for n in SIZES if res[n]["seconds"] and base is not None])
             compile_times[lib] = res
 
-    finished = datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M")
-    prev_path.write_text(json.dumps({"started": started, "commands": commands, "times": times, "insns": insns, "conditions": conditions,
+    if not args.skip_compile_time:
+        compile_at += " to " + datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M")
+    prev_path.write_text(json.dumps({"timings_at": timings_at, "compile_at": compile_at, "commands": commands, "times": times, "insns": insns, "conditions": conditions,
                                      "compile_times": {k: {str(n): v for n, v in d.items()}
                                                        for k, d in compile_times.items()}}, indent=1))
-    write_report(times, insns, compile_times, conditions, started, finished, table_ready)
+    write_report(times, insns, compile_times, conditions, timings_at, compile_at, table_ready)
 
 
 if __name__ == "__main__":
