@@ -62,6 +62,31 @@ struct machine_access {
 };
 }  // namespace bsc::detail
 
+namespace bsc::detail {
+// The event an action of a row sees: its event type, or bsc::eventless for condition-driven
+// rows; entry and exit rows see none (may_raise ignores it for them).
+template <class Row>
+struct row_event {
+    using type = eventless_trigger;
+};
+template <class S, class E, class G, class A, class T>
+struct row_event<transition_row<S, event_trigger<E>, G, A, T>> {
+    using type = E;
+};
+
+// Whether any action of the chart can raise an event; if none can, the machine has no queue.
+template <class An, class Policy>
+constexpr bool chart_may_raise() {
+    using context = typename An::chart_context;
+    using raise = event_queue<Policy::queue_capacity, typename An::events>;
+    return []<class... Rows>(type_list<Rows...>) {
+        return (may_raise<context, typename row_event<Rows>::type, raise>(
+                    static_cast<decltype(Rows::action) const*>(nullptr)) ||
+                ...);
+    }(typename An::rows{});
+}
+}  // namespace bsc::detail
+
 namespace bsc {
 
 /// What one BSC execution cycle did.
@@ -90,7 +115,8 @@ public:
     using chart_type = std::remove_cv_t<Chart>;
     using context_type = typename chart_type::context_type;
     using configuration_type = configuration<static_cast<std::size_t>(topo.slots)>;
-    using queue_type = detail::event_queue<Policy::queue_capacity, typename an::events>;
+    using queue_type = std::conditional_t<detail::chart_may_raise<an, Policy>(), detail::event_queue<Policy::queue_capacity, typename an::events>,
+                                          detail::no_event_queue<typename an::events>>;
     using event_types = typename an::events;
 
     /// Enters the initial configuration (entry actions run) and settles eventless transitions.
@@ -293,6 +319,17 @@ private:
         (std::make_index_sequence<kids.size()>{});
     }
 
+    // Calls f(child) for the active child of composite S if it is one of the children the
+    // trigger makes relevant; returns false (without calling f) otherwise.
+    template <int Trigger, int S, class F>
+    constexpr bool with_relevant_active_child(F&& f) const {
+        constexpr auto const& kids = plan::template relevant_children<Trigger, S>;
+        int const active = active_child<S>();
+        return [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return ((active == topo.ordinal[kids[I]] ? (f(detail::int_c<kids[I]>{}), true) : false) || ...);
+        }(std::make_index_sequence<kids.size()>{});
+    }
+
     template <int S, class F>
     constexpr void with_active_child(F&& f) const {
         constexpr auto const& kids = plan::template children<S>;
@@ -430,6 +467,7 @@ private:
     }
 
     // The transitions selected in parallel regions, fired together after selection.
+    struct no_selection {};  // for charts without parallel states
     struct selection {
         std::array<std::uint16_t, static_cast<std::size_t>(plan::max_active_leaves(root))> rows{};
         std::size_t size = 0;
@@ -441,19 +479,30 @@ private:
         }
     };
 
-    template <int Leaf, int Trigger, int Row, class E>
-    constexpr bool try_row(E const& e, selection& sel) {
+    // A region-local trigger's selection: per zone, 0 or 1 + the row's index in its zone_rows.
+    struct zone_selection {
+        std::array<std::uint8_t, plan::components.size()> chosen{};
+    };
+
+    template <int Trigger>
+    using selection_for = std::conditional_t<!plan::has_parallel, no_selection,
+                                             std::conditional_t<plan::template region_local<Trigger>, zone_selection, selection>>;
+
+    template <int Leaf, int Trigger, int Row, class E, class Sel>
+    constexpr bool try_row(E const& e, Sel& sel) {
         if (!guard_holds<Row>(e))
             return false;
-        if constexpr (topo.under_parallel(Leaf))
-            sel.add(plan::template position_of<Trigger>(Row));
-        else
+        if constexpr (!topo.under_parallel(Leaf))
             fire_from<Leaf, Row>(e);
+        else if constexpr (plan::template region_local<Trigger>)
+            sel.chosen[static_cast<std::size_t>(plan::zone[Leaf])] = static_cast<std::uint8_t>(plan::template zone_code<Trigger>(Row));
+        else
+            sel.add(plan::template position_of<Trigger>(Row));
         return true;
     }
 
-    template <int Leaf, int Trigger, class E>
-    constexpr bool try_leaf(E const& e, selection& sel) {
+    template <int Leaf, int Trigger, class E, class Sel>
+    constexpr bool try_leaf(E const& e, Sel& sel) {
         constexpr auto const& cands = plan::template candidates<Leaf, Trigger>;
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
             return (try_row<Leaf, Trigger, cands[I]>(e, sel) || ...);
@@ -462,8 +511,8 @@ private:
     }
 
     // Walks the active configuration below S, visiting only states relevant to the trigger.
-    template <int S, int Trigger, class E>
-    constexpr bool select(E const& e, selection& sel) {
+    template <int S, int Trigger, class E, class Sel>
+    constexpr bool select(E const& e, Sel& sel) {
         constexpr auto k = topo.kinds[S];
         if constexpr (!plan::template relevant<Trigger>[S]) {
             return false;
@@ -475,10 +524,7 @@ private:
             return any;
         } else {
             bool any = false;
-            with_active_child<S>([&](auto c) {
-                if constexpr (plan::template relevant<Trigger>[decltype(c)::value])
-                    any = select<decltype(c)::value, Trigger>(e, sel);
-            });
+            with_relevant_active_child<Trigger, S>([&](auto c) { any = select<decltype(c)::value, Trigger>(e, sel); });
             return any;
         }
     }
@@ -530,17 +576,53 @@ private:
             with_transition<Trigger>(kept.rows[i], [&](auto r) { run_entries<decltype(r)::value>(); });
     }
 
+    // Calls f(row) for the row chosen in zone Z, if any.
+    template <int Trigger, int Z, class F>
+    static constexpr void with_chosen(std::uint8_t code, F&& f) {
+        constexpr auto const& rows = plan::template zone_rows<Trigger, Z>;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (void)((code == I + 1 ? (f(detail::int_c<rows[I]>{}), true) : false) || ...);
+        }(std::make_index_sequence<rows.size()>{});
+    }
+
+    // A region-local trigger's transitions: none conflicts with another, so all fire; the zones
+    // are disjoint and visited in document order, which is the order SCXML fires them in.
+    template <int Trigger, class E>
+    constexpr void fire_zones(E const& e, zone_selection const& sel) {
+        constexpr auto const& zones = plan::template selecting_zones<Trigger>;
+        constexpr std::size_t n = zones.size();
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (with_chosen<Trigger, zones[n - 1 - I]>(sel.chosen[static_cast<std::size_t>(zones[n - 1 - I])], [&](auto r) {
+                 constexpr int d = table.domain[decltype(r)::value];
+                 if constexpr (d >= 0)
+                     exit_below<d>();
+             }),
+             ...);
+            (with_chosen<Trigger, zones[I]>(sel.chosen[static_cast<std::size_t>(zones[I])],
+                                            [&](auto r) { run_action<decltype(r)::value>(e); }),
+             ...);
+            (with_chosen<Trigger, zones[I]>(sel.chosen[static_cast<std::size_t>(zones[I])],
+                                            [&](auto r) { run_entries<decltype(r)::value>(); }),
+             ...);
+        }(std::make_index_sequence<n>{});
+    }
+
     // One microstep on a trigger; true if a transition fired.
     template <int Trigger, class E>
     constexpr bool microstep(E const& e) {
         if constexpr (!plan::has_trigger(Trigger)) {
             return false;
         } else {
-            selection sel;
+            using sel_type = selection_for<Trigger>;
+            sel_type sel;
             bool const any = select<0, Trigger>(e, sel);
-            if constexpr (plan::has_parallel)
+            if constexpr (std::is_same_v<sel_type, zone_selection>) {
+                if (any)
+                    fire_zones<Trigger>(e, sel);
+            } else if constexpr (std::is_same_v<sel_type, selection>) {
                 if (sel.size > 0)
                     fire_selected<Trigger>(e, sel);
+            }
             return any;
         }
     }
@@ -591,12 +673,10 @@ private:
         if constexpr (!plan::template relevant<detail::any_condition>[S]) {
             return false;
         } else if constexpr (k == detail::kind::composite) {
+            // An irrelevant child has no condition-driven transition on it or above it.
             bool fired = false;
-            with_active_child<S>([&](auto c) {
-                // An irrelevant child has no condition-driven transition on it or above it.
-                if constexpr (plan::template relevant<detail::any_condition>[decltype(c)::value])
-                    fired = component_step<decltype(c)::value, Component>();
-            });
+            with_relevant_active_child<detail::any_condition, S>(
+                [&](auto c) { fired = component_step<decltype(c)::value, Component>(); });
             return fired;
         } else {
             return try_component_candidates<S, Component>();
@@ -717,7 +797,7 @@ private:
     [[no_unique_address]] chart_type chart_;
     context_type context_;
     configuration_type config_{};
-    queue_type queue_{};
+    [[no_unique_address]] queue_type queue_{};
     duration clock_{};
     std::array<duration, static_cast<std::size_t>(plan::timeout_slots)> armed_{};  // entry times
     outcome last_ = outcome::ignored;

@@ -46,6 +46,28 @@ struct plan {
         return rel;
     }();
 
+    // The children of composite S that are relevant to the trigger, in document order: the
+    // only ones dispatch on the trigger compares S's byte with, so each trigger instantiates
+    // code along its own paths only (linear in the transitions, not in states x triggers).
+    template <int Trigger, int S>
+    static constexpr auto relevant_children = [] {
+        constexpr auto& rel = relevant<Trigger>;
+        constexpr int count = [] {
+            int n = 0;
+            for (int c = topo.first_child[static_cast<std::size_t>(S)]; c >= 0;
+                 c = topo.next_sibling[static_cast<std::size_t>(c)])
+                n += rel[static_cast<std::size_t>(c)];
+            return n;
+        }();
+        std::array<int, static_cast<std::size_t>(count)> out{};
+        std::size_t n = 0;
+        for (int c = topo.first_child[static_cast<std::size_t>(S)]; c >= 0;
+             c = topo.next_sibling[static_cast<std::size_t>(c)])
+            if (rel[static_cast<std::size_t>(c)])
+                out[n++] = c;
+        return out;
+    }();
+
     static constexpr int candidate_count(int leaf, int trigger) {
         int n = 0;
         for (int a = leaf; a >= 0; a = topo.parent[static_cast<std::size_t>(a)])
@@ -214,6 +236,94 @@ struct plan {
         }
         return bytes;
     }
+
+    static constexpr int index_in_components(int s) {
+        for (std::size_t i = 0; i < components.size(); ++i)
+            if (components[i] == s) return static_cast<int>(i);
+        return -1;
+    }
+
+    // The zone of a state: the component (plan::components) it lies in, as an index there.
+    // Within a zone at most one transition is selected per microstep: its basic states that
+    // lie below no further parallel state are mutually exclusive.
+    static constexpr auto zone = [] {
+        std::array<int, static_cast<std::size_t>(N)> z{};
+        for (int s = 0; s < N; ++s) {
+            z[static_cast<std::size_t>(s)] = 0;
+            for (int a = s; a > 1; a = topo.parent[static_cast<std::size_t>(a)]) {
+                int const i = index_in_components(a);
+                if (i >= 0) {
+                    z[static_cast<std::size_t>(s)] = i;
+                    break;
+                }
+            }
+        }
+        return z;
+    }();
+
+    static constexpr int zone_row_count(int trigger, int z) {
+        int n = 0;
+        for (int r = 0; r < R; ++r)
+            n += is_transition_on(r, trigger) && zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] == z;
+        return n;
+    }
+    // The transitions on a trigger whose source lies in zone Z, in declaration order.
+    template <int Trigger, int Z>
+    static constexpr auto zone_rows = [] {
+        std::array<int, static_cast<std::size_t>(zone_row_count(Trigger, Z))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < R; ++r)
+            if (is_transition_on(r, Trigger) && zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] == Z)
+                out[n++] = r;
+        return out;
+    }();
+    template <int Trigger>
+    static constexpr int zone_code(int row) {
+        int const z = zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(row)])];
+        int code = 1;
+        for (int r = 0; r < row; ++r)
+            code += is_transition_on(r, Trigger) && zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] == z;
+        return code;
+    }
+
+    // A trigger is region-local when what SCXML's conflict resolution does at run time is known
+    // at compile time to keep every selected transition: no transition on it leaves a state that
+    // contains a parallel state (so each is selected by one basic state at most), and no two
+    // transitions from different zones have nesting domains (so none preempts another). Its
+    // microstep then records one row per zone and fires the zones in document order, with no
+    // run-time conflict check.
+    template <int Trigger>
+    static constexpr bool region_local = [] {
+        for (int r = 0; r < R; ++r) {
+            if (!is_transition_on(r, Trigger)) continue;
+            int const src = table.source[static_cast<std::size_t>(r)];
+            for (int s = 0; s < N; ++s)
+                if (topo.kinds[static_cast<std::size_t>(s)] == kind::parallel && topo.contains(src, s))
+                    return false;
+            if (zone_row_count(Trigger, zone[static_cast<std::size_t>(src)]) > 254) return false;
+            for (int r2 = r + 1; r2 < R; ++r2)
+                if (is_transition_on(r2, Trigger) &&
+                    zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r2)])] != zone[static_cast<std::size_t>(src)] &&
+                    plan::conflict(r, r2))
+                    return false;
+        }
+        return true;
+    }();
+
+    // The zones in which a transition on the trigger can be selected under a parallel state.
+    static constexpr int selecting_zone_count(int trigger) {
+        int n = 0;
+        for (std::size_t z = 1; z < components.size(); ++z) n += zone_row_count(trigger, static_cast<int>(z)) > 0;
+        return n;
+    }
+    template <int Trigger>
+    static constexpr auto selecting_zones = [] {
+        std::array<int, static_cast<std::size_t>(selecting_zone_count(Trigger))> out{};
+        std::size_t n = 0;
+        for (std::size_t z = 1; z < components.size(); ++z)
+            if (zone_row_count(Trigger, static_cast<int>(z)) > 0) out[n++] = static_cast<int>(z);
+        return out;
+    }();
 
     // Two selected transitions conflict when their exit sets meet, i.e. when their domains nest.
     static constexpr bool conflict(int r1, int r2) {

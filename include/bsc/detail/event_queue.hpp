@@ -82,4 +82,23 @@ private:
     bool overflowed_ = false;
 };
 
+// The queue of a chart none of whose actions can raise (detail::may_raise): it is always
+// empty, and saying so at compile time spares every dispatch the checks for raised events.
+template <class Events>
+class no_event_queue {
+public:
+    template <class E>
+    constexpr bool operator()(E const&) {  // never called: no action takes the raise argument
+        return false;
+    }
+    static constexpr bool empty() { return true; }
+    static constexpr std::size_t size() { return 0; }
+    static constexpr std::size_t capacity() { return 0; }
+    static constexpr bool overflowed() { return false; }
+    constexpr void clear_overflow() {}
+    constexpr void clear() {}
+    template <class F>
+    constexpr void pop(F&&) {}
+};
+
 }  // namespace bsc::detail

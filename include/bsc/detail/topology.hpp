@@ -207,6 +207,7 @@ struct analysis {
     using nodes = decltype(flatten<top_node<root>>());
     using tags = typename tags_of<nodes>::type;
     using rows = typename Chart::row_types;
+    using chart_context = typename Chart::context_type;
     using events = typename drop_void<typename event_list<rows>::all>::type;
 
     static constexpr int N = static_cast<int>(nodes::size);

@@ -65,20 +65,48 @@ struct no_action {
     constexpr void operator()(Ctx&, E const&, Raise&) const {}
 };
 
+// The event a bsc action sees when it runs as an entry or exit action.
+struct state_change {};
+
 // Entry and exit actions see the context (and the raise queue), never an event.
 template <class A>
 struct state_action {
     A fn;
     template <class Ctx, class Raise>
     constexpr void operator()(Ctx& ctx, Raise& raise) const {
-        if constexpr (bsc_action<A>) {
-            struct entered {};
-            fn(ctx, entered{}, raise);
-        } else {
+        if constexpr (bsc_action<A>)
+            fn(ctx, state_change{}, raise);
+        else
             call_state_action(fn, ctx, raise);
-        }
     }
 };
+
+// Whether an action can raise an event, i.e. whether it is ever handed the raise argument
+// (an action that does not accept it is called without it). A chart none of whose actions
+// can raise needs no event queue. Unknown action types are assumed to raise.
+template <class Ctx, class E, class Raise>
+constexpr bool may_raise(void const*) {
+    return true;
+}
+template <class Ctx, class E, class Raise>
+constexpr bool may_raise(no_action const*) {
+    return false;
+}
+template <class Ctx, class E, class Raise, class F>
+constexpr bool may_raise(action_fn<F> const*) {
+    return std::is_invocable_v<F const&, Ctx&, E const&, Raise&>;
+}
+template <class Ctx, class E, class Raise, class... As>
+constexpr bool may_raise(action_seq<As...> const*) {
+    return (may_raise<Ctx, E, Raise>(static_cast<As const*>(nullptr)) || ...);
+}
+template <class Ctx, class E, class Raise, class A>
+constexpr bool may_raise(state_action<A> const*) {
+    if constexpr (bsc_action<A>)
+        return may_raise<Ctx, state_change, Raise>(static_cast<A const*>(nullptr));
+    else
+        return std::is_invocable_v<A const&, Ctx&, Raise&>;
+}
 
 }  // namespace bsc::detail
 
