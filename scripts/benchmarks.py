@@ -219,7 +219,7 @@ def compile_probe(lib, n, max_wait):
     ct.mkdir(parents=True, exist_ok=True)
     src = ct / f"flat_{lib}_{n}.cpp"
     if n == 0:
-        if lib == "bsc":
+        if lib in ("bsc", "bsc_ref"):
             src.write_text("// The library's headers alone.\n#include <bsc/bsc.hpp>\nint probe() { return 0; }\n")
         else:
             src.write_text("// The library's headers alone (and MPL's raised limits).\n"
@@ -228,7 +228,7 @@ def compile_probe(lib, n, max_wait):
     else:
         template = (ROOT / "bench" / "compile_time" / f"flat_{lib}.cpp.in").read_text()
         src.write_text(template.replace("@N@", str(n)))
-    std = "-std=c++20" if lib == "bsc" else "-std=c++17"
+    std = "-std=c++17" if lib == "msm" else "-std=c++20"
     cmd = ["/usr/bin/time", "-f", "%e %M %U %S", "g++", std, "-O2", "-DNDEBUG", f"-I{ROOT / 'include'}",
            f"-I{ROOT / 'bench'}", "-c", str(src), "-o", str(ct / f"flat_{lib}_{n}.o")]
     load = wait_quiet(max_wait)
@@ -363,24 +363,27 @@ def verdicts(times, insns, compile_times):
             if c and o:
                 rows.append((f"compiled faster than {IMPL_LABEL[other]}: {w}", f"{o / c:.2f}x",
                              "met" if c < o else f"missed: {c / o:.2f}x slower"))
-    bsc = compile_times.get("bsc", {})
-    for n, limit in ((50, 1.5), (200, 10.0)):
-        s = bsc.get(n, {}).get("seconds")
-        note = bsc.get(n, {}).get("note", "")
-        if s is None and note.startswith("stopped"):
-            rows.append((f"{n}-state flat chart compiles in < {limit} s (g++ -O2)", f"> {COMPILE_TIMEOUT} s",
-                         f"missed by more than {COMPILE_TIMEOUT / limit:.0f}x ({note})"))
-        elif s is None:
-            rows.append((f"{n}-state flat chart compiles in < {limit} s (g++ -O2)", "—", "not measured " + note))
-        else:
-            rows.append((f"{n}-state flat chart compiles in < {limit} s (g++ -O2)", f"{s:.2f} s",
-                         "met" if s < limit else f"missed by {s / limit:.1f}x"))
-    e = bsc.get("exponent_above_headers")
-    if e is not None:
-        measured = [n for n in SIZES if bsc.get(n, {}).get("seconds")]
-        rows.append(("compile time grows no faster than linearly in transitions",
-                     f"exponent {e:.2f} ({measured[0]} to {measured[-1]} states, above the headers)",
-                     "met" if e <= 1.15 else "missed: superlinear"))
+    for lib, how in (("bsc", "machine<decltype(chart)>"), ("bsc_ref", "machine<chart_ref<chart>>")):
+        bsc = compile_times.get(lib, {})
+        if not bsc:
+            continue
+        for n, limit in ((50, 1.5), (200, 10.0)):
+            s = bsc.get(n, {}).get("seconds")
+            note = bsc.get(n, {}).get("note", "")
+            target = f"{n}-state flat chart compiles in < {limit} s (g++ -O2, {how})"
+            if s is None and note.startswith("stopped"):
+                rows.append((target, f"> {COMPILE_TIMEOUT} s",
+                             f"missed by more than {COMPILE_TIMEOUT / limit:.0f}x ({note})"))
+            elif s is None:
+                rows.append((target, "—", "not measured " + note))
+            else:
+                rows.append((target, f"{s:.2f} s", "met" if s < limit else f"missed by {s / limit:.1f}x"))
+        e = bsc.get("exponent_above_headers")
+        if e is not None:
+            measured = [n for n in SIZES if bsc.get(n, {}).get("seconds")]
+            rows.append((f"compile time grows no faster than linearly in transitions ({how})",
+                         f"exponent {e:.2f} ({measured[0]} to {measured[-1]} states, above the headers)",
+                         "met" if e <= 1.15 else "missed: superlinear"))
     lines = ["| target | measured | verdict |", "| --- | ---: | --- |"]
     lines += [f"| {a} | {b} | {c} |" for a, b, c in rows]
     return lines
@@ -389,7 +392,8 @@ def verdicts(times, insns, compile_times):
 def compile_table(compile_times):
     lines = ["| library | states (= events = transitions) | g++ -O2 -c elapsed | CPU (user+sys) | peak memory | elapsed above headers alone | load before / after |",
              "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
-    for lib, label in (("bsc", "bsc (`bsc::machine`)"), ("msm", "Boost.MSM")):
+    for lib, label in (("bsc", "bsc (`bsc::machine<decltype(chart)>`)"),
+                       ("bsc_ref", "bsc (`bsc::machine<bsc::chart_ref<chart>>`)"), ("msm", "Boost.MSM")):
         res = compile_times.get(lib, {})
         base = res.get(0, {}).get("seconds")
         for n in [0] + SIZES:
@@ -434,7 +438,7 @@ def plots(times, compile_times):
     fig.tight_layout()
     fig.savefig(PLOTS / "dispatch.png", dpi=100)
     fig, ax = plt.subplots(figsize=(5, 4))
-    for lib in ("bsc", "msm"):
+    for lib in ("bsc", "bsc_ref", "msm"):
         pts = [(n, compile_times.get(lib, {}).get(n, {}).get("seconds")) for n in SIZES]
         pts = [(n, s) for n, s in pts if s]
         if pts:
@@ -625,7 +629,7 @@ def main():
 
     compile_times = {k: {int(n): v for n, v in d.items() if n.isdigit()} | {x: d[x] for x in d if not x.isdigit()}
                      for k, d in previous.get("compile_times", {}).items()}
-    kept_compile = [] if not args.skip_compile_time else ["bsc", "msm"]
+    kept_compile = [] if not args.skip_compile_time else ["bsc", "bsc_ref", "msm"]
     if args.skip_msm_compile_time:
         kept_compile = ["msm"]
     commands.extend(shown(c) for c in previous.get("commands", [])
@@ -633,7 +637,7 @@ def main():
     compile_at = previous.get("compile_at", "")
     if not args.skip_compile_time:
         compile_at = datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M")
-        libs = ["bsc"] if args.skip_msm_compile_time else ["bsc", "msm"]
+        libs = ["bsc", "bsc_ref"] if args.skip_msm_compile_time else ["bsc", "bsc_ref", "msm"]
         for lib in libs:
             res = {}
             for n in [0] + SIZES:

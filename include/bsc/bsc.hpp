@@ -2,6 +2,7 @@
 // bsc: Basic Statecharts for C++20. Include this header to get the whole library.
 
 #include <bsc/chart.hpp>
+#include <bsc/chart_ref.hpp>
 #include <bsc/compiled/machine.hpp>
 #include <bsc/configuration.hpp>
 #include <bsc/data/channel.hpp>

@@ -38,6 +38,15 @@ public:
                 return true;
         return false;
     }
+    /// The same names in the same order.
+    friend constexpr bool operator==(state_names const& a, state_names const& b) {
+        if (a.size_ != b.size_)
+            return false;
+        for (std::size_t i = 0; i < a.size_; ++i)
+            if (a.names_[i] != b.names_[i])
+                return false;
+        return true;
+    }
     /// The names joined by `separator`, e.g. "Mcs On Auto Mem".
     std::string joined(std::string_view separator = " ") const {
         std::string out;

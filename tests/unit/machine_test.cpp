@@ -4,6 +4,8 @@
 #include <doctest/doctest.h>
 
 #include <string>
+#include <string_view>
+#include <typeinfo>
 
 #include "trace.hpp"
 
@@ -184,4 +186,108 @@ TEST_CASE("groups of rows (bsc::rows) are flattened into the chart, so rules can
     CHECK(e.context().count == 1);
     CHECK(b.dispatch(mt::back{}) == bsc::outcome::consumed);
     CHECK(b.is<mt::A>());
+}
+
+// ---- what the compiled machine decides at compile time ------------------------------------
+namespace mt2 {
+struct tick {};
+struct go {};
+struct W;
+template <int R>
+struct G;
+template <int R>
+struct On;
+template <int R>
+struct Off;
+struct log_ctx {
+    std::string log;
+};
+template <int R>
+inline constexpr auto note = [](log_ctx& c) { c.log += std::to_string(R); };
+template <int R>
+inline constexpr auto exit_note = [](log_ctx& c) { c.log += "x" + std::to_string(R); };
+template <int R>
+inline constexpr auto entry_note = [](log_ctx& c) { c.log += "e" + std::to_string(R); };
+
+template <int R>
+constexpr auto region() {
+    return bsc::composite<G<R>>(bsc::initial<Off<R>>, bsc::state<On<R>>);
+}
+template <int R>
+constexpr auto region_rows() {
+    return bsc::rows(bsc::state<Off<R>> + bsc::event<tick> / note<R> = bsc::state<On<R>>,
+                     bsc::state<On<R>> + bsc::event<tick> / note<R> = bsc::state<Off<R>>,
+                     bsc::state<On<R>> + bsc::on_exit / exit_note<R>, bsc::state<On<R>> + bsc::on_entry / entry_note<R>);
+}
+// tick stays inside each region; go leaves the parallel state from region 1, so its transition
+// conflicts with region 0's, and SCXML keeps the one earlier in document order.
+inline constexpr auto wide = bsc::make_chart<log_ctx>(
+    bsc::parallel<W>(region<0>(), region<1>(), region<2>()), region_rows<0>(), region_rows<1>(), region_rows<2>(),
+    bsc::state<On<0>> + bsc::event<go> / note<7> = bsc::state<Off<0>>,
+    bsc::state<On<1>> + bsc::event<go> / note<8> = bsc::state<W>);
+
+inline constexpr auto raising = bsc::make_chart<log_ctx>(
+    bsc::composite<struct RRoot>(bsc::initial<Off<0>>, bsc::state<On<0>>),
+    bsc::state<Off<0>> + bsc::event<tick> / [](log_ctx&, tick const&, auto& raise) { raise(go{}); } = bsc::state<On<0>>,
+    bsc::state<On<0>> + bsc::event<go> / note<1> = bsc::state<Off<0>>);
+}  // namespace mt2
+
+TEST_CASE("transitions that stay inside their regions fire without run-time conflict resolution, in SCXML order") {
+    using plan = bsc::detail::plan<bsc::detail::analysis<std::remove_cv_t<decltype(mt2::wide)>>>;
+    constexpr int tick = bsc::detail::analysis<std::remove_cv_t<decltype(mt2::wide)>>::trigger_of<mt2::tick>;
+    constexpr int go = bsc::detail::analysis<std::remove_cv_t<decltype(mt2::wide)>>::trigger_of<mt2::go>;
+    static_assert(plan::region_local<tick>);
+    static_assert(!plan::region_local<go>);  // the transition to W leaves the parallel state
+
+    bsc::machine fast{mt2::wide};
+    bsc::table::machine reference{mt2::wide};
+    CHECK(fast.dispatch(mt2::tick{}) == bsc::outcome::consumed);
+    reference.dispatch(mt2::tick{});
+    // Actions in document order, then the entries in document order.
+    CHECK(fast.context().log == "012e0e1e2");
+    CHECK(fast.context().log == reference.context().log);
+    fast.context().log.clear();
+    reference.context().log.clear();
+    CHECK(fast.dispatch(mt2::tick{}) == bsc::outcome::consumed);
+    reference.dispatch(mt2::tick{});
+    // All exits first, innermost and last region first; then the actions.
+    CHECK(fast.context().log == "x2x1x0012");
+    CHECK(fast.context().log == reference.context().log);
+    CHECK(fast.active_states() == reference.active_states());
+    // go: region 1's transition leaves W and conflicts with region 0's, which comes first and wins.
+    fast.dispatch(mt2::tick{});
+    reference.dispatch(mt2::tick{});
+    fast.context().log.clear();
+    reference.context().log.clear();
+    fast.dispatch(mt2::go{});
+    reference.dispatch(mt2::go{});
+    CHECK(fast.context().log == reference.context().log);
+    CHECK(fast.context().log == "x07");
+    CHECK(fast.is<mt2::On<1>>());
+}
+
+TEST_CASE("a chart none of whose actions can raise carries no event queue") {
+    using quiet = bsc::machine<decltype(mt2::wide)>;
+    using noisy = bsc::machine<decltype(mt2::raising)>;
+    static_assert(quiet::queue_type::capacity() == 0);
+    static_assert(noisy::queue_type::capacity() == bsc::default_policy::queue_capacity);
+    bsc::machine m{mt2::raising};
+    CHECK(m.dispatch(mt2::tick{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "1");  // the raised go was processed
+    CHECK(m.is<mt2::Off<0>>());
+}
+
+TEST_CASE("bsc::chart_ref names a chart by its variable: the same machine, with short symbol names") {
+    bsc::machine<bsc::chart_ref<mt2::wide>> named{mt2::wide};
+    bsc::machine plain{mt2::wide};
+    static_assert(sizeof(named) == sizeof(plain));
+    for (int i = 0; i < 3; ++i) {
+        CHECK(named.dispatch(mt2::tick{}) == plain.dispatch(mt2::tick{}));
+        CHECK(named.active_configuration() == plain.active_configuration());
+    }
+    CHECK(named.dispatch(mt2::go{}) == plain.dispatch(mt2::go{}));
+    CHECK(named.context().log == plain.context().log);
+    CHECK(std::string_view(typeid(named).name()).size() * 4 < std::string_view(typeid(plain).name()).size());
+    bsc::table::machine<bsc::chart_ref<mt2::wide>> table{mt2::wide};
+    CHECK(table.dispatch(mt2::tick{}) == bsc::outcome::consumed);
 }

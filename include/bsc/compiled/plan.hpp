@@ -237,6 +237,14 @@ struct plan {
         return bytes;
     }
 
+    // Two selected transitions conflict when their exit sets meet, i.e. when their domains nest.
+    static constexpr bool conflict(int r1, int r2) {
+        int const d1 = table.domain[static_cast<std::size_t>(r1)], d2 = table.domain[static_cast<std::size_t>(r2)];
+        if (d1 < 0 || d2 < 0)
+            return false;
+        return topo.contains(d1, d2) || topo.contains(d2, d1);
+    }
+
     static constexpr int index_in_components(int s) {
         for (std::size_t i = 0; i < components.size(); ++i)
             if (components[i] == s) return static_cast<int>(i);
@@ -304,7 +312,7 @@ struct plan {
             for (int r2 = r + 1; r2 < R; ++r2)
                 if (is_transition_on(r2, Trigger) &&
                     zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r2)])] != zone[static_cast<std::size_t>(src)] &&
-                    plan::conflict(r, r2))
+                    conflict(r, r2))
                     return false;
         }
         return true;
@@ -325,13 +333,6 @@ struct plan {
         return out;
     }();
 
-    // Two selected transitions conflict when their exit sets meet, i.e. when their domains nest.
-    static constexpr bool conflict(int r1, int r2) {
-        int const d1 = table.domain[static_cast<std::size_t>(r1)], d2 = table.domain[static_cast<std::size_t>(r2)];
-        if (d1 < 0 || d2 < 0)
-            return false;
-        return topo.contains(d1, d2) || topo.contains(d2, d1);
-    }
 };
 
 }  // namespace bsc::detail
