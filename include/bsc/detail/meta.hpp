@@ -39,25 +39,6 @@ constexpr auto operator|(type_list<Ts...>, type_id<U>) {
 template <class... Ts>
 using unique_list = decltype((type_list<>{} | ... | type_id<Ts>{}));
 
-// Position of T in Ts..., or -1.
-template <class T, class... Ts>
-constexpr int index_in() {
-    constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
-    for (std::size_t i = 0; i < sizeof...(Ts); ++i)
-        if (same[i])
-            return static_cast<int>(i);
-    return -1;
-}
-
-template <class T, class List>
-struct index_of_impl;
-template <class T, class... Ts>
-struct index_of_impl<T, type_list<Ts...>> {
-    static constexpr int value = index_in<T, Ts...>();
-};
-template <class T, class List>
-inline constexpr int index_of = index_of_impl<T, List>::value;
-
 // O(1) access by position after one O(n) instantiation per list.
 template <std::size_t I, class T>
 struct indexed {
@@ -69,6 +50,48 @@ template <std::size_t... Is, class... Ts>
 struct indexer<std::index_sequence<Is...>, Ts...> : indexed<Is, Ts>... {};
 template <std::size_t I, class T>
 indexed<I, T> select_indexed(indexed<I, T>);
+
+// The position of T among the bases of an indexer, found by overload resolution: no
+// instantiation per element, so n lookups in a list of n cost O(n), not O(n^2).
+template <class T, std::size_t I>
+constexpr std::size_t position_by_type(indexed<I, T> const*) {
+    return I;
+}
+
+// Position of the first T in Ts..., or -1.
+template <class T, class... Ts>
+constexpr int index_in() {
+    using index = indexer<std::index_sequence_for<Ts...>, Ts...>;
+    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); }) {
+        return static_cast<int>(position_by_type<T>(static_cast<index const*>(nullptr)));
+    } else {  // absent, or present more than once (the base is ambiguous)
+        constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
+        for (std::size_t i = 0; i < sizeof...(Ts); ++i)
+            if (same[i])
+                return static_cast<int>(i);
+        return -1;
+    }
+}
+
+template <class List>
+struct indexer_of;
+template <class... Ts>
+struct indexer_of<type_list<Ts...>> {
+    using type = indexer<std::index_sequence_for<Ts...>, Ts...>;
+};
+
+// Position of the first T in List, or -1. Instantiated with the list as one type, so that n
+// lookups in a list of n do not each spell out the n elements.
+template <class T, class List>
+constexpr int index_of_impl() {
+    using index = typename indexer_of<List>::type;
+    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); })
+        return static_cast<int>(position_by_type<T>(static_cast<index const*>(nullptr)));
+    else
+        return []<class... Ts>(type_list<Ts...>) { return index_in<T, Ts...>(); }(List{});
+}
+template <class T, class List>
+inline constexpr int index_of = index_of_impl<T, List>();
 
 template <std::size_t I, class List>
 struct at_impl;

@@ -167,11 +167,18 @@ struct trigger_event<transition_row<S, event_trigger<E>, G, A, T>> {
     using type = E;
 };
 
+// The events of the rows, each once, in order of first appearance.
 template <class List>
 struct event_list;
 template <class... Rows>
 struct event_list<type_list<Rows...>> {
-    using all = decltype((type_list<>{} | ... | type_id<typename trigger_event<Rows>::type>{}));
+    using with_repeats = type_list<typename trigger_event<Rows>::type...>;
+    template <std::size_t... I>
+    static auto first_occurrences(std::index_sequence<I...>)
+        -> decltype((type_list<>{} + ... +
+                     std::conditional_t<index_of<typename trigger_event<Rows>::type, with_repeats> == static_cast<int>(I),
+                                        type_list<typename trigger_event<Rows>::type>, type_list<>>{}));
+    using all = decltype(first_occurrences(std::index_sequence_for<Rows...>{}));
 };
 template <class List>
 struct drop_void;

@@ -98,12 +98,7 @@ constexpr auto children_from() {
 
 template <std::size_t I, class... A>
 constexpr bool first_of_its_kind() {
-    using list = type_list<A...>;
-    using T = at<I, list>;
-    constexpr bool same[] = {std::is_same_v<T, A>...};
-    for (std::size_t k = 0; k < I; ++k)
-        if (same[k]) return false;
-    return true;
+    return index_in<at<I, type_list<A...>>, A...>() == static_cast<int>(I);
 }
 
 template <class A>
