@@ -192,21 +192,45 @@ using module = bsc::machine<decltype(chart)>;
 }  // namespace robot
 
 // ---- Main's vocabulary: queries, updates, outputs ------------------------------------------
+// Each guard and action is named (bsc::named) in the paper's terms, which the diagrams of Main
+// show: a query by its module and answer ("Robot?Idle"), an update by its updating event
+// ("set_busy"), an output by its output event ("light_on").
+
+/// The concatenation of Parts, as a character array that bsc::named<...> takes: the names
+/// below are computed from the types, and kept in the types (no storage at run time).
+template <std::size_t N>
+struct name_text {
+    char text[N];
+};
+template <std::string_view const&... Parts>
+inline constexpr auto joined_name = [] {
+    name_text<(Parts.size() + ... + 1)> out{};
+    std::size_t at = 0;
+    for (std::string_view const part : {Parts...})
+        for (char const c : part) out.text[at++] = c;
+    return out;
+}();
+
+inline constexpr std::string_view robot_query = "Robot?";
 
 /// The modular query "Robot?" answered S (a guard: it reads the module, never changes it).
 template <class S>
-inline constexpr auto robot_is = bsc::guard([](auto const& main) { return main.robot.template is<S>(); });
+inline constexpr auto robot_is = bsc::named<joined_name<robot_query, bsc::name_of<S>>.text>(
+    bsc::guard([](auto const& main) { return main.robot.template is<S>(); }));
 
 /// The updating event U, sent to the Robot module and processed by it at once.
 template <class U>
-inline constexpr auto update_robot = bsc::action([](auto& main) { main.robot.dispatch(U{}); });
+inline constexpr auto update_robot =
+    bsc::named<joined_name<bsc::name_of<U>>.text>(bsc::action([](auto& main) { main.robot.dispatch(U{}); }));
 /// The updating event U, sent to the Button module and processed by it at once.
 template <class U>
-inline constexpr auto update_button = bsc::action([](auto& main) { main.button.dispatch(U{}); });
+inline constexpr auto update_button =
+    bsc::named<joined_name<bsc::name_of<U>>.text>(bsc::action([](auto& main) { main.button.dispatch(U{}); }));
 
 /// The output event O, sent to the environment.
 template <class O>
-inline constexpr auto emit = bsc::action([](auto& main) { main.env.receive(O{}); });
+inline constexpr auto emit =
+    bsc::named<joined_name<O::name>.text>(bsc::action([](auto& main) { main.env.receive(O{}); }));
 
 // ---- Main ----------------------------------------------------------------------------------
 

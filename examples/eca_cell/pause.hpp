@@ -71,12 +71,16 @@ inline constexpr auto chart = bsc::make_chart<no_data>(
 using module = bsc::machine<decltype(chart)>;
 }  // namespace pause
 
+inline constexpr std::string_view pause_query = "Pause?";
+
 /// The modular query "Pause?" answered S.
 template <class S>
-inline constexpr auto pause_is = bsc::guard([](auto const& main) { return main.pause.template is<S>(); });
+inline constexpr auto pause_is = bsc::named<joined_name<pause_query, bsc::name_of<S>>.text>(
+    bsc::guard([](auto const& main) { return main.pause.template is<S>(); }));
 /// The updating event U, sent to the Pause module.
 template <class U>
-inline constexpr auto update_pause = bsc::action([](auto& main) { main.pause.dispatch(U{}); });
+inline constexpr auto update_pause =
+    bsc::named<joined_name<bsc::name_of<U>>.text>(bsc::action([](auto& main) { main.pause.dispatch(U{}); }));
 
 // ---- The new transient states and rules ----------------------------------------------------
 

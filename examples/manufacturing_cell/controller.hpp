@@ -31,7 +31,9 @@
 //   the if-then clauses of section IV       the transition rows of cell::chart, one block per
 //                                             component
 //   Table I, guards g1 ... g15              cell::g1 ... cell::g15, one bsc::guard each, written
-//                                             as the table's formula
+//                                             as the table's formula and named as in the table
+//   the actions of the if-then clauses      cell::belt_on ... cell::new_phase, named as in the
+//     (BeltOn, DrillOn & tm1On, ...)          clauses ("DrillOn & tm1On") for the diagrams
 //   constraint 1 (each device at most once  the variables E1..E4: a device acts only while its
 //     before a table rotation)                Ei is false (g1, g3, g4, g6, g7, g9, g10, g12) and
 //                                             sets it when it ends; only the table resets them
@@ -121,94 +123,97 @@ struct data {
 
 // ---- Table I: the guard conditions ---------------------------------------------------------------
 // The paper writes ¬ for NOT, & for AND and ∥ for OR; the channels are read as latched at the
-// start of the cycle, the variables as the components before have left them in this cycle.
+// start of the cycle, the variables as the components before have left them in this cycle. Each
+// guard has its name in Table I (bsc::named), which the diagrams of the chart show.
 
 // g1: ¬P1 & ¬E1 & IN
-inline constexpr auto g1 = bsc::guard([](data const& d) { return !d.P1 && !d.E1 && d.IN; });
+inline constexpr auto g1 = bsc::named<"g1">(bsc::guard([](data const& d) { return !d.P1 && !d.E1 && d.IN; }));
 // g2: P1
-inline constexpr auto g2 = bsc::guard([](data const& d) { return d.P1.get(); });
+inline constexpr auto g2 = bsc::named<"g2">(bsc::guard([](data const& d) { return d.P1.get(); }));
 // g3: ¬P1 & ¬E1 & ¬IN
-inline constexpr auto g3 = bsc::guard([](data const& d) { return !d.P1 && !d.E1 && !d.IN; });
+inline constexpr auto g3 = bsc::named<"g3">(bsc::guard([](data const& d) { return !d.P1 && !d.E1 && !d.IN; }));
 // g4: P2 & ¬E2
-inline constexpr auto g4 = bsc::guard([](data const& d) { return d.P2 && !d.E2; });
+inline constexpr auto g4 = bsc::named<"g4">(bsc::guard([](data const& d) { return d.P2 && !d.E2; }));
 // g5: tm1.tm
-inline constexpr auto g5 = bsc::guard([](data const& d) { return d.T1.tm(); });
+inline constexpr auto g5 = bsc::named<"g5">(bsc::guard([](data const& d) { return d.T1.tm(); }));
 // g6: ¬P2 & ¬E2
-inline constexpr auto g6 = bsc::guard([](data const& d) { return !d.P2 && !d.E2; });
+inline constexpr auto g6 = bsc::named<"g6">(bsc::guard([](data const& d) { return !d.P2 && !d.E2; }));
 // g7: P3 & ¬E3
-inline constexpr auto g7 = bsc::guard([](data const& d) { return d.P3 && !d.E3; });
+inline constexpr auto g7 = bsc::named<"g7">(bsc::guard([](data const& d) { return d.P3 && !d.E3; }));
 // g8: tm2.tm
-inline constexpr auto g8 = bsc::guard([](data const& d) { return d.T2.tm(); });
+inline constexpr auto g8 = bsc::named<"g8">(bsc::guard([](data const& d) { return d.T2.tm(); }));
 // g9: ¬P3 & ¬E3
-inline constexpr auto g9 = bsc::guard([](data const& d) { return !d.P3 && !d.E3; });
+inline constexpr auto g9 = bsc::named<"g9">(bsc::guard([](data const& d) { return !d.P3 && !d.E3; }));
 // g10: P4 & ¬E4
-inline constexpr auto g10 = bsc::guard([](data const& d) { return d.P4 && !d.E4; });
+inline constexpr auto g10 = bsc::named<"g10">(bsc::guard([](data const& d) { return d.P4 && !d.E4; }));
 // g11: tm3.tm
-inline constexpr auto g11 = bsc::guard([](data const& d) { return d.T3.tm(); });
+inline constexpr auto g11 = bsc::named<"g11">(bsc::guard([](data const& d) { return d.T3.tm(); }));
 // g12: ¬P4 & ¬E4
-inline constexpr auto g12 = bsc::guard([](data const& d) { return !d.P4 && !d.E4; });
+inline constexpr auto g12 = bsc::named<"g12">(bsc::guard([](data const& d) { return !d.P4 && !d.E4; }));
 // g13: E1 & E2 & E3 & E4 & (P1 ∥ P2 ∥ P3)
-inline constexpr auto g13 =
-    bsc::guard([](data const& d) { return d.E1 && d.E2 && d.E3 && d.E4 && (d.P1 || d.P2 || d.P3); });
+inline constexpr auto g13 = bsc::named<"g13">(
+    bsc::guard([](data const& d) { return d.E1 && d.E2 && d.E3 && d.E4 && (d.P1 || d.P2 || d.P3); }));
 // g14: S1
-inline constexpr auto g14 = bsc::guard([](data const& d) { return d.S1.get(); });
+inline constexpr auto g14 = bsc::named<"g14">(bsc::guard([](data const& d) { return d.S1.get(); }));
 // g15: E1 & E2 & E3 & E4 & ¬P1 & ¬P2 & ¬P3
-inline constexpr auto g15 =
-    bsc::guard([](data const& d) { return d.E1 && d.E2 && d.E3 && d.E4 && !d.P1 && !d.P2 && !d.P3; });
+inline constexpr auto g15 = bsc::named<"g15">(
+    bsc::guard([](data const& d) { return d.E1 && d.E2 && d.E3 && d.E4 && !d.P1 && !d.P2 && !d.P3; }));
 
 // Paper silent: two conditions that Table I does not list, for the transitions that close the
-// belt's third state and the table's third state (see the rows below).
+// belt's third state and the table's third state (see the rows below). Named by their formula.
 // ¬E1: the table has reset E1, a new phase begins.
-inline constexpr auto new_phase_begun = bsc::guard([](data const& d) { return !d.E1; });
+inline constexpr auto new_phase_begun = bsc::named<"!E1">(bsc::guard([](data const& d) { return !d.E1; }));
 // ¬S1: the arm has left its fully advanced position: the valve is off and the turn is over.
-inline constexpr auto arm_left_end = bsc::guard([](data const& d) { return !d.S1; });
+inline constexpr auto arm_left_end = bsc::named<"!S1">(bsc::guard([](data const& d) { return !d.S1; }));
 
 // ---- Actions ---------------------------------------------------------------------------------
+// Named as in the if-then clauses of section IV ("DrillOn & tm1On"); `& E2` (or `E2` alone) is
+// the end of operation, E2 := true, and "reset E1-E4" the start of a new phase.
 
-inline constexpr auto belt_on = [](data& d) { d.belt.set(true); };  // BeltOn
-inline constexpr auto belt_off = [](data& d) {                      // BeltOff, end of operation
+inline constexpr auto belt_on = bsc::named<"BeltOn">([](data& d) { d.belt.set(true); });
+inline constexpr auto belt_off = bsc::named<"BeltOff & E1">([](data& d) {  // end of operation
     d.belt.set(false);
     d.E1 = true;
-};
-inline constexpr auto belt_nothing_to_do = [](data& d) { d.E1 = true; };
+});
+inline constexpr auto belt_nothing_to_do = bsc::named<"E1">([](data& d) { d.E1 = true; });
 
-inline constexpr auto drill_on = [](data& d) {  // DrillOn & tm1On
+inline constexpr auto drill_on = bsc::named<"DrillOn & tm1On">([](data& d) {
     d.drill.set(true);
     d.T1.start();
-};
-inline constexpr auto drill_off = [](data& d) {  // DrillOff, end of operation
+});
+inline constexpr auto drill_off = bsc::named<"DrillOff & E2">([](data& d) {  // end of operation
     d.drill.set(false);
     d.T1.reset();  // Paper silent: the timer is stopped with the drill (its tm cleared)
     d.E2 = true;
-};
-inline constexpr auto drill_nothing_to_do = [](data& d) { d.E2 = true; };
+});
+inline constexpr auto drill_nothing_to_do = bsc::named<"E2">([](data& d) { d.E2 = true; });
 
-inline constexpr auto test_on = [](data& d) {  // TestOn & tm2On
+inline constexpr auto test_on = bsc::named<"TestOn & tm2On">([](data& d) {
     d.test.set(true);
     d.T2.start();
-};
-inline constexpr auto test_off = [](data& d) {  // TestOff, end of operation
+});
+inline constexpr auto test_off = bsc::named<"TestOff & E3">([](data& d) {  // end of operation
     d.test.set(false);
     d.T2.reset();
     d.E3 = true;
-};
-inline constexpr auto test_nothing_to_do = [](data& d) { d.E3 = true; };
+});
+inline constexpr auto test_nothing_to_do = bsc::named<"E3">([](data& d) { d.E3 = true; });
 
-inline constexpr auto robot_on = [](data& d) {  // RobotOn & tm3On
+inline constexpr auto robot_on = bsc::named<"RobotOn & tm3On">([](data& d) {
     d.robot.set(true);
     d.T3.start();
-};
-inline constexpr auto robot_off = [](data& d) {  // RobotOff, end of operation
+});
+inline constexpr auto robot_off = bsc::named<"RobotOff & E4">([](data& d) {  // end of operation
     d.robot.set(false);
     d.T3.reset();
     d.E4 = true;
-};
-inline constexpr auto robot_nothing_to_do = [](data& d) { d.E4 = true; };
+});
+inline constexpr auto robot_nothing_to_do = bsc::named<"E4">([](data& d) { d.E4 = true; });
 
-inline constexpr auto valve_on = [](data& d) { d.valve.set(true); };    // ValveOn
-inline constexpr auto valve_off = [](data& d) { d.valve.set(false); };  // ValveOff
+inline constexpr auto valve_on = bsc::named<"ValveOn">([](data& d) { d.valve.set(true); });
+inline constexpr auto valve_off = bsc::named<"ValveOff">([](data& d) { d.valve.set(false); });
 /// "E1, E2, E3, and E4 must be set to false to allow new operations in the devices".
-inline constexpr auto new_phase = [](data& d) { d.E1 = d.E2 = d.E3 = d.E4 = false; };
+inline constexpr auto new_phase = bsc::named<"reset E1-E4">([](data& d) { d.E1 = d.E2 = d.E3 = d.E4 = false; });
 
 // ---- The chart (Fig. 6) ----------------------------------------------------------------------
 

@@ -164,23 +164,25 @@ struct panel {
 
 // ---- Guard and actions of Figures 12 and 13 -----------------------------------------------------
 
+// Each has the paper's name (bsc::named), which the diagrams of the chart show.
+
 /// Figure 13's Set_Error0 and Set_Error1.
-inline constexpr auto set_error0 = bsc::action([](panel& p) { p.error = 0; });
-inline constexpr auto set_error1 = bsc::action([](panel& p) { p.error = 1; });
+inline constexpr auto set_error0 = bsc::named<"Set_Error0">(bsc::action([](panel& p) { p.error = 0; }));
+inline constexpr auto set_error1 = bsc::named<"Set_Error1">(bsc::action([](panel& p) { p.error = 1; }));
 
 /// Figure 13's cond, guarding Estop + Off_P = Off. The paper does not define it.
 /// Paper silent: cond holds once the emergency stop has been acknowledged with RESET_P
 /// (error 0). An operator expects to acknowledge an E-stop before the machine can leave it:
 /// Off leads straight back to On, so leaving Estop with the error still set would let the
 /// machine be switched on again without anyone acknowledging the stop.
-inline constexpr auto cond = bsc::guard([](panel const& p) { return p.error == 0; });
+inline constexpr auto cond = bsc::named<"cond">(bsc::guard([](panel const& p) { return p.error == 0; }));
 
 /// Figure 12's Show, the entry and the exit action of every state: it puts the state on the
 /// display as entered ("+S") or left ("-S").
 template <class S>
-inline constexpr auto show_entry = [](panel& p) { p.display.show(bsc::name_of<S>, true); };
+inline constexpr auto show_entry = bsc::named<"Show">([](panel& p) { p.display.show(bsc::name_of<S>, true); });
 template <class S>
-inline constexpr auto show_exit = [](panel& p) { p.display.show(bsc::name_of<S>, false); };
+inline constexpr auto show_exit = bsc::named<"Show">([](panel& p) { p.display.show(bsc::name_of<S>, false); });
 
 // ---- The chart ----------------------------------------------------------------------------------
 

@@ -342,22 +342,34 @@ TEST_CASE("exports of the examples: every state and transition, and the structur
         check_example(mcs::chart);
         auto const mermaid = bsc::to_mermaid(mcs::chart);
         CHECK(has(mermaid, "    Off --> On : on_p\n"));
-        CHECK(has(mermaid, "    Estop --> Off : off_p [guard]\n"));
-        CHECK(has(mermaid, "    On --> Estop : estop_p / action\n"));
-        CHECK(has(mermaid, "state \"On [H*]<br/>entry / action<br/>exit / action\" as On {\n"));
+        CHECK(has(mermaid, "    Estop --> Off : off_p [cond]\n"));
+        CHECK(has(mermaid, "    On --> Estop : estop_p / Set_Error1\n"));
+        CHECK(has(mermaid, "state \"On [H*]<br/>entry / Show<br/>exit / Show\" as On {\n"));
         CHECK(has(mermaid, "[*] --> Auto\n"));
         auto const scxml = bsc::to_scxml(mcs::chart);
         CHECK(has(scxml, "<history id=\"On_history\" type=\"deep\">\n"));
         CHECK(has(scxml, "<transition event=\"reset_p\" target=\"Estop\">"));
+        CHECK(has(scxml, "<transition event=\"off_p\" cond=\"cond\" target=\"Off\"/>"));
+        CHECK(has(scxml, "<script>/* Set_Error0 */</script>"));
+        CHECK(has(scxml, "<onentry><script>/* Show */</script></onentry>"));
     }
     SUBCASE("manufacturing cell") {
         check_example(cell::chart);
         auto const mermaid = bsc::to_mermaid(cell::chart);
         CHECK(count(mermaid, "        --\n") == 4);  // five regions
-        CHECK(has(mermaid, "    BeltOff --> BeltOn : [guard] / action\n"));
-        CHECK(has(mermaid, "DrillOff : [guard] / action\n"));  // an internal transition
-        CHECK(count(bsc::to_dot(cell::chart), "style=\"rounded,dashed\"") == 5);
-        CHECK(has(bsc::to_scxml(cell::chart), "<parallel id=\"Cell\">"));
+        CHECK(has(mermaid, "    BeltOff --> BeltOn : [g1] / BeltOn\n"));
+        CHECK(has(mermaid, "    DrillOff --> DrillOn : [g4] / DrillOn & tm1On\n"));
+        CHECK(has(mermaid, "    CylinderReturned --> CylinderAdvancing : [g13] / ValveOn\n"));
+        CHECK(has(mermaid, "    BeltDone --> BeltOff : [!E1]\n"));
+        CHECK(has(mermaid, "DrillOff : [g6] / E2\n"));  // an internal transition
+        auto const dot = bsc::to_dot(cell::chart);
+        CHECK(count(dot, "style=\"rounded,dashed\"") == 5);
+        CHECK(has(dot, "\"CylinderReturned\" -> \"CylinderAdvancing\" [label=\"[g13] / ValveOn\"]"));
+        auto const scxml = bsc::to_scxml(cell::chart);
+        CHECK(has(scxml, "<parallel id=\"Cell\">"));
+        CHECK(has(scxml, "<transition cond=\"g13\" target=\"CylinderAdvancing\">"));
+        CHECK(has(scxml, "<script>/* DrillOn &amp; tm1On */</script>"));
+        CHECK(has(bsc::to_plantuml(cell::chart), "CylinderReturned --> CylinderAdvancing : [g13] / ValveOn\n"));
     }
     SUBCASE("production cell actors") {
         check_example(pcell::feed_belt_chart);
@@ -367,15 +379,45 @@ TEST_CASE("exports of the examples: every state and transition, and the structur
         check_example(pcell::deposit_belt_chart);
         auto const robot = bsc::to_mermaid(pcell::robot_chart);
         CHECK(has(robot, "    A1Grip --> A1Lift : after(300ms)\n"));
-        CHECK(has(robot, "state \"On [H*]<br/>exit / action\" as On {\n"));
-        CHECK(has(bsc::to_scxml(pcell::deposit_belt_chart), "event=\"after("));
+        CHECK(has(robot, "state \"On [H*]<br/>exit / turn=stop, arm1=stop, arm2=stop\" as On {\n"));
+        CHECK(has(robot, "    TuIdle --> TuTurn : [arm2_full && belt_ready] / task=deposit, target=arm2_to_belt\n"));
+        CHECK(has(bsc::to_mermaid(pcell::feed_belt_chart), "FbFed : entry / motor=0, fed=1\n"));
+        CHECK(has(bsc::to_mermaid(pcell::press_chart), "    PsWaitLoad --> PsForge : [loaded && arm1_ext == 0]\n"));
+        CHECK(has(bsc::to_mermaid(pcell::press_chart_variant<false>), "    PsWaitLoad --> PsForge : [loaded]\n"));
+        auto const deposit = bsc::to_scxml(pcell::deposit_belt_chart);
+        CHECK(has(deposit, "event=\"after("));
+        CHECK(has(deposit, "cond=\"!dropped\""));
     }
     SUBCASE("ECA cell main") {
         check_example(eca::main_chart);
         check_example(eca::extended_main_chart);
         auto const mermaid = bsc::to_mermaid(eca::main_chart);
         CHECK(has(mermaid, "    Idle --> QueryRobotOnPress : press\n"));
-        CHECK(has(mermaid, "    QueryRobotOnPress --> Idle : [guard] / action\n"));
-        CHECK(has(bsc::to_scxml(eca::extended_main_chart), "<transition event=\"continue_\""));
+        CHECK(has(mermaid, "    QueryRobotOnPress --> Idle : [Robot?Idle] / set_pressed, set_busy, start, light_on\n"));
+        CHECK(has(mermaid, "    QueryRobotOnPress --> Idle : [Robot?Busy] / set_pressed\n"));
+        auto const extended = bsc::to_scxml(eca::extended_main_chart);
+        CHECK(has(extended, "<transition event=\"continue_\""));
+        CHECK(has(extended, "<transition cond=\"Pause?Paused\" target=\"Idle\">"));
+    }
+    SUBCASE("every guard and action of the examples has a name") {
+        // An unnamed guard or action is drawn as "guard" or "action" (alone or in a composition).
+        auto const placeholders = [](std::string const& text) {
+            return count(text, "[guard]") + count(text, "guard &&") + count(text, "&& guard") +
+                   count(text, "guard ||") + count(text, "|| guard") + count(text, "/ action") +
+                   count(text, "action,") + count(text, ", action");
+        };
+        auto const check_named = [&](auto const& chart) {
+            CHECK(placeholders(bsc::to_mermaid(chart)) == 0);
+            CHECK(placeholders(bsc::to_plantuml(chart)) == 0);
+        };
+        check_named(mcs::chart);
+        check_named(cell::chart);
+        check_named(eca::main_chart);
+        check_named(eca::extended_main_chart);
+        check_named(pcell::feed_belt_chart);
+        check_named(pcell::table_chart);
+        check_named(pcell::robot_chart);
+        check_named(pcell::press_chart);
+        check_named(pcell::deposit_belt_chart);
     }
 }
