@@ -70,25 +70,6 @@ constexpr auto operator|(type_list<Ts...>, type_id<U>) {
 template <class... Ts>
 using unique_list = decltype((type_list<>{} | ... | type_id<Ts>{}));
 
-// Position of T in Ts..., or -1.
-template <class T, class... Ts>
-constexpr int index_in() {
-    constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
-    for (std::size_t i = 0; i < sizeof...(Ts); ++i)
-        if (same[i])
-            return static_cast<int>(i);
-    return -1;
-}
-
-template <class T, class List>
-struct index_of_impl;
-template <class T, class... Ts>
-struct index_of_impl<T, type_list<Ts...>> {
-    static constexpr int value = index_in<T, Ts...>();
-};
-template <class T, class List>
-inline constexpr int index_of = index_of_impl<T, List>::value;
-
 // O(1) access by position after one O(n) instantiation per list.
 template <std::size_t I, class T>
 struct indexed {
@@ -100,6 +81,48 @@ template <std::size_t... Is, class... Ts>
 struct indexer<std::index_sequence<Is...>, Ts...> : indexed<Is, Ts>... {};
 template <std::size_t I, class T>
 indexed<I, T> select_indexed(indexed<I, T>);
+
+// The position of T among the bases of an indexer, found by overload resolution: no
+// instantiation per element, so n lookups in a list of n cost O(n), not O(n^2).
+template <class T, std::size_t I>
+constexpr std::size_t position_by_type(indexed<I, T> const*) {
+    return I;
+}
+
+// Position of the first T in Ts..., or -1.
+template <class T, class... Ts>
+constexpr int index_in() {
+    using index = indexer<std::index_sequence_for<Ts...>, Ts...>;
+    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); }) {
+        return static_cast<int>(position_by_type<T>(static_cast<index const*>(nullptr)));
+    } else {  // absent, or present more than once (the base is ambiguous)
+        constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
+        for (std::size_t i = 0; i < sizeof...(Ts); ++i)
+            if (same[i])
+                return static_cast<int>(i);
+        return -1;
+    }
+}
+
+template <class List>
+struct indexer_of;
+template <class... Ts>
+struct indexer_of<type_list<Ts...>> {
+    using type = indexer<std::index_sequence_for<Ts...>, Ts...>;
+};
+
+// Position of the first T in List, or -1. Instantiated with the list as one type, so that n
+// lookups in a list of n do not each spell out the n elements.
+template <class T, class List>
+constexpr int index_of_impl() {
+    using index = typename indexer_of<List>::type;
+    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); })
+        return static_cast<int>(position_by_type<T>(static_cast<index const*>(nullptr)));
+    else
+        return []<class... Ts>(type_list<Ts...>) { return index_in<T, Ts...>(); }(List{});
+}
+template <class T, class List>
+inline constexpr int index_of = index_of_impl<T, List>();
 
 template <std::size_t I, class List>
 struct at_impl;
@@ -358,20 +381,48 @@ struct no_action {
     constexpr void operator()(Ctx&, E const&, Raise&) const {}
 };
 
+// The event a bsc action sees when it runs as an entry or exit action.
+struct state_change {};
+
 // Entry and exit actions see the context (and the raise queue), never an event.
 template <class A>
 struct state_action {
     A fn;
     template <class Ctx, class Raise>
     constexpr void operator()(Ctx& ctx, Raise& raise) const {
-        if constexpr (bsc_action<A>) {
-            struct entered {};
-            fn(ctx, entered{}, raise);
-        } else {
+        if constexpr (bsc_action<A>)
+            fn(ctx, state_change{}, raise);
+        else
             call_state_action(fn, ctx, raise);
-        }
     }
 };
+
+// Whether an action can raise an event, i.e. whether it is ever handed the raise argument
+// (an action that does not accept it is called without it). A chart none of whose actions
+// can raise needs no event queue. Unknown action types are assumed to raise.
+template <class Ctx, class E, class Raise>
+constexpr bool may_raise(void const*) {
+    return true;
+}
+template <class Ctx, class E, class Raise>
+constexpr bool may_raise(no_action const*) {
+    return false;
+}
+template <class Ctx, class E, class Raise, class F>
+constexpr bool may_raise(action_fn<F> const*) {
+    return std::is_invocable_v<F const&, Ctx&, E const&, Raise&>;
+}
+template <class Ctx, class E, class Raise, class... As>
+constexpr bool may_raise(action_seq<As...> const*) {
+    return (may_raise<Ctx, E, Raise>(static_cast<As const*>(nullptr)) || ...);
+}
+template <class Ctx, class E, class Raise, class A>
+constexpr bool may_raise(state_action<A> const*) {
+    if constexpr (bsc_action<A>)
+        return may_raise<Ctx, state_change, Raise>(static_cast<A const*>(nullptr));
+    else
+        return std::is_invocable_v<A const&, Ctx&, Raise&>;
+}
 
 }  // namespace bsc::detail
 
@@ -827,12 +878,7 @@ constexpr auto children_from() {
 
 template <std::size_t I, class... A>
 constexpr bool first_of_its_kind() {
-    using list = type_list<A...>;
-    using T = at<I, list>;
-    constexpr bool same[] = {std::is_same_v<T, A>...};
-    for (std::size_t k = 0; k < I; ++k)
-        if (same[k]) return false;
-    return true;
+    return index_in<at<I, type_list<A...>>, A...>() == static_cast<int>(I);
 }
 
 template <class A>
@@ -1103,11 +1149,18 @@ struct trigger_event<transition_row<S, event_trigger<E>, G, A, T>> {
     using type = E;
 };
 
+// The events of the rows, each once, in order of first appearance.
 template <class List>
 struct event_list;
 template <class... Rows>
 struct event_list<type_list<Rows...>> {
-    using all = decltype((type_list<>{} | ... | type_id<typename trigger_event<Rows>::type>{}));
+    using with_repeats = type_list<typename trigger_event<Rows>::type...>;
+    template <std::size_t... I>
+    static auto first_occurrences(std::index_sequence<I...>)
+        -> decltype((type_list<>{} + ... +
+                     std::conditional_t<index_of<typename trigger_event<Rows>::type, with_repeats> == static_cast<int>(I),
+                                        type_list<typename trigger_event<Rows>::type>, type_list<>>{}));
+    using all = decltype(first_occurrences(std::index_sequence_for<Rows...>{}));
 };
 template <class List>
 struct drop_void;
@@ -1143,6 +1196,7 @@ struct analysis {
     using nodes = decltype(flatten<top_node<root>>());
     using tags = typename tags_of<nodes>::type;
     using rows = typename Chart::row_types;
+    using chart_context = typename Chart::context_type;
     using events = typename drop_void<typename event_list<rows>::all>::type;
 
     static constexpr int N = static_cast<int>(nodes::size);
@@ -1839,6 +1893,36 @@ constexpr auto make_chart(Root root, Rows... rows) {
 
 }  // namespace bsc
 // end include/bsc/chart.hpp
+// begin include/bsc/chart_ref.hpp
+// bsc::chart_ref<chart>: the type of a chart, named after the constexpr variable that holds it.
+//
+// A chart's own type spells out its whole state tree and every row, so each function the
+// compiler generates for `bsc::machine<decltype(chart)>` carries that spelling in its symbol
+// name, and for large charts building those names dominates compile time (it grows faster
+// than the chart). `bsc::machine<bsc::chart_ref<chart>>` is the same machine, with the same
+// behaviour and size, whose symbols name the variable instead:
+//
+//   inline constexpr auto chart = bsc::make_chart<io>(...);
+//   using controller = bsc::machine<bsc::chart_ref<chart>>;
+//   controller m{chart};
+//
+// Requirements: `Chart` is a chart (from bsc::make_chart) declared as a constexpr variable
+// with static storage duration (namespace scope, or a static data member).
+
+#include <type_traits>
+
+namespace bsc {
+
+template <auto const& Chart>
+struct chart_ref : std::remove_cvref_t<decltype(Chart)> {
+    using chart_type = std::remove_cvref_t<decltype(Chart)>;
+    constexpr chart_ref() : chart_type(Chart) {}
+    // Implicit, so that a machine of chart_ref<chart> is constructed from `chart` itself.
+    constexpr chart_ref(chart_type const& chart) : chart_type(chart) {}  // NOLINT(google-explicit-constructor)
+};
+
+}  // namespace bsc
+// end include/bsc/chart_ref.hpp
 // begin include/bsc/compiled/machine.hpp
 // bsc::machine: the compiled back end. For an event type, dispatch is a nest of switches on
 // the configuration bytes that visits only the states where a transition on that event can
@@ -1898,6 +1982,28 @@ struct plan {
                     rel[static_cast<std::size_t>(s)] = true;
         }
         return rel;
+    }();
+
+    // The children of composite S that are relevant to the trigger, in document order: the
+    // only ones dispatch on the trigger compares S's byte with, so each trigger instantiates
+    // code along its own paths only (linear in the transitions, not in states x triggers).
+    template <int Trigger, int S>
+    static constexpr auto relevant_children = [] {
+        constexpr auto& rel = relevant<Trigger>;
+        constexpr int count = [] {
+            int n = 0;
+            for (int c = topo.first_child[static_cast<std::size_t>(S)]; c >= 0;
+                 c = topo.next_sibling[static_cast<std::size_t>(c)])
+                n += rel[static_cast<std::size_t>(c)];
+            return n;
+        }();
+        std::array<int, static_cast<std::size_t>(count)> out{};
+        std::size_t n = 0;
+        for (int c = topo.first_child[static_cast<std::size_t>(S)]; c >= 0;
+             c = topo.next_sibling[static_cast<std::size_t>(c)])
+            if (rel[static_cast<std::size_t>(c)])
+                out[n++] = c;
+        return out;
     }();
 
     static constexpr int candidate_count(int leaf, int trigger) {
@@ -2076,6 +2182,95 @@ struct plan {
             return false;
         return topo.contains(d1, d2) || topo.contains(d2, d1);
     }
+
+    static constexpr int index_in_components(int s) {
+        for (std::size_t i = 0; i < components.size(); ++i)
+            if (components[i] == s) return static_cast<int>(i);
+        return -1;
+    }
+
+    // The zone of a state: the component (plan::components) it lies in, as an index there.
+    // Within a zone at most one transition is selected per microstep: its basic states that
+    // lie below no further parallel state are mutually exclusive.
+    static constexpr auto zone = [] {
+        std::array<int, static_cast<std::size_t>(N)> z{};
+        for (int s = 0; s < N; ++s) {
+            z[static_cast<std::size_t>(s)] = 0;
+            for (int a = s; a > 1; a = topo.parent[static_cast<std::size_t>(a)]) {
+                int const i = index_in_components(a);
+                if (i >= 0) {
+                    z[static_cast<std::size_t>(s)] = i;
+                    break;
+                }
+            }
+        }
+        return z;
+    }();
+
+    static constexpr int zone_row_count(int trigger, int z) {
+        int n = 0;
+        for (int r = 0; r < R; ++r)
+            n += is_transition_on(r, trigger) && zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] == z;
+        return n;
+    }
+    // The transitions on a trigger whose source lies in zone Z, in declaration order.
+    template <int Trigger, int Z>
+    static constexpr auto zone_rows = [] {
+        std::array<int, static_cast<std::size_t>(zone_row_count(Trigger, Z))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < R; ++r)
+            if (is_transition_on(r, Trigger) && zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] == Z)
+                out[n++] = r;
+        return out;
+    }();
+    template <int Trigger>
+    static constexpr int zone_code(int row) {
+        int const z = zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(row)])];
+        int code = 1;
+        for (int r = 0; r < row; ++r)
+            code += is_transition_on(r, Trigger) && zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] == z;
+        return code;
+    }
+
+    // A trigger is region-local when what SCXML's conflict resolution does at run time is known
+    // at compile time to keep every selected transition: no transition on it leaves a state that
+    // contains a parallel state (so each is selected by one basic state at most), and no two
+    // transitions from different zones have nesting domains (so none preempts another). Its
+    // microstep then records one row per zone and fires the zones in document order, with no
+    // run-time conflict check.
+    template <int Trigger>
+    static constexpr bool region_local = [] {
+        for (int r = 0; r < R; ++r) {
+            if (!is_transition_on(r, Trigger)) continue;
+            int const src = table.source[static_cast<std::size_t>(r)];
+            for (int s = 0; s < N; ++s)
+                if (topo.kinds[static_cast<std::size_t>(s)] == kind::parallel && topo.contains(src, s))
+                    return false;
+            if (zone_row_count(Trigger, zone[static_cast<std::size_t>(src)]) > 254) return false;
+            for (int r2 = r + 1; r2 < R; ++r2)
+                if (is_transition_on(r2, Trigger) &&
+                    zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r2)])] != zone[static_cast<std::size_t>(src)] &&
+                    conflict(r, r2))
+                    return false;
+        }
+        return true;
+    }();
+
+    // The zones in which a transition on the trigger can be selected under a parallel state.
+    static constexpr int selecting_zone_count(int trigger) {
+        int n = 0;
+        for (std::size_t z = 1; z < components.size(); ++z) n += zone_row_count(trigger, static_cast<int>(z)) > 0;
+        return n;
+    }
+    template <int Trigger>
+    static constexpr auto selecting_zones = [] {
+        std::array<int, static_cast<std::size_t>(selecting_zone_count(Trigger))> out{};
+        std::size_t n = 0;
+        for (std::size_t z = 1; z < components.size(); ++z)
+            if (zone_row_count(Trigger, static_cast<int>(z)) > 0) out[n++] = static_cast<int>(z);
+        return out;
+    }();
+
 };
 
 }  // namespace bsc::detail
@@ -2119,6 +2314,15 @@ public:
             if (n == name)
                 return true;
         return false;
+    }
+    /// The same names in the same order.
+    friend constexpr bool operator==(state_names const& a, state_names const& b) {
+        if (a.size_ != b.size_)
+            return false;
+        for (std::size_t i = 0; i < a.size_; ++i)
+            if (a.names_[i] != b.names_[i])
+                return false;
+        return true;
     }
     /// The names joined by `separator`, e.g. "Mcs On Auto Mem".
     std::string joined(std::string_view separator = " ") const {
@@ -2513,6 +2717,25 @@ private:
     bool overflowed_ = false;
 };
 
+// The queue of a chart none of whose actions can raise (detail::may_raise): it is always
+// empty, and saying so at compile time spares every dispatch the checks for raised events.
+template <class Events>
+class no_event_queue {
+public:
+    template <class E>
+    constexpr bool operator()(E const&) {  // never called: no action takes the raise argument
+        return false;
+    }
+    static constexpr bool empty() { return true; }
+    static constexpr std::size_t size() { return 0; }
+    static constexpr std::size_t capacity() { return 0; }
+    static constexpr bool overflowed() { return false; }
+    constexpr void clear_overflow() {}
+    constexpr void clear() {}
+    template <class F>
+    constexpr void pop(F&&) {}
+};
+
 }  // namespace bsc::detail
 // end include/bsc/detail/event_queue.hpp
 // begin include/bsc/detail/type_name.hpp
@@ -2713,6 +2936,31 @@ struct machine_access {
 };
 }  // namespace bsc::detail
 
+namespace bsc::detail {
+// The event an action of a row sees: its event type, or bsc::eventless for condition-driven
+// rows; entry and exit rows see none (may_raise ignores it for them).
+template <class Row>
+struct row_event {
+    using type = eventless_trigger;
+};
+template <class S, class E, class G, class A, class T>
+struct row_event<transition_row<S, event_trigger<E>, G, A, T>> {
+    using type = E;
+};
+
+// Whether any action of the chart can raise an event; if none can, the machine has no queue.
+template <class An, class Policy>
+constexpr bool chart_may_raise() {
+    using context = typename An::chart_context;
+    using raise = event_queue<Policy::queue_capacity, typename An::events>;
+    return []<class... Rows>(type_list<Rows...>) {
+        return (may_raise<context, typename row_event<Rows>::type, raise>(
+                    static_cast<decltype(Rows::action) const*>(nullptr)) ||
+                ...);
+    }(typename An::rows{});
+}
+}  // namespace bsc::detail
+
 namespace bsc {
 
 /// What one BSC execution cycle did.
@@ -2741,7 +2989,8 @@ public:
     using chart_type = std::remove_cv_t<Chart>;
     using context_type = typename chart_type::context_type;
     using configuration_type = configuration<static_cast<std::size_t>(topo.slots)>;
-    using queue_type = detail::event_queue<Policy::queue_capacity, typename an::events>;
+    using queue_type = std::conditional_t<detail::chart_may_raise<an, Policy>(), detail::event_queue<Policy::queue_capacity, typename an::events>,
+                                          detail::no_event_queue<typename an::events>>;
     using event_types = typename an::events;
 
     /// Enters the initial configuration (entry actions run) and settles eventless transitions.
@@ -2944,6 +3193,17 @@ private:
         (std::make_index_sequence<kids.size()>{});
     }
 
+    // Calls f(child) for the active child of composite S if it is one of the children the
+    // trigger makes relevant; returns false (without calling f) otherwise.
+    template <int Trigger, int S, class F>
+    constexpr bool with_relevant_active_child(F&& f) const {
+        constexpr auto const& kids = plan::template relevant_children<Trigger, S>;
+        int const active = active_child<S>();
+        return [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return ((active == topo.ordinal[kids[I]] ? (f(detail::int_c<kids[I]>{}), true) : false) || ...);
+        }(std::make_index_sequence<kids.size()>{});
+    }
+
     template <int S, class F>
     constexpr void with_active_child(F&& f) const {
         constexpr auto const& kids = plan::template children<S>;
@@ -3081,6 +3341,7 @@ private:
     }
 
     // The transitions selected in parallel regions, fired together after selection.
+    struct no_selection {};  // for charts without parallel states
     struct selection {
         std::array<std::uint16_t, static_cast<std::size_t>(plan::max_active_leaves(root))> rows{};
         std::size_t size = 0;
@@ -3092,19 +3353,30 @@ private:
         }
     };
 
-    template <int Leaf, int Trigger, int Row, class E>
-    constexpr bool try_row(E const& e, selection& sel) {
+    // A region-local trigger's selection: per zone, 0 or 1 + the row's index in its zone_rows.
+    struct zone_selection {
+        std::array<std::uint8_t, plan::components.size()> chosen{};
+    };
+
+    template <int Trigger>
+    using selection_for = std::conditional_t<!plan::has_parallel, no_selection,
+                                             std::conditional_t<plan::template region_local<Trigger>, zone_selection, selection>>;
+
+    template <int Leaf, int Trigger, int Row, class E, class Sel>
+    constexpr bool try_row(E const& e, Sel& sel) {
         if (!guard_holds<Row>(e))
             return false;
-        if constexpr (topo.under_parallel(Leaf))
-            sel.add(plan::template position_of<Trigger>(Row));
-        else
+        if constexpr (!topo.under_parallel(Leaf))
             fire_from<Leaf, Row>(e);
+        else if constexpr (plan::template region_local<Trigger>)
+            sel.chosen[static_cast<std::size_t>(plan::zone[Leaf])] = static_cast<std::uint8_t>(plan::template zone_code<Trigger>(Row));
+        else
+            sel.add(plan::template position_of<Trigger>(Row));
         return true;
     }
 
-    template <int Leaf, int Trigger, class E>
-    constexpr bool try_leaf(E const& e, selection& sel) {
+    template <int Leaf, int Trigger, class E, class Sel>
+    constexpr bool try_leaf(E const& e, Sel& sel) {
         constexpr auto const& cands = plan::template candidates<Leaf, Trigger>;
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
             return (try_row<Leaf, Trigger, cands[I]>(e, sel) || ...);
@@ -3113,8 +3385,8 @@ private:
     }
 
     // Walks the active configuration below S, visiting only states relevant to the trigger.
-    template <int S, int Trigger, class E>
-    constexpr bool select(E const& e, selection& sel) {
+    template <int S, int Trigger, class E, class Sel>
+    constexpr bool select(E const& e, Sel& sel) {
         constexpr auto k = topo.kinds[S];
         if constexpr (!plan::template relevant<Trigger>[S]) {
             return false;
@@ -3126,10 +3398,7 @@ private:
             return any;
         } else {
             bool any = false;
-            with_active_child<S>([&](auto c) {
-                if constexpr (plan::template relevant<Trigger>[decltype(c)::value])
-                    any = select<decltype(c)::value, Trigger>(e, sel);
-            });
+            with_relevant_active_child<Trigger, S>([&](auto c) { any = select<decltype(c)::value, Trigger>(e, sel); });
             return any;
         }
     }
@@ -3181,17 +3450,53 @@ private:
             with_transition<Trigger>(kept.rows[i], [&](auto r) { run_entries<decltype(r)::value>(); });
     }
 
+    // Calls f(row) for the row chosen in zone Z, if any.
+    template <int Trigger, int Z, class F>
+    static constexpr void with_chosen(std::uint8_t code, F&& f) {
+        constexpr auto const& rows = plan::template zone_rows<Trigger, Z>;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (void)((code == I + 1 ? (f(detail::int_c<rows[I]>{}), true) : false) || ...);
+        }(std::make_index_sequence<rows.size()>{});
+    }
+
+    // A region-local trigger's transitions: none conflicts with another, so all fire; the zones
+    // are disjoint and visited in document order, which is the order SCXML fires them in.
+    template <int Trigger, class E>
+    constexpr void fire_zones(E const& e, zone_selection const& sel) {
+        constexpr auto const& zones = plan::template selecting_zones<Trigger>;
+        constexpr std::size_t n = zones.size();
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (with_chosen<Trigger, zones[n - 1 - I]>(sel.chosen[static_cast<std::size_t>(zones[n - 1 - I])], [&](auto r) {
+                 constexpr int d = table.domain[decltype(r)::value];
+                 if constexpr (d >= 0)
+                     exit_below<d>();
+             }),
+             ...);
+            (with_chosen<Trigger, zones[I]>(sel.chosen[static_cast<std::size_t>(zones[I])],
+                                            [&](auto r) { run_action<decltype(r)::value>(e); }),
+             ...);
+            (with_chosen<Trigger, zones[I]>(sel.chosen[static_cast<std::size_t>(zones[I])],
+                                            [&](auto r) { run_entries<decltype(r)::value>(); }),
+             ...);
+        }(std::make_index_sequence<n>{});
+    }
+
     // One microstep on a trigger; true if a transition fired.
     template <int Trigger, class E>
     constexpr bool microstep(E const& e) {
         if constexpr (!plan::has_trigger(Trigger)) {
             return false;
         } else {
-            selection sel;
+            using sel_type = selection_for<Trigger>;
+            sel_type sel;
             bool const any = select<0, Trigger>(e, sel);
-            if constexpr (plan::has_parallel)
+            if constexpr (std::is_same_v<sel_type, zone_selection>) {
+                if (any)
+                    fire_zones<Trigger>(e, sel);
+            } else if constexpr (std::is_same_v<sel_type, selection>) {
                 if (sel.size > 0)
                     fire_selected<Trigger>(e, sel);
+            }
             return any;
         }
     }
@@ -3242,12 +3547,10 @@ private:
         if constexpr (!plan::template relevant<detail::any_condition>[S]) {
             return false;
         } else if constexpr (k == detail::kind::composite) {
+            // An irrelevant child has no condition-driven transition on it or above it.
             bool fired = false;
-            with_active_child<S>([&](auto c) {
-                // An irrelevant child has no condition-driven transition on it or above it.
-                if constexpr (plan::template relevant<detail::any_condition>[decltype(c)::value])
-                    fired = component_step<decltype(c)::value, Component>();
-            });
+            with_relevant_active_child<detail::any_condition, S>(
+                [&](auto c) { fired = component_step<decltype(c)::value, Component>(); });
             return fired;
         } else {
             return try_component_candidates<S, Component>();
@@ -3368,7 +3671,7 @@ private:
     [[no_unique_address]] chart_type chart_;
     context_type context_;
     configuration_type config_{};
-    queue_type queue_{};
+    [[no_unique_address]] queue_type queue_{};
     duration clock_{};
     std::array<duration, static_cast<std::size_t>(plan::timeout_slots)> armed_{};  // entry times
     outcome last_ = outcome::ignored;
@@ -3596,7 +3899,9 @@ private:
 //   activPath(from, to, hist)               activate_path(domain, target)
 //   StopStEng()                             the destructor (the engine owns no resource)
 //
-// and the five steps of its Figure 9 are those of microstep().
+// and the five steps of its Figure 9 are those of microstep(). step(now) adds the BSC execution
+// cycle of seed 002 (timers, latched inputs, one condition-driven transition per component,
+// committed outputs) with the same tables.
 
 #include <array>
 #include <cstddef>
@@ -3611,6 +3916,8 @@ private:
 // and exit actions are reached through plain function pointers: one small generated function
 // ("thunk") per row, which receives the chart object and the context and calls the row's
 // callable. Everything here is computed by the compiler; bsc::table::machine interprets it.
+// For the BSC execution cycle (seed 002) the tables also list the components, give each
+// timeout its delay and each state that a timeout leaves a slot for the time it was entered.
 
 #include <array>
 #include <boost/hana/at.hpp>
@@ -3633,6 +3940,9 @@ inline constexpr state_id none = 0;
 using event_id = std::int16_t;
 inline constexpr event_id eventless_id = -1;  ///< a transition without an event
 inline constexpr event_id timeout_id = -2;    ///< a timeout transition, taken by a BSC cycle only
+
+/// Eventless and timeout transitions are condition-driven: the ones a BSC cycle considers.
+constexpr bool is_condition(event_id event) { return event < 0; }
 
 /// The paper's status column, split in two: the kind of state and its history.
 enum class state_kind : std::uint8_t {
@@ -3671,6 +3981,7 @@ struct state_row {
     std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
     std::int16_t slot = -1;    ///< the byte of the configuration an OR state owns, -1 for others
     state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
+    std::int16_t timeout_slot = -1;  ///< where the time it was entered is kept if a timeout leaves it, else -1
 };
 
 /// One row of the transition table (the paper's BTRANS, Figure 8).
@@ -3681,6 +3992,9 @@ struct transition_row {
     /// eventless transitions) passed as `event`.
     using guard_fn = bool (*)(Chart const& chart, context_type const& context, void const* event);
     using action_fn = void (*)(Chart const& chart, context_type& context, void const* event, Raise& raise);
+    /// The delay of a timeout. `after(d)` stores d in the chart object, not in its type, so the
+    /// delay is read from the chart like a guard.
+    using delay_fn = duration (*)(Chart const& chart);
 
     state_id from = none;          ///< origin state
     event_id event = eventless_id; ///< trigger, or `eventless_id` / `timeout_id`
@@ -3688,6 +4002,7 @@ struct transition_row {
     guard_fn guard = nullptr;      ///< null: unguarded
     action_fn action = nullptr;    ///< null: no action
     state_id domain = none;        ///< the transition domain: the state whose active descendants it exits
+    delay_fn delay = nullptr;      ///< a timeout's delay; null for the other transitions
 };
 
 namespace detail_tables {
@@ -3800,6 +4115,11 @@ private:
                                                                             raise);
     }
 
+    template <int Row>
+    static duration delay_thunk(chart_type const& chart) {
+        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay;
+    }
+
     template <bsc::detail::row_kind K, int S>
     static constexpr typename state_row_type::state_action state_action_of() {
         if constexpr (rows_of<K, S>.size() == 0)
@@ -3809,6 +4129,22 @@ private:
     }
 
     static constexpr state_id id(int s) { return s < 0 ? none : static_cast<state_id>(s); }
+
+    static constexpr bool has_timeout(int s) {
+        for (int r = 0; r < analysis::R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition &&
+                rows.trigger[static_cast<std::size_t>(r)] <= bsc::detail::timeout_trigger_id(0) &&
+                rows.source[static_cast<std::size_t>(r)] == s)
+                return true;
+        return false;
+    }
+    // The sources of timeouts numbered in document order, as bsc::machine numbers them.
+    static constexpr auto timeout_slot_of = [] {
+        std::array<int, static_cast<std::size_t>(analysis::N)> slot{};
+        int n = 0;
+        for (int s = 0; s < analysis::N; ++s) slot[static_cast<std::size_t>(s)] = has_timeout(s) ? n++ : -1;
+        return slot;
+    }();
 
     template <int S>
     static constexpr state_row_type make_state_row() {
@@ -3825,6 +4161,7 @@ private:
         row.ordinal = static_cast<std::uint8_t>(topo.ordinal[i]);
         row.slot = static_cast<std::int16_t>(topo.slot[i]);
         row.end = static_cast<state_id>(topo.end[i]);
+        row.timeout_slot = static_cast<std::int16_t>(timeout_slot_of[i]);
         return row;
     }
 
@@ -3844,6 +4181,8 @@ private:
         if constexpr (detail_tables::has_action<R>())
             row.action = &action_thunk<r>;
         row.domain = id(rows.domain[i]);
+        if constexpr (bsc::detail::is_timeout_row<R>)
+            row.delay = &delay_thunk<r>;
         return row;
     }
 
@@ -3900,6 +4239,31 @@ public:
         return next;
     }();
 
+    /// How many states keep an entry time for their timeouts.
+    static constexpr std::size_t timeout_slots = [] {
+        std::size_t n = 0;
+        for (auto const& row : states) n += row.timeout_slot >= 0;
+        return n;
+    }();
+
+    /// The components of a BSC cycle (seed 002), in the order they run: the root and every child
+    /// of an AND state, in document order.
+    static constexpr std::size_t component_count = [] {
+        std::size_t n = 1;
+        for (std::size_t s = root + 1; s < state_count; ++s)
+            n += states[states[s].ancestor].status.kind == state_kind::and_state;
+        return n;
+    }();
+    static constexpr auto components = [] {
+        std::array<state_id, component_count> out{};
+        std::size_t n = 0;
+        out[n++] = root;
+        for (std::size_t s = root + 1; s < state_count; ++s)
+            if (states[states[s].ancestor].status.kind == state_kind::and_state)
+                out[n++] = static_cast<state_id>(s);
+        return out;
+    }();
+
     /// True if some transition is triggered by `event` (an event id, or `eventless_id`).
     static constexpr bool handles(event_id event) {
         for (auto const& t : transitions)
@@ -3908,6 +4272,8 @@ public:
         return false;
     }
     static constexpr bool has_eventless = handles(eventless_id);
+    /// True if a BSC cycle has anything to consider: an eventless or timeout transition.
+    static constexpr bool has_conditions = has_eventless || handles(timeout_id);
 
     /// How many basic states can be active at once: the most transitions one event can select.
     static constexpr std::size_t max_active_leaves = [] {
@@ -4037,6 +4403,12 @@ public:
         []<std::size_t... K>(std::index_sequence<K...>) {
             return std::array<transition_hook, rules::transition_rows>{transition_hook_of<K>()...};
         }(std::make_index_sequence<rules::transition_rows>{});
+    /// What on_row reports for each transition: its position among make_chart's rows.
+    static constexpr std::array<int, rules::transition_rows> on_row = [] {
+        std::array<int, rules::transition_rows> rows{};
+        for (std::size_t k = 0; k < rows.size(); ++k) rows[k] = chart_row(k);
+        return rows;
+    }();
 };
 
 /// The observer hooks of an observer without hooks: no table at all.
@@ -4097,6 +4469,34 @@ public:
         else
             return process(static_cast<event_id>(trigger), &e);
     }
+
+    /// One BSC execution cycle at time `now` (seed 002), as bsc::machine::step: timers are
+    /// updated and inputs latched; each component (the root and every region of an AND state),
+    /// in document order, fires at most one eventless or timeout transition, its actions' writes
+    /// visible at once to the components after it; raised events are processed; outputs are
+    /// committed. Components entered during the cycle first run in the next one. An earlier
+    /// `now` than the last cycle's is reported and ignored.
+    step_report step(duration now) {
+        step_report report;
+        if (halted()) {
+            report.status = last_ = outcome::halted;
+            return report;
+        }
+        if (now < clock_)
+            report.clock_went_backwards = true;
+        else
+            clock_ = now;
+        bsc::detail::update_timers(context_, clock_);
+        latch();
+        if constexpr (rules::has_conditions)
+            report.transitions = run_components();
+        report.status = last_ = drain_queue(report.transitions > 0);
+        commit();
+        return report;
+    }
+
+    /// The time of the last cycle (the machine's clock).
+    duration now() const { return clock_; }
 
     /// True if state S is active.
     template <class S>
@@ -4178,6 +4578,10 @@ private:
     void run_entry(state_id s) {
         if (auto const f = states[s].entry)
             f(chart_, context_, queue_);
+        // A state's timeouts count from its entry, at the time of the last cycle.
+        if constexpr (rules::timeout_slots > 0)
+            if (states[s].timeout_slot >= 0)
+                armed_[static_cast<std::size_t>(states[s].timeout_slot)] = clock_;
         if constexpr (observed)
             if (auto const h = hooks::on_entry[s])
                 h(observer_);
@@ -4340,6 +4744,8 @@ private:
         if constexpr (observed)
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)])
                 h(observer_, e);
+        if constexpr (bsc::detail::observes_rows<Observer>)
+            observer_.on_row(hooks::on_row[static_cast<std::size_t>(t)]);
         if (row.action)
             row.action(chart_, context_, e, queue_);
     }
@@ -4407,12 +4813,14 @@ private:
     }
 
     // Settles the machine after a microstep: eventless transitions until none is enabled,
-    // then the raised events one by one, each followed by its eventless transitions.
+    // then the raised events one by one, each followed by its eventless transitions. Under a
+    // scan policy eventless transitions are left to step(), and only raised events are processed.
     outcome finish(bool consumed) {
+        if constexpr (!Policy::settle_eventless)
+            return drain_queue(consumed);
         std::size_t internal_events = 0;
         for (;;) {
             if constexpr (rules::has_eventless) {
-                static constexpr bsc::eventless no_event{};
                 // Up to max_eventless_steps transitions settle; one more means the chart cycles.
                 for (std::size_t steps = 0; !halted() && microstep(eventless_id, &no_event);)
                     if (++steps > Policy::max_eventless_steps)
@@ -4433,10 +4841,81 @@ private:
         return consumed ? outcome::consumed : outcome::ignored;
     }
 
+    // The raised events, each one microstep and no eventless settling: in a cycle, so that no
+    // component fires twice.
+    outcome drain_queue(bool consumed) {
+        for (std::size_t n = 0; !queue_.empty() && !halted();) {
+            if (++n > Policy::max_internal_events)
+                return abandon();
+            queue_.pop([&](auto const& ev) {
+                microstep(static_cast<event_id>(analysis::template trigger_of<std::decay_t<decltype(ev)>>), &ev);
+            });
+        }
+        if (queue_.overflowed()) {
+            queue_.clear_overflow();
+            return outcome::queue_overflow;
+        }
+        return consumed ? outcome::consumed : outcome::ignored;
+    }
+
     outcome abandon() {
         queue_.clear();
         queue_.clear_overflow();
         return outcome::livelock;
+    }
+
+    // ---- the BSC cycle ----------------------------------------------------------------------
+    // The components' turns: a component takes its turn if it was active when the cycle began
+    // and still is (an earlier component may have left it); one entered during the cycle waits
+    // for the next. Returns the number of transitions fired.
+    int run_components() {
+        constexpr auto const& components = rules::components;
+        std::array<bool, components.size()> active_at_start{};
+        for (std::size_t i = 0; i < components.size(); ++i) active_at_start[i] = active(components[i]);
+        int fired = 0;
+        for (std::size_t i = 0; i < components.size(); ++i)
+            if (active_at_start[i] && active(components[i]) && component_step(components[i]))
+                ++fired;
+        return fired;
+    }
+
+    // One component's turn: from its active frontier (the active basic state below it, or an
+    // AND state whose regions are components of their own) up to the component itself, deepest
+    // origin first and table order among one origin's, the first condition-driven transition
+    // whose condition holds fires.
+    bool component_step(state_id component) {
+        state_id frontier = component;
+        while (states[frontier].status.kind == state_kind::or_state) frontier = active_child(frontier);
+        for (state_id a = frontier;; a = states[a].ancestor) {
+            for (std::int16_t t = rules::first_out[a]; t >= 0; t = rules::next_out[static_cast<std::size_t>(t)])
+                if (is_condition(transitions[static_cast<std::size_t>(t)].event) && condition_holds(t)) {
+                    fire_condition(t);
+                    return true;
+                }
+            if (a == component)
+                return false;
+        }
+    }
+
+    // A timeout's condition: its origin has been active for its delay (the origin is active: it
+    // is on the component's active path). Then the guard, which receives bsc::eventless.
+    bool condition_holds(std::int16_t t) const {
+        auto const& row = transitions[static_cast<std::size_t>(t)];
+        if constexpr (rules::timeout_slots > 0)
+            if (row.event == timeout_id &&
+                clock_ - armed_[static_cast<std::size_t>(states[row.from].timeout_slot)] < row.delay(chart_))
+                return false;
+        return guard_holds(t, &no_event);
+    }
+
+    // Steps 3 to 5 of a microstep for one transition: a component's transition fires alone.
+    void fire_condition(std::int16_t t) {
+        auto const& row = transitions[static_cast<std::size_t>(t)];
+        if (row.to != none)
+            deactivate_path(row.domain);
+        run_action(t, &no_event);
+        if (row.to != none)
+            activate_path(row.domain, row.to);
     }
 
     // Input and output channels of the context, latched and committed around each dispatch
@@ -4444,10 +4923,15 @@ private:
     void latch() { bsc::detail::latch_inputs(context_); }
     void commit() { bsc::detail::commit_outputs(context_); }
 
+    // The event that eventless and timeout transitions receive.
+    static constexpr bsc::eventless no_event{};
+
     [[no_unique_address]] Chart chart_;
     context_type context_;
     configuration_type config_{};
     queue_type queue_{};
+    duration clock_{};
+    std::array<duration, rules::timeout_slots> armed_{};  // entry times of the states with timeouts
     outcome last_ = outcome::ignored;
     [[no_unique_address]] Observer observer_;
 };

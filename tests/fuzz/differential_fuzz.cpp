@@ -1,7 +1,9 @@
-// libFuzzer target: the compiled and the table-driven back ends, fed the same events, must
-// agree after every event (see tests/unit/differential.hpp). The first byte of an input picks
-// a chart; each following pair of bytes is one step: an event of the chart (or an unhandled
-// event, or a write to the context by the environment) and its data. Any difference aborts.
+// libFuzzer target: the compiled and the table-driven back ends, fed the same events and the
+// same execution cycles, must agree after every step (see tests/unit/differential.hpp). The
+// first byte of an input picks a chart; each following pair of bytes is one step: an event of
+// the chart, an unhandled event, a write to the context by the environment, or a cycle,
+// step(now), at a time the second byte moves on from the last cycle's (bsc_diff::next_time:
+// by nothing, by a few milliseconds, by seconds, or backwards). Any difference aborts.
 //
 // Build with -DBSC_BUILD_FUZZERS=ON and Clang; run e.g. `differential_fuzz -max_total_time=300`.
 
@@ -11,22 +13,12 @@
 #include <cstdlib>
 #include <string>
 
-#include "../../examples/mcs/mcs.hpp"
 #include "../unit/differential.hpp"
+#include "../unit/differential_examples.hpp"
 #include "../unit/fixtures.hpp"
 #include "../unit/generated_charts.hpp"
 
 namespace {
-
-struct mcs_fixture {
-    using policy = bsc::default_policy;
-    static constexpr auto const& chart = mcs::chart;
-    static mcs::panel initial() { return {}; }
-    static void perturb(mcs::panel& p, std::uint32_t) { p.display.clear(); }
-    static bool same(mcs::panel const& a, mcs::panel const& b) {
-        return a.error == b.error && a.display.text() == b.display.text();
-    }
-};
 
 template <class Fixture>
 void drive(char const* name, std::uint8_t const* data, std::size_t size) {
@@ -45,22 +37,27 @@ void drive(char const* name, std::uint8_t const* data, std::size_t size) {
 extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size) {
     if (size == 0)
         return 0;
-    std::uint8_t const* events = data + 1;
+    std::uint8_t const* steps = data + 1;
     std::size_t const n = size - 1;
-    switch (data[0] % 13) {
-        case 0: drive<fx::hierarchy>("hierarchy", events, n); break;
-        case 1: drive<fx::parallel>("parallel", events, n); break;
-        case 2: drive<fx::history>("history", events, n); break;
-        case 3: drive<fx::conditions>("conditions", events, n); break;
-        case 4: drive<fx::raising>("raising", events, n); break;
-        case 5: drive<fx::halting>("halting", events, n); break;
-        case 6: drive<mcs_fixture>("mcs", events, n); break;
-        case 7: drive<gen::generated<1>>("generated 1", events, n); break;
-        case 8: drive<gen::generated<2>>("generated 2", events, n); break;
-        case 9: drive<gen::generated<3>>("generated 3", events, n); break;
-        case 10: drive<gen::generated<5>>("generated 5", events, n); break;
-        case 11: drive<gen::generated<7>>("generated 7", events, n); break;
-        default: drive<gen::generated<8>>("generated 8", events, n); break;
+    switch (data[0] % 18) {
+        case 0: drive<fx::hierarchy>("hierarchy", steps, n); break;
+        case 1: drive<fx::parallel>("parallel", steps, n); break;
+        case 2: drive<fx::history>("history", steps, n); break;
+        case 3: drive<fx::conditions>("conditions", steps, n); break;
+        case 4: drive<fx::raising>("raising", steps, n); break;
+        case 5: drive<fx::halting>("halting", steps, n); break;
+        case 6: drive<bsc_diff::mcs_fixture>("mcs", steps, n); break;
+        case 7: drive<fx::cycles>("cycles", steps, n); break;
+        case 8: drive<fx::scan_cycles>("cycles, scan policy", steps, n); break;
+        case 9: drive<bsc_diff::cell_fixture>("manufacturing cell", steps, n); break;
+        case 10: drive<gen::generated<1>>("generated 1", steps, n); break;
+        case 11: drive<gen::generated<2>>("generated 2", steps, n); break;
+        case 12: drive<gen::generated<3>>("generated 3", steps, n); break;
+        case 13: drive<gen::generated<7>>("generated 7", steps, n); break;
+        case 14: drive<gen::generated<8>>("generated 8", steps, n); break;
+        case 15: drive<gen::generated_scan<5>>("generated 5, scan policy", steps, n); break;
+        case 16: drive<gen::generated_scan<9>>("generated 9, scan policy", steps, n); break;
+        default: drive<gen::generated_scan<11>>("generated 11, scan policy", steps, n); break;
     }
     return 0;
 }

@@ -1,13 +1,30 @@
 // The BSC execution cycle (docs/semantics.md, "The execution cycle"): channels, variables,
-// components, BSC timers and state-scoped timeouts.
+// components, BSC timers and state-scoped timeouts. The cases that run a machine run against
+// both back ends: the compiled bsc::machine and the table-driven bsc::table::machine.
 
 #include <doctest/doctest.h>
 
+#include <array>
 #include <chrono>
+#include <cstddef>
+#include <type_traits>
 
 #include <bsc/bsc.hpp>
 
 using namespace std::chrono_literals;
+
+namespace {
+struct compiled {
+    template <class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
+    using machine = bsc::machine<Chart, Policy, Observer>;
+};
+struct table {
+    template <class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
+    using machine = bsc::table::machine<Chart, Policy, Observer>;
+};
+template <class Backend, class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
+using machine_t = typename Backend::template machine<Chart, Policy, Observer>;
+}  // namespace
 
 namespace cyc {
 struct Root;
@@ -53,50 +70,50 @@ inline constexpr auto chart = bsc::make_chart<plant>(
     bsc::state<Busy2> + bsc::event<kick> / [](plant& p) { p.var = 2; });
 }  // namespace cyc
 
-TEST_CASE("inputs written between cycles are latched at the start of the next cycle") {
-    bsc::machine m{cyc::chart, cyc::plant{}};
+TEST_CASE_TEMPLATE("inputs written between cycles are latched at the start of the next cycle", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::chart)> m{cyc::chart, cyc::plant{}};
     m.context().start.set(true);
     CHECK_FALSE(m.context().start.get());  // not yet latched
     CHECK(m.context().start.pending());
     auto const r = m.step(0ms);
     CHECK(m.context().start.get());
-    CHECK(m.is<cyc::Busy1>());
+    CHECK(m.template is<cyc::Busy1>());
     CHECK(r.transitions == 2);  // C1, then C2 which sees C1's variable at once
 }
 
-TEST_CASE("a variable written by a component is visible at once to the components after it") {
-    bsc::machine m{cyc::chart, cyc::plant{}};
+TEST_CASE_TEMPLATE("a variable written by a component is visible at once to the components after it", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::chart)> m{cyc::chart, cyc::plant{}};
     m.context().start.set(true);
     m.step(0ms);
-    CHECK(m.is<cyc::Busy2>());
+    CHECK(m.template is<cyc::Busy2>());
     CHECK(m.context().seen_var == 1);
 }
 
-TEST_CASE("outputs are double-buffered: published at the end of the cycle") {
-    bsc::machine m{cyc::chart, cyc::plant{}};
+TEST_CASE_TEMPLATE("outputs are double-buffered: published at the end of the cycle", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::chart)> m{cyc::chart, cyc::plant{}};
     m.context().start.set(true);
     m.step(0ms);
     CHECK(m.context().seen_lamp == 0);  // C2 read the published value during the cycle
     CHECK(m.context().lamp.get() == 7);  // published after it
 }
 
-TEST_CASE("each component fires at most one transition per cycle, in declaration order") {
-    bsc::machine m{cyc::chart, cyc::plant{}};
+TEST_CASE_TEMPLATE("each component fires at most one transition per cycle, in declaration order", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::chart)> m{cyc::chart, cyc::plant{}};
     m.context().start.set(true);
     m.step(0ms);
     m.context().start.set(false);
     auto const r = m.step(1ms);  // C1 goes back to Idle1; C2 and C3 see no change of var
     CHECK(r.transitions == 1);
-    CHECK(m.is<cyc::Idle1>());
-    CHECK(m.is<cyc::Busy2>());
+    CHECK(m.template is<cyc::Idle1>());
+    CHECK(m.template is<cyc::Busy2>());
 }
 
-TEST_CASE("dispatch settles eventless transitions at once, whatever the cycle rules") {
-    bsc::machine m{cyc::chart, cyc::plant{}};
+TEST_CASE_TEMPLATE("dispatch settles eventless transitions at once, whatever the cycle rules", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::chart)> m{cyc::chart, cyc::plant{}};
     m.context().start.set(true);
     m.step(0ms);
     m.dispatch(cyc::kick{});  // var = 2: C3's eventless transition follows within the dispatch
-    CHECK(m.is<cyc::Busy3>());
+    CHECK(m.template is<cyc::Busy3>());
 }
 
 namespace cyc {
@@ -114,48 +131,48 @@ inline constexpr auto chain = bsc::make_chart<chain_data>(
     bsc::state<C> + bsc::after(100ms) = bsc::state<D>, bsc::state<D> + bsc::event<kick> = bsc::state<A>);
 }  // namespace cyc
 
-TEST_CASE("a state-scoped timeout fires at the first cycle at or after its delay, armed on entry") {
-    bsc::machine m{cyc::chain, cyc::chain_data{}};
+TEST_CASE_TEMPLATE("a state-scoped timeout fires at the first cycle at or after its delay, armed on entry", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::chain)> m{cyc::chain, cyc::chain_data{}};
     m.step(0ms);
     m.step(50ms);
     m.dispatch(cyc::kick{});  // enters B at the machine's time, 50 ms
-    CHECK(m.is<cyc::B>());
+    CHECK(m.template is<cyc::B>());
     m.step(100ms);
-    CHECK(m.is<cyc::B>());   // 50 ms in B
+    CHECK(m.template is<cyc::B>());   // 50 ms in B
     m.step(149ms);
-    CHECK(m.is<cyc::B>());
+    CHECK(m.template is<cyc::B>());
     m.step(150ms);           // 100 ms in B
-    CHECK(m.is<cyc::C>());   // entered at 150 ms
+    CHECK(m.template is<cyc::C>());   // entered at 150 ms
     m.step(200ms);
-    CHECK(m.is<cyc::C>());
+    CHECK(m.template is<cyc::C>());
     m.step(250ms);
-    CHECK(m.is<cyc::D>());
+    CHECK(m.template is<cyc::D>());
 }
 
-TEST_CASE("a jump of many periods takes one transition per component, not the missed cycles") {
-    bsc::machine m{cyc::chain, cyc::chain_data{}};
+TEST_CASE_TEMPLATE("a jump of many periods takes one transition per component, not the missed cycles", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::chain)> m{cyc::chain, cyc::chain_data{}};
     m.dispatch(cyc::kick{});
     auto const r = m.step(10s);
     CHECK(r.transitions == 1);
-    CHECK(m.is<cyc::C>());  // C's timeout is armed at 10 s
+    CHECK(m.template is<cyc::C>());  // C's timeout is armed at 10 s
     m.step(10s);
-    CHECK(m.is<cyc::C>());
+    CHECK(m.template is<cyc::C>());
     m.step(10s + 100ms);
-    CHECK(m.is<cyc::D>());
+    CHECK(m.template is<cyc::D>());
 }
 
-TEST_CASE("time never runs backwards for the machine: an earlier time is reported and ignored") {
-    bsc::machine m{cyc::chain, cyc::chain_data{}};
+TEST_CASE_TEMPLATE("time never runs backwards for the machine: an earlier time is reported and ignored", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::chain)> m{cyc::chain, cyc::chain_data{}};
     m.step(1s);
     m.dispatch(cyc::kick{});  // B armed at 1 s
     auto const r = m.step(500ms);
     CHECK(r.clock_went_backwards);
     CHECK(m.now() == 1s);
-    CHECK(m.is<cyc::B>());
+    CHECK(m.template is<cyc::B>());
     CHECK_FALSE(m.step(1050ms).clock_went_backwards);
-    CHECK(m.is<cyc::B>());
+    CHECK(m.template is<cyc::B>());
     m.step(1100ms);
-    CHECK(m.is<cyc::C>());
+    CHECK(m.template is<cyc::C>());
 }
 
 namespace cyc {
@@ -178,11 +195,11 @@ inline constexpr auto drill = bsc::make_chart<drill_data>(
     } = bsc::state<Off>);
 }  // namespace cyc
 
-TEST_CASE("a BSC timer starts timing at the cycle after start() and expires at the first cycle at its limit") {
-    bsc::machine m{cyc::drill, cyc::drill_data{}};
+TEST_CASE_TEMPLATE("a BSC timer starts timing at the cycle after start() and expires at the first cycle at its limit", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::drill)> m{cyc::drill, cyc::drill_data{}};
     m.context().piece.set(true);
     m.step(0ms);  // cycle 0: start() requested
-    CHECK(m.is<cyc::On>());
+    CHECK(m.template is<cyc::On>());
     CHECK(m.context().motor.get());
     CHECK_FALSE(m.context().t1.running());
     m.context().piece.set(false);
@@ -191,16 +208,16 @@ TEST_CASE("a BSC timer starts timing at the cycle after start() and expires at t
     m.step(200ms);
     m.step(300ms);
     CHECK_FALSE(m.context().t1.tm());
-    CHECK(m.is<cyc::On>());
+    CHECK(m.template is<cyc::On>());
     m.step(399ms);
-    CHECK(m.is<cyc::On>());
+    CHECK(m.template is<cyc::On>());
     m.step(400ms);  // 300 ms after timing began: tm, and the guard sees it in this cycle
-    CHECK(m.is<cyc::Off>());
+    CHECK(m.template is<cyc::Off>());
     CHECK_FALSE(m.context().motor.get());
     CHECK_FALSE(m.context().t1.tm());  // reset by the action
 }
 
-TEST_CASE("dispatch latches inputs at its start and commits outputs at its end") {
+TEST_CASE_TEMPLATE("dispatch latches inputs at its start and commits outputs at its end", Backend, compiled, table) {
     struct go {};
     struct io {
         bsc::input<int> in;
@@ -216,7 +233,7 @@ TEST_CASE("dispatch latches inputs at its start and commits outputs at its end")
             x.out.set(x.in.get() * 2);
         },
         bsc::state<S> + bsc::event<cyc::kick> = bsc::state<T>, bsc::state<T> + bsc::event<cyc::kick> = bsc::state<S>);
-    bsc::machine m{chart, io{}};
+    machine_t<Backend, decltype(chart)> m{chart, io{}};
     m.context().in.set(21);
     m.dispatch(go{});
     CHECK(m.context().seen == 21);
@@ -234,7 +251,7 @@ TEST_CASE("an inout channel is read as latched and written for the next cycle") 
     CHECK(ch.get() == 6);
 }
 
-TEST_CASE("components entered during a cycle first run in the next cycle") {
+TEST_CASE_TEMPLATE("components entered during a cycle first run in the next cycle", Backend, compiled, table) {
     struct data {
         bool in = false;
     };
@@ -252,16 +269,16 @@ TEST_CASE("components entered during a cycle first run in the next cycle") {
         bsc::state<X>[([](data const& d) { return d.in; })] = bsc::state<Q>,
         bsc::state<Y>[([](data const& d) { return d.in; })] = bsc::state<W>,
         bsc::state<Q> + bsc::event<cyc::kick> = bsc::state<X>, bsc::state<W> + bsc::event<cyc::kick> = bsc::state<Y>);
-    bsc::machine m{chart, data{}};
+    machine_t<Backend, decltype(chart)> m{chart, data{}};
     m.context().in = true;
     auto const r = m.step(0ms);
     CHECK(r.transitions == 1);
-    CHECK(m.is<Y>());
+    CHECK(m.template is<Y>());
     m.step(1ms);
-    CHECK(m.is<W>());
+    CHECK(m.template is<W>());
 }
 
-TEST_CASE("events raised in a cycle are processed at its end, before the outputs are committed") {
+TEST_CASE_TEMPLATE("events raised in a cycle are processed at its end, before the outputs are committed", Backend, compiled, table) {
     struct ping {};
     struct io {
         bsc::output<int> out;
@@ -274,10 +291,10 @@ TEST_CASE("events raised in a cycle are processed at its end, before the outputs
         bsc::state<S> / bsc::raise(ping{}) = bsc::state<T>,
         bsc::state<T> + bsc::event<ping> / [](io& x) { x.out.set(x.got = 9); },
         bsc::state<T> + bsc::event<cyc::kick> = bsc::state<S>);
-    bsc::machine m{chart, io{}};  // construction settles S -> T and processes ping
+    machine_t<Backend, decltype(chart)> m{chart, io{}};  // construction settles S -> T and processes ping
     CHECK(m.context().out.get() == 9);
     m.dispatch(cyc::kick{});  // back to S, and the eventless S -> T follows at once
-    CHECK(m.is<T>());
+    CHECK(m.template is<T>());
 }
 
 namespace cyc {
@@ -308,8 +325,8 @@ inline constexpr auto ping_pong = bsc::make_chart<flags>(
     bsc::state<Both> + bsc::event<kick> / [](flags& c) { c.sets = 0; });
 }  // namespace cyc
 
-TEST_CASE("with bsc::scan_policy, eventless transitions run only in step, one per component per cycle") {
-    bsc::machine<decltype(cyc::ping_pong), bsc::scan_policy> m{cyc::ping_pong, cyc::flags{}};
+TEST_CASE_TEMPLATE("with bsc::scan_policy, eventless transitions run only in step, one per component per cycle", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::ping_pong), bsc::scan_policy> m{cyc::ping_pong, cyc::flags{}};
     CHECK(m.last_outcome() == bsc::outcome::ignored);  // construction settles nothing
     CHECK(m.active_states().joined() == "Both CA A1 CB B1");
     CHECK(m.dispatch(cyc::kick{}) == bsc::outcome::consumed);  // nor does dispatch
@@ -320,6 +337,120 @@ TEST_CASE("with bsc::scan_policy, eventless transitions run only in step, one pe
     CHECK(m.context().sets == 1);
 
     // The same chart under the default (SCXML) policy settles at construction, and here never can.
-    bsc::machine settling{cyc::ping_pong, cyc::flags{}};
+    machine_t<Backend, decltype(cyc::ping_pong)> settling{cyc::ping_pong, cyc::flags{}};
     CHECK(settling.last_outcome() == bsc::outcome::livelock);
+}
+
+namespace cyc {
+struct S;
+struct T;
+struct U;
+struct F;
+struct ping {};
+struct io {
+    bsc::output<int> out;
+    int got = 0;
+    bool done = false;
+};
+// S -> T in a cycle raises ping; T's eventless transition to U is enabled once ping is handled.
+inline constexpr auto raiser = bsc::make_chart<io>(
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<T>, bsc::state<U>, bsc::final_state<F>),
+    bsc::state<S>[([](io const&) { return true; })] / bsc::raise(ping{}) = bsc::state<T>,
+    bsc::state<T> + bsc::event<ping> / [](io& x) { x.out.set(x.got = 9); },
+    bsc::state<T>[([](io const& x) { return x.got == 9; })] = bsc::state<U>,
+    bsc::state<U>[([](io const& x) { return x.done; })] = bsc::state<F>,
+    bsc::state<U> + bsc::event<kick> = bsc::state<S>);
+}  // namespace cyc
+
+TEST_CASE_TEMPLATE("a cycle processes its raised events without settling, then commits the outputs", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::raiser), bsc::scan_policy> m{cyc::raiser, cyc::io{}};
+    CHECK(m.template is<cyc::S>());
+    auto const r = m.step(0ms);
+    CHECK(r.status == bsc::outcome::consumed);
+    CHECK(r.transitions == 1);
+    CHECK(m.context().out.get() == 9);  // ping handled in the cycle, the output published after it
+    CHECK(m.template is<cyc::T>());              // T -> U waits for the next cycle
+    CHECK(m.step(1ms).transitions == 1);
+    CHECK(m.template is<cyc::U>());
+    CHECK(m.step(2ms).status == bsc::outcome::ignored);
+}
+
+TEST_CASE_TEMPLATE("a halted machine's cycle runs nothing, leaves the clock and reports halted", Backend, compiled, table) {
+    machine_t<Backend, decltype(cyc::raiser), bsc::scan_policy> m{cyc::raiser, cyc::io{}};
+    m.step(0ms);
+    m.step(1ms);
+    m.context().done = true;
+    CHECK(m.step(2ms).transitions == 1);
+    CHECK(m.halted());
+    auto const r = m.step(5ms);
+    CHECK(r.status == bsc::outcome::halted);
+    CHECK(r.transitions == 0);
+    CHECK(m.now() == 2ms);
+    CHECK(m.last_outcome() == bsc::outcome::halted);
+}
+
+namespace cyc {
+struct Q;
+struct Q1;
+struct Q2;
+struct Z;
+struct order_data {
+    bool ready = false;
+    int timeouts = 0;
+};
+// Q1 has a timeout declared between two eventless transitions; Q, its parent, a longer one.
+inline constexpr auto competing = bsc::make_chart<order_data>(
+    bsc::composite<Root>(bsc::initial<Q>, bsc::composite<Q>(bsc::initial<Q1>, bsc::state<Q2>), bsc::state<Z>),
+    bsc::state<Q1>[([](order_data const& d) { return d.ready && d.timeouts > 0; })] = bsc::state<Z>,
+    bsc::state<Q1> + bsc::after(100ms) / [](order_data& d) { ++d.timeouts; },  // internal: never re-armed
+    bsc::state<Q1>[([](order_data const& d) { return d.ready; })] = bsc::state<Q2>,
+    bsc::state<Q> + bsc::after(150ms) = bsc::state<Z>,
+    bsc::state<Z> + bsc::event<kick> = bsc::state<Q>);
+
+struct row_log {  // the rows of the transitions fired, and how many received bsc::eventless
+    std::array<int, 16> rows{};
+    std::size_t calls = 0;
+    int eventless = 0;
+    void on_row(int row) { rows[calls++ % rows.size()] = row; }
+    template <class Src, class Dst, class E>
+    void on_transition(Src, Dst, E const&) {
+        eventless += std::is_same_v<E, bsc::eventless>;
+    }
+};
+}  // namespace cyc
+
+TEST_CASE_TEMPLATE("a timeout competes with its state's eventless transitions in declaration order, deepest state first", Backend, compiled, table) {
+    using cyc::Q1, cyc::Q2, cyc::Z;
+    machine_t<Backend, decltype(cyc::competing), bsc::default_policy, cyc::row_log> m{cyc::competing, cyc::order_data{},
+                                                                                      cyc::row_log{}};
+    auto& d = m.context();
+    m.step(0ms);
+    CHECK(m.step(99ms).status == bsc::outcome::ignored);
+    CHECK(m.step(100ms).transitions == 1);  // Q1's timeout, internal: Q1 stays, still armed at 0
+    CHECK(m.step(110ms).transitions == 1);  // so it fires again
+    m.step(150ms);                          // Q's timeout is due too: the deeper state's wins
+    CHECK(d.timeouts == 3);
+    CHECK(m.template is<Q1>());
+    d.timeouts = 0;
+    d.ready = true;
+    m.step(160ms);  // the timeout is declared before Q1 [ready]: it wins
+    CHECK(d.timeouts == 1);
+    CHECK(m.template is<Q1>());
+    m.step(170ms);  // Q1 [ready && timeouts > 0], declared before the timeout
+    CHECK(m.template is<Z>());
+    d.ready = false;
+    m.dispatch(cyc::kick{});  // Q and Q1 armed at 170 ms
+    d.ready = true;
+    d.timeouts = 0;
+    m.step(180ms);  // the timeout is not due: Q1 [ready]
+    CHECK(m.template is<Q2>());
+    m.step(319ms);
+    CHECK(m.template is<Q2>());
+    m.step(320ms);  // Q's timeout, 150 ms after Q was entered
+    CHECK(m.template is<Z>());
+    auto const& log = m.observer();
+    REQUIRE(log.calls == 8);
+    CHECK(log.eventless == 7);  // all but Z + kick: timeouts receive bsc::eventless too
+    int const expected[] = {1, 1, 1, 1, 0, 4, 2, 3};  // rows in make_chart's order
+    for (std::size_t i = 0; i < 8; ++i) CHECK(log.rows[i] == expected[i]);
 }

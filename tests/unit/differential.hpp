@@ -1,17 +1,20 @@
 #pragma once
 // Drives the compiled back end (bsc::machine) and the table-driven one (bsc::table::machine)
-// side by side with the same events and compares them after every step: the outcome, the
+// side by side with the same events and execution cycles (step(now) with the same times) and
+// compares them after every step: the outcome (and a cycle's step_report), the clock, the
 // active configuration's bytes, active_states(), is<S>() for every state, halted(), the
 // queue, the context and the observer's full trace. Used by differential_test.cpp and by the
 // fuzz target tests/fuzz/differential_fuzz.cpp. A fixture (see fixtures.hpp) provides chart,
 // policy, initial() and perturb(context&, r), and same(a, b) if its context has no ==.
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <bsc/bsc.hpp>
@@ -22,8 +25,8 @@ namespace bsc_diff {
 /// An event type no chart handles: dispatched with bsc::allow_unhandled.
 struct stray {};
 
-/// One observer call: an entry (+), an exit (-) or a transition (>) with the type of the event
-/// it received and the event's data (if it has an `n`).
+/// One observer call: an entry (+), an exit (-), a transition (>) with the type of the event
+/// it received and the event's data (if it has an `n`), or a transition's row (#, in `data`).
 struct record {
     char what = '+';
     std::string_view state;   // the state entered or left, or the transition's source
@@ -46,15 +49,18 @@ struct recorder {
             data = e.n;
         log->push_back({'>', source.name, target.name, bsc::name_of<E>, data});
     }
+    void on_row(int row) const { log->push_back({'#', {}, {}, {}, row}); }
 };
 
-/// A trace as text: "-A1 A1>A2(go) +A2".
+/// A trace as text: "-A1 A1>A2(go:0) #3 +A2".
 inline std::string text(std::vector<record> const& trace) {
     std::string out;
     for (auto const& r : trace) {
         if (!out.empty())
             out += ' ';
-        if (r.what == '>') {
+        if (r.what == '#') {
+            out += '#' + std::to_string(r.data);
+        } else if (r.what == '>') {
             out.append(r.state).append(">").append(r.target).append("(").append(r.event);
             out.append(":").append(std::to_string(r.data)).append(")");
         } else {
@@ -76,12 +82,32 @@ inline char const* name(bsc::outcome o) {
     return "?";
 }
 
-/// How often each outcome was seen, and how many restarts after a halt.
+/// How often each outcome was seen, how many cycles ran (with how many component transitions,
+/// and how many with an earlier time), and how many restarts after a halt.
 struct tally {
     std::size_t steps = 0;
     std::size_t outcomes[5] = {};
     std::size_t restarts = 0;
+    std::size_t cycles = 0;
+    std::size_t cycle_transitions = 0;
+    std::size_t backwards = 0;
 };
+
+/// The time a cycle is run at, from the last cycle's `now` and a random byte (`arg`'s low
+/// eight bits): the same time again (about 1 in 6), a step of 1 to 40 ms (most), a jump of
+/// 0.25 to 4.75 s (1 in 13), or (1 in 256) a time before the last one, which the machines must
+/// report and ignore. Returns the time and whether it goes backwards.
+inline std::pair<bsc::duration, bool> next_time(bsc::duration now, std::uint32_t arg) {
+    using std::chrono::milliseconds;
+    std::uint32_t const k = arg & 0xffu;
+    if (k == 0xffu)
+        return {now - milliseconds{1 + (arg >> 8) % 50}, true};
+    if (k < 40)
+        return {now, false};
+    if (k < 236)
+        return {now + milliseconds{1 + (k - 40) % 40}, false};
+    return {now + milliseconds{250} * (k - 235), false};
+}
 
 template <class Fixture>
 class twin {
@@ -94,12 +120,16 @@ public:
     using tags = typename bsc::detail::analysis<chart_type>::tags;
 
     static_assert(std::is_same_v<typename compiled_type::configuration_type, typename table_type::configuration_type>);
-    static_assert(std::is_same_v<typename compiled_type::queue_type, typename table_type::queue_type>);
+    // The compiled machine drops the queue of a chart none of whose actions can raise.
+    static_assert(std::is_same_v<typename compiled_type::queue_type, typename table_type::queue_type> ||
+                  compiled_type::queue_type::capacity() == 0);
     static_assert(std::is_same_v<events, typename table_type::event_types>);
 
     /// Number of choices step() maps a random number onto: the chart's events, an unhandled
-    /// event, and a write to the context by the environment.
-    static constexpr std::uint32_t choices = static_cast<std::uint32_t>(events::size) + 2;
+    /// event, a write to the context by the environment, and as many (at least two) execution
+    /// cycles as events, so that about half the steps are cycles.
+    static constexpr std::uint32_t cycle_choices = events::size > 2 ? static_cast<std::uint32_t>(events::size) : 2;
+    static constexpr std::uint32_t choices = static_cast<std::uint32_t>(events::size) + 2 + cycle_choices;
 
     twin() = default;
     twin(twin const&) = delete;
@@ -111,6 +141,7 @@ public:
         table_trace_.clear();
         compiled_.emplace(Fixture::chart, Fixture::initial(), recorder{&compiled_trace_});
         table_.emplace(Fixture::chart, Fixture::initial(), recorder{&table_trace_});
+        now_ = {};
         return compare("construction", compiled_->last_outcome(), table_->last_outcome());
     }
 
@@ -131,9 +162,31 @@ public:
             auto const b = table_->dispatch(stray{}, bsc::allow_unhandled);
             return compare("stray", a, b);
         }
-        Fixture::perturb(compiled_->context(), arg);
-        Fixture::perturb(table_->context(), arg);
-        return compare("environment write", compiled_->last_outcome(), table_->last_outcome());
+        if (choice == events::size + 1) {
+            Fixture::perturb(compiled_->context(), arg);
+            Fixture::perturb(table_->context(), arg);
+            return compare("environment write", compiled_->last_outcome(), table_->last_outcome());
+        }
+        return cycle(arg);
+    }
+
+    /// One execution cycle of both machines at the time next_time(now, arg) gives.
+    std::string cycle(std::uint32_t arg) {
+        auto const [t, backwards] = next_time(now_, arg);
+        if (!backwards)
+            now_ = t;
+        ++tally_.cycles;
+        tally_.backwards += backwards;
+        bsc::step_report const a = compiled_->step(t);
+        bsc::step_report const b = table_->step(t);
+        tally_.cycle_transitions += static_cast<std::size_t>(a.transitions);
+        std::string report;
+        if (a.transitions != b.transitions)
+            report += " transitions (" + std::to_string(a.transitions) + " against " + std::to_string(b.transitions) + ")";
+        if (a.clock_went_backwards != b.clock_went_backwards)
+            report += " clock_went_backwards";
+        return compare("step(" + std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(t).count()) + "ms)",
+                       a.status, b.status, report);
     }
 
     compiled_type const& compiled() const { return *compiled_; }
@@ -189,14 +242,16 @@ private:
         return out;
     }
 
-    std::string compare(std::string_view what, bsc::outcome a, bsc::outcome b) {
+    // `differences` lists what the caller found different already ("" if nothing).
+    std::string compare(std::string_view what, bsc::outcome a, bsc::outcome b, std::string const& differences = {}) {
         ++tally_.outcomes[static_cast<std::size_t>(a)];
         auto const states_c = compiled_->active_states();
         auto const states_t = table_->active_states();
         bool same_states = states_c.size() == states_t.size();
         for (std::size_t i = 0; same_states && i < states_c.size(); ++i) same_states = states_c[i] == states_t[i];
         bool const same_is = same_is_for(tags{});
-        bool const same = a == b && compiled_->last_outcome() == table_->last_outcome() &&
+        bool const same = differences.empty() && a == b && compiled_->last_outcome() == table_->last_outcome() &&
+                          compiled_->now() == table_->now() &&
                           compiled_->active_configuration() == table_->active_configuration() && same_states &&
                           compiled_->halted() == table_->halted() &&
                           compiled_->queue().size() == table_->queue().size() &&
@@ -204,9 +259,11 @@ private:
                           same_is;
         std::string report;
         if (!same) {
-            std::string diff;
+            std::string diff = differences;
             if (a != b)
                 diff += " outcome";
+            if (compiled_->now() != table_->now())
+                diff += " now";
             if (compiled_->last_outcome() != table_->last_outcome())
                 diff += " last_outcome";
             if (!(compiled_->active_configuration() == table_->active_configuration()))
@@ -235,6 +292,7 @@ private:
     std::vector<record> table_trace_;
     std::optional<compiled_type> compiled_;
     std::optional<table_type> table_;
+    bsc::duration now_{};  // the time of the last cycle run forwards
     tally tally_;
 };
 

@@ -4,10 +4,11 @@
 //   chart                    the chart
 //   policy                   the limits it runs under
 //   initial()                the context it starts from
-//   perturb(context&, r)     a write by the environment between two dispatches
+//   perturb(context&, r)     a write by the environment between two dispatches or cycles
 // Their contexts keep a hash of every action, entry and exit in the order they ran, so a
 // difference of order shows in the context as well as in the observer's trace.
 
+#include <chrono>
 #include <cstdint>
 
 #include <bsc/bsc.hpp>
@@ -357,5 +358,146 @@ struct halting {
     static ctx initial() { return {}; }
     static void perturb(ctx& c, std::uint32_t r) { perturb_ab(c, r); }
 };
+
+// ---- BSC execution cycles: components, timeouts, channels and a timer ------------------------------
+namespace cyc {
+struct Root;
+struct P;
+struct R1;
+struct X1;
+struct X2;
+struct X3;
+struct R2;
+struct Y1;
+struct Y2;
+struct Y3;
+struct Z;
+struct Z1;
+struct Z2;
+struct W;
+struct R3;
+struct V1;
+struct V2;
+struct Out;
+struct O1;
+struct O2;
+struct End;
+}  // namespace cyc
+
+/// Two channels hold the same values: the one read in this cycle and the one written for the next.
+template <class Channel>
+constexpr bool same_channel(Channel const& a, Channel const& b) {
+    return a.get() == b.get() && a.pending() == b.pending();
+}
+
+/// A context with a variable of each kind the cycle treats differently: an input, an output
+/// and an inout channel, a BSC timer, and plain variables.
+struct cycle_ctx {
+    bsc::input<int> in;
+    bsc::output<int> out;
+    bsc::inout<int> io;
+    bsc::timer t{std::chrono::milliseconds{30}};
+    int a = 0;
+    int b = 0;
+    std::uint32_t log = 0;
+    // Channels have no == of their own: compared by the value read and the value written.
+    friend constexpr bool operator==(cycle_ctx const& x, cycle_ctx const& y) {
+        return same_channel(x.in, y.in) && same_channel(x.out, y.out) && same_channel(x.io, y.io) && x.t == y.t &&
+               x.a == y.a && x.b == y.b && x.log == y.log;
+    }
+};
+
+template <int Id>
+inline constexpr auto cnote = bsc::action([](cycle_ctx& c) { c.log = mix(c.log, Id); });
+
+/// A parallel state of three components, one holding a parallel state of its own (so that a
+/// cycle may enter components, which wait for the next), next to a composite; eventless
+/// transitions reading what earlier components wrote in the same cycle, the latched input and
+/// the inout channel; timeouts on basic, composite and parallel states, internal ones (never
+/// re-armed), guarded ones and ones competing with eventless transitions; raised events; a
+/// final state. Under bsc::default_policy and under a scan policy.
+template <class Policy>
+struct cycling {
+    using policy = Policy;
+    static constexpr auto chart = [] {
+        using namespace cyc;
+        using namespace std::chrono_literals;
+        using bsc::state, bsc::event, bsc::after, bsc::on_entry, bsc::on_exit;
+        auto const in_over_2 = bsc::guard([](cycle_ctx const& c) { return c.in.get() > 2; });
+        auto const in_is_7 = bsc::guard([](cycle_ctx const& c) { return c.in.get() == 7; });
+        auto const io_over_3 = bsc::guard([](cycle_ctx const& c) { return c.io.get() > 3; });
+        auto const expired = bsc::guard([](cycle_ctx const& c) { return c.t.tm(); });
+        auto const a_over_2 = bsc::guard([](cycle_ctx const& c) { return c.a > 2; });
+        auto const a_even_c = bsc::guard([](cycle_ctx const& c) { return c.a % 2 == 0; });
+        auto const b_odd = bsc::guard([](cycle_ctx const& c) { return c.b % 2 == 1; });
+        auto const a_is_7 = bsc::guard([](cycle_ctx const& c) { return c.a == 7; });
+        auto const inc_a_c = bsc::action([](cycle_ctx& c) { c.a = (c.a + 1) % 8; });
+        auto const inc_b_c = bsc::action([](cycle_ctx& c) { c.b = (c.b + 1) % 8; });
+        return bsc::make_chart<cycle_ctx>(
+            bsc::composite<Root>(
+                bsc::initial<P>,
+                bsc::parallel<P>(
+                    bsc::composite<R1>(bsc::initial<X1>, state<X2>, state<X3>),
+                    bsc::composite<R2>(bsc::shallow_history, bsc::initial<Y1>, state<Y2>,
+                                       bsc::parallel<Y3>(bsc::composite<Z>(bsc::initial<Z1>, state<Z2>), state<W>)),
+                    bsc::composite<R3>(bsc::initial<V1>, state<V2>)),
+                bsc::composite<Out>(bsc::initial<O1>, state<O2>), bsc::final_state<End>),
+            // R1: the input, a timer started by an action, a timeout competing with an eventless one.
+            state<X1>[in_over_2] / [](cycle_ctx& c) {
+                c.out.set(c.in.get());
+                c.a = (c.a + 1) % 8;
+            } = state<X2>,
+            state<X2> + after(20ms) / [](cycle_ctx& c) { c.t.start(); } = state<X3>,
+            state<X3>[expired] / ([](cycle_ctx& c) { c.t.reset(); }, cnote<1>) = state<X1>,
+            state<X3> + after(45ms) / cnote<2> = state<X1>,
+            state<R1> + after(300ms)[a_even_c] / inc_b_c,  // internal, on a component's root
+            // R2: reads the variable R1 wrote in this cycle; a parallel state entered by a timeout.
+            state<Y1>[a_over_2] / inc_b_c = state<Y2>,
+            state<Y2> + after(10ms) = state<Y3>,
+            state<Y2> + event<go> = state<Y1>,
+            state<Z1>[b_odd] / [](cycle_ctx& c) { c.io.set(c.b); } = state<Z2>,
+            state<Z2> + after(40ms)[a_even_c] / bsc::raise(ping{}) = state<Z1>,
+            state<W> + after(25ms) / inc_a_c,  // internal, on a region that is a basic state
+            state<Y3> + after(60ms) / cnote<3> = state<Y1>,
+            state<Z> + event<back> = state<Z2>,
+            // R3: the inout channel as latched; raises an event handled at the end of the cycle.
+            state<V1>[io_over_3] = state<V2>,
+            state<V2> + after(15ms) / bsc::raise(tick{}) = state<V1>,
+            // The parallel state as a whole: an event, an eventless and a timeout transition.
+            state<P> + event<tick>[a_over_2] / cnote<4> = state<Out>,
+            state<P>[in_is_7] = state<Out>,
+            state<P> + after(500ms) = state<Out>,
+            state<P> + event<go> / inc_a_c,
+            // Out: re-enters P, or goes to a state inside it.
+            state<O1> + after(30ms) = state<O2>,
+            state<O2>[b_odd] / inc_b_c = state<P>,
+            state<O2> + event<go> = state<Y3>,
+            state<Out> + event<ping> / cnote<5>,
+            state<Out> + after(200ms) = state<R2>,
+            state<Root> + event<e1>[a_is_7] = state<End>,
+            state<P> + on_entry / cnote<10>, state<P> + on_exit / cnote<11>, state<R2> + on_exit / cnote<12>,
+            state<Y3> + on_entry / cnote<13>, state<Z2> + on_exit / cnote<14>, state<W> + on_entry / cnote<15>,
+            state<Out> + on_entry / cnote<16>, state<O2> + on_exit / cnote<17>,
+            state<X2> + on_entry / [](cycle_ctx& c) { c.out.set(c.out.pending() + 1); });
+    }();
+    static cycle_ctx initial() { return {}; }
+    static void perturb(cycle_ctx& c, std::uint32_t r) {
+        switch (r % 4) {
+            case 0:
+            case 1: c.in.set(static_cast<int>((r >> 2) % 9)); break;
+            case 2: c.a = static_cast<int>((r >> 2) % 8); break;
+            default: c.b = static_cast<int>((r >> 2) % 8); break;
+        }
+    }
+};
+
+/// A scan policy with low limits.
+struct scan_limits : bsc::scan_policy {
+    static constexpr std::size_t queue_capacity = 3;
+    static constexpr std::size_t max_internal_events = 12;
+};
+
+using cycles = cycling<bsc::default_policy>;
+using scan_cycles = cycling<scan_limits>;
 
 }  // namespace fx

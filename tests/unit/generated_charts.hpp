@@ -2,16 +2,20 @@
 // Random charts built at compile time: gen::chart<Seed> is a bsc chart whose state tree and
 // rows are computed by constexpr functions from Seed. States are the types gen::S<Seed, I>,
 // events gen::ev<Seed, K>; guards and actions are small function objects whose behaviour is
-// also drawn from the seed. The generator only produces charts that pass bsc's static checks:
+// also drawn from the seed. Rows are triggered by events, by nothing (eventless) or by a
+// timeout; guards and actions use variables, an input and an output channel and a BSC timer.
+// The generator only produces charts that pass bsc's static checks:
 //   - a transition never joins two regions of a parallel state (targets are redrawn);
 //   - no two unguarded transitions share a source and a trigger, and no guarded one follows an
 //     unguarded one (later rows are dropped);
 //   - every eventless transition is guarded (no eventless livelock can be built);
 //   - every state is reachable (an unreachable one gets a transition from a reachable state);
 //   - every basic state has a way out (one is added where missing).
-// gen::generated<Seed> wraps a chart as a fixture for differential.hpp.
+// gen::generated<Seed> wraps a chart as a fixture for differential.hpp, gen::generated_scan<Seed>
+// the same chart under a scan policy.
 
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -37,11 +41,15 @@ struct node {
 struct row {
     row_kind kind = row_kind::transition;
     int from = 0;
-    int event = -1;  // -1: eventless
+    int event = -1;  // -1: eventless, -2: a timeout
     int to = -1;     // -1: internal
     bool guarded = false;
     bool acts = false;  // has an action
+    int delay = 0;      // a timeout's delay, in milliseconds
 };
+
+inline constexpr int eventless = -1;
+inline constexpr int timeout = -2;
 
 struct spec {
     int n = 0;
@@ -84,8 +92,11 @@ struct spec {
                 return a;
         return -1;
     }
-    // Adding a row on (from, event) with this guardedness keeps the chart deterministic.
+    // Adding a row on (from, event) with this guardedness keeps the chart deterministic. Each
+    // timeout is a trigger of its own.
     constexpr bool may_add(int from, int event, bool guarded) const {
+        if (event == timeout)
+            return true;
         for (int i = 0; i < r; ++i) {
             auto const& x = rows[static_cast<std::size_t>(i)];
             if (x.kind == row_kind::transition && x.from == from && x.event == event && !x.guarded)
@@ -252,11 +263,15 @@ constexpr spec make_spec(std::uint64_t seed) {
     for (int i = 0; i < wanted && s.r < max_rows - 3 * max_states + 4; ++i) {
         row x{};
         x.from = pick_source();
-        x.event = g.chance(7) ? -1 : g.below(s.events);
-        x.guarded = x.event < 0 || g.chance(50);
+        int const trigger = g.below(100);
+        x.event = trigger < 8 ? eventless : trigger < 22 ? timeout : g.below(s.events);
+        x.guarded = x.event == eventless || g.chance(50);
         // An eventless internal transition would fire again at once: eventless ones have targets.
-        x.to = x.event >= 0 && g.chance(12) ? -1 : pick_target(x.from);
-        x.acts = x.event < 0 || g.chance(65);
+        // An internal timeout is never re-armed: it fires in every cycle once due.
+        x.to = x.event != eventless && g.chance(12) ? -1 : pick_target(x.from);
+        x.acts = x.event == eventless || g.chance(65);
+        if (x.event == timeout)
+            x.delay = 5 * (1 + g.below(12));
         if (s.may_add(x.from, x.event, x.guarded))
             s.add(x);
     }
@@ -294,8 +309,9 @@ constexpr spec make_spec(std::uint64_t seed) {
     for (int x = 0; x < s.n; ++x) {
         if (s.kind(x) != node_kind::basic || s.can_leave(x))
             continue;
-        int event = -1;
-        for (int e = 0; e < s.events; ++e)
+        // A timeout (one time in three), else an event, else an eventless transition.
+        int event = g.chance(33) ? timeout : eventless;
+        for (int e = 0; e < s.events && event != timeout; ++e)
             if (s.may_add(x, e, false))
                 event = e;
         int to = -1;
@@ -307,7 +323,8 @@ constexpr spec make_spec(std::uint64_t seed) {
         if (to < 0)
             s.nodes[static_cast<std::size_t>(x)].kind = node_kind::final_state;
         else
-            s.add(row{row_kind::transition, x, event, to, event < 0 || g.chance(40), event < 0 || g.chance(50)});
+            s.add(row{row_kind::transition, x, event, to, event == eventless || g.chance(40),
+                      event == eventless || g.chance(50), event == timeout ? 5 * (1 + g.below(12)) : 0});
     }
     // Entry and exit actions.
     for (int x = 0; x < s.n && s.r < max_rows - 1; ++x) {
@@ -332,12 +349,19 @@ struct behaviour {
     int raise = -1;
 };
 // Variables: v[0] and v[1] are written by entry and exit actions and by transitions on
-// events; v[2] only by eventless transitions, which read it alone, and each of which makes its
-// own guard false, so that an eventless run settles unless several of them cycle.
+// events or timeouts; v[2] only by eventless transitions, which read it alone, and each of
+// which makes its own guard false, so that an eventless run settles unless several of them
+// cycle. Variable 3 is the channels (a guard reads the latched input, an action writes the
+// output), variable 4 the timer (a guard reads tm(), an action starts or resets it).
+inline constexpr int channel_var = 3;
+inline constexpr int timer_var = 4;
 constexpr behaviour behaviour_of(std::uint64_t seed, row const& x, int index, int events) {
     rng g{seed * 1000003ull + static_cast<std::uint64_t>(index) * 7919ull + 5};
     behaviour b{};
-    b.var = x.kind == row_kind::transition && x.event < 0 ? 2 : g.below(x.kind == row_kind::transition ? 3 : 2);
+    if (x.kind == row_kind::transition)
+        b.var = x.event == eventless ? 2 : g.below(5);
+    else
+        b.var = g.below(4) < 2 ? g.below(2) : 3 + g.below(2);  // never v[2]
     b.mod = 2 + g.below(3);
     b.rem = g.below(b.mod);
     b.add = 1 + g.below(5);
@@ -352,12 +376,20 @@ constexpr behaviour behaviour_of(std::uint64_t seed, row const& x, int index, in
 
 // ---- the chart's types ---------------------------------------------------------------------------
 
-/// The context: three small variables the guards read and the actions write (see
-/// behaviour_of), and the log of every action, entry and exit, in order.
+/// The context: three small variables, an input and an output channel and a timer that the
+/// guards read and the actions write (see behaviour_of), and the log of every action, entry
+/// and exit, in order.
 struct gctx {
     std::array<int, 3> v{};
+    bsc::input<int> in;
+    bsc::output<int> out;
+    bsc::timer t{std::chrono::milliseconds{35}};
     std::uint32_t log = 0;
-    friend constexpr bool operator==(gctx const&, gctx const&) = default;
+    // Channels have no == of their own: compared by the value read and the value written.
+    friend constexpr bool operator==(gctx const& x, gctx const& y) {
+        return x.v == y.v && x.in.get() == y.in.get() && x.in.pending() == y.in.pending() &&
+               x.out.get() == y.out.get() && x.out.pending() == y.out.pending() && x.t == y.t && x.log == y.log;
+    }
 };
 
 template <std::uint64_t Seed, int I>
@@ -384,7 +416,14 @@ struct guard {
     template <class E>
     constexpr bool operator()(gctx const& c, E const& e) const {
         constexpr behaviour b = behaviour_at<Seed, Row>;
-        int const x = c.v[static_cast<std::size_t>(b.var)] + (b.use_event ? payload(e) : 0);
+        int read = 0;
+        if constexpr (b.var == channel_var)
+            read = c.in.get();
+        else if constexpr (b.var == timer_var)
+            read = c.t.tm() ? 1 : 0;
+        else
+            read = c.v[static_cast<std::size_t>(b.var)];
+        int const x = read + (b.use_event ? payload(e) : 0);
         return x % b.mod == b.rem;
     }
 };
@@ -392,11 +431,23 @@ struct guard {
 template <std::uint64_t Seed, int Row>
 constexpr void act_on(gctx& c, int data, auto& raise) {
     constexpr behaviour b = behaviour_at<Seed, Row>;
-    auto& v = c.v[static_cast<std::size_t>(b.var)];
     c.log = (c.log ^ static_cast<std::uint32_t>(Row)) * 16777619u + 1u;
-    v = (v + b.add + (b.use_event ? data : 0)) % 16;
+    int written = 0;
+    if constexpr (b.var == channel_var) {
+        written = (c.out.pending() + b.add + (b.use_event ? data : 0)) % 16;
+        c.out.set(written);
+    } else if constexpr (b.var == timer_var) {
+        if (b.add % 2 == 1)
+            c.t.start();
+        else
+            c.t.reset();
+        written = b.add;
+    } else {
+        auto& v = c.v[static_cast<std::size_t>(b.var)];
+        written = v = (v + b.add + (b.use_event ? data : 0)) % 16;
+    }
     if constexpr (b.raise >= 0)
-        raise(ev<Seed, b.raise>{v % 8});
+        raise(ev<Seed, b.raise>{written % 8});
 }
 
 template <std::uint64_t Seed, int Row>
@@ -455,7 +506,12 @@ constexpr auto make_row() {
         return bsc::state<from> + bsc::on_exit / state_action<Seed, J>{};
     } else {
         auto const triggered = [] {
-            if constexpr (row_at<Seed, J>.event < 0)
+            constexpr auto delay = std::chrono::milliseconds{row_at<Seed, J>.delay};
+            if constexpr (row_at<Seed, J>.event == timeout && row_at<Seed, J>.guarded)
+                return bsc::state<from> + bsc::after(delay)[guard<Seed, J>{}];
+            else if constexpr (row_at<Seed, J>.event == timeout)
+                return bsc::state<from> + bsc::after(delay);
+            else if constexpr (row_at<Seed, J>.event == eventless)
                 return bsc::state<from>[guard<Seed, J>{}];
             else if constexpr (row_at<Seed, J>.guarded)
                 return bsc::state<from> + bsc::event<ev<Seed, row_at<Seed, J>.event>>[guard<Seed, J>{}];
@@ -488,13 +544,26 @@ struct limits : bsc::default_policy {
     static constexpr std::size_t max_internal_events = 12;
 };
 
+/// The same limits under the BSC scan rules: eventless transitions only in cycles.
+struct scan_limits : bsc::scan_policy {
+    static constexpr std::size_t queue_capacity = 4;
+    static constexpr std::size_t max_internal_events = 12;
+};
+
 /// A generated chart as a fixture of differential.hpp.
-template <std::uint64_t Seed>
+template <std::uint64_t Seed, class Policy = limits>
 struct generated {
-    using policy = limits;
+    using policy = Policy;
     static constexpr auto const& chart = gen::chart<Seed>;
     static gctx initial() { return {}; }
-    static void perturb(gctx& c, std::uint32_t r) { c.v[r % 3] = static_cast<int>((r >> 2) % 16); }
+    static void perturb(gctx& c, std::uint32_t r) {
+        if (r % 4 == 3)
+            c.in.set(static_cast<int>((r >> 2) % 16));
+        else
+            c.v[r % 4] = static_cast<int>((r >> 2) % 16);
+    }
 };
+template <std::uint64_t Seed>
+using generated_scan = generated<Seed, scan_limits>;
 
 }  // namespace gen

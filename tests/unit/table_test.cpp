@@ -4,8 +4,10 @@
 
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <string>
 
+#include <bsc/system.hpp>
 #include <bsc/table/engine.hpp>
 
 #include "trace.hpp"
@@ -318,4 +320,127 @@ TEST_CASE("table: dispatch with allow_unhandled accepts an event no transition h
     bsc::table::machine m{shared_chart, counter{}};
     CHECK(m.dispatch(stranger{}, bsc::allow_unhandled) == bsc::outcome::ignored);
     CHECK(m.is<A1>());
+}
+
+// ---- the BSC execution cycle --------------------------------------------------------------------
+
+namespace tbl::timed {
+struct Top;
+struct Par;
+struct Left;
+struct L1;
+struct L2;
+struct Right;
+struct Wait;
+struct Idle;
+struct data {
+    bool go = false;
+};
+using namespace std::chrono_literals;
+inline constexpr auto chart = [] {
+    using bsc::state, bsc::after;
+    return bsc::make_chart<data>(
+        bsc::composite<Top>(bsc::initial<Par>,
+                            bsc::parallel<Par>(bsc::composite<Left>(bsc::initial<L1>, state<L2>), state<Right>),
+                            state<Wait>, state<Idle>),
+        state<L1> + after(250ms) = state<L2>, state<L2>[([](data const& d) { return d.go; })] = state<L1>,
+        state<Right> + after(2s)[([](data const& d) { return d.go; })] = state<Wait>,
+        state<Wait> + after(1500us) = state<Idle>, state<Wait> + after(3s) = state<Par>,
+        state<Idle> + bsc::event<go> = state<Par>);
+}();
+using tables = bsc::table::tables<decltype(chart)>;
+template <class S>
+constexpr bsc::table::state_id id = static_cast<bsc::table::state_id>(tables::analysis::index_of_state<S>);
+}  // namespace tbl::timed
+
+TEST_CASE("table: timeout rows read their delay from the chart; their origins keep an entry time; the components") {
+    using namespace tbl::timed;
+    using bsc::table::timeout_id;
+    constexpr auto const& t = tables::transitions;
+    static_assert(t[0].event == timeout_id && t[1].event == bsc::table::eventless_id && t[5].event >= 0);
+    CHECK(t[0].delay(chart) == 250ms);
+    CHECK(t[2].delay(chart) == 2s);
+    CHECK(t[3].delay(chart) == 1500us);
+    CHECK(t[4].delay(chart) == 3s);
+    CHECK((tbl::mcs_like::set(t[2].guard) && !tbl::mcs_like::set(t[0].guard)));
+    CHECK((!tbl::mcs_like::set(t[1].delay) && !tbl::mcs_like::set(t[5].delay)));
+    // One entry time per state that a timeout leaves, numbered in document order.
+    static_assert(tables::timeout_slots == 3);
+    static_assert(tables::states[id<L1>].timeout_slot == 0 && tables::states[id<Right>].timeout_slot == 1);
+    static_assert(tables::states[id<Wait>].timeout_slot == 2 && tables::states[id<L2>].timeout_slot == -1);
+    // The components of a cycle: the root and the regions of the parallel state, in document order.
+    static_assert(tables::component_count == 3);
+    static_assert(tables::components[0] == id<Top> && tables::components[1] == id<Left> &&
+                  tables::components[2] == id<Right>);
+    static_assert(tables::has_conditions && !tbl::mcs_like::tables::has_conditions);
+
+    bsc::table::machine m{chart, data{}};
+    m.step(0ms);
+    CHECK(m.step(250ms).transitions == 1);  // Left: L1's timeout
+    CHECK(m.is<L2>());
+    m.context().go = true;
+    auto const r = m.step(2s);  // Left: L2 [go]; Right: its guarded timeout
+    CHECK(r.transitions == 2);
+    CHECK(m.is<Wait>());
+    CHECK(m.now() == 2s);
+    m.step(2s + 1ms);
+    CHECK(m.is<Wait>());
+    m.step(2s + 1500us);
+    CHECK(m.is<Idle>());
+}
+
+namespace tbl::sys {
+struct Root;
+struct Idle;
+struct Running;
+struct Still;
+struct Moving;
+struct At;
+struct controller_io {
+    bsc::input<bool> request;
+    bsc::input<bool> arrived;
+    bsc::output<bool> motor;
+};
+inline constexpr auto controller = bsc::make_chart<controller_io>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Running>),
+    bsc::state<Idle>[([](controller_io const& c) { return c.request.get() && !c.arrived.get(); })] /
+            [](controller_io& c) { c.motor.set(true); } = bsc::state<Running>,
+    bsc::state<Running>[([](controller_io const& c) { return c.arrived.get(); })] /
+            [](controller_io& c) { c.motor.set(false); } = bsc::state<Idle>);
+struct plant_io {
+    bsc::input<bool> motor;
+    bsc::output<bool> arrived;
+};
+inline constexpr auto plant = bsc::make_chart<plant_io>(
+    bsc::composite<Root>(bsc::initial<Still>, bsc::state<Moving>, bsc::state<At>),
+    bsc::state<Still>[([](plant_io const& p) { return p.motor.get(); })] = bsc::state<Moving>,
+    bsc::state<Moving>[([](plant_io const& p) { return !p.motor.get(); })] = bsc::state<Still>,
+    bsc::state<Moving> + bsc::after(std::chrono::milliseconds{300}) / [](plant_io& p) { p.arrived.set(true); } =
+        bsc::state<At>,
+    bsc::state<At>[([](plant_io const& p) { return !p.motor.get(); })] / [](plant_io& p) { p.arrived.set(false); } =
+        bsc::state<Still>);
+// A compiled controller and a table-driven plant model in one system.
+struct actors {
+    bsc::machine<decltype(controller)> control{controller};
+    bsc::table::machine<decltype(plant)> belt{plant};
+};
+using cell = bsc::system<actors, bsc::order<&actors::control, &actors::belt>,
+                         bsc::link<&actors::control, &controller_io::motor, &actors::belt, &plant_io::motor>,
+                         bsc::link<&actors::belt, &plant_io::arrived, &actors::control, &controller_io::arrived>>;
+}  // namespace tbl::sys
+
+TEST_CASE("table: a table machine is an actor of a bsc::system, next to a compiled one") {
+    using namespace std::chrono_literals;
+    tbl::sys::cell s{};
+    s.actors.control.context().request.set(true);
+    s.step(0ms);
+    CHECK(s.actors.belt.is<tbl::sys::Moving>());  // the motor, published by the controller earlier in the order
+    s.step(299ms);
+    CHECK(s.actors.belt.is<tbl::sys::Moving>());
+    s.step(300ms);  // the plant's timeout
+    CHECK(s.actors.belt.is<tbl::sys::At>());
+    auto const r = s.step(400ms);  // the controller sees `arrived` and stops the motor; the plant sees that
+    CHECK(s.actors.control.is<tbl::sys::Idle>());
+    CHECK(s.actors.belt.is<tbl::sys::Still>());
+    CHECK(r.transitions == 2);
 }

@@ -14,7 +14,9 @@
 //   activPath(from, to, hist)               activate_path(domain, target)
 //   StopStEng()                             the destructor (the engine owns no resource)
 //
-// and the five steps of its Figure 9 are those of microstep().
+// and the five steps of its Figure 9 are those of microstep(). step(now) adds the BSC execution
+// cycle of seed 002 (timers, latched inputs, one condition-driven transition per component,
+// committed outputs) with the same tables.
 
 #include <array>
 #include <cstddef>
@@ -23,6 +25,7 @@
 #include <utility>
 
 #include <bsc/checks/errors.hpp>
+#include <bsc/compiled/machine.hpp>  // bsc::step_report, which both back ends return
 #include <bsc/configuration.hpp>
 #include <bsc/detail/context_data.hpp>
 #include <bsc/observer.hpp>
@@ -114,6 +117,12 @@ public:
         []<std::size_t... K>(std::index_sequence<K...>) {
             return std::array<transition_hook, rules::transition_rows>{transition_hook_of<K>()...};
         }(std::make_index_sequence<rules::transition_rows>{});
+    /// What on_row reports for each transition: its position among make_chart's rows.
+    static constexpr std::array<int, rules::transition_rows> on_row = [] {
+        std::array<int, rules::transition_rows> rows{};
+        for (std::size_t k = 0; k < rows.size(); ++k) rows[k] = chart_row(k);
+        return rows;
+    }();
 };
 
 /// The observer hooks of an observer without hooks: no table at all.
@@ -174,6 +183,34 @@ public:
         else
             return process(static_cast<event_id>(trigger), &e);
     }
+
+    /// One BSC execution cycle at time `now` (seed 002), as bsc::machine::step: timers are
+    /// updated and inputs latched; each component (the root and every region of an AND state),
+    /// in document order, fires at most one eventless or timeout transition, its actions' writes
+    /// visible at once to the components after it; raised events are processed; outputs are
+    /// committed. Components entered during the cycle first run in the next one. An earlier
+    /// `now` than the last cycle's is reported and ignored.
+    step_report step(duration now) {
+        step_report report;
+        if (halted()) {
+            report.status = last_ = outcome::halted;
+            return report;
+        }
+        if (now < clock_)
+            report.clock_went_backwards = true;
+        else
+            clock_ = now;
+        bsc::detail::update_timers(context_, clock_);
+        latch();
+        if constexpr (rules::has_conditions)
+            report.transitions = run_components();
+        report.status = last_ = drain_queue(report.transitions > 0);
+        commit();
+        return report;
+    }
+
+    /// The time of the last cycle (the machine's clock).
+    duration now() const { return clock_; }
 
     /// True if state S is active.
     template <class S>
@@ -255,6 +292,10 @@ private:
     void run_entry(state_id s) {
         if (auto const f = states[s].entry)
             f(chart_, context_, queue_);
+        // A state's timeouts count from its entry, at the time of the last cycle.
+        if constexpr (rules::timeout_slots > 0)
+            if (states[s].timeout_slot >= 0)
+                armed_[static_cast<std::size_t>(states[s].timeout_slot)] = clock_;
         if constexpr (observed)
             if (auto const h = hooks::on_entry[s])
                 h(observer_);
@@ -417,6 +458,8 @@ private:
         if constexpr (observed)
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)])
                 h(observer_, e);
+        if constexpr (bsc::detail::observes_rows<Observer>)
+            observer_.on_row(hooks::on_row[static_cast<std::size_t>(t)]);
         if (row.action)
             row.action(chart_, context_, e, queue_);
     }
@@ -484,12 +527,14 @@ private:
     }
 
     // Settles the machine after a microstep: eventless transitions until none is enabled,
-    // then the raised events one by one, each followed by its eventless transitions.
+    // then the raised events one by one, each followed by its eventless transitions. Under a
+    // scan policy eventless transitions are left to step(), and only raised events are processed.
     outcome finish(bool consumed) {
+        if constexpr (!Policy::settle_eventless)
+            return drain_queue(consumed);
         std::size_t internal_events = 0;
         for (;;) {
             if constexpr (rules::has_eventless) {
-                static constexpr bsc::eventless no_event{};
                 // Up to max_eventless_steps transitions settle; one more means the chart cycles.
                 for (std::size_t steps = 0; !halted() && microstep(eventless_id, &no_event);)
                     if (++steps > Policy::max_eventless_steps)
@@ -510,10 +555,81 @@ private:
         return consumed ? outcome::consumed : outcome::ignored;
     }
 
+    // The raised events, each one microstep and no eventless settling: in a cycle, so that no
+    // component fires twice.
+    outcome drain_queue(bool consumed) {
+        for (std::size_t n = 0; !queue_.empty() && !halted();) {
+            if (++n > Policy::max_internal_events)
+                return abandon();
+            queue_.pop([&](auto const& ev) {
+                microstep(static_cast<event_id>(analysis::template trigger_of<std::decay_t<decltype(ev)>>), &ev);
+            });
+        }
+        if (queue_.overflowed()) {
+            queue_.clear_overflow();
+            return outcome::queue_overflow;
+        }
+        return consumed ? outcome::consumed : outcome::ignored;
+    }
+
     outcome abandon() {
         queue_.clear();
         queue_.clear_overflow();
         return outcome::livelock;
+    }
+
+    // ---- the BSC cycle ----------------------------------------------------------------------
+    // The components' turns: a component takes its turn if it was active when the cycle began
+    // and still is (an earlier component may have left it); one entered during the cycle waits
+    // for the next. Returns the number of transitions fired.
+    int run_components() {
+        constexpr auto const& components = rules::components;
+        std::array<bool, components.size()> active_at_start{};
+        for (std::size_t i = 0; i < components.size(); ++i) active_at_start[i] = active(components[i]);
+        int fired = 0;
+        for (std::size_t i = 0; i < components.size(); ++i)
+            if (active_at_start[i] && active(components[i]) && component_step(components[i]))
+                ++fired;
+        return fired;
+    }
+
+    // One component's turn: from its active frontier (the active basic state below it, or an
+    // AND state whose regions are components of their own) up to the component itself, deepest
+    // origin first and table order among one origin's, the first condition-driven transition
+    // whose condition holds fires.
+    bool component_step(state_id component) {
+        state_id frontier = component;
+        while (states[frontier].status.kind == state_kind::or_state) frontier = active_child(frontier);
+        for (state_id a = frontier;; a = states[a].ancestor) {
+            for (std::int16_t t = rules::first_out[a]; t >= 0; t = rules::next_out[static_cast<std::size_t>(t)])
+                if (is_condition(transitions[static_cast<std::size_t>(t)].event) && condition_holds(t)) {
+                    fire_condition(t);
+                    return true;
+                }
+            if (a == component)
+                return false;
+        }
+    }
+
+    // A timeout's condition: its origin has been active for its delay (the origin is active: it
+    // is on the component's active path). Then the guard, which receives bsc::eventless.
+    bool condition_holds(std::int16_t t) const {
+        auto const& row = transitions[static_cast<std::size_t>(t)];
+        if constexpr (rules::timeout_slots > 0)
+            if (row.event == timeout_id &&
+                clock_ - armed_[static_cast<std::size_t>(states[row.from].timeout_slot)] < row.delay(chart_))
+                return false;
+        return guard_holds(t, &no_event);
+    }
+
+    // Steps 3 to 5 of a microstep for one transition: a component's transition fires alone.
+    void fire_condition(std::int16_t t) {
+        auto const& row = transitions[static_cast<std::size_t>(t)];
+        if (row.to != none)
+            deactivate_path(row.domain);
+        run_action(t, &no_event);
+        if (row.to != none)
+            activate_path(row.domain, row.to);
     }
 
     // Input and output channels of the context, latched and committed around each dispatch
@@ -521,10 +637,15 @@ private:
     void latch() { bsc::detail::latch_inputs(context_); }
     void commit() { bsc::detail::commit_outputs(context_); }
 
+    // The event that eventless and timeout transitions receive.
+    static constexpr bsc::eventless no_event{};
+
     [[no_unique_address]] Chart chart_;
     context_type context_;
     configuration_type config_{};
     queue_type queue_{};
+    duration clock_{};
+    std::array<duration, rules::timeout_slots> armed_{};  // entry times of the states with timeouts
     outcome last_ = outcome::ignored;
     [[no_unique_address]] Observer observer_;
 };

@@ -5,6 +5,8 @@
 // and exit actions are reached through plain function pointers: one small generated function
 // ("thunk") per row, which receives the chart object and the context and calls the row's
 // callable. Everything here is computed by the compiler; bsc::table::machine interprets it.
+// For the BSC execution cycle (seed 002) the tables also list the components, give each
+// timeout its delay and each state that a timeout leaves a slot for the time it was entered.
 
 #include <array>
 #include <boost/hana/at.hpp>
@@ -34,6 +36,9 @@ inline constexpr state_id none = 0;
 using event_id = std::int16_t;
 inline constexpr event_id eventless_id = -1;  ///< a transition without an event
 inline constexpr event_id timeout_id = -2;    ///< a timeout transition, taken by a BSC cycle only
+
+/// Eventless and timeout transitions are condition-driven: the ones a BSC cycle considers.
+constexpr bool is_condition(event_id event) { return event < 0; }
 
 /// The paper's status column, split in two: the kind of state and its history.
 enum class state_kind : std::uint8_t {
@@ -72,6 +77,7 @@ struct state_row {
     std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
     std::int16_t slot = -1;    ///< the byte of the configuration an OR state owns, -1 for others
     state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
+    std::int16_t timeout_slot = -1;  ///< where the time it was entered is kept if a timeout leaves it, else -1
 };
 
 /// One row of the transition table (the paper's BTRANS, Figure 8).
@@ -82,6 +88,9 @@ struct transition_row {
     /// eventless transitions) passed as `event`.
     using guard_fn = bool (*)(Chart const& chart, context_type const& context, void const* event);
     using action_fn = void (*)(Chart const& chart, context_type& context, void const* event, Raise& raise);
+    /// The delay of a timeout. `after(d)` stores d in the chart object, not in its type, so the
+    /// delay is read from the chart like a guard.
+    using delay_fn = duration (*)(Chart const& chart);
 
     state_id from = none;          ///< origin state
     event_id event = eventless_id; ///< trigger, or `eventless_id` / `timeout_id`
@@ -89,6 +98,7 @@ struct transition_row {
     guard_fn guard = nullptr;      ///< null: unguarded
     action_fn action = nullptr;    ///< null: no action
     state_id domain = none;        ///< the transition domain: the state whose active descendants it exits
+    delay_fn delay = nullptr;      ///< a timeout's delay; null for the other transitions
 };
 
 namespace detail_tables {
@@ -201,6 +211,11 @@ private:
                                                                             raise);
     }
 
+    template <int Row>
+    static duration delay_thunk(chart_type const& chart) {
+        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay;
+    }
+
     template <bsc::detail::row_kind K, int S>
     static constexpr typename state_row_type::state_action state_action_of() {
         if constexpr (rows_of<K, S>.size() == 0)
@@ -210,6 +225,22 @@ private:
     }
 
     static constexpr state_id id(int s) { return s < 0 ? none : static_cast<state_id>(s); }
+
+    static constexpr bool has_timeout(int s) {
+        for (int r = 0; r < analysis::R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition &&
+                rows.trigger[static_cast<std::size_t>(r)] <= bsc::detail::timeout_trigger_id(0) &&
+                rows.source[static_cast<std::size_t>(r)] == s)
+                return true;
+        return false;
+    }
+    // The sources of timeouts numbered in document order, as bsc::machine numbers them.
+    static constexpr auto timeout_slot_of = [] {
+        std::array<int, static_cast<std::size_t>(analysis::N)> slot{};
+        int n = 0;
+        for (int s = 0; s < analysis::N; ++s) slot[static_cast<std::size_t>(s)] = has_timeout(s) ? n++ : -1;
+        return slot;
+    }();
 
     template <int S>
     static constexpr state_row_type make_state_row() {
@@ -226,6 +257,7 @@ private:
         row.ordinal = static_cast<std::uint8_t>(topo.ordinal[i]);
         row.slot = static_cast<std::int16_t>(topo.slot[i]);
         row.end = static_cast<state_id>(topo.end[i]);
+        row.timeout_slot = static_cast<std::int16_t>(timeout_slot_of[i]);
         return row;
     }
 
@@ -245,6 +277,8 @@ private:
         if constexpr (detail_tables::has_action<R>())
             row.action = &action_thunk<r>;
         row.domain = id(rows.domain[i]);
+        if constexpr (bsc::detail::is_timeout_row<R>)
+            row.delay = &delay_thunk<r>;
         return row;
     }
 
@@ -301,6 +335,31 @@ public:
         return next;
     }();
 
+    /// How many states keep an entry time for their timeouts.
+    static constexpr std::size_t timeout_slots = [] {
+        std::size_t n = 0;
+        for (auto const& row : states) n += row.timeout_slot >= 0;
+        return n;
+    }();
+
+    /// The components of a BSC cycle (seed 002), in the order they run: the root and every child
+    /// of an AND state, in document order.
+    static constexpr std::size_t component_count = [] {
+        std::size_t n = 1;
+        for (std::size_t s = root + 1; s < state_count; ++s)
+            n += states[states[s].ancestor].status.kind == state_kind::and_state;
+        return n;
+    }();
+    static constexpr auto components = [] {
+        std::array<state_id, component_count> out{};
+        std::size_t n = 0;
+        out[n++] = root;
+        for (std::size_t s = root + 1; s < state_count; ++s)
+            if (states[states[s].ancestor].status.kind == state_kind::and_state)
+                out[n++] = static_cast<state_id>(s);
+        return out;
+    }();
+
     /// True if some transition is triggered by `event` (an event id, or `eventless_id`).
     static constexpr bool handles(event_id event) {
         for (auto const& t : transitions)
@@ -309,6 +368,8 @@ public:
         return false;
     }
     static constexpr bool has_eventless = handles(eventless_id);
+    /// True if a BSC cycle has anything to consider: an eventless or timeout transition.
+    static constexpr bool has_conditions = has_eventless || handles(timeout_id);
 
     /// How many basic states can be active at once: the most transitions one event can select.
     static constexpr std::size_t max_active_leaves = [] {
