@@ -23,7 +23,7 @@ Timings are taken only when the 1-minute load average is below 1.2: the script w
 before each measurement, up to --max-wait seconds each and --wait-budget seconds in all, and
 records the load before and after each run; a run during which the process was descheduled
 (real time more than 10% above CPU time) or the load rose is repeated, up to three times. A
-compilation is stopped after 900 s. --skip-timings and --skip-compile-time keep the results of
+compilation is stopped after 900 s (--compile-timeout). --skip-timings and --skip-compile-time keep the results of
 the previous run (build/release/benchmark-results/results.json) for that part. Plots are drawn
 when matplotlib is installed, and skipped otherwise. Only the Python standard library is
 required.
@@ -209,7 +209,7 @@ def instructions(workload):
 
 # ---- 4. compile time -----------------------------------------------------------------------
 
-COMPILE_TIMEOUT = 900  # seconds per translation unit
+COMPILE_TIMEOUT = 900  # seconds per translation unit (--compile-timeout)
 COMPILE_MEMORY = 16 << 30  # address-space limit per compiler run
 
 
@@ -574,6 +574,7 @@ def write_report(times, insns, compile_times, conditions, timings_at, compile_at
 
 
 def main():
+    global COMPILE_TIMEOUT
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--max-wait", type=int, default=1800,
                     help="seconds to wait for a quiet machine before each measurement (default 1800)")
@@ -584,8 +585,11 @@ def main():
     ap.add_argument("--skip-compile-time", action="store_true", help="keep the compile-time results of the last run")
     ap.add_argument("--skip-msm-compile-time", action="store_true",
                     help="measure bsc's compile times only, keep Boost.MSM's from the last run")
+    ap.add_argument("--compile-timeout", type=int, default=COMPILE_TIMEOUT,
+                    help="seconds after which a compilation is stopped (default 900)")
     args = ap.parse_args()
     wait_budget[0] = float(args.wait_budget)
+    COMPILE_TIMEOUT = args.compile_timeout
 
     for tool in ("cmake", "g++", "valgrind"):
         if not shutil.which(tool):
