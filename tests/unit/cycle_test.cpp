@@ -454,3 +454,17 @@ TEST_CASE_TEMPLATE("a timeout competes with its state's eventless transitions in
     int const expected[] = {1, 1, 1, 1, 0, 4, 2, 3};  // rows in make_chart's order
     for (std::size_t i = 0; i < 8; ++i) CHECK(log.rows[i] == expected[i]);
 }
+
+TEST_CASE("channels compare by value: pending and latched (inputs), published and next (outputs)") {
+    static_assert(bsc::input<int>{3} == bsc::input<int>{3});
+    static_assert(!(bsc::output<int>{3} == bsc::output<int>{4}));
+    bsc::input<int> a{1}, b{1};
+    CHECK(a == b);
+    a.set(2);
+    CHECK_FALSE(a == b);  // the same latched value, a different pending one
+    b.set(2);
+    CHECK(a == b);
+    bsc::inout<int> x{5}, y{5};
+    x.set(6);
+    CHECK_FALSE(x == y);
+}
