@@ -2358,7 +2358,11 @@ private:
 #include <type_traits>
 
 namespace bsc::detail {
-struct channel_base {};  // lets the machine find channels among the context's members
+// Lets the machine find channels among the context's members. Equal to any other, so that
+// the channels' defaulted == compare their values.
+struct channel_base {
+    friend constexpr bool operator==(channel_base const&, channel_base const&) = default;
+};
 }  // namespace bsc::detail
 
 namespace bsc {
