@@ -2256,6 +2256,28 @@ struct plan {
         return true;
     }();
 
+    // A region-local trigger whose transitions can fire as they are selected, with the same
+    // effects as selecting all first: none is guarded (so no selection can depend on another
+    // zone's action), and no state that one of them exits or enters has an entry or exit row
+    // (so the only visible effects are the transition actions, which run in document order
+    // either way). Each zone's transition changes only the bytes inside its own domain.
+    template <int Trigger>
+    static constexpr bool fires_at_selection = [] {
+        if (!region_local<Trigger>) return false;
+        for (int r = 0; r < R; ++r) {
+            if (!is_transition_on(r, Trigger)) continue;
+            if (table.guarded[static_cast<std::size_t>(r)]) return false;
+            int const d = table.domain[static_cast<std::size_t>(r)];
+            if (d < 0) continue;  // targetless: exits and enters nothing
+            for (int r2 = 0; r2 < R; ++r2) {
+                auto const k = table.kinds[static_cast<std::size_t>(r2)];
+                int const s = table.source[static_cast<std::size_t>(r2)];
+                if ((k == row_kind::entry || k == row_kind::exit) && s != d && topo.contains(d, s)) return false;
+            }
+        }
+        return true;
+    }();
+
     // The zones in which a transition on the trigger can be selected under a parallel state.
     static constexpr int selecting_zone_count(int trigger) {
         int n = 0;
@@ -3362,15 +3384,22 @@ private:
         std::array<std::uint8_t, plan::components.size()> chosen{};
     };
 
+    // Transitions of such a trigger fire where they are selected, as outside parallel states,
+    // when no observer could see the order of exits and entries change.
     template <int Trigger>
-    using selection_for = std::conditional_t<!plan::has_parallel, no_selection,
-                                             std::conditional_t<plan::template region_local<Trigger>, zone_selection, selection>>;
+    static constexpr bool fires_at_selection =
+        plan::template fires_at_selection<Trigger> && std::is_same_v<Observer, no_observer>;
+
+    template <int Trigger>
+    using selection_for = std::conditional_t<
+        !plan::has_parallel || fires_at_selection<Trigger>, no_selection,
+        std::conditional_t<plan::template region_local<Trigger>, zone_selection, selection>>;
 
     template <int Leaf, int Trigger, int Row, class E, class Sel>
     constexpr bool try_row(E const& e, Sel& sel) {
         if (!guard_holds<Row>(e))
             return false;
-        if constexpr (!topo.under_parallel(Leaf))
+        if constexpr (!topo.under_parallel(Leaf) || fires_at_selection<Trigger>)
             fire_from<Leaf, Row>(e);
         else if constexpr (plan::template region_local<Trigger>)
             sel.chosen[static_cast<std::size_t>(plan::zone[Leaf])] = static_cast<std::uint8_t>(plan::template zone_code<Trigger>(Row));

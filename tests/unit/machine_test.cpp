@@ -291,3 +291,67 @@ TEST_CASE("bsc::chart_ref names a chart by its variable: the same machine, with 
     bsc::table::machine<bsc::chart_ref<mt2::wide>> table{mt2::wide};
     CHECK(table.dispatch(mt2::tick{}) == bsc::outcome::consumed);
 }
+
+namespace mt2 {
+struct reset {};
+template <int R>
+struct Mid;
+template <int R>
+constexpr auto plain_region() {
+    return bsc::composite<G<R>>(bsc::initial<Off<R>>, bsc::state<Mid<R>>, bsc::state<On<R>>);
+}
+template <int R>
+inline constexpr auto tag = [](log_ctx& c, auto const&) { c.log += static_cast<char>('a' + R); };
+template <int R>
+constexpr auto plain_rows() {
+    return bsc::rows(bsc::state<Off<R>> + bsc::event<tick> / note<R> = bsc::state<Mid<R>>,
+                     bsc::state<Mid<R>> + bsc::event<tick> / note<R> = bsc::state<On<R>>,
+                     bsc::state<On<R>> + bsc::event<tick> / note<R> = bsc::state<Off<R>>,
+                     bsc::state<Mid<R>> + bsc::event<reset> / tag<R> = bsc::state<Off<R>>,
+                     bsc::state<On<R>> + bsc::event<reset> / tag<R> = bsc::state<Off<R>>);
+}
+struct entries {
+    std::string* out;
+    void on_entry(auto state) { *out += state.name; }
+};
+// No guards and no entry or exit actions: tick and reset fire in each region as it is selected.
+inline constexpr auto plain = bsc::make_chart<log_ctx>(bsc::parallel<W>(plain_region<0>(), plain_region<1>(), plain_region<2>()),
+                                                       plain_rows<0>(), plain_rows<1>(), plain_rows<2>(),
+                                                       bsc::state<Mid<1>> + bsc::event<go> / note<9>);
+}  // namespace mt2
+
+TEST_CASE("without guards, entry or exit actions, parallel transitions fire as they are selected, with the same effects") {
+    using an = bsc::detail::analysis<std::remove_cv_t<decltype(mt2::plain)>>;
+    using plan = bsc::detail::plan<an>;
+    static_assert(plan::fires_at_selection<an::trigger_of<mt2::tick>>);
+    static_assert(plan::fires_at_selection<an::trigger_of<mt2::reset>>);
+    using wide_an = bsc::detail::analysis<std::remove_cv_t<decltype(mt2::wide)>>;
+    static_assert(!bsc::detail::plan<wide_an>::fires_at_selection<wide_an::trigger_of<mt2::tick>>);  // entry/exit notes
+    bsc::machine fast{mt2::plain};
+    bsc::table::machine reference{mt2::plain};
+    std::uint32_t seed = 7;
+    for (int i = 0; i < 600; ++i) {
+        seed = seed * 1664525u + 1013904223u;
+        switch ((seed >> 16) % 4) {
+        case 0:
+        case 1:
+            CHECK(fast.dispatch(mt2::tick{}) == reference.dispatch(mt2::tick{}));
+            break;
+        case 2:
+            CHECK(fast.dispatch(mt2::reset{}) == reference.dispatch(mt2::reset{}));
+            break;
+        default:
+            CHECK(fast.dispatch(mt2::go{}) == reference.dispatch(mt2::go{}));
+        }
+        REQUIRE(fast.active_configuration() == reference.active_configuration());
+        REQUIRE(fast.context().log == reference.context().log);
+    }
+    CHECK(fast.context().log.size() > 1000);
+    // With an observer, the same chart takes the select-then-fire path, and agrees.
+    std::string trace;
+    bsc::machine<decltype(mt2::plain), bsc::default_policy, mt2::entries> observed{mt2::plain, {}, mt2::entries{&trace}};
+    observed.dispatch(mt2::tick{});
+    observed.dispatch(mt2::reset{});
+    CHECK(trace == "WG<0>Off<0>G<1>Off<1>G<2>Off<2>Mid<0>Mid<1>Mid<2>Off<0>Off<1>Off<2>");
+    CHECK(observed.context().log == "012abc");
+}

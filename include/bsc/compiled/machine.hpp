@@ -484,15 +484,22 @@ private:
         std::array<std::uint8_t, plan::components.size()> chosen{};
     };
 
+    // Transitions of such a trigger fire where they are selected, as outside parallel states,
+    // when no observer could see the order of exits and entries change.
     template <int Trigger>
-    using selection_for = std::conditional_t<!plan::has_parallel, no_selection,
-                                             std::conditional_t<plan::template region_local<Trigger>, zone_selection, selection>>;
+    static constexpr bool fires_at_selection =
+        plan::template fires_at_selection<Trigger> && std::is_same_v<Observer, no_observer>;
+
+    template <int Trigger>
+    using selection_for = std::conditional_t<
+        !plan::has_parallel || fires_at_selection<Trigger>, no_selection,
+        std::conditional_t<plan::template region_local<Trigger>, zone_selection, selection>>;
 
     template <int Leaf, int Trigger, int Row, class E, class Sel>
     constexpr bool try_row(E const& e, Sel& sel) {
         if (!guard_holds<Row>(e))
             return false;
-        if constexpr (!topo.under_parallel(Leaf))
+        if constexpr (!topo.under_parallel(Leaf) || fires_at_selection<Trigger>)
             fire_from<Leaf, Row>(e);
         else if constexpr (plan::template region_local<Trigger>)
             sel.chosen[static_cast<std::size_t>(plan::zone[Leaf])] = static_cast<std::uint8_t>(plan::template zone_code<Trigger>(Row));
