@@ -63,24 +63,17 @@ struct machine_access {
 }  // namespace bsc::detail
 
 namespace bsc::detail {
-// The event an action of a row sees: its event type, or bsc::eventless for condition-driven
-// rows; entry and exit rows see none (may_raise ignores it for them).
-template <class Row>
-struct row_event {
-    using type = eventless_trigger;
-};
-template <class S, class E, class G, class A, class T>
-struct row_event<transition_row<S, event_trigger<E>, G, A, T>> {
-    using type = E;
-};
-
 // Whether any action of the chart can raise an event; if none can, the machine has no queue.
 template <class An, class Policy>
 constexpr bool chart_may_raise() {
     using context = typename An::chart_context;
     using raise = event_queue<Policy::queue_capacity, typename An::events>;
     return []<class... Rows>(type_list<Rows...>) {
-        return (may_raise<context, typename row_event<Rows>::type, raise>(
+        // The event an action sees: the row's event, or bsc::eventless for condition-driven
+        // rows (entry and exit rows see none; may_raise ignores it for them).
+        return (may_raise<context, std::conditional_t<std::is_void_v<typename trigger_event<Rows>::type>, eventless_trigger,
+                                                      typename trigger_event<Rows>::type>,
+                          raise>(
                     static_cast<decltype(Rows::action) const*>(nullptr)) ||
                 ...);
     }(typename An::rows{});
@@ -88,13 +81,6 @@ constexpr bool chart_may_raise() {
 }  // namespace bsc::detail
 
 namespace bsc {
-
-/// What one BSC execution cycle did.
-struct step_report {
-    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
-    int transitions = 0;                ///< condition-driven transitions fired by the components
-    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
-};
 
 /// A running instance of a chart: its context, its active configuration and its internal
 /// event queue. Construction enters the initial configuration; dispatch(e) processes one
@@ -502,7 +488,7 @@ private:
         if constexpr (!topo.under_parallel(Leaf) || fires_at_selection<Trigger>)
             fire_from<Leaf, Row>(e);
         else if constexpr (plan::template region_local<Trigger>)
-            sel.chosen[static_cast<std::size_t>(plan::zone[Leaf])] = static_cast<std::uint8_t>(plan::template zone_code<Trigger>(Row));
+            sel.chosen[static_cast<std::size_t>(plan::zone[Leaf])] = static_cast<std::uint8_t>(plan::template zone_code<Trigger, Row>);
         else
             sel.add(plan::template position_of<Trigger>(Row));
         return true;

@@ -130,24 +130,22 @@ struct plan {
         return out;
     }();
 
-    static constexpr bool has_timeout(int s) {
-        for (int r = 0; r < R; ++r)
-            if (table.trigger[static_cast<std::size_t>(r)] <= timeout_trigger_id(0) &&
-                table.kinds[static_cast<std::size_t>(r)] == row_kind::transition &&
-                table.source[static_cast<std::size_t>(r)] == s)
-                return true;
-        return false;
-    }
-    // States that are the source of a timeout row get a slot for the time they were entered.
+    // States that are the source of a timeout row get a slot for the time they were entered,
+    // numbered in document order.
     static constexpr auto timeout_slot = [] {
+        std::array<bool, static_cast<std::size_t>(N)> has{};
+        for (int r = 0; r < R; ++r)
+            if (table.kinds[static_cast<std::size_t>(r)] == row_kind::transition &&
+                table.trigger[static_cast<std::size_t>(r)] <= timeout_trigger_id(0))
+                has[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] = true;
         std::array<int, static_cast<std::size_t>(N)> slot{};
         int n = 0;
-        for (int s = 0; s < N; ++s) slot[static_cast<std::size_t>(s)] = has_timeout(s) ? n++ : -1;
+        for (std::size_t s = 0; s < slot.size(); ++s) slot[s] = has[s] ? n++ : -1;
         return slot;
     }();
     static constexpr int timeout_slots = [] {
         int n = 0;
-        for (int s = 0; s < N; ++s) n += has_timeout(s);
+        for (int slot : timeout_slot) n += slot >= 0;
         return n;
     }();
 
@@ -285,14 +283,14 @@ struct plan {
                 out[n++] = r;
         return out;
     }();
-    template <int Trigger>
-    static constexpr int zone_code(int row) {
-        int const z = zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(row)])];
-        int code = 1;
-        for (int r = 0; r < row; ++r)
-            code += is_transition_on(r, Trigger) && zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] == z;
-        return code;
-    }
+    // What a region-local selection records for a row: 1 + its position in its zone's rows.
+    template <int Trigger, int Row>
+    static constexpr int zone_code = [] {
+        constexpr auto const& rows = zone_rows<Trigger, zone[static_cast<std::size_t>(table.source[Row])]>;
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            if (rows[i] == Row) return static_cast<int>(i) + 1;
+        return 0;
+    }();
 
     // A trigger is region-local when what SCXML's conflict resolution does at run time is known
     // at compile time to keep every selected transition: no transition on it leaves a state that
@@ -302,6 +300,7 @@ struct plan {
     // run-time conflict check.
     template <int Trigger>
     static constexpr bool region_local = [] {
+        if (!has_parallel) return false;  // nothing to resolve: every transition fires where selected
         for (int r = 0; r < R; ++r) {
             if (!is_transition_on(r, Trigger)) continue;
             int const src = table.source[static_cast<std::size_t>(r)];

@@ -58,21 +58,6 @@ constexpr std::size_t position_by_type(indexed<I, T> const*) {
     return I;
 }
 
-// Position of the first T in Ts..., or -1.
-template <class T, class... Ts>
-constexpr int index_in() {
-    using index = indexer<std::index_sequence_for<Ts...>, Ts...>;
-    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); }) {
-        return static_cast<int>(position_by_type<T>(static_cast<index const*>(nullptr)));
-    } else {  // absent, or present more than once (the base is ambiguous)
-        constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
-        for (std::size_t i = 0; i < sizeof...(Ts); ++i)
-            if (same[i])
-                return static_cast<int>(i);
-        return -1;
-    }
-}
-
 template <class List>
 struct indexer_of;
 template <class... Ts>
@@ -85,13 +70,26 @@ struct indexer_of<type_list<Ts...>> {
 template <class T, class List>
 constexpr int index_of_impl() {
     using index = typename indexer_of<List>::type;
-    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); })
+    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); }) {
         return static_cast<int>(position_by_type<T>(static_cast<index const*>(nullptr)));
-    else
-        return []<class... Ts>(type_list<Ts...>) { return index_in<T, Ts...>(); }(List{});
+    } else {  // absent, or present more than once (the base is ambiguous): scan
+        return []<class... Ts>(type_list<Ts...>) {
+            constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
+            for (std::size_t i = 0; i < sizeof...(Ts); ++i)
+                if (same[i])
+                    return static_cast<int>(i);
+            return -1;
+        }(List{});
+    }
 }
 template <class T, class List>
 inline constexpr int index_of = index_of_impl<T, List>();
+
+// Position of the first T in Ts..., or -1.
+template <class T, class... Ts>
+constexpr int index_in() {
+    return index_of<T, type_list<Ts...>>;
+}
 
 template <std::size_t I, class List>
 struct at_impl;

@@ -98,7 +98,8 @@ constexpr auto children_from() {
 
 template <std::size_t I, class... A>
 constexpr bool first_of_its_kind() {
-    return index_in<at<I, type_list<A...>>, A...>() == static_cast<int>(I);
+    using list = type_list<A...>;
+    return index_of<at<I, list>, list> == static_cast<int>(I);
 }
 
 template <class A>
