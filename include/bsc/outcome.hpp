@@ -37,6 +37,13 @@ struct scan_policy : default_policy {
     static constexpr bool settle_eventless = false;
 };
 
+/// What one BSC execution cycle (`step(now)`) did, on either back end.
+struct step_report {
+    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
+    int transitions = 0;                ///< condition-driven transitions fired by the components
+    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
+};
+
 /// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
 /// handles is then allowed (and ignored) instead of failing to compile.
 struct allow_unhandled_t {

@@ -25,7 +25,6 @@
 #include <utility>
 
 #include <bsc/checks/errors.hpp>
-#include <bsc/compiled/machine.hpp>  // bsc::step_report, which both back ends return
 #include <bsc/configuration.hpp>
 #include <bsc/detail/context_data.hpp>
 #include <bsc/observer.hpp>
@@ -88,16 +87,9 @@ private:
             return nullptr;
     }
 
-    // The chart row of transition K.
-    static constexpr int chart_row(std::size_t k) {
-        for (int r = 0; r < analysis::R; ++r)
-            if (analysis::table.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition && k-- == 0)
-                return r;
-        return -1;
-    }
     template <std::size_t K>
     static constexpr transition_hook transition_hook_of() {
-        constexpr int r = chart_row(K);
+        constexpr int r = rules::transition_chart_row[K];
         if constexpr (bsc::detail::observes_transition<Observer, source_tag<r>, target_tag<r>, event_type<r>>)
             return &transition<r>;
         else
@@ -117,12 +109,6 @@ public:
         []<std::size_t... K>(std::index_sequence<K...>) {
             return std::array<transition_hook, rules::transition_rows>{transition_hook_of<K>()...};
         }(std::make_index_sequence<rules::transition_rows>{});
-    /// What on_row reports for each transition: its position among make_chart's rows.
-    static constexpr std::array<int, rules::transition_rows> on_row = [] {
-        std::array<int, rules::transition_rows> rows{};
-        for (std::size_t k = 0; k < rows.size(); ++k) rows[k] = chart_row(k);
-        return rows;
-    }();
 };
 
 /// The observer hooks of an observer without hooks: no table at all.
@@ -459,7 +445,7 @@ private:
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)])
                 h(observer_, e);
         if constexpr (bsc::detail::observes_rows<Observer>)
-            observer_.on_row(hooks::on_row[static_cast<std::size_t>(t)]);
+            observer_.on_row(rules::transition_chart_row[static_cast<std::size_t>(t)]);
         if (row.action)
             row.action(chart_, context_, e, queue_);
     }

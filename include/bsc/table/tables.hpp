@@ -17,6 +17,7 @@
 #include <utility>
 
 #include <bsc/chart.hpp>
+#include <bsc/compiled/plan.hpp>
 #include <bsc/detail/event_queue.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/detail/topology.hpp>
@@ -144,6 +145,7 @@ template <class Chart, class Policy = default_policy>
 struct tables {
     using chart_type = std::remove_cv_t<Chart>;
     using analysis = bsc::detail::analysis<chart_type>;
+    using plan = bsc::detail::plan<analysis>;
     using context_type = typename chart_type::context_type;
     using raise_type = bsc::detail::event_queue<Policy::queue_capacity, typename analysis::events>;
     using state_row_type = state_row<chart_type, raise_type>;
@@ -226,22 +228,6 @@ private:
 
     static constexpr state_id id(int s) { return s < 0 ? none : static_cast<state_id>(s); }
 
-    static constexpr bool has_timeout(int s) {
-        for (int r = 0; r < analysis::R; ++r)
-            if (rows.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition &&
-                rows.trigger[static_cast<std::size_t>(r)] <= bsc::detail::timeout_trigger_id(0) &&
-                rows.source[static_cast<std::size_t>(r)] == s)
-                return true;
-        return false;
-    }
-    // The sources of timeouts numbered in document order, as bsc::machine numbers them.
-    static constexpr auto timeout_slot_of = [] {
-        std::array<int, static_cast<std::size_t>(analysis::N)> slot{};
-        int n = 0;
-        for (int s = 0; s < analysis::N; ++s) slot[static_cast<std::size_t>(s)] = has_timeout(s) ? n++ : -1;
-        return slot;
-    }();
-
     template <int S>
     static constexpr state_row_type make_state_row() {
         constexpr auto i = static_cast<std::size_t>(S);
@@ -257,7 +243,7 @@ private:
         row.ordinal = static_cast<std::uint8_t>(topo.ordinal[i]);
         row.slot = static_cast<std::int16_t>(topo.slot[i]);
         row.end = static_cast<state_id>(topo.end[i]);
-        row.timeout_slot = static_cast<std::int16_t>(timeout_slot_of[i]);
+        row.timeout_slot = static_cast<std::int16_t>(plan::timeout_slot[i]);  // numbered as bsc::machine does
         return row;
     }
 
@@ -286,6 +272,9 @@ private:
     static_assert(transition_count <= 0x7fff, "bsc::table: a chart has at most 32767 transitions");
 
 public:
+    /// The position among make_chart's rows of each transition (what observers' on_row gets).
+    static constexpr auto const& transition_chart_row = chart_row;
+
     /// Number of rows of each table.
     static constexpr std::size_t state_count = static_cast<std::size_t>(analysis::N);
     static constexpr std::size_t transition_rows = transition_count;
@@ -336,27 +325,13 @@ public:
     }();
 
     /// How many states keep an entry time for their timeouts.
-    static constexpr std::size_t timeout_slots = [] {
-        std::size_t n = 0;
-        for (auto const& row : states) n += row.timeout_slot >= 0;
-        return n;
-    }();
+    static constexpr std::size_t timeout_slots = static_cast<std::size_t>(plan::timeout_slots);
 
     /// The components of a BSC cycle (seed 002), in the order they run: the root and every child
-    /// of an AND state, in document order.
-    static constexpr std::size_t component_count = [] {
-        std::size_t n = 1;
-        for (std::size_t s = root + 1; s < state_count; ++s)
-            n += states[states[s].ancestor].status.kind == state_kind::and_state;
-        return n;
-    }();
+    /// of an AND state, in document order (bsc::machine's list).
     static constexpr auto components = [] {
-        std::array<state_id, component_count> out{};
-        std::size_t n = 0;
-        out[n++] = root;
-        for (std::size_t s = root + 1; s < state_count; ++s)
-            if (states[states[s].ancestor].status.kind == state_kind::and_state)
-                out[n++] = static_cast<state_id>(s);
+        std::array<state_id, plan::components.size()> out{};
+        for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<state_id>(plan::components[i]);
         return out;
     }();
 
