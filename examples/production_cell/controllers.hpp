@@ -26,6 +26,9 @@ namespace pcell {
 struct Off;
 struct On;
 
+// The supervisor's switch, the same in every controller: On while the manual switch is on.
+inline constexpr auto switched_on = bsc::named<"on">(bsc::guard([](auto const& c) { return c.on.get(); }));
+
 // ==== Feed belt actor ==============================================================================
 
 struct FeedBeltActor;
@@ -46,8 +49,8 @@ inline constexpr auto feed_belt_chart = bsc::make_chart<feed_belt_ctl>(
     bsc::composite<FeedBeltActor>(
         bsc::initial<Off>, bsc::composite<On>(bsc::shallow_history, bsc::initial<FbRun>, bsc::state<FbWait>,
                                              bsc::state<FbFeed>, bsc::state<FbFed>)),
-    bsc::state<Off>[bsc::named<"on">([](feed_belt_ctl const& c) { return c.on.get(); })] = bsc::state<On>,
-    bsc::state<On>[bsc::named<"!on">([](feed_belt_ctl const& c) { return !c.on.get(); })] = bsc::state<Off>,
+    bsc::state<Off>[switched_on] = bsc::state<On>,
+    bsc::state<On>[!switched_on] = bsc::state<Off>,
     bsc::state<On> + bsc::on_exit / bsc::named<"motor=0">([](feed_belt_ctl& c) { c.motor.set(false); }),
     bsc::state<FbRun> + bsc::on_entry / bsc::named<"motor=1">([](feed_belt_ctl& c) { c.motor.set(true); }),
     bsc::state<FbRun>[bsc::named<"sensor">([](feed_belt_ctl const& c) { return c.sensor.get(); })] = bsc::state<FbWait>,
@@ -95,8 +98,8 @@ inline constexpr auto table_chart = bsc::make_chart<table_ctl>(
                                bsc::composite<On>(bsc::shallow_history, bsc::initial<TbLoad>, bsc::state<TbRise>,
                                                   bsc::state<TbTurn>, bsc::state<TbUnload>, bsc::state<TbReturn>,
                                                   bsc::state<TbLower>)),
-    bsc::state<Off>[bsc::named<"on">([](table_ctl const& c) { return c.on.get(); })] = bsc::state<On>,
-    bsc::state<On>[bsc::named<"!on">([](table_ctl const& c) { return !c.on.get(); })] = bsc::state<Off>,
+    bsc::state<Off>[switched_on] = bsc::state<On>,
+    bsc::state<On>[!switched_on] = bsc::state<Off>,
     bsc::state<On> + bsc::on_exit / bsc::named<"lift=stop, turn=stop">([](table_ctl& c) {
         c.lift.set(stop);
         c.turn.set(stop);
@@ -229,8 +232,8 @@ inline constexpr auto robot_chart = bsc::make_chart<robot_ctl>(
                                         bsc::state<A2Withdraw>, bsc::state<A2Handover>, bsc::state<A2Full>,
                                         bsc::state<A2Extend>, bsc::state<A2Release>, bsc::state<A2Back>,
                                         bsc::state<A2Dropped>)))),
-    bsc::state<Off>[bsc::named<"on">([](robot_ctl const& c) { return c.on.get(); })] = bsc::state<On>,
-    bsc::state<On>[bsc::named<"!on">([](robot_ctl const& c) { return !c.on.get(); })] = bsc::state<Off>,
+    bsc::state<Off>[switched_on] = bsc::state<On>,
+    bsc::state<On>[!switched_on] = bsc::state<Off>,
     bsc::state<On> + bsc::on_exit / bsc::named<"turn=stop, arm1=stop, arm2=stop">([](robot_ctl& c) {
         c.turn.set(stop);
         c.arm1.set(stop);
@@ -411,8 +414,8 @@ constexpr auto make_press_chart() {
         bsc::composite<PressActor>(bsc::initial<Off>, bsc::composite<On>(bsc::shallow_history, bsc::initial<PsWaitLoad>,
                                                                          bsc::state<PsForge>, bsc::state<PsDown>,
                                                                          bsc::state<PsWaitUnload>, bsc::state<PsUp>)),
-        bsc::state<Off>[bsc::named<"on">([](press_ctl const& c) { return c.on.get(); })] = bsc::state<On>,
-        bsc::state<On>[bsc::named<"!on">([](press_ctl const& c) { return !c.on.get(); })] = bsc::state<Off>,
+        bsc::state<Off>[switched_on] = bsc::state<On>,
+        bsc::state<On>[!switched_on] = bsc::state<Off>,
         bsc::state<On> + bsc::on_exit / bsc::named<"plate=stop">([](press_ctl& c) { c.plate.set(stop); }),
         bsc::state<PsWaitLoad> + bsc::on_entry / bsc::named<"plate=stop, load_ready=1">([](press_ctl& c) {
             c.plate.set(stop);
@@ -468,8 +471,8 @@ inline constexpr auto deposit_belt_chart = bsc::make_chart<deposit_belt_ctl>(
     bsc::composite<DepositBeltActor>(
         bsc::initial<Off>,
         bsc::composite<On>(bsc::shallow_history, bsc::initial<DpIdle>, bsc::state<DpClear>, bsc::state<DpRun>)),
-    bsc::state<Off>[bsc::named<"on">([](deposit_belt_ctl const& c) { return c.on.get(); })] = bsc::state<On>,
-    bsc::state<On>[bsc::named<"!on">([](deposit_belt_ctl const& c) { return !c.on.get(); })] = bsc::state<Off>,
+    bsc::state<Off>[switched_on] = bsc::state<On>,
+    bsc::state<On>[!switched_on] = bsc::state<Off>,
     bsc::state<On> + bsc::on_exit / bsc::named<"motor=0, ready=0">([](deposit_belt_ctl& c) {
         c.motor.set(false);
         c.ready.set(false);

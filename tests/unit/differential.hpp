@@ -227,10 +227,6 @@ private:
     }
 
     template <class... Tags>
-    bool same_is_for(bsc::detail::type_list<Tags...>) const {
-        return ((compiled_->template is<Tags>() == table_->template is<Tags>()) && ...);
-    }
-    template <class... Tags>
     std::string is_differences(bsc::detail::type_list<Tags...>) const {
         std::string out;
         (
@@ -247,9 +243,8 @@ private:
         ++tally_.outcomes[static_cast<std::size_t>(a)];
         auto const states_c = compiled_->active_states();
         auto const states_t = table_->active_states();
-        bool same_states = states_c.size() == states_t.size();
-        for (std::size_t i = 0; same_states && i < states_c.size(); ++i) same_states = states_c[i] == states_t[i];
-        bool const same_is = same_is_for(tags{});
+        bool const same_states = states_c == states_t;
+        bool const same_is = is_differences(tags{}).empty();
         bool const same = differences.empty() && a == b && compiled_->last_outcome() == table_->last_outcome() &&
                           compiled_->now() == table_->now() &&
                           compiled_->active_configuration() == table_->active_configuration() && same_states &&
