@@ -89,21 +89,6 @@ constexpr std::size_t position_by_type(indexed<I, T> const*) {
     return I;
 }
 
-// Position of the first T in Ts..., or -1.
-template <class T, class... Ts>
-constexpr int index_in() {
-    using index = indexer<std::index_sequence_for<Ts...>, Ts...>;
-    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); }) {
-        return static_cast<int>(position_by_type<T>(static_cast<index const*>(nullptr)));
-    } else {  // absent, or present more than once (the base is ambiguous)
-        constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
-        for (std::size_t i = 0; i < sizeof...(Ts); ++i)
-            if (same[i])
-                return static_cast<int>(i);
-        return -1;
-    }
-}
-
 template <class List>
 struct indexer_of;
 template <class... Ts>
@@ -116,13 +101,26 @@ struct indexer_of<type_list<Ts...>> {
 template <class T, class List>
 constexpr int index_of_impl() {
     using index = typename indexer_of<List>::type;
-    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); })
+    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); }) {
         return static_cast<int>(position_by_type<T>(static_cast<index const*>(nullptr)));
-    else
-        return []<class... Ts>(type_list<Ts...>) { return index_in<T, Ts...>(); }(List{});
+    } else {  // absent, or present more than once (the base is ambiguous): scan
+        return []<class... Ts>(type_list<Ts...>) {
+            constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
+            for (std::size_t i = 0; i < sizeof...(Ts); ++i)
+                if (same[i])
+                    return static_cast<int>(i);
+            return -1;
+        }(List{});
+    }
 }
 template <class T, class List>
 inline constexpr int index_of = index_of_impl<T, List>();
+
+// Position of the first T in Ts..., or -1.
+template <class T, class... Ts>
+constexpr int index_in() {
+    return index_of<T, type_list<Ts...>>;
+}
 
 template <std::size_t I, class List>
 struct at_impl;
@@ -878,7 +876,8 @@ constexpr auto children_from() {
 
 template <std::size_t I, class... A>
 constexpr bool first_of_its_kind() {
-    return index_in<at<I, type_list<A...>>, A...>() == static_cast<int>(I);
+    using list = type_list<A...>;
+    return index_of<at<I, list>, list> == static_cast<int>(I);
 }
 
 template <class A>
@@ -2068,24 +2067,22 @@ struct plan {
         return out;
     }();
 
-    static constexpr bool has_timeout(int s) {
-        for (int r = 0; r < R; ++r)
-            if (table.trigger[static_cast<std::size_t>(r)] <= timeout_trigger_id(0) &&
-                table.kinds[static_cast<std::size_t>(r)] == row_kind::transition &&
-                table.source[static_cast<std::size_t>(r)] == s)
-                return true;
-        return false;
-    }
-    // States that are the source of a timeout row get a slot for the time they were entered.
+    // States that are the source of a timeout row get a slot for the time they were entered,
+    // numbered in document order.
     static constexpr auto timeout_slot = [] {
+        std::array<bool, static_cast<std::size_t>(N)> has{};
+        for (int r = 0; r < R; ++r)
+            if (table.kinds[static_cast<std::size_t>(r)] == row_kind::transition &&
+                table.trigger[static_cast<std::size_t>(r)] <= timeout_trigger_id(0))
+                has[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] = true;
         std::array<int, static_cast<std::size_t>(N)> slot{};
         int n = 0;
-        for (int s = 0; s < N; ++s) slot[static_cast<std::size_t>(s)] = has_timeout(s) ? n++ : -1;
+        for (std::size_t s = 0; s < slot.size(); ++s) slot[s] = has[s] ? n++ : -1;
         return slot;
     }();
     static constexpr int timeout_slots = [] {
         int n = 0;
-        for (int s = 0; s < N; ++s) n += has_timeout(s);
+        for (int slot : timeout_slot) n += slot >= 0;
         return n;
     }();
 
@@ -2223,14 +2220,14 @@ struct plan {
                 out[n++] = r;
         return out;
     }();
-    template <int Trigger>
-    static constexpr int zone_code(int row) {
-        int const z = zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(row)])];
-        int code = 1;
-        for (int r = 0; r < row; ++r)
-            code += is_transition_on(r, Trigger) && zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] == z;
-        return code;
-    }
+    // What a region-local selection records for a row: 1 + its position in its zone's rows.
+    template <int Trigger, int Row>
+    static constexpr int zone_code = [] {
+        constexpr auto const& rows = zone_rows<Trigger, zone[static_cast<std::size_t>(table.source[Row])]>;
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            if (rows[i] == Row) return static_cast<int>(i) + 1;
+        return 0;
+    }();
 
     // A trigger is region-local when what SCXML's conflict resolution does at run time is known
     // at compile time to keep every selected transition: no transition on it leaves a state that
@@ -2240,6 +2237,7 @@ struct plan {
     // run-time conflict check.
     template <int Trigger>
     static constexpr bool region_local = [] {
+        if (!has_parallel) return false;  // nothing to resolve: every transition fires where selected
         for (int r = 0; r < R; ++r) {
             if (!is_transition_on(r, Trigger)) continue;
             int const src = table.source[static_cast<std::size_t>(r)];
@@ -2914,6 +2912,13 @@ struct scan_policy : default_policy {
     static constexpr bool settle_eventless = false;
 };
 
+/// What one BSC execution cycle (`step(now)`) did, on either back end.
+struct step_report {
+    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
+    int transitions = 0;                ///< condition-driven transitions fired by the components
+    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
+};
+
 /// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
 /// handles is then allowed (and ignored) instead of failing to compile.
 struct allow_unhandled_t {
@@ -2963,24 +2968,17 @@ struct machine_access {
 }  // namespace bsc::detail
 
 namespace bsc::detail {
-// The event an action of a row sees: its event type, or bsc::eventless for condition-driven
-// rows; entry and exit rows see none (may_raise ignores it for them).
-template <class Row>
-struct row_event {
-    using type = eventless_trigger;
-};
-template <class S, class E, class G, class A, class T>
-struct row_event<transition_row<S, event_trigger<E>, G, A, T>> {
-    using type = E;
-};
-
 // Whether any action of the chart can raise an event; if none can, the machine has no queue.
 template <class An, class Policy>
 constexpr bool chart_may_raise() {
     using context = typename An::chart_context;
     using raise = event_queue<Policy::queue_capacity, typename An::events>;
     return []<class... Rows>(type_list<Rows...>) {
-        return (may_raise<context, typename row_event<Rows>::type, raise>(
+        // The event an action sees: the row's event, or bsc::eventless for condition-driven
+        // rows (entry and exit rows see none; may_raise ignores it for them).
+        return (may_raise<context, std::conditional_t<std::is_void_v<typename trigger_event<Rows>::type>, eventless_trigger,
+                                                      typename trigger_event<Rows>::type>,
+                          raise>(
                     static_cast<decltype(Rows::action) const*>(nullptr)) ||
                 ...);
     }(typename An::rows{});
@@ -2988,13 +2986,6 @@ constexpr bool chart_may_raise() {
 }  // namespace bsc::detail
 
 namespace bsc {
-
-/// What one BSC execution cycle did.
-struct step_report {
-    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
-    int transitions = 0;                ///< condition-driven transitions fired by the components
-    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
-};
 
 /// A running instance of a chart: its context, its active configuration and its internal
 /// event queue. Construction enters the initial configuration; dispatch(e) processes one
@@ -3402,7 +3393,7 @@ private:
         if constexpr (!topo.under_parallel(Leaf) || fires_at_selection<Trigger>)
             fire_from<Leaf, Row>(e);
         else if constexpr (plan::template region_local<Trigger>)
-            sel.chosen[static_cast<std::size_t>(plan::zone[Leaf])] = static_cast<std::uint8_t>(plan::template zone_code<Trigger>(Row));
+            sel.chosen[static_cast<std::size_t>(plan::zone[Leaf])] = static_cast<std::uint8_t>(plan::template zone_code<Trigger, Row>);
         else
             sel.add(plan::template position_of<Trigger>(Row));
         return true;
@@ -4081,6 +4072,7 @@ template <class Chart, class Policy = default_policy>
 struct tables {
     using chart_type = std::remove_cv_t<Chart>;
     using analysis = bsc::detail::analysis<chart_type>;
+    using plan = bsc::detail::plan<analysis>;
     using context_type = typename chart_type::context_type;
     using raise_type = bsc::detail::event_queue<Policy::queue_capacity, typename analysis::events>;
     using state_row_type = state_row<chart_type, raise_type>;
@@ -4163,22 +4155,6 @@ private:
 
     static constexpr state_id id(int s) { return s < 0 ? none : static_cast<state_id>(s); }
 
-    static constexpr bool has_timeout(int s) {
-        for (int r = 0; r < analysis::R; ++r)
-            if (rows.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition &&
-                rows.trigger[static_cast<std::size_t>(r)] <= bsc::detail::timeout_trigger_id(0) &&
-                rows.source[static_cast<std::size_t>(r)] == s)
-                return true;
-        return false;
-    }
-    // The sources of timeouts numbered in document order, as bsc::machine numbers them.
-    static constexpr auto timeout_slot_of = [] {
-        std::array<int, static_cast<std::size_t>(analysis::N)> slot{};
-        int n = 0;
-        for (int s = 0; s < analysis::N; ++s) slot[static_cast<std::size_t>(s)] = has_timeout(s) ? n++ : -1;
-        return slot;
-    }();
-
     template <int S>
     static constexpr state_row_type make_state_row() {
         constexpr auto i = static_cast<std::size_t>(S);
@@ -4194,7 +4170,7 @@ private:
         row.ordinal = static_cast<std::uint8_t>(topo.ordinal[i]);
         row.slot = static_cast<std::int16_t>(topo.slot[i]);
         row.end = static_cast<state_id>(topo.end[i]);
-        row.timeout_slot = static_cast<std::int16_t>(timeout_slot_of[i]);
+        row.timeout_slot = static_cast<std::int16_t>(plan::timeout_slot[i]);  // numbered as bsc::machine does
         return row;
     }
 
@@ -4223,6 +4199,9 @@ private:
     static_assert(transition_count <= 0x7fff, "bsc::table: a chart has at most 32767 transitions");
 
 public:
+    /// The position among make_chart's rows of each transition (what observers' on_row gets).
+    static constexpr auto const& transition_chart_row = chart_row;
+
     /// Number of rows of each table.
     static constexpr std::size_t state_count = static_cast<std::size_t>(analysis::N);
     static constexpr std::size_t transition_rows = transition_count;
@@ -4273,27 +4252,13 @@ public:
     }();
 
     /// How many states keep an entry time for their timeouts.
-    static constexpr std::size_t timeout_slots = [] {
-        std::size_t n = 0;
-        for (auto const& row : states) n += row.timeout_slot >= 0;
-        return n;
-    }();
+    static constexpr std::size_t timeout_slots = static_cast<std::size_t>(plan::timeout_slots);
 
     /// The components of a BSC cycle (seed 002), in the order they run: the root and every child
-    /// of an AND state, in document order.
-    static constexpr std::size_t component_count = [] {
-        std::size_t n = 1;
-        for (std::size_t s = root + 1; s < state_count; ++s)
-            n += states[states[s].ancestor].status.kind == state_kind::and_state;
-        return n;
-    }();
+    /// of an AND state, in document order (bsc::machine's list).
     static constexpr auto components = [] {
-        std::array<state_id, component_count> out{};
-        std::size_t n = 0;
-        out[n++] = root;
-        for (std::size_t s = root + 1; s < state_count; ++s)
-            if (states[states[s].ancestor].status.kind == state_kind::and_state)
-                out[n++] = static_cast<state_id>(s);
+        std::array<state_id, plan::components.size()> out{};
+        for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<state_id>(plan::components[i]);
         return out;
     }();
 
@@ -4407,16 +4372,9 @@ private:
             return nullptr;
     }
 
-    // The chart row of transition K.
-    static constexpr int chart_row(std::size_t k) {
-        for (int r = 0; r < analysis::R; ++r)
-            if (analysis::table.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition && k-- == 0)
-                return r;
-        return -1;
-    }
     template <std::size_t K>
     static constexpr transition_hook transition_hook_of() {
-        constexpr int r = chart_row(K);
+        constexpr int r = rules::transition_chart_row[K];
         if constexpr (bsc::detail::observes_transition<Observer, source_tag<r>, target_tag<r>, event_type<r>>)
             return &transition<r>;
         else
@@ -4436,12 +4394,6 @@ public:
         []<std::size_t... K>(std::index_sequence<K...>) {
             return std::array<transition_hook, rules::transition_rows>{transition_hook_of<K>()...};
         }(std::make_index_sequence<rules::transition_rows>{});
-    /// What on_row reports for each transition: its position among make_chart's rows.
-    static constexpr std::array<int, rules::transition_rows> on_row = [] {
-        std::array<int, rules::transition_rows> rows{};
-        for (std::size_t k = 0; k < rows.size(); ++k) rows[k] = chart_row(k);
-        return rows;
-    }();
 };
 
 /// The observer hooks of an observer without hooks: no table at all.
@@ -4778,7 +4730,7 @@ private:
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)])
                 h(observer_, e);
         if constexpr (bsc::detail::observes_rows<Observer>)
-            observer_.on_row(hooks::on_row[static_cast<std::size_t>(t)]);
+            observer_.on_row(rules::transition_chart_row[static_cast<std::size_t>(t)]);
         if (row.action)
             row.action(chart_, context_, e, queue_);
     }
