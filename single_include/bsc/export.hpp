@@ -36,6 +36,7 @@
 // (the names of guards and actions given with bsc::named, and the delays of timeouts, are
 // values in the chart); each format of <bsc/export.hpp> is a walk over this model.
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -293,11 +294,9 @@ inline std::vector<std::string> unique_identifiers(std::vector<std::string> cons
     std::vector<std::string> out;
     for (std::size_t i = 0; i < names.size(); ++i) {
         std::string id = identifier(names[i]);
-        for (std::size_t j = 0; j < out.size(); ++j)
-            if (out[j] == id) {
-                id += "_" + std::to_string(i);
-                break;
-            }
+        // A suffixed id may itself be taken ("A_B_2" next to "A_B" and "A<B>"): suffix again.
+        while (std::find(out.begin(), out.end(), id) != out.end())
+            id += "_" + std::to_string(i);
         out.push_back(id);
     }
     return out;

@@ -274,6 +274,9 @@ TEST_CASE("state identifiers are valid in every format and unique") {
     CHECK(names == std::vector<std::string>{"a::Idle", "b::Idle", "Busy", "A_B", "A<B>"});
     CHECK(bsc::detail::exporting::unique_identifiers(names) ==
           std::vector<std::string>{"a_Idle", "b_Idle", "Busy", "A_B", "A_B_4"});
+    // A name that looks like a suffixed id does not make two states share one.
+    CHECK(bsc::detail::exporting::unique_identifiers({"A_B_2", "A_B", "A<B>"}) ==
+          std::vector<std::string>{"A_B_2", "A_B", "A_B_2_2"});
     CHECK(bsc::detail::exporting::last_scopes("n::Pair<n::A, n::B>", 1) == "Pair<n::A, n::B>");
     CHECK(bsc::detail::exporting::last_scopes("m::n::Pair<n::A>", 2) == "n::Pair<n::A>");
 }
