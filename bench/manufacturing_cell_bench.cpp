@@ -35,8 +35,9 @@ using namespace std::chrono_literals;
 
 namespace scan {
 
-/// A BSC timer (seed 002, III.C), as docs/semantics.md states it: start() during cycle k,
-/// timing from cycle k+1, tm at the first cycle at least `limit` after that.
+/// A BSC timer (the Basic Statechart paper [BSC] in docs/references.md, section III.C), as
+/// docs/semantics.md states it: start() during cycle k, timing from cycle k+1, tm at the first
+/// cycle at least `limit` after that.
 struct timer {
     enum class phase : std::uint8_t { idle, pending, running };
     bsc::duration limit{};

@@ -1,10 +1,10 @@
 #pragma once
-// The controller of the manufacturing cell of the Basic Statechart paper (seed 002, section IV,
-// Fig. 4 to 6 and Table I): a belt brings pieces from an input buffer to position P1 of a rotary
-// table; a drill works at P2, a test station at P3, and a robot takes the piece at P4 and stores
-// it. A single-acting cylinder turns the table by 90 degrees (P1 -> P2 -> P3 -> P4) on each
-// full advance of its arm. The four devices work in parallel; the table turns only once all of
-// them have finished (the synchronisation point of Fig. 5).
+// The controller of the manufacturing cell of the Basic Statechart paper ([BSC] in
+// docs/references.md; section IV, Fig. 4 to 6 and Table I): a belt brings pieces from an input
+// buffer to position P1 of a rotary table; a drill works at P2, a test station at P3, and a robot
+// takes the piece at P4 and stores it. A single-acting cylinder turns the table by 90 degrees
+// (P1 -> P2 -> P3 -> P4) on each full advance of its arm. The four devices work in parallel; the
+// table turns only once all of them have finished (the synchronisation point of Fig. 5).
 //
 // How the paper maps to this file:
 //
@@ -115,7 +115,7 @@ struct data {
     bool E3 = false;
     bool E4 = false;
 
-    // Timers (seed 002, III.C): started by an action, timing from the next cycle on.
+    // Timers ([BSC], III.C): started by an action, timing from the next cycle on.
     bsc::timer T1{drill_time};  ///< timerT1, "tm1"
     bsc::timer T2{test_time};   ///< timerT2, "tm2"
     bsc::timer T3{robot_time};  ///< timerT3, "tm3"

@@ -2,7 +2,7 @@
 // The paper's requirements on the manufacturing cell, checked on every execution cycle of a
 // closed-loop run (controller.hpp with plant.hpp), and the closed loop itself.
 //
-// Requirements (seed 002, section IV):
+// Requirements (the Basic Statechart paper [BSC], section IV; see docs/references.md):
 //   constraint 1   each device works at most once between two table turns
 //   constraint 2   no device starts without a piece at its position (the belt: without a piece
 //                  in the input buffer and P1 free)

@@ -1,9 +1,10 @@
 #pragma once
-// A plant model of the manufacturing cell (seed 002, Fig. 4), to run the controller of
-// controller.hpp in closed loop. It is plain C++, not a chart: between two execution cycles it
-// reads the actuators the controller has published and moves time on by one scan period, then
-// presents its sensors for the next cycle. Everything is deterministic: arrivals are a list of
-// times, fixed or drawn from a seeded generator.
+// A plant model of the manufacturing cell of the Basic Statechart paper ([BSC] in
+// docs/references.md, Fig. 4), to run the controller of controller.hpp in closed loop. It is
+// plain C++, not a chart: between two execution cycles it reads the actuators the controller has
+// published and moves time on by one scan period, then presents its sensors for the next cycle.
+// Everything is deterministic: arrivals are a list of times, fixed or drawn from a seeded
+// generator.
 //
 //   input buffer   pieces arrive at given times and queue; IN: the queue is not empty
 //   belt           when the motor starts, it takes the first piece of the buffer; the piece

@@ -1,8 +1,9 @@
 #pragma once
 // The manufacturing cell as a closed, finite model for bsc::verify: the controller of
 // controller.hpp in closed loop with a small plant whose only freedom is whether a piece
-// arrives in each cycle. Seed 002 reports a reachability analysis of the controlled model
-// (deadlock-free, reinitiable, live); this is the same analysis done on the chart that runs.
+// arrives in each cycle. The Basic Statechart paper [BSC] (docs/references.md) reports a
+// reachability analysis of the controlled model (deadlock-free, reinitiable, live); this is the
+// same analysis done on the chart that runs.
 //
 // The plant here is coarser than plant.hpp (which keeps a history of every piece): positions
 // P1..P4 hold a piece or not, the belt needs `belt_cycles` cycles to carry a piece to P1, the

@@ -1,8 +1,9 @@
 #pragma once
-// The simplified Production Cell of the COMDES-II paper (seed 003): five machines process metal
-// bricks, fed by a feed belt, lifted and turned by an elevating rotary table, carried by a robot
-// with two arms into a press and out of it, and carried away by a deposit belt. Each machine
-// has a controller actor and a plant model; the actor diagram below wires them.
+// The simplified Production Cell of the COMDES-II paper ([COMDES] in docs/references.md): five
+// machines process metal bricks, fed by a feed belt, lifted and turned by an elevating rotary
+// table, carried by a robot with two arms into a press and out of it, and carried away by a
+// deposit belt. Each machine has a controller actor and a plant model; the actor diagram below
+// wires them.
 //
 // How the paper maps to the code:
 //

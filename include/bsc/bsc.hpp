@@ -13,6 +13,8 @@
 #include <bsc/dsl/row.hpp>
 #include <bsc/dsl/state.hpp>
 #include <bsc/dsl/tree.hpp>
+#include <bsc/duration.hpp>
+#include <bsc/error.hpp>
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/system.hpp>

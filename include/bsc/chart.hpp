@@ -6,31 +6,11 @@
 #include <type_traits>
 #include <utility>
 
+#include <bsc/error.hpp>
 #include <bsc/checks/checks.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/dsl/tree.hpp>
-
-namespace bsc::error {
-
-template <class Argument>
-struct not_a_row {
-    static_assert(detail::dependent_false<Argument>,
-                  "bsc: after the state tree, every argument of make_chart must be a row: "
-                  "state<S> + event<E> [guard] / action = state<T>, state<S> [guard] = state<T>, "
-                  "state<S> + on_entry / action, or state<S> + on_exit / action");
-    static constexpr bool value = false;
-};
-
-template <class Root>
-struct root_must_be_composite {
-    static_assert(detail::dependent_false<Root>,
-                  "bsc: the first argument of make_chart is the root of the state tree and must be a "
-                  "bsc::composite<...>(...) or bsc::parallel<...>(...)");
-    static constexpr bool value = false;
-};
-
-}  // namespace bsc::error
 
 namespace bsc::detail {
 template <class... Rows>

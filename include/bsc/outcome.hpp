@@ -30,9 +30,10 @@ struct default_policy {
     static constexpr bool settle_eventless = true;
 };
 
-/// The limits of a machine driven by BSC execution cycles (seed 002): eventless transitions
-/// are condition-driven and run only in step(), so a chart whose components keep reacting to
-/// each other (a PLC scan loop) neither livelocks at construction nor in dispatch.
+/// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],
+/// docs/references.md): eventless transitions are condition-driven and run only in step(), so a
+/// chart whose components keep reacting to each other (a PLC scan loop) neither livelocks at
+/// construction nor in dispatch.
 struct scan_policy : default_policy {
     static constexpr bool settle_eventless = false;
 };

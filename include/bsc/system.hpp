@@ -1,7 +1,8 @@
 #pragma once
-// Systems of actors (seed 003; seed 001's modules): several machines — controllers and plant
-// models — wired by typed signals from output channels to input channels, stepped in a declared
-// order with the time given from outside. The wiring is one list, the system's actor diagram.
+// Systems of actors (the COMDES-II paper [COMDES]; the modules of the ECA paper [ECA]; see
+// docs/references.md): several machines — controllers and plant models — wired by typed signals
+// from output channels to input channels, stepped in a declared order with the time given from
+// outside. The wiring is one list, the system's actor diagram.
 
 #include <cstddef>
 #include <type_traits>

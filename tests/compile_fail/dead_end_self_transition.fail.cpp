@@ -1,5 +1,6 @@
 // EXPECT: (bsc::error::dead_end_state<cf::Estop>.*bsc: dead end|bsc: dead end.*bsc::error::dead_end_state<cf::Estop>)
-// Estop's only transition re-enters Estop: the machine can never come out (seed 000, Figure 5).
+// Estop's only transition re-enters Estop: the machine can never come out (the machine-tool
+// paper [MCS] in docs/references.md, Figure 5).
 #include <bsc/bsc.hpp>
 
 namespace cf {

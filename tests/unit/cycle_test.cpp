@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include <bsc/bsc.hpp>
+#include "inside.hpp"
 
 using namespace std::chrono_literals;
 
@@ -244,10 +245,10 @@ TEST_CASE("an inout channel is read as latched and written for the next cycle") 
     bsc::inout<int> ch{1};
     ch.set(5);
     CHECK(ch.get() == 1);
-    ch.commit();
+    inside::commit(ch);
     CHECK(ch.get() == 5);
     ch.set(6);
-    ch.latch();
+    inside::latch(ch);
     CHECK(ch.get() == 6);
 }
 

@@ -19,6 +19,7 @@
 
 #include <bsc/bsc.hpp>
 #include <bsc/table/engine.hpp>
+#include "inside.hpp"
 
 namespace bsc_diff {
 
@@ -117,12 +118,11 @@ public:
     using compiled_type = bsc::machine<chart_type, policy, recorder>;
     using table_type = bsc::table::machine<chart_type, policy, recorder>;
     using events = typename compiled_type::event_types;
-    using tags = typename bsc::detail::analysis<chart_type>::tags;
+    using tags = typename inside::model<chart_type>::tags;
 
     static_assert(std::is_same_v<typename compiled_type::configuration_type, typename table_type::configuration_type>);
     // The compiled machine drops the queue of a chart none of whose actions can raise.
-    static_assert(std::is_same_v<typename compiled_type::queue_type, typename table_type::queue_type> ||
-                  compiled_type::queue_type::capacity() == 0);
+    static_assert(compiled_type::queue_capacity == table_type::queue_capacity || compiled_type::queue_capacity == 0);
     static_assert(std::is_same_v<events, typename table_type::event_types>);
 
     /// Number of choices step() maps a random number onto: the chart's events, an unhandled
@@ -207,7 +207,7 @@ private:
         if constexpr (I < events::size) {
             if (choice != I)
                 return dispatch_at<I + 1>(choice, n);
-            using E = bsc::detail::at<I, events>;
+            using E = inside::at<I, events>;
             E const e = make_event<E>(n);
             auto const a = compiled_->dispatch(e);
             auto const b = table_->dispatch(e);
@@ -227,7 +227,7 @@ private:
     }
 
     template <class... Tags>
-    std::string is_differences(bsc::detail::type_list<Tags...>) const {
+    std::string is_differences(inside::type_list<Tags...>) const {
         std::string out;
         (
             [&] {
@@ -249,7 +249,7 @@ private:
                           compiled_->now() == table_->now() &&
                           compiled_->active_configuration() == table_->active_configuration() && same_states &&
                           compiled_->halted() == table_->halted() &&
-                          compiled_->queue().size() == table_->queue().size() &&
+                          inside::queue(*compiled_).size() == inside::queue(*table_).size() &&
                           same_context(compiled_->context(), table_->context()) && compiled_trace_ == table_trace_ &&
                           same_is;
         std::string report;
@@ -267,7 +267,7 @@ private:
                 diff += " active_states";
             if (compiled_->halted() != table_->halted())
                 diff += " halted";
-            if (compiled_->queue().size() != table_->queue().size())
+            if (inside::queue(*compiled_).size() != inside::queue(*table_).size())
                 diff += " queue";
             if (!same_context(compiled_->context(), table_->context()))
                 diff += " context";

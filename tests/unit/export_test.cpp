@@ -23,6 +23,7 @@
 #include "../../examples/manufacturing_cell/controller.hpp"
 #include "../../examples/mcs/mcs.hpp"
 #include "../../examples/production_cell/controllers.hpp"
+#include "inside.hpp"
 
 namespace export_test {
 
@@ -97,7 +98,7 @@ std::size_t count(std::string const& text, std::string_view part) {
 /// the exports use: names by bsc::name_of, transitions "Source --> Target" by position.
 template <class Chart>
 struct expected {
-    using an = bsc::detail::analysis<Chart>;
+    using model = inside::model<Chart>;
     std::vector<std::string> states;
     std::vector<std::pair<std::string, std::string>> transitions;  // with a target
     int internal = 0;
@@ -106,25 +107,25 @@ struct expected {
     int history = 0;
 
     expected() {
-        states = []<class... Tags>(bsc::detail::type_list<Tags...>) {
+        states = []<class... Tags>(inside::type_list<Tags...>) {
             return std::vector<std::string>{std::string(bsc::name_of<Tags>)...};
-        }(typename an::tags{});
+        }(typename model::tags{});
         states.erase(states.begin());  // the implicit top
-        for (int s = 1; s < an::N; ++s) {
+        for (int s = 1; s < model::N; ++s) {
             auto const i = static_cast<std::size_t>(s);
-            composites += an::topo.kinds[i] == bsc::detail::kind::composite ? 1 : 0;
-            parallels += an::topo.kinds[i] == bsc::detail::kind::parallel ? 1 : 0;
-            history += an::topo.hist[i] != bsc::detail::history::none ? 1 : 0;
+            composites += model::tree.kinds[i] == inside::kind::composite ? 1 : 0;
+            parallels += model::tree.kinds[i] == inside::kind::parallel ? 1 : 0;
+            history += model::tree.hist[i] != inside::history::none ? 1 : 0;
         }
-        for (int r = 0; r < an::R; ++r) {
+        for (int r = 0; r < model::R; ++r) {
             auto const i = static_cast<std::size_t>(r);
-            if (an::table.kinds[i] != bsc::detail::row_kind::transition) continue;
-            if (an::table.target[i] < 0) {
+            if (model::rows.kinds[i] != inside::row_kind::transition) continue;
+            if (model::rows.target[i] < 0) {
                 ++internal;
                 continue;
             }
-            transitions.emplace_back(states[static_cast<std::size_t>(an::table.source[i] - 1)],
-                                     states[static_cast<std::size_t>(an::table.target[i] - 1)]);
+            transitions.emplace_back(states[static_cast<std::size_t>(model::rows.source[i] - 1)],
+                                     states[static_cast<std::size_t>(model::rows.target[i] - 1)]);
         }
     }
 };
@@ -183,9 +184,9 @@ void check_example(Chart const& chart) {
 TEST_CASE("a named guard or action behaves as the unnamed one and composes the same way") {
     using namespace export_test;
     // Naming keeps the wrapped kind: guards compose with !, && and ||, actions with `,`.
-    static_assert(bsc::detail::bsc_guard<std::remove_cvref_t<decltype(ready)>>);
-    static_assert(bsc::detail::bsc_action<std::remove_cvref_t<decltype(count_up)>>);
-    static_assert(!bsc::detail::bsc_guard<std::remove_cvref_t<decltype(reset)>>);
+    static_assert(inside::is_bsc_guard<std::remove_cvref_t<decltype(ready)>>);
+    static_assert(inside::is_bsc_action<std::remove_cvref_t<decltype(count_up)>>);
+    static_assert(!inside::is_bsc_guard<std::remove_cvref_t<decltype(reset)>>);
     // The name given as a template argument takes no room.
     constexpr auto lambda = [](ctx const& c) { return c.ready; };
     static_assert(sizeof(bsc::named<"x">(bsc::guard(lambda))) == sizeof(bsc::guard(lambda)));
@@ -252,16 +253,16 @@ TEST_CASE("named guards and actions appear by name; unnamed ones as guard and ac
     CHECK(has(mermaid, "[*] --> L1\n"));
     CHECK(count(mermaid, "        --\n") == 1);
     // Unguarded, actionless eventless transitions have no label; a guard with no named part is [guard].
-    CHECK(bsc::detail::exporting::guard_label(bsc::guard([] { return true; })) == "guard");
-    CHECK(bsc::detail::exporting::guard_label(!below_ten && below_ten) == "guard");
-    CHECK(bsc::detail::exporting::guard_label((ready || positive) && !(ready && positive)) ==
+    CHECK(inside::guard_label(bsc::guard([] { return true; })) == "guard");
+    CHECK(inside::guard_label(!below_ten && below_ten) == "guard");
+    CHECK(inside::guard_label((ready || positive) && !(ready && positive)) ==
           "(ready || positive) && !(ready && positive)");
-    CHECK(bsc::detail::exporting::action_label(bsc::seq([] {}, [] {})) == "action");
-    CHECK(bsc::detail::exporting::action_label(bsc::named<"boot">(bsc::seq([] {}, [] {}))) == "boot");
+    CHECK(inside::action_label(bsc::seq([] {}, [] {})) == "action");
+    CHECK(inside::action_label(bsc::named<"boot">(bsc::seq([] {}, [] {}))) == "boot");
 }
 
 TEST_CASE("state identifiers are valid in every format and unique") {
-    using bsc::detail::exporting::identifier;
+    using inside::identifier;
     CHECK(identifier("Slot<1>") == "Slot_1");
     CHECK(identifier("Pair<ns::A, 2>") == "Pair_ns_A_2");
     CHECK(identifier("3rd") == "s_3rd");
@@ -269,16 +270,16 @@ TEST_CASE("state identifiers are valid in every format and unique") {
     CHECK(identifier("state") == "state_");
     CHECK(identifier("<>") == "unnamed");
     // Two states with one unqualified name are told apart by their enclosing scopes.
-    auto const names = bsc::detail::exporting::unique_names({"Idle", "Idle", "Busy", "A_B", "A<B>"},
+    auto const names = inside::unique_names({"Idle", "Idle", "Busy", "A_B", "A<B>"},
                                                             {"x::a::Idle", "x::b::Idle", "x::Busy", "A_B", "A<B>"});
     CHECK(names == std::vector<std::string>{"a::Idle", "b::Idle", "Busy", "A_B", "A<B>"});
-    CHECK(bsc::detail::exporting::unique_identifiers(names) ==
+    CHECK(inside::unique_identifiers(names) ==
           std::vector<std::string>{"a_Idle", "b_Idle", "Busy", "A_B", "A_B_4"});
     // A name that looks like a suffixed id does not make two states share one.
-    CHECK(bsc::detail::exporting::unique_identifiers({"A_B_2", "A_B", "A<B>"}) ==
+    CHECK(inside::unique_identifiers({"A_B_2", "A_B", "A<B>"}) ==
           std::vector<std::string>{"A_B_2", "A_B", "A_B_2_2"});
-    CHECK(bsc::detail::exporting::last_scopes("n::Pair<n::A, n::B>", 1) == "Pair<n::A, n::B>");
-    CHECK(bsc::detail::exporting::last_scopes("m::n::Pair<n::A>", 2) == "n::Pair<n::A>");
+    CHECK(inside::last_scopes("n::Pair<n::A, n::B>", 1) == "Pair<n::A, n::B>");
+    CHECK(inside::last_scopes("m::n::Pair<n::A>", 2) == "n::Pair<n::A>");
 }
 
 TEST_CASE("Graphviz: clusters, regions as dashed clusters, edges to and from clusters") {

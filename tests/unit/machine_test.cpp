@@ -8,6 +8,7 @@
 #include <typeinfo>
 
 #include "trace.hpp"
+#include "inside.hpp"
 
 namespace mt {
 struct go {};
@@ -233,9 +234,9 @@ inline constexpr auto raising = bsc::make_chart<log_ctx>(
 }  // namespace mt2
 
 TEST_CASE("transitions that stay inside their regions fire without run-time conflict resolution, in SCXML order") {
-    using plan = bsc::detail::plan<bsc::detail::analysis<std::remove_cv_t<decltype(mt2::wide)>>>;
-    constexpr int tick = bsc::detail::analysis<std::remove_cv_t<decltype(mt2::wide)>>::trigger_of<mt2::tick>;
-    constexpr int go = bsc::detail::analysis<std::remove_cv_t<decltype(mt2::wide)>>::trigger_of<mt2::go>;
+    using plan = inside::plan<decltype(mt2::wide)>;
+    constexpr int tick = inside::trigger_of<decltype(mt2::wide), mt2::tick>;
+    constexpr int go = inside::trigger_of<decltype(mt2::wide), mt2::go>;
     static_assert(plan::region_local<tick>);
     static_assert(!plan::region_local<go>);  // the transition to W leaves the parallel state
 
@@ -269,8 +270,8 @@ TEST_CASE("transitions that stay inside their regions fire without run-time conf
 TEST_CASE("a chart none of whose actions can raise carries no event queue") {
     using quiet = bsc::machine<decltype(mt2::wide)>;
     using noisy = bsc::machine<decltype(mt2::raising)>;
-    static_assert(quiet::queue_type::capacity() == 0);
-    static_assert(noisy::queue_type::capacity() == bsc::default_policy::queue_capacity);
+    static_assert(quiet::queue_capacity == 0);
+    static_assert(noisy::queue_capacity == bsc::default_policy::queue_capacity);
     bsc::machine m{mt2::raising};
     CHECK(m.dispatch(mt2::tick{}) == bsc::outcome::consumed);
     CHECK(m.context().log == "1");  // the raised go was processed
@@ -321,12 +322,10 @@ inline constexpr auto plain = bsc::make_chart<log_ctx>(bsc::parallel<W>(plain_re
 }  // namespace mt2
 
 TEST_CASE("without guards, entry or exit actions, parallel transitions fire as they are selected, with the same effects") {
-    using an = bsc::detail::analysis<std::remove_cv_t<decltype(mt2::plain)>>;
-    using plan = bsc::detail::plan<an>;
-    static_assert(plan::fires_at_selection<an::trigger_of<mt2::tick>>);
-    static_assert(plan::fires_at_selection<an::trigger_of<mt2::reset>>);
-    using wide_an = bsc::detail::analysis<std::remove_cv_t<decltype(mt2::wide)>>;
-    static_assert(!bsc::detail::plan<wide_an>::fires_at_selection<wide_an::trigger_of<mt2::tick>>);  // entry/exit notes
+    using plan = inside::plan<decltype(mt2::plain)>;
+    static_assert(plan::fires_at_selection<inside::trigger_of<decltype(mt2::plain), mt2::tick>>);
+    static_assert(plan::fires_at_selection<inside::trigger_of<decltype(mt2::plain), mt2::reset>>);
+    static_assert(!inside::plan<decltype(mt2::wide)>::fires_at_selection<inside::trigger_of<decltype(mt2::wide), mt2::tick>>);  // entry/exit notes
     bsc::machine fast{mt2::plain};
     bsc::table::machine reference{mt2::plain};
     std::uint32_t seed = 7;

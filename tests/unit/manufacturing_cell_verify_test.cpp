@@ -1,5 +1,6 @@
 // Exploring the manufacturing cell (examples/manufacturing_cell/verification.hpp): the
-// controller in closed loop with a finite plant, every arrival pattern at once.
+// controller in closed loop with a finite plant, every arrival pattern at once. [BSC] is the
+// Basic Statechart paper (docs/references.md).
 
 #include <doctest/doctest.h>
 
@@ -20,7 +21,7 @@ inline constexpr auto g13_without_constraint_3 =
 inline constexpr auto broken = cell::make_controller(cell::g4, g13_without_constraint_3);
 }  // namespace
 
-TEST_CASE("manufacturing cell: deadlock-free, reinitiable and live, as seed 002 reports") {
+TEST_CASE("manufacturing cell: deadlock-free, reinitiable and live, as the BSC paper reports") {
     bsc::verify::explorer ex{cell::finite::model(cell::chart)};
     auto const& st = ex.run();
     REQUIRE(st.complete);
@@ -29,7 +30,7 @@ TEST_CASE("manufacturing cell: deadlock-free, reinitiable and live, as seed 002 
                                    << " s");
     CHECK(st.key_bytes <= 64);
     CHECK(bsc::verify::deadlock_free(ex).holds());
-    // Reinitiability as seed 002 means it, over configurations: the components' states and an
+    // Reinitiability as [BSC] means it, over configurations: the components' states and an
     // empty cell come back. The exact initial valuation does not: in the empty cell E1..E4
     // alternate for ever, and the start (BeltOff with E1..E4 all false) is never met again.
     CHECK(bsc::verify::reinitiable(ex).fails());

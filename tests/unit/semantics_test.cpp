@@ -7,6 +7,7 @@
 #include <string>
 
 #include "trace.hpp"
+#include "inside.hpp"
 
 using bsc_test::trace_observer;
 
@@ -366,7 +367,7 @@ TEST_CASE_TEMPLATE("raised events are queued and processed in order after the cu
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(m.context().log == "go enter B ping pong back");
     CHECK(m.template is<A>());
-    CHECK(m.queue().empty());
+    CHECK(inside::queue(m).empty());
 }
 
 namespace sem {
@@ -397,7 +398,7 @@ TEST_CASE_TEMPLATE("events that keep raising each other are stopped and reported
         bsc::state<B> + bsc::event<back> = bsc::state<A>);
     machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK(m.dispatch(ping{}) == bsc::outcome::livelock);
-    CHECK(m.queue().empty());
+    CHECK(inside::queue(m).empty());
     CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
 }
 

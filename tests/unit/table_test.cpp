@@ -11,6 +11,7 @@
 #include <bsc/table/engine.hpp>
 
 #include "trace.hpp"
+#include "inside.hpp"
 
 using bsc_test::trace_observer;
 
@@ -71,7 +72,8 @@ struct tiny_queue : bsc::default_policy {
 
 // ---- the tables ---------------------------------------------------------------------------------
 
-// The part of the Mode Control Supervisor that Figures 12 and 13 of seed 000 show.
+// The part of the Mode Control Supervisor that Figures 12 and 13 of the machine-tool paper
+// [MCS] (docs/references.md) show.
 namespace tbl::mcs_like {
 struct on_p {};
 struct off_p {};
@@ -125,9 +127,9 @@ inline constexpr auto chart = [] {
 }();
 using tables = bsc::table::tables<decltype(chart)>;
 template <class S>
-constexpr bsc::table::state_id id = static_cast<bsc::table::state_id>(tables::analysis::index_of_state<S>);
+constexpr bsc::table::state_id id = static_cast<bsc::table::state_id>(tables::state_of<S>);
 template <class E>
-constexpr bsc::table::event_id event_id = static_cast<bsc::table::event_id>(tables::analysis::trigger_of<E>);
+constexpr bsc::table::event_id event_id = static_cast<bsc::table::event_id>(tables::event_of<E>);
 
 // Whether a function pointer column is set. Checked at run time: GCC does not fold the
 // comparison of a function's address with null in a constant expression under sanitizers.
@@ -145,26 +147,26 @@ TEST_CASE("table: the topology table of the MCS holds the rows of Figure 12") {
     constexpr auto const& st = tables::states;
     static_assert(st.size() == tables::state_count && tables::state_count == 10);
     // Row 0 is the implicit top: the ancestor of the root, as 0 is MCS's ancestor in Figure 12.
-    static_assert(st[0].status.kind == state_kind::top && st[0].descendant == id<MCS>);
+    static_assert(st[0].status.kind == state_kind::top && st[0].first_child == id<MCS>);
     // { MCS, Off, 0, 0, _noHist, Show, Show }
     static_assert(id<MCS> == 1 && st[1].state == 1);
-    static_assert(st[id<MCS>].descendant == id<Off> && st[id<MCS>].sibling == none && st[id<MCS>].ancestor == 0);
-    static_assert(st[id<MCS>].status == bsc::table::state_status{state_kind::or_state, history_kind::none});
+    static_assert(st[id<MCS>].first_child == id<Off> && st[id<MCS>].next_sibling == none && st[id<MCS>].parent == 0);
+    static_assert(st[id<MCS>].status == bsc::table::state_status{state_kind::composite, history_kind::none});
     CHECK((set(st[id<MCS>].entry) && set(st[id<MCS>].exit)));
     // { Off, 0, Estop, MCS, _noHist, Show, Show }, { Estop, 0, On, MCS, _noHist, Show, Show }
-    static_assert(st[id<Off>].descendant == none && st[id<Off>].sibling == id<Estop> && st[id<Off>].ancestor == id<MCS>);
+    static_assert(st[id<Off>].first_child == none && st[id<Off>].next_sibling == id<Estop> && st[id<Off>].parent == id<MCS>);
     static_assert(st[id<Off>].status.kind == state_kind::basic);
-    static_assert(st[id<Estop>].sibling == id<On> && st[id<On>].sibling == none);
+    static_assert(st[id<Estop>].next_sibling == id<On> && st[id<On>].next_sibling == none);
     // { On, Auto, 0, MCS, _Hist, Show, Show }, { Auto, MEM, Manual, On, _noHist, Show, 0 }
-    static_assert(st[id<On>].descendant == id<Auto> && st[id<On>].ancestor == id<MCS>);
-    static_assert(st[id<On>].status == bsc::table::state_status{state_kind::or_state, history_kind::deep});
-    static_assert(st[id<Auto>].descendant == id<MEM> && st[id<Auto>].sibling == id<Manual>);
+    static_assert(st[id<On>].first_child == id<Auto> && st[id<On>].parent == id<MCS>);
+    static_assert(st[id<On>].status == bsc::table::state_status{state_kind::composite, history_kind::deep});
+    static_assert(st[id<Auto>].first_child == id<MEM> && st[id<Auto>].next_sibling == id<Manual>);
     CHECK((set(st[id<Auto>].entry) && !set(st[id<Auto>].exit)));
-    static_assert(st[id<MEM>].ancestor == id<Auto>);
+    static_assert(st[id<MEM>].parent == id<Auto>);
     CHECK((!set(st[id<MEM>].entry) && set(st[id<MEM>].exit)));
     // The Entry and Exit columns call Show.
     panel p;
-    bsc::table::machine<decltype(chart)>::queue_type raise;
+    inside::queue_type<bsc::table::machine<decltype(chart)>> raise;
     st[id<On>].entry(chart, p, raise);
     st[id<MEM>].exit(chart, p, raise);
     CHECK(p.shown == "+On-MEM");
@@ -201,7 +203,7 @@ TEST_CASE("table: the transition table of the MCS holds the rows of Figure 13") 
     panel p;
     off_p const off{};
     reset_p const reset{};
-    bsc::table::machine<decltype(chart)>::queue_type raise;
+    inside::queue_type<bsc::table::machine<decltype(chart)>> raise;
     p.error = 1;
     CHECK_FALSE(t[2].guard(chart, p, &off));
     t[1].action(chart, p, &reset, raise);
@@ -274,7 +276,7 @@ TEST_CASE("table: the same types and the same configuration bytes as bsc::machin
     using table = bsc::table::machine<decltype(shared_chart)>;
     static_assert(std::is_same_v<compiled::configuration_type, table::configuration_type>);
     // No action of this chart can raise, so the compiled machine carries no queue at all.
-    static_assert(compiled::queue_type::capacity() == 0 && sizeof(compiled) < sizeof(table));
+    static_assert(compiled::queue_capacity == 0 && sizeof(compiled) < sizeof(table));
     static_assert(std::is_same_v<compiled::event_types, table::event_types>);
     static_assert(std::is_same_v<compiled::context_type, table::context_type>);
     CHECK(sizeof(table::configuration_type) == 4);
@@ -354,7 +356,7 @@ inline constexpr auto chart = [] {
 }();
 using tables = bsc::table::tables<decltype(chart)>;
 template <class S>
-constexpr bsc::table::state_id id = static_cast<bsc::table::state_id>(tables::analysis::index_of_state<S>);
+constexpr bsc::table::state_id id = static_cast<bsc::table::state_id>(tables::state_of<S>);
 }  // namespace tbl::timed
 
 TEST_CASE("table: timeout rows read their delay from the chart; their origins keep an entry time; the components") {

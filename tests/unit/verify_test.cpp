@@ -7,6 +7,7 @@
 
 #include <bsc/bsc.hpp>
 #include <bsc/verify.hpp>
+#include "inside.hpp"
 
 using namespace std::chrono_literals;
 
@@ -195,12 +196,12 @@ struct carrier {
 }  // namespace ver
 
 TEST_CASE("the codec encodes channels of aggregates member by member, and decodes them back") {
-    using codec = bsc::verify::detail::codec<ver::carrier>;
+    using codec = inside::codec<ver::carrier>;
     // 2 x (8 + 1) bits per item channel, 2 bits for the flag: 38 bits.
     CHECK(codec::key_size == 5);
     ver::carrier c{};
     c.incoming.set({7, true});
-    c.incoming.latch();
+    inside::latch(c.incoming);
     c.incoming.set({9, false});
     c.outgoing.set({3, true});
     c.flag.set(true);

@@ -2,7 +2,7 @@
 // Determinism: two unguarded transitions on the same source and trigger conflict; a
 // transition after an unguarded one on the same source and trigger is shadowed.
 
-#include <bsc/detail/topology.hpp>
+#include <bsc/model/chart_model.hpp>
 
 namespace bsc::detail {
 

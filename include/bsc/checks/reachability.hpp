@@ -1,7 +1,7 @@
 #pragma once
 // Reachability (structure only, guards ignored) and dead ends.
 
-#include <bsc/detail/topology.hpp>
+#include <bsc/model/chart_model.hpp>
 
 namespace bsc::detail {
 

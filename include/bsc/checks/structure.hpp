@@ -2,7 +2,7 @@
 // Structural checks: every state declared once, every row's states in the tree, exactly one
 // initial child per composite, no transition between orthogonal regions.
 
-#include <bsc/detail/topology.hpp>
+#include <bsc/model/chart_model.hpp>
 
 namespace bsc::detail {
 

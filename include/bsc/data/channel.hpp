@@ -1,9 +1,12 @@
 #pragma once
-// Data channels of a Basic Statechart (seed 002): the context's members through which a chart
-// talks to its environment and to other charts. Plain members of the context are the chart's
-// internal variables: an action's write is visible at once to every later guard.
+// Data channels of a Basic Statechart (the Basic Statechart paper [BSC], docs/references.md):
+// the context's members through which a chart talks to its environment and to other charts.
+// Plain members of the context are the chart's internal variables: an action's write is visible
+// at once to every later guard.
 
 #include <type_traits>
+
+#include <bsc/detail/access.hpp>
 
 namespace bsc::detail {
 // Lets the machine find channels among the context's members. Equal to any other, so that
@@ -30,11 +33,12 @@ public:
     constexpr void set(T value) { next_ = value; }
     /// The value that the next cycle will latch.
     constexpr T const& pending() const { return next_; }
-    constexpr void latch() { now_ = next_; }
-    constexpr void commit() {}
     friend constexpr bool operator==(input const&, input const&) = default;
 
 private:
+    friend struct detail::access;  // the machine latches and commits
+    constexpr void latch() { now_ = next_; }
+    constexpr void commit() {}
     T next_{};
     T now_{};
 };
@@ -52,16 +56,17 @@ public:
     /// Written by actions; published at the end of the cycle.
     constexpr void set(T value) { next_ = value; }
     constexpr T const& pending() const { return next_; }
-    constexpr void latch() {}
-    constexpr void commit() { now_ = next_; }
     friend constexpr bool operator==(output const&, output const&) = default;
 
 private:
+    friend struct detail::access;  // the machine latches and commits
+    constexpr void latch() {}
+    constexpr void commit() { now_ = next_; }
     T next_{};
     T now_{};
 };
 
-/// A channel that is both input and output (seed 002 allows it): written by the environment or
+/// A channel that is both input and output ([BSC] allows it): written by the environment or
 /// by actions, read as the value latched at the start of the cycle; writes take effect at the
 /// next cycle boundary.
 template <class T>
@@ -73,11 +78,12 @@ public:
     constexpr operator T const&() const { return now_; }  // NOLINT
     constexpr void set(T value) { next_ = value; }
     constexpr T const& pending() const { return next_; }
-    constexpr void latch() { now_ = next_; }
-    constexpr void commit() { now_ = next_; }
     friend constexpr bool operator==(inout const&, inout const&) = default;
 
 private:
+    friend struct detail::access;  // the machine latches and commits
+    constexpr void latch() { now_ = next_; }
+    constexpr void commit() { now_ = next_; }
     T next_{};
     T now_{};
 };

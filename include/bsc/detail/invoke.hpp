@@ -6,28 +6,8 @@
 #include <type_traits>
 #include <utility>
 
+#include <bsc/error.hpp>
 #include <bsc/detail/meta.hpp>
-
-namespace bsc::error {
-
-template <class Callable>
-struct guard_signature_not_supported {
-    static_assert(detail::dependent_false<Callable>,
-                  "bsc: a guard must be callable as g(context const&, event const&), g(context const&) or g(), "
-                  "and return something convertible to bool; see the Callable type in this error");
-    static constexpr bool value = false;
-};
-
-template <class Callable>
-struct action_signature_not_supported {
-    static_assert(detail::dependent_false<Callable>,
-                  "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
-                  "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
-                  "Callable type in this error");
-    static constexpr bool value = false;
-};
-
-}  // namespace bsc::error
 
 namespace bsc::detail {
 

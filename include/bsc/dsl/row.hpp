@@ -5,7 +5,7 @@
 #include <type_traits>
 #include <utility>
 
-#include <bsc/data/timer.hpp>
+#include <bsc/duration.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
 

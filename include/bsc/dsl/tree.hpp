@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include <bsc/error.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/dsl/state.hpp>
 
@@ -136,27 +137,6 @@ struct composite_children<type_list<Declared...>, std::index_sequence<I...>, A..
 };
 
 }  // namespace bsc::detail
-
-namespace bsc::error {
-
-template <class State, class Argument>
-struct not_a_state_declaration {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: an argument of this state's declaration is not a state or marker; a composite takes "
-                  "bsc::state, bsc::final_state, bsc::composite, bsc::parallel, bsc::initial, "
-                  "bsc::shallow_history and bsc::deep_history; a parallel state takes states only");
-    static constexpr bool value = false;
-};
-
-template <class State>
-struct conflicting_history_markers {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: this composite state has more than one history marker; keep one of "
-                  "bsc::shallow_history or bsc::deep_history");
-    static constexpr bool value = false;
-};
-
-}  // namespace bsc::error
 
 namespace bsc {
 

@@ -15,7 +15,7 @@
 
 #include <bsc/export/model.hpp>
 
-namespace bsc::detail::exporting {
+namespace bsc::detail {
 
 /// A double-quoted DOT string.
 inline std::string dot_quoted(std::string_view text) {
@@ -30,20 +30,20 @@ inline std::string dot_quoted(std::string_view text) {
     return out + "\"";
 }
 
-inline std::string dot_cluster(chart_model const& m, int s) { return dot_quoted("cluster_" + m[s].id); }
-inline std::string dot_anchor(chart_model const& m, int s) { return dot_quoted(m[s].id + ":anchor"); }
+inline std::string dot_cluster(diagram const& m, int s) { return dot_quoted("cluster_" + m[s].id); }
+inline std::string dot_anchor(diagram const& m, int s) { return dot_quoted(m[s].id + ":anchor"); }
 /// The node an edge to or from state s attaches to.
-inline std::string dot_node(chart_model const& m, int s) {
+inline std::string dot_node(diagram const& m, int s) {
     return m[s].is_leaf() ? dot_quoted(m[s].id) : dot_anchor(m, s);
 }
 
-inline std::string dot_label(chart_model const& m, int s) {
+inline std::string dot_label(diagram const& m, int s) {
     std::string label = m[s].label;
     for (auto const& line : activity_lines(m, s)) label += "\n" + line;
     return label;
 }
 
-inline void dot_state(chart_model const& m, int s, int level, bool region, std::string& out) {
+inline void dot_state(diagram const& m, int s, int level, bool region, std::string& out) {
     auto const& st = m[s];
     auto const pad = indent(level);
     if (st.is_leaf()) {
@@ -77,7 +77,7 @@ inline void dot_state(chart_model const& m, int s, int level, bool region, std::
     out += pad + "}\n";
 }
 
-inline std::string to_dot(chart_model const& m) {
+inline std::string to_dot(diagram const& m) {
     std::string out = "digraph " + dot_quoted(m[0].label) + " {\n";
     out += "    compound=true;\n";
     out += "    fontname=\"Helvetica\"; fontsize=11;\n";
@@ -103,14 +103,14 @@ inline std::string to_dot(chart_model const& m) {
     return out;
 }
 
-}  // namespace bsc::detail::exporting
+}  // namespace bsc::detail
 
 namespace bsc {
 
 /// The chart as a Graphviz digraph with clusters for composite and parallel states.
 template <class Chart>
 std::string to_dot(Chart const& chart) {
-    return detail::exporting::to_dot(detail::exporting::model_of(chart));
+    return detail::to_dot(detail::model_of(chart));
 }
 
 }  // namespace bsc

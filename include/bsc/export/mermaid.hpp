@@ -15,7 +15,7 @@
 
 #include <bsc/export/model.hpp>
 
-namespace bsc::detail::exporting {
+namespace bsc::detail {
 
 /// Text inside a quoted Mermaid label or after `:`; `;` would end the statement and `<`
 /// would start HTML.
@@ -35,7 +35,7 @@ inline std::string mermaid_text(std::string_view text) {
     return out;
 }
 
-inline void mermaid_state(chart_model const& m, int s, int level, std::string& out) {
+inline void mermaid_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const activities = activity_lines(m, s);
     if (st.is_leaf()) {
@@ -61,7 +61,7 @@ inline void mermaid_state(chart_model const& m, int s, int level, std::string& o
     out += indent(level) + "}\n";
 }
 
-inline std::string to_mermaid(chart_model const& m) {
+inline std::string to_mermaid(diagram const& m) {
     std::string out = "stateDiagram-v2\n";
     out += indent(1) + "[*] --> " + m[0].id + "\n";
     mermaid_state(m, 0, 1, out);
@@ -75,14 +75,14 @@ inline std::string to_mermaid(chart_model const& m) {
     return out;
 }
 
-}  // namespace bsc::detail::exporting
+}  // namespace bsc::detail
 
 namespace bsc {
 
 /// The chart as a Mermaid state diagram (`stateDiagram-v2`).
 template <class Chart>
 std::string to_mermaid(Chart const& chart) {
-    return detail::exporting::to_mermaid(detail::exporting::model_of(chart));
+    return detail::to_mermaid(detail::model_of(chart));
 }
 
 }  // namespace bsc

@@ -19,14 +19,14 @@
 #include <boost/hana/at.hpp>
 #include <boost/hana/basic_tuple.hpp>
 
-#include <bsc/detail/topology.hpp>
+#include <bsc/model/chart_model.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/dsl/tree.hpp>
 
-namespace bsc::detail::exporting {
+namespace bsc::detail {
 
 // ---- Labels of guards and actions -------------------------------------------------------------
 
@@ -181,19 +181,19 @@ struct state_info {
     std::string label;  ///< the state's name: bsc::name_of<S>, with scopes where two states share it
     kind node_kind = kind::basic;
     history hist = history::none;
-    int parent = -1;  ///< index in chart_model::states; -1 for the root
+    int parent = -1;  ///< index in diagram::states; -1 for the root
     std::vector<int> children;
     int initial = -1;  ///< the initial child of a composite state
     std::vector<std::string> entry;  ///< labels of the entry actions, in declaration order
     std::vector<std::string> exit;   ///< labels of the exit actions
-    std::vector<int> internal;       ///< internal transitions (indices in chart_model::transitions)
+    std::vector<int> internal;       ///< internal transitions (indices in diagram::transitions)
 
     bool is_leaf() const { return node_kind == kind::basic || node_kind == kind::final_state; }
 };
 
 struct transition_info {
     int row = 0;     ///< position of the row in make_chart
-    int source = 0;  ///< index in chart_model::states
+    int source = 0;  ///< index in diagram::states
     int target = -1;  ///< -1: an internal transition (no target)
     trigger_kind trigger = trigger_kind::event;
     std::string event;  ///< the event's name, "after(3s)" for a timeout, empty if eventless
@@ -210,7 +210,7 @@ struct transition_info {
     }
 };
 
-struct chart_model {
+struct diagram {
     std::vector<state_info> states;  ///< document order; states[0] is the root
     std::vector<transition_info> transitions;  ///< declaration order, internal ones included
 
@@ -278,7 +278,7 @@ inline std::vector<std::string> unique_identifiers(std::vector<std::string> cons
 }
 
 template <class Row>
-void add_row(chart_model& m, Row const& row, int index, int source) {
+void add_row(diagram& m, Row const& row, int index, int source) {
     if constexpr (is_entry_row<Row>) {
         m.states[static_cast<std::size_t>(source)].entry.push_back(action_label(row.action));
     } else if constexpr (is_exit_row<Row>) {
@@ -307,37 +307,37 @@ void add_row(chart_model& m, Row const& row, int index, int source) {
 
 /// The model of a chart (a bsc::make_chart result).
 template <class Chart>
-chart_model model_of(Chart const& chart) {
-    using an = analysis<std::remove_cv_t<Chart>>;
-    constexpr auto const& topo = an::topo;
-    chart_model m;
-    auto const names = state_names<typename an::tags>::unqualified();
-    auto const qualified = state_names<typename an::tags>::qualified();
+diagram model_of(Chart const& chart) {
+    using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
+    constexpr auto const& tree = model::tree;
+    diagram m;
+    auto const names = state_names<typename model::tags>::unqualified();
+    auto const qualified = state_names<typename model::tags>::qualified();
     // Index 0 of the analysis is the implicit top above the root; the model starts at the root.
     std::vector<std::string_view> const own(names.begin() + 1, names.end());
     std::vector<std::string_view> const own_qualified(qualified.begin() + 1, qualified.end());
     auto const labels = unique_names(own, own_qualified);
     auto const ids = unique_identifiers(labels);
-    for (int s = 1; s < an::N; ++s) {
+    for (int s = 1; s < model::N; ++s) {
         auto const i = static_cast<std::size_t>(s);
         state_info info;
         info.id = ids[i - 1];
         info.label = labels[i - 1];
-        info.node_kind = topo.kinds[i];
-        info.hist = topo.hist[i];
-        info.parent = topo.parent[i] - 1;
-        info.initial = topo.initial[i] >= 0 ? topo.initial[i] - 1 : -1;
-        for (int c = topo.first_child[i]; c >= 0; c = topo.next_sibling[static_cast<std::size_t>(c)])
+        info.node_kind = tree.kinds[i];
+        info.hist = tree.hist[i];
+        info.parent = tree.parent[i] - 1;
+        info.initial = tree.initial[i] >= 0 ? tree.initial[i] - 1 : -1;
+        for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
             info.children.push_back(c - 1);
         m.states.push_back(std::move(info));
     }
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (add_row(m, boost::hana::at_c<I>(chart.rows), static_cast<int>(I), an::table.source[I] - 1), ...);
-    }(std::make_index_sequence<static_cast<std::size_t>(an::R)>{});
+        (add_row(m, boost::hana::at_c<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), ...);
+    }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
     for (std::size_t k = 0; k < m.transitions.size(); ++k) {
         auto& t = m.transitions[k];
-        t.target = an::table.target[static_cast<std::size_t>(t.row)] >= 0
-                       ? an::table.target[static_cast<std::size_t>(t.row)] - 1
+        t.target = model::rows.target[static_cast<std::size_t>(t.row)] >= 0
+                       ? model::rows.target[static_cast<std::size_t>(t.row)] - 1
                        : -1;
         if (t.target < 0) m.states[static_cast<std::size_t>(t.source)].internal.push_back(static_cast<int>(k));
     }
@@ -377,7 +377,7 @@ inline std::string history_suffix(history h) {
 
 /// Lines that describe a state besides its name: "entry / a", "exit / b", and its internal
 /// transitions "event [guard] / action".
-inline std::vector<std::string> activity_lines(chart_model const& m, int s) {
+inline std::vector<std::string> activity_lines(diagram const& m, int s) {
     std::vector<std::string> lines;
     for (auto const& a : m[s].entry) lines.push_back("entry / " + a);
     for (auto const& a : m[s].exit) lines.push_back("exit / " + a);
@@ -385,4 +385,4 @@ inline std::vector<std::string> activity_lines(chart_model const& m, int s) {
     return lines;
 }
 
-}  // namespace bsc::detail::exporting
+}  // namespace bsc::detail

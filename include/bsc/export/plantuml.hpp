@@ -13,7 +13,7 @@
 
 #include <bsc/export/model.hpp>
 
-namespace bsc::detail::exporting {
+namespace bsc::detail {
 
 /// Text of a quoted PlantUML name or of a label after `:`.
 inline std::string plantuml_text(std::string_view text) {
@@ -29,7 +29,7 @@ inline std::string plantuml_text(std::string_view text) {
     return out;
 }
 
-inline void plantuml_state(chart_model const& m, int s, int level, std::string& out) {
+inline void plantuml_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const pad = indent(level);
     out += pad + "state \"" + plantuml_text(st.label + history_suffix(st.hist)) + "\" as " + st.id;
@@ -50,7 +50,7 @@ inline void plantuml_state(chart_model const& m, int s, int level, std::string& 
     if (st.node_kind == kind::final_state) out += pad + st.id + " --> [*]\n";
 }
 
-inline std::string to_plantuml(chart_model const& m) {
+inline std::string to_plantuml(diagram const& m) {
     std::string out = "@startuml\nhide empty description\n";
     out += "[*] --> " + m[0].id + "\n";
     plantuml_state(m, 0, 0, out);
@@ -64,14 +64,14 @@ inline std::string to_plantuml(chart_model const& m) {
     return out + "@enduml\n";
 }
 
-}  // namespace bsc::detail::exporting
+}  // namespace bsc::detail
 
 namespace bsc {
 
 /// The chart as a PlantUML state diagram.
 template <class Chart>
 std::string to_plantuml(Chart const& chart) {
-    return detail::exporting::to_plantuml(detail::exporting::model_of(chart));
+    return detail::to_plantuml(detail::model_of(chart));
 }
 
 }  // namespace bsc

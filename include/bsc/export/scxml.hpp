@@ -22,7 +22,7 @@
 
 #include <bsc/export/model.hpp>
 
-namespace bsc::detail::exporting {
+namespace bsc::detail {
 
 /// Text inside an XML comment, which may not contain "--".
 inline std::string scxml_comment(std::string_view text) {
@@ -34,7 +34,7 @@ inline std::string scxml_script(std::string_view action) {
 }
 
 /// The id of the <history> pseudo-state of a composite: "<id>_history", unique among the states.
-inline std::string history_id(chart_model const& m, int s) {
+inline std::string history_id(diagram const& m, int s) {
     std::string id = m[s].id + "_history";
     for (bool clash = true; clash;) {
         clash = false;
@@ -47,7 +47,7 @@ inline std::string history_id(chart_model const& m, int s) {
     return id;
 }
 
-inline void scxml_transition(chart_model const& m, transition_info const& t, int level, std::string& out) {
+inline void scxml_transition(diagram const& m, transition_info const& t, int level, std::string& out) {
     auto const pad = indent(level);
     if (t.trigger == trigger_kind::timeout)
         out += pad + "<!-- " + t.event + ": a timeout, enabled once " + scxml_comment(m[t.source].label) +
@@ -68,7 +68,7 @@ inline void scxml_transition(chart_model const& m, transition_info const& t, int
         out += ">\n" + pad + "    " + scxml_script(t.action) + "\n" + pad + "</transition>\n";
 }
 
-inline void scxml_state(chart_model const& m, int s, int level, std::string& out) {
+inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const pad = indent(level);
     bool has_transitions = false;
@@ -101,7 +101,7 @@ inline void scxml_state(chart_model const& m, int s, int level, std::string& out
     out += pad + "</" + element + ">\n";
 }
 
-inline std::string to_scxml(chart_model const& m) {
+inline std::string to_scxml(diagram const& m) {
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     out += "<!-- The chart " + scxml_comment(m[0].label) +
            ": cond names the guard, the <script> comments name the actions. -->\n";
@@ -111,14 +111,14 @@ inline std::string to_scxml(chart_model const& m) {
     return out + "</scxml>\n";
 }
 
-}  // namespace bsc::detail::exporting
+}  // namespace bsc::detail
 
 namespace bsc {
 
 /// The chart as a W3C SCXML document.
 template <class Chart>
 std::string to_scxml(Chart const& chart) {
-    return detail::exporting::to_scxml(detail::exporting::model_of(chart));
+    return detail::to_scxml(detail::model_of(chart));
 }
 
 }  // namespace bsc

@@ -1,12 +1,11 @@
 #pragma once
-// The operation rules of the table-driven runtime: a chart as the two constant tables of
-// seed 000 (section 3.3.1), the topology table (the paper's BSTATE, one row per state) and
-// the transition table (BTRANS, one row per transition). The chart's guards, actions, entry
-// and exit actions are reached through plain function pointers: one small generated function
-// ("thunk") per row, which receives the chart object and the context and calls the row's
-// callable. Everything here is computed by the compiler; bsc::table::machine interprets it.
-// For the BSC execution cycle (seed 002) the tables also list the components, give each
-// timeout its delay and each state that a timeout leaves a slot for the time it was entered.
+// The operation rules of the table-driven runtime: a chart as the two constant tables of the
+// machine-tool paper [MCS] (docs/references.md, section 3.3.1), the topology table (the paper's
+// BSTATE, one row per state) and the transition table (BTRANS, one row per transition). The
+// chart's guards, actions, entry and exit actions are reached through plain function pointers:
+// one small generated function ("thunk") per row, which receives the chart object and the
+// context and calls the row's callable. Everything here is computed by the compiler from the
+// chart model; bsc::table::machine interprets it.
 
 #include <array>
 #include <boost/hana/at.hpp>
@@ -17,23 +16,22 @@
 #include <utility>
 
 #include <bsc/chart.hpp>
-#include <bsc/compiled/plan.hpp>
-#include <bsc/detail/event_queue.hpp>
 #include <bsc/detail/meta.hpp>
-#include <bsc/detail/topology.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/dsl/row.hpp>
+#include <bsc/model/layout.hpp>
 #include <bsc/outcome.hpp>
+#include <bsc/runtime/event_queue.hpp>
 
 namespace bsc::table {
 
 /// A state's number: its row in the topology table. Row 0 is the implicit top above the
 /// chart's root (the paper's ancestor 0 of MCS); since the top is nobody's child or sibling,
-/// 0 also means "none" in the descendant, sibling, initial and `to` columns.
+/// 0 also means "none" in the first_child, next_sibling, initial and `to` columns.
 using state_id = std::uint16_t;
 inline constexpr state_id none = 0;
 
-/// An event's number: the position of its type in detail::analysis<Chart>::events.
+/// An event's number: the position of its type in the machine's event_types.
 using event_id = std::int16_t;
 inline constexpr event_id eventless_id = -1;  ///< a transition without an event
 inline constexpr event_id timeout_id = -2;    ///< a timeout transition, taken by a BSC cycle only
@@ -41,13 +39,13 @@ inline constexpr event_id timeout_id = -2;    ///< a timeout transition, taken b
 /// Eventless and timeout transitions are condition-driven: the ones a BSC cycle considers.
 constexpr bool is_condition(event_id event) { return event < 0; }
 
-/// The paper's status column, split in two: the kind of state and its history.
+/// The paper's status column, in the words of the DSL: the kind of state and its history.
 enum class state_kind : std::uint8_t {
     top,          ///< the implicit state above the root (row 0)
     basic,        ///< an atomic state
     final_state,  ///< an atomic state that ends its parent (the root: the machine halts)
-    or_state,     ///< a composite: exactly one child active (the paper's hierarchical state)
-    and_state,    ///< a parallel state: all children active (the paper's concurrent state)
+    composite,    ///< exactly one child active (the paper's hierarchical, or OR, state)
+    parallel,     ///< all children active (the paper's concurrent, or AND, state)
 };
 enum class history_kind : std::uint8_t { none, shallow, deep };
 
@@ -57,26 +55,27 @@ struct state_status {
     friend constexpr bool operator==(state_status, state_status) = default;
 };
 
-/// One row of the topology table (the paper's BSTATE, Figure 7), then the columns the engine
-/// would otherwise recompute by walking the tree.
+/// One row of the topology table (the paper's BSTATE, Figure 7, whose descendant, sibling and
+/// ancestor columns are first_child, next_sibling and parent here), then the columns the
+/// engine would otherwise recompute by walking the tree.
 template <class Chart, class Raise>
 struct state_row {
     using context_type = typename Chart::context_type;
     /// Runs the state's entry (or exit) actions, in declaration order.
     using state_action = void (*)(Chart const& chart, context_type& context, Raise& raise);
 
-    state_id state = none;       ///< this row's number
-    state_id descendant = none;  ///< first child in document order
-    state_id sibling = none;     ///< next sibling in document order
-    state_id ancestor = none;    ///< parent (0, the top, for the root)
+    state_id state = none;         ///< this row's number
+    state_id first_child = none;   ///< first child in document order (BSTATE's descendant)
+    state_id next_sibling = none;  ///< next sibling in document order (BSTATE's sibling)
+    state_id parent = none;        ///< parent, 0 (the top) for the root (BSTATE's ancestor)
     state_status status{};
     state_action entry = nullptr;  ///< null: no entry action
     state_action exit = nullptr;   ///< null: no exit action
 
     // Derived columns.
-    state_id initial = none;   ///< default child of an OR state
+    state_id initial = none;   ///< default child of a composite
     std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
-    std::int16_t slot = -1;    ///< the byte of the configuration an OR state owns, -1 for others
+    std::int16_t slot = -1;    ///< the byte of the configuration a composite owns, -1 for others
     state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
     std::int16_t timeout_slot = -1;  ///< where the time it was entered is kept if a timeout leaves it, else -1
 };
@@ -93,50 +92,14 @@ struct transition_row {
     /// delay is read from the chart like a guard.
     using delay_fn = duration (*)(Chart const& chart);
 
-    state_id from = none;          ///< origin state
-    event_id event = eventless_id; ///< trigger, or `eventless_id` / `timeout_id`
-    state_id to = none;            ///< destination state; none: an internal transition
-    guard_fn guard = nullptr;      ///< null: unguarded
-    action_fn action = nullptr;    ///< null: no action
-    state_id domain = none;        ///< the transition domain: the state whose active descendants it exits
-    delay_fn delay = nullptr;      ///< a timeout's delay; null for the other transitions
+    state_id from = none;           ///< origin state
+    event_id event = eventless_id;  ///< trigger, or `eventless_id` / `timeout_id`
+    state_id to = none;             ///< destination state; none: an internal transition
+    guard_fn guard = nullptr;       ///< null: unguarded
+    action_fn action = nullptr;     ///< null: no action
+    state_id domain = none;         ///< the transition domain: the state whose active descendants it exits
+    delay_fn delay = nullptr;       ///< a timeout's delay; null for the other transitions
 };
-
-namespace detail_tables {
-
-template <class R>
-constexpr bool has_action() {
-    using A = std::remove_cvref_t<decltype(std::declval<R const&>().action)>;
-    return !std::is_same_v<A, bsc::detail::no_action>;
-}
-
-// The event type a transition row's guard and action receive.
-template <class R>
-using event_type_of =
-    std::conditional_t<std::is_void_v<typename bsc::detail::trigger_event<R>::type>, bsc::eventless,
-                       typename bsc::detail::trigger_event<R>::type>;
-
-constexpr state_kind kind_of(bsc::detail::kind k) {
-    switch (k) {
-        case bsc::detail::kind::top: return state_kind::top;
-        case bsc::detail::kind::basic: return state_kind::basic;
-        case bsc::detail::kind::final_state: return state_kind::final_state;
-        case bsc::detail::kind::composite: return state_kind::or_state;
-        case bsc::detail::kind::parallel: return state_kind::and_state;
-    }
-    return state_kind::basic;
-}
-
-constexpr history_kind history_of(bsc::detail::history h) {
-    switch (h) {
-        case bsc::detail::history::none: return history_kind::none;
-        case bsc::detail::history::shallow: return history_kind::shallow;
-        case bsc::detail::history::deep: return history_kind::deep;
-    }
-    return history_kind::none;
-}
-
-}  // namespace detail_tables
 
 /// The operation rules of `Chart`: its topology table `states` and transition table
 /// `transitions`, plus the indexes the engine uses to read them. `Policy` only fixes the
@@ -144,73 +107,43 @@ constexpr history_kind history_of(bsc::detail::history h) {
 template <class Chart, class Policy = default_policy>
 struct tables {
     using chart_type = std::remove_cv_t<Chart>;
-    using analysis = bsc::detail::analysis<chart_type>;
-    using plan = bsc::detail::plan<analysis>;
     using context_type = typename chart_type::context_type;
-    using raise_type = bsc::detail::event_queue<Policy::queue_capacity, typename analysis::events>;
+    using raise_type = bsc::detail::event_queue<Policy::queue_capacity, typename bsc::detail::chart_model<chart_type>::events>;
     using state_row_type = state_row<chart_type, raise_type>;
     using transition_row_type = transition_row<chart_type, raise_type>;
 
 private:
-    static constexpr auto const& topo = analysis::topo;
-    static constexpr auto const& rows = analysis::table;
+    using model = bsc::detail::chart_model<chart_type>;
+    using layout = bsc::detail::chart_layout<model>;
+    using row_kind = bsc::detail::row_kind;
+    static constexpr auto const& tree = model::tree;
+    static constexpr auto const& rows = model::rows;
 
-    static constexpr std::size_t transition_count = [] {
-        std::size_t n = 0;
-        for (int r = 0; r < analysis::R; ++r)
-            n += rows.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition;
-        return n;
-    }();
-
-    // The chart row of each transition, in declaration order.
-    static constexpr auto chart_row = [] {
-        std::array<int, transition_count> out{};
-        std::size_t n = 0;
-        for (int r = 0; r < analysis::R; ++r)
-            if (rows.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition)
-                out[n++] = r;
-        return out;
-    }();
-
-    static constexpr int count_rows(bsc::detail::row_kind k, int state) {
-        int n = 0;
-        for (int r = 0; r < analysis::R; ++r)
-            n += rows.kinds[static_cast<std::size_t>(r)] == k && rows.source[static_cast<std::size_t>(r)] == state;
-        return n;
-    }
-
-    // The entry or exit rows of a state, in declaration order.
-    template <bsc::detail::row_kind K, int S>
-    static constexpr auto rows_of = [] {
-        std::array<int, static_cast<std::size_t>(count_rows(K, S))> out{};
-        std::size_t n = 0;
-        for (int r = 0; r < analysis::R; ++r)
-            if (rows.kinds[static_cast<std::size_t>(r)] == K && rows.source[static_cast<std::size_t>(r)] == S)
-                out[n++] = r;
-        return out;
-    }();
+    // The event type a transition row's guard and action receive.
+    template <int Row>
+    using event_type_of = std::conditional_t<
+        std::is_void_v<typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>,
+        bsc::eventless, typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>;
 
     // ---- the thunks: one per state and per transition ---------------------------------------
-    template <bsc::detail::row_kind K, int S>
+    template <row_kind K, int S>
     static void state_thunk(chart_type const& chart, context_type& context, raise_type& raise) {
-        constexpr auto const& list = rows_of<K, S>;
+        constexpr auto const& actions = layout::template rows_of<K, S>;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (boost::hana::at_c<static_cast<std::size_t>(list[I])>(chart.rows).action(context, raise), ...);
-        }(std::make_index_sequence<list.size()>{});
+            (boost::hana::at_c<static_cast<std::size_t>(actions[I])>(chart.rows).action(context, raise), ...);
+        }(std::make_index_sequence<actions.size()>{});
     }
 
     template <int Row>
     static bool guard_thunk(chart_type const& chart, context_type const& context, void const* event) {
-        using E = detail_tables::event_type_of<typename analysis::template row_at<Row>>;
-        return static_cast<bool>(
-            boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).guard(context, *static_cast<E const*>(event)));
+        return static_cast<bool>(boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows)
+                                     .guard(context, *static_cast<event_type_of<Row> const*>(event)));
     }
 
     template <int Row>
     static void action_thunk(chart_type const& chart, context_type& context, void const* event, raise_type& raise) {
-        using E = detail_tables::event_type_of<typename analysis::template row_at<Row>>;
-        boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).action(context, *static_cast<E const*>(event),
-                                                                            raise);
+        boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows)
+            .action(context, *static_cast<event_type_of<Row> const*>(event), raise);
     }
 
     template <int Row>
@@ -218,9 +151,9 @@ private:
         return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay;
     }
 
-    template <bsc::detail::row_kind K, int S>
+    template <row_kind K, int S>
     static constexpr typename state_row_type::state_action state_action_of() {
-        if constexpr (rows_of<K, S>.size() == 0)
+        if constexpr (layout::template rows_of<K, S>.size() == 0)
             return nullptr;
         else
             return &state_thunk<K, S>;
@@ -228,39 +161,59 @@ private:
 
     static constexpr state_id id(int s) { return s < 0 ? none : static_cast<state_id>(s); }
 
+    static constexpr state_kind kind_of(bsc::detail::kind k) {
+        switch (k) {
+            case bsc::detail::kind::top: return state_kind::top;
+            case bsc::detail::kind::basic: return state_kind::basic;
+            case bsc::detail::kind::final_state: return state_kind::final_state;
+            case bsc::detail::kind::composite: return state_kind::composite;
+            case bsc::detail::kind::parallel: return state_kind::parallel;
+        }
+        return state_kind::basic;
+    }
+    static constexpr history_kind history_of(bsc::detail::history h) {
+        switch (h) {
+            case bsc::detail::history::none: return history_kind::none;
+            case bsc::detail::history::shallow: return history_kind::shallow;
+            case bsc::detail::history::deep: return history_kind::deep;
+        }
+        return history_kind::none;
+    }
+
     template <int S>
     static constexpr state_row_type make_state_row() {
         constexpr auto i = static_cast<std::size_t>(S);
         state_row_type row{};
         row.state = static_cast<state_id>(S);
-        row.descendant = id(topo.first_child[i]);
-        row.sibling = id(topo.next_sibling[i]);
-        row.ancestor = id(topo.parent[i]);
-        row.status = {detail_tables::kind_of(topo.kinds[i]), detail_tables::history_of(topo.hist[i])};
-        row.entry = state_action_of<bsc::detail::row_kind::entry, S>();
-        row.exit = state_action_of<bsc::detail::row_kind::exit, S>();
-        row.initial = id(topo.initial[i]);
-        row.ordinal = static_cast<std::uint8_t>(topo.ordinal[i]);
-        row.slot = static_cast<std::int16_t>(topo.slot[i]);
-        row.end = static_cast<state_id>(topo.end[i]);
-        row.timeout_slot = static_cast<std::int16_t>(plan::timeout_slot[i]);  // numbered as bsc::machine does
+        row.first_child = id(tree.first_child[i]);
+        row.next_sibling = id(tree.next_sibling[i]);
+        row.parent = id(tree.parent[i]);
+        row.status = {kind_of(tree.kinds[i]), history_of(tree.hist[i])};
+        row.entry = state_action_of<row_kind::entry, S>();
+        row.exit = state_action_of<row_kind::exit, S>();
+        row.initial = id(tree.initial[i]);
+        row.ordinal = static_cast<std::uint8_t>(tree.ordinal[i]);
+        row.slot = static_cast<std::int16_t>(tree.slot[i]);
+        row.end = static_cast<state_id>(tree.end[i]);
+        row.timeout_slot = static_cast<std::int16_t>(layout::timeout_slot[i]);
         return row;
     }
 
     template <std::size_t K>
     static constexpr transition_row_type make_transition_row() {
-        constexpr int r = chart_row[K];
+        constexpr int r = layout::transition_rows[K];
         constexpr auto i = static_cast<std::size_t>(r);
-        using R = typename analysis::template row_at<r>;
+        using R = typename model::template row_at<r>;
         transition_row_type row{};
         row.from = id(rows.source[i]);
-        row.event = rows.trigger[i] >= 0                            ? static_cast<event_id>(rows.trigger[i])
+        row.event = rows.trigger[i] >= 0                             ? static_cast<event_id>(rows.trigger[i])
                     : rows.trigger[i] == bsc::detail::eventless_id ? eventless_id
-                                                                    : timeout_id;
+                                                                     : timeout_id;
         row.to = id(rows.target[i]);
         if constexpr (rows.guarded[i])
             row.guard = &guard_thunk<r>;
-        if constexpr (detail_tables::has_action<R>())
+        if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(std::declval<R const&>().action)>,
+                                      bsc::detail::no_action>)
             row.action = &action_thunk<r>;
         row.domain = id(rows.domain[i]);
         if constexpr (bsc::detail::is_timeout_row<R>)
@@ -268,22 +221,29 @@ private:
         return row;
     }
 
-    static_assert(analysis::N <= 0xffff, "bsc::table: a chart has at most 65535 states");
+    static constexpr std::size_t transition_count = layout::transition_rows.size();
+    static_assert(model::N <= 0xffff, "bsc::table: a chart has at most 65535 states");
     static_assert(transition_count <= 0x7fff, "bsc::table: a chart has at most 32767 transitions");
 
 public:
     /// The position among make_chart's rows of each transition (what observers' on_row gets).
-    static constexpr auto const& transition_chart_row = chart_row;
+    static constexpr auto const& transition_chart_row = layout::transition_rows;
 
     /// Number of rows of each table.
-    static constexpr std::size_t state_count = static_cast<std::size_t>(analysis::N);
+    static constexpr std::size_t state_count = static_cast<std::size_t>(model::N);
     static constexpr std::size_t transition_rows = transition_count;
     /// Number of event types (valid event ids are 0 .. event_count - 1).
-    static constexpr std::size_t event_count = analysis::events::size;
-    /// Bytes of the active configuration: one per OR state.
-    static constexpr std::size_t slots = static_cast<std::size_t>(topo.slots);
+    static constexpr std::size_t event_count = model::events::size;
+    /// Bytes of the active configuration: one per composite.
+    static constexpr std::size_t slots = static_cast<std::size_t>(tree.slots);
     /// The root of the chart (row 1; row 0 is the implicit top).
-    static constexpr state_id root = 1;
+    static constexpr state_id root = layout::root;
+    /// The number of state S (its row in `states`).
+    template <class S>
+    static constexpr state_id state_of = id(model::template index_of_state<S>);
+    /// The number of event type E (-1 if no transition takes it).
+    template <class E>
+    static constexpr event_id event_of = static_cast<event_id>(model::template trigger_of<E>);
 
     /// The topology table (BSTATE), in document order: row s describes state s.
     static constexpr std::array<state_row_type, state_count> states =
@@ -300,7 +260,7 @@ public:
     /// The unqualified names of the states, by row (row 0, the top, has an internal name).
     static constexpr auto names = []<class... Tags>(bsc::detail::type_list<Tags...>) {
         return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename analysis::tags{});
+    }(typename model::tags{});
 
     /// The transitions leaving each state, as a list threaded through the transition table in
     /// declaration order: first_out[s] is the first, next_out[t] the one after t (-1: no more).
@@ -325,62 +285,32 @@ public:
     }();
 
     /// How many states keep an entry time for their timeouts.
-    static constexpr std::size_t timeout_slots = static_cast<std::size_t>(plan::timeout_slots);
-
-    /// The components of a BSC cycle (seed 002), in the order they run: the root and every child
-    /// of an AND state, in document order (bsc::machine's list).
-    static constexpr auto components = [] {
-        std::array<state_id, plan::components.size()> out{};
-        for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<state_id>(plan::components[i]);
-        return out;
-    }();
+    static constexpr std::size_t timeout_slots = static_cast<std::size_t>(layout::timeout_slots);
 
     /// True if some transition is triggered by `event` (an event id, or `eventless_id`).
     static constexpr bool handles(event_id event) {
         for (auto const& t : transitions)
-            if (t.event == event)
-                return true;
+            if (t.event == event) return true;
         return false;
     }
+
     static constexpr bool has_eventless = handles(eventless_id);
     /// True if a BSC cycle has anything to consider: an eventless or timeout transition.
     static constexpr bool has_conditions = has_eventless || handles(timeout_id);
 
+    /// The components of a BSC cycle, in the order they run: the root and every child of a
+    /// parallel state, in document order.
+    static constexpr auto components = [] {
+        std::array<state_id, layout::components.size()> out{};
+        for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<state_id>(layout::components[i]);
+        return out;
+    }();
+
+    /// The configuration every composite starts from: its initial child.
+    static constexpr auto const& initial_bytes = layout::initial_bytes;
+
     /// How many basic states can be active at once: the most transitions one event can select.
-    static constexpr std::size_t max_active_leaves = [] {
-        std::array<std::size_t, state_count> leaves{};
-        for (std::size_t s = state_count; s-- > 0;) {
-            auto const& row = states[s];
-            if (row.descendant == none) {
-                leaves[s] = 1;
-                continue;
-            }
-            std::size_t n = 0;
-            for (state_id c = row.descendant; c != none; c = states[c].sibling)
-                n = row.status.kind == state_kind::and_state ? n + leaves[c] : (leaves[c] > n ? leaves[c] : n);
-            leaves[s] = n;
-        }
-        return leaves[0];
-    }();
-
-    /// True if a final state is a child of the root, so that the machine can halt.
-    static constexpr bool can_halt = [] {
-        if (states[root].status.kind != state_kind::or_state)
-            return false;
-        for (state_id c = states[root].descendant; c != none; c = states[c].sibling)
-            if (states[c].status.kind == state_kind::final_state)
-                return true;
-        return false;
-    }();
-
-    /// The configuration every OR state starts from: its initial child.
-    static constexpr auto initial_bytes = [] {
-        std::array<std::uint8_t, slots> bytes{};
-        for (auto const& row : states)
-            if (row.slot >= 0)
-                bytes[static_cast<std::size_t>(row.slot)] = states[row.initial].ordinal;
-        return bytes;
-    }();
+    static constexpr std::size_t max_active_leaves = static_cast<std::size_t>(layout::max_active_leaves());
 
     /// a is d or one of its ancestors.
     static constexpr bool contains(state_id a, state_id d) { return a <= d && d < states[a].end; }

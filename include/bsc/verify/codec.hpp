@@ -18,17 +18,14 @@
 #include <bsc/data/timer.hpp>
 #include <bsc/detail/fields.hpp>
 
-namespace bsc::verify::detail {
-
-using bsc::detail::machine_access;
-using bsc::detail::timer_access;
+namespace bsc::detail {
 
 template <class T>
 inline constexpr bool is_machine = false;
 template <class C, class P, class O>
 inline constexpr bool is_machine<bsc::machine<C, P, O>> = true;
 
-}  // namespace bsc::verify::detail
+}  // namespace bsc::detail
 
 namespace bsc::verify {
 /// Specialize as true for a context member type that does not influence behaviour (a log, a
@@ -38,7 +35,7 @@ template <class T>
 inline constexpr bool unexplored = false;
 }  // namespace bsc::verify
 
-namespace bsc::verify::detail {
+namespace bsc::detail {
 
 template <class T>
 constexpr bool is_aggregate_class() {
@@ -126,10 +123,10 @@ constexpr unsigned bits_for(int values) {
 // The bits of each composite's byte, by slot: enough for its number of children.
 template <class M>
 constexpr auto slot_bits() {
-    using an = bsc::detail::analysis<typename M::chart_type>;
-    std::array<unsigned, static_cast<std::size_t>(an::topo.slots)> bits{};
-    for (std::size_t s = 0; s < static_cast<std::size_t>(an::N); ++s)
-        if (an::topo.slot[s] >= 0) bits[static_cast<std::size_t>(an::topo.slot[s])] = bits_for(an::topo.child_count[s]);
+    using model = bsc::detail::chart_model<typename M::chart_type>;
+    std::array<unsigned, static_cast<std::size_t>(model::tree.slots)> bits{};
+    for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s)
+        if (model::tree.slot[s] >= 0) bits[static_cast<std::size_t>(model::tree.slot[s])] = bits_for(model::tree.child_count[s]);
     return bits;
 }
 
@@ -150,13 +147,13 @@ inline constexpr unsigned cycle_bits = 16;  // periods since a timer or timeout 
 
 template <class T>
 constexpr std::size_t encoded_bits() {
-    if constexpr (unexplored<T>) {
+    if constexpr (verify::unexplored<T>) {
         return 0;
     } else if constexpr (is_machine<T>) {
         std::size_t config = 0;
         for (unsigned b : slot_bits<T>()) config += b;
         constexpr std::size_t timeouts =
-            std::tuple_size_v<std::remove_reference_t<decltype(machine_access::armed(std::declval<T&>()))>>;
+            std::tuple_size_v<std::remove_reference_t<decltype(access::armed(std::declval<T&>()))>>;
         return config + encoded_bits<typename T::context_type>() + cycle_bits * timeouts;
     } else if constexpr (std::is_same_v<T, timer>) {
         return 2 + 1 + cycle_bits;  // phase, expired, periods since timing began
@@ -204,26 +201,26 @@ V decode_value(bit_reader& in) {
 
 template <class T>
 void encode(T const& value, bit_writer& out, time_frame frame) {
-    if constexpr (unexplored<T>) {
+    if constexpr (verify::unexplored<T>) {
         return;
     } else if constexpr (is_machine<T>) {
         auto& m = const_cast<T&>(value);
-        auto const cfg = machine_access::canonical_configuration(m);
+        auto const cfg = access::canonical_configuration(m);
         constexpr auto bits = slot_bits<T>();
         for (std::size_t k = 0; k < bits.size(); ++k) out.put(cfg.active[k], bits[k]);
-        time_frame const own{machine_access::clock(m), frame.period};
+        time_frame const own{access::clock(m), frame.period};
         encode(m.context(), out, own);
-        auto const& armed = machine_access::armed(m);
+        auto const& armed = access::armed(m);
         for (std::size_t i = 0; i < armed.size(); ++i)
-            out.put(machine_access::timeout_armed(m, i)
-                        ? own.cycles(own.clock - armed[i], machine_access::longest_timeout(m))
+            out.put(access::timeout_armed(m, i)
+                        ? own.cycles(own.clock - armed[i], access::longest_timeout(m))
                         : 0,
                     cycle_bits);
     } else if constexpr (std::is_same_v<T, timer>) {
-        out.put(timer_access::phase(value), 2);
+        out.put(access::timer_phase(value), 2);
         out.put(value.expired() ? 1u : 0u, 1);
-        bool const timing = timer_access::phase(value) == 2;  // running, expired or not
-        out.put(timing ? frame.cycles(frame.clock - timer_access::started(value), value.limit()) : 0, cycle_bits);
+        bool const timing = access::timer_phase(value) == 2;  // running, expired or not
+        out.put(timing ? frame.cycles(frame.clock - access::timer_started(value), value.limit()) : 0, cycle_bits);
     } else if constexpr (is_channel<T>) {
         encode(value.pending(), out, frame);  // a channel of an aggregate: member by member too
         encode(value.get(), out, frame);
@@ -236,21 +233,21 @@ void encode(T const& value, bit_writer& out, time_frame frame) {
 
 template <class T>
 void decode(T& value, bit_reader& in, time_frame frame) {
-    if constexpr (unexplored<T>) {
+    if constexpr (verify::unexplored<T>) {
         return;
     } else if constexpr (is_machine<T>) {
-        auto& cfg = machine_access::configuration(value);
+        auto& cfg = access::configuration(value);
         constexpr auto bits = slot_bits<T>();
         for (std::size_t k = 0; k < bits.size(); ++k) cfg.active[k] = static_cast<std::uint8_t>(in.get(bits[k]));
-        machine_access::clock(value) = frame.clock;
+        access::clock(value) = frame.clock;
         decode(value.context(), in, frame);
-        for (auto& armed : machine_access::armed(value))
+        for (auto& armed : access::armed(value))
             armed = frame.clock - static_cast<int>(in.get(cycle_bits)) * frame.period;
     } else if constexpr (std::is_same_v<T, timer>) {
         auto const phase = static_cast<std::uint8_t>(in.get(2));
         bool const expired = in.get(1) != 0;
         auto const elapsed = static_cast<int>(in.get(cycle_bits)) * frame.period;
-        timer_access::set(value, phase, expired, frame.clock - elapsed, elapsed);
+        access::set_timer(value, phase, expired, frame.clock - elapsed, elapsed);
     } else if constexpr (is_channel<T>) {
         using V = channel_value<T>;
         V pending = value.pending();
@@ -258,8 +255,8 @@ void decode(T& value, bit_reader& in, time_frame frame) {
         decode(pending, in, frame);
         decode(current, in, frame);
         value.set(current);  // both values, through the channel's own cycle boundary
-        value.latch();
-        value.commit();
+        access::latch(value);
+        access::commit(value);
         value.set(pending);
     } else if constexpr (is_aggregate_class<T>()) {
         bsc::detail::for_each_field(value, [&](auto& field) { decode(field, in, frame); });
@@ -268,4 +265,4 @@ void decode(T& value, bit_reader& in, time_frame frame) {
     }
 }
 
-}  // namespace bsc::verify::detail
+}  // namespace bsc::detail

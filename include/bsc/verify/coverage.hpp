@@ -36,7 +36,9 @@ struct coverage_report {
     }
 };
 
-namespace detail {
+}  // namespace bsc::verify
+
+namespace bsc::detail {
 template <class Row>
 std::string trigger_name() {
     if constexpr (bsc::detail::is_timeout_row<Row>)
@@ -46,18 +48,20 @@ std::string trigger_name() {
     else
         return std::string(name_of<typename bsc::detail::trigger_event<Row>::type>);
 }
-}  // namespace detail
+}  // namespace bsc::detail
+
+namespace bsc::verify {
 
 /// "Source + event -> Target" (or "Source + event (internal)") for each transition row of a
 /// chart, by position in make_chart; empty for entry and exit rows.
 template <class Chart>
 std::vector<std::string> row_names() {
-    using an = bsc::detail::analysis<std::remove_cv_t<Chart>>;
-    std::vector<std::string> names(static_cast<std::size_t>(an::R));
+    using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
+    std::vector<std::string> names(static_cast<std::size_t>(model::R));
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         (
             [&] {
-                using R = typename an::template row_at<static_cast<int>(I)>;
+                using R = typename model::template row_at<static_cast<int>(I)>;
                 if constexpr (bsc::detail::is_transition_row<R>) {
                     std::string n = std::string(name_of<typename R::source>) + " + " + detail::trigger_name<R>();
                     if constexpr (std::is_same_v<typename R::target, bsc::detail::no_target>)
@@ -68,7 +72,7 @@ std::vector<std::string> row_names() {
                 }
             }(),
             ...);
-    }(std::make_index_sequence<static_cast<std::size_t>(an::R)>{});
+    }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
     return names;
 }
 
@@ -79,17 +83,17 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired, Ge
     ex.run();
     using machine_type = std::remove_cvref_t<decltype(get(ex.at(0)))>;
     using chart = typename machine_type::chart_type;
-    using an = bsc::detail::analysis<chart>;
-    std::vector<bool> seen(static_cast<std::size_t>(an::N), false);
+    using model = bsc::detail::chart_model<chart>;
+    std::vector<bool> seen(static_cast<std::size_t>(model::N), false);
     for (std::size_t i = 0; i < ex.count(); ++i) {
         auto const s = ex.at(i);
-        auto const active = bsc::detail::machine_access::active_flags(get(s));
+        auto const active = bsc::detail::access::active_flags(get(s));
         for (std::size_t k = 0; k < active.size(); ++k) seen[k] = seen[k] || active[k];
     }
     coverage_report report;
     constexpr auto names = []<class... Tags>(bsc::detail::type_list<Tags...>) {
         return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename an::tags{});
+    }(typename model::tags{});
     for (std::size_t k = 1; k < seen.size(); ++k)
         if (!seen[k]) report.dead_states.emplace_back(names[k]);
     auto const rows = row_names<chart>();

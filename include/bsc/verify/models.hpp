@@ -21,7 +21,9 @@
 
 namespace bsc::verify {
 
-namespace detail {
+}  // namespace bsc::verify
+
+namespace bsc::detail {
 // The clock every explored state is decoded at; far enough from zero that relative times fit.
 inline constexpr duration origin = std::chrono::hours{1};
 
@@ -42,7 +44,9 @@ struct codec {
         return prototype;
     }
 };
-}  // namespace detail
+}  // namespace bsc::detail
+
+namespace bsc::verify {
 
 /// Offers each of the events Es... to the machine in every state (dispatch).
 template <class Machine, class... Es>

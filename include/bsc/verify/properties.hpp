@@ -42,19 +42,21 @@ struct verdict {
     }
 };
 
-namespace detail {
+}  // namespace bsc::verify
+
+namespace bsc::detail {
 
 template <class Model>
-void append_step(explorer<Model> const& ex, std::vector<trace_step>& out, std::string label, std::size_t i) {
+void append_step(verify::explorer<Model> const& ex, std::vector<verify::trace_step>& out, std::string label, std::size_t i) {
     out.push_back({std::move(label), ex.model().describe(ex.at(i))});
 }
 
 // The shortest path from the initial state to state i (breadth-first tree).
 template <class Model>
-std::vector<trace_step> path_to(explorer<Model> const& ex, std::size_t i) {
+std::vector<verify::trace_step> path_to(verify::explorer<Model> const& ex, std::size_t i) {
     std::vector<std::size_t> chain;
-    for (std::size_t s = i; s != explorer<Model>::none; s = ex.parent(s)) chain.push_back(s);
-    std::vector<trace_step> out;
+    for (std::size_t s = i; s != verify::explorer<Model>::none; s = ex.parent(s)) chain.push_back(s);
+    std::vector<verify::trace_step> out;
     for (std::size_t k = chain.size(); k-- > 0;) {
         std::size_t const s = chain[k];
         append_step(ex, out, k + 1 == chain.size() ? "(initial)" : ex.model().label(ex.parent_label(s)), s);
@@ -63,12 +65,14 @@ std::vector<trace_step> path_to(explorer<Model> const& ex, std::size_t i) {
 }
 
 template <class Model>
-verdict incomplete(explorer<Model> const& ex, std::string property) {
-    verdict v{std::move(property), verdict::status::inconclusive, {}, "exploration stopped by " + ex.stats().stopped_by};
+verify::verdict incomplete(verify::explorer<Model> const& ex, std::string property) {
+    verify::verdict v{std::move(property), verify::verdict::status::inconclusive, {}, "exploration stopped by " + ex.stats().stopped_by};
     return v;
 }
 
-}  // namespace detail
+}  // namespace bsc::detail
+
+namespace bsc::verify {
 
 /// A[] p: p holds in every reachable state. `p` takes the model's state.
 template <class Model, class Pred>
@@ -110,14 +114,16 @@ verdict deadlock_free(explorer<Model>& ex) {
     return deadlock_free(ex, [](auto const&) { return false; });
 }
 
-namespace detail {
+}  // namespace bsc::verify
+
+namespace bsc::detail {
 // The graph's edges reversed, as adjacency arrays: the predecessors of i are
 // from[begin[i]] .. from[begin[i + 1] - 1] (one entry per edge).
 struct reverse_graph {
     std::vector<std::uint32_t> begin, from;
 };
 template <class Model>
-reverse_graph reversed(explorer<Model> const& ex) {
+reverse_graph reversed(verify::explorer<Model> const& ex) {
     std::size_t const n = ex.count();
     reverse_graph g{std::vector<std::uint32_t>(n + 1, 0), std::vector<std::uint32_t>(ex.stats().transitions)};
     for (std::size_t i = 0; i < n; ++i)
@@ -133,7 +139,7 @@ reverse_graph reversed(explorer<Model> const& ex) {
 // The first state (in breadth-first order, so with a shortest path to it) from which no
 // state marked in `goal` can be reached, or none.
 template <class Model>
-std::size_t first_cut_off(explorer<Model> const& ex, std::vector<char> const& goal) {
+std::size_t first_cut_off(verify::explorer<Model> const& ex, std::vector<char> const& goal) {
     std::size_t const n = ex.count();
     reverse_graph const g = reversed(ex);
     std::vector<char> back(n, 0);
@@ -151,12 +157,15 @@ std::size_t first_cut_off(explorer<Model> const& ex, std::vector<char> const& go
             }
     for (std::size_t i = 0; i < n; ++i)
         if (!back[i]) return i;
-    return explorer<Model>::none;
+    return verify::explorer<Model>::none;
 }
-}  // namespace detail
+}  // namespace bsc::detail
 
-/// AG EF p: from every reachable state, some path reaches a p-state (seed 002's vivacity, for
-/// p = "the device operates"). Fails with a path to a state from which p is out of reach.
+namespace bsc::verify {
+
+/// AG EF p: from every reachable state, some path reaches a p-state (the vivacity of the Basic
+/// Statechart paper [BSC], docs/references.md, for p = "the device operates"). Fails with a path
+/// to a state from which p is out of reach.
 template <class Model, class Pred>
 verdict always_reachable(explorer<Model>& ex, std::string name, Pred p) {
     ex.run();
@@ -170,7 +179,7 @@ verdict always_reachable(explorer<Model>& ex, std::string name, Pred p) {
     return {name, verdict::status::holds, {}, {}};
 }
 
-/// The initial state is reachable from every reachable state (seed 002's reinitiability).
+/// The initial state is reachable from every reachable state (the reinitiability of [BSC]).
 template <class Model>
 verdict reinitiable(explorer<Model>& ex) {
     ex.run();
@@ -187,7 +196,7 @@ verdict reinitiable(explorer<Model>& ex) {
 
 /// Reinitiability up to an equivalence: from every reachable state, a state `equivalent` to the
 /// initial one can be reached, e.g. the same active configuration whatever the variables
-/// (seed 002's reachability tree is over configurations). `equivalent(state, initial)`.
+/// (the reachability tree of [BSC] is over configurations). `equivalent(state, initial)`.
 template <class Model, class Equivalent>
 verdict reinitiable(explorer<Model>& ex, Equivalent equivalent) {
     ex.run();

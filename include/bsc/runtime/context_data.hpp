@@ -8,6 +8,7 @@
 
 #include <bsc/data/channel.hpp>
 #include <bsc/data/timer.hpp>
+#include <bsc/detail/access.hpp>
 #include <bsc/detail/fields.hpp>
 
 namespace bsc::detail {
@@ -37,7 +38,7 @@ template <class Ctx>
 constexpr void latch_inputs(Ctx& ctx) {
     if constexpr (has_channels<Ctx>)
         for_each_field(ctx, [](auto& f) {
-            if constexpr (is_channel<std::remove_cvref_t<decltype(f)>>) f.latch();
+            if constexpr (is_channel<std::remove_cvref_t<decltype(f)>>) access::latch(f);
         });
 }
 
@@ -45,7 +46,7 @@ template <class Ctx>
 constexpr void commit_outputs(Ctx& ctx) {
     if constexpr (has_channels<Ctx>)
         for_each_field(ctx, [](auto& f) {
-            if constexpr (is_channel<std::remove_cvref_t<decltype(f)>>) f.commit();
+            if constexpr (is_channel<std::remove_cvref_t<decltype(f)>>) access::commit(f);
         });
 }
 
@@ -53,7 +54,7 @@ template <class Ctx>
 constexpr void update_timers(Ctx& ctx, duration now) {
     if constexpr (has_timers<Ctx>)
         for_each_field(ctx, [now](auto& f) {
-            if constexpr (std::is_base_of_v<timer_base, std::remove_cvref_t<decltype(f)>>) f.update(now);
+            if constexpr (std::is_base_of_v<timer_base, std::remove_cvref_t<decltype(f)>>) access::update(f, now);
         });
 }
 

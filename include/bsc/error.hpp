@@ -1,11 +1,14 @@
 #pragma once
-// The errors of the static checks. Each is a class template whose arguments are the
-// offending states (and events), so the compiler's "in instantiation of" line names them;
-// its static_assert says what is wrong and how to fix it. docs/checks.md lists them all.
+// Every error bsc reports at compile time, in one place. Each is a class template whose
+// arguments are the culprits (states, events, callables), so the compiler's "in instantiation
+// of" line names them; its static_assert says what is wrong and how to fix it.
+// docs/checks.md lists them all with an example each.
 
 #include <bsc/detail/meta.hpp>
 
 namespace bsc::error {
+
+// ---- the static checks of a chart (bsc::make_chart) ----------------------------------------
 
 template <class State>
 struct unreachable_state {
@@ -116,6 +119,63 @@ template <class Event>
 struct raised_event_not_in_chart {
     static_assert(detail::dependent_false<Event>,
                   "bsc: an action raises an event type that no transition of this chart handles");
+    static constexpr bool value = false;
+};
+
+// ---- the arguments of bsc::make_chart ----------------------------------------------------
+
+template <class Argument>
+struct not_a_row {
+    static_assert(detail::dependent_false<Argument>,
+                  "bsc: after the state tree, every argument of make_chart must be a row: "
+                  "state<S> + event<E> [guard] / action = state<T>, state<S> [guard] = state<T>, "
+                  "state<S> + on_entry / action, or state<S> + on_exit / action");
+    static constexpr bool value = false;
+};
+
+template <class Root>
+struct root_must_be_composite {
+    static_assert(detail::dependent_false<Root>,
+                  "bsc: the first argument of make_chart is the root of the state tree and must be a "
+                  "bsc::composite<...>(...) or bsc::parallel<...>(...)");
+    static constexpr bool value = false;
+};
+
+// ---- the state tree -------------------------------------------------------------------------
+
+template <class State, class Argument>
+struct not_a_state_declaration {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: an argument of this state's declaration is not a state or marker; a composite takes "
+                  "bsc::state, bsc::final_state, bsc::composite, bsc::parallel, bsc::initial, "
+                  "bsc::shallow_history and bsc::deep_history; a parallel state takes states only");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct conflicting_history_markers {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: this composite state has more than one history marker; keep one of "
+                  "bsc::shallow_history or bsc::deep_history");
+    static constexpr bool value = false;
+};
+
+// ---- guards and actions ----------------------------------------------------------------------
+
+template <class Callable>
+struct guard_signature_not_supported {
+    static_assert(detail::dependent_false<Callable>,
+                  "bsc: a guard must be callable as g(context const&, event const&), g(context const&) or g(), "
+                  "and return something convertible to bool; see the Callable type in this error");
+    static constexpr bool value = false;
+};
+
+template <class Callable>
+struct action_signature_not_supported {
+    static_assert(detail::dependent_false<Callable>,
+                  "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
+                  "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
+                  "Callable type in this error");
     static constexpr bool value = false;
 };
 

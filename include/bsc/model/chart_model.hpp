@@ -1,7 +1,7 @@
 #pragma once
-// The chart as data: the state tree and the rows flattened into constexpr arrays
-// (the BSTATE and BTRANS tables of the table-driven engine). The static checks and both
-// back ends read these arrays; only lookups by type use templates.
+// The model of a chart: its state tree and its rows flattened into constexpr arrays, from
+// which everything else is computed. The static checks, both back ends, the exports and the
+// explorer read these arrays; only lookups by type use templates.
 
 #include <array>
 #include <cstdint>
@@ -209,25 +209,25 @@ constexpr int transition_domain(topology<N> const& t, int source, int target) {
 }
 
 template <class Chart>
-struct analysis {
+struct chart_model {
     using root = typename Chart::root_type;
     using nodes = decltype(flatten<top_node<root>>());
     using tags = typename tags_of<nodes>::type;
-    using rows = typename Chart::row_types;
+    using row_types = typename Chart::row_types;
     using chart_context = typename Chart::context_type;
-    using events = typename drop_void<typename event_list<rows>::all>::type;
+    using events = typename drop_void<typename event_list<row_types>::all>::type;
 
     static constexpr int N = static_cast<int>(nodes::size);
-    static constexpr int R = static_cast<int>(rows::size);
+    static constexpr int R = static_cast<int>(row_types::size);
 
-    static constexpr topology<nodes::size> topo = [] {
+    static constexpr topology<nodes::size> tree = [] {
         topology<nodes::size> t{};
         fill_topology<top_node<root>>(t, 0, -1, 0, 0);
         return t;
     }();
 
-    static constexpr row_table<rows::size> table = []<class... Rs>(type_list<Rs...>) {
-        row_table<rows::size> r{};
+    static constexpr row_table<row_types::size> rows = []<class... Rs>(type_list<Rs...>) {
+        row_table<row_types::size> r{};
         std::size_t i = 0;
         (
             [&] {
@@ -245,17 +245,17 @@ struct analysis {
                 }
                 r.domain[i] = no_state;
                 if (r.source[i] >= 0 && r.target[i] >= 0)
-                    r.domain[i] = transition_domain(topo, r.source[i], r.target[i]);
+                    r.domain[i] = transition_domain(tree, r.source[i], r.target[i]);
                 ++i;
             }(),
             ...);
         return r;
-    }(rows{});
+    }(row_types{});
 
     template <int I>
     using tag_at = at<static_cast<std::size_t>(I), tags>;
     template <int I>
-    using row_at = at<static_cast<std::size_t>(I), rows>;
+    using row_at = at<static_cast<std::size_t>(I), row_types>;
     template <class S>
     static constexpr int index_of_state = index_of<S, tags>;
     template <class E>

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <variant>
 
-#include <bsc/checks/errors.hpp>
+#include <bsc/error.hpp>
 #include <bsc/detail/meta.hpp>
 
 namespace bsc::detail {

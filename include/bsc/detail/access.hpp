@@ -1,0 +1,95 @@
+#pragma once
+// The one door to what users may not touch: a channel's latch and commit, a timer's update
+// and its internal state, a machine's configuration, clock, timeout slots and queue. Only the
+// machines, the explorer and the project's own tests go through it; every class it opens
+// names it as its only friend.
+
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+#include <bsc/duration.hpp>
+
+namespace bsc::detail {
+
+struct access {
+    // ---- channels and timers: driven by the machine around each cycle and dispatch ----------
+    template <class Channel>
+    static constexpr void latch(Channel& c) {
+        c.latch();
+    }
+    template <class Channel>
+    static constexpr void commit(Channel& c) {
+        c.commit();
+    }
+    template <class Timer>
+    static constexpr void update(Timer& t, duration now) {
+        t.update(now);
+    }
+    template <class Timer>
+    static constexpr std::uint8_t timer_phase(Timer const& t) {
+        return static_cast<std::uint8_t>(t.phase_);
+    }
+    template <class Timer>
+    static constexpr duration timer_started(Timer const& t) {
+        return t.started_;
+    }
+    template <class Timer>
+    static constexpr void set_timer(Timer& t, std::uint8_t phase, bool expired, duration started, duration elapsed) {
+        t.phase_ = static_cast<typename Timer::phase>(phase);
+        t.expired_ = expired;
+        t.started_ = started;
+        t.elapsed_ = elapsed;
+    }
+
+    // ---- machines: read and written by the explorer, read by the tests ---------------------
+    // (through the shared driver, which holds the data and names this class its friend)
+    template <class M>
+    static constexpr auto& configuration(M& m) {
+        return driver_of(m).config_;
+    }
+    template <class M>
+    static constexpr auto& clock(M& m) {
+        return driver_of(m).clock_;
+    }
+    template <class M>
+    static constexpr auto& armed(M& m) {
+        return driver_of(m).armed_;
+    }
+    template <class M>
+    static constexpr auto& last_outcome(M& m) {
+        return driver_of(m).last_;
+    }
+    template <class M>
+    static constexpr auto& queue(M& m) {
+        return driver_of(m).queue_;
+    }
+    template <class M>
+    static constexpr auto longest_timeout(M const& m) {
+        return driver_of(m).longest_timeout();
+    }
+    template <class M>
+    static constexpr auto canonical_configuration(M const& m) {
+        return driver_of(m).canonical_configuration();
+    }
+    template <class M>
+    static constexpr bool timeout_armed(M const& m, std::size_t slot) {
+        return driver_of(m).timeout_armed(slot);
+    }
+    template <class M>
+    static constexpr auto active_flags(M const& m) {
+        return driver_of(m).active_flags();
+    }
+
+private:
+    template <class M>
+    static constexpr auto& driver_of(M& m) {
+        using driver = typename std::remove_const_t<M>::driver_type;
+        if constexpr (std::is_const_v<M>)
+            return static_cast<driver const&>(m);
+        else
+            return static_cast<driver&>(m);
+    }
+};
+
+}  // namespace bsc::detail

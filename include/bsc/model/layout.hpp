@@ -1,0 +1,170 @@
+#pragma once
+// What every back end lays out the same way, computed once from the chart model: the
+// components of a BSC cycle, the timeout slots, the children of each state, the bytes of the
+// initial configuration, the transitions in declaration order and the entry and exit rows of
+// each state. Both back ends number these alike because both read them from here.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include <bsc/model/chart_model.hpp>
+
+namespace bsc::detail {
+
+template <class Model>
+struct chart_layout {
+    static constexpr auto const& tree = Model::tree;
+    static constexpr auto const& rows = Model::rows;
+    static constexpr int N = Model::N;
+    static constexpr int R = Model::R;
+    static constexpr int root = 1;  // state 0 is the implicit top above the chart's root
+
+    // `trigger` is an event's position, eventless_id, or any_condition (eventless or timeout).
+    static constexpr bool is_transition_on(int row, int trigger) {
+        auto const r = static_cast<std::size_t>(row);
+        if (rows.kinds[r] != row_kind::transition) return false;
+        return trigger == any_condition ? rows.trigger[r] < 0 : rows.trigger[r] == trigger;
+    }
+
+    static constexpr bool has_trigger(int trigger) {
+        for (int r = 0; r < R; ++r)
+            if (is_transition_on(r, trigger)) return true;
+        return false;
+    }
+
+    static constexpr bool is_timeout_row(int row) {
+        auto const r = static_cast<std::size_t>(row);
+        return rows.kinds[r] == row_kind::transition && rows.trigger[r] <= timeout_trigger_id(0);
+    }
+
+    // The children of state S, in document order.
+    template <int S>
+    static constexpr auto children = [] {
+        std::array<int, static_cast<std::size_t>(tree.child_count[static_cast<std::size_t>(S)])> out{};
+        std::size_t n = 0;
+        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
+             c = tree.next_sibling[static_cast<std::size_t>(c)])
+            out[n++] = c;
+        return out;
+    }();
+
+    // BSC components: the root and every child of a parallel state, in document order. In a
+    // cycle each fires at most one condition-driven transition, chosen from the states between
+    // its active frontier (a basic state, or a parallel state whose children are components of
+    // their own) and its root.
+    static constexpr int component_count() {
+        int n = 1;
+        for (int s = 2; s < N; ++s)
+            n += tree.kinds[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] == kind::parallel;
+        return n;
+    }
+    static constexpr auto components = [] {
+        std::array<int, static_cast<std::size_t>(component_count())> out{};
+        std::size_t n = 0;
+        out[n++] = root;
+        for (int s = 2; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] == kind::parallel)
+                out[n++] = s;
+        return out;
+    }();
+
+    // States that are the source of a timeout row get a slot for the time they were entered,
+    // numbered in document order; -1 for the others.
+    static constexpr auto timeout_slot = [] {
+        std::array<bool, static_cast<std::size_t>(N)> has{};
+        for (int r = 0; r < R; ++r)
+            if (is_timeout_row(r)) has[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] = true;
+        std::array<int, static_cast<std::size_t>(N)> slot{};
+        int n = 0;
+        for (std::size_t s = 0; s < slot.size(); ++s) slot[s] = has[s] ? n++ : -1;
+        return slot;
+    }();
+    static constexpr int timeout_slots = [] {
+        int n = 0;
+        for (int slot : timeout_slot) n += slot >= 0;
+        return n;
+    }();
+
+    static constexpr int count_rows(row_kind k, int state) {
+        int n = 0;
+        for (int r = 0; r < R; ++r)
+            n += rows.kinds[static_cast<std::size_t>(r)] == k &&
+                 (state < 0 || rows.source[static_cast<std::size_t>(r)] == state);
+        return n;
+    }
+
+    // The rows of kind K from state S (every state if S is -1), in declaration order: the
+    // entry or exit rows of a state, or all transitions.
+    template <row_kind K, int S>
+    static constexpr auto rows_of = [] {
+        std::array<int, static_cast<std::size_t>(count_rows(K, S))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == K && (S < 0 || rows.source[static_cast<std::size_t>(r)] == S))
+                out[n++] = r;
+        return out;
+    }();
+    static constexpr auto const& transition_rows = rows_of<row_kind::transition, -1>;
+
+    // How many basic states below s can be active at once: the most transitions one event
+    // can select there.
+    static constexpr int max_active_leaves(int s = root) {
+        auto const i = static_cast<std::size_t>(s);
+        if (tree.is_leaf(s)) return 1;
+        int result = 0;
+        for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)]) {
+            int const m = max_active_leaves(c);
+            result = tree.kinds[i] == kind::parallel ? result + m : (m > result ? m : result);
+        }
+        return result;
+    }
+
+    static constexpr bool has_parallel = [] {
+        for (int s = 0; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel) return true;
+        return false;
+    }();
+
+    // The initial configuration: every composite's byte at its initial child.
+    static constexpr auto initial_bytes = [] {
+        std::array<std::uint8_t, static_cast<std::size_t>(tree.slots)> bytes{};
+        for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s)
+            if (tree.slot[s] >= 0)
+                bytes[static_cast<std::size_t>(tree.slot[s])] =
+                    static_cast<std::uint8_t>(tree.ordinal[static_cast<std::size_t>(tree.initial[s])]);
+        return bytes;
+    }();
+
+    // Which children of the root are final, by ordinal: the machine halts when its root's
+    // byte selects one. Empty unless the root is a composite with a final child.
+    static constexpr bool can_halt = [] {
+        if (tree.kinds[root] != kind::composite) return false;
+        for (int c = tree.first_child[root]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+            if (tree.kinds[static_cast<std::size_t>(c)] == kind::final_state) return true;
+        return false;
+    }();
+    static constexpr auto final_root_children = [] {
+        std::array<bool, can_halt ? static_cast<std::size_t>(tree.child_count[root]) : 0> out{};
+        if constexpr (can_halt)
+            for (int c = tree.first_child[root]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                out[static_cast<std::size_t>(tree.ordinal[static_cast<std::size_t>(c)])] =
+                    tree.kinds[static_cast<std::size_t>(c)] == kind::final_state;
+        return out;
+    }();
+
+    // Two selected transitions conflict when their exit sets meet, i.e. when their domains nest.
+    static constexpr bool conflict(int r1, int r2) {
+        int const d1 = rows.domain[static_cast<std::size_t>(r1)], d2 = rows.domain[static_cast<std::size_t>(r2)];
+        if (d1 < 0 || d2 < 0) return false;
+        return tree.contains(d1, d2) || tree.contains(d2, d1);
+    }
+    // Of two conflicting transitions, the later-selected one preempts the earlier when its
+    // source lies below the earlier one's (SCXML's removeConflictingTransitions).
+    static constexpr bool preempts(int later, int earlier) {
+        return tree.is_proper_ancestor(rows.source[static_cast<std::size_t>(earlier)],
+                                       rows.source[static_cast<std::size_t>(later)]);
+    }
+};
+
+}  // namespace bsc::detail

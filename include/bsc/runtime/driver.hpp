@@ -1,0 +1,349 @@
+#pragma once
+// What both back ends share: the public interface of a machine and everything that does not
+// depend on how a transition is selected and fired. The driver owns the machine's data (chart,
+// context, configuration, queue, clock, timeout slots, outcome, observer), runs an event to
+// completion (settling eventless transitions and raised events, with the policy's limits),
+// runs a BSC cycle's shell (time, timers, latched inputs, the components' turns, committed
+// outputs), and answers is<S>, halted and active_states from the configuration bytes.
+//
+// A back end derives from it (CRTP) and supplies only what differs:
+//   void enter_initial();                        enters the root and its default completion
+//   template <int Trigger, class E>
+//   bool microstep(E const& e);                  selects and fires the transitions on e
+//   template <int Component> bool component_step();  one component's turn in a cycle
+//   template <int S> bool is_active() const;     whether state S is active
+
+#include <array>
+#include <boost/hana/at.hpp>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include <bsc/configuration.hpp>
+#include <bsc/detail/access.hpp>
+#include <bsc/detail/type_name.hpp>
+#include <bsc/duration.hpp>
+#include <bsc/error.hpp>
+#include <bsc/model/layout.hpp>
+#include <bsc/observer.hpp>
+#include <bsc/outcome.hpp>
+#include <bsc/runtime/context_data.hpp>
+
+namespace bsc::detail {
+
+// The observer type a machine's deduction guide takes from its constructor's arguments
+// (chart[, context[, observer]]): both back ends deduce through this one rule.
+template <class... Arguments>
+struct observer_argument {
+    using type = no_observer;
+};
+template <class Context, class Observer>
+struct observer_argument<Context, Observer> {
+    using type = Observer;
+};
+template <class... Arguments>
+using observer_argument_t = typename observer_argument<Arguments...>::type;
+
+template <class Backend, class Chart, class Policy, class Observer, class Queue>
+class driver {
+protected:
+    using model = chart_model<std::remove_cv_t<Chart>>;
+    using layout = chart_layout<model>;
+    static constexpr auto const& tree = model::tree;
+    static constexpr auto const& rows = model::rows;
+    static constexpr int root = layout::root;
+    static constexpr auto state_count = static_cast<std::size_t>(model::N);
+
+public:
+    using chart_type = std::remove_cv_t<Chart>;
+    using context_type = typename chart_type::context_type;
+    using configuration_type = configuration<static_cast<std::size_t>(tree.slots)>;
+    using event_types = typename model::events;
+    using policy_type = Policy;
+    using observer_type = Observer;
+    /// How many raised events the internal queue holds: Policy::queue_capacity, or 0 where
+    /// the compiled back end finds that no action of the chart can raise.
+    static constexpr std::size_t queue_capacity = Queue::capacity();
+
+    /// One BSC execution cycle at time `now` (the BSC paper's execution cycle): timers are
+    /// updated, input channels latched; then each component (the root and every region of a
+    /// parallel state), in document order, fires at most one eventless or timeout transition,
+    /// its actions' writes visible at once to the components after it; events raised meanwhile
+    /// are processed; output channels are committed. Components entered during the cycle first
+    /// run in the next one. Time never runs backwards for the machine: an earlier `now` is
+    /// reported and ignored.
+    constexpr step_report step(duration now) {
+        step_report report;
+        if (halted()) {
+            report.status = last_ = outcome::halted;
+            return report;
+        }
+        if (now < clock_)
+            report.clock_went_backwards = true;
+        else
+            clock_ = now;
+        update_timers(context_, clock_);
+        latch_inputs(context_);
+        if constexpr (layout::has_trigger(any_condition))
+            report.transitions = run_components();
+        report.status = last_ = drain_queue(report.transitions > 0);
+        commit_outputs(context_);
+        return report;
+    }
+
+    /// The time of the last cycle (the machine's clock).
+    constexpr duration now() const { return clock_; }
+
+    /// Processes e to completion: the transitions it enables, then eventless transitions and
+    /// raised events until none remain. Fails to compile if no transition handles E.
+    template <class E>
+    constexpr outcome dispatch(E const& e) {
+        constexpr int trigger = model::template trigger_of<E>;
+        if constexpr (trigger < 0) {
+            static_assert(error::unhandled_event<E>::value);
+            return outcome::ignored;
+        } else {
+            return process<trigger>(e);
+        }
+    }
+
+    /// As dispatch(e), but an event type that no transition handles is accepted and ignored.
+    template <class E>
+    constexpr outcome dispatch(E const& e, allow_unhandled_t) {
+        constexpr int trigger = model::template trigger_of<E>;
+        if constexpr (trigger < 0)
+            return last_ = outcome::ignored;
+        else
+            return process<trigger>(e);
+    }
+
+    /// True if state S is active.
+    template <class S>
+    constexpr bool is() const {
+        constexpr int s = model::template index_of_state<S>;
+        if constexpr (s < 0) {
+            static_assert(error::state_not_in_chart<S>::value);
+            return false;
+        } else {
+            return backend().template is_active<s>();
+        }
+    }
+
+    /// True once a final child of the root is active: the machine processes nothing more.
+    constexpr bool halted() const {
+        if constexpr (layout::can_halt)
+            return layout::final_root_children[config_.active[static_cast<std::size_t>(tree.slot[root])]];
+        else
+            return false;
+    }
+
+    /// The names of the active states, outermost first, in document order.
+    constexpr auto active_states() const {
+        state_names<state_count> names;
+        auto const active = active_flags();
+        for (std::size_t s = 1; s < state_count; ++s)
+            if (active[s]) names.push_back(state_names_by_index[s]);
+        return names;
+    }
+
+    /// The outcome of the last dispatch (or of construction).
+    constexpr outcome last_outcome() const { return last_; }
+
+    constexpr context_type& context() { return context_; }
+    constexpr context_type const& context() const { return context_; }
+    constexpr configuration_type const& active_configuration() const { return config_; }
+    constexpr Observer& observer() { return observer_; }
+    constexpr Observer const& observer() const { return observer_; }
+
+protected:
+    constexpr driver(Chart const& chart, context_type context, Observer observer)
+        : chart_(chart), context_(std::move(context)), observer_(std::move(observer)) {}
+
+    // Enters the initial configuration (entry actions run) and settles eventless transitions.
+    // Called by the back end's constructor, once the back end exists.
+    constexpr void start() {
+        if constexpr (tree.slots > 0)
+            config_.active = layout::initial_bytes;
+        latch_inputs(context_);
+        backend().enter_initial();
+        last_ = finish(false);
+        commit_outputs(context_);
+    }
+
+    template <int Row>
+    constexpr auto const& row() const {
+        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart_.rows);
+    }
+
+    // Whether state s is active, read from the bytes; outermost first, so one pass suffices.
+    constexpr std::array<bool, state_count> active_flags() const {
+        std::array<bool, state_count> active{};
+        active[0] = true;
+        if constexpr (tree.slots > 0)
+            for (std::size_t s = 1; s < state_count; ++s) {
+                auto const p = static_cast<std::size_t>(tree.parent[s]);
+                active[s] = active[p] && (tree.slot[p] < 0 || config_.active[static_cast<std::size_t>(tree.slot[p])] ==
+                                                                  static_cast<std::uint8_t>(tree.ordinal[s]));
+            }
+        else
+            for (std::size_t s = 1; s < state_count; ++s) active[s] = true;
+        return active;
+    }
+
+private:
+    using driver_type = driver;  // what detail::access reaches a machine's data through
+
+    constexpr Backend& backend() { return static_cast<Backend&>(*this); }
+    constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
+
+    static constexpr auto state_names_by_index = []<class... Tags>(type_list<Tags...>) {
+        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
+    }(typename model::tags{});
+
+    template <class E>
+    constexpr void microstep_on(E const& e) {
+        backend().template microstep<model::template trigger_of<E>>(e);
+    }
+
+    template <int Trigger, class E>
+    constexpr outcome process(E const& e) {
+        if (halted())
+            return last_ = outcome::halted;
+        latch_inputs(context_);
+        last_ = finish(backend().template microstep<Trigger>(e));
+        commit_outputs(context_);
+        return last_;
+    }
+
+    // The components' turns in a cycle: a component takes its turn if it was active when the
+    // cycle began and still is (an earlier component may have left it); one entered during
+    // the cycle waits for the next. Returns the number of transitions fired.
+    constexpr int run_components() {
+        constexpr auto const& components = layout::components;
+        std::array<bool, components.size()> active_at_start{};
+        int fired = 0;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((active_at_start[I] = backend().template is_active<components[I]>()), ...);
+            ((fired += active_at_start[I] && backend().template is_active<components[I]>() &&
+                       backend().template component_step<components[I]>()),
+             ...);
+        }(std::make_index_sequence<components.size()>{});
+        return fired;
+    }
+
+    // Settles the machine after a microstep: eventless transitions until none is enabled,
+    // then the raised events one by one, each followed by its eventless transitions. Under a
+    // scan policy eventless transitions are left to step(), and only raised events are processed.
+    constexpr outcome finish(bool consumed) {
+        if constexpr (!Policy::settle_eventless)
+            return drain_queue(consumed);
+        // The common case, kept inline: nothing raised, and no eventless transition to try.
+        if constexpr (!layout::has_trigger(eventless_id))
+            if (queue_.empty() && !queue_.overflowed())
+                return consumed ? outcome::consumed : outcome::ignored;
+        return settle(consumed);
+    }
+
+    constexpr outcome settle(bool consumed) {
+        std::size_t internal_events = 0;
+        for (;;) {
+            if constexpr (layout::has_trigger(eventless_id)) {
+                // Up to max_eventless_steps transitions settle; one more means the chart cycles.
+                for (std::size_t steps = 0; !halted() && backend().template microstep<eventless_id>(eventless{});)
+                    if (++steps > Policy::max_eventless_steps)
+                        return abandon();
+            }
+            if (queue_.empty() || halted())
+                break;
+            if (++internal_events > Policy::max_internal_events)
+                return abandon();
+            queue_.pop([&](auto const& ev) { microstep_on(ev); });
+        }
+        return settled(consumed);
+    }
+
+    // The raised events of a cycle, each one microstep and no eventless settling, so that no
+    // component fires twice in a cycle.
+    constexpr outcome drain_queue(bool consumed) {
+        for (std::size_t n = 0; !queue_.empty() && !halted();) {
+            if (++n > Policy::max_internal_events)
+                return abandon();
+            queue_.pop([&](auto const& ev) { microstep_on(ev); });
+        }
+        return settled(consumed);
+    }
+
+    constexpr outcome settled(bool consumed) {
+        if (queue_.overflowed()) {
+            queue_.clear_overflow();
+            return outcome::queue_overflow;
+        }
+        return consumed ? outcome::consumed : outcome::ignored;
+    }
+
+    constexpr outcome abandon() {
+        queue_.clear();
+        queue_.clear_overflow();
+        return outcome::livelock;
+    }
+
+    // ---- for the explorer (through detail::access) -------------------------------------------
+    // The configuration with every byte that can never matter again reset to its initial
+    // child: the byte of an inactive composite that neither has history nor lies below a
+    // deep history. Two machines with equal canonical configurations behave the same.
+    constexpr configuration_type canonical_configuration() const {
+        configuration_type c = config_;
+        if constexpr (tree.slots > 0) {
+            auto const active = active_flags();
+            for (std::size_t s = 1; s < state_count; ++s) {
+                if (tree.slot[s] < 0 || active[s]) continue;
+                bool remembered = tree.hist[s] != history::none;
+                for (int a = tree.parent[s]; a > 0 && !remembered; a = tree.parent[static_cast<std::size_t>(a)])
+                    remembered = tree.hist[static_cast<std::size_t>(a)] == history::deep;
+                if (!remembered)
+                    c.active[static_cast<std::size_t>(tree.slot[s])] =
+                        static_cast<std::uint8_t>(tree.ordinal[static_cast<std::size_t>(tree.initial[s])]);
+            }
+        }
+        return c;
+    }
+
+    // A timeout slot's age matters only while its state is active.
+    constexpr bool timeout_armed(std::size_t slot) const {
+        auto const active = active_flags();
+        for (std::size_t s = 0; s < state_count; ++s)
+            if (layout::timeout_slot[s] == static_cast<int>(slot)) return active[s];
+        return false;
+    }
+
+    // The longest delay of any timeout row: past it, a state's age no longer matters.
+    constexpr duration longest_timeout() const {
+        duration longest{};
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (
+                [&] {
+                    if constexpr (layout::is_timeout_row(static_cast<int>(I)))
+                        if (row<static_cast<int>(I)>().trigger_value.delay > longest)
+                            longest = row<static_cast<int>(I)>().trigger_value.delay;
+                }(),
+                ...);
+        }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
+        return longest;
+    }
+
+    friend struct access;
+
+protected:
+    [[no_unique_address]] chart_type chart_;
+    context_type context_;
+    configuration_type config_{};
+    [[no_unique_address]] Queue queue_{};
+    duration clock_{};
+    std::array<duration, static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
+    outcome last_ = outcome::ignored;
+    [[no_unique_address]] Observer observer_;
+};
+
+}  // namespace bsc::detail

@@ -1,0 +1,49 @@
+#pragma once
+// The calls a machine makes to its observer, by state and row number: each hook is called
+// only if the observer has it, and a machine without observer generates nothing.
+
+#include <type_traits>
+
+#include <bsc/model/chart_model.hpp>
+#include <bsc/observer.hpp>
+
+namespace bsc::detail {
+
+template <class Model, class Observer>
+struct notify {
+    template <int S>
+    using tag = state_tag<typename Model::template tag_at<S>>;
+
+    template <int Row>
+    using source_tag = state_tag<typename Model::template row_at<Row>::source>;
+    template <int Row, class Target = typename Model::template row_at<Row>::target>
+    using target_tag = std::conditional_t<std::is_same_v<Target, no_target>, state_tag<internal>, state_tag<Target>>;
+
+    template <int S>
+    static constexpr bool observes_entry_of = S > 0 && observes_entry<Observer, tag<S>>;
+    template <int S>
+    static constexpr bool observes_exit_of = S > 0 && observes_exit<Observer, tag<S>>;
+    template <int Row, class E>
+    static constexpr bool observes_row =
+        observes_transition<Observer, source_tag<Row>, target_tag<Row>, E> || observes_rows<Observer>;
+
+    // After state S's entry actions.
+    template <int S>
+    static constexpr void entered(Observer& o) {
+        if constexpr (observes_entry_of<S>) o.on_entry(tag<S>{});
+    }
+    // After state S's exit actions.
+    template <int S>
+    static constexpr void exited(Observer& o) {
+        if constexpr (observes_exit_of<S>) o.on_exit(tag<S>{});
+    }
+    // Before the action of transition Row, taken on event e.
+    template <int Row, class E>
+    static constexpr void transition(Observer& o, E const& e) {
+        if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, E>)
+            o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
+        if constexpr (observes_rows<Observer>) o.on_row(Row);
+    }
+};
+
+}  // namespace bsc::detail
