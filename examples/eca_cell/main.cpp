@@ -65,7 +65,7 @@ public:
 private:
     void print(std::string_view input) {
         auto const& m = c_.context();
-        std::string_view pause;
+        std::string_view pause = "";  // never a null pointer for printf's %.*s
         if constexpr (has_pause<Controller>) pause = state_of(m.pause);
         std::printf("  %-9.*s  %-5.*s %-9.*s %-5.*s %-8.*s %-16s %s\n", static_cast<int>(input.size()), input.data(),
                     static_cast<int>(state_of(c_).size()), state_of(c_).data(),

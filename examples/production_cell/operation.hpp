@@ -89,17 +89,31 @@ std::string picture(System const& s) {
         if (!b) return std::string(".");
         return std::to_string(b.id) + (b.forged ? "*" : "");
     };
-    auto belt = [&](auto const& slots) {
-        std::string out = "[";
-        for (std::size_t i = 0; i < slots.size(); ++i) out += (i ? " " : "") + one(slots[i]);
-        return out + "]";
+    // Appended piece by piece: GCC 12's -Wrestrict misfires on chains of string + string.
+    auto belt = [&](std::string& out, auto const& slots) {
+        out += '[';
+        for (std::size_t i = 0; i < slots.size(); ++i) {
+            if (i) out += ' ';
+            out += one(slots[i]);
+        }
+        out += ']';
     };
     auto held = [&](brick b) { return b ? one(b) : std::string("-"); };
     auto const& robot = a.env_robot.context();
     brick const arm2 = robot.held2 ? robot.held2 : a.env_press.context().to_arm2.get();  // see for_each_brick
-    return "feed" + belt(a.env_feed_belt.context().slots) + " table:" + held(a.env_table.context().load) +
-           " arm1:" + held(robot.held1) + " press:" + held(a.env_press.context().load) + " arm2:" + held(arm2) +
-           " deposit" + belt(a.env_deposit_belt.context().slots);
+    std::string out = "feed";
+    belt(out, a.env_feed_belt.context().slots);
+    out += " table:";
+    out += held(a.env_table.context().load);
+    out += " arm1:";
+    out += held(robot.held1);
+    out += " press:";
+    out += held(a.env_press.context().load);
+    out += " arm2:";
+    out += held(arm2);
+    out += " deposit";
+    belt(out, a.env_deposit_belt.context().slots);
+    return out;
 }
 
 // ---- The operator and the clock -----------------------------------------------------------------

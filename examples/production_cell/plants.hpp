@@ -61,7 +61,7 @@ struct feed_belt_io {
     /// One slot forward; the brick in the last slot, if any, falls off the end.
     static constexpr void advance(feed_belt_io& c) {
         c.to_table.set(c.slots[feed_slots - 1]);
-        for (auto i = feed_slots - 1; i > 0; --i) c.slots[i] = c.slots[i - 1];
+        for (auto i = static_cast<std::size_t>(feed_slots) - 1; i > 0; --i) c.slots[i] = c.slots[i - 1];
         c.slots[0] = brick{};
     }
 };
@@ -395,7 +395,7 @@ struct deposit_belt_io {
             c.unforged = static_cast<std::uint8_t>(c.unforged + (out.forged ? 0 : 1));
             c.last = out;
         }
-        for (auto i = deposit_slots - 1; i > 0; --i) c.slots[i] = c.slots[i - 1];
+        for (auto i = static_cast<std::size_t>(deposit_slots) - 1; i > 0; --i) c.slots[i] = c.slots[i - 1];
         c.slots[0] = brick{};
     }
 };

@@ -73,7 +73,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
         return 0;
     } else if constexpr (!(detail::is_row<Rows> && ...)) {
         constexpr int bad = detail::index_in<std::false_type, std::bool_constant<detail::is_row<Rows>>...>();
-        static_assert(error::not_a_row<detail::at<bad, detail::type_list<Rows...>>>::value);
+        static_assert(error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>::value);
         return 0;
     } else {
         using chart_type = chart<Context, Root, Rows...>;

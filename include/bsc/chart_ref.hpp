@@ -23,7 +23,7 @@ struct chart_ref : std::remove_cvref_t<decltype(Chart)> {
     using chart_type = std::remove_cvref_t<decltype(Chart)>;
     constexpr chart_ref() : chart_type(Chart) {}
     // Implicit, so that a machine of chart_ref<chart> is constructed from `chart` itself.
-    constexpr chart_ref(chart_type const& chart) : chart_type(chart) {}  // NOLINT(google-explicit-constructor)
+    constexpr chart_ref(chart_type const& other) : chart_type(other) {}  // NOLINT(google-explicit-constructor)
 };
 
 }  // namespace bsc

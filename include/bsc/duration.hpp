@@ -1,8 +1,10 @@
 #pragma once
 // bsc::duration: the machine's notion of time. The library never reads a clock: time is given
-// to step(now) by the caller, so simulations and tests are deterministic.
+// to step(now) by the caller, so simulations and tests are deterministic. The caller's time
+// may start anywhere (negative times included): a machine's clock starts at its first cycle.
 
 #include <chrono>
+#include <cstdint>
 
 namespace bsc {
 
@@ -10,3 +12,24 @@ namespace bsc {
 using duration = std::chrono::nanoseconds;
 
 }  // namespace bsc
+
+namespace bsc::detail {
+
+// Whether at least `delay` (>= 0) has passed from `since` to `now` (since <= now), without
+// the overflow of `now - since` when the two lie far apart: the difference is exact in
+// unsigned arithmetic.
+constexpr bool has_elapsed(duration since, duration now, duration delay) {
+    if (now < since) return false;
+    auto const passed = static_cast<std::uint64_t>(now.count()) - static_cast<std::uint64_t>(since.count());
+    return passed >= static_cast<std::uint64_t>(delay.count());
+}
+
+// `now - since` (since <= now), saturated at duration::max().
+constexpr duration elapsed(duration since, duration now) {
+    if (now <= since) return duration::zero();
+    auto const passed = static_cast<std::uint64_t>(now.count()) - static_cast<std::uint64_t>(since.count());
+    auto const max = static_cast<std::uint64_t>(duration::max().count());
+    return duration{static_cast<duration::rep>(passed > max ? max : passed)};
+}
+
+}  // namespace bsc::detail

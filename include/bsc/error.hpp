@@ -115,6 +115,16 @@ struct unhandled_event {
     static constexpr bool value = false;
 };
 
+template <class Type>
+struct not_an_event {
+    static_assert(detail::dependent_false<Type>,
+                  "bsc: bsc::event<E> needs E to be a complete, copyable class or enumeration type without "
+                  "const or volatile (events are copied into the queue and handed to guards and actions); "
+                  "void, references, arrays, functions and pointers are not events. For a transition without "
+                  "an event, leave the trigger out: state<S> [guard] = state<T>");
+    static constexpr bool value = false;
+};
+
 template <class Event>
 struct raised_event_not_in_chart {
     static_assert(detail::dependent_false<Event>,
@@ -157,6 +167,25 @@ struct conflicting_history_markers {
     static_assert(detail::dependent_false<State>,
                   "bsc: this composite state has more than one history marker; keep one of "
                   "bsc::shallow_history or bsc::deep_history");
+    static constexpr bool value = false;
+};
+
+// ---- the context -----------------------------------------------------------------------------
+
+template <class Type>
+struct context_not_an_aggregate {
+    static_assert(detail::dependent_false<Type>,
+                  "bsc: the machine looks for channels and timers in the context and in its members: this "
+                  "one must be an aggregate (a struct with public members, no constructors, no virtual "
+                  "functions, no base classes)");
+    static constexpr bool value = false;
+};
+
+template <class Type>
+struct too_many_fields {
+    static_assert(detail::dependent_false<Type>,
+                  "bsc: this struct of the context has more than 128 fields; group some of them into nested "
+                  "structs or std::arrays (channels and timers are found at any depth)");
     static constexpr bool value = false;
 };
 

@@ -13,6 +13,9 @@ enum class outcome : std::uint8_t {
     queue_overflow,  ///< an action raised an event while the internal queue was full; that event was dropped
     livelock,        ///< the eventless-step or internal-event limit was reached; the rest was abandoned
     halted,          ///< the machine had reached a final child of its root; nothing was processed
+    reentrant,       ///< called from inside one of the machine's own guards or actions: refused, nothing changed
+    failed,          ///< a guard or action threw and no transition took the bsc::action_failed event (the
+                     ///< policy's rethrow_failures is false; last_failure() holds the exception)
 };
 
 /// The limits of a machine. Derive from it and override a member to change one:
@@ -28,6 +31,11 @@ struct default_policy {
     /// enabled. false (BSC scan): eventless transitions are taken only by step(), at most one
     /// per component per cycle.
     static constexpr bool settle_eventless = true;
+    /// What happens to an exception from a guard or action that no transition takes as a
+    /// bsc::action_failed event: true, dispatch() or step() rethrows it once the machine is
+    /// consistent (and the constructor, for an entry action); false, they return
+    /// outcome::failed and last_failure() holds it.
+    static constexpr bool rethrow_failures = true;
 };
 
 /// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],

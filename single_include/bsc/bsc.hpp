@@ -13,21 +13,11 @@
 #include <type_traits>
 #include <utility>
 
-// begin include/bsc/checks/checks.hpp
-// Runs every static check of a chart and turns a finding into the error that names it.
-// Structural checks come first: the others assume a well-formed tree.
-
-// begin include/bsc/checks/determinism.hpp
-// Determinism: two unguarded transitions on the same source and trigger conflict; a
-// transition after an unguarded one on the same source and trigger is shadowed.
-
-// begin include/bsc/detail/topology.hpp
-// The chart as data: the state tree and the rows flattened into constexpr arrays
-// (the BSTATE and BTRANS tables of the table-driven engine). The static checks and both
-// back ends read these arrays; only lookups by type use templates.
-
-#include <array>
-#include <cstdint>
+// begin include/bsc/error.hpp
+// Every error bsc reports at compile time, in one place. Each is a class template whose
+// arguments are the culprits (states, events, callables), so the compiler's "in instantiation
+// of" line names them; its static_assert says what is wrong and how to fix it.
+// docs/checks.md lists them all with an example each.
 
 // begin include/bsc/detail/meta.hpp
 // Small type-level toolkit: type lists, lookup by type and by position.
@@ -146,119 +136,191 @@ constexpr void visit_index(int i, F&& f) {
 
 }  // namespace bsc::detail
 // end include/bsc/detail/meta.hpp
-// begin include/bsc/dsl/row.hpp
-// The chart's second table: transition rows `source + trigger [guard] / action = target`,
-// and entry/exit rows `state<S> + on_entry / action`.
-
-#include <type_traits>
-#include <utility>
-
-// begin include/bsc/data/timer.hpp
-// BSC timers (seed 002, section III.C): data in the context, started or reset by actions,
-// updated by the machine at the beginning of each cycle. A timer started during cycle k begins
-// timing at cycle k+1; its expired flag `tm()` turns true at the first cycle whose time is at
-// least the limit after that.
-
-#include <chrono>
-#include <cstdint>
-
-namespace bsc {
-
-/// The machine's notion of time: a duration since an arbitrary origin, given to step(now).
-using duration = std::chrono::nanoseconds;
-
-namespace detail {
-struct timer_base {};
-struct timer_access;
-}  // namespace detail
-
-/// A timer with a fixed limit. Requirements: limit >= 0.
-class timer : detail::timer_base {
-public:
-    constexpr timer() = default;
-    constexpr explicit timer(duration limit) : limit_(limit) {}
-
-    /// Starts (or restarts) the timer; timing begins at the next cycle. Clears tm().
-    constexpr void start() {
-        phase_ = phase::pending;
-        expired_ = false;
-    }
-    /// Stops the timer and clears tm().
-    constexpr void reset() {
-        phase_ = phase::idle;
-        expired_ = false;
-    }
-    /// The paper's `tm`: the limit has been reached or passed.
-    constexpr bool tm() const { return expired_; }
-    constexpr bool expired() const { return expired_; }
-    constexpr bool running() const { return phase_ == phase::running && !expired_; }
-    constexpr duration limit() const { return limit_; }
-    /// Time since timing began (zero unless running or expired).
-    constexpr duration elapsed() const { return elapsed_; }
-
-    /// Called by the machine at the beginning of each cycle with the cycle's time.
-    constexpr void update(duration now) {
-        if (phase_ == phase::pending) {
-            phase_ = phase::running;
-            started_ = now;
-        }
-        if (phase_ == phase::running) {
-            elapsed_ = now - started_;
-            if (elapsed_ >= limit_) expired_ = true;
-        } else {
-            elapsed_ = duration::zero();
-        }
-    }
-
-    friend constexpr bool operator==(timer const& a, timer const& b) {
-        return a.limit_ == b.limit_ && a.started_ == b.started_ && a.elapsed_ == b.elapsed_ &&
-               a.phase_ == b.phase_ && a.expired_ == b.expired_;
-    }
-
-private:
-    friend struct detail::timer_access;
-    enum class phase : std::uint8_t { idle, pending, running };
-    duration limit_{};
-    duration started_{};
-    duration elapsed_{};
-    phase phase_ = phase::idle;
-    bool expired_ = false;
-};
-
-namespace detail {
-// Read-write access to a timer's state, for the state-space explorer only.
-struct timer_access {
-    static constexpr std::uint8_t phase(timer const& t) { return static_cast<std::uint8_t>(t.phase_); }
-    static constexpr duration started(timer const& t) { return t.started_; }
-    static constexpr void set(timer& t, std::uint8_t phase, bool expired, duration started, duration elapsed) {
-        t.phase_ = static_cast<timer::phase>(phase);
-        t.expired_ = expired;
-        t.started_ = started;
-        t.elapsed_ = elapsed;
-    }
-};
-}  // namespace detail
-
-}  // namespace bsc
-// end include/bsc/data/timer.hpp
-// begin include/bsc/dsl/action.hpp
-// Actions: what a transition, an entry or an exit does to the context.
-// Wrap a callable with bsc::action to sequence it with the comma operator: / (a, b, c).
-
-#include <tuple>
-#include <type_traits>
-#include <utility>
-
-// begin include/bsc/detail/invoke.hpp
-// Guards, actions and entry/exit actions are plain callables that take as many of
-// (context, event, raise) as they need. These helpers call them with the longest
-// argument list they accept, so users never write parameters they do not use.
-
-#include <type_traits>
-#include <utility>
-
 
 namespace bsc::error {
+
+// ---- the static checks of a chart (bsc::make_chart) ----------------------------------------
+
+template <class State>
+struct unreachable_state {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: unreachable state: no initial entry, history or transition can activate this state "
+                  "from the initial configuration; add a transition to it (or make it an initial child), or "
+                  "remove it");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct dead_end_state {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: dead end: no transition leaves this non-final state (neither from it, nor from an "
+                  "ancestor, nor from an orthogonal region); add one, or declare it with bsc::final_state");
+    static constexpr bool value = false;
+};
+
+template <class Source, class Trigger>
+struct conflicting_transitions {
+    static_assert(detail::dependent_false<Source>,
+                  "bsc: conflicting transitions: two unguarded transitions leave this state on the same "
+                  "trigger, so the chart is nondeterministic; guard one of them or remove one");
+    static constexpr bool value = false;
+};
+
+template <class Source, class Trigger, class Target>
+struct shadowed_transition {
+    static_assert(detail::dependent_false<Source>,
+                  "bsc: shadowed transition: an earlier unguarded transition from this state on the same "
+                  "trigger always wins, so the transition to Target can never fire; guard the earlier one or "
+                  "move this one before it");
+    static constexpr bool value = false;
+};
+
+template <class Source, class Target>
+struct transition_between_orthogonal_regions {
+    static_assert(detail::dependent_false<Source>,
+                  "bsc: transition between orthogonal regions: the source and the target lie in different "
+                  "regions of the same parallel state, which are always active together; target a state "
+                  "outside the parallel state instead");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct state_not_in_chart {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: a row names a state that the state tree does not declare; declare it in the tree "
+                  "(bsc::state, bsc::composite, bsc::parallel or bsc::final_state) or fix the row");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct duplicate_state {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: this state is declared twice in the state tree; every state type may appear once");
+    static constexpr bool value = false;
+};
+
+template <class Composite>
+struct missing_initial_state {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: this composite state has no initial child; add bsc::initial<Child> to its declaration");
+    static constexpr bool value = false;
+};
+
+template <class Composite>
+struct multiple_initial_states {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: this composite state has more than one bsc::initial marker; keep exactly one");
+    static constexpr bool value = false;
+};
+
+template <class Composite, class Initial>
+struct initial_not_a_child {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: the initial state named by this composite is declared elsewhere in the tree, not as "
+                  "one of its children; name one of its own children in bsc::initial<...>");
+    static constexpr bool value = false;
+};
+
+template <class Composite>
+struct too_many_children {
+    static_assert(detail::dependent_false<Composite>,
+                  "bsc: a composite state may have at most 255 children (its active child is kept in one "
+                  "byte); group some of them into a nested composite");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct eventless_livelock {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: eventless livelock: unguarded eventless transitions from this state lead back to it "
+                  "(or it has an unguarded eventless internal transition), so a dispatch would never settle; "
+                  "guard one of the transitions on the cycle or give it an event");
+    static constexpr bool value = false;
+};
+
+template <class Event>
+struct unhandled_event {
+    static_assert(detail::dependent_false<Event>,
+                  "bsc: no transition of this chart is triggered by the dispatched event type; add one, fix "
+                  "the event type, or dispatch with bsc::allow_unhandled to ignore it on purpose");
+    static constexpr bool value = false;
+};
+
+template <class Type>
+struct not_an_event {
+    static_assert(detail::dependent_false<Type>,
+                  "bsc: bsc::event<E> needs E to be a complete, copyable class or enumeration type without "
+                  "const or volatile (events are copied into the queue and handed to guards and actions); "
+                  "void, references, arrays, functions and pointers are not events. For a transition without "
+                  "an event, leave the trigger out: state<S> [guard] = state<T>");
+    static constexpr bool value = false;
+};
+
+template <class Event>
+struct raised_event_not_in_chart {
+    static_assert(detail::dependent_false<Event>,
+                  "bsc: an action raises an event type that no transition of this chart handles");
+    static constexpr bool value = false;
+};
+
+// ---- the arguments of bsc::make_chart ----------------------------------------------------
+
+template <class Argument>
+struct not_a_row {
+    static_assert(detail::dependent_false<Argument>,
+                  "bsc: after the state tree, every argument of make_chart must be a row: "
+                  "state<S> + event<E> [guard] / action = state<T>, state<S> [guard] = state<T>, "
+                  "state<S> + on_entry / action, or state<S> + on_exit / action");
+    static constexpr bool value = false;
+};
+
+template <class Root>
+struct root_must_be_composite {
+    static_assert(detail::dependent_false<Root>,
+                  "bsc: the first argument of make_chart is the root of the state tree and must be a "
+                  "bsc::composite<...>(...) or bsc::parallel<...>(...)");
+    static constexpr bool value = false;
+};
+
+// ---- the state tree -------------------------------------------------------------------------
+
+template <class State, class Argument>
+struct not_a_state_declaration {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: an argument of this state's declaration is not a state or marker; a composite takes "
+                  "bsc::state, bsc::final_state, bsc::composite, bsc::parallel, bsc::initial, "
+                  "bsc::shallow_history and bsc::deep_history; a parallel state takes states only");
+    static constexpr bool value = false;
+};
+
+template <class State>
+struct conflicting_history_markers {
+    static_assert(detail::dependent_false<State>,
+                  "bsc: this composite state has more than one history marker; keep one of "
+                  "bsc::shallow_history or bsc::deep_history");
+    static constexpr bool value = false;
+};
+
+// ---- the context -----------------------------------------------------------------------------
+
+template <class Type>
+struct context_not_an_aggregate {
+    static_assert(detail::dependent_false<Type>,
+                  "bsc: the machine looks for channels and timers in the context and in its members: this "
+                  "one must be an aggregate (a struct with public members, no constructors, no virtual "
+                  "functions, no base classes)");
+    static constexpr bool value = false;
+};
+
+template <class Type>
+struct too_many_fields {
+    static_assert(detail::dependent_false<Type>,
+                  "bsc: this struct of the context has more than 128 fields; group some of them into nested "
+                  "structs or std::arrays (channels and timers are found at any depth)");
+    static constexpr bool value = false;
+};
+
+// ---- guards and actions ----------------------------------------------------------------------
 
 template <class Callable>
 struct guard_signature_not_supported {
@@ -278,6 +340,85 @@ struct action_signature_not_supported {
 };
 
 }  // namespace bsc::error
+// end include/bsc/error.hpp
+// begin include/bsc/checks/checks.hpp
+// Runs every static check of a chart and turns a finding into the error that names it.
+// Structural checks come first: the others assume a well-formed tree.
+
+// begin include/bsc/checks/determinism.hpp
+// Determinism: two unguarded transitions on the same source and trigger conflict; a
+// transition after an unguarded one on the same source and trigger is shadowed.
+
+// begin include/bsc/model/chart_model.hpp
+// The model of a chart: its state tree and its rows flattened into constexpr arrays, from
+// which everything else is computed. The static checks, both back ends, the exports and the
+// explorer read these arrays; only lookups by type use templates.
+
+#include <array>
+#include <cstdint>
+
+// begin include/bsc/dsl/row.hpp
+// The chart's second table: transition rows `source + trigger [guard] / action = target`,
+// and entry/exit rows `state<S> + on_entry / action`.
+
+#include <chrono>
+#include <cstdlib>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/duration.hpp
+// bsc::duration: the machine's notion of time. The library never reads a clock: time is given
+// to step(now) by the caller, so simulations and tests are deterministic. The caller's time
+// may start anywhere (negative times included): a machine's clock starts at its first cycle.
+
+#include <chrono>
+#include <cstdint>
+
+namespace bsc {
+
+/// A duration since an origin the caller chooses, as given to step(now).
+using duration = std::chrono::nanoseconds;
+
+}  // namespace bsc
+
+namespace bsc::detail {
+
+// Whether at least `delay` (>= 0) has passed from `since` to `now` (since <= now), without
+// the overflow of `now - since` when the two lie far apart: the difference is exact in
+// unsigned arithmetic.
+constexpr bool has_elapsed(duration since, duration now, duration delay) {
+    if (now < since) return false;
+    auto const passed = static_cast<std::uint64_t>(now.count()) - static_cast<std::uint64_t>(since.count());
+    return passed >= static_cast<std::uint64_t>(delay.count());
+}
+
+// `now - since` (since <= now), saturated at duration::max().
+constexpr duration elapsed(duration since, duration now) {
+    if (now <= since) return duration::zero();
+    auto const passed = static_cast<std::uint64_t>(now.count()) - static_cast<std::uint64_t>(since.count());
+    auto const max = static_cast<std::uint64_t>(duration::max().count());
+    return duration{static_cast<duration::rep>(passed > max ? max : passed)};
+}
+
+}  // namespace bsc::detail
+// end include/bsc/duration.hpp
+// begin include/bsc/dsl/action.hpp
+// Actions: what a transition, an entry or an exit does to the context.
+// Wrap a callable with bsc::action to sequence it with the comma operator: / (a, b, c).
+
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/detail/invoke.hpp
+// Guards, actions and entry/exit actions are plain callables that take as many of
+// (context, event, raise) as they need. These helpers call them with the longest
+// argument list they accept, so users never write parameters they do not use.
+
+#include <type_traits>
+#include <utility>
+
 
 namespace bsc::detail {
 
@@ -695,11 +836,34 @@ inline constexpr bool is_exit_row<exit_row<S, A>> = true;
 
 }  // namespace bsc::detail
 
+namespace bsc::detail {
+
+// What can be an event: a complete class or enumeration type, copyable, not cv-qualified.
+template <class E>
+constexpr bool is_event_type() {
+    if constexpr (!(std::is_class_v<E> || std::is_enum_v<E>) || !std::is_same_v<E, std::remove_cv_t<E>>)
+        return false;
+    else if constexpr (!requires { sizeof(E); })
+        return false;
+    else
+        return std::is_copy_constructible_v<E> && std::is_destructible_v<E>;
+}
+
+template <class E>
+constexpr event_ref<E> checked_event_ref() {
+    if constexpr (!is_event_type<E>())
+        static_assert(error::not_an_event<E>::value);
+    return {};
+}
+
+}  // namespace bsc::detail
+
 namespace bsc {
 
 /// Names an event type as a trigger: `state<A> + event<E> = state<B>`.
+/// Requirements: E is a complete, copyable class or enumeration type, not cv-qualified.
 template <class E>
-inline constexpr detail::event_ref<E> event{};
+inline constexpr detail::event_ref<E> event = detail::checked_event_ref<E>();
 
 /// Entry action row: `state<S> + on_entry / action`; runs each time S is entered.
 inline constexpr detail::entry_keyword on_entry{};
@@ -710,10 +874,38 @@ inline constexpr detail::exit_keyword on_exit{};
 /// The tag used in diagnostics and observers for a transition without an event.
 using eventless = detail::eventless_trigger;
 
+namespace detail {
+// Deliberately not constexpr: in a constexpr chart, reaching one of these is the compile error
+// (its name says what is wrong); in a chart built at run time, it throws (or aborts without
+// exceptions), so no machine ever runs with such a delay.
+[[noreturn]] inline void bsc_after_negative_delay() {
+#if defined(__cpp_exceptions)
+    throw std::invalid_argument("bsc::after: the delay is negative");
+#else
+    std::abort();
+#endif
+}
+[[noreturn]] inline void bsc_after_delay_beyond_bsc_duration() {
+#if defined(__cpp_exceptions)
+    throw std::out_of_range("bsc::after: the delay does not fit bsc::duration (nanoseconds: about 292 years)");
+#else
+    std::abort();
+#endif
+}
+}  // namespace detail
+
 /// A state-scoped timeout trigger: `state<S> + after(3s) = state<T>` fires in the first cycle
-/// (step) at which S has been active for at least 3 s. Armed when S is entered.
+/// (step) at which S has been active for at least 3 s. Armed when S is entered. Without a
+/// target (`state<S> + after(500ms) / a`, an internal timeout) it fires every 500 ms while S is
+/// active: each time it fires, its delay counts again from that cycle.
+/// Requirements: 0 <= delay <= bsc::duration::max(); a chart with another delay does not
+/// compile (constexpr chart) or throws std::invalid_argument / std::out_of_range.
 template <class Rep, class Period>
 constexpr detail::timeout_ref after(std::chrono::duration<Rep, Period> delay) {
+    if (delay < std::chrono::duration<Rep, Period>::zero()) detail::bsc_after_negative_delay();
+    if (std::chrono::duration<long double, std::nano>(delay) >
+        std::chrono::duration<long double, std::nano>(duration::max()))
+        detail::bsc_after_delay_beyond_bsc_duration();
     return {std::chrono::duration_cast<duration>(delay)};
 }
 
@@ -915,27 +1107,6 @@ struct composite_children<type_list<Declared...>, std::index_sequence<I...>, A..
 
 }  // namespace bsc::detail
 
-namespace bsc::error {
-
-template <class State, class Argument>
-struct not_a_state_declaration {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: an argument of this state's declaration is not a state or marker; a composite takes "
-                  "bsc::state, bsc::final_state, bsc::composite, bsc::parallel, bsc::initial, "
-                  "bsc::shallow_history and bsc::deep_history; a parallel state takes states only");
-    static constexpr bool value = false;
-};
-
-template <class State>
-struct conflicting_history_markers {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: this composite state has more than one history marker; keep one of "
-                  "bsc::shallow_history or bsc::deep_history");
-    static constexpr bool value = false;
-};
-
-}  // namespace bsc::error
-
 namespace bsc {
 
 /// Names the initial (default) child of a composite state. If no child of that name is
@@ -965,7 +1136,7 @@ constexpr auto composite(A...) {
             detail::index_in<std::false_type,
                              std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
                                                 detail::is_initial_marker<A> || detail::is_history_marker<A>>...>();
-        static_assert(error::not_a_state_declaration<S, detail::at<bad, detail::type_list<A...>>>::value);
+        static_assert(error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>::value);
     } else if constexpr (history_markers > 1) {
         static_assert(error::conflicting_history_markers<S>::value);
     }
@@ -982,7 +1153,7 @@ constexpr auto parallel(A...) {
     if constexpr (!all_valid) {
         constexpr int bad =
             detail::index_in<std::false_type, std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>();
-        static_assert(error::not_a_state_declaration<S, detail::at<bad, detail::type_list<A...>>>::value);
+        static_assert(error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>::value);
     }
     using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true>()));
     return detail::parallel_node<S, children>{};
@@ -1051,24 +1222,27 @@ struct topology {
     std::array<bool, N> implicit{};
     int slots = 0;
 
-    constexpr bool is_leaf(int s) const { return kinds[s] == kind::basic || kinds[s] == kind::final_state; }
-    constexpr bool is_compound(int s) const { return kinds[s] == kind::composite || kinds[s] == kind::top; }
+    // States are numbered by int (negative numbers mean "none"); the arrays by size_t.
+    static constexpr std::size_t at(int s) { return static_cast<std::size_t>(s); }
+
+    constexpr bool is_leaf(int s) const { return kinds[at(s)] == kind::basic || kinds[at(s)] == kind::final_state; }
+    constexpr bool is_compound(int s) const { return kinds[at(s)] == kind::composite || kinds[at(s)] == kind::top; }
     // a is an ancestor of d, or d itself
-    constexpr bool contains(int a, int d) const { return a <= d && d < end[a]; }
-    constexpr bool is_proper_ancestor(int a, int d) const { return a < d && d < end[a]; }
+    constexpr bool contains(int a, int d) const { return a <= d && d < end[at(a)]; }
+    constexpr bool is_proper_ancestor(int a, int d) const { return a < d && d < end[at(a)]; }
     constexpr int lca(int a, int b) const {
-        while (!contains(a, b)) a = parent[a];
+        while (!contains(a, b)) a = parent[at(a)];
         return a;
     }
     // The child of `a` on the way down to its descendant d.
     constexpr int child_toward(int a, int d) const {
         int c = d;
-        while (parent[c] != a) c = parent[c];
+        while (parent[at(c)] != a) c = parent[at(c)];
         return c;
     }
     constexpr bool under_parallel(int s) const {
-        for (int a = parent[s]; a >= 0; a = parent[a])
-            if (kinds[a] == kind::parallel)
+        for (int a = parent[at(s)]; a >= 0; a = parent[at(a)])
+            if (kinds[at(a)] == kind::parallel)
                 return true;
         return false;
     }
@@ -1190,25 +1364,25 @@ constexpr int transition_domain(topology<N> const& t, int source, int target) {
 }
 
 template <class Chart>
-struct analysis {
+struct chart_model {
     using root = typename Chart::root_type;
     using nodes = decltype(flatten<top_node<root>>());
     using tags = typename tags_of<nodes>::type;
-    using rows = typename Chart::row_types;
+    using row_types = typename Chart::row_types;
     using chart_context = typename Chart::context_type;
-    using events = typename drop_void<typename event_list<rows>::all>::type;
+    using events = typename drop_void<typename event_list<row_types>::all>::type;
 
     static constexpr int N = static_cast<int>(nodes::size);
-    static constexpr int R = static_cast<int>(rows::size);
+    static constexpr int R = static_cast<int>(row_types::size);
 
-    static constexpr topology<nodes::size> topo = [] {
+    static constexpr topology<nodes::size> tree = [] {
         topology<nodes::size> t{};
         fill_topology<top_node<root>>(t, 0, -1, 0, 0);
         return t;
     }();
 
-    static constexpr row_table<rows::size> table = []<class... Rs>(type_list<Rs...>) {
-        row_table<rows::size> r{};
+    static constexpr row_table<row_types::size> rows = []<class... Rs>(type_list<Rs...>) {
+        row_table<row_types::size> r{};
         std::size_t i = 0;
         (
             [&] {
@@ -1226,17 +1400,17 @@ struct analysis {
                 }
                 r.domain[i] = no_state;
                 if (r.source[i] >= 0 && r.target[i] >= 0)
-                    r.domain[i] = transition_domain(topo, r.source[i], r.target[i]);
+                    r.domain[i] = transition_domain(tree, r.source[i], r.target[i]);
                 ++i;
             }(),
             ...);
         return r;
-    }(rows{});
+    }(row_types{});
 
     template <int I>
     using tag_at = at<static_cast<std::size_t>(I), tags>;
     template <int I>
-    using row_at = at<static_cast<std::size_t>(I), rows>;
+    using row_at = at<static_cast<std::size_t>(I), row_types>;
     template <class S>
     static constexpr int index_of_state = index_of<S, tags>;
     template <class E>
@@ -1244,7 +1418,7 @@ struct analysis {
 };
 
 }  // namespace bsc::detail
-// end include/bsc/detail/topology.hpp
+// end include/bsc/model/chart_model.hpp
 
 namespace bsc::detail {
 
@@ -1295,128 +1469,6 @@ constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table
 
 }  // namespace bsc::detail
 // end include/bsc/checks/determinism.hpp
-// begin include/bsc/checks/errors.hpp
-// The errors of the static checks. Each is a class template whose arguments are the
-// offending states (and events), so the compiler's "in instantiation of" line names them;
-// its static_assert says what is wrong and how to fix it. docs/checks.md lists them all.
-
-
-namespace bsc::error {
-
-template <class State>
-struct unreachable_state {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: unreachable state: no initial entry, history or transition can activate this state "
-                  "from the initial configuration; add a transition to it (or make it an initial child), or "
-                  "remove it");
-    static constexpr bool value = false;
-};
-
-template <class State>
-struct dead_end_state {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: dead end: no transition leaves this non-final state (neither from it, nor from an "
-                  "ancestor, nor from an orthogonal region); add one, or declare it with bsc::final_state");
-    static constexpr bool value = false;
-};
-
-template <class Source, class Trigger>
-struct conflicting_transitions {
-    static_assert(detail::dependent_false<Source>,
-                  "bsc: conflicting transitions: two unguarded transitions leave this state on the same "
-                  "trigger, so the chart is nondeterministic; guard one of them or remove one");
-    static constexpr bool value = false;
-};
-
-template <class Source, class Trigger, class Target>
-struct shadowed_transition {
-    static_assert(detail::dependent_false<Source>,
-                  "bsc: shadowed transition: an earlier unguarded transition from this state on the same "
-                  "trigger always wins, so the transition to Target can never fire; guard the earlier one or "
-                  "move this one before it");
-    static constexpr bool value = false;
-};
-
-template <class Source, class Target>
-struct transition_between_orthogonal_regions {
-    static_assert(detail::dependent_false<Source>,
-                  "bsc: transition between orthogonal regions: the source and the target lie in different "
-                  "regions of the same parallel state, which are always active together; target a state "
-                  "outside the parallel state instead");
-    static constexpr bool value = false;
-};
-
-template <class State>
-struct state_not_in_chart {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: a row names a state that the state tree does not declare; declare it in the tree "
-                  "(bsc::state, bsc::composite, bsc::parallel or bsc::final_state) or fix the row");
-    static constexpr bool value = false;
-};
-
-template <class State>
-struct duplicate_state {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: this state is declared twice in the state tree; every state type may appear once");
-    static constexpr bool value = false;
-};
-
-template <class Composite>
-struct missing_initial_state {
-    static_assert(detail::dependent_false<Composite>,
-                  "bsc: this composite state has no initial child; add bsc::initial<Child> to its declaration");
-    static constexpr bool value = false;
-};
-
-template <class Composite>
-struct multiple_initial_states {
-    static_assert(detail::dependent_false<Composite>,
-                  "bsc: this composite state has more than one bsc::initial marker; keep exactly one");
-    static constexpr bool value = false;
-};
-
-template <class Composite, class Initial>
-struct initial_not_a_child {
-    static_assert(detail::dependent_false<Composite>,
-                  "bsc: the initial state named by this composite is declared elsewhere in the tree, not as "
-                  "one of its children; name one of its own children in bsc::initial<...>");
-    static constexpr bool value = false;
-};
-
-template <class Composite>
-struct too_many_children {
-    static_assert(detail::dependent_false<Composite>,
-                  "bsc: a composite state may have at most 255 children (its active child is kept in one "
-                  "byte); group some of them into a nested composite");
-    static constexpr bool value = false;
-};
-
-template <class State>
-struct eventless_livelock {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: eventless livelock: unguarded eventless transitions from this state lead back to it "
-                  "(or it has an unguarded eventless internal transition), so a dispatch would never settle; "
-                  "guard one of the transitions on the cycle or give it an event");
-    static constexpr bool value = false;
-};
-
-template <class Event>
-struct unhandled_event {
-    static_assert(detail::dependent_false<Event>,
-                  "bsc: no transition of this chart is triggered by the dispatched event type; add one, fix "
-                  "the event type, or dispatch with bsc::allow_unhandled to ignore it on purpose");
-    static constexpr bool value = false;
-};
-
-template <class Event>
-struct raised_event_not_in_chart {
-    static_assert(detail::dependent_false<Event>,
-                  "bsc: an action raises an event type that no transition of this chart handles");
-    static constexpr bool value = false;
-};
-
-}  // namespace bsc::error
-// end include/bsc/checks/errors.hpp
 // begin include/bsc/checks/livelock.hpp
 // Eventless livelock: a cycle of unguarded eventless transitions, which dispatch would
 // follow forever. Nodes are basic states; u -> v when an unguarded eventless transition
@@ -1682,38 +1734,38 @@ struct trigger_type<transition_row<S, eventless_trigger, G, A, T>> {
 // that the other checks are not even instantiated on a malformed chart.
 template <class Chart>
 constexpr bool structure_valid() {
-    using an = analysis<Chart>;
-    return find_duplicate(typename an::tags{}) < 0 && find_unknown_state(an::table) < 0 &&
-           find_initial_problem(an::topo) < 0;
+    using model = chart_model<Chart>;
+    return find_duplicate(typename model::tags{}) < 0 && find_unknown_state(model::rows) < 0 &&
+           find_initial_problem(model::tree) < 0;
 }
 
 template <class Chart>
 constexpr bool check_structure() {
-    using an = analysis<Chart>;
-    constexpr int duplicate = find_duplicate(typename an::tags{});
+    using model = chart_model<Chart>;
+    constexpr int duplicate = find_duplicate(typename model::tags{});
     if constexpr (duplicate >= 0) {
-        using S = typename an::template tag_at<duplicate>;
-        constexpr int first = an::template index_of_state<S>;
-        constexpr int implicit = an::topo.implicit[duplicate] ? duplicate : an::topo.implicit[first] ? first : -1;
+        using S = typename model::template tag_at<duplicate>;
+        constexpr int first = model::template index_of_state<S>;
+        constexpr int implicit = model::tree.implicit[duplicate] ? duplicate : model::tree.implicit[first] ? first : -1;
         if constexpr (implicit >= 0)
-            return error::initial_not_a_child<typename an::template tag_at<an::topo.parent[implicit]>, S>::value;
+            return error::initial_not_a_child<typename model::template tag_at<model::tree.parent[implicit]>, S>::value;
         else
             return error::duplicate_state<S>::value;
     } else {
-        constexpr int unknown = find_unknown_state(an::table);
+        constexpr int unknown = find_unknown_state(model::rows);
         if constexpr (unknown >= 0) {
-            using row = typename an::template row_at<unknown>;
-            if constexpr (an::table.source[unknown] == unknown_state)
+            using row = typename model::template row_at<unknown>;
+            if constexpr (model::rows.source[unknown] == unknown_state)
                 return error::state_not_in_chart<typename row::source>::value;
             else
                 return error::state_not_in_chart<typename row::target>::value;
         } else {
-            constexpr int composite = find_initial_problem(an::topo);
+            constexpr int composite = find_initial_problem(model::tree);
             if constexpr (composite >= 0) {
-                using S = typename an::template tag_at<composite>;
-                if constexpr (an::topo.child_count[composite] > 255)
+                using S = typename model::template tag_at<composite>;
+                if constexpr (model::tree.child_count[composite] > 255)
                     return error::too_many_children<S>::value;
-                else if constexpr (an::topo.initial_count[composite] == 0)
+                else if constexpr (model::tree.initial_count[composite] == 0)
                     return error::missing_initial_state<S>::value;
                 else
                     return error::multiple_initial_states<S>::value;
@@ -1726,10 +1778,10 @@ constexpr bool check_structure() {
 
 template <class Chart>
 constexpr bool check_orthogonality() {
-    using an = analysis<Chart>;
-    constexpr int row = find_orthogonal_transition(an::topo, an::table);
+    using model = chart_model<Chart>;
+    constexpr int row = find_orthogonal_transition(model::tree, model::rows);
     if constexpr (row >= 0) {
-        using R = typename an::template row_at<row>;
+        using R = typename model::template row_at<row>;
         return error::transition_between_orthogonal_regions<typename R::source, typename R::target>::value;
     } else {
         return true;
@@ -1738,15 +1790,15 @@ constexpr bool check_orthogonality() {
 
 template <class Chart>
 constexpr bool check_determinism() {
-    using an = analysis<Chart>;
-    constexpr determinism_findings found = find_nondeterminism(an::topo, an::table);
+    using model = chart_model<Chart>;
+    constexpr determinism_findings found = find_nondeterminism(model::tree, model::rows);
     constexpr row_pair conflict = found.conflict;
     constexpr row_pair shadowed = found.shadowed;
     if constexpr (conflict.found()) {
-        using R = typename an::template row_at<conflict.second>;
+        using R = typename model::template row_at<conflict.second>;
         return error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>::value;
     } else if constexpr (shadowed.found()) {
-        using R = typename an::template row_at<shadowed.second>;
+        using R = typename model::template row_at<shadowed.second>;
         return error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
                                           typename R::target>::value;
     } else {
@@ -1756,15 +1808,15 @@ constexpr bool check_determinism() {
 
 template <class Chart>
 constexpr bool check_reachability() {
-    using an = analysis<Chart>;
-    constexpr auto reach = reachable_states(an::topo, an::table);
-    constexpr int unreachable = find_unreachable(an::topo, reach);
+    using model = chart_model<Chart>;
+    constexpr auto reach = reachable_states(model::tree, model::rows);
+    constexpr int unreachable = find_unreachable(model::tree, reach);
     if constexpr (unreachable >= 0) {
-        return error::unreachable_state<typename an::template tag_at<unreachable>>::value;
+        return error::unreachable_state<typename model::template tag_at<unreachable>>::value;
     } else {
-        constexpr int dead_end = find_dead_end(an::topo, an::table, reach);
+        constexpr int dead_end = find_dead_end(model::tree, model::rows, reach);
         if constexpr (dead_end >= 0)
-            return error::dead_end_state<typename an::template tag_at<dead_end>>::value;
+            return error::dead_end_state<typename model::template tag_at<dead_end>>::value;
         else
             return true;
     }
@@ -1772,11 +1824,11 @@ constexpr bool check_reachability() {
 
 template <class Chart>
 constexpr bool check_livelock() {
-    using an = analysis<Chart>;
-    constexpr std::size_t edges = count_eventless_edges(an::topo, an::table);
-    constexpr int source = find_eventless_cycle<edges>(an::topo, an::table);
+    using model = chart_model<Chart>;
+    constexpr std::size_t edges = count_eventless_edges(model::tree, model::rows);
+    constexpr int source = find_eventless_cycle<edges>(model::tree, model::rows);
     if constexpr (source >= 0)
-        return error::eventless_livelock<typename an::template tag_at<source>>::value;
+        return error::eventless_livelock<typename model::template tag_at<source>>::value;
     else
         return true;
 }
@@ -1798,27 +1850,6 @@ constexpr bool check_chart() {
 
 }  // namespace bsc::detail
 // end include/bsc/checks/checks.hpp
-
-namespace bsc::error {
-
-template <class Argument>
-struct not_a_row {
-    static_assert(detail::dependent_false<Argument>,
-                  "bsc: after the state tree, every argument of make_chart must be a row: "
-                  "state<S> + event<E> [guard] / action = state<T>, state<S> [guard] = state<T>, "
-                  "state<S> + on_entry / action, or state<S> + on_exit / action");
-    static constexpr bool value = false;
-};
-
-template <class Root>
-struct root_must_be_composite {
-    static_assert(detail::dependent_false<Root>,
-                  "bsc: the first argument of make_chart is the root of the state tree and must be a "
-                  "bsc::composite<...>(...) or bsc::parallel<...>(...)");
-    static constexpr bool value = false;
-};
-
-}  // namespace bsc::error
 
 namespace bsc::detail {
 template <class... Rows>
@@ -1881,7 +1912,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
         return 0;
     } else if constexpr (!(detail::is_row<Rows> && ...)) {
         constexpr int bad = detail::index_in<std::false_type, std::bool_constant<detail::is_row<Rows>>...>();
-        static_assert(error::not_a_row<detail::at<bad, detail::type_list<Rows...>>>::value);
+        static_assert(error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>::value);
         return 0;
     } else {
         using chart_type = chart<Context, Root, Rows...>;
@@ -1917,7 +1948,7 @@ struct chart_ref : std::remove_cvref_t<decltype(Chart)> {
     using chart_type = std::remove_cvref_t<decltype(Chart)>;
     constexpr chart_ref() : chart_type(Chart) {}
     // Implicit, so that a machine of chart_ref<chart> is constructed from `chart` itself.
-    constexpr chart_ref(chart_type const& chart) : chart_type(chart) {}  // NOLINT(google-explicit-constructor)
+    constexpr chart_ref(chart_type const& other) : chart_type(other) {}  // NOLINT(google-explicit-constructor)
 };
 
 }  // namespace bsc
@@ -1927,13 +1958,13 @@ struct chart_ref : std::remove_cvref_t<decltype(Chart)> {
 // the configuration bytes that visits only the states where a transition on that event can
 // leave; at each basic state the candidate transitions, their exits, action and entries are
 // straight-line code fixed at compile time. Parallel regions select first and fire after,
-// as SCXML's microstep does.
+// as SCXML's microstep does. The public interface and the run to completion are the shared
+// driver's (runtime/driver.hpp); this file selects and fires.
 
-#include <algorithm>
 #include <array>
-#include <boost/hana/at.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 // begin include/bsc/compiled/plan.hpp
@@ -1944,29 +1975,216 @@ struct chart_ref : std::remove_cvref_t<decltype(Chart)> {
 
 #include <array>
 
+// begin include/bsc/model/layout.hpp
+// What every back end lays out the same way, computed once from the chart model: the
+// components of a BSC cycle, the timeout slots, the children of each state, the bytes of the
+// initial configuration, the transitions in declaration order and the entry and exit rows of
+// each state. Both back ends number these alike because both read them from here.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
 
 namespace bsc::detail {
 
-template <class An>
-struct plan {
-    static constexpr auto const& topo = An::topo;
-    static constexpr auto const& table = An::table;
-    static constexpr int N = An::N;
-    static constexpr int R = An::R;
+template <class Model>
+struct chart_layout {
+    static constexpr auto const& tree = Model::tree;
+    static constexpr auto const& rows = Model::rows;
+    static constexpr int N = Model::N;
+    static constexpr int R = Model::R;
+    static constexpr int root = 1;  // state 0 is the implicit top above the chart's root
 
     // `trigger` is an event's position, eventless_id, or any_condition (eventless or timeout).
     static constexpr bool is_transition_on(int row, int trigger) {
         auto const r = static_cast<std::size_t>(row);
-        if (table.kinds[r] != row_kind::transition) return false;
-        return trigger == any_condition ? table.trigger[r] < 0 : table.trigger[r] == trigger;
+        if (rows.kinds[r] != row_kind::transition) return false;
+        return trigger == any_condition ? rows.trigger[r] < 0 : rows.trigger[r] == trigger;
     }
 
     static constexpr bool has_trigger(int trigger) {
         for (int r = 0; r < R; ++r)
-            if (is_transition_on(r, trigger))
-                return true;
+            if (is_transition_on(r, trigger)) return true;
         return false;
     }
+
+    static constexpr bool is_timeout_row(int row) {
+        auto const r = static_cast<std::size_t>(row);
+        return rows.kinds[r] == row_kind::transition && rows.trigger[r] <= timeout_trigger_id(0);
+    }
+
+    // The children of state S, in document order.
+    template <int S>
+    static constexpr auto children = [] {
+        std::array<int, static_cast<std::size_t>(tree.child_count[static_cast<std::size_t>(S)])> out{};
+        std::size_t n = 0;
+        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
+             c = tree.next_sibling[static_cast<std::size_t>(c)])
+            out[n++] = c;
+        return out;
+    }();
+
+    // BSC components: the root and every child of a parallel state, in document order. In a
+    // cycle each fires at most one condition-driven transition, chosen from the states between
+    // its active frontier (a basic state, or a parallel state whose children are components of
+    // their own) and its root.
+    static constexpr int component_count() {
+        int n = 1;
+        for (int s = 2; s < N; ++s)
+            n += tree.kinds[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] == kind::parallel;
+        return n;
+    }
+    static constexpr auto components = [] {
+        std::array<int, static_cast<std::size_t>(component_count())> out{};
+        std::size_t n = 0;
+        out[n++] = root;
+        for (int s = 2; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] == kind::parallel)
+                out[n++] = s;
+        return out;
+    }();
+
+    // Every timeout row has a slot for the time from which its delay counts: the entry of its
+    // source, or the cycle it last fired in for an internal timeout (which re-arms itself).
+    // Slots are numbered by source state in document order, then by row, so the slots of one
+    // state are contiguous: timeout_slot[s] is the first (-1 if none), timeout_slot_count[s]
+    // how many; row_timeout_slot[r] is row r's (-1 for other rows).
+    static constexpr auto timeout_slot_count = [] {
+        std::array<int, static_cast<std::size_t>(N)> count{};
+        for (int r = 0; r < R; ++r)
+            if (is_timeout_row(r)) ++count[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])];
+        return count;
+    }();
+    static constexpr auto timeout_slot = [] {
+        std::array<int, static_cast<std::size_t>(N)> first{};
+        int n = 0;
+        for (std::size_t s = 0; s < first.size(); ++s) {
+            first[s] = timeout_slot_count[s] > 0 ? n : -1;
+            n += timeout_slot_count[s];
+        }
+        return first;
+    }();
+    static constexpr int timeout_slots = [] {
+        int n = 0;
+        for (int count : timeout_slot_count) n += count;
+        return n;
+    }();
+    static constexpr auto row_timeout_slot = [] {
+        std::array<int, static_cast<std::size_t>(R)> slot{};
+        std::array<int, static_cast<std::size_t>(N)> used{};
+        for (int r = 0; r < R; ++r) {
+            auto const source = static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)]);
+            slot[static_cast<std::size_t>(r)] = is_timeout_row(r) ? timeout_slot[source] + used[source]++ : -1;
+        }
+        return slot;
+    }();
+    // The state whose entry arms a slot.
+    static constexpr auto timeout_slot_state = [] {
+        std::array<int, static_cast<std::size_t>(timeout_slots)> state{};
+        for (int s = 0; s < N; ++s)
+            for (int k = 0; k < timeout_slot_count[static_cast<std::size_t>(s)]; ++k)
+                state[static_cast<std::size_t>(timeout_slot[static_cast<std::size_t>(s)] + k)] = s;
+        return state;
+    }();
+
+    static constexpr int count_rows(row_kind k, int state) {
+        int n = 0;
+        for (int r = 0; r < R; ++r)
+            n += rows.kinds[static_cast<std::size_t>(r)] == k &&
+                 (state < 0 || rows.source[static_cast<std::size_t>(r)] == state);
+        return n;
+    }
+
+    // The rows of kind K from state S (every state if S is -1), in declaration order: the
+    // entry or exit rows of a state, or all transitions.
+    template <row_kind K, int S>
+    static constexpr auto rows_of = [] {
+        std::array<int, static_cast<std::size_t>(count_rows(K, S))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == K && (S < 0 || rows.source[static_cast<std::size_t>(r)] == S))
+                out[n++] = r;
+        return out;
+    }();
+    static constexpr auto const& transition_rows = rows_of<row_kind::transition, -1>;
+
+    // How many basic states below s can be active at once: the most transitions one event
+    // can select there.
+    static constexpr int max_active_leaves(int s = root) {
+        auto const i = static_cast<std::size_t>(s);
+        if (tree.is_leaf(s)) return 1;
+        int result = 0;
+        for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)]) {
+            int const m = max_active_leaves(c);
+            result = tree.kinds[i] == kind::parallel ? result + m : (m > result ? m : result);
+        }
+        return result;
+    }
+
+    static constexpr bool has_parallel = [] {
+        for (int s = 0; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel) return true;
+        return false;
+    }();
+
+    // The initial configuration: every composite's byte at its initial child.
+    static constexpr auto initial_bytes = [] {
+        std::array<std::uint8_t, static_cast<std::size_t>(tree.slots)> bytes{};
+        for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s)
+            if (tree.slot[s] >= 0)
+                bytes[static_cast<std::size_t>(tree.slot[s])] =
+                    static_cast<std::uint8_t>(tree.ordinal[static_cast<std::size_t>(tree.initial[s])]);
+        return bytes;
+    }();
+
+    // Which children of the root are final, by ordinal: the machine halts when its root's
+    // byte selects one. Empty unless the root is a composite with a final child.
+    static constexpr bool can_halt = [] {
+        if (tree.kinds[root] != kind::composite) return false;
+        for (int c = tree.first_child[root]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+            if (tree.kinds[static_cast<std::size_t>(c)] == kind::final_state) return true;
+        return false;
+    }();
+    static constexpr auto final_root_children = [] {
+        std::array<bool, can_halt ? static_cast<std::size_t>(tree.child_count[root]) : 0> out{};
+        if constexpr (can_halt)
+            for (int c = tree.first_child[root]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                out[static_cast<std::size_t>(tree.ordinal[static_cast<std::size_t>(c)])] =
+                    tree.kinds[static_cast<std::size_t>(c)] == kind::final_state;
+        return out;
+    }();
+
+    // Two selected transitions conflict when their exit sets meet, i.e. when their domains nest.
+    static constexpr bool conflict(int r1, int r2) {
+        int const d1 = rows.domain[static_cast<std::size_t>(r1)], d2 = rows.domain[static_cast<std::size_t>(r2)];
+        if (d1 < 0 || d2 < 0) return false;
+        return tree.contains(d1, d2) || tree.contains(d2, d1);
+    }
+    // Of two conflicting transitions, the later-selected one preempts the earlier when its
+    // source lies below the earlier one's (SCXML's removeConflictingTransitions).
+    static constexpr bool preempts(int later, int earlier) {
+        return tree.is_proper_ancestor(rows.source[static_cast<std::size_t>(earlier)],
+                                       rows.source[static_cast<std::size_t>(later)]);
+    }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/model/layout.hpp
+
+namespace bsc::detail {
+
+template <class Model>
+struct plan : chart_layout<Model> {
+    using layout = chart_layout<Model>;
+    using layout::tree;
+    using layout::rows;
+    using layout::N;
+    using layout::R;
+    using layout::is_transition_on;
+    using layout::components;
+    using layout::has_parallel;
+    using layout::conflict;
 
     // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a descendant.
     template <int Trigger>
@@ -1975,9 +2193,9 @@ struct plan {
         for (int r = 0; r < R; ++r) {
             if (!is_transition_on(r, Trigger))
                 continue;
-            int const src = table.source[static_cast<std::size_t>(r)];
+            int const src = rows.source[static_cast<std::size_t>(r)];
             for (int s = 0; s < N; ++s)
-                if (topo.contains(src, s) || topo.contains(s, src))
+                if (tree.contains(src, s) || tree.contains(s, src))
                     rel[static_cast<std::size_t>(s)] = true;
         }
         return rel;
@@ -1991,15 +2209,15 @@ struct plan {
         constexpr auto& rel = relevant<Trigger>;
         constexpr int count = [] {
             int n = 0;
-            for (int c = topo.first_child[static_cast<std::size_t>(S)]; c >= 0;
-                 c = topo.next_sibling[static_cast<std::size_t>(c)])
+            for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
+                 c = tree.next_sibling[static_cast<std::size_t>(c)])
                 n += rel[static_cast<std::size_t>(c)];
             return n;
         }();
         std::array<int, static_cast<std::size_t>(count)> out{};
         std::size_t n = 0;
-        for (int c = topo.first_child[static_cast<std::size_t>(S)]; c >= 0;
-             c = topo.next_sibling[static_cast<std::size_t>(c)])
+        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
+             c = tree.next_sibling[static_cast<std::size_t>(c)])
             if (rel[static_cast<std::size_t>(c)])
                 out[n++] = c;
         return out;
@@ -2007,9 +2225,9 @@ struct plan {
 
     static constexpr int candidate_count(int leaf, int trigger) {
         int n = 0;
-        for (int a = leaf; a >= 0; a = topo.parent[static_cast<std::size_t>(a)])
+        for (int a = leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
             for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, trigger) && table.source[static_cast<std::size_t>(r)] == a)
+                if (is_transition_on(r, trigger) && rows.source[static_cast<std::size_t>(r)] == a)
                     ++n;
         return n;
     }
@@ -2018,38 +2236,18 @@ struct plan {
     static constexpr auto candidates = [] {
         std::array<int, static_cast<std::size_t>(candidate_count(Leaf, Trigger))> out{};
         std::size_t n = 0;
-        for (int a = Leaf; a >= 0; a = topo.parent[static_cast<std::size_t>(a)])
+        for (int a = Leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
             for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, Trigger) && table.source[static_cast<std::size_t>(r)] == a)
+                if (is_transition_on(r, Trigger) && rows.source[static_cast<std::size_t>(r)] == a)
                     out[n++] = r;
-        return out;
-    }();
-
-    // BSC components: the root and every child of a parallel state, in document order. In a
-    // cycle each fires at most one condition-driven transition, chosen from the states between
-    // its active frontier (a basic state, or a parallel state whose children are components of
-    // their own) and its root.
-    static constexpr int component_count() {
-        int n = 1;
-        for (int s = 2; s < N; ++s)
-            n += topo.kinds[static_cast<std::size_t>(topo.parent[static_cast<std::size_t>(s)])] == kind::parallel;
-        return n;
-    }
-    static constexpr auto components = [] {
-        std::array<int, static_cast<std::size_t>(component_count())> out{};
-        std::size_t n = 0;
-        out[n++] = 1;
-        for (int s = 2; s < N; ++s)
-            if (topo.kinds[static_cast<std::size_t>(topo.parent[static_cast<std::size_t>(s)])] == kind::parallel)
-                out[n++] = s;
         return out;
     }();
 
     static constexpr int component_candidate_count(int frontier, int component) {
         int n = 0;
-        for (int a = frontier;; a = topo.parent[static_cast<std::size_t>(a)]) {
+        for (int a = frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
             for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, any_condition) && table.source[static_cast<std::size_t>(r)] == a) ++n;
+                if (is_transition_on(r, any_condition) && rows.source[static_cast<std::size_t>(r)] == a) ++n;
             if (a == component) break;
         }
         return n;
@@ -2058,32 +2256,13 @@ struct plan {
     static constexpr auto component_candidates = [] {
         std::array<int, static_cast<std::size_t>(component_candidate_count(Frontier, Component))> out{};
         std::size_t n = 0;
-        for (int a = Frontier;; a = topo.parent[static_cast<std::size_t>(a)]) {
+        for (int a = Frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
             for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, any_condition) && table.source[static_cast<std::size_t>(r)] == a)
+                if (is_transition_on(r, any_condition) && rows.source[static_cast<std::size_t>(r)] == a)
                     out[n++] = r;
             if (a == Component) break;
         }
         return out;
-    }();
-
-    // States that are the source of a timeout row get a slot for the time they were entered,
-    // numbered in document order.
-    static constexpr auto timeout_slot = [] {
-        std::array<bool, static_cast<std::size_t>(N)> has{};
-        for (int r = 0; r < R; ++r)
-            if (table.kinds[static_cast<std::size_t>(r)] == row_kind::transition &&
-                table.trigger[static_cast<std::size_t>(r)] <= timeout_trigger_id(0))
-                has[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] = true;
-        std::array<int, static_cast<std::size_t>(N)> slot{};
-        int n = 0;
-        for (std::size_t s = 0; s < slot.size(); ++s) slot[s] = has[s] ? n++ : -1;
-        return slot;
-    }();
-    static constexpr int timeout_slots = [] {
-        int n = 0;
-        for (int slot : timeout_slot) n += slot >= 0;
-        return n;
     }();
 
     static constexpr int transition_count(int trigger) {
@@ -2111,143 +2290,74 @@ struct plan {
         return -1;
     }
 
-    static constexpr int count_rows(row_kind k, int state) {
-        int n = 0;
-        for (int r = 0; r < R; ++r)
-            n += table.kinds[static_cast<std::size_t>(r)] == k && table.source[static_cast<std::size_t>(r)] == state;
-        return n;
-    }
-
-    // Entry or exit rows of a state, in declaration order.
-    template <row_kind K, int State>
-    static constexpr auto state_rows = [] {
-        std::array<int, static_cast<std::size_t>(count_rows(K, State))> out{};
-        std::size_t n = 0;
-        for (int r = 0; r < R; ++r)
-            if (table.kinds[static_cast<std::size_t>(r)] == K && table.source[static_cast<std::size_t>(r)] == State)
-                out[n++] = r;
-        return out;
-    }();
-
-    template <int S>
-    static constexpr auto children = [] {
-        std::array<int, static_cast<std::size_t>(topo.child_count[static_cast<std::size_t>(S)])> out{};
-        std::size_t n = 0;
-        for (int c = topo.first_child[static_cast<std::size_t>(S)]; c >= 0;
-             c = topo.next_sibling[static_cast<std::size_t>(c)])
-            out[n++] = c;
-        return out;
-    }();
-
-    // How many basic states can be active at once: the size of the selection buffer.
-    static constexpr int max_active_leaves(int s) {
-        auto const i = static_cast<std::size_t>(s);
-        if (topo.is_leaf(s))
-            return 1;
-        int result = 0;
-        for (int c = topo.first_child[i]; c >= 0; c = topo.next_sibling[static_cast<std::size_t>(c)]) {
-            int const m = max_active_leaves(c);
-            result = topo.kinds[i] == kind::parallel ? result + m : (m > result ? m : result);
-        }
-        return result;
-    }
-
-    static constexpr bool has_parallel = [] {
-        for (int s = 0; s < N; ++s)
-            if (topo.kinds[static_cast<std::size_t>(s)] == kind::parallel)
-                return true;
-        return false;
-    }();
-
-    // The initial configuration: every composite's byte at its initial child.
-    template <std::size_t Slots>
-    static constexpr std::array<std::uint8_t, Slots> initial_bytes() {
-        std::array<std::uint8_t, Slots> bytes{};
-        for (int s = 0; s < N; ++s) {
-            auto const i = static_cast<std::size_t>(s);
-            if (topo.slot[i] >= 0)
-                bytes[static_cast<std::size_t>(topo.slot[i])] =
-                    static_cast<std::uint8_t>(topo.ordinal[static_cast<std::size_t>(topo.initial[i])]);
-        }
-        return bytes;
-    }
-
-    // Two selected transitions conflict when their exit sets meet, i.e. when their domains nest.
-    static constexpr bool conflict(int r1, int r2) {
-        int const d1 = table.domain[static_cast<std::size_t>(r1)], d2 = table.domain[static_cast<std::size_t>(r2)];
-        if (d1 < 0 || d2 < 0)
-            return false;
-        return topo.contains(d1, d2) || topo.contains(d2, d1);
-    }
-
     static constexpr int index_in_components(int s) {
         for (std::size_t i = 0; i < components.size(); ++i)
             if (components[i] == s) return static_cast<int>(i);
         return -1;
     }
 
-    // The zone of a state: the component (plan::components) it lies in, as an index there.
-    // Within a zone at most one transition is selected per microstep: its basic states that
-    // lie below no further parallel state are mutually exclusive.
-    static constexpr auto zone = [] {
-        std::array<int, static_cast<std::size_t>(N)> z{};
+    // The component a state lies in, as an index into components. Within a component at most
+    // one transition is selected per microstep: its basic states that lie below no further
+    // parallel state are mutually exclusive.
+    static constexpr auto component_of = [] {
+        std::array<int, static_cast<std::size_t>(N)> out{};
         for (int s = 0; s < N; ++s) {
-            z[static_cast<std::size_t>(s)] = 0;
-            for (int a = s; a > 1; a = topo.parent[static_cast<std::size_t>(a)]) {
+            out[static_cast<std::size_t>(s)] = 0;
+            for (int a = s; a > 1; a = tree.parent[static_cast<std::size_t>(a)]) {
                 int const i = index_in_components(a);
                 if (i >= 0) {
-                    z[static_cast<std::size_t>(s)] = i;
+                    out[static_cast<std::size_t>(s)] = i;
                     break;
                 }
             }
         }
-        return z;
+        return out;
     }();
 
-    static constexpr int zone_row_count(int trigger, int z) {
+    static constexpr int component_row_count(int trigger, int component) {
         int n = 0;
         for (int r = 0; r < R; ++r)
-            n += is_transition_on(r, trigger) && zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] == z;
+            n += is_transition_on(r, trigger) && component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == component;
         return n;
     }
-    // The transitions on a trigger whose source lies in zone Z, in declaration order.
-    template <int Trigger, int Z>
-    static constexpr auto zone_rows = [] {
-        std::array<int, static_cast<std::size_t>(zone_row_count(Trigger, Z))> out{};
+    // The transitions on a trigger whose source lies in component C, in declaration order.
+    template <int Trigger, int C>
+    static constexpr auto component_rows = [] {
+        std::array<int, static_cast<std::size_t>(component_row_count(Trigger, C))> out{};
         std::size_t n = 0;
         for (int r = 0; r < R; ++r)
-            if (is_transition_on(r, Trigger) && zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r)])] == Z)
+            if (is_transition_on(r, Trigger) && component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == C)
                 out[n++] = r;
         return out;
     }();
-    // What a region-local selection records for a row: 1 + its position in its zone's rows.
+    // What a region-local selection records for a row: 1 + its position in its component's rows.
     template <int Trigger, int Row>
-    static constexpr int zone_code = [] {
-        constexpr auto const& rows = zone_rows<Trigger, zone[static_cast<std::size_t>(table.source[Row])]>;
-        for (std::size_t i = 0; i < rows.size(); ++i)
-            if (rows[i] == Row) return static_cast<int>(i) + 1;
+    static constexpr int component_code = [] {
+        constexpr auto const& list = component_rows<Trigger, component_of[static_cast<std::size_t>(rows.source[Row])]>;
+        for (std::size_t i = 0; i < list.size(); ++i)
+            if (list[i] == Row) return static_cast<int>(i) + 1;
         return 0;
     }();
 
     // A trigger is region-local when what SCXML's conflict resolution does at run time is known
     // at compile time to keep every selected transition: no transition on it leaves a state that
     // contains a parallel state (so each is selected by one basic state at most), and no two
-    // transitions from different zones have nesting domains (so none preempts another). Its
-    // microstep then records one row per zone and fires the zones in document order, with no
-    // run-time conflict check.
+    // transitions from different components have nesting domains (so none preempts another).
+    // Its microstep then records one row per component and fires the components in document
+    // order, with no run-time conflict check.
     template <int Trigger>
     static constexpr bool region_local = [] {
         if (!has_parallel) return false;  // nothing to resolve: every transition fires where selected
         for (int r = 0; r < R; ++r) {
             if (!is_transition_on(r, Trigger)) continue;
-            int const src = table.source[static_cast<std::size_t>(r)];
+            int const src = rows.source[static_cast<std::size_t>(r)];
             for (int s = 0; s < N; ++s)
-                if (topo.kinds[static_cast<std::size_t>(s)] == kind::parallel && topo.contains(src, s))
+                if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel && tree.contains(src, s))
                     return false;
-            if (zone_row_count(Trigger, zone[static_cast<std::size_t>(src)]) > 254) return false;
+            if (component_row_count(Trigger, component_of[static_cast<std::size_t>(src)]) > 254) return false;
             for (int r2 = r + 1; r2 < R; ++r2)
                 if (is_transition_on(r2, Trigger) &&
-                    zone[static_cast<std::size_t>(table.source[static_cast<std::size_t>(r2)])] != zone[static_cast<std::size_t>(src)] &&
+                    component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r2)])] != component_of[static_cast<std::size_t>(src)] &&
                     conflict(r, r2))
                     return false;
         }
@@ -2256,45 +2366,261 @@ struct plan {
 
     // A region-local trigger whose transitions can fire as they are selected, with the same
     // effects as selecting all first: none is guarded (so no selection can depend on another
-    // zone's action), and no state that one of them exits or enters has an entry or exit row
+    // component's action), and no state that one of them exits or enters has an entry or exit row
     // (so the only visible effects are the transition actions, which run in document order
-    // either way). Each zone's transition changes only the bytes inside its own domain.
+    // either way). Each component's transition changes only the bytes inside its own domain.
     template <int Trigger>
     static constexpr bool fires_at_selection = [] {
         if (!region_local<Trigger>) return false;
         for (int r = 0; r < R; ++r) {
             if (!is_transition_on(r, Trigger)) continue;
-            if (table.guarded[static_cast<std::size_t>(r)]) return false;
-            int const d = table.domain[static_cast<std::size_t>(r)];
+            if (rows.guarded[static_cast<std::size_t>(r)]) return false;
+            int const d = rows.domain[static_cast<std::size_t>(r)];
             if (d < 0) continue;  // targetless: exits and enters nothing
             for (int r2 = 0; r2 < R; ++r2) {
-                auto const k = table.kinds[static_cast<std::size_t>(r2)];
-                int const s = table.source[static_cast<std::size_t>(r2)];
-                if ((k == row_kind::entry || k == row_kind::exit) && s != d && topo.contains(d, s)) return false;
+                auto const k = rows.kinds[static_cast<std::size_t>(r2)];
+                int const s = rows.source[static_cast<std::size_t>(r2)];
+                if ((k == row_kind::entry || k == row_kind::exit) && s != d && tree.contains(d, s)) return false;
             }
         }
         return true;
     }();
 
-    // The zones in which a transition on the trigger can be selected under a parallel state.
-    static constexpr int selecting_zone_count(int trigger) {
+    // The components in which a transition on the trigger can be selected under a parallel state.
+    static constexpr int selecting_component_count(int trigger) {
         int n = 0;
-        for (std::size_t z = 1; z < components.size(); ++z) n += zone_row_count(trigger, static_cast<int>(z)) > 0;
+        for (std::size_t c = 1; c < components.size(); ++c) n += component_row_count(trigger, static_cast<int>(c)) > 0;
         return n;
     }
     template <int Trigger>
-    static constexpr auto selecting_zones = [] {
-        std::array<int, static_cast<std::size_t>(selecting_zone_count(Trigger))> out{};
+    static constexpr auto selecting_components = [] {
+        std::array<int, static_cast<std::size_t>(selecting_component_count(Trigger))> out{};
         std::size_t n = 0;
-        for (std::size_t z = 1; z < components.size(); ++z)
-            if (zone_row_count(Trigger, static_cast<int>(z)) > 0) out[n++] = static_cast<int>(z);
+        for (std::size_t c = 1; c < components.size(); ++c)
+            if (component_row_count(Trigger, static_cast<int>(c)) > 0) out[n++] = static_cast<int>(c);
         return out;
     }();
-
 };
 
 }  // namespace bsc::detail
 // end include/bsc/compiled/plan.hpp
+// begin include/bsc/observer.hpp
+// Observer hooks: entry, exit and transition notifications for traces and tests. An
+// observer implements any subset of the hooks; a machine without one pays nothing.
+
+#include <string_view>
+
+// begin include/bsc/detail/type_name.hpp
+// Compile-time type names without RTTI, read from the compiler's function signature.
+
+#include <string_view>
+
+namespace bsc::detail {
+
+template <class T>
+constexpr std::string_view signature() {
+    return __PRETTY_FUNCTION__;
+}
+
+// GCC: "... [with T = ns::Name; std::string_view = ...]", Clang: "... [T = ns::Name]".
+constexpr std::string_view type_from_signature(std::string_view sig) {
+    constexpr std::string_view key = "T = ";
+    const auto start = sig.find(key) + key.size();
+    auto end = start;
+    int depth = 0;
+    for (; end < sig.size(); ++end) {
+        const char c = sig[end];
+        if (c == '<' || c == '(' || c == '[')
+            ++depth;
+        if (c == '>' || c == ')')
+            --depth;
+        if (depth < 0 || (depth == 0 && (c == ';' || c == ']')))
+            break;
+        if (c == ']')
+            --depth;
+    }
+    return sig.substr(start, end - start);
+}
+
+// "ns::outer::Name<ns::X>" -> "Name<ns::X>": the last scope at bracket depth zero.
+constexpr std::string_view unqualified(std::string_view name) {
+    std::size_t cut = 0;
+    int depth = 0;
+    for (std::size_t i = 0; i + 1 < name.size(); ++i) {
+        if (name[i] == '<')
+            ++depth;
+        if (name[i] == '>')
+            --depth;
+        if (depth == 0 && name[i] == ':' && name[i + 1] == ':')
+            cut = i + 2;
+    }
+    return name.substr(cut);
+}
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// The fully qualified name of a type, e.g. "mcs::Tape", computed at compile time.
+template <class T>
+inline constexpr std::string_view qualified_name = detail::type_from_signature(detail::signature<T>());
+
+/// The name of a type without its namespaces, e.g. "Tape"; used for states in traces.
+template <class T>
+inline constexpr std::string_view name_of = detail::unqualified(qualified_name<T>);
+
+}  // namespace bsc
+// end include/bsc/detail/type_name.hpp
+
+namespace bsc {
+
+/// Identifies a state in observer calls: `tag.name` is its unqualified name, `type` the state.
+template <class S>
+struct state_tag {
+    using type = S;
+    static constexpr std::string_view name = name_of<S>;
+};
+
+/// The target reported for an internal transition, which exits and enters nothing.
+struct internal {};
+
+/// The default observer: no hooks, no cost.
+struct no_observer {};
+
+/// An observer may define, each optional:
+///   void on_entry(auto state);              // after state's entry actions
+///   void on_exit(auto state);               // after state's exit actions
+///   void on_transition(auto source, auto target, auto const& event);  // before the action
+///   void on_row(int row);                   // the same moment: the row's position in make_chart
+/// where `state`, `source` and `target` are bsc::state_tag<S> (target: state_tag<bsc::internal>
+/// for an internal transition) and `event` is the event (bsc::eventless for eventless ones).
+namespace detail {
+template <class O, class Tag>
+concept observes_entry = requires(O& o) {
+    o.on_entry(Tag{});
+};
+template <class O, class Tag>
+concept observes_exit = requires(O& o) {
+    o.on_exit(Tag{});
+};
+template <class O, class Src, class Dst, class E>
+concept observes_transition = requires(O& o, E const& e) {
+    o.on_transition(Src{}, Dst{}, e);
+};
+template <class O>
+concept observes_rows = requires(O& o) {
+    o.on_row(0);
+};
+}  // namespace detail
+
+}  // namespace bsc
+// end include/bsc/observer.hpp
+// begin include/bsc/outcome.hpp
+// What dispatch reports, and the limits a machine runs under.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace bsc {
+
+/// The result of dispatching one event (run to completion, internal events included).
+enum class outcome : std::uint8_t {
+    consumed,        ///< at least one transition fired for the dispatched event
+    ignored,         ///< no transition was enabled; the event was discarded (SCXML semantics)
+    queue_overflow,  ///< an action raised an event while the internal queue was full; that event was dropped
+    livelock,        ///< the eventless-step or internal-event limit was reached; the rest was abandoned
+    halted,          ///< the machine had reached a final child of its root; nothing was processed
+    reentrant,       ///< called from inside one of the machine's own guards or actions: refused, nothing changed
+    failed,          ///< a guard or action threw and no transition took the bsc::action_failed event (the
+                     ///< policy's rethrow_failures is false; last_failure() holds the exception)
+};
+
+/// The limits of a machine. Derive from it and override a member to change one:
+/// `struct my_limits : bsc::default_policy { static constexpr std::size_t queue_capacity = 32; };`
+struct default_policy {
+    /// Events an action may raise before the queue is drained; one more is an overflow.
+    static constexpr std::size_t queue_capacity = 8;
+    /// Eventless transitions taken in a row before dispatch reports a livelock.
+    static constexpr std::size_t max_eventless_steps = 64;
+    /// Internal events processed within one dispatch before it reports a livelock.
+    static constexpr std::size_t max_internal_events = 256;
+    /// true (SCXML): construction and dispatch take eventless transitions until none is
+    /// enabled. false (BSC scan): eventless transitions are taken only by step(), at most one
+    /// per component per cycle.
+    static constexpr bool settle_eventless = true;
+    /// What happens to an exception from a guard or action that no transition takes as a
+    /// bsc::action_failed event: true, dispatch() or step() rethrows it once the machine is
+    /// consistent (and the constructor, for an entry action); false, they return
+    /// outcome::failed and last_failure() holds it.
+    static constexpr bool rethrow_failures = true;
+};
+
+/// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],
+/// docs/references.md): eventless transitions are condition-driven and run only in step(), so a
+/// chart whose components keep reacting to each other (a PLC scan loop) neither livelocks at
+/// construction nor in dispatch.
+struct scan_policy : default_policy {
+    static constexpr bool settle_eventless = false;
+};
+
+/// What one BSC execution cycle (`step(now)`) did, on either back end.
+struct step_report {
+    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
+    int transitions = 0;                ///< condition-driven transitions fired by the components
+    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
+};
+
+/// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
+/// handles is then allowed (and ignored) instead of failing to compile.
+struct allow_unhandled_t {
+    explicit allow_unhandled_t() = default;
+};
+inline constexpr allow_unhandled_t allow_unhandled{};
+
+}  // namespace bsc
+// end include/bsc/outcome.hpp
+// begin include/bsc/runtime/driver.hpp
+// What both back ends share: the public interface of a machine and everything that does not
+// depend on how a transition is selected and fired. The driver owns the machine's data (chart,
+// context, configuration, queue, clock, timeout slots, outcome, observer), runs an event to
+// completion (settling eventless transitions and raised events, with the policy's limits),
+// runs a BSC cycle's shell (time, timers, latched inputs, the components' turns, committed
+// outputs), and answers is<S>, halted and active_states from the configuration bytes.
+//
+// A back end derives from it (CRTP) and supplies only what differs:
+//   void enter_initial();                        enters the root and its default completion
+//   template <int Trigger, class E>
+//   bool microstep(E const& e);                  selects and fires the transitions on e
+//   template <int Component> bool component_step();  one component's turn in a cycle
+//   template <int S> bool is_active() const;     whether state S is active
+
+#include <array>
+#include <boost/hana/at.hpp>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/action_failed.hpp
+// bsc::action_failed: the event a machine raises when one of its guards or actions throws.
+
+#include <exception>
+
+namespace bsc {
+
+/// What a machine puts on its internal queue when a guard, an action, an entry or an exit
+/// action throws (W3C SCXML's error.execution): the rest of that callable is skipped, the
+/// microstep completes, and this event carries the exception. A chart handles it with
+/// ordinary rows, e.g. `state<Running> + event<bsc::action_failed> = state<Fault>`. A failure
+/// that no transition takes is the caller's: dispatch() or step() rethrows it once the machine
+/// is consistent (or reports outcome::failed, as the policy says).
+struct action_failed {
+    std::exception_ptr error;
+};
+
+}  // namespace bsc
+// end include/bsc/action_failed.hpp
 // begin include/bsc/configuration.hpp
 // The active configuration, and the list of active state names it yields for traces.
 
@@ -2362,20 +2688,126 @@ private:
 
 }  // namespace bsc
 // end include/bsc/configuration.hpp
-// begin include/bsc/detail/context_data.hpp
-// The machine's view of a context's data model: it latches input channels, commits output
-// channels and updates timers by visiting the context's members. A context that is not an
-// aggregate, or has no channel or timer, costs nothing.
+// begin include/bsc/detail/access.hpp
+// The one door to what users may not touch: a channel's latch and commit, a timer's update
+// and its internal state, a machine's configuration, clock, timeout slots and queue. Only the
+// machines, the explorer and the project's own tests go through it; every class it opens
+// names it as its only friend.
 
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+
+namespace bsc::detail {
+
+struct access {
+    // ---- channels and timers: driven by the machine around each cycle and dispatch ----------
+    template <class Channel>
+    static constexpr void latch(Channel& c) {
+        c.latch();
+    }
+    template <class Channel>
+    static constexpr void commit(Channel& c) {
+        c.commit();
+    }
+    template <class Timer>
+    static constexpr void update(Timer& t, duration now) {
+        t.update(now);
+    }
+    template <class Timer>
+    static constexpr std::uint8_t timer_phase(Timer const& t) {
+        return static_cast<std::uint8_t>(t.phase_);
+    }
+    template <class Timer>
+    static constexpr duration timer_started(Timer const& t) {
+        return t.started_;
+    }
+    template <class Timer>
+    static constexpr void set_timer(Timer& t, std::uint8_t phase, bool expired, duration started, duration elapsed) {
+        t.phase_ = static_cast<typename Timer::phase>(phase);
+        t.expired_ = expired;
+        t.started_ = started;
+        t.elapsed_ = elapsed;
+    }
+
+    // ---- machines: read and written by the explorer, read by the tests ---------------------
+    // (through the shared driver, which holds the data and names this class its friend)
+    template <class M>
+    static constexpr auto& configuration(M& m) {
+        return driver_of(m).config_;
+    }
+    template <class M>
+    static constexpr auto clock(M const& m) {
+        return driver_of(m).clock_;
+    }
+    // Sets a machine's clock as if a cycle had run at `now`.
+    template <class M>
+    static constexpr void set_clock(M& m, duration now) {
+        driver_of(m).clock_ = now;
+        driver_of(m).clock_started_ = true;
+    }
+    template <class M>
+    static constexpr auto& armed(M& m) {
+        return driver_of(m).armed_;
+    }
+    template <class M>
+    static constexpr auto& last_outcome(M& m) {
+        return driver_of(m).last_;
+    }
+    template <class M>
+    static constexpr auto& queue(M& m) {
+        return driver_of(m).queue_;
+    }
+    template <class M>
+    static constexpr auto longest_timeout(M const& m) {
+        return driver_of(m).longest_timeout();
+    }
+    template <class M>
+    static constexpr auto canonical_configuration(M const& m) {
+        return driver_of(m).canonical_configuration();
+    }
+    template <class M>
+    static constexpr bool timeout_armed(M const& m, std::size_t slot) {
+        return driver_of(m).timeout_armed(slot);
+    }
+    template <class M>
+    static constexpr auto active_flags(M const& m) {
+        return driver_of(m).active_flags();
+    }
+
+private:
+    template <class M>
+    static constexpr auto& driver_of(M& m) {
+        using driver = typename std::remove_const_t<M>::driver_type;
+        if constexpr (std::is_const_v<M>)
+            return static_cast<driver const&>(m);
+        else
+            return static_cast<driver&>(m);
+    }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/access.hpp
+// begin include/bsc/runtime/context_data.hpp
+// The machine's view of a context's data model: it latches input channels, commits output
+// channels and updates timers, wherever they are in the context: as its members, or inside
+// members that are aggregates or std::arrays, at any depth. Members that hold none cost
+// nothing, and a context with none is not visited at all.
+
+#include <array>
+#include <cstddef>
 #include <tuple>
 #include <type_traits>
 
 // begin include/bsc/data/channel.hpp
-// Data channels of a Basic Statechart (seed 002): the context's members through which a chart
-// talks to its environment and to other charts. Plain members of the context are the chart's
-// internal variables: an action's write is visible at once to every later guard.
+// Data channels of a Basic Statechart (the Basic Statechart paper [BSC], docs/references.md):
+// the context's members through which a chart talks to its environment and to other charts.
+// Plain members of the context are the chart's internal variables: an action's write is visible
+// at once to every later guard.
 
 #include <type_traits>
+
 
 namespace bsc::detail {
 // Lets the machine find channels among the context's members. Equal to any other, so that
@@ -2402,11 +2834,12 @@ public:
     constexpr void set(T value) { next_ = value; }
     /// The value that the next cycle will latch.
     constexpr T const& pending() const { return next_; }
-    constexpr void latch() { now_ = next_; }
-    constexpr void commit() {}
     friend constexpr bool operator==(input const&, input const&) = default;
 
 private:
+    friend struct detail::access;  // the machine latches and commits
+    constexpr void latch() { now_ = next_; }
+    constexpr void commit() {}
     T next_{};
     T now_{};
 };
@@ -2424,16 +2857,17 @@ public:
     /// Written by actions; published at the end of the cycle.
     constexpr void set(T value) { next_ = value; }
     constexpr T const& pending() const { return next_; }
-    constexpr void latch() {}
-    constexpr void commit() { now_ = next_; }
     friend constexpr bool operator==(output const&, output const&) = default;
 
 private:
+    friend struct detail::access;  // the machine latches and commits
+    constexpr void latch() {}
+    constexpr void commit() { now_ = next_; }
     T next_{};
     T now_{};
 };
 
-/// A channel that is both input and output (seed 002 allows it): written by the environment or
+/// A channel that is both input and output ([BSC] allows it): written by the environment or
 /// by actions, read as the value latched at the start of the cycle; writes take effect at the
 /// next cycle boundary.
 template <class T>
@@ -2445,11 +2879,12 @@ public:
     constexpr operator T const&() const { return now_; }  // NOLINT
     constexpr void set(T value) { next_ = value; }
     constexpr T const& pending() const { return next_; }
-    constexpr void latch() { now_ = next_; }
-    constexpr void commit() { now_ = next_; }
     friend constexpr bool operator==(inout const&, inout const&) = default;
 
 private:
+    friend struct detail::access;  // the machine latches and commits
+    constexpr void latch() { now_ = next_; }
+    constexpr void commit() { now_ = next_; }
     T next_{};
     T now_{};
 };
@@ -2459,17 +2894,493 @@ inline constexpr bool is_channel = std::is_base_of_v<detail::channel_base, T>;
 
 }  // namespace bsc
 // end include/bsc/data/channel.hpp
+// begin include/bsc/data/timer.hpp
+// BSC timers (the Basic Statechart paper [BSC] in docs/references.md, section III.C): data in
+// the context, started or reset by actions, updated by the machine at the beginning of each
+// cycle. A timer started during cycle k begins timing at cycle k+1; its expired flag `tm()` turns
+// true at the first cycle whose time is at least the limit after that.
+
+#include <cstdint>
+
+
+namespace bsc {
+
+namespace detail {
+struct timer_base {};
+}  // namespace detail
+
+/// A timer with a fixed limit. Requirements: limit >= 0.
+class timer : detail::timer_base {
+public:
+    constexpr timer() = default;
+    constexpr explicit timer(duration limit) : limit_(limit) {}
+
+    /// Starts (or restarts) the timer; timing begins at the next cycle. Clears tm().
+    constexpr void start() {
+        phase_ = phase::pending;
+        expired_ = false;
+    }
+    /// Stops the timer and clears tm().
+    constexpr void reset() {
+        phase_ = phase::idle;
+        expired_ = false;
+    }
+    /// The paper's `tm`: the limit has been reached or passed.
+    constexpr bool tm() const { return expired_; }
+    constexpr bool expired() const { return expired_; }
+    constexpr bool running() const { return phase_ == phase::running && !expired_; }
+    constexpr duration limit() const { return limit_; }
+    /// Time since timing began (zero unless running or expired).
+    constexpr duration elapsed() const { return elapsed_; }
+
+    friend constexpr bool operator==(timer const& a, timer const& b) {
+        return a.limit_ == b.limit_ && a.started_ == b.started_ && a.elapsed_ == b.elapsed_ &&
+               a.phase_ == b.phase_ && a.expired_ == b.expired_;
+    }
+
+private:
+    friend struct detail::access;  // the machine updates it; the explorer encodes it
+    // Called by the machine at the beginning of each cycle with the cycle's time.
+    constexpr void update(duration now) {
+        if (phase_ == phase::pending) {
+            phase_ = phase::running;
+            started_ = now;
+        }
+        if (phase_ == phase::running) {
+            elapsed_ = detail::elapsed(started_, now);
+            if (elapsed_ >= limit_) expired_ = true;
+        } else {
+            elapsed_ = duration::zero();
+        }
+    }
+
+    enum class phase : std::uint8_t { idle, pending, running };
+    duration limit_{};
+    duration started_{};
+    duration elapsed_{};
+    phase phase_ = phase::idle;
+    bool expired_ = false;
+};
+
+}  // namespace bsc
+// end include/bsc/data/timer.hpp
 // begin include/bsc/detail/fields.hpp
 // Field access for plain aggregates, without macros or reflection: the number of fields is
 // the largest N for which T{any, ..., any} (N times) compiles, and structured bindings give
-// references to them. Used to find the channels and timers of a context. Supports aggregates
-// of up to 32 fields without base classes or C arrays (use std::array instead).
+// references to them (detail/field_bindings.hpp). Used to find the channels and timers of a
+// context, at any depth of nested aggregates and std::arrays. Supports aggregates of up to
+// max_fields (128) fields without base classes or C arrays (use std::array instead).
 
 #include <cstddef>
 #include <tuple>
 #include <type_traits>
 #include <utility>
 
+// begin include/bsc/detail/field_bindings.hpp
+// Generated by `python3 scripts/field_bindings.py`; do not edit.
+// References to the fields of an aggregate with at most 128 fields, as a tuple.
+
+#include <cstddef>
+#include <tuple>
+
+namespace bsc::detail {
+
+inline constexpr std::size_t max_fields = 128;
+
+template <std::size_t N, class T>
+constexpr auto bind_fields(T& t) {
+    if constexpr (N == 0) {
+        (void)t;
+        return std::tuple<>{};
+    } else if constexpr (N == 1) {
+        auto& [f0] = t;
+        return std::tie(f0);
+    } else if constexpr (N == 2) {
+        auto& [f0, f1] = t;
+        return std::tie(f0, f1);
+    } else if constexpr (N == 3) {
+        auto& [f0, f1, f2] = t;
+        return std::tie(f0, f1, f2);
+    } else if constexpr (N == 4) {
+        auto& [f0, f1, f2, f3] = t;
+        return std::tie(f0, f1, f2, f3);
+    } else if constexpr (N == 5) {
+        auto& [f0, f1, f2, f3, f4] = t;
+        return std::tie(f0, f1, f2, f3, f4);
+    } else if constexpr (N == 6) {
+        auto& [f0, f1, f2, f3, f4, f5] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5);
+    } else if constexpr (N == 7) {
+        auto& [f0, f1, f2, f3, f4, f5, f6] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6);
+    } else if constexpr (N == 8) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7);
+    } else if constexpr (N == 9) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8);
+    } else if constexpr (N == 10) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9);
+    } else if constexpr (N == 11) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10);
+    } else if constexpr (N == 12) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11);
+    } else if constexpr (N == 13) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12);
+    } else if constexpr (N == 14) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13);
+    } else if constexpr (N == 15) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14);
+    } else if constexpr (N == 16) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15);
+    } else if constexpr (N == 17) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16);
+    } else if constexpr (N == 18) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17);
+    } else if constexpr (N == 19) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18);
+    } else if constexpr (N == 20) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19);
+    } else if constexpr (N == 21) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20);
+    } else if constexpr (N == 22) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21);
+    } else if constexpr (N == 23) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22);
+    } else if constexpr (N == 24) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23);
+    } else if constexpr (N == 25) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24);
+    } else if constexpr (N == 26) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25);
+    } else if constexpr (N == 27) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26);
+    } else if constexpr (N == 28) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27);
+    } else if constexpr (N == 29) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28);
+    } else if constexpr (N == 30) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29);
+    } else if constexpr (N == 31) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30);
+    } else if constexpr (N == 32) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31);
+    } else if constexpr (N == 33) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32);
+    } else if constexpr (N == 34) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33);
+    } else if constexpr (N == 35) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34);
+    } else if constexpr (N == 36) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35);
+    } else if constexpr (N == 37) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36);
+    } else if constexpr (N == 38) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37);
+    } else if constexpr (N == 39) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38);
+    } else if constexpr (N == 40) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39);
+    } else if constexpr (N == 41) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40);
+    } else if constexpr (N == 42) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41);
+    } else if constexpr (N == 43) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42);
+    } else if constexpr (N == 44) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43);
+    } else if constexpr (N == 45) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44);
+    } else if constexpr (N == 46) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45);
+    } else if constexpr (N == 47) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46);
+    } else if constexpr (N == 48) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47);
+    } else if constexpr (N == 49) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48);
+    } else if constexpr (N == 50) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49);
+    } else if constexpr (N == 51) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50);
+    } else if constexpr (N == 52) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51);
+    } else if constexpr (N == 53) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52);
+    } else if constexpr (N == 54) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53);
+    } else if constexpr (N == 55) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54);
+    } else if constexpr (N == 56) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55);
+    } else if constexpr (N == 57) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56);
+    } else if constexpr (N == 58) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57);
+    } else if constexpr (N == 59) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58);
+    } else if constexpr (N == 60) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59);
+    } else if constexpr (N == 61) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60);
+    } else if constexpr (N == 62) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61);
+    } else if constexpr (N == 63) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62);
+    } else if constexpr (N == 64) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63);
+    } else if constexpr (N == 65) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64);
+    } else if constexpr (N == 66) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65);
+    } else if constexpr (N == 67) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66);
+    } else if constexpr (N == 68) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67);
+    } else if constexpr (N == 69) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68);
+    } else if constexpr (N == 70) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69);
+    } else if constexpr (N == 71) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70);
+    } else if constexpr (N == 72) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71);
+    } else if constexpr (N == 73) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72);
+    } else if constexpr (N == 74) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73);
+    } else if constexpr (N == 75) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74);
+    } else if constexpr (N == 76) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75);
+    } else if constexpr (N == 77) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76);
+    } else if constexpr (N == 78) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77);
+    } else if constexpr (N == 79) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78);
+    } else if constexpr (N == 80) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79);
+    } else if constexpr (N == 81) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80);
+    } else if constexpr (N == 82) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81);
+    } else if constexpr (N == 83) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82);
+    } else if constexpr (N == 84) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83);
+    } else if constexpr (N == 85) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84);
+    } else if constexpr (N == 86) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85);
+    } else if constexpr (N == 87) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86);
+    } else if constexpr (N == 88) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87);
+    } else if constexpr (N == 89) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88);
+    } else if constexpr (N == 90) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89);
+    } else if constexpr (N == 91) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90);
+    } else if constexpr (N == 92) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91);
+    } else if constexpr (N == 93) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92);
+    } else if constexpr (N == 94) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93);
+    } else if constexpr (N == 95) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94);
+    } else if constexpr (N == 96) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95);
+    } else if constexpr (N == 97) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96);
+    } else if constexpr (N == 98) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97);
+    } else if constexpr (N == 99) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98);
+    } else if constexpr (N == 100) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99);
+    } else if constexpr (N == 101) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100);
+    } else if constexpr (N == 102) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101);
+    } else if constexpr (N == 103) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102);
+    } else if constexpr (N == 104) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103);
+    } else if constexpr (N == 105) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104);
+    } else if constexpr (N == 106) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105);
+    } else if constexpr (N == 107) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106);
+    } else if constexpr (N == 108) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107);
+    } else if constexpr (N == 109) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108);
+    } else if constexpr (N == 110) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109);
+    } else if constexpr (N == 111) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110);
+    } else if constexpr (N == 112) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111);
+    } else if constexpr (N == 113) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112);
+    } else if constexpr (N == 114) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113);
+    } else if constexpr (N == 115) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114);
+    } else if constexpr (N == 116) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115);
+    } else if constexpr (N == 117) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116);
+    } else if constexpr (N == 118) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117);
+    } else if constexpr (N == 119) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118);
+    } else if constexpr (N == 120) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119);
+    } else if constexpr (N == 121) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120);
+    } else if constexpr (N == 122) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121);
+    } else if constexpr (N == 123) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122);
+    } else if constexpr (N == 124) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122, f123] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122, f123);
+    } else if constexpr (N == 125) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122, f123, f124] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122, f123, f124);
+    } else if constexpr (N == 126) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122, f123, f124, f125] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122, f123, f124, f125);
+    } else if constexpr (N == 127) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122, f123, f124, f125, f126] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122, f123, f124, f125, f126);
+    } else if constexpr (N == 128) {
+        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122, f123, f124, f125, f126, f127] = t;
+        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31, f32, f33, f34, f35, f36, f37, f38, f39, f40, f41, f42, f43, f44, f45, f46, f47, f48, f49, f50, f51, f52, f53, f54, f55, f56, f57, f58, f59, f60, f61, f62, f63, f64, f65, f66, f67, f68, f69, f70, f71, f72, f73, f74, f75, f76, f77, f78, f79, f80, f81, f82, f83, f84, f85, f86, f87, f88, f89, f90, f91, f92, f93, f94, f95, f96, f97, f98, f99, f100, f101, f102, f103, f104, f105, f106, f107, f108, f109, f110, f111, f112, f113, f114, f115, f116, f117, f118, f119, f120, f121, f122, f123, f124, f125, f126, f127);
+    }
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/field_bindings.hpp
 
 namespace bsc::detail {
 
@@ -2485,7 +3396,7 @@ constexpr bool brace_constructible(std::index_sequence<I...>) {
 
 template <class T, std::size_t N = 0>
 constexpr std::size_t field_count() {
-    if constexpr (N > 32)
+    if constexpr (N > max_fields)
         return N;
     else if constexpr (brace_constructible<T>(std::make_index_sequence<N + 1>{}))
         return field_count<T, N + 1>();
@@ -2496,108 +3407,16 @@ constexpr std::size_t field_count() {
 // A tuple of references to the fields of an aggregate.
 template <class T>
 constexpr auto tie_fields(T& t) {
-    constexpr std::size_t n = field_count<std::remove_const_t<T>>();
-    static_assert(std::is_aggregate_v<std::remove_const_t<T>>,
-                  "bsc: the context must be an aggregate (a struct with public members and no constructors)");
-    static_assert(n <= 32, "bsc: the context has more than 32 fields; group some of them into a nested struct");
-    if constexpr (n == 0) {
+    using type = std::remove_const_t<T>;
+    constexpr std::size_t n = field_count<type>();
+    if constexpr (!std::is_aggregate_v<type>) {
+        static_assert(error::context_not_an_aggregate<type>::value);
         return std::tuple<>{};
-    } else if constexpr (n == 1) {
-        auto& [f0] = t;
-        return std::tie(f0);
-    } else if constexpr (n == 2) {
-        auto& [f0, f1] = t;
-        return std::tie(f0, f1);
-    } else if constexpr (n == 3) {
-        auto& [f0, f1, f2] = t;
-        return std::tie(f0, f1, f2);
-    } else if constexpr (n == 4) {
-        auto& [f0, f1, f2, f3] = t;
-        return std::tie(f0, f1, f2, f3);
-    } else if constexpr (n == 5) {
-        auto& [f0, f1, f2, f3, f4] = t;
-        return std::tie(f0, f1, f2, f3, f4);
-    } else if constexpr (n == 6) {
-        auto& [f0, f1, f2, f3, f4, f5] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5);
-    } else if constexpr (n == 7) {
-        auto& [f0, f1, f2, f3, f4, f5, f6] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6);
-    } else if constexpr (n == 8) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7);
-    } else if constexpr (n == 9) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8);
-    } else if constexpr (n == 10) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9);
-    } else if constexpr (n == 11) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10);
-    } else if constexpr (n == 12) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11);
-    } else if constexpr (n == 13) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12);
-    } else if constexpr (n == 14) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13);
-    } else if constexpr (n == 15) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14);
-    } else if constexpr (n == 16) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15);
-    } else if constexpr (n == 17) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16);
-    } else if constexpr (n == 18) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17);
-    } else if constexpr (n == 19) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18);
-    } else if constexpr (n == 20) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19);
-    } else if constexpr (n == 21) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20);
-    } else if constexpr (n == 22) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21);
-    } else if constexpr (n == 23) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22);
-    } else if constexpr (n == 24) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23);
-    } else if constexpr (n == 25) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24);
-    } else if constexpr (n == 26) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25);
-    } else if constexpr (n == 27) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26);
-    } else if constexpr (n == 28) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27);
-    } else if constexpr (n == 29) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28);
-    } else if constexpr (n == 30) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29);
-    } else if constexpr (n == 31) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30);
-    } else if constexpr (n == 32) {
-        auto& [f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31] = t;
-        return std::tie(f0, f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17, f18, f19, f20, f21, f22, f23, f24, f25, f26, f27, f28, f29, f30, f31);
+    } else if constexpr (n > max_fields) {
+        static_assert(error::too_many_fields<type>::value);
+        return std::tuple<>{};
+    } else {
+        return bind_fields<n>(t);
     }
 }
 
@@ -2612,54 +3431,590 @@ constexpr void for_each_field(T& t, F&& f) {
 
 namespace bsc::detail {
 
-template <class Tuple>
-struct field_kinds;
-template <class... Fields>
-struct field_kinds<std::tuple<Fields&...>> {
-    static constexpr bool channels = (is_channel<std::remove_cv_t<Fields>> || ...);
-    static constexpr bool timers = (std::is_base_of_v<timer_base, std::remove_cv_t<Fields>> || ...);
+template <class T>
+inline constexpr bool is_std_array = false;
+template <class T, std::size_t N>
+inline constexpr bool is_std_array<std::array<T, N>> = true;
+
+template <class T>
+inline constexpr bool is_timer = std::is_base_of_v<timer_base, T>;
+
+// A member the machine looks into: an aggregate class that is neither a channel, a timer nor
+// a std::array (which is visited element by element).
+template <class T>
+inline constexpr bool is_visited_aggregate =
+    std::is_class_v<T> && std::is_aggregate_v<T> && !is_channel<T> && !is_timer<T> && !is_std_array<T>;
+
+struct channel_points {
+    template <class T>
+    static constexpr bool is_point = is_channel<T>;
+};
+struct timer_points {
+    template <class T>
+    static constexpr bool is_point = is_timer<T>;
 };
 
-template <class Ctx>
-constexpr auto context_field_kinds() {
-    if constexpr (std::is_aggregate_v<Ctx> && !std::is_array_v<Ctx>)
-        return field_kinds<decltype(tie_fields(std::declval<Ctx&>()))>{};
+// Whether T holds a point of the kind (a channel, a timer) at any depth.
+template <class Points, class T>
+constexpr bool holds_points() {
+    if constexpr (Points::template is_point<T>)
+        return true;
+    else if constexpr (is_std_array<T>)
+        return holds_points<Points, typename T::value_type>();
+    else if constexpr (is_visited_aggregate<T>)
+        return []<class... Fields>(std::tuple<Fields&...>*) {
+            return (holds_points<Points, std::remove_cv_t<Fields>>() || ...);
+        }(static_cast<decltype(tie_fields(std::declval<T&>()))*>(nullptr));
     else
-        return field_kinds<std::tuple<>>{};
+        return false;
+}
+
+// Calls f(point) for each point of the kind in t, in declaration order, depth first.
+template <class Points, class T, class F>
+constexpr void for_each_point(T& t, F const& f) {
+    if constexpr (Points::template is_point<T>) {
+        f(t);
+    } else if constexpr (!holds_points<Points, T>()) {
+        return;
+    } else if constexpr (is_std_array<T>) {
+        for (auto& element : t) for_each_point<Points>(element, f);
+    } else {
+        for_each_field(t, [&](auto& field) { for_each_point<Points>(field, f); });
+    }
 }
 
 template <class Ctx>
-inline constexpr bool has_channels = decltype(context_field_kinds<Ctx>())::channels;
+inline constexpr bool has_channels = holds_points<channel_points, Ctx>();
 template <class Ctx>
-inline constexpr bool has_timers = decltype(context_field_kinds<Ctx>())::timers;
+inline constexpr bool has_timers = holds_points<timer_points, Ctx>();
 
 template <class Ctx>
 constexpr void latch_inputs(Ctx& ctx) {
     if constexpr (has_channels<Ctx>)
-        for_each_field(ctx, [](auto& f) {
-            if constexpr (is_channel<std::remove_cvref_t<decltype(f)>>) f.latch();
-        });
+        for_each_point<channel_points>(ctx, [](auto& channel) { access::latch(channel); });
 }
 
 template <class Ctx>
 constexpr void commit_outputs(Ctx& ctx) {
     if constexpr (has_channels<Ctx>)
-        for_each_field(ctx, [](auto& f) {
-            if constexpr (is_channel<std::remove_cvref_t<decltype(f)>>) f.commit();
-        });
+        for_each_point<channel_points>(ctx, [](auto& channel) { access::commit(channel); });
 }
 
 template <class Ctx>
 constexpr void update_timers(Ctx& ctx, duration now) {
     if constexpr (has_timers<Ctx>)
-        for_each_field(ctx, [now](auto& f) {
-            if constexpr (std::is_base_of_v<timer_base, std::remove_cvref_t<decltype(f)>>) f.update(now);
-        });
+        for_each_point<timer_points>(ctx, [now](auto& timer) { access::update(timer, now); });
 }
 
 }  // namespace bsc::detail
-// end include/bsc/detail/context_data.hpp
-// begin include/bsc/detail/event_queue.hpp
+// end include/bsc/runtime/context_data.hpp
+// begin include/bsc/runtime/failures.hpp
+// How a machine catches what its guards and actions throw. Each call of a guard or an action is
+// one block: if it throws, the rest of it is skipped and the failure goes to the machine
+// (detail::driver::fail), which raises bsc::action_failed or keeps it for the caller. Built
+// without exceptions, these are plain calls.
+
+#include <exception>
+#include <type_traits>
+#include <utility>
+
+namespace bsc::detail {
+
+// A machine's record of a failure, kept as a pointer so that a machine stays a literal type
+// (std::exception_ptr is not one) and usable in constant expressions, where nothing can
+// throw. It is allocated only when something has thrown.
+class failure_slot {
+public:
+    constexpr failure_slot() = default;
+    constexpr failure_slot(failure_slot const& other) {
+        if (!std::is_constant_evaluated() && other.error_ != nullptr) error_ = copy(*other.error_);
+    }
+    constexpr failure_slot& operator=(failure_slot const& other) {
+        if (this != &other) {
+            reset();
+            if (!std::is_constant_evaluated() && other.error_ != nullptr) error_ = copy(*other.error_);
+        }
+        return *this;
+    }
+    constexpr ~failure_slot() { reset(); }
+
+    constexpr explicit operator bool() const { return error_ != nullptr; }
+    // Keeps the first failure; later ones of the same run are dropped (the first caused them).
+    void keep(std::exception_ptr error) {
+        if (error_ == nullptr) error_ = copy(std::move(error));
+    }
+    std::exception_ptr get() const { return error_ != nullptr ? *error_ : nullptr; }
+    std::exception_ptr take() {
+        std::exception_ptr error = get();
+        reset();
+        return error;
+    }
+    constexpr void reset() {
+        if (!std::is_constant_evaluated() && error_ != nullptr) destroy(error_);
+        error_ = nullptr;
+    }
+
+private:
+    static std::exception_ptr* copy(std::exception_ptr error) { return new std::exception_ptr(std::move(error)); }
+    static void destroy(std::exception_ptr* error) { delete error; }
+
+    std::exception_ptr* error_ = nullptr;
+};
+
+// Where the table engine's thunks report a failure: the machine and its fail().
+struct failure_sink {
+    void* machine = nullptr;
+    void (*report)(void* machine, std::exception_ptr error) = nullptr;
+};
+
+// Runs a block; a failure goes to on_failure(std::exception_ptr).
+template <class Block, class OnFailure>
+constexpr void run_block(Block&& block, OnFailure&& on_failure) {
+#if defined(__cpp_exceptions)
+    try {
+        block();
+    } catch (...) {
+        on_failure(std::current_exception());
+    }
+#else
+    (void)on_failure;
+    block();
+#endif
+}
+
+// Evaluates a guard; a guard that throws does not hold (SCXML: a condition that raises an
+// error is false), and its failure goes to on_failure.
+template <class Guard, class OnFailure>
+constexpr bool test_guard(Guard&& guard, OnFailure&& on_failure) {
+#if defined(__cpp_exceptions)
+    try {
+        return guard();
+    } catch (...) {
+        on_failure(std::current_exception());
+        return false;
+    }
+#else
+    (void)on_failure;
+    return guard();
+#endif
+}
+
+}  // namespace bsc::detail
+// end include/bsc/runtime/failures.hpp
+
+namespace bsc::detail {
+
+// The observer type a machine's deduction guide takes from its constructor's arguments
+// (chart[, context[, observer]]): both back ends deduce through this one rule.
+template <class... Arguments>
+struct observer_argument {
+    using type = no_observer;
+};
+template <class Context, class Observer>
+struct observer_argument<Context, Observer> {
+    using type = Observer;
+};
+template <class... Arguments>
+using observer_argument_t = typename observer_argument<Arguments...>::type;
+
+// What every machine derives from, whatever its back end (an empty base: it costs nothing).
+struct machine_base {};
+template <class T>
+inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
+
+template <class Backend, class Chart, class Policy, class Observer, class Queue>
+class driver : public machine_base {
+protected:
+    using model = chart_model<std::remove_cv_t<Chart>>;
+    using layout = chart_layout<model>;
+    static constexpr auto const& tree = model::tree;
+    static constexpr auto const& rows = model::rows;
+    static constexpr int root = layout::root;
+    static constexpr auto state_count = static_cast<std::size_t>(model::N);
+
+public:
+    using chart_type = std::remove_cv_t<Chart>;
+    using context_type = typename chart_type::context_type;
+    using configuration_type = configuration<static_cast<std::size_t>(tree.slots)>;
+    using event_types = typename model::events;
+    using policy_type = Policy;
+    using observer_type = Observer;
+    /// How many raised events the internal queue holds: Policy::queue_capacity, or 0 where
+    /// the compiled back end finds that no action of the chart can raise.
+    static constexpr std::size_t queue_capacity = Queue::capacity();
+
+    /// One BSC execution cycle at time `now` (the BSC paper's execution cycle): timers are
+    /// updated, input channels latched; then each component (the root and every region of a
+    /// parallel state), in document order, fires at most one eventless or timeout transition,
+    /// its actions' writes visible at once to the components after it; events raised meanwhile
+    /// are processed; output channels are committed. Components entered during the cycle first
+    /// run in the next one. Time never runs backwards for the machine: an earlier `now` is
+    /// reported and ignored.
+    constexpr step_report step(duration now) {
+        step_report report;
+        if (running_) {
+            report.status = outcome::reentrant;
+            return report;
+        }
+        run_guard const guard{running_};
+        if (halted()) {
+            report.status = last_ = outcome::halted;
+            return report;
+        }
+        if (!clock_started_) {
+            // The clock starts at the first cycle, wherever the caller's time starts; what was
+            // armed before it (at construction, by a dispatch) counts from this cycle too.
+            clock_started_ = true;
+            clock_ = now;
+            for (auto& armed : armed_) armed = now;
+        } else if (now < clock_) {
+            report.clock_went_backwards = true;
+        } else {
+            clock_ = now;
+        }
+        update_timers(context_, clock_);
+        latch_inputs(context_);
+        if constexpr (layout::has_trigger(any_condition))
+            report.transitions = run_components();
+        report.status = last_ = drain_queue(report.transitions > 0);
+        commit_outputs(context_);
+        report.status = last_ = conclude(last_);
+        return report;
+    }
+
+    /// The time of the last cycle (the machine's clock; zero before the first cycle).
+    constexpr duration now() const { return clock_; }
+
+    /// Processes e to completion: the transitions it enables, then eventless transitions and
+    /// raised events until none remain. Fails to compile if no transition handles E.
+    template <class E>
+    constexpr outcome dispatch(E const& e) {
+        constexpr int trigger = model::template trigger_of<E>;
+        if constexpr (trigger < 0) {
+            static_assert(error::unhandled_event<E>::value);
+            return outcome::ignored;
+        } else {
+            return process<trigger>(e);
+        }
+    }
+
+    /// As dispatch(e), but an event type that no transition handles is accepted and ignored.
+    template <class E>
+    constexpr outcome dispatch(E const& e, allow_unhandled_t) {
+        constexpr int trigger = model::template trigger_of<E>;
+        if constexpr (trigger < 0)
+            return last_ = outcome::ignored;
+        else
+            return process<trigger>(e);
+    }
+
+    /// True if state S is active.
+    template <class S>
+    constexpr bool is() const {
+        constexpr int s = model::template index_of_state<S>;
+        if constexpr (s < 0) {
+            static_assert(error::state_not_in_chart<S>::value);
+            return false;
+        } else {
+            return backend().template is_active<s>();
+        }
+    }
+
+    /// True once a final child of the root is active: the machine processes nothing more.
+    constexpr bool halted() const {
+        if constexpr (layout::can_halt)
+            return layout::final_root_children[config_.active[static_cast<std::size_t>(tree.slot[root])]];
+        else
+            return false;
+    }
+
+    /// The names of the active states, outermost first, in document order.
+    constexpr auto active_states() const {
+        state_names<state_count> names;
+        auto const active = active_flags();
+        for (std::size_t s = 1; s < state_count; ++s)
+            if (active[s]) names.push_back(state_names_by_index[s]);
+        return names;
+    }
+
+    /// The outcome of the last dispatch (or of construction).
+    constexpr outcome last_outcome() const { return last_; }
+
+    /// The exception of the last dispatch, cycle or construction whose outcome was
+    /// outcome::failed (a policy whose rethrow_failures is false); null otherwise.
+    std::exception_ptr last_failure() const {
+        if constexpr (!Policy::rethrow_failures)
+            if (last_ == outcome::failed) return reported_.get();
+        return nullptr;
+    }
+
+    constexpr context_type& context() { return context_; }
+    constexpr context_type const& context() const { return context_; }
+    constexpr configuration_type const& active_configuration() const { return config_; }
+    constexpr Observer& observer() { return observer_; }
+    constexpr Observer const& observer() const { return observer_; }
+
+protected:
+    constexpr driver(Chart const& chart, context_type context, Observer observer)
+        : chart_(chart), context_(std::move(context)), observer_(std::move(observer)) {}
+
+    // Enters the initial configuration (entry actions run) and settles eventless transitions.
+    // Called by the back end's constructor, once the back end exists.
+    constexpr void start() {
+        run_guard const guard{running_};
+        if constexpr (tree.slots > 0)
+            config_.active = layout::initial_bytes;
+        latch_inputs(context_);
+        backend().enter_initial();
+        last_ = finish(false);
+        commit_outputs(context_);
+        last_ = conclude(last_);
+    }
+
+    // Runs a guard (true if it holds) or a block of an action: what either throws goes to fail().
+    template <class Guard>
+    constexpr bool test(Guard&& guard) {
+        return test_guard(guard, [this](std::exception_ptr error) { fail(std::move(error)); });
+    }
+    template <class Block>
+    constexpr void run(Block&& block) {
+        run_block(block, [this](std::exception_ptr error) { fail(std::move(error)); });
+    }
+    // The same, for code that knows the machine only by address (the table engine's thunks).
+    failure_sink sink() {
+        return {this, [](void* machine, std::exception_ptr error) { static_cast<driver*>(machine)->fail(std::move(error)); }};
+    }
+
+    template <int Row>
+    constexpr auto const& row() const {
+        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart_.rows);
+    }
+
+    // Whether state s is active, read from the bytes; outermost first, so one pass suffices.
+    constexpr std::array<bool, state_count> active_flags() const {
+        std::array<bool, state_count> active{};
+        active[0] = true;
+        if constexpr (tree.slots > 0)
+            for (std::size_t s = 1; s < state_count; ++s) {
+                auto const p = static_cast<std::size_t>(tree.parent[s]);
+                active[s] = active[p] && (tree.slot[p] < 0 || config_.active[static_cast<std::size_t>(tree.slot[p])] ==
+                                                                  static_cast<std::uint8_t>(tree.ordinal[s]));
+            }
+        else
+            for (std::size_t s = 1; s < state_count; ++s) active[s] = true;
+        return active;
+    }
+
+private:
+    using driver_type = driver;  // what detail::access reaches a machine's data through
+
+    constexpr Backend& backend() { return static_cast<Backend&>(*this); }
+    constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
+
+    static constexpr auto state_names_by_index = []<class... Tags>(type_list<Tags...>) {
+        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
+    }(typename model::tags{});
+
+    template <class E>
+    constexpr void microstep_on(E const& e) {
+        bool const fired = backend().template microstep<model::template trigger_of<E>>(e);
+        if constexpr (std::is_same_v<E, action_failed>)
+            if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
+    }
+
+    // Whether the chart takes bsc::action_failed: then failures go on the internal queue.
+    static constexpr bool takes_failures = model::template trigger_of<action_failed> >= 0;
+
+    // A guard or action threw: raise bsc::action_failed if the chart takes it (and the queue
+    // has room), else keep it for the caller.
+    void fail(std::exception_ptr error) {
+        if constexpr (takes_failures)
+            if (queue_(action_failed{error})) return;
+        keep_failure(std::move(error));
+    }
+    void keep_failure(std::exception_ptr error) { failure_.keep(std::move(error)); }
+
+    // The end of a run, the machine consistent and its outputs committed: a failure no
+    // transition took is rethrown, or reported as outcome::failed.
+    constexpr outcome conclude(outcome result) {
+        if (failure_) return failed_run();
+        return result;
+    }
+    outcome failed_run() {
+        if constexpr (Policy::rethrow_failures) {
+            std::rethrow_exception(failure_.take());
+        } else {
+            reported_.reset();
+            reported_.keep(failure_.take());
+            return outcome::failed;
+        }
+    }
+
+    // Marks the machine as running for the time of a dispatch, a cycle or the construction: a
+    // dispatch or step called meanwhile from one of its guards or actions is refused.
+    struct run_guard {
+        bool& running;
+        constexpr explicit run_guard(bool& flag) : running(flag) { running = true; }
+        constexpr ~run_guard() { running = false; }
+        run_guard(run_guard const&) = delete;
+        run_guard& operator=(run_guard const&) = delete;
+    };
+
+    template <int Trigger, class E>
+    constexpr outcome process(E const& e) {
+        if (running_)
+            return outcome::reentrant;
+        run_guard const guard{running_};
+        if (halted())
+            return last_ = outcome::halted;
+        latch_inputs(context_);
+        last_ = finish(backend().template microstep<Trigger>(e));
+        commit_outputs(context_);
+        return last_ = conclude(last_);
+    }
+
+    // The components' turns in a cycle: a component takes its turn if it was active when the
+    // cycle began and still is (an earlier component may have left it); one entered during
+    // the cycle waits for the next. Returns the number of transitions fired.
+    constexpr int run_components() {
+        constexpr auto const& components = layout::components;
+        std::array<bool, components.size()> active_at_start{};
+        int fired = 0;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((active_at_start[I] = backend().template is_active<components[I]>()), ...);
+            ((fired += active_at_start[I] && backend().template is_active<components[I]>() &&
+                       backend().template component_step<components[I]>()),
+             ...);
+        }(std::make_index_sequence<components.size()>{});
+        return fired;
+    }
+
+    // Settles the machine after a microstep: eventless transitions until none is enabled,
+    // then the raised events one by one, each followed by its eventless transitions. Under a
+    // scan policy eventless transitions are left to step(), and only raised events are processed.
+    constexpr outcome finish(bool consumed) {
+        if constexpr (!Policy::settle_eventless)
+            return drain_queue(consumed);
+        // The common case, kept inline: nothing raised, and no eventless transition to try.
+        if constexpr (!layout::has_trigger(eventless_id))
+            if (queue_.empty() && !queue_.overflowed())
+                return consumed ? outcome::consumed : outcome::ignored;
+        return settle(consumed);
+    }
+
+    constexpr outcome settle(bool consumed) {
+        std::size_t internal_events = 0;
+        for (;;) {
+            if constexpr (layout::has_trigger(eventless_id)) {
+                // Up to max_eventless_steps transitions settle; one more means the chart cycles.
+                for (std::size_t steps = 0; !halted() && backend().template microstep<eventless_id>(eventless{});)
+                    if (++steps > Policy::max_eventless_steps)
+                        return abandon();
+            }
+            if (queue_.empty() || halted())
+                break;
+            if (++internal_events > Policy::max_internal_events)
+                return abandon();
+            queue_.pop([&](auto const& ev) { microstep_on(ev); });
+        }
+        return settled(consumed);
+    }
+
+    // The raised events of a cycle, each one microstep and no eventless settling, so that no
+    // component fires twice in a cycle.
+    constexpr outcome drain_queue(bool consumed) {
+        for (std::size_t n = 0; !queue_.empty() && !halted();) {
+            if (++n > Policy::max_internal_events)
+                return abandon();
+            queue_.pop([&](auto const& ev) { microstep_on(ev); });
+        }
+        return settled(consumed);
+    }
+
+    constexpr outcome settled(bool consumed) {
+        if (queue_.overflowed()) {
+            queue_.clear_overflow();
+            return outcome::queue_overflow;
+        }
+        return consumed ? outcome::consumed : outcome::ignored;
+    }
+
+    constexpr outcome abandon() {
+        queue_.clear();
+        queue_.clear_overflow();
+        return outcome::livelock;
+    }
+
+    // ---- for the explorer (through detail::access) -------------------------------------------
+    // The configuration with every byte that can never matter again reset to its initial
+    // child: the byte of an inactive composite that neither has history nor lies below a
+    // deep history. Two machines with equal canonical configurations behave the same.
+    constexpr configuration_type canonical_configuration() const {
+        configuration_type c = config_;
+        if constexpr (tree.slots > 0) {
+            auto const active = active_flags();
+            for (std::size_t s = 1; s < state_count; ++s) {
+                if (tree.slot[s] < 0 || active[s]) continue;
+                bool remembered = tree.hist[s] != history::none;
+                for (int a = tree.parent[s]; a > 0 && !remembered; a = tree.parent[static_cast<std::size_t>(a)])
+                    remembered = tree.hist[static_cast<std::size_t>(a)] == history::deep;
+                if (!remembered)
+                    c.active[static_cast<std::size_t>(tree.slot[s])] =
+                        static_cast<std::uint8_t>(tree.ordinal[static_cast<std::size_t>(tree.initial[s])]);
+            }
+        }
+        return c;
+    }
+
+    // A timeout slot's age matters only while its state is active.
+    constexpr bool timeout_armed(std::size_t slot) const {
+        auto const active = active_flags();
+        if constexpr (layout::timeout_slots > 0)
+            return slot < layout::timeout_slot_state.size() &&
+                   active[static_cast<std::size_t>(layout::timeout_slot_state[slot])];
+        else
+            return false;
+    }
+
+    // The longest delay of any timeout row: past it, a state's age no longer matters.
+    constexpr duration longest_timeout() const {
+        duration longest{};
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (
+                [&] {
+                    if constexpr (layout::is_timeout_row(static_cast<int>(I)))
+                        if (row<static_cast<int>(I)>().trigger_value.delay > longest)
+                            longest = row<static_cast<int>(I)>().trigger_value.delay;
+                }(),
+                ...);
+        }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
+        return longest;
+    }
+
+    friend struct access;
+
+protected:
+    [[no_unique_address]] chart_type chart_;
+    context_type context_;
+    configuration_type config_{};
+    [[no_unique_address]] Queue queue_{};
+    duration clock_{};
+    std::array<duration, static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
+    outcome last_ = outcome::ignored;
+    bool running_ = false;        // inside a dispatch, a cycle or the constructor
+    bool clock_started_ = false;  // a cycle has run: clock_ is the caller's time
+    [[no_unique_address]] Observer observer_;
+    failure_slot failure_;  // the first failure of the current run that no transition took
+    struct nothing_reported {
+        static std::exception_ptr get() { return nullptr; }
+    };
+    // The failure of the last run, for last_failure(), under a policy that does not rethrow.
+    [[no_unique_address]] std::conditional_t<Policy::rethrow_failures, nothing_reported, failure_slot> reported_;
+};
+
+}  // namespace bsc::detail
+// end include/bsc/runtime/driver.hpp
+// begin include/bsc/runtime/event_queue.hpp
 // The bounded internal event queue: a ring buffer of the chart's event types. No heap;
 // a push onto a full queue is refused and remembered, never written out of bounds.
 
@@ -2689,7 +4044,7 @@ public:
                 overflowed_ = true;
                 return false;
             }
-            items_[(head_ + size_) % Capacity] = value_type{std::in_place_type<E>, e};
+            items_[(head_ + size_) % Capacity].template emplace<E>(e);
             ++size_;
             return true;
         }
@@ -2761,228 +4116,132 @@ public:
 };
 
 }  // namespace bsc::detail
-// end include/bsc/detail/event_queue.hpp
-// begin include/bsc/detail/type_name.hpp
-// Compile-time type names without RTTI, read from the compiler's function signature.
+// end include/bsc/runtime/event_queue.hpp
+// begin include/bsc/runtime/notify.hpp
+// The calls a machine makes to its observer, by state and row number: each hook is called
+// only if the observer has it, and a machine without observer generates nothing.
 
-#include <string_view>
+#include <type_traits>
+
 
 namespace bsc::detail {
 
-template <class T>
-constexpr std::string_view signature() {
-    return __PRETTY_FUNCTION__;
-}
+template <class Model, class Observer>
+struct notify {
+    template <int S>
+    using tag = state_tag<typename Model::template tag_at<S>>;
 
-// GCC: "... [with T = ns::Name; std::string_view = ...]", Clang: "... [T = ns::Name]".
-constexpr std::string_view type_from_signature(std::string_view sig) {
-    constexpr std::string_view key = "T = ";
-    const auto start = sig.find(key) + key.size();
-    auto end = start;
-    int depth = 0;
-    for (; end < sig.size(); ++end) {
-        const char c = sig[end];
-        if (c == '<' || c == '(' || c == '[')
-            ++depth;
-        if (c == '>' || c == ')')
-            --depth;
-        if (depth < 0 || (depth == 0 && (c == ';' || c == ']')))
-            break;
-        if (c == ']')
-            --depth;
-    }
-    return sig.substr(start, end - start);
-}
+    template <int Row>
+    using source_tag = state_tag<typename Model::template row_at<Row>::source>;
+    template <int Row, class Target = typename Model::template row_at<Row>::target>
+    using target_tag = std::conditional_t<std::is_same_v<Target, no_target>, state_tag<internal>, state_tag<Target>>;
 
-// "ns::outer::Name<ns::X>" -> "Name<ns::X>": the last scope at bracket depth zero.
-constexpr std::string_view unqualified(std::string_view name) {
-    std::size_t cut = 0;
-    int depth = 0;
-    for (std::size_t i = 0; i + 1 < name.size(); ++i) {
-        if (name[i] == '<')
-            ++depth;
-        if (name[i] == '>')
-            --depth;
-        if (depth == 0 && name[i] == ':' && name[i + 1] == ':')
-            cut = i + 2;
+    template <int S>
+    static constexpr bool observes_entry_of = S > 0 && observes_entry<Observer, tag<S>>;
+    template <int S>
+    static constexpr bool observes_exit_of = S > 0 && observes_exit<Observer, tag<S>>;
+    template <int Row, class E>
+    static constexpr bool observes_row =
+        observes_transition<Observer, source_tag<Row>, target_tag<Row>, E> || observes_rows<Observer>;
+
+    // After state S's entry actions.
+    template <int S>
+    static constexpr void entered(Observer& o) {
+        if constexpr (observes_entry_of<S>) o.on_entry(tag<S>{});
     }
-    return name.substr(cut);
-}
+    // After state S's exit actions.
+    template <int S>
+    static constexpr void exited(Observer& o) {
+        if constexpr (observes_exit_of<S>) o.on_exit(tag<S>{});
+    }
+    // Before the action of transition Row, taken on event e.
+    template <int Row, class E>
+    static constexpr void transition(Observer& o, E const& e) {
+        if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, E>)
+            o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
+        if constexpr (observes_rows<Observer>) o.on_row(Row);
+    }
+};
 
 }  // namespace bsc::detail
+// end include/bsc/runtime/notify.hpp
+// begin include/bsc/runtime/selection.hpp
+// The transitions one microstep selects in parallel regions, and SCXML's conflict resolution
+// over them (removeConflictingTransitions): both back ends select into this buffer and keep
+// what resolve_conflicts keeps.
 
-namespace bsc {
-
-/// The fully qualified name of a type, e.g. "mcs::Tape", computed at compile time.
-template <class T>
-inline constexpr std::string_view qualified_name = detail::type_from_signature(detail::signature<T>());
-
-/// The name of a type without its namespaces, e.g. "Tape"; used for states in traces.
-template <class T>
-inline constexpr std::string_view name_of = detail::unqualified(qualified_name<T>);
-
-}  // namespace bsc
-// end include/bsc/detail/type_name.hpp
-// begin include/bsc/observer.hpp
-// Observer hooks: entry, exit and transition notifications for traces and tests. An
-// observer implements any subset of the hooks; a machine without one pays nothing.
-
-#include <string_view>
-
-
-namespace bsc {
-
-/// Identifies a state in observer calls: `tag.name` is its unqualified name, `type` the state.
-template <class S>
-struct state_tag {
-    using type = S;
-    static constexpr std::string_view name = name_of<S>;
-};
-
-/// The target reported for an internal transition, which exits and enters nothing.
-struct internal {};
-
-/// The default observer: no hooks, no cost.
-struct no_observer {};
-
-/// An observer may define, each optional:
-///   void on_entry(auto state);              // after state's entry actions
-///   void on_exit(auto state);               // after state's exit actions
-///   void on_transition(auto source, auto target, auto const& event);  // before the action
-///   void on_row(int row);                   // the same moment: the row's position in make_chart
-/// where `state`, `source` and `target` are bsc::state_tag<S> (target: state_tag<bsc::internal>
-/// for an internal transition) and `event` is the event (bsc::eventless for eventless ones).
-namespace detail {
-template <class O, class Tag>
-concept observes_entry = requires(O& o) {
-    o.on_entry(Tag{});
-};
-template <class O, class Tag>
-concept observes_exit = requires(O& o) {
-    o.on_exit(Tag{});
-};
-template <class O, class Src, class Dst, class E>
-concept observes_transition = requires(O& o, E const& e) {
-    o.on_transition(Src{}, Dst{}, e);
-};
-template <class O>
-concept observes_rows = requires(O& o) {
-    o.on_row(0);
-};
-}  // namespace detail
-
-}  // namespace bsc
-// end include/bsc/observer.hpp
-// begin include/bsc/outcome.hpp
-// What dispatch reports, and the limits a machine runs under.
-
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
-namespace bsc {
-
-/// The result of dispatching one event (run to completion, internal events included).
-enum class outcome : std::uint8_t {
-    consumed,        ///< at least one transition fired for the dispatched event
-    ignored,         ///< no transition was enabled; the event was discarded (SCXML semantics)
-    queue_overflow,  ///< an action raised an event while the internal queue was full; that event was dropped
-    livelock,        ///< the eventless-step or internal-event limit was reached; the rest was abandoned
-    halted,          ///< the machine had reached a final child of its root; nothing was processed
-};
-
-/// The limits of a machine. Derive from it and override a member to change one:
-/// `struct my_limits : bsc::default_policy { static constexpr std::size_t queue_capacity = 32; };`
-struct default_policy {
-    /// Events an action may raise before the queue is drained; one more is an overflow.
-    static constexpr std::size_t queue_capacity = 8;
-    /// Eventless transitions taken in a row before dispatch reports a livelock.
-    static constexpr std::size_t max_eventless_steps = 64;
-    /// Internal events processed within one dispatch before it reports a livelock.
-    static constexpr std::size_t max_internal_events = 256;
-    /// true (SCXML): construction and dispatch take eventless transitions until none is
-    /// enabled. false (BSC scan): eventless transitions are taken only by step(), at most one
-    /// per component per cycle.
-    static constexpr bool settle_eventless = true;
-};
-
-/// The limits of a machine driven by BSC execution cycles (seed 002): eventless transitions
-/// are condition-driven and run only in step(), so a chart whose components keep reacting to
-/// each other (a PLC scan loop) neither livelocks at construction nor in dispatch.
-struct scan_policy : default_policy {
-    static constexpr bool settle_eventless = false;
-};
-
-/// What one BSC execution cycle (`step(now)`) did, on either back end.
-struct step_report {
-    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
-    int transitions = 0;                ///< condition-driven transitions fired by the components
-    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
-};
-
-/// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
-/// handles is then allowed (and ignored) instead of failing to compile.
-struct allow_unhandled_t {
-    explicit allow_unhandled_t() = default;
-};
-inline constexpr allow_unhandled_t allow_unhandled{};
-
-}  // namespace bsc
-// end include/bsc/outcome.hpp
-
 namespace bsc::detail {
-// Read-write access to a machine's run-time state, for the state-space explorer only.
-struct machine_access {
-    template <class M>
-    static constexpr auto& configuration(M& m) {
-        return m.config_;
-    }
-    template <class M>
-    static constexpr auto& clock(M& m) {
-        return m.clock_;
-    }
-    template <class M>
-    static constexpr auto& armed(M& m) {
-        return m.armed_;
-    }
-    template <class M>
-    static constexpr auto& last_outcome(M& m) {
-        return m.last_;
-    }
-    template <class M>
-    static constexpr auto longest_timeout(M const& m) {
-        return m.longest_timeout();
-    }
-    template <class M>
-    static constexpr auto canonical_configuration(M const& m) {
-        return m.canonical_configuration();
-    }
-    template <class M>
-    static constexpr bool timeout_armed(M const& m, std::size_t slot) {
-        return m.timeout_armed(slot);
-    }
-    template <class M>
-    static constexpr auto active_flags(M const& m) {
-        return m.active_flags();
+
+// Selected transitions, in selection order, each once. What a number stands for (a chart
+// row, a position in a trigger's transitions) is the back end's business.
+template <std::size_t Capacity>
+struct selection {
+    std::array<std::uint16_t, Capacity> rows{};
+    std::size_t size = 0;
+
+    constexpr void add(std::size_t row) {
+        for (std::size_t i = 0; i < size; ++i)
+            if (rows[i] == row) return;
+        rows[size++] = static_cast<std::uint16_t>(row);
     }
 };
+
+// Walking the selection in order, a transition whose exit set meets that of one kept earlier
+// (conflict(later, earlier)) replaces it if it preempts it (its source lies below the
+// earlier one's: preempts(later, earlier)), and is dropped otherwise.
+template <std::size_t Capacity, class Conflict, class Preempts>
+constexpr selection<Capacity> resolve_conflicts(selection<Capacity> const& selected, Conflict conflict,
+                                                Preempts preempts) {
+    selection<Capacity> kept;
+    for (std::size_t i = 0; i < selected.size; ++i) {
+        std::size_t const later = selected.rows[i];
+        bool dropped = false;
+        selection<Capacity> survivors;
+        for (std::size_t j = 0; j < kept.size && !dropped; ++j) {
+            std::size_t const earlier = kept.rows[j];
+            if (!conflict(later, earlier))
+                survivors.add(earlier);
+            else if (!preempts(later, earlier))
+                dropped = true;
+        }
+        if (!dropped) {
+            survivors.add(later);
+            kept = survivors;
+        }
+    }
+    return kept;
+}
+
 }  // namespace bsc::detail
+// end include/bsc/runtime/selection.hpp
 
 namespace bsc::detail {
 // Whether any action of the chart can raise an event; if none can, the machine has no queue.
-template <class An, class Policy>
+template <class Model, class Policy>
 constexpr bool chart_may_raise() {
-    using context = typename An::chart_context;
-    using raise = event_queue<Policy::queue_capacity, typename An::events>;
+    using context = typename Model::chart_context;
+    using raise = event_queue<Policy::queue_capacity, typename Model::events>;
     return []<class... Rows>(type_list<Rows...>) {
         // The event an action sees: the row's event, or bsc::eventless for condition-driven
         // rows (entry and exit rows see none; may_raise ignores it for them).
         return (may_raise<context, std::conditional_t<std::is_void_v<typename trigger_event<Rows>::type>, eventless_trigger,
                                                       typename trigger_event<Rows>::type>,
-                          raise>(
-                    static_cast<decltype(Rows::action) const*>(nullptr)) ||
+                          raise>(static_cast<decltype(Rows::action) const*>(nullptr)) ||
                 ...);
-    }(typename An::rows{});
+    }(typename Model::row_types{});
 }
+
+// A chart that takes bsc::action_failed needs a queue for it, even if no action raises.
+template <class Chart, class Policy>
+using compiled_queue =
+    std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
+                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0,
+                       event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
+                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>;
 }  // namespace bsc::detail
 
 namespace bsc {
@@ -2990,242 +4249,121 @@ namespace bsc {
 /// A running instance of a chart: its context, its active configuration and its internal
 /// event queue. Construction enters the initial configuration; dispatch(e) processes one
 /// event to completion; step(now) runs one BSC execution cycle. No heap, no virtual calls,
-/// no RTTI, no exceptions.
+/// no RTTI, no exceptions; usable in constant expressions.
 ///
 /// Requirements: `Chart` comes from bsc::make_chart; `Policy` has the members of
 /// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
 template <class Chart, class Policy = default_policy, class Observer = no_observer>
-class machine {
-    using an = detail::analysis<std::remove_cv_t<Chart>>;
-    using plan = detail::plan<an>;
-    static constexpr auto const& topo = an::topo;
-    static constexpr auto const& table = an::table;
-    static constexpr int root = 1;
+class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, Policy, Observer,
+                                      detail::compiled_queue<Chart, Policy>> {
+    using base = detail::driver<machine, Chart, Policy, Observer, detail::compiled_queue<Chart, Policy>>;
+    friend base;
+    using typename base::model;
+    using plan = detail::plan<model>;
+    static constexpr auto const& tree = model::tree;
+    static constexpr auto const& rows = model::rows;
+    static constexpr int root = plan::root;
+    using base::chart_;
+    using base::context_;
+    using base::config_;
+    using base::queue_;
+    using base::clock_;
+    using base::armed_;
+    using base::observer_;
+    using notify = detail::notify<model, Observer>;
 
 public:
-    using chart_type = std::remove_cv_t<Chart>;
-    using context_type = typename chart_type::context_type;
-    using configuration_type = configuration<static_cast<std::size_t>(topo.slots)>;
-    using queue_type = std::conditional_t<detail::chart_may_raise<an, Policy>(), detail::event_queue<Policy::queue_capacity, typename an::events>,
-                                          detail::no_event_queue<typename an::events>>;
-    using event_types = typename an::events;
-
+    using typename base::context_type;
     /// Enters the initial configuration (entry actions run) and settles eventless transitions.
-    constexpr explicit machine(Chart const& chart, context_type context = {}, Observer observer = {})
-        : chart_(chart), context_(std::move(context)), observer_(std::move(observer)) {
-        if constexpr (topo.slots > 0)
-            config_.active = plan::template initial_bytes<topo.slots>();
-        detail::latch_inputs(context_);
-        enter_default<root>();
-        last_ = finish(false);
-        detail::commit_outputs(context_);
+    /// (The chart parameter's type_identity leaves deduction to the guides below.)
+    constexpr explicit machine(std::type_identity_t<Chart> const& chart, context_type context = {}, Observer observer = {})
+        : base(chart, std::move(context), std::move(observer)) {
+        this->start();
     }
-
-    /// One BSC execution cycle at time `now` (seed 002): timers are updated, input channels
-    /// latched; then each component (the root and every region of a parallel state), in
-    /// document order, fires at most one eventless or timeout transition, its actions' writes
-    /// visible at once to the components after it; events raised meanwhile are processed; output
-    /// channels are committed. Components entered during the cycle first run in the next one.
-    /// Time never runs backwards for the machine: an earlier `now` is reported and ignored.
-    constexpr step_report step(duration now) {
-        step_report report;
-        if (halted()) {
-            report.status = last_ = outcome::halted;
-            return report;
-        }
-        if (now < clock_)
-            report.clock_went_backwards = true;
-        else
-            clock_ = now;
-        detail::update_timers(context_, clock_);
-        detail::latch_inputs(context_);
-        constexpr auto const& comps = plan::components;
-        std::array<bool, comps.size()> active_at_start{};
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            ((active_at_start[I] = active_on_path<comps[I]>()), ...);
-            ((report.transitions += active_at_start[I] && active_on_path<comps[I]>() &&
-                                    component_step<comps[I], comps[I]>()),
-             ...);
-        }(std::make_index_sequence<comps.size()>{});
-        report.status = last_ = drain_queue(report.transitions > 0);
-        detail::commit_outputs(context_);
-        return report;
-    }
-
-    /// The time of the last cycle (the machine's clock).
-    constexpr duration now() const { return clock_; }
-
-    /// Processes e to completion: the transitions it enables, then eventless transitions and
-    /// raised events until none remain. Fails to compile if no transition handles E.
-    template <class E>
-    constexpr outcome dispatch(E const& e) {
-        constexpr int trigger = an::template trigger_of<E>;
-        if constexpr (trigger < 0) {
-            static_assert(error::unhandled_event<E>::value);
-            return outcome::ignored;
-        } else {
-            return process<trigger>(e);
-        }
-    }
-
-    /// As dispatch(e), but an event type that no transition handles is accepted and ignored.
-    template <class E>
-    constexpr outcome dispatch(E const& e, allow_unhandled_t) {
-        constexpr int trigger = an::template trigger_of<E>;
-        if constexpr (trigger < 0)
-            return last_ = outcome::ignored;
-        else
-            return process<trigger>(e);
-    }
-
-    /// True if state S is active.
-    template <class S>
-    constexpr bool is() const {
-        constexpr int s = an::template index_of_state<S>;
-        if constexpr (s < 0) {
-            static_assert(error::state_not_in_chart<S>::value);
-            return false;
-        } else {
-            return active_on_path<s>();
-        }
-    }
-
-    /// True once a final child of the root is active: the machine processes nothing more.
-    constexpr bool halted() const {
-        if constexpr (has_final_root_child) {
-            bool result = false;
-            detail::visit_index<topo.child_count[root]>(active_child<root>(), [&](auto i) {
-                result = topo.kinds[static_cast<std::size_t>(plan::template children<root>[decltype(i)::value])] ==
-                         detail::kind::final_state;
-            });
-            return result;
-        } else {
-            return false;
-        }
-    }
-
-    /// The names of the active states, outermost first, in document order.
-    constexpr auto active_states() const {
-        state_names<static_cast<std::size_t>(an::N)> names;
-        auto const active = active_flags();
-        for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s)
-            if (active[s]) names.push_back(state_name_table[s]);
-        return names;
-    }
-
-    /// The outcome of the last dispatch (or of construction).
-    constexpr outcome last_outcome() const { return last_; }
-
-    constexpr context_type& context() { return context_; }
-    constexpr context_type const& context() const { return context_; }
-    constexpr configuration_type const& active_configuration() const { return config_; }
-    constexpr Observer& observer() { return observer_; }
-    constexpr Observer const& observer() const { return observer_; }
-    constexpr queue_type const& queue() const { return queue_; }
 
 private:
-    // ---- state access ------------------------------------------------------------------
-    constexpr std::uint8_t config_byte(int slot) const {
-        if constexpr (topo.slots > 0)
-            return config_.active[static_cast<std::size_t>(slot)];
-        else
-            return 0;
-    }
+    // ---- the configuration -----------------------------------------------------------------
     template <int S>
     constexpr int active_child() const {
-        if constexpr (topo.slot[S] >= 0)
-            return config_.active[static_cast<std::size_t>(topo.slot[S])];
+        if constexpr (tree.slot[S] >= 0)
+            return config_.active[static_cast<std::size_t>(tree.slot[S])];
         else
             return 0;  // the top has one child
     }
     template <int S>
     constexpr void set_active_child(int ordinal) {
-        if constexpr (topo.slot[S] >= 0)
-            config_.active[static_cast<std::size_t>(topo.slot[S])] = static_cast<std::uint8_t>(ordinal);
+        if constexpr (tree.slot[S] >= 0)
+            config_.active[static_cast<std::size_t>(tree.slot[S])] = static_cast<std::uint8_t>(ordinal);
     }
     template <int S>
-    constexpr bool active_on_path() const {
+    constexpr bool is_active() const {
         if constexpr (S <= root) {
             return true;
         } else {
-            constexpr int p = topo.parent[S];
-            if constexpr (topo.slot[p] >= 0)
-                return active_child<p>() == topo.ordinal[S] && active_on_path<p>();
+            constexpr int p = tree.parent[S];
+            if constexpr (tree.slot[p] >= 0)
+                return active_child<p>() == tree.ordinal[S] && is_active<p>();
             else
-                return active_on_path<p>();
+                return is_active<p>();
         }
     }
-
-    static constexpr bool has_final_root_child = [] {
-        if (topo.kinds[root] != detail::kind::composite)
-            return false;
-        for (int c : plan::template children<root>)
-            if (topo.kinds[static_cast<std::size_t>(c)] == detail::kind::final_state)
-                return true;
-        return false;
-    }();
-
-    static constexpr auto state_name_table = []<class... Tags>(detail::type_list<Tags...>) {
-        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename an::tags{});
 
     template <int Row>
     constexpr auto const& row() const {
-        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart_.rows);
+        return base::template row<Row>();
     }
 
+    constexpr void enter_initial() { enter_default<root>(); }
+
     // ---- entry and exit ----------------------------------------------------------------
+    // The entry (or exit) actions of state S, in declaration order.
+    template <detail::row_kind K, int S>
+    constexpr void run_state_actions() {
+        constexpr auto const& actions = plan::template rows_of<K, S>;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (this->run([&] { row<actions[I]>().action(context_, queue_); }), ...);
+        }(std::make_index_sequence<actions.size()>{});
+    }
+
     template <int S>
     constexpr void run_entry() {
-        constexpr auto const& rows = plan::template state_rows<detail::row_kind::entry, S>;
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (row<rows[I]>().action(context_, queue_), ...);
-        }
-        (std::make_index_sequence<rows.size()>{});
-        if constexpr (plan::timeout_slot[S] >= 0)
-            armed_[static_cast<std::size_t>(plan::timeout_slot[S])] = clock_;
-        using tag = state_tag<typename an::template tag_at<S>>;
-        if constexpr (detail::observes_entry<Observer, tag>)
-            observer_.on_entry(tag{});
+        run_state_actions<detail::row_kind::entry, S>();
+        // Its timeouts count from its entry, at the time of the last cycle.
+        constexpr int first_slot = plan::timeout_slot[S];
+        for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = clock_;
+        notify::template entered<S>(observer_);
     }
 
     template <int S>
     constexpr void run_exit() {
-        constexpr auto const& rows = plan::template state_rows<detail::row_kind::exit, S>;
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (row<rows[I]>().action(context_, queue_), ...);
-        }
-        (std::make_index_sequence<rows.size()>{});
-        using tag = state_tag<typename an::template tag_at<S>>;
-        if constexpr (detail::observes_exit<Observer, tag>)
-            observer_.on_exit(tag{});
+        run_state_actions<detail::row_kind::exit, S>();
+        notify::template exited<S>(observer_);
     }
 
     template <int S, class F>
     static constexpr void for_each_child(F&& f) {
-        constexpr auto const& kids = plan::template children<S>;
+        constexpr auto const& children = plan::template children<S>;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (f(detail::int_c<kids[I]>{}), ...);
-        }
-        (std::make_index_sequence<kids.size()>{});
+            (f(detail::int_c<children[I]>{}), ...);
+        }(std::make_index_sequence<children.size()>{});
     }
 
     // Calls f(child) for the active child of composite S if it is one of the children the
     // trigger makes relevant; returns false (without calling f) otherwise.
     template <int Trigger, int S, class F>
     constexpr bool with_relevant_active_child(F&& f) const {
-        constexpr auto const& kids = plan::template relevant_children<Trigger, S>;
+        constexpr auto const& children = plan::template relevant_children<Trigger, S>;
         int const active = active_child<S>();
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return ((active == topo.ordinal[kids[I]] ? (f(detail::int_c<kids[I]>{}), true) : false) || ...);
-        }(std::make_index_sequence<kids.size()>{});
+            return ((active == tree.ordinal[children[I]] ? (f(detail::int_c<children[I]>{}), true) : false) || ...);
+        }(std::make_index_sequence<children.size()>{});
     }
 
     template <int S, class F>
     constexpr void with_active_child(F&& f) const {
-        constexpr auto const& kids = plan::template children<S>;
-        detail::visit_index<static_cast<int>(kids.size())>(
-            active_child<S>(), [&](auto i) { f(detail::int_c<kids[decltype(i)::value]>{}); });
+        constexpr auto const& children = plan::template children<S>;
+        detail::visit_index<static_cast<int>(children.size())>(
+            active_child<S>(), [&](auto i) { f(detail::int_c<children[decltype(i)::value]>{}); });
     }
 
     // Enters S and its default (or history) completion.
@@ -3237,12 +4375,12 @@ private:
 
     template <int S>
     constexpr void enter_content() {
-        constexpr auto k = topo.kinds[S];
+        constexpr auto k = tree.kinds[S];
         if constexpr (k == detail::kind::composite) {
-            constexpr auto h = topo.hist[S];
+            constexpr auto h = tree.hist[S];
             if constexpr (h == detail::history::none) {
-                constexpr int init = topo.initial[S];
-                set_active_child<S>(topo.ordinal[init]);
+                constexpr int init = tree.initial[S];
+                set_active_child<S>(tree.ordinal[init]);
                 enter_default<init>();
             } else if constexpr (h == detail::history::shallow) {
                 with_active_child<S>([&](auto c) { enter_default<decltype(c)::value>(); });
@@ -3258,7 +4396,7 @@ private:
     template <int S>
     constexpr void enter_restore() {
         run_entry<S>();
-        constexpr auto k = topo.kinds[S];
+        constexpr auto k = tree.kinds[S];
         if constexpr (k == detail::kind::composite)
             with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
         else if constexpr (k == detail::kind::parallel)
@@ -3268,8 +4406,8 @@ private:
     // Enters, below the active state D, the path to Target (and parallel siblings on the way).
     template <int D, int Target>
     constexpr void enter_toward() {
-        constexpr int c = topo.child_toward(D, Target);
-        if constexpr (topo.kinds[D] == detail::kind::parallel) {
+        constexpr int c = tree.child_toward(D, Target);
+        if constexpr (tree.kinds[D] == detail::kind::parallel) {
             for_each_child<D>([&](auto k) {
                 if constexpr (decltype(k)::value == c)
                     enter_path_node<c, Target>();
@@ -3277,7 +4415,7 @@ private:
                     enter_default<decltype(k)::value>();
             });
         } else {
-            set_active_child<D>(topo.ordinal[c]);
+            set_active_child<D>(tree.ordinal[c]);
             enter_path_node<c, Target>();
         }
     }
@@ -3293,18 +4431,18 @@ private:
     // Exits the active descendants of S, innermost first, in reverse document order.
     template <int S>
     constexpr void exit_below() {
-        constexpr auto k = topo.kinds[S];
+        constexpr auto k = tree.kinds[S];
         if constexpr (k == detail::kind::composite || k == detail::kind::top) {
             with_active_child<S>([&](auto c) {
                 exit_below<decltype(c)::value>();
                 run_exit<decltype(c)::value>();
             });
         } else if constexpr (k == detail::kind::parallel) {
-            constexpr auto const& kids = plan::template children<S>;
+            constexpr auto const& children = plan::template children<S>;
             [&]<std::size_t... I>(std::index_sequence<I...>) {
-                ((exit_below<kids[kids.size() - 1 - I]>(), run_exit<kids[kids.size() - 1 - I]>()), ...);
+                ((exit_below<children[children.size() - 1 - I]>(), run_exit<children[children.size() - 1 - I]>()), ...);
             }
-            (std::make_index_sequence<kids.size()>{});
+            (std::make_index_sequence<children.size()>{});
         }
     }
 
@@ -3313,44 +4451,38 @@ private:
     constexpr void exit_up() {
         if constexpr (X != D) {
             run_exit<X>();
-            exit_up<topo.parent[X], D>();
+            exit_up<tree.parent[X], D>();
         }
     }
 
     // ---- transitions -------------------------------------------------------------------
     template <int Row, class E>
-    constexpr bool guard_holds(E const& e) const {
-        if constexpr (table.guarded[Row])
-            return row<Row>().guard(context_, e);
+    constexpr bool guard_holds(E const& e) {
+        if constexpr (rows.guarded[Row])
+            return this->test([&] { return static_cast<bool>(row<Row>().guard(context_, e)); });
         else
             return true;
     }
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        using R = typename an::template row_at<Row>;
-        using src = state_tag<typename R::source>;
-        using dst = std::conditional_t<std::is_same_v<typename R::target, detail::no_target>, state_tag<internal>,
-                                       state_tag<typename R::target>>;
-        if constexpr (detail::observes_transition<Observer, src, dst, E>)
-            observer_.on_transition(src{}, dst{}, e);
-        if constexpr (detail::observes_rows<Observer>)
-            observer_.on_row(Row);
-        row<Row>().action(context_, e, queue_);
+        notify::template transition<Row>(observer_, e);
+        if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
+            this->run([&] { row<Row>().action(context_, e, queue_); });
     }
 
     template <int Row>
     constexpr void run_entries() {
-        constexpr int d = table.domain[Row];
+        constexpr int d = rows.domain[Row];
         if constexpr (d >= 0)
-            enter_toward<d, table.target[Row]>();
+            enter_toward<d, rows.target[Row]>();
     }
 
     // Fires a transition selected at basic state Leaf, which no parallel state contains:
     // the exit path is known, so exits, action and entries are straight-line code.
     template <int Leaf, int Row, class E>
     constexpr void fire_from(E const& e) {
-        constexpr int d = table.domain[Row];
+        constexpr int d = rows.domain[Row];
         if constexpr (d >= 0)
             exit_up<Leaf, d>();
         run_action<Row>(e);
@@ -3359,19 +4491,11 @@ private:
 
     // The transitions selected in parallel regions, fired together after selection.
     struct no_selection {};  // for charts without parallel states
-    struct selection {
-        std::array<std::uint16_t, static_cast<std::size_t>(plan::max_active_leaves(root))> rows{};
-        std::size_t size = 0;
-        constexpr void add(int position) {
-            for (std::size_t i = 0; i < size; ++i)
-                if (rows[i] == position)
-                    return;
-            rows[size++] = static_cast<std::uint16_t>(position);
-        }
-    };
+    using selection = detail::selection<static_cast<std::size_t>(plan::max_active_leaves())>;
 
-    // A region-local trigger's selection: per zone, 0 or 1 + the row's index in its zone_rows.
-    struct zone_selection {
+    // A region-local trigger's selection: per component, 0 or 1 + the row's index in its
+    // component_rows.
+    struct component_selection {
         std::array<std::uint8_t, plan::components.size()> chosen{};
     };
 
@@ -3384,16 +4508,16 @@ private:
     template <int Trigger>
     using selection_for = std::conditional_t<
         !plan::has_parallel || fires_at_selection<Trigger>, no_selection,
-        std::conditional_t<plan::template region_local<Trigger>, zone_selection, selection>>;
+        std::conditional_t<plan::template region_local<Trigger>, component_selection, selection>>;
 
     template <int Leaf, int Trigger, int Row, class E, class Sel>
     constexpr bool try_row(E const& e, Sel& sel) {
         if (!guard_holds<Row>(e))
             return false;
-        if constexpr (!topo.under_parallel(Leaf) || fires_at_selection<Trigger>)
+        if constexpr (!tree.under_parallel(Leaf) || fires_at_selection<Trigger>)
             fire_from<Leaf, Row>(e);
         else if constexpr (plan::template region_local<Trigger>)
-            sel.chosen[static_cast<std::size_t>(plan::zone[Leaf])] = static_cast<std::uint8_t>(plan::template zone_code<Trigger, Row>);
+            sel.chosen[static_cast<std::size_t>(plan::component_of[Leaf])] = static_cast<std::uint8_t>(plan::template component_code<Trigger, Row>);
         else
             sel.add(plan::template position_of<Trigger>(Row));
         return true;
@@ -3401,17 +4525,16 @@ private:
 
     template <int Leaf, int Trigger, class E, class Sel>
     constexpr bool try_leaf(E const& e, Sel& sel) {
-        constexpr auto const& cands = plan::template candidates<Leaf, Trigger>;
+        constexpr auto const& candidates = plan::template candidates<Leaf, Trigger>;
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return (try_row<Leaf, Trigger, cands[I]>(e, sel) || ...);
-        }
-        (std::make_index_sequence<cands.size()>{});
+            return (try_row<Leaf, Trigger, candidates[I]>(e, sel) || ...);
+        }(std::make_index_sequence<candidates.size()>{});
     }
 
     // Walks the active configuration below S, visiting only states relevant to the trigger.
     template <int S, int Trigger, class E, class Sel>
     constexpr bool select(E const& e, Sel& sel) {
-        constexpr auto k = topo.kinds[S];
+        constexpr auto k = tree.kinds[S];
         if constexpr (!plan::template relevant<Trigger>[S]) {
             return false;
         } else if constexpr (k == detail::kind::basic || k == detail::kind::final_state) {
@@ -3429,42 +4552,23 @@ private:
 
     template <int Trigger, class F>
     static constexpr void with_transition(int position, F&& f) {
-        constexpr auto const& rows = plan::template transitions<Trigger>;
-        detail::visit_index<static_cast<int>(rows.size())>(
-            position, [&](auto i) { f(detail::int_c<rows[decltype(i)::value]>{}); });
+        constexpr auto const& on_trigger = plan::template transitions<Trigger>;
+        detail::visit_index<static_cast<int>(on_trigger.size())>(
+            position, [&](auto i) { f(detail::int_c<on_trigger[decltype(i)::value]>{}); });
     }
 
-    // SCXML: drop transitions whose exit sets meet an earlier one's, unless the later one's
-    // source is a descendant of the earlier one's (then it preempts it); then exit all,
-    // run the actions in order, enter all.
+    // SCXML: keep what conflict resolution keeps; then exit all, run the actions in order,
+    // enter all.
     template <int Trigger, class E>
     constexpr void fire_selected(E const& e, selection const& sel) {
-        constexpr auto const& rows = plan::template transitions<Trigger>;
-        selection kept;
-        for (std::size_t i = 0; i < sel.size; ++i) {
-            int const t1 = rows[sel.rows[i]];
-            bool preempted = false;
-            selection survivors;
-            for (std::size_t j = 0; j < kept.size; ++j) {
-                int const t2 = rows[kept.rows[j]];
-                if (!plan::conflict(t1, t2)) {
-                    survivors.add(kept.rows[j]);
-                } else if (topo.is_proper_ancestor(table.source[static_cast<std::size_t>(t2)],
-                                                   table.source[static_cast<std::size_t>(t1)])) {
-                    continue;  // t1 preempts t2
-                } else {
-                    preempted = true;
-                    break;
-                }
-            }
-            if (!preempted) {
-                survivors.add(sel.rows[i]);
-                kept = survivors;
-            }
-        }
+        constexpr auto const& on_trigger = plan::template transitions<Trigger>;
+        selection const kept = detail::resolve_conflicts(
+            sel,
+            [](std::size_t later, std::size_t earlier) { return plan::conflict(on_trigger[later], on_trigger[earlier]); },
+            [](std::size_t later, std::size_t earlier) { return plan::preempts(on_trigger[later], on_trigger[earlier]); });
         for (std::size_t i = kept.size; i-- > 0;)
             with_transition<Trigger>(kept.rows[i], [&](auto r) {
-                constexpr int d = table.domain[decltype(r)::value];
+                constexpr int d = rows.domain[decltype(r)::value];
                 if constexpr (d >= 0)
                     exit_below<d>();
             });
@@ -3474,32 +4578,33 @@ private:
             with_transition<Trigger>(kept.rows[i], [&](auto r) { run_entries<decltype(r)::value>(); });
     }
 
-    // Calls f(row) for the row chosen in zone Z, if any.
-    template <int Trigger, int Z, class F>
+    // Calls f(row) for the row chosen in component C, if any.
+    template <int Trigger, int C, class F>
     static constexpr void with_chosen(std::uint8_t code, F&& f) {
-        constexpr auto const& rows = plan::template zone_rows<Trigger, Z>;
+        constexpr auto const& chosen_from = plan::template component_rows<Trigger, C>;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (void)((code == I + 1 ? (f(detail::int_c<rows[I]>{}), true) : false) || ...);
-        }(std::make_index_sequence<rows.size()>{});
+            (void)((code == I + 1 ? (f(detail::int_c<chosen_from[I]>{}), true) : false) || ...);
+        }(std::make_index_sequence<chosen_from.size()>{});
     }
 
-    // A region-local trigger's transitions: none conflicts with another, so all fire; the zones
-    // are disjoint and visited in document order, which is the order SCXML fires them in.
+    // A region-local trigger's transitions: none conflicts with another, so all fire; the
+    // components are disjoint and visited in document order, which is the order SCXML fires
+    // them in.
     template <int Trigger, class E>
-    constexpr void fire_zones(E const& e, zone_selection const& sel) {
-        constexpr auto const& zones = plan::template selecting_zones<Trigger>;
-        constexpr std::size_t n = zones.size();
+    constexpr void fire_components(E const& e, component_selection const& sel) {
+        constexpr auto const& selecting = plan::template selecting_components<Trigger>;
+        constexpr std::size_t n = selecting.size();
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (with_chosen<Trigger, zones[n - 1 - I]>(sel.chosen[static_cast<std::size_t>(zones[n - 1 - I])], [&](auto r) {
-                 constexpr int d = table.domain[decltype(r)::value];
+            (with_chosen<Trigger, selecting[n - 1 - I]>(sel.chosen[static_cast<std::size_t>(selecting[n - 1 - I])], [&](auto r) {
+                 constexpr int d = rows.domain[decltype(r)::value];
                  if constexpr (d >= 0)
                      exit_below<d>();
              }),
              ...);
-            (with_chosen<Trigger, zones[I]>(sel.chosen[static_cast<std::size_t>(zones[I])],
+            (with_chosen<Trigger, selecting[I]>(sel.chosen[static_cast<std::size_t>(selecting[I])],
                                             [&](auto r) { run_action<decltype(r)::value>(e); }),
              ...);
-            (with_chosen<Trigger, zones[I]>(sel.chosen[static_cast<std::size_t>(zones[I])],
+            (with_chosen<Trigger, selecting[I]>(sel.chosen[static_cast<std::size_t>(selecting[I])],
                                             [&](auto r) { run_entries<decltype(r)::value>(); }),
              ...);
         }(std::make_index_sequence<n>{});
@@ -3514,9 +4619,9 @@ private:
             using sel_type = selection_for<Trigger>;
             sel_type sel;
             bool const any = select<0, Trigger>(e, sel);
-            if constexpr (std::is_same_v<sel_type, zone_selection>) {
+            if constexpr (std::is_same_v<sel_type, component_selection>) {
                 if (any)
-                    fire_zones<Trigger>(e, sel);
+                    fire_components<Trigger>(e, sel);
             } else if constexpr (std::is_same_v<sel_type, selection>) {
                 if (sel.size > 0)
                     fire_selected<Trigger>(e, sel);
@@ -3525,22 +4630,12 @@ private:
         }
     }
 
-    template <int Trigger, class E>
-    constexpr outcome process(E const& e) {
-        if (halted())
-            return last_ = outcome::halted;
-        detail::latch_inputs(context_);
-        last_ = finish(microstep<Trigger>(e));
-        detail::commit_outputs(context_);
-        return last_;
-    }
-
     // ---- the BSC cycle -----------------------------------------------------------------
     template <int Row>
-    constexpr bool condition_holds() const {
-        if constexpr (table.trigger[Row] <= detail::timeout_trigger_id(0)) {
-            constexpr int slot = plan::timeout_slot[table.source[Row]];
-            if (clock_ - armed_[static_cast<std::size_t>(slot)] < row<Row>().trigger_value.delay)
+    constexpr bool condition_holds() {
+        if constexpr (rows.trigger[Row] <= detail::timeout_trigger_id(0)) {
+            constexpr auto slot = static_cast<std::size_t>(plan::row_timeout_slot[Row]);
+            if (!detail::has_elapsed(armed_[slot], clock_, row<Row>().trigger_value.delay))
                 return false;
         }
         return guard_holds<Row>(eventless{});
@@ -3548,168 +4643,51 @@ private:
 
     template <int Row>
     constexpr void fire_condition() {
-        constexpr int d = table.domain[Row];
+        constexpr int d = rows.domain[Row];
         if constexpr (d >= 0)
             exit_below<d>();
         run_action<Row>(eventless{});
         run_entries<Row>();
+        // An internal timeout, which leaves its state active, counts again from now.
+        if constexpr (d < 0 && plan::row_timeout_slot[Row] >= 0)
+            armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = clock_;
     }
 
     template <int Frontier, int Component>
     constexpr bool try_component_candidates() {
-        constexpr auto const& cands = plan::template component_candidates<Frontier, Component>;
+        constexpr auto const& candidates = plan::template component_candidates<Frontier, Component>;
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return ((condition_holds<cands[I]>() && (fire_condition<cands[I]>(), true)) || ...);
-        }(std::make_index_sequence<cands.size()>{});
+            return ((condition_holds<candidates[I]>() && (fire_condition<candidates[I]>(), true)) || ...);
+        }(std::make_index_sequence<candidates.size()>{});
     }
 
     // Walks a component from S down to its active frontier and fires its first enabled
     // condition-driven transition, if any.
-    template <int S, int Component>
+    template <int Component>
     constexpr bool component_step() {
-        constexpr auto k = topo.kinds[S];
+        return component_walk<Component, Component>();
+    }
+    template <int S, int Component>
+    constexpr bool component_walk() {
+        constexpr auto k = tree.kinds[S];
         if constexpr (!plan::template relevant<detail::any_condition>[S]) {
             return false;
         } else if constexpr (k == detail::kind::composite) {
             // An irrelevant child has no condition-driven transition on it or above it.
             bool fired = false;
             with_relevant_active_child<detail::any_condition, S>(
-                [&](auto c) { fired = component_step<decltype(c)::value, Component>(); });
+                [&](auto c) { fired = component_walk<decltype(c)::value, Component>(); });
             return fired;
         } else {
             return try_component_candidates<S, Component>();
         }
     }
-
-    // Which states are active, by index (outermost first, so one pass suffices).
-    constexpr std::array<bool, static_cast<std::size_t>(an::N)> active_flags() const {
-        std::array<bool, static_cast<std::size_t>(an::N)> active{};
-        active[0] = true;
-        for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s) {
-            auto const p = static_cast<std::size_t>(topo.parent[s]);
-            active[s] = active[p] && (topo.slot[p] < 0 ||
-                                      config_byte(topo.slot[p]) == static_cast<std::uint8_t>(topo.ordinal[s]));
-        }
-        return active;
-    }
-
-    // The configuration with every byte that can never matter again reset to its initial
-    // child: the byte of an inactive composite that neither has history nor lies below a
-    // deep history. Two machines with equal canonical configurations behave the same.
-    constexpr configuration_type canonical_configuration() const {
-        configuration_type c = config_;
-        if constexpr (topo.slots > 0) {
-            auto const active = active_flags();
-            for (std::size_t s = 1; s < static_cast<std::size_t>(an::N); ++s) {
-                if (topo.slot[s] < 0 || active[s]) continue;
-                bool remembered = topo.hist[s] != detail::history::none;
-                for (int a = topo.parent[s]; a > 0 && !remembered; a = topo.parent[static_cast<std::size_t>(a)])
-                    remembered = topo.hist[static_cast<std::size_t>(a)] == detail::history::deep;
-                if (!remembered)
-                    c.active[static_cast<std::size_t>(topo.slot[s])] = static_cast<std::uint8_t>(
-                        topo.ordinal[static_cast<std::size_t>(topo.initial[s])]);
-            }
-        }
-        return c;
-    }
-
-    // A timeout slot's age matters only while its state is active.
-    constexpr bool timeout_armed(std::size_t slot) const {
-        auto const active = active_flags();
-        for (std::size_t s = 0; s < static_cast<std::size_t>(an::N); ++s)
-            if (plan::timeout_slot[s] == static_cast<int>(slot)) return active[s];
-        return false;
-    }
-
-    // The longest delay of any timeout row: past it, a state's age no longer matters.
-    constexpr duration longest_timeout() const {
-        duration longest{};
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (
-                [&] {
-                    if constexpr (table.trigger[I] <= detail::timeout_trigger_id(0))
-                        longest = std::max(longest, row<static_cast<int>(I)>().trigger_value.delay);
-                }(),
-                ...);
-        }(std::make_index_sequence<static_cast<std::size_t>(an::R)>{});
-        return longest;
-    }
-
-    // Raised events of a cycle: each one microstep, no eventless settling (one transition
-    // per component per cycle).
-    constexpr outcome drain_queue(bool consumed) {
-        for (std::size_t n = 0; !queue_.empty() && !halted();) {
-            if (++n > Policy::max_internal_events)
-                return abandon();
-            queue_.pop([&](auto const& ev) { microstep<an::template trigger_of<std::decay_t<decltype(ev)>>>(ev); });
-        }
-        if (queue_.overflowed()) {
-            queue_.clear_overflow();
-            return outcome::queue_overflow;
-        }
-        return consumed ? outcome::consumed : outcome::ignored;
-    }
-
-    // Settles the machine after a microstep: eventless transitions until none is enabled,
-    // then the raised events one by one, each followed by its eventless transitions.
-    constexpr outcome finish(bool consumed) {
-        if constexpr (!Policy::settle_eventless)
-            return drain_queue(consumed);
-        // The common case, kept inline: nothing raised, and no eventless transition to try.
-        if constexpr (!plan::has_trigger(detail::eventless_id))
-            if (queue_.empty() && !queue_.overflowed())
-                return consumed ? outcome::consumed : outcome::ignored;
-        return settle(consumed);
-    }
-
-    constexpr outcome settle(bool consumed) {
-        std::size_t internal_events = 0;
-        for (;;) {
-            if constexpr (plan::has_trigger(detail::eventless_id)) {
-                // Up to max_eventless_steps transitions settle; one more means the chart cycles.
-                for (std::size_t steps = 0; !halted() && microstep<detail::eventless_id>(eventless{});)
-                    if (++steps > Policy::max_eventless_steps)
-                        return abandon();
-            }
-            if (queue_.empty() || halted())
-                break;
-            if (++internal_events > Policy::max_internal_events)
-                return abandon();
-            queue_.pop([&](auto const& ev) { microstep<an::template trigger_of<std::decay_t<decltype(ev)>>>(ev); });
-        }
-        if (queue_.overflowed()) {
-            queue_.clear_overflow();
-            return outcome::queue_overflow;
-        }
-        return consumed ? outcome::consumed : outcome::ignored;
-    }
-
-    constexpr outcome abandon() {
-        queue_.clear();
-        queue_.clear_overflow();
-        return outcome::livelock;
-    }
-
-    friend struct detail::machine_access;
-
-    [[no_unique_address]] chart_type chart_;
-    context_type context_;
-    configuration_type config_{};
-    [[no_unique_address]] queue_type queue_{};
-    duration clock_{};
-    std::array<duration, static_cast<std::size_t>(plan::timeout_slots)> armed_{};  // entry times
-    outcome last_ = outcome::ignored;
-    [[no_unique_address]] Observer observer_;
 };
 
 // Charts are declared `constexpr`, so `machine{chart, ...}` and `machine<decltype(chart)>` name
 // the same type.
-template <class C, class Ctx>
-machine(C const&, Ctx) -> machine<C const>;
-template <class C>
-machine(C const&) -> machine<C const>;
-template <class C, class Ctx, class O>
-machine(C const&, Ctx, O) -> machine<C const, default_policy, O>;
+template <class C, class... A>
+machine(C const&, A...) -> machine<C const, default_policy, detail::observer_argument_t<A...>>;
 
 }  // namespace bsc
 // end include/bsc/compiled/machine.hpp
@@ -3833,9 +4811,10 @@ constexpr auto named(std::string_view name, F f) {
 }  // namespace bsc
 // end include/bsc/dsl/named.hpp
 // begin include/bsc/system.hpp
-// Systems of actors (seed 003; seed 001's modules): several machines — controllers and plant
-// models — wired by typed signals from output channels to input channels, stepped in a declared
-// order with the time given from outside. The wiring is one list, the system's actor diagram.
+// Systems of actors (the COMDES-II paper [COMDES]; the modules of the ECA paper [ECA]; see
+// docs/references.md): several machines — controllers and plant models — wired by typed signals
+// from output channels to input channels, stepped in a declared order with the time given from
+// outside. The wiring is one list, the system's actor diagram.
 
 #include <cstddef>
 #include <type_traits>
@@ -3908,24 +4887,25 @@ private:
 }  // namespace bsc
 // end include/bsc/system.hpp
 // begin include/bsc/table/engine.hpp
-// bsc::table::machine: the table-driven back end. A generic engine (seed 000, section 3.3.2)
-// interprets the two tables of bsc/table/tables.hpp: it knows states and transitions only by
-// their numbers, and reaches the chart's guards and actions through the tables' function
-// pointers. Its public interface and its behaviour are those of bsc::machine, so a program
-// changes back end by changing one type.
+// bsc::table::machine: the table-driven back end. A generic engine (the machine-tool paper
+// [MCS] in docs/references.md, section 3.3.2) interprets the two tables of
+// bsc/table/tables.hpp: it knows states and transitions only by their numbers, and reaches the
+// chart's guards and actions through the tables' function pointers. Its public interface and
+// run to completion are the shared driver's (runtime/driver.hpp), so a program changes back end
+// by changing one type.
 //
 // The paper's engine and this one:
 //
-//   StartStEng(st, qtStates, tm, qtTrans)   the constructor: start()
-//   stEng(event)                            dispatch(e): process(event, e), one microstep per
-//                                           event taken from the environment or the queue
+//   StartStEng(st, qtStates, tm, qtTrans)   the constructor: enter_initial()
+//   stEng(event)                            dispatch(e): one microstep per event taken from
+//                                           the environment or the queue
 //   deActivPath(from, to, inclusive)        deactivate_path(domain)
 //   activPath(from, to, hist)               activate_path(domain, target)
 //   StopStEng()                             the destructor (the engine owns no resource)
 //
 // and the five steps of its Figure 9 are those of microstep(). step(now) adds the BSC execution
-// cycle of seed 002 (timers, latched inputs, one condition-driven transition per component,
-// committed outputs) with the same tables.
+// cycle of the Basic Statechart paper [BSC] (one condition-driven transition per component)
+// with the same tables.
 
 #include <array>
 #include <cstddef>
@@ -3934,14 +4914,13 @@ private:
 #include <utility>
 
 // begin include/bsc/table/tables.hpp
-// The operation rules of the table-driven runtime: a chart as the two constant tables of
-// seed 000 (section 3.3.1), the topology table (the paper's BSTATE, one row per state) and
-// the transition table (BTRANS, one row per transition). The chart's guards, actions, entry
-// and exit actions are reached through plain function pointers: one small generated function
-// ("thunk") per row, which receives the chart object and the context and calls the row's
-// callable. Everything here is computed by the compiler; bsc::table::machine interprets it.
-// For the BSC execution cycle (seed 002) the tables also list the components, give each
-// timeout its delay and each state that a timeout leaves a slot for the time it was entered.
+// The operation rules of the table-driven runtime: a chart as the two constant tables of the
+// machine-tool paper [MCS] (docs/references.md, section 3.3.1), the topology table (the paper's
+// BSTATE, one row per state) and the transition table (BTRANS, one row per transition). The
+// chart's guards, actions, entry and exit actions are reached through plain function pointers:
+// one small generated function ("thunk") per row, which receives the chart object and the
+// context and calls the row's callable. Everything here is computed by the compiler from the
+// chart model; bsc::table::machine interprets it.
 
 #include <array>
 #include <boost/hana/at.hpp>
@@ -3956,11 +4935,11 @@ namespace bsc::table {
 
 /// A state's number: its row in the topology table. Row 0 is the implicit top above the
 /// chart's root (the paper's ancestor 0 of MCS); since the top is nobody's child or sibling,
-/// 0 also means "none" in the descendant, sibling, initial and `to` columns.
+/// 0 (no_state) also means "none" in the first_child, next_sibling, initial and `to` columns.
 using state_id = std::uint16_t;
-inline constexpr state_id none = 0;
+inline constexpr state_id no_state = 0;
 
-/// An event's number: the position of its type in detail::analysis<Chart>::events.
+/// An event's number: the position of its type in the machine's event_types.
 using event_id = std::int16_t;
 inline constexpr event_id eventless_id = -1;  ///< a transition without an event
 inline constexpr event_id timeout_id = -2;    ///< a timeout transition, taken by a BSC cycle only
@@ -3968,13 +4947,13 @@ inline constexpr event_id timeout_id = -2;    ///< a timeout transition, taken b
 /// Eventless and timeout transitions are condition-driven: the ones a BSC cycle considers.
 constexpr bool is_condition(event_id event) { return event < 0; }
 
-/// The paper's status column, split in two: the kind of state and its history.
+/// The paper's status column, in the words of the DSL: the kind of state and its history.
 enum class state_kind : std::uint8_t {
     top,          ///< the implicit state above the root (row 0)
     basic,        ///< an atomic state
     final_state,  ///< an atomic state that ends its parent (the root: the machine halts)
-    or_state,     ///< a composite: exactly one child active (the paper's hierarchical state)
-    and_state,    ///< a parallel state: all children active (the paper's concurrent state)
+    composite,    ///< exactly one child active (the paper's hierarchical, or OR, state)
+    parallel,     ///< all children active (the paper's concurrent, or AND, state)
 };
 enum class history_kind : std::uint8_t { none, shallow, deep };
 
@@ -3984,28 +4963,32 @@ struct state_status {
     friend constexpr bool operator==(state_status, state_status) = default;
 };
 
-/// One row of the topology table (the paper's BSTATE, Figure 7), then the columns the engine
-/// would otherwise recompute by walking the tree.
+/// One row of the topology table (the paper's BSTATE, Figure 7, whose descendant, sibling and
+/// ancestor columns are first_child, next_sibling and parent here), then the columns the
+/// engine would otherwise recompute by walking the tree.
 template <class Chart, class Raise>
 struct state_row {
     using context_type = typename Chart::context_type;
-    /// Runs the state's entry (or exit) actions, in declaration order.
-    using state_action = void (*)(Chart const& chart, context_type& context, Raise& raise);
+    /// Runs the state's entry (or exit) actions, in declaration order; each is one block, and
+    /// what one throws goes to `failures` before the next runs.
+    using state_action = void (*)(Chart const& chart, context_type& context, Raise& raise,
+                                  bsc::detail::failure_sink const& failures);
 
-    state_id state = none;       ///< this row's number
-    state_id descendant = none;  ///< first child in document order
-    state_id sibling = none;     ///< next sibling in document order
-    state_id ancestor = none;    ///< parent (0, the top, for the root)
+    state_id state = no_state;         ///< this row's number
+    state_id first_child = no_state;   ///< first child in document order (BSTATE's descendant)
+    state_id next_sibling = no_state;  ///< next sibling in document order (BSTATE's sibling)
+    state_id parent = no_state;        ///< parent, 0 (the top) for the root (BSTATE's ancestor)
     state_status status{};
     state_action entry = nullptr;  ///< null: no entry action
     state_action exit = nullptr;   ///< null: no exit action
 
     // Derived columns.
-    state_id initial = none;   ///< default child of an OR state
+    state_id initial = no_state;   ///< default child of a composite
     std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
-    std::int16_t slot = -1;    ///< the byte of the configuration an OR state owns, -1 for others
+    std::int16_t slot = -1;    ///< the byte of the configuration a composite owns, -1 for others
     state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
-    std::int16_t timeout_slot = -1;  ///< where the time it was entered is kept if a timeout leaves it, else -1
+    std::int16_t timeout_slot = -1;    ///< the first slot of its timeout rows (see transition_row), else -1
+    std::int16_t timeout_slots = 0;    ///< how many of its rows are timeouts: its slots follow the first
 };
 
 /// One row of the transition table (the paper's BTRANS, Figure 8).
@@ -4020,50 +5003,17 @@ struct transition_row {
     /// delay is read from the chart like a guard.
     using delay_fn = duration (*)(Chart const& chart);
 
-    state_id from = none;          ///< origin state
-    event_id event = eventless_id; ///< trigger, or `eventless_id` / `timeout_id`
-    state_id to = none;            ///< destination state; none: an internal transition
-    guard_fn guard = nullptr;      ///< null: unguarded
-    action_fn action = nullptr;    ///< null: no action
-    state_id domain = none;        ///< the transition domain: the state whose active descendants it exits
-    delay_fn delay = nullptr;      ///< a timeout's delay; null for the other transitions
+    state_id from = no_state;           ///< origin state
+    event_id event = eventless_id;  ///< trigger, or `eventless_id` / `timeout_id`
+    state_id to = no_state;             ///< destination state; no_state: an internal transition
+    guard_fn guard = nullptr;       ///< null: unguarded
+    action_fn action = nullptr;     ///< null: no action
+    state_id domain = no_state;         ///< the transition domain: the state whose active descendants it exits
+    delay_fn delay = nullptr;       ///< a timeout's delay; null for the other transitions
+    /// A timeout's slot: where the machine keeps the time its delay counts from (its origin's
+    /// entry, or for an internal timeout the cycle it last fired in); -1 for the others.
+    std::int16_t timeout_slot = -1;
 };
-
-namespace detail_tables {
-
-template <class R>
-constexpr bool has_action() {
-    using A = std::remove_cvref_t<decltype(std::declval<R const&>().action)>;
-    return !std::is_same_v<A, bsc::detail::no_action>;
-}
-
-// The event type a transition row's guard and action receive.
-template <class R>
-using event_type_of =
-    std::conditional_t<std::is_void_v<typename bsc::detail::trigger_event<R>::type>, bsc::eventless,
-                       typename bsc::detail::trigger_event<R>::type>;
-
-constexpr state_kind kind_of(bsc::detail::kind k) {
-    switch (k) {
-        case bsc::detail::kind::top: return state_kind::top;
-        case bsc::detail::kind::basic: return state_kind::basic;
-        case bsc::detail::kind::final_state: return state_kind::final_state;
-        case bsc::detail::kind::composite: return state_kind::or_state;
-        case bsc::detail::kind::parallel: return state_kind::and_state;
-    }
-    return state_kind::basic;
-}
-
-constexpr history_kind history_of(bsc::detail::history h) {
-    switch (h) {
-        case bsc::detail::history::none: return history_kind::none;
-        case bsc::detail::history::shallow: return history_kind::shallow;
-        case bsc::detail::history::deep: return history_kind::deep;
-    }
-    return history_kind::none;
-}
-
-}  // namespace detail_tables
 
 /// The operation rules of `Chart`: its topology table `states` and transition table
 /// `transitions`, plus the indexes the engine uses to read them. `Policy` only fixes the
@@ -4071,73 +5021,48 @@ constexpr history_kind history_of(bsc::detail::history h) {
 template <class Chart, class Policy = default_policy>
 struct tables {
     using chart_type = std::remove_cv_t<Chart>;
-    using analysis = bsc::detail::analysis<chart_type>;
-    using plan = bsc::detail::plan<analysis>;
     using context_type = typename chart_type::context_type;
-    using raise_type = bsc::detail::event_queue<Policy::queue_capacity, typename analysis::events>;
+    using raise_type = bsc::detail::event_queue<Policy::queue_capacity, typename bsc::detail::chart_model<chart_type>::events>;
     using state_row_type = state_row<chart_type, raise_type>;
     using transition_row_type = transition_row<chart_type, raise_type>;
 
 private:
-    static constexpr auto const& topo = analysis::topo;
-    static constexpr auto const& rows = analysis::table;
+    using model = bsc::detail::chart_model<chart_type>;
+    using layout = bsc::detail::chart_layout<model>;
+    using row_kind = bsc::detail::row_kind;
+    static constexpr auto const& tree = model::tree;
+    static constexpr auto const& rows = model::rows;
 
-    static constexpr std::size_t transition_count = [] {
-        std::size_t n = 0;
-        for (int r = 0; r < analysis::R; ++r)
-            n += rows.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition;
-        return n;
-    }();
-
-    // The chart row of each transition, in declaration order.
-    static constexpr auto chart_row = [] {
-        std::array<int, transition_count> out{};
-        std::size_t n = 0;
-        for (int r = 0; r < analysis::R; ++r)
-            if (rows.kinds[static_cast<std::size_t>(r)] == bsc::detail::row_kind::transition)
-                out[n++] = r;
-        return out;
-    }();
-
-    static constexpr int count_rows(bsc::detail::row_kind k, int state) {
-        int n = 0;
-        for (int r = 0; r < analysis::R; ++r)
-            n += rows.kinds[static_cast<std::size_t>(r)] == k && rows.source[static_cast<std::size_t>(r)] == state;
-        return n;
-    }
-
-    // The entry or exit rows of a state, in declaration order.
-    template <bsc::detail::row_kind K, int S>
-    static constexpr auto rows_of = [] {
-        std::array<int, static_cast<std::size_t>(count_rows(K, S))> out{};
-        std::size_t n = 0;
-        for (int r = 0; r < analysis::R; ++r)
-            if (rows.kinds[static_cast<std::size_t>(r)] == K && rows.source[static_cast<std::size_t>(r)] == S)
-                out[n++] = r;
-        return out;
-    }();
+    // The event type a transition row's guard and action receive.
+    template <int Row>
+    using event_type_of = std::conditional_t<
+        std::is_void_v<typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>,
+        bsc::eventless, typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>;
 
     // ---- the thunks: one per state and per transition ---------------------------------------
-    template <bsc::detail::row_kind K, int S>
-    static void state_thunk(chart_type const& chart, context_type& context, raise_type& raise) {
-        constexpr auto const& list = rows_of<K, S>;
+    template <row_kind K, int S>
+    static void state_thunk(chart_type const& chart, context_type& context, raise_type& raise,
+                            bsc::detail::failure_sink const& failures) {
+        constexpr auto const& actions = layout::template rows_of<K, S>;
+        auto const report = [&](std::exception_ptr error) { failures.report(failures.machine, std::move(error)); };
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (boost::hana::at_c<static_cast<std::size_t>(list[I])>(chart.rows).action(context, raise), ...);
-        }(std::make_index_sequence<list.size()>{});
+            (bsc::detail::run_block(
+                 [&] { boost::hana::at_c<static_cast<std::size_t>(actions[I])>(chart.rows).action(context, raise); },
+                 report),
+             ...);
+        }(std::make_index_sequence<actions.size()>{});
     }
 
     template <int Row>
     static bool guard_thunk(chart_type const& chart, context_type const& context, void const* event) {
-        using E = detail_tables::event_type_of<typename analysis::template row_at<Row>>;
-        return static_cast<bool>(
-            boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).guard(context, *static_cast<E const*>(event)));
+        return static_cast<bool>(boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows)
+                                     .guard(context, *static_cast<event_type_of<Row> const*>(event)));
     }
 
     template <int Row>
     static void action_thunk(chart_type const& chart, context_type& context, void const* event, raise_type& raise) {
-        using E = detail_tables::event_type_of<typename analysis::template row_at<Row>>;
-        boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).action(context, *static_cast<E const*>(event),
-                                                                            raise);
+        boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows)
+            .action(context, *static_cast<event_type_of<Row> const*>(event), raise);
     }
 
     template <int Row>
@@ -4145,72 +5070,101 @@ private:
         return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay;
     }
 
-    template <bsc::detail::row_kind K, int S>
+    template <row_kind K, int S>
     static constexpr typename state_row_type::state_action state_action_of() {
-        if constexpr (rows_of<K, S>.size() == 0)
+        if constexpr (layout::template rows_of<K, S>.size() == 0)
             return nullptr;
         else
             return &state_thunk<K, S>;
     }
 
-    static constexpr state_id id(int s) { return s < 0 ? none : static_cast<state_id>(s); }
+    static constexpr state_id id(int s) { return s < 0 ? no_state : static_cast<state_id>(s); }
+
+    static constexpr state_kind kind_of(bsc::detail::kind k) {
+        switch (k) {
+            case bsc::detail::kind::top: return state_kind::top;
+            case bsc::detail::kind::basic: return state_kind::basic;
+            case bsc::detail::kind::final_state: return state_kind::final_state;
+            case bsc::detail::kind::composite: return state_kind::composite;
+            case bsc::detail::kind::parallel: return state_kind::parallel;
+        }
+        return state_kind::basic;
+    }
+    static constexpr history_kind history_of(bsc::detail::history h) {
+        switch (h) {
+            case bsc::detail::history::none: return history_kind::none;
+            case bsc::detail::history::shallow: return history_kind::shallow;
+            case bsc::detail::history::deep: return history_kind::deep;
+        }
+        return history_kind::none;
+    }
 
     template <int S>
     static constexpr state_row_type make_state_row() {
         constexpr auto i = static_cast<std::size_t>(S);
         state_row_type row{};
         row.state = static_cast<state_id>(S);
-        row.descendant = id(topo.first_child[i]);
-        row.sibling = id(topo.next_sibling[i]);
-        row.ancestor = id(topo.parent[i]);
-        row.status = {detail_tables::kind_of(topo.kinds[i]), detail_tables::history_of(topo.hist[i])};
-        row.entry = state_action_of<bsc::detail::row_kind::entry, S>();
-        row.exit = state_action_of<bsc::detail::row_kind::exit, S>();
-        row.initial = id(topo.initial[i]);
-        row.ordinal = static_cast<std::uint8_t>(topo.ordinal[i]);
-        row.slot = static_cast<std::int16_t>(topo.slot[i]);
-        row.end = static_cast<state_id>(topo.end[i]);
-        row.timeout_slot = static_cast<std::int16_t>(plan::timeout_slot[i]);  // numbered as bsc::machine does
+        row.first_child = id(tree.first_child[i]);
+        row.next_sibling = id(tree.next_sibling[i]);
+        row.parent = id(tree.parent[i]);
+        row.status = {kind_of(tree.kinds[i]), history_of(tree.hist[i])};
+        row.entry = state_action_of<row_kind::entry, S>();
+        row.exit = state_action_of<row_kind::exit, S>();
+        row.initial = id(tree.initial[i]);
+        row.ordinal = static_cast<std::uint8_t>(tree.ordinal[i]);
+        row.slot = static_cast<std::int16_t>(tree.slot[i]);
+        row.end = static_cast<state_id>(tree.end[i]);
+        row.timeout_slot = static_cast<std::int16_t>(layout::timeout_slot[i]);
+        row.timeout_slots = static_cast<std::int16_t>(layout::timeout_slot_count[i]);
         return row;
     }
 
     template <std::size_t K>
     static constexpr transition_row_type make_transition_row() {
-        constexpr int r = chart_row[K];
+        constexpr int r = layout::transition_rows[K];
         constexpr auto i = static_cast<std::size_t>(r);
-        using R = typename analysis::template row_at<r>;
+        using R = typename model::template row_at<r>;
         transition_row_type row{};
         row.from = id(rows.source[i]);
-        row.event = rows.trigger[i] >= 0                            ? static_cast<event_id>(rows.trigger[i])
+        row.event = rows.trigger[i] >= 0                             ? static_cast<event_id>(rows.trigger[i])
                     : rows.trigger[i] == bsc::detail::eventless_id ? eventless_id
-                                                                    : timeout_id;
+                                                                     : timeout_id;
         row.to = id(rows.target[i]);
         if constexpr (rows.guarded[i])
             row.guard = &guard_thunk<r>;
-        if constexpr (detail_tables::has_action<R>())
+        if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(std::declval<R const&>().action)>,
+                                      bsc::detail::no_action>)
             row.action = &action_thunk<r>;
         row.domain = id(rows.domain[i]);
         if constexpr (bsc::detail::is_timeout_row<R>)
             row.delay = &delay_thunk<r>;
+        row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
         return row;
     }
 
-    static_assert(analysis::N <= 0xffff, "bsc::table: a chart has at most 65535 states");
+    static constexpr std::size_t transition_count = layout::transition_rows.size();
+    static_assert(model::N <= 0xffff, "bsc::table: a chart has at most 65535 states");
     static_assert(transition_count <= 0x7fff, "bsc::table: a chart has at most 32767 transitions");
 
 public:
     /// The position among make_chart's rows of each transition (what observers' on_row gets).
-    static constexpr auto const& transition_chart_row = chart_row;
+    static constexpr auto const& transition_chart_row = layout::transition_rows;
 
     /// Number of rows of each table.
-    static constexpr std::size_t state_count = static_cast<std::size_t>(analysis::N);
+    static constexpr std::size_t state_count = static_cast<std::size_t>(model::N);
     static constexpr std::size_t transition_rows = transition_count;
     /// Number of event types (valid event ids are 0 .. event_count - 1).
-    static constexpr std::size_t event_count = analysis::events::size;
-    /// Bytes of the active configuration: one per OR state.
-    static constexpr std::size_t slots = static_cast<std::size_t>(topo.slots);
+    static constexpr std::size_t event_count = model::events::size;
+    /// Bytes of the active configuration: one per composite.
+    static constexpr std::size_t slots = static_cast<std::size_t>(tree.slots);
     /// The root of the chart (row 1; row 0 is the implicit top).
-    static constexpr state_id root = 1;
+    static constexpr state_id root = layout::root;
+    /// The number of state S (its row in `states`).
+    template <class S>
+    static constexpr state_id state_of = id(model::template index_of_state<S>);
+    /// The number of event type E (-1 if no transition takes it).
+    template <class E>
+    static constexpr event_id event_of = static_cast<event_id>(model::template trigger_of<E>);
 
     /// The topology table (BSTATE), in document order: row s describes state s.
     static constexpr std::array<state_row_type, state_count> states =
@@ -4227,7 +5181,7 @@ public:
     /// The unqualified names of the states, by row (row 0, the top, has an internal name).
     static constexpr auto names = []<class... Tags>(bsc::detail::type_list<Tags...>) {
         return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename analysis::tags{});
+    }(typename model::tags{});
 
     /// The transitions leaving each state, as a list threaded through the transition table in
     /// declaration order: first_out[s] is the first, next_out[t] the one after t (-1: no more).
@@ -4252,62 +5206,32 @@ public:
     }();
 
     /// How many states keep an entry time for their timeouts.
-    static constexpr std::size_t timeout_slots = static_cast<std::size_t>(plan::timeout_slots);
-
-    /// The components of a BSC cycle (seed 002), in the order they run: the root and every child
-    /// of an AND state, in document order (bsc::machine's list).
-    static constexpr auto components = [] {
-        std::array<state_id, plan::components.size()> out{};
-        for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<state_id>(plan::components[i]);
-        return out;
-    }();
+    static constexpr std::size_t timeout_slots = static_cast<std::size_t>(layout::timeout_slots);
 
     /// True if some transition is triggered by `event` (an event id, or `eventless_id`).
     static constexpr bool handles(event_id event) {
         for (auto const& t : transitions)
-            if (t.event == event)
-                return true;
+            if (t.event == event) return true;
         return false;
     }
+
     static constexpr bool has_eventless = handles(eventless_id);
     /// True if a BSC cycle has anything to consider: an eventless or timeout transition.
     static constexpr bool has_conditions = has_eventless || handles(timeout_id);
 
+    /// The components of a BSC cycle, in the order they run: the root and every child of a
+    /// parallel state, in document order.
+    static constexpr auto components = [] {
+        std::array<state_id, layout::components.size()> out{};
+        for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<state_id>(layout::components[i]);
+        return out;
+    }();
+
+    /// The configuration every composite starts from: its initial child.
+    static constexpr auto const& initial_bytes = layout::initial_bytes;
+
     /// How many basic states can be active at once: the most transitions one event can select.
-    static constexpr std::size_t max_active_leaves = [] {
-        std::array<std::size_t, state_count> leaves{};
-        for (std::size_t s = state_count; s-- > 0;) {
-            auto const& row = states[s];
-            if (row.descendant == none) {
-                leaves[s] = 1;
-                continue;
-            }
-            std::size_t n = 0;
-            for (state_id c = row.descendant; c != none; c = states[c].sibling)
-                n = row.status.kind == state_kind::and_state ? n + leaves[c] : (leaves[c] > n ? leaves[c] : n);
-            leaves[s] = n;
-        }
-        return leaves[0];
-    }();
-
-    /// True if a final state is a child of the root, so that the machine can halt.
-    static constexpr bool can_halt = [] {
-        if (states[root].status.kind != state_kind::or_state)
-            return false;
-        for (state_id c = states[root].descendant; c != none; c = states[c].sibling)
-            if (states[c].status.kind == state_kind::final_state)
-                return true;
-        return false;
-    }();
-
-    /// The configuration every OR state starts from: its initial child.
-    static constexpr auto initial_bytes = [] {
-        std::array<std::uint8_t, slots> bytes{};
-        for (auto const& row : states)
-            if (row.slot >= 0)
-                bytes[static_cast<std::size_t>(row.slot)] = states[row.initial].ordinal;
-        return bytes;
-    }();
+    static constexpr std::size_t max_active_leaves = static_cast<std::size_t>(layout::max_active_leaves());
 
     /// a is d or one of its ancestors.
     static constexpr bool contains(state_id a, state_id d) { return a <= d && d < states[a].end; }
@@ -4319,81 +5243,65 @@ public:
 namespace bsc::table {
 
 /// The observer's hooks as data: one function pointer per state for on_entry and on_exit and
-/// one per transition for on_transition, each null where the observer lacks the hook. They
-/// turn the engine's state numbers back into the bsc::state_tag<S> the hooks expect.
+/// one per transition for on_transition and on_row, each null where the observer lacks the
+/// hook. They turn the engine's numbers back into the calls of bsc::detail::notify.
 template <class Chart, class Policy, class Observer>
 struct observer_hooks {
-    using rules = tables<Chart, Policy>;
-    using analysis = typename rules::analysis;
     using state_hook = void (*)(Observer& observer);
     using transition_hook = void (*)(Observer& observer, void const* event);
 
 private:
-    template <std::size_t S>
-    using tag = state_tag<typename analysis::template tag_at<static_cast<int>(S)>>;
-
-    template <std::size_t S>
-    static void entered(Observer& o) {
-        o.on_entry(tag<S>{});
-    }
-    template <std::size_t S>
-    static void exited(Observer& o) {
-        o.on_exit(tag<S>{});
-    }
+    using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
+    using notify = bsc::detail::notify<model, Observer>;
+    using tables_type = tables<Chart, Policy>;
 
     template <int Row>
-    using row_type = typename analysis::template row_at<Row>;
-    template <int Row>
-    using source_tag = state_tag<typename row_type<Row>::source>;
-    template <int Row>
-    using target_tag =
-        std::conditional_t<std::is_same_v<typename row_type<Row>::target, bsc::detail::no_target>,
-                           state_tag<internal>, state_tag<typename row_type<Row>::target>>;
-    template <int Row>
-    using event_type = detail_tables::event_type_of<row_type<Row>>;
+    using event_type = std::conditional_t<
+        std::is_void_v<typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>,
+        bsc::eventless, typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>;
 
     template <int Row>
     static void transition(Observer& o, void const* event) {
-        o.on_transition(source_tag<Row>{}, target_tag<Row>{}, *static_cast<event_type<Row> const*>(event));
+        notify::template transition<Row>(o, *static_cast<event_type<Row> const*>(event));
     }
 
     template <std::size_t S>
     static constexpr state_hook entry_hook() {
-        if constexpr (S > 0 && bsc::detail::observes_entry<Observer, tag<S>>)
-            return &entered<S>;
+        if constexpr (notify::template observes_entry_of<static_cast<int>(S)>)
+            return &notify::template entered<static_cast<int>(S)>;
         else
             return nullptr;
     }
     template <std::size_t S>
     static constexpr state_hook exit_hook() {
-        if constexpr (S > 0 && bsc::detail::observes_exit<Observer, tag<S>>)
-            return &exited<S>;
+        if constexpr (notify::template observes_exit_of<static_cast<int>(S)>)
+            return &notify::template exited<static_cast<int>(S)>;
         else
             return nullptr;
     }
-
     template <std::size_t K>
     static constexpr transition_hook transition_hook_of() {
-        constexpr int r = rules::transition_chart_row[K];
-        if constexpr (bsc::detail::observes_transition<Observer, source_tag<r>, target_tag<r>, event_type<r>>)
+        constexpr int r = tables_type::transition_chart_row[K];
+        if constexpr (notify::template observes_row<r, event_type<r>>)
             return &transition<r>;
         else
             return nullptr;
     }
 
+    template <class Hook, std::size_t N, class Make>
+    static constexpr std::array<Hook, N> make(Make make_one) {
+        return [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return std::array<Hook, N>{make_one(std::integral_constant<std::size_t, I>{})...};
+        }(std::make_index_sequence<N>{});
+    }
+
 public:
-    static constexpr std::array<state_hook, rules::state_count> on_entry =
-        []<std::size_t... S>(std::index_sequence<S...>) {
-            return std::array<state_hook, rules::state_count>{entry_hook<S>()...};
-        }(std::make_index_sequence<rules::state_count>{});
-    static constexpr std::array<state_hook, rules::state_count> on_exit =
-        []<std::size_t... S>(std::index_sequence<S...>) {
-            return std::array<state_hook, rules::state_count>{exit_hook<S>()...};
-        }(std::make_index_sequence<rules::state_count>{});
-    static constexpr std::array<transition_hook, rules::transition_rows> on_transition =
-        []<std::size_t... K>(std::index_sequence<K...>) {
-            return std::array<transition_hook, rules::transition_rows>{transition_hook_of<K>()...};
-        }(std::make_index_sequence<rules::transition_rows>{});
+    static constexpr auto on_entry = make<state_hook, tables_type::state_count>(
+        [](auto s) { return entry_hook<decltype(s)::value>(); });
+    static constexpr auto on_exit = make<state_hook, tables_type::state_count>(
+        [](auto s) { return exit_hook<decltype(s)::value>(); });
+    static constexpr auto on_transition = make<transition_hook, tables_type::transition_rows>(
+        [](auto t) { return transition_hook_of<decltype(t)::value>(); });
 };
 
 /// The observer hooks of an observer without hooks: no table at all.
@@ -4408,186 +5316,93 @@ struct observer_hooks<Chart, Policy, no_observer> {};
 /// Requirements: `Chart` comes from bsc::make_chart; `Policy` has the members of
 /// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
 template <class Chart, class Policy = default_policy, class Observer = no_observer>
-class machine {
-    using rules = tables<Chart, Policy>;
-    using analysis = typename rules::analysis;
+class machine : public bsc::detail::driver<machine<Chart, Policy, Observer>, Chart, Policy, Observer,
+                                           typename tables<Chart, Policy>::raise_type> {
+    using base = bsc::detail::driver<machine, Chart, Policy, Observer, typename tables<Chart, Policy>::raise_type>;
+    friend base;
     using hooks = observer_hooks<Chart, Policy, Observer>;
     static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
-    static constexpr std::size_t N = rules::state_count;
-    static constexpr auto const& states = rules::states;
-    static constexpr auto const& transitions = rules::transitions;
 
 public:
-    using chart_type = Chart;
-    using context_type = typename Chart::context_type;
-    using configuration_type = configuration<rules::slots>;
-    using queue_type = typename rules::raise_type;
-    using event_types = typename analysis::events;
+    using typename base::context_type;
     /// The operation rules this machine interprets.
-    using tables_type = rules;
+    using tables_type = tables<Chart, Policy>;
 
     /// Enters the initial configuration (entry actions run) and settles eventless transitions.
-    explicit machine(Chart const& chart, context_type context = {}, Observer observer = {})
-        : chart_(chart), context_(std::move(context)), observer_(std::move(observer)) {
-        start();
+    /// (The chart parameter's type_identity leaves deduction to the guides below.)
+    explicit machine(std::type_identity_t<Chart> const& chart, context_type context = {}, Observer observer = {})
+        : base(chart, std::move(context), std::move(observer)) {
+        this->start();
     }
-
-    /// Processes e to completion: the transitions it enables, then eventless transitions and
-    /// raised events until none remain. Fails to compile if no transition handles E.
-    template <class E>
-    outcome dispatch(E const& e) {
-        constexpr int trigger = analysis::template trigger_of<E>;
-        if constexpr (trigger < 0) {
-            static_assert(error::unhandled_event<E>::value);
-            return outcome::ignored;
-        } else {
-            return process(static_cast<event_id>(trigger), &e);
-        }
-    }
-
-    /// As dispatch(e), but an event type that no transition handles is accepted and ignored.
-    template <class E>
-    outcome dispatch(E const& e, allow_unhandled_t) {
-        constexpr int trigger = analysis::template trigger_of<E>;
-        if constexpr (trigger < 0)
-            return last_ = outcome::ignored;
-        else
-            return process(static_cast<event_id>(trigger), &e);
-    }
-
-    /// One BSC execution cycle at time `now` (seed 002), as bsc::machine::step: timers are
-    /// updated and inputs latched; each component (the root and every region of an AND state),
-    /// in document order, fires at most one eventless or timeout transition, its actions' writes
-    /// visible at once to the components after it; raised events are processed; outputs are
-    /// committed. Components entered during the cycle first run in the next one. An earlier
-    /// `now` than the last cycle's is reported and ignored.
-    step_report step(duration now) {
-        step_report report;
-        if (halted()) {
-            report.status = last_ = outcome::halted;
-            return report;
-        }
-        if (now < clock_)
-            report.clock_went_backwards = true;
-        else
-            clock_ = now;
-        bsc::detail::update_timers(context_, clock_);
-        latch();
-        if constexpr (rules::has_conditions)
-            report.transitions = run_components();
-        report.status = last_ = drain_queue(report.transitions > 0);
-        commit();
-        return report;
-    }
-
-    /// The time of the last cycle (the machine's clock).
-    duration now() const { return clock_; }
-
-    /// True if state S is active.
-    template <class S>
-    bool is() const {
-        constexpr int s = analysis::template index_of_state<S>;
-        if constexpr (s < 0) {
-            static_assert(error::state_not_in_chart<S>::value);
-            return false;
-        } else {
-            return active(static_cast<state_id>(s));
-        }
-    }
-
-    /// True once a final child of the root is active: the machine processes nothing more.
-    bool halted() const {
-        if constexpr (rules::can_halt)
-            return states[active_child(rules::root)].status.kind == state_kind::final_state;
-        else
-            return false;
-    }
-
-    /// The names of the active states, outermost first, in document order.
-    auto active_states() const {
-        state_names<N> names;
-        for (state_id s = rules::root; s < N;) {
-            if (!selected(s)) {
-                s = states[s].end;
-                continue;
-            }
-            names.push_back(rules::names[s]);
-            ++s;
-        }
-        return names;
-    }
-
-    /// The outcome of the last dispatch (or of construction).
-    outcome last_outcome() const { return last_; }
-
-    context_type& context() { return context_; }
-    context_type const& context() const { return context_; }
-    configuration_type const& active_configuration() const { return config_; }
-    Observer& observer() { return observer_; }
-    Observer const& observer() const { return observer_; }
-    queue_type const& queue() const { return queue_; }
 
 private:
+    static constexpr std::size_t N = tables_type::state_count;
+    static constexpr auto const& states = tables_type::states;
+    static constexpr auto const& transitions = tables_type::transitions;
+
     // ---- the configuration ----------------------------------------------------------------
     std::uint8_t byte(std::int16_t slot) const {
-        if constexpr (rules::slots > 0)
-            return config_.active[static_cast<std::size_t>(slot)];
+        if constexpr (tables_type::slots > 0)
+            return this->config_.active[static_cast<std::size_t>(slot)];
         else
             return 0;
     }
     void set_byte(std::int16_t slot, std::uint8_t value) {
-        if constexpr (rules::slots > 0)
-            config_.active[static_cast<std::size_t>(slot)] = value;
+        if constexpr (tables_type::slots > 0)
+            this->config_.active[static_cast<std::size_t>(slot)] = value;
     }
-    // The child of an OR state (or of the top) that its byte selects.
+    // The child of a composite (or of the top) that its byte selects.
     state_id active_child(state_id s) const {
-        state_id c = states[s].descendant;
+        state_id c = states[s].first_child;
         if (states[s].slot >= 0)
-            for (std::uint8_t k = byte(states[s].slot); k > 0; --k) c = states[c].sibling;
+            for (std::uint8_t k = byte(states[s].slot); k > 0; --k) c = states[c].next_sibling;
         return c;
     }
-    // s is active if its parent is: an OR parent selects it, an AND parent or the top always does.
+    // s is active if its parent is: a composite parent selects it, a parallel parent or the
+    // top always does.
     bool selected(state_id s) const {
-        auto const slot = states[states[s].ancestor].slot;
+        auto const slot = states[states[s].parent].slot;
         return slot < 0 || byte(slot) == states[s].ordinal;
     }
     bool active(state_id s) const {
-        for (; s > rules::root; s = states[s].ancestor)
-            if (!selected(s))
-                return false;
+        for (; s > tables_type::root; s = states[s].parent)
+            if (!selected(s)) return false;
         return true;
     }
-    static bool is_leaf(state_id s) { return states[s].descendant == none; }
+    template <int S>
+    bool is_active() const {
+        return active(static_cast<state_id>(S));
+    }
+    static bool is_leaf(state_id s) { return states[s].first_child == no_state; }
 
     // ---- entry and exit -------------------------------------------------------------------
     void run_entry(state_id s) {
-        if (auto const f = states[s].entry)
-            f(chart_, context_, queue_);
+        if (auto const f = states[s].entry) f(this->chart_, this->context_, this->queue_, this->sink());
         // A state's timeouts count from its entry, at the time of the last cycle.
-        if constexpr (rules::timeout_slots > 0)
-            if (states[s].timeout_slot >= 0)
-                armed_[static_cast<std::size_t>(states[s].timeout_slot)] = clock_;
+        if constexpr (tables_type::timeout_slots > 0)
+            for (std::int16_t k = 0; k < states[s].timeout_slots; ++k)
+                this->armed_[static_cast<std::size_t>(states[s].timeout_slot + k)] = this->clock_;
         if constexpr (observed)
-            if (auto const h = hooks::on_entry[s])
-                h(observer_);
+            if (auto const h = hooks::on_entry[s]) h(this->observer_);
     }
     void run_exit(state_id s) {
-        if (auto const f = states[s].exit)
-            f(chart_, context_, queue_);
+        if (auto const f = states[s].exit) f(this->chart_, this->context_, this->queue_, this->sink());
         if constexpr (observed)
-            if (auto const h = hooks::on_exit[s])
-                h(observer_);
+            if (auto const h = hooks::on_exit[s]) h(this->observer_);
     }
 
-    // Enters s and its default completion: the initial child of an OR state, or the child its
-    // history remembers; every child of an AND state.
+    // The paper's StartStEng: the initial configuration, entered from the root down.
+    void enter_initial() { enter_default(tables_type::root); }
+
+    // Enters s and its default completion: the initial child of a composite, or the child its
+    // history remembers; every child of a parallel state.
     void enter_default(state_id s) {
         run_entry(s);
         enter_content(s);
     }
     void enter_content(state_id s) {
         auto const& row = states[s];
-        if (row.status.kind == state_kind::or_state) {
+        if (row.status.kind == state_kind::composite) {
             switch (row.status.history) {
                 case history_kind::none:
                     set_byte(row.slot, states[row.initial].ordinal);
@@ -4596,37 +5411,36 @@ private:
                 case history_kind::shallow: enter_default(active_child(s)); break;
                 case history_kind::deep: enter_restore(active_child(s)); break;
             }
-        } else if (row.status.kind == state_kind::and_state) {
-            for (state_id c = row.descendant; c != none; c = states[c].sibling) enter_default(c);
+        } else if (row.status.kind == state_kind::parallel) {
+            for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_default(c);
         }
     }
     // Deep history: re-enters s and the whole sub-configuration the bytes remember.
     void enter_restore(state_id s) {
         run_entry(s);
         auto const& row = states[s];
-        if (row.status.kind == state_kind::or_state)
+        if (row.status.kind == state_kind::composite)
             enter_restore(active_child(s));
-        else if (row.status.kind == state_kind::and_state)
-            for (state_id c = row.descendant; c != none; c = states[c].sibling) enter_restore(c);
+        else if (row.status.kind == state_kind::parallel)
+            for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_restore(c);
     }
 
     // The paper's activPath: enters, below the active state `domain`, the states on the path
-    // down to `target` (and, at every AND state on the way, its other children by default),
-    // then the target's default completion, which follows its history. Entries run outermost
-    // first, in document order.
+    // down to `target` (and, at every parallel state on the way, its other children by
+    // default), then the target's default completion, which follows its history. Entries run
+    // outermost first, in document order.
     void activate_path(state_id domain, state_id target) {
         state_id c = target;
-        while (states[c].ancestor != domain) c = states[c].ancestor;
-        if (states[domain].status.kind == state_kind::and_state) {
-            for (state_id k = states[domain].descendant; k != none; k = states[k].sibling) {
+        while (states[c].parent != domain) c = states[c].parent;
+        if (states[domain].status.kind == state_kind::parallel) {
+            for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
                 if (k == c)
                     enter_path_node(c, target);
                 else
                     enter_default(k);
             }
         } else {
-            if (states[domain].slot >= 0)
-                set_byte(states[domain].slot, states[c].ordinal);
+            if (states[domain].slot >= 0) set_byte(states[domain].slot, states[c].ordinal);
             enter_path_node(c, target);
         }
     }
@@ -4639,8 +5453,8 @@ private:
     }
 
     // The paper's deActivPath: exits every active descendant of `domain`, innermost first and
-    // in reverse document order (the reverse of their document order), running exit actions.
-    // The bytes are left as they are: they are the history of the states left.
+    // in reverse document order, running exit actions. The bytes are left as they are: they
+    // are the history of the states left.
     void deactivate_path(state_id domain) {
         std::array<state_id, N> path{};
         std::size_t n = 0;
@@ -4656,239 +5470,111 @@ private:
     }
 
     // ---- transitions ----------------------------------------------------------------------
-    struct selection {
-        std::array<std::int16_t, rules::max_active_leaves> rows{};
-        std::size_t size = 0;
-        void add(std::int16_t t) {
-            for (std::size_t i = 0; i < size; ++i)
-                if (rows[i] == t)
-                    return;
-            rows[size++] = t;
-        }
-    };
+    using selection = bsc::detail::selection<tables_type::max_active_leaves>;
 
-    bool guard_holds(std::int16_t t, void const* e) const {
+    bool guard_holds(std::int16_t t, void const* e) {
         auto const g = transitions[static_cast<std::size_t>(t)].guard;
-        return g == nullptr || g(chart_, context_, e);
+        return g == nullptr || this->test([&] { return g(this->chart_, this->context_, e); });
     }
 
     // Step 2 for one active basic state: its candidates are the transitions on the event from
     // the state itself, then from its parent, and so on up to the root (deepest first); among
     // those of one origin, declaration order. The first whose guard holds is selected.
-    bool select_from(state_id leaf, event_id event, void const* e, selection& sel) const {
-        for (state_id a = leaf; a != none; a = states[a].ancestor)
-            for (std::int16_t t = rules::first_out[a]; t >= 0; t = rules::next_out[static_cast<std::size_t>(t)])
+    bool select_from(state_id leaf, event_id event, void const* e, selection& sel) {
+        for (state_id a = leaf; a != no_state; a = states[a].parent)
+            for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)])
                 if (transitions[static_cast<std::size_t>(t)].event == event && guard_holds(t, e)) {
-                    sel.add(t);
+                    sel.add(static_cast<std::size_t>(t));
                     return true;
                 }
         return false;
     }
 
-    // Two transitions conflict when their exit sets meet: when their domains nest.
-    static bool conflict(std::int16_t t1, std::int16_t t2) {
-        auto const& a = transitions[static_cast<std::size_t>(t1)];
-        auto const& b = transitions[static_cast<std::size_t>(t2)];
-        if (a.to == none || b.to == none)
-            return false;
-        return rules::contains(a.domain, b.domain) || rules::contains(b.domain, a.domain);
-    }
-    static bool proper_ancestor(state_id a, state_id d) { return a != d && rules::contains(a, d); }
-
-    // SCXML's conflict resolution: walking the selection in order, a transition that conflicts
-    // with one kept earlier replaces it if its origin lies below the earlier one's, and is
-    // dropped otherwise.
-    static selection resolve(selection const& sel) {
-        selection kept;
-        for (std::size_t i = 0; i < sel.size; ++i) {
-            std::int16_t const t1 = sel.rows[i];
-            bool preempted = false;
-            selection survivors;
-            for (std::size_t j = 0; j < kept.size; ++j) {
-                std::int16_t const t2 = kept.rows[j];
-                if (!conflict(t1, t2))
-                    survivors.add(t2);
-                else if (proper_ancestor(transitions[static_cast<std::size_t>(t2)].from,
-                                         transitions[static_cast<std::size_t>(t1)].from))
-                    continue;  // t1 preempts t2
-                else {
-                    preempted = true;
-                    break;
-                }
-            }
-            if (!preempted) {
-                survivors.add(t1);
-                kept = survivors;
-            }
-        }
-        return kept;
-    }
-
     void run_action(std::int16_t t, void const* e) {
-        auto const& row = transitions[static_cast<std::size_t>(t)];
         if constexpr (observed)
-            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)])
-                h(observer_, e);
-        if constexpr (bsc::detail::observes_rows<Observer>)
-            observer_.on_row(rules::transition_chart_row[static_cast<std::size_t>(t)]);
-        if (row.action)
-            row.action(chart_, context_, e, queue_);
+            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_, e);
+        if (auto const action = transitions[static_cast<std::size_t>(t)].action)
+            this->run([&] { action(this->chart_, this->context_, e, this->queue_); });
+    }
+
+    template <int Trigger, class E>
+    bool microstep(E const& e) {
+        return microstep(static_cast<event_id>(Trigger), &e);
     }
 
     // One microstep for an event, the five steps of the paper's Figure 9; true if a
     // transition was selected.
     bool microstep(event_id event, void const* e) {
         // 1. Sense the event: an event no transition is triggered by changes nothing.
-        if (!rules::handles(event))
-            return false;
+        if (!tables_type::handles(event)) return false;
 
         // 2. Determine the transitions: every active basic state, in document order, selects
-        //    its first enabled candidate (the event is broadcast to all parallel regions).
+        //    its first enabled candidate (the event is broadcast to all parallel regions), and
+        //    SCXML's conflict resolution keeps some of them.
         selection sel;
         bool any = false;
-        for (state_id s = rules::root; s < N;) {
+        for (state_id s = tables_type::root; s < N;) {
             if (!selected(s)) {
                 s = states[s].end;
                 continue;
             }
-            if (is_leaf(s) && select_from(s, event, e, sel))
-                any = true;
+            if (is_leaf(s) && select_from(s, event, e, sel)) any = true;
             ++s;
         }
-        if (sel.size == 0)
-            return any;
-        selection const fired = resolve(sel);
+        if (sel.size == 0) return any;
+        constexpr auto const& chart_row = tables_type::transition_chart_row;
+        using shared_layout = typename base::layout;
+        selection const fired = bsc::detail::resolve_conflicts(
+            sel,
+            [](std::size_t later, std::size_t earlier) { return shared_layout::conflict(chart_row[later], chart_row[earlier]); },
+            [](std::size_t later, std::size_t earlier) { return shared_layout::preempts(chart_row[later], chart_row[earlier]); });
 
         // 3. Deactivate the states the transitions leave, running their exit actions.
         for (std::size_t i = fired.size; i-- > 0;) {
-            auto const& row = transitions[static_cast<std::size_t>(fired.rows[i])];
-            if (row.to != none)
-                deactivate_path(row.domain);
+            auto const& row = transitions[fired.rows[i]];
+            if (row.to != no_state) deactivate_path(row.domain);
         }
         // 4. Perform the transition actions, in selection order.
-        for (std::size_t i = 0; i < fired.size; ++i) run_action(fired.rows[i], e);
+        for (std::size_t i = 0; i < fired.size; ++i) run_action(static_cast<std::int16_t>(fired.rows[i]), e);
         // 5. Activate the states they enter, running entry actions, defaults and history.
         for (std::size_t i = 0; i < fired.size; ++i) {
-            auto const& row = transitions[static_cast<std::size_t>(fired.rows[i])];
-            if (row.to != none)
-                activate_path(row.domain, row.to);
+            auto const& row = transitions[fired.rows[i]];
+            if (row.to != no_state) activate_path(row.domain, row.to);
         }
         return any;
     }
 
-    // ---- running --------------------------------------------------------------------------
-    // The paper's StartStEng: the initial configuration, entered from the root down.
-    void start() {
-        if constexpr (rules::slots > 0)
-            config_.active = rules::initial_bytes;
-        latch();
-        enter_default(rules::root);
-        last_ = finish(false);
-        commit();
-    }
-
-    // The paper's stEng: one event from the environment, processed to completion.
-    outcome process(event_id event, void const* e) {
-        if (halted())
-            return last_ = outcome::halted;
-        latch();
-        last_ = finish(microstep(event, e));
-        commit();
-        return last_;
-    }
-
-    // Settles the machine after a microstep: eventless transitions until none is enabled,
-    // then the raised events one by one, each followed by its eventless transitions. Under a
-    // scan policy eventless transitions are left to step(), and only raised events are processed.
-    outcome finish(bool consumed) {
-        if constexpr (!Policy::settle_eventless)
-            return drain_queue(consumed);
-        std::size_t internal_events = 0;
-        for (;;) {
-            if constexpr (rules::has_eventless) {
-                // Up to max_eventless_steps transitions settle; one more means the chart cycles.
-                for (std::size_t steps = 0; !halted() && microstep(eventless_id, &no_event);)
-                    if (++steps > Policy::max_eventless_steps)
-                        return abandon();
-            }
-            if (queue_.empty() || halted())
-                break;
-            if (++internal_events > Policy::max_internal_events)
-                return abandon();
-            queue_.pop([&](auto const& ev) {
-                microstep(static_cast<event_id>(analysis::template trigger_of<std::decay_t<decltype(ev)>>), &ev);
-            });
-        }
-        if (queue_.overflowed()) {
-            queue_.clear_overflow();
-            return outcome::queue_overflow;
-        }
-        return consumed ? outcome::consumed : outcome::ignored;
-    }
-
-    // The raised events, each one microstep and no eventless settling: in a cycle, so that no
-    // component fires twice.
-    outcome drain_queue(bool consumed) {
-        for (std::size_t n = 0; !queue_.empty() && !halted();) {
-            if (++n > Policy::max_internal_events)
-                return abandon();
-            queue_.pop([&](auto const& ev) {
-                microstep(static_cast<event_id>(analysis::template trigger_of<std::decay_t<decltype(ev)>>), &ev);
-            });
-        }
-        if (queue_.overflowed()) {
-            queue_.clear_overflow();
-            return outcome::queue_overflow;
-        }
-        return consumed ? outcome::consumed : outcome::ignored;
-    }
-
-    outcome abandon() {
-        queue_.clear();
-        queue_.clear_overflow();
-        return outcome::livelock;
-    }
-
     // ---- the BSC cycle ----------------------------------------------------------------------
-    // The components' turns: a component takes its turn if it was active when the cycle began
-    // and still is (an earlier component may have left it); one entered during the cycle waits
-    // for the next. Returns the number of transitions fired.
-    int run_components() {
-        constexpr auto const& components = rules::components;
-        std::array<bool, components.size()> active_at_start{};
-        for (std::size_t i = 0; i < components.size(); ++i) active_at_start[i] = active(components[i]);
-        int fired = 0;
-        for (std::size_t i = 0; i < components.size(); ++i)
-            if (active_at_start[i] && active(components[i]) && component_step(components[i]))
-                ++fired;
-        return fired;
+    template <int Component>
+    bool component_step() {
+        return run_component(static_cast<state_id>(Component));
     }
 
-    // One component's turn: from its active frontier (the active basic state below it, or an
-    // AND state whose regions are components of their own) up to the component itself, deepest
-    // origin first and table order among one origin's, the first condition-driven transition
-    // whose condition holds fires.
-    bool component_step(state_id component) {
+    // One component's turn: from its active frontier (the active basic state below it, or a
+    // parallel state whose regions are components of their own) up to the component itself,
+    // deepest origin first and table order among one origin's, the first condition-driven
+    // transition whose condition holds fires.
+    bool run_component(state_id component) {
         state_id frontier = component;
-        while (states[frontier].status.kind == state_kind::or_state) frontier = active_child(frontier);
-        for (state_id a = frontier;; a = states[a].ancestor) {
-            for (std::int16_t t = rules::first_out[a]; t >= 0; t = rules::next_out[static_cast<std::size_t>(t)])
+        while (states[frontier].status.kind == state_kind::composite) frontier = active_child(frontier);
+        for (state_id a = frontier;; a = states[a].parent) {
+            for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)])
                 if (is_condition(transitions[static_cast<std::size_t>(t)].event) && condition_holds(t)) {
                     fire_condition(t);
                     return true;
                 }
-            if (a == component)
-                return false;
+            if (a == component) return false;
         }
     }
 
     // A timeout's condition: its origin has been active for its delay (the origin is active: it
     // is on the component's active path). Then the guard, which receives bsc::eventless.
-    bool condition_holds(std::int16_t t) const {
+    bool condition_holds(std::int16_t t) {
         auto const& row = transitions[static_cast<std::size_t>(t)];
-        if constexpr (rules::timeout_slots > 0)
+        if constexpr (tables_type::timeout_slots > 0)
             if (row.event == timeout_id &&
-                clock_ - armed_[static_cast<std::size_t>(states[row.from].timeout_slot)] < row.delay(chart_))
+                !bsc::detail::has_elapsed(this->armed_[static_cast<std::size_t>(row.timeout_slot)], this->clock_,
+                                          row.delay(this->chart_)))
                 return false;
         return guard_holds(t, &no_event);
     }
@@ -4896,37 +5582,22 @@ private:
     // Steps 3 to 5 of a microstep for one transition: a component's transition fires alone.
     void fire_condition(std::int16_t t) {
         auto const& row = transitions[static_cast<std::size_t>(t)];
-        if (row.to != none)
-            deactivate_path(row.domain);
+        if (row.to != no_state) deactivate_path(row.domain);
         run_action(t, &no_event);
-        if (row.to != none)
-            activate_path(row.domain, row.to);
+        if (row.to != no_state) activate_path(row.domain, row.to);
+        // An internal timeout, which leaves its state active, counts again from now.
+        if constexpr (tables_type::timeout_slots > 0)
+            if (row.to == no_state && row.timeout_slot >= 0)
+                this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->clock_;
     }
-
-    // Input and output channels of the context, latched and committed around each dispatch
-    // as bsc::machine does.
-    void latch() { bsc::detail::latch_inputs(context_); }
-    void commit() { bsc::detail::commit_outputs(context_); }
 
     // The event that eventless and timeout transitions receive.
     static constexpr bsc::eventless no_event{};
-
-    [[no_unique_address]] Chart chart_;
-    context_type context_;
-    configuration_type config_{};
-    queue_type queue_{};
-    duration clock_{};
-    std::array<duration, rules::timeout_slots> armed_{};  // entry times of the states with timeouts
-    outcome last_ = outcome::ignored;
-    [[no_unique_address]] Observer observer_;
 };
 
-template <class C, class Ctx>
-machine(C const&, Ctx) -> machine<C>;
-template <class C>
-machine(C const&) -> machine<C>;
-template <class C, class Ctx, class O>
-machine(C const&, Ctx, O) -> machine<C, default_policy, O>;
+// As for bsc::machine: `machine{chart, ...}` and `machine<decltype(chart)>` name the same type.
+template <class C, class... A>
+machine(C const&, A...) -> machine<C const, default_policy, bsc::detail::observer_argument_t<A...>>;
 
 }  // namespace bsc::table
 // end include/bsc/table/engine.hpp

@@ -51,7 +51,7 @@
 #include <boost/hana/basic_tuple.hpp>
 
 
-namespace bsc::detail::exporting {
+namespace bsc::detail {
 
 // ---- Labels of guards and actions -------------------------------------------------------------
 
@@ -206,19 +206,19 @@ struct state_info {
     std::string label;  ///< the state's name: bsc::name_of<S>, with scopes where two states share it
     kind node_kind = kind::basic;
     history hist = history::none;
-    int parent = -1;  ///< index in chart_model::states; -1 for the root
+    int parent = -1;  ///< index in diagram::states; -1 for the root
     std::vector<int> children;
     int initial = -1;  ///< the initial child of a composite state
     std::vector<std::string> entry;  ///< labels of the entry actions, in declaration order
     std::vector<std::string> exit;   ///< labels of the exit actions
-    std::vector<int> internal;       ///< internal transitions (indices in chart_model::transitions)
+    std::vector<int> internal;       ///< internal transitions (indices in diagram::transitions)
 
     bool is_leaf() const { return node_kind == kind::basic || node_kind == kind::final_state; }
 };
 
 struct transition_info {
     int row = 0;     ///< position of the row in make_chart
-    int source = 0;  ///< index in chart_model::states
+    int source = 0;  ///< index in diagram::states
     int target = -1;  ///< -1: an internal transition (no target)
     trigger_kind trigger = trigger_kind::event;
     std::string event;  ///< the event's name, "after(3s)" for a timeout, empty if eventless
@@ -235,7 +235,7 @@ struct transition_info {
     }
 };
 
-struct chart_model {
+struct diagram {
     std::vector<state_info> states;  ///< document order; states[0] is the root
     std::vector<transition_info> transitions;  ///< declaration order, internal ones included
 
@@ -303,7 +303,7 @@ inline std::vector<std::string> unique_identifiers(std::vector<std::string> cons
 }
 
 template <class Row>
-void add_row(chart_model& m, Row const& row, int index, int source) {
+void add_row(diagram& m, Row const& row, int index, int source) {
     if constexpr (is_entry_row<Row>) {
         m.states[static_cast<std::size_t>(source)].entry.push_back(action_label(row.action));
     } else if constexpr (is_exit_row<Row>) {
@@ -332,37 +332,37 @@ void add_row(chart_model& m, Row const& row, int index, int source) {
 
 /// The model of a chart (a bsc::make_chart result).
 template <class Chart>
-chart_model model_of(Chart const& chart) {
-    using an = analysis<std::remove_cv_t<Chart>>;
-    constexpr auto const& topo = an::topo;
-    chart_model m;
-    auto const names = state_names<typename an::tags>::unqualified();
-    auto const qualified = state_names<typename an::tags>::qualified();
+diagram model_of(Chart const& chart) {
+    using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
+    constexpr auto const& tree = model::tree;
+    diagram m;
+    auto const names = state_names<typename model::tags>::unqualified();
+    auto const qualified = state_names<typename model::tags>::qualified();
     // Index 0 of the analysis is the implicit top above the root; the model starts at the root.
     std::vector<std::string_view> const own(names.begin() + 1, names.end());
     std::vector<std::string_view> const own_qualified(qualified.begin() + 1, qualified.end());
     auto const labels = unique_names(own, own_qualified);
     auto const ids = unique_identifiers(labels);
-    for (int s = 1; s < an::N; ++s) {
+    for (int s = 1; s < model::N; ++s) {
         auto const i = static_cast<std::size_t>(s);
         state_info info;
         info.id = ids[i - 1];
         info.label = labels[i - 1];
-        info.node_kind = topo.kinds[i];
-        info.hist = topo.hist[i];
-        info.parent = topo.parent[i] - 1;
-        info.initial = topo.initial[i] >= 0 ? topo.initial[i] - 1 : -1;
-        for (int c = topo.first_child[i]; c >= 0; c = topo.next_sibling[static_cast<std::size_t>(c)])
+        info.node_kind = tree.kinds[i];
+        info.hist = tree.hist[i];
+        info.parent = tree.parent[i] - 1;
+        info.initial = tree.initial[i] >= 0 ? tree.initial[i] - 1 : -1;
+        for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
             info.children.push_back(c - 1);
         m.states.push_back(std::move(info));
     }
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (add_row(m, boost::hana::at_c<I>(chart.rows), static_cast<int>(I), an::table.source[I] - 1), ...);
-    }(std::make_index_sequence<static_cast<std::size_t>(an::R)>{});
+        (add_row(m, boost::hana::at_c<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), ...);
+    }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
     for (std::size_t k = 0; k < m.transitions.size(); ++k) {
         auto& t = m.transitions[k];
-        t.target = an::table.target[static_cast<std::size_t>(t.row)] >= 0
-                       ? an::table.target[static_cast<std::size_t>(t.row)] - 1
+        t.target = model::rows.target[static_cast<std::size_t>(t.row)] >= 0
+                       ? model::rows.target[static_cast<std::size_t>(t.row)] - 1
                        : -1;
         if (t.target < 0) m.states[static_cast<std::size_t>(t.source)].internal.push_back(static_cast<int>(k));
     }
@@ -402,7 +402,7 @@ inline std::string history_suffix(history h) {
 
 /// Lines that describe a state besides its name: "entry / a", "exit / b", and its internal
 /// transitions "event [guard] / action".
-inline std::vector<std::string> activity_lines(chart_model const& m, int s) {
+inline std::vector<std::string> activity_lines(diagram const& m, int s) {
     std::vector<std::string> lines;
     for (auto const& a : m[s].entry) lines.push_back("entry / " + a);
     for (auto const& a : m[s].exit) lines.push_back("exit / " + a);
@@ -410,10 +410,10 @@ inline std::vector<std::string> activity_lines(chart_model const& m, int s) {
     return lines;
 }
 
-}  // namespace bsc::detail::exporting
+}  // namespace bsc::detail
 // end include/bsc/export/model.hpp
 
-namespace bsc::detail::exporting {
+namespace bsc::detail {
 
 /// A double-quoted DOT string.
 inline std::string dot_quoted(std::string_view text) {
@@ -428,20 +428,20 @@ inline std::string dot_quoted(std::string_view text) {
     return out + "\"";
 }
 
-inline std::string dot_cluster(chart_model const& m, int s) { return dot_quoted("cluster_" + m[s].id); }
-inline std::string dot_anchor(chart_model const& m, int s) { return dot_quoted(m[s].id + ":anchor"); }
+inline std::string dot_cluster(diagram const& m, int s) { return dot_quoted("cluster_" + m[s].id); }
+inline std::string dot_anchor(diagram const& m, int s) { return dot_quoted(m[s].id + ":anchor"); }
 /// The node an edge to or from state s attaches to.
-inline std::string dot_node(chart_model const& m, int s) {
+inline std::string dot_node(diagram const& m, int s) {
     return m[s].is_leaf() ? dot_quoted(m[s].id) : dot_anchor(m, s);
 }
 
-inline std::string dot_label(chart_model const& m, int s) {
+inline std::string dot_label(diagram const& m, int s) {
     std::string label = m[s].label;
     for (auto const& line : activity_lines(m, s)) label += "\n" + line;
     return label;
 }
 
-inline void dot_state(chart_model const& m, int s, int level, bool region, std::string& out) {
+inline void dot_state(diagram const& m, int s, int level, bool region, std::string& out) {
     auto const& st = m[s];
     auto const pad = indent(level);
     if (st.is_leaf()) {
@@ -475,7 +475,7 @@ inline void dot_state(chart_model const& m, int s, int level, bool region, std::
     out += pad + "}\n";
 }
 
-inline std::string to_dot(chart_model const& m) {
+inline std::string to_dot(diagram const& m) {
     std::string out = "digraph " + dot_quoted(m[0].label) + " {\n";
     out += "    compound=true;\n";
     out += "    fontname=\"Helvetica\"; fontsize=11;\n";
@@ -501,14 +501,14 @@ inline std::string to_dot(chart_model const& m) {
     return out;
 }
 
-}  // namespace bsc::detail::exporting
+}  // namespace bsc::detail
 
 namespace bsc {
 
 /// The chart as a Graphviz digraph with clusters for composite and parallel states.
 template <class Chart>
 std::string to_dot(Chart const& chart) {
-    return detail::exporting::to_dot(detail::exporting::model_of(chart));
+    return detail::to_dot(detail::model_of(chart));
 }
 
 }  // namespace bsc
@@ -529,7 +529,7 @@ std::string to_dot(Chart const& chart) {
 #include <string_view>
 
 
-namespace bsc::detail::exporting {
+namespace bsc::detail {
 
 /// Text inside a quoted Mermaid label or after `:`; `;` would end the statement and `<`
 /// would start HTML.
@@ -549,7 +549,7 @@ inline std::string mermaid_text(std::string_view text) {
     return out;
 }
 
-inline void mermaid_state(chart_model const& m, int s, int level, std::string& out) {
+inline void mermaid_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const activities = activity_lines(m, s);
     if (st.is_leaf()) {
@@ -575,7 +575,7 @@ inline void mermaid_state(chart_model const& m, int s, int level, std::string& o
     out += indent(level) + "}\n";
 }
 
-inline std::string to_mermaid(chart_model const& m) {
+inline std::string to_mermaid(diagram const& m) {
     std::string out = "stateDiagram-v2\n";
     out += indent(1) + "[*] --> " + m[0].id + "\n";
     mermaid_state(m, 0, 1, out);
@@ -589,14 +589,14 @@ inline std::string to_mermaid(chart_model const& m) {
     return out;
 }
 
-}  // namespace bsc::detail::exporting
+}  // namespace bsc::detail
 
 namespace bsc {
 
 /// The chart as a Mermaid state diagram (`stateDiagram-v2`).
 template <class Chart>
 std::string to_mermaid(Chart const& chart) {
-    return detail::exporting::to_mermaid(detail::exporting::model_of(chart));
+    return detail::to_mermaid(detail::model_of(chart));
 }
 
 }  // namespace bsc
@@ -615,7 +615,7 @@ std::string to_mermaid(Chart const& chart) {
 #include <string_view>
 
 
-namespace bsc::detail::exporting {
+namespace bsc::detail {
 
 /// Text of a quoted PlantUML name or of a label after `:`.
 inline std::string plantuml_text(std::string_view text) {
@@ -631,7 +631,7 @@ inline std::string plantuml_text(std::string_view text) {
     return out;
 }
 
-inline void plantuml_state(chart_model const& m, int s, int level, std::string& out) {
+inline void plantuml_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const pad = indent(level);
     out += pad + "state \"" + plantuml_text(st.label + history_suffix(st.hist)) + "\" as " + st.id;
@@ -652,7 +652,7 @@ inline void plantuml_state(chart_model const& m, int s, int level, std::string& 
     if (st.node_kind == kind::final_state) out += pad + st.id + " --> [*]\n";
 }
 
-inline std::string to_plantuml(chart_model const& m) {
+inline std::string to_plantuml(diagram const& m) {
     std::string out = "@startuml\nhide empty description\n";
     out += "[*] --> " + m[0].id + "\n";
     plantuml_state(m, 0, 0, out);
@@ -666,14 +666,14 @@ inline std::string to_plantuml(chart_model const& m) {
     return out + "@enduml\n";
 }
 
-}  // namespace bsc::detail::exporting
+}  // namespace bsc::detail
 
 namespace bsc {
 
 /// The chart as a PlantUML state diagram.
 template <class Chart>
 std::string to_plantuml(Chart const& chart) {
-    return detail::exporting::to_plantuml(detail::exporting::model_of(chart));
+    return detail::to_plantuml(detail::model_of(chart));
 }
 
 }  // namespace bsc
@@ -701,7 +701,7 @@ std::string to_plantuml(Chart const& chart) {
 #include <string_view>
 
 
-namespace bsc::detail::exporting {
+namespace bsc::detail {
 
 /// Text inside an XML comment, which may not contain "--".
 inline std::string scxml_comment(std::string_view text) {
@@ -713,7 +713,7 @@ inline std::string scxml_script(std::string_view action) {
 }
 
 /// The id of the <history> pseudo-state of a composite: "<id>_history", unique among the states.
-inline std::string history_id(chart_model const& m, int s) {
+inline std::string history_id(diagram const& m, int s) {
     std::string id = m[s].id + "_history";
     for (bool clash = true; clash;) {
         clash = false;
@@ -726,7 +726,7 @@ inline std::string history_id(chart_model const& m, int s) {
     return id;
 }
 
-inline void scxml_transition(chart_model const& m, transition_info const& t, int level, std::string& out) {
+inline void scxml_transition(diagram const& m, transition_info const& t, int level, std::string& out) {
     auto const pad = indent(level);
     if (t.trigger == trigger_kind::timeout)
         out += pad + "<!-- " + t.event + ": a timeout, enabled once " + scxml_comment(m[t.source].label) +
@@ -747,7 +747,7 @@ inline void scxml_transition(chart_model const& m, transition_info const& t, int
         out += ">\n" + pad + "    " + scxml_script(t.action) + "\n" + pad + "</transition>\n";
 }
 
-inline void scxml_state(chart_model const& m, int s, int level, std::string& out) {
+inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const pad = indent(level);
     bool has_transitions = false;
@@ -780,7 +780,7 @@ inline void scxml_state(chart_model const& m, int s, int level, std::string& out
     out += pad + "</" + element + ">\n";
 }
 
-inline std::string to_scxml(chart_model const& m) {
+inline std::string to_scxml(diagram const& m) {
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     out += "<!-- The chart " + scxml_comment(m[0].label) +
            ": cond names the guard, the <script> comments name the actions. -->\n";
@@ -790,14 +790,14 @@ inline std::string to_scxml(chart_model const& m) {
     return out + "</scxml>\n";
 }
 
-}  // namespace bsc::detail::exporting
+}  // namespace bsc::detail
 
 namespace bsc {
 
 /// The chart as a W3C SCXML document.
 template <class Chart>
 std::string to_scxml(Chart const& chart) {
-    return detail::exporting::to_scxml(detail::exporting::model_of(chart));
+    return detail::to_scxml(detail::model_of(chart));
 }
 
 }  // namespace bsc

@@ -20,22 +20,12 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
 
-
-namespace bsc::verify::detail {
-
-using bsc::detail::machine_access;
-using bsc::detail::timer_access;
-
-template <class T>
-inline constexpr bool is_machine = false;
-template <class C, class P, class O>
-inline constexpr bool is_machine<bsc::machine<C, P, O>> = true;
-
-}  // namespace bsc::verify::detail
 
 namespace bsc::verify {
 /// Specialize as true for a context member type that does not influence behaviour (a log, a
@@ -45,23 +35,41 @@ template <class T>
 inline constexpr bool unexplored = false;
 }  // namespace bsc::verify
 
-namespace bsc::verify::detail {
+namespace bsc::detail {
 
 template <class T>
 constexpr bool is_aggregate_class() {
     return std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_base_of_v<bsc::detail::channel_base, T>;
 }
 
+// Periods since a timer or timeout started are kept in this many bits. The count is capped
+// one period past the longest delay that can still matter, so it never wraps: a model whose
+// delays need more periods than fit is refused (time_frame::cycles throws), never explored
+// with a counter that would silently restart at zero.
+inline constexpr unsigned cycle_bits = 32;
+inline constexpr std::uint64_t max_cycles = (std::uint64_t{1} << cycle_bits) - 1;
+
 // Time as the codec sees it: the clock of the enclosing machine and the cycle period
 // (zero for models that never step, where time does not pass).
 struct time_frame {
     duration clock{};
     duration period{};
-    constexpr std::uint16_t cycles(duration d, duration cap) const {
-        if (period <= duration::zero() || d <= duration::zero()) return 0;
-        auto const capped = std::min(d, cap + period);
-        return static_cast<std::uint16_t>(capped / period);
+    // The whole periods in `since .. clock`, capped at cap + one period.
+    std::uint64_t cycles(duration since, duration cap) const {
+        if (period <= duration::zero()) return 0;
+        auto const d = elapsed(since, clock);
+        if (d <= duration::zero()) return 0;
+        auto const limit = static_cast<std::uint64_t>(cap / period) + 1;
+        if (limit > max_cycles)
+            throw std::length_error("bsc::verify: a delay of " + std::to_string(cap.count()) + " ns is " +
+                                    std::to_string(limit - 1) + " periods of " + std::to_string(period.count()) +
+                                    " ns, more than the explorer counts (" + std::to_string(max_cycles - 1) +
+                                    "); explore with a longer period");
+        auto const n = static_cast<std::uint64_t>(d / period);
+        return n < limit ? n : limit;
     }
+    // The time `cycles` periods before the clock.
+    duration before(std::uint64_t cycles) const { return clock - static_cast<duration::rep>(cycles) * period; }
 };
 
 // Keys are bit strings: a flag takes one bit, a composite's byte only the bits its number of
@@ -133,10 +141,10 @@ constexpr unsigned bits_for(int values) {
 // The bits of each composite's byte, by slot: enough for its number of children.
 template <class M>
 constexpr auto slot_bits() {
-    using an = bsc::detail::analysis<typename M::chart_type>;
-    std::array<unsigned, static_cast<std::size_t>(an::topo.slots)> bits{};
-    for (std::size_t s = 0; s < static_cast<std::size_t>(an::N); ++s)
-        if (an::topo.slot[s] >= 0) bits[static_cast<std::size_t>(an::topo.slot[s])] = bits_for(an::topo.child_count[s]);
+    using model = bsc::detail::chart_model<typename M::chart_type>;
+    std::array<unsigned, static_cast<std::size_t>(model::tree.slots)> bits{};
+    for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s)
+        if (model::tree.slot[s] >= 0) bits[static_cast<std::size_t>(model::tree.slot[s])] = bits_for(model::tree.child_count[s]);
     return bits;
 }
 
@@ -153,17 +161,16 @@ struct fields_bits<std::tuple<F&...>> {
     static constexpr std::size_t value = (std::size_t{0} + ... + encoded_bits<std::remove_cv_t<F>>());
 };
 
-inline constexpr unsigned cycle_bits = 16;  // periods since a timer or timeout started, capped
 
 template <class T>
 constexpr std::size_t encoded_bits() {
-    if constexpr (unexplored<T>) {
+    if constexpr (verify::unexplored<T>) {
         return 0;
     } else if constexpr (is_machine<T>) {
         std::size_t config = 0;
         for (unsigned b : slot_bits<T>()) config += b;
         constexpr std::size_t timeouts =
-            std::tuple_size_v<std::remove_reference_t<decltype(machine_access::armed(std::declval<T&>()))>>;
+            std::tuple_size_v<std::remove_reference_t<decltype(access::armed(std::declval<T&>()))>>;
         return config + encoded_bits<typename T::context_type>() + cycle_bits * timeouts;
     } else if constexpr (std::is_same_v<T, timer>) {
         return 2 + 1 + cycle_bits;  // phase, expired, periods since timing began
@@ -211,26 +218,26 @@ V decode_value(bit_reader& in) {
 
 template <class T>
 void encode(T const& value, bit_writer& out, time_frame frame) {
-    if constexpr (unexplored<T>) {
+    if constexpr (verify::unexplored<T>) {
         return;
     } else if constexpr (is_machine<T>) {
         auto& m = const_cast<T&>(value);
-        auto const cfg = machine_access::canonical_configuration(m);
+        auto const cfg = access::canonical_configuration(m);
         constexpr auto bits = slot_bits<T>();
         for (std::size_t k = 0; k < bits.size(); ++k) out.put(cfg.active[k], bits[k]);
-        time_frame const own{machine_access::clock(m), frame.period};
+        time_frame const own{access::clock(m), frame.period};
         encode(m.context(), out, own);
-        auto const& armed = machine_access::armed(m);
+        auto const& armed = access::armed(m);
         for (std::size_t i = 0; i < armed.size(); ++i)
-            out.put(machine_access::timeout_armed(m, i)
-                        ? own.cycles(own.clock - armed[i], machine_access::longest_timeout(m))
+            out.put(access::timeout_armed(m, i)
+                        ? own.cycles(armed[i], access::longest_timeout(m))
                         : 0,
                     cycle_bits);
     } else if constexpr (std::is_same_v<T, timer>) {
-        out.put(timer_access::phase(value), 2);
+        out.put(access::timer_phase(value), 2);
         out.put(value.expired() ? 1u : 0u, 1);
-        bool const timing = timer_access::phase(value) == 2;  // running, expired or not
-        out.put(timing ? frame.cycles(frame.clock - timer_access::started(value), value.limit()) : 0, cycle_bits);
+        bool const timing = access::timer_phase(value) == 2;  // running, expired or not
+        out.put(timing ? frame.cycles(access::timer_started(value), value.limit()) : 0, cycle_bits);
     } else if constexpr (is_channel<T>) {
         encode(value.pending(), out, frame);  // a channel of an aggregate: member by member too
         encode(value.get(), out, frame);
@@ -243,21 +250,21 @@ void encode(T const& value, bit_writer& out, time_frame frame) {
 
 template <class T>
 void decode(T& value, bit_reader& in, time_frame frame) {
-    if constexpr (unexplored<T>) {
+    if constexpr (verify::unexplored<T>) {
         return;
     } else if constexpr (is_machine<T>) {
-        auto& cfg = machine_access::configuration(value);
+        auto& cfg = access::configuration(value);
         constexpr auto bits = slot_bits<T>();
         for (std::size_t k = 0; k < bits.size(); ++k) cfg.active[k] = static_cast<std::uint8_t>(in.get(bits[k]));
-        machine_access::clock(value) = frame.clock;
+        access::set_clock(value, frame.clock);
         decode(value.context(), in, frame);
-        for (auto& armed : machine_access::armed(value))
-            armed = frame.clock - static_cast<int>(in.get(cycle_bits)) * frame.period;
+        for (auto& armed : access::armed(value))
+            armed = frame.before(in.get(cycle_bits));
     } else if constexpr (std::is_same_v<T, timer>) {
         auto const phase = static_cast<std::uint8_t>(in.get(2));
         bool const expired = in.get(1) != 0;
-        auto const elapsed = static_cast<int>(in.get(cycle_bits)) * frame.period;
-        timer_access::set(value, phase, expired, frame.clock - elapsed, elapsed);
+        auto const started = frame.before(in.get(cycle_bits));
+        access::set_timer(value, phase, expired, started, frame.clock - started);
     } else if constexpr (is_channel<T>) {
         using V = channel_value<T>;
         V pending = value.pending();
@@ -265,8 +272,8 @@ void decode(T& value, bit_reader& in, time_frame frame) {
         decode(pending, in, frame);
         decode(current, in, frame);
         value.set(current);  // both values, through the channel's own cycle boundary
-        value.latch();
-        value.commit();
+        access::latch(value);
+        access::commit(value);
         value.set(pending);
     } else if constexpr (is_aggregate_class<T>()) {
         bsc::detail::for_each_field(value, [&](auto& field) { decode(field, in, frame); });
@@ -275,7 +282,7 @@ void decode(T& value, bit_reader& in, time_frame frame) {
     }
 }
 
-}  // namespace bsc::verify::detail
+}  // namespace bsc::detail
 // end include/bsc/verify/codec.hpp
 // begin include/bsc/verify/coverage.hpp
 // Coverage of a chart by the explored state space: the states never active in any reachable
@@ -304,6 +311,7 @@ void decode(T& value, bit_reader& in, time_frame frame) {
 //   std::string label(std::uint16_t) const;              // for traces
 //   std::string describe(state const&) const;            // for traces: the configuration by name
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -345,7 +353,7 @@ public:
         if (ran_) return stats_;
         ran_ = true;
         auto const start = std::chrono::steady_clock::now();
-        table_.assign(1u << 16, none);
+        table_.assign(1u << 10, none);  // doubled as states come
         std::vector<std::byte> scratch(key_size);
         state const init = model_.initial();
         model_.encode(init, scratch.data());
@@ -359,12 +367,15 @@ public:
             if (!within_bounds()) break;
             edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
             state const s = model_.decode(key(i));
+            std::size_t successors = 0;
             model_.successors(s, [&](std::uint16_t label, state const& next) {
                 model_.encode(next, scratch.data());
                 std::uint32_t const j = insert(scratch.data(), static_cast<std::uint32_t>(i), label);
                 edge_to_.push_back(j);
                 edge_label_.push_back(label);
+                ++successors;
             });
+            most_successors_ = std::max(most_successors_, successors);
         }
         stats_.complete = stats_.stopped_by.empty();
         while (edge_begin_.size() < count()) edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
@@ -434,12 +445,27 @@ private:
                edge_label_.capacity() * 2;
     }
 
+    // What the containers may hold at the peak of the next state's expansion, which adds at
+    // most most_successors_ states and edges: a vector that must grow holds its old and its
+    // new buffer at once, the hash table its old and its doubled array.
+    std::size_t peak_of_next_expansion() const {
+        std::size_t const more = std::max<std::size_t>(most_successors_, 1);
+        auto growth = [&](auto const& v, std::size_t added) -> std::size_t {
+            if (v.size() + added <= v.capacity()) return 0;
+            return std::max(v.capacity() * 2, v.size() + added) * sizeof(v[0]);
+        };
+        std::size_t peak = memory() + growth(keys_, more * key_size) + growth(parent_, more) + growth(via_, more) +
+                           growth(edge_begin_, 1) + growth(edge_to_, more) + growth(edge_label_, more);
+        if ((count() + more) * 2 > table_.size()) peak += table_.size() * 2 * sizeof(std::uint32_t);
+        return peak;
+    }
+
     bool within_bounds() {
         if (count() > bounds_.max_states) {
             stats_.stopped_by = "max_states (" + std::to_string(bounds_.max_states) + ")";
             return false;
         }
-        if (memory() > bounds_.max_memory_bytes) {
+        if (peak_of_next_expansion() > bounds_.max_memory_bytes) {
             stats_.stopped_by = "max_memory_bytes (" + std::to_string(bounds_.max_memory_bytes) + ")";
             return false;
         }
@@ -457,6 +483,7 @@ private:
     std::vector<std::uint32_t> edge_begin_;
     std::vector<std::uint32_t> edge_to_;
     std::vector<std::uint16_t> edge_label_;
+    std::size_t most_successors_ = 0;  // of any state expanded so far
 };
 
 }  // namespace bsc::verify
@@ -486,7 +513,9 @@ struct coverage_report {
     }
 };
 
-namespace detail {
+}  // namespace bsc::verify
+
+namespace bsc::detail {
 template <class Row>
 std::string trigger_name() {
     if constexpr (bsc::detail::is_timeout_row<Row>)
@@ -496,18 +525,20 @@ std::string trigger_name() {
     else
         return std::string(name_of<typename bsc::detail::trigger_event<Row>::type>);
 }
-}  // namespace detail
+}  // namespace bsc::detail
+
+namespace bsc::verify {
 
 /// "Source + event -> Target" (or "Source + event (internal)") for each transition row of a
 /// chart, by position in make_chart; empty for entry and exit rows.
 template <class Chart>
 std::vector<std::string> row_names() {
-    using an = bsc::detail::analysis<std::remove_cv_t<Chart>>;
-    std::vector<std::string> names(static_cast<std::size_t>(an::R));
+    using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
+    std::vector<std::string> names(static_cast<std::size_t>(model::R));
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         (
             [&] {
-                using R = typename an::template row_at<static_cast<int>(I)>;
+                using R = typename model::template row_at<static_cast<int>(I)>;
                 if constexpr (bsc::detail::is_transition_row<R>) {
                     std::string n = std::string(name_of<typename R::source>) + " + " + detail::trigger_name<R>();
                     if constexpr (std::is_same_v<typename R::target, bsc::detail::no_target>)
@@ -518,7 +549,7 @@ std::vector<std::string> row_names() {
                 }
             }(),
             ...);
-    }(std::make_index_sequence<static_cast<std::size_t>(an::R)>{});
+    }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
     return names;
 }
 
@@ -529,17 +560,17 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired, Ge
     ex.run();
     using machine_type = std::remove_cvref_t<decltype(get(ex.at(0)))>;
     using chart = typename machine_type::chart_type;
-    using an = bsc::detail::analysis<chart>;
-    std::vector<bool> seen(static_cast<std::size_t>(an::N), false);
+    using model = bsc::detail::chart_model<chart>;
+    std::vector<bool> seen(static_cast<std::size_t>(model::N), false);
     for (std::size_t i = 0; i < ex.count(); ++i) {
         auto const s = ex.at(i);
-        auto const active = bsc::detail::machine_access::active_flags(get(s));
+        auto const active = bsc::detail::access::active_flags(get(s));
         for (std::size_t k = 0; k < active.size(); ++k) seen[k] = seen[k] || active[k];
     }
     coverage_report report;
     constexpr auto names = []<class... Tags>(bsc::detail::type_list<Tags...>) {
         return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename an::tags{});
+    }(typename model::tags{});
     for (std::size_t k = 1; k < seen.size(); ++k)
         if (!seen[k]) report.dead_states.emplace_back(names[k]);
     auto const rows = row_names<chart>();
@@ -562,7 +593,8 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired) {
 //  - cycle_model: a machine stepped with a fixed period, its inputs drawn each cycle from
 //    a finite set of choices the user declares;
 //  - system_model: any aggregate of machines and plant models, stepped by a user function
-//    with a finite set of choices per cycle (the closed loop of seeds 002 and 003).
+//    with a finite set of choices per cycle (the closed loops of the [BSC] and [COMDES] papers,
+//    docs/references.md).
 // Time is made relative: every explored state is decoded with its machines' clocks at the
 // same origin, so states that differ only in absolute time are one state.
 
@@ -577,7 +609,9 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired) {
 
 namespace bsc::verify {
 
-namespace detail {
+}  // namespace bsc::verify
+
+namespace bsc::detail {
 // The clock every explored state is decoded at; far enough from zero that relative times fit.
 inline constexpr duration origin = std::chrono::hours{1};
 
@@ -598,7 +632,9 @@ struct codec {
         return prototype;
     }
 };
-}  // namespace detail
+}  // namespace bsc::detail
+
+namespace bsc::verify {
 
 /// Offers each of the events Es... to the machine in every state (dispatch).
 template <class Machine, class... Es>
@@ -752,19 +788,21 @@ struct verdict {
     }
 };
 
-namespace detail {
+}  // namespace bsc::verify
+
+namespace bsc::detail {
 
 template <class Model>
-void append_step(explorer<Model> const& ex, std::vector<trace_step>& out, std::string label, std::size_t i) {
+void append_step(verify::explorer<Model> const& ex, std::vector<verify::trace_step>& out, std::string label, std::size_t i) {
     out.push_back({std::move(label), ex.model().describe(ex.at(i))});
 }
 
 // The shortest path from the initial state to state i (breadth-first tree).
 template <class Model>
-std::vector<trace_step> path_to(explorer<Model> const& ex, std::size_t i) {
+std::vector<verify::trace_step> path_to(verify::explorer<Model> const& ex, std::size_t i) {
     std::vector<std::size_t> chain;
-    for (std::size_t s = i; s != explorer<Model>::none; s = ex.parent(s)) chain.push_back(s);
-    std::vector<trace_step> out;
+    for (std::size_t s = i; s != verify::explorer<Model>::none; s = ex.parent(s)) chain.push_back(s);
+    std::vector<verify::trace_step> out;
     for (std::size_t k = chain.size(); k-- > 0;) {
         std::size_t const s = chain[k];
         append_step(ex, out, k + 1 == chain.size() ? "(initial)" : ex.model().label(ex.parent_label(s)), s);
@@ -773,12 +811,14 @@ std::vector<trace_step> path_to(explorer<Model> const& ex, std::size_t i) {
 }
 
 template <class Model>
-verdict incomplete(explorer<Model> const& ex, std::string property) {
-    verdict v{std::move(property), verdict::status::inconclusive, {}, "exploration stopped by " + ex.stats().stopped_by};
+verify::verdict incomplete(verify::explorer<Model> const& ex, std::string property) {
+    verify::verdict v{std::move(property), verify::verdict::status::inconclusive, {}, "exploration stopped by " + ex.stats().stopped_by};
     return v;
 }
 
-}  // namespace detail
+}  // namespace bsc::detail
+
+namespace bsc::verify {
 
 /// A[] p: p holds in every reachable state. `p` takes the model's state.
 template <class Model, class Pred>
@@ -820,14 +860,16 @@ verdict deadlock_free(explorer<Model>& ex) {
     return deadlock_free(ex, [](auto const&) { return false; });
 }
 
-namespace detail {
+}  // namespace bsc::verify
+
+namespace bsc::detail {
 // The graph's edges reversed, as adjacency arrays: the predecessors of i are
 // from[begin[i]] .. from[begin[i + 1] - 1] (one entry per edge).
 struct reverse_graph {
     std::vector<std::uint32_t> begin, from;
 };
 template <class Model>
-reverse_graph reversed(explorer<Model> const& ex) {
+reverse_graph reversed(verify::explorer<Model> const& ex) {
     std::size_t const n = ex.count();
     reverse_graph g{std::vector<std::uint32_t>(n + 1, 0), std::vector<std::uint32_t>(ex.stats().transitions)};
     for (std::size_t i = 0; i < n; ++i)
@@ -843,7 +885,7 @@ reverse_graph reversed(explorer<Model> const& ex) {
 // The first state (in breadth-first order, so with a shortest path to it) from which no
 // state marked in `goal` can be reached, or none.
 template <class Model>
-std::size_t first_cut_off(explorer<Model> const& ex, std::vector<char> const& goal) {
+std::size_t first_cut_off(verify::explorer<Model> const& ex, std::vector<char> const& goal) {
     std::size_t const n = ex.count();
     reverse_graph const g = reversed(ex);
     std::vector<char> back(n, 0);
@@ -861,12 +903,15 @@ std::size_t first_cut_off(explorer<Model> const& ex, std::vector<char> const& go
             }
     for (std::size_t i = 0; i < n; ++i)
         if (!back[i]) return i;
-    return explorer<Model>::none;
+    return verify::explorer<Model>::none;
 }
-}  // namespace detail
+}  // namespace bsc::detail
 
-/// AG EF p: from every reachable state, some path reaches a p-state (seed 002's vivacity, for
-/// p = "the device operates"). Fails with a path to a state from which p is out of reach.
+namespace bsc::verify {
+
+/// AG EF p: from every reachable state, some path reaches a p-state (the vivacity of the Basic
+/// Statechart paper [BSC], docs/references.md, for p = "the device operates"). Fails with a path
+/// to a state from which p is out of reach.
 template <class Model, class Pred>
 verdict always_reachable(explorer<Model>& ex, std::string name, Pred p) {
     ex.run();
@@ -880,7 +925,7 @@ verdict always_reachable(explorer<Model>& ex, std::string name, Pred p) {
     return {name, verdict::status::holds, {}, {}};
 }
 
-/// The initial state is reachable from every reachable state (seed 002's reinitiability).
+/// The initial state is reachable from every reachable state (the reinitiability of [BSC]).
 template <class Model>
 verdict reinitiable(explorer<Model>& ex) {
     ex.run();
@@ -897,7 +942,7 @@ verdict reinitiable(explorer<Model>& ex) {
 
 /// Reinitiability up to an equivalence: from every reachable state, a state `equivalent` to the
 /// initial one can be reached, e.g. the same active configuration whatever the variables
-/// (seed 002's reachability tree is over configurations). `equivalent(state, initial)`.
+/// (the reachability tree of [BSC] is over configurations). `equivalent(state, initial)`.
 template <class Model, class Equivalent>
 verdict reinitiable(explorer<Model>& ex, Equivalent equivalent) {
     ex.run();

@@ -10,22 +10,15 @@
 #include <type_traits>
 
 #include <bsc/bsc.hpp>
+
+#include "backends.hpp"
 #include "inside.hpp"
 
 using namespace std::chrono_literals;
 
-namespace {
-struct compiled {
-    template <class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
-    using machine = bsc::machine<Chart, Policy, Observer>;
-};
-struct table {
-    template <class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
-    using machine = bsc::table::machine<Chart, Policy, Observer>;
-};
-template <class Backend, class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
-using machine_t = typename Backend::template machine<Chart, Policy, Observer>;
-}  // namespace
+using bsc_test::compiled;
+using bsc_test::machine_t;
+using bsc_test::table;
 
 namespace cyc {
 struct Root;

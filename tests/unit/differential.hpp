@@ -79,6 +79,7 @@ inline char const* name(bsc::outcome o) {
         case bsc::outcome::queue_overflow: return "queue_overflow";
         case bsc::outcome::livelock: return "livelock";
         case bsc::outcome::halted: return "halted";
+        case bsc::outcome::reentrant: return "reentrant";
     }
     return "?";
 }
@@ -87,7 +88,7 @@ inline char const* name(bsc::outcome o) {
 /// and how many with an earlier time), and how many restarts after a halt.
 struct tally {
     std::size_t steps = 0;
-    std::size_t outcomes[5] = {};
+    std::size_t outcomes[8] = {};
     std::size_t restarts = 0;
     std::size_t cycles = 0;
     std::size_t cycle_transitions = 0;

@@ -1,13 +1,15 @@
-// The compiled machine as an object: its size, its names, its observers, copies, and
-// evaluation at compile time.
+// What is particular to the compiled back end (bsc::machine): evaluation in constant
+// expressions, the dispatch plans it computes at compile time (region-local firing, firing at
+// selection), the queue it leaves out of charts that cannot raise, and bsc::chart_ref. The
+// interface it shares with bsc::table::machine is tested in interface_test.cpp.
 
 #include <doctest/doctest.h>
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <typeinfo>
 
-#include "trace.hpp"
 #include "inside.hpp"
 
 namespace mt {
@@ -15,128 +17,7 @@ struct go {};
 struct back {};
 struct Root;
 struct A;
-struct A1;
-struct A2;
 struct B;
-struct B1;
-struct B2;
-struct P;
-struct R1;
-struct R2;
-struct X;
-struct Y;
-struct counter {
-    int count = 0;
-};
-
-// 4 composites (Root, A, B, R1), one parallel (P), basic states.
-inline constexpr auto chart = bsc::make_chart<counter>(
-    bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>),
-                         bsc::composite<B>(bsc::deep_history, bsc::initial<B1>, bsc::state<B2>),
-                         bsc::parallel<P>(bsc::composite<R1>(bsc::initial<X>), bsc::state<Y>)),
-    bsc::state<A1> + bsc::event<go> = bsc::state<A2>, bsc::state<A2> + bsc::event<go> = bsc::state<B>,
-    bsc::state<B1> + bsc::event<go> / [](counter& c) { ++c.count; } = bsc::state<B2>,
-    bsc::state<B2> + bsc::event<go> = bsc::state<P>, bsc::state<P> + bsc::event<back> = bsc::state<A>,
-    bsc::state<B> + bsc::event<back> = bsc::state<A>, bsc::state<A> + bsc::event<back> = bsc::state<B>);
-
-struct partial {  // only one hook: the others are not required
-    int exits = 0;
-    void on_exit(auto) { ++exits; }
-};
-struct row_log {  // on_row: the position of the fired row in make_chart's arguments
-    int calls = 0;
-    int last = -1;
-    void on_row(int row) {
-        ++calls;
-        last = row;
-    }
-};
-}  // namespace mt
-
-TEST_CASE("the active configuration takes one byte per composite state") {
-    using machine = bsc::machine<decltype(mt::chart)>;
-    CHECK(sizeof(machine::configuration_type) == 4);
-    bsc::machine m{mt::chart, mt::counter{}};
-    CHECK(sizeof(m.active_configuration()) == 4);
-}
-
-TEST_CASE("is<S> and active_states follow the configuration, composites and parallel states included") {
-    bsc::machine m{mt::chart, mt::counter{}};
-    CHECK(m.is<mt::Root>());
-    CHECK(m.is<mt::A>());
-    CHECK(m.is<mt::A1>());
-    CHECK_FALSE(m.is<mt::A2>());
-    CHECK_FALSE(m.is<mt::B>());
-    CHECK_FALSE(m.is<mt::B1>());  // B's byte says B1, but B is inactive
-    m.dispatch(mt::go{});
-    m.dispatch(mt::go{});
-    m.dispatch(mt::go{});
-    m.dispatch(mt::go{});
-    CHECK(m.is<mt::P>());
-    CHECK(m.is<mt::X>());
-    CHECK(m.is<mt::Y>());
-    CHECK(m.active_states().joined() == "Root P R1 X Y");
-    CHECK(m.active_states().contains("Y"));
-    CHECK(m.active_states().size() == 5);
-    CHECK(bsc::name_of<mt::R1> == "R1");
-    CHECK(bsc::qualified_name<mt::R1> == "mt::R1");
-}
-
-TEST_CASE("a machine is a value: copies run independently") {
-    bsc::machine a{mt::chart, mt::counter{}};
-    a.dispatch(mt::go{});
-    auto b = a;
-    b.dispatch(mt::go{});
-    CHECK(a.is<mt::A2>());
-    CHECK(b.is<mt::B1>());
-}
-
-TEST_CASE("observers see entries, exits and transitions in order; a machine without one stores nothing for it") {
-    std::string trace;
-    bsc::machine m{mt::chart, mt::counter{}, bsc_test::trace_observer{&trace}};
-    CHECK(trace == "+Root +A +A1");
-    trace.clear();
-    m.dispatch(mt::go{});
-    m.dispatch(mt::go{});
-    CHECK(trace == "-A1 A1>A2 +A2 -A2 -A A2>B +B +B1");
-
-    using mt::partial;
-    bsc::machine<decltype(mt::chart), bsc::default_policy, partial> p{mt::chart, mt::counter{}, partial{}};
-    p.dispatch(mt::go{});
-    CHECK(p.observer().exits == 1);
-    bsc::machine<decltype(mt::chart), bsc::default_policy, mt::row_log> r{mt::chart, mt::counter{}, mt::row_log{}};
-    r.dispatch(mt::go{});  // A1 -> A2, the first row
-    CHECK(r.observer().calls == 1);
-    CHECK(r.observer().last == 0);
-    r.dispatch(mt::go{});  // A2 -> B, the second
-    CHECK(r.observer().calls == 2);
-    CHECK(r.observer().last == 1);
-    CHECK(sizeof(bsc::machine<decltype(mt::chart)>) ==
-          sizeof(bsc::machine<decltype(mt::chart), bsc::default_policy, bsc::no_observer>));
-}
-
-TEST_CASE("guards and actions take the arguments they need") {
-    struct number {
-        int n;
-    };
-    struct ctx {
-        int sum = 0;
-    };
-    struct S;
-    struct T;
-    static constexpr auto chart = bsc::make_chart<ctx>(
-        bsc::composite<mt::Root>(bsc::initial<S>, bsc::state<T>),
-        bsc::state<S> + bsc::event<number>[([] { return true; })] / [] {},
-        bsc::state<S> + bsc::event<number>[([](ctx const& c) { return c.sum < 100; })] / [](ctx& c) { c.sum += 1; },
-        bsc::state<S> + bsc::event<number>[([](ctx const&, number const& e) { return e.n == 5; })] /
-                            [](ctx& c, number const& e) { c.sum += e.n; },
-        bsc::state<S> + bsc::event<mt::go> = bsc::state<T>, bsc::state<T> + bsc::event<mt::go> = bsc::state<S>);
-    bsc::machine m{chart, ctx{}};
-    CHECK(m.dispatch(number{5}) == bsc::outcome::consumed);  // the first, unguarded-in-effect, wins
-    CHECK(m.context().sum == 0);
-}
-
-namespace mt {
 struct small {
     int n = 0;
 };
@@ -157,36 +38,6 @@ constexpr int run_at_compile_time() {
 TEST_CASE("a machine runs in constant expressions") {
     static_assert(mt::run_at_compile_time() == 11);
     CHECK(mt::run_at_compile_time() == 11);
-}
-
-TEST_CASE("dispatch with allow_unhandled accepts an event no transition handles, and ignores it") {
-    struct stranger {};
-    bsc::machine m{mt::chart, mt::counter{}};
-    CHECK(m.dispatch(stranger{}, bsc::allow_unhandled) == bsc::outcome::ignored);
-    CHECK(m.is<mt::A1>());
-}
-
-namespace mt {
-// Rules defined once and reused: two charts share a group of rows.
-inline constexpr auto common_rules = bsc::rows(bsc::state<A> + bsc::event<go> = bsc::state<B>,
-                                               bsc::rows(bsc::state<B> + bsc::event<back> = bsc::state<A>));
-inline constexpr auto base = bsc::make_chart<counter>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
-                                                      common_rules);
-inline constexpr auto extended = bsc::make_chart<counter>(
-    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), common_rules,
-    bsc::state<B> + bsc::event<go> / [](counter& c) { ++c.count; });
-}  // namespace mt
-
-TEST_CASE("groups of rows (bsc::rows) are flattened into the chart, so rules can be shared") {
-    bsc::machine b{mt::base, mt::counter{}};
-    bsc::machine e{mt::extended, mt::counter{}};
-    b.dispatch(mt::go{});
-    e.dispatch(mt::go{});
-    CHECK(b.dispatch(mt::go{}) == bsc::outcome::ignored);
-    CHECK(e.dispatch(mt::go{}) == bsc::outcome::consumed);
-    CHECK(e.context().count == 1);
-    CHECK(b.dispatch(mt::back{}) == bsc::outcome::consumed);
-    CHECK(b.is<mt::A>());
 }
 
 // ---- what the compiled machine decides at compile time ------------------------------------
@@ -272,6 +123,10 @@ TEST_CASE("a chart none of whose actions can raise carries no event queue") {
     using noisy = bsc::machine<decltype(mt2::raising)>;
     static_assert(quiet::queue_capacity == 0);
     static_assert(noisy::queue_capacity == bsc::default_policy::queue_capacity);
+    // The table-driven machine keeps its queue whatever the chart.
+    using quiet_table = bsc::table::machine<decltype(mt2::wide)>;
+    static_assert(quiet_table::queue_capacity == bsc::default_policy::queue_capacity);
+    static_assert(sizeof(quiet) < sizeof(quiet_table));
     bsc::machine m{mt2::raising};
     CHECK(m.dispatch(mt2::tick{}) == bsc::outcome::consumed);
     CHECK(m.context().log == "1");  // the raised go was processed

@@ -6,23 +6,14 @@
 
 #include <string>
 
-#include "trace.hpp"
+#include "backends.hpp"
 #include "inside.hpp"
+#include "trace.hpp"
 
+using bsc_test::compiled;
+using bsc_test::machine_t;
+using bsc_test::table;
 using bsc_test::trace_observer;
-
-namespace {
-struct compiled {
-    template <class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
-    using machine = bsc::machine<Chart, Policy, Observer>;
-};
-struct table {
-    template <class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
-    using machine = bsc::table::machine<Chart, Policy, Observer>;
-};
-template <class Backend, class Chart, class Policy = bsc::default_policy, class Observer = bsc::no_observer>
-using machine_t = typename Backend::template machine<Chart, Policy, Observer>;
-}  // namespace
 
 namespace sem {
 struct go {};
@@ -298,6 +289,46 @@ TEST_CASE_TEMPLATE("guards compose with !, && and ||; actions run in sequence; e
     CHECK(m.dispatch(number{4}) == bsc::outcome::consumed);
     CHECK(m.context().log == "other");
     CHECK(m.context().value == 4);
+}
+
+TEST_CASE_TEMPLATE("guards and actions take the arguments they need", Backend, compiled, table) {
+    struct number {
+        int n;
+    };
+    struct S;
+    struct T;
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<S>, bsc::state<T>),
+        bsc::state<S> + bsc::event<number>[([] { return true; })] / [] {},
+        bsc::state<S> + bsc::event<number>[([](ctx const& c) { return c.value < 100; })] / [](ctx& c) { c.value += 1; },
+        bsc::state<S> + bsc::event<number>[([](ctx const&, number const& e) { return e.n == 5; })] /
+                            [](ctx& c, number const& e) { c.value += e.n; },
+        bsc::state<S> + bsc::event<go> = bsc::state<T>, bsc::state<T> + bsc::event<go> = bsc::state<S>);
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
+    CHECK(m.dispatch(number{5}) == bsc::outcome::consumed);  // the first, unguarded-in-effect, wins
+    CHECK(m.context().value == 0);
+}
+
+namespace sem {
+// Rules defined once and reused: two charts share a group of rows.
+inline constexpr auto common_rules = bsc::rows(bsc::state<A> + bsc::event<go> = bsc::state<B>,
+                                               bsc::rows(bsc::state<B> + bsc::event<back> = bsc::state<A>));
+inline constexpr auto base = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), common_rules);
+inline constexpr auto extended = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+                                                      common_rules,
+                                                      bsc::state<B> + bsc::event<go> / [](ctx& c) { ++c.value; });
+}  // namespace sem
+
+TEST_CASE_TEMPLATE("groups of rows (bsc::rows) are flattened into the chart, so rules can be shared", Backend, compiled, table) {
+    machine_t<Backend, decltype(sem::base)> b{sem::base, ctx{}};
+    machine_t<Backend, decltype(sem::extended)> e{sem::extended, ctx{}};
+    b.dispatch(go{});
+    e.dispatch(go{});
+    CHECK(b.dispatch(go{}) == bsc::outcome::ignored);
+    CHECK(e.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(e.context().value == 1);
+    CHECK(b.dispatch(back{}) == bsc::outcome::consumed);
+    CHECK(b.template is<A>());
 }
 
 TEST_CASE_TEMPLATE("eventless transitions run after each microstep until none is enabled, and at construction", Backend, compiled, table) {

@@ -1,13 +1,21 @@
-// Systems of actors: signals, step order, and exploration of a closed loop.
+// Systems of actors: signals, step order, and exploration of a closed loop. The cases that
+// step a system run with the actors on either back end; one puts the controller and the plant
+// on different ones.
 
 #include <doctest/doctest.h>
 
 #include <chrono>
+#include <type_traits>
 
 #include <bsc/bsc.hpp>
 #include <bsc/verify.hpp>
 
+#include "backends.hpp"
+
 using namespace std::chrono_literals;
+using bsc_test::compiled;
+using bsc_test::machine_t;
+using bsc_test::table;
 
 namespace sys {
 struct Root;
@@ -46,45 +54,70 @@ inline constexpr auto plant = bsc::make_chart<plant_io>(
         p.reset = false;
     } = bsc::state<Still>);
 
+template <class ControlBackend, class BeltBackend>
 struct actors {
-    bsc::machine<decltype(controller)> control{controller};
-    bsc::machine<decltype(plant)> belt{plant};
+    machine_t<ControlBackend, decltype(controller)> control{controller};
+    machine_t<BeltBackend, decltype(plant)> belt{plant};
 };
 // The actor diagram: who sends what to whom.
-using cell = bsc::system<actors, bsc::order<&actors::control, &actors::belt>,
-                         bsc::link<&actors::control, &controller_io::motor, &actors::belt, &plant_io::motor>,
-                         bsc::link<&actors::belt, &plant_io::arrived, &actors::control, &controller_io::arrived>>;
+template <class ControlBackend, class BeltBackend = ControlBackend, class Actors = actors<ControlBackend, BeltBackend>>
+using cell = bsc::system<Actors, bsc::order<&Actors::control, &Actors::belt>,
+                         bsc::link<&Actors::control, &controller_io::motor, &Actors::belt, &plant_io::motor>,
+                         bsc::link<&Actors::belt, &plant_io::arrived, &Actors::control, &controller_io::arrived>>;
+
+template <class Backend>
+using other_backend = std::conditional_t<std::is_same_v<Backend, compiled>, table, compiled>;
 }  // namespace sys
 
-TEST_CASE("a system steps its actors in order and delivers signals between them") {
-    sys::cell s{};
+TEST_CASE_TEMPLATE("a system steps its actors in order and delivers signals between them", Backend, compiled, table) {
+    sys::cell<Backend> s{};
     s.actors.control.context().request.set(true);
     s.step(0ms);  // control: Idle -> Running, motor published at the end of its step
-    CHECK(s.actors.control.is<sys::Running>());
-    CHECK(s.actors.belt.is<sys::Moving>());  // the belt, later in the order, sees it this step
+    CHECK(s.actors.control.template is<sys::Running>());
+    CHECK(s.actors.belt.template is<sys::Moving>());  // the belt, later in the order, sees it this step
     s.step(100ms);
     s.step(200ms);
-    CHECK(s.actors.belt.is<sys::Moving>());
+    CHECK(s.actors.belt.template is<sys::Moving>());
     s.step(300ms);  // 300 ms in Moving: arrived, published at the end of the belt's step
-    CHECK(s.actors.belt.is<sys::At>());
-    CHECK(s.actors.control.is<sys::Running>());  // the controller, earlier, sees it next step
+    CHECK(s.actors.belt.template is<sys::At>());
+    CHECK(s.actors.control.template is<sys::Running>());  // the controller, earlier, sees it next step
     auto const r = s.step(400ms);
-    CHECK(s.actors.control.is<sys::Idle>());
+    CHECK(s.actors.control.template is<sys::Idle>());
     CHECK(r.transitions == 1);
     CHECK_FALSE(s.actors.control.context().motor.get());
 }
 
-TEST_CASE("a closed-loop system is explored like a single machine") {
-    auto step = [](sys::cell& s, std::size_t choice, bsc::duration now) {
+// The instance's back end is the controller's; the plant runs on the other one.
+TEST_CASE_TEMPLATE("a system may mix back ends: the controller on one, the plant on the other", ControlBackend,
+                   compiled, table) {
+    sys::cell<ControlBackend, sys::other_backend<ControlBackend>> s{};
+    s.actors.control.context().request.set(true);
+    s.step(0ms);
+    CHECK(s.actors.belt.template is<sys::Moving>());  // the motor, published by the controller earlier in the order
+    s.step(299ms);
+    CHECK(s.actors.belt.template is<sys::Moving>());
+    s.step(300ms);  // the plant's timeout
+    CHECK(s.actors.belt.template is<sys::At>());
+    s.actors.belt.context().reset = true;
+    auto const r = s.step(400ms);  // the controller sees `arrived` and stops the motor; the plant sees that at once
+    CHECK(s.actors.control.template is<sys::Idle>());
+    CHECK_FALSE(s.actors.belt.context().motor.get());
+    CHECK(s.actors.belt.template is<sys::Still>());
+    CHECK(r.transitions == 2);
+}
+
+TEST_CASE_TEMPLATE("a closed-loop system is explored like a single machine", Backend, compiled, table) {
+    using cell = sys::cell<Backend>;
+    auto step = [](cell& s, std::size_t choice, bsc::duration now) {
         s.actors.control.context().request.set(choice & 1);
         s.actors.belt.context().reset = (choice & 2) != 0;
         s.step(now);
     };
-    auto describe = [](sys::cell const& s) {
+    auto describe = [](cell const& s) {
         return s.actors.control.active_states().joined() + " | " + s.actors.belt.active_states().joined();
     };
     auto label = [](std::uint16_t c) { return "request=" + std::to_string(c & 1) + " reset=" + std::to_string(c >> 1); };
-    bsc::verify::system_model model{sys::cell{}, 100ms, 4, step, describe, label};
+    bsc::verify::system_model model{cell{}, 100ms, 4, step, describe, label};
     bsc::verify::explorer ex{model};
     auto const& st = ex.run();
     CHECK(st.complete);
@@ -92,12 +125,12 @@ TEST_CASE("a closed-loop system is explored like a single machine") {
     CHECK(bsc::verify::deadlock_free(ex).holds());
     CHECK(bsc::verify::reinitiable(ex).holds());
     // Safety: the motor is never on while the part is at the sensor for more than a step.
-    auto const safe = bsc::verify::always(ex, "motor off once arrived and seen", [](sys::cell const& s) {
+    auto const safe = bsc::verify::always(ex, "motor off once arrived and seen", [](cell const& s) {
         return !(s.actors.control.context().arrived.get() && s.actors.control.context().motor.get() &&
-                 s.actors.control.is<sys::Idle>());
+                 s.actors.control.template is<sys::Idle>());
     });
     CHECK(safe.holds());
-    auto const witness = bsc::verify::reachable(ex, "At", [](sys::cell const& s) { return s.actors.belt.is<sys::At>(); });
+    auto const witness = bsc::verify::reachable(ex, "At", [](cell const& s) { return s.actors.belt.template is<sys::At>(); });
     REQUIRE(witness.holds());
     CHECK(witness.trace.back().configuration == "Root Running | Root At");
 }
@@ -111,17 +144,18 @@ struct fragile_io {
 inline constexpr auto fragile = bsc::make_chart<fragile_io>(
     bsc::composite<Root>(bsc::initial<Still>, bsc::final_state<Broken>),
     bsc::state<Still>[([](fragile_io const& p) { return p.motor.get(); })] = bsc::state<Broken>);
+template <class Backend>
 struct fragile_actors {
-    bsc::machine<decltype(controller)> control{controller};
-    bsc::machine<decltype(fragile)> part{fragile};
+    machine_t<Backend, decltype(controller)> control{controller};
+    machine_t<Backend, decltype(fragile)> part{fragile};
 };
-using fragile_cell =
-    bsc::system<fragile_actors, bsc::order<&fragile_actors::control, &fragile_actors::part>,
-                bsc::link<&fragile_actors::control, &controller_io::motor, &fragile_actors::part, &fragile_io::motor>>;
+template <class Backend, class Actors = fragile_actors<Backend>>
+using fragile_cell = bsc::system<Actors, bsc::order<&Actors::control, &Actors::part>,
+                                 bsc::link<&Actors::control, &controller_io::motor, &Actors::part, &fragile_io::motor>>;
 }  // namespace sys
 
-TEST_CASE("the system report flags an actor that has halted") {
-    sys::fragile_cell s{};
+TEST_CASE_TEMPLATE("the system report flags an actor that has halted", Backend, compiled, table) {
+    sys::fragile_cell<Backend> s{};
     CHECK_FALSE(s.step(0ms).halted);
     s.actors.control.context().request.set(true);
     auto const r = s.step(100ms);

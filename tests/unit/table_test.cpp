@@ -1,35 +1,26 @@
-// What is particular to the table-driven back end (bsc::table::machine): the tables themselves,
-// and the interface it shares with bsc::machine. The semantics cases of semantics_test.cpp run
-// against both back ends, and differential_test.cpp compares them event by event.
+// What is particular to the table-driven back end (bsc::table::machine): the tables it
+// interprets (the BSTATE and BTRANS rows of the machine-tool paper), the thunks in their
+// function-pointer columns, the transitions threaded through first_out/next_out, and the
+// delays of the timeout rows. The interface it shares with bsc::machine is tested in
+// interface_test.cpp, its semantics in semantics_test.cpp and cycle_test.cpp (both back ends),
+// and differential_test.cpp compares the two event by event.
 
 #include <doctest/doctest.h>
 
 #include <chrono>
 #include <string>
 
-#include <bsc/system.hpp>
 #include <bsc/table/engine.hpp>
 
-#include "trace.hpp"
 #include "inside.hpp"
-
-using bsc_test::trace_observer;
 
 namespace tbl {
 struct go {};
 struct back {};
-struct tick {};
-struct ping {};
-struct pong {};
 struct A;
-struct A1;
-struct A2;
 struct B;
-struct B1;
-struct B2;
 struct Root;
 struct ctx {
-    int value = 0;
     bool flag = false;
     std::string log;
 };
@@ -42,33 +33,6 @@ inline constexpr auto log = [](char const* what) {
 }  // namespace tbl
 
 using namespace tbl;
-
-
-namespace tbl {
-struct C;
-struct C1;
-struct C2;
-struct D;
-}  // namespace tbl
-
-namespace tbl {
-struct P;
-struct R1;
-struct R2;
-struct X1;
-struct X2;
-struct Y1;
-struct Y2;
-struct Out;
-struct e1 {};
-struct e2 {};
-}  // namespace tbl
-
-namespace tbl {
-struct tiny_queue : bsc::default_policy {
-    static constexpr std::size_t queue_capacity = 2;
-};
-}  // namespace tbl
 
 // ---- the tables ---------------------------------------------------------------------------------
 
@@ -142,7 +106,7 @@ bool set(P p) {
 TEST_CASE("table: the topology table of the MCS holds the rows of Figure 12") {
     using namespace tbl::mcs_like;
     using bsc::table::history_kind;
-    using bsc::table::none;
+    using bsc::table::no_state;
     using bsc::table::state_kind;
     constexpr auto const& st = tables::states;
     static_assert(st.size() == tables::state_count && tables::state_count == 10);
@@ -150,13 +114,13 @@ TEST_CASE("table: the topology table of the MCS holds the rows of Figure 12") {
     static_assert(st[0].status.kind == state_kind::top && st[0].first_child == id<MCS>);
     // { MCS, Off, 0, 0, _noHist, Show, Show }
     static_assert(id<MCS> == 1 && st[1].state == 1);
-    static_assert(st[id<MCS>].first_child == id<Off> && st[id<MCS>].next_sibling == none && st[id<MCS>].parent == 0);
+    static_assert(st[id<MCS>].first_child == id<Off> && st[id<MCS>].next_sibling == no_state && st[id<MCS>].parent == 0);
     static_assert(st[id<MCS>].status == bsc::table::state_status{state_kind::composite, history_kind::none});
     CHECK((set(st[id<MCS>].entry) && set(st[id<MCS>].exit)));
     // { Off, 0, Estop, MCS, _noHist, Show, Show }, { Estop, 0, On, MCS, _noHist, Show, Show }
-    static_assert(st[id<Off>].first_child == none && st[id<Off>].next_sibling == id<Estop> && st[id<Off>].parent == id<MCS>);
+    static_assert(st[id<Off>].first_child == no_state && st[id<Off>].next_sibling == id<Estop> && st[id<Off>].parent == id<MCS>);
     static_assert(st[id<Off>].status.kind == state_kind::basic);
-    static_assert(st[id<Estop>].next_sibling == id<On> && st[id<On>].next_sibling == none);
+    static_assert(st[id<Estop>].next_sibling == id<On> && st[id<On>].next_sibling == no_state);
     // { On, Auto, 0, MCS, _Hist, Show, Show }, { Auto, MEM, Manual, On, _noHist, Show, 0 }
     static_assert(st[id<On>].first_child == id<Auto> && st[id<On>].parent == id<MCS>);
     static_assert(st[id<On>].status == bsc::table::state_status{state_kind::composite, history_kind::deep});
@@ -181,7 +145,7 @@ TEST_CASE("table: the topology table of the MCS holds the rows of Figure 12") {
 
 TEST_CASE("table: the transition table of the MCS holds the rows of Figure 13") {
     using namespace tbl::mcs_like;
-    using bsc::table::none;
+    using bsc::table::no_state;
     constexpr auto const& t = tables::transitions;
     static_assert(t.size() == 9);
     // { Off, On_P, On, 0, 0 }
@@ -240,95 +204,13 @@ TEST_CASE("table: an internal transition has no destination; an eventless one ha
     using tbl::mcs_like::set;
     static_assert(tables::transitions[0].event == bsc::table::eventless_id);
     CHECK(set(tables::transitions[0].guard));
-    static_assert(tables::transitions[1].to == bsc::table::none);
+    static_assert(tables::transitions[1].to == bsc::table::no_state);
     CHECK(set(tables::transitions[1].action));
     static_assert(tables::first_out[2] == 0 && tables::first_out[3] == 1 && tables::next_out[1] == 2);
     static_assert(tables::next_out[2] == -1);
 }
 
-// ---- the interface shared with bsc::machine -------------------------------------------------------
-
-namespace tbl {
-struct A11;
-struct counter {
-    int count = 0;
-};
-inline constexpr auto shared_chart = bsc::make_chart<counter>(
-    bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>),
-                         bsc::composite<B>(bsc::deep_history, bsc::initial<B1>, bsc::state<B2>),
-                         bsc::parallel<P>(bsc::composite<R1>(bsc::initial<X1>), bsc::state<Y1>)),
-    bsc::state<A1> + bsc::event<go> = bsc::state<A2>, bsc::state<A2> + bsc::event<go> = bsc::state<B>,
-    bsc::state<B1> + bsc::event<go> / [](counter& c) { ++c.count; } = bsc::state<B2>,
-    bsc::state<B2> + bsc::event<go> = bsc::state<P>, bsc::state<P> + bsc::event<back> = bsc::state<A>,
-    bsc::state<B> + bsc::event<back> = bsc::state<A>, bsc::state<A> + bsc::event<back> = bsc::state<B>);
-
-struct partial {
-    int exits = 0;
-    void on_exit(auto) { ++exits; }
-};
-struct stateless_observer {
-    void on_exit(auto) {}
-};
-}  // namespace tbl
-
-TEST_CASE("table: the same types and the same configuration bytes as bsc::machine") {
-    using compiled = bsc::machine<decltype(shared_chart)>;
-    using table = bsc::table::machine<decltype(shared_chart)>;
-    static_assert(std::is_same_v<compiled::configuration_type, table::configuration_type>);
-    // No action of this chart can raise, so the compiled machine carries no queue at all.
-    static_assert(compiled::queue_capacity == 0 && sizeof(compiled) < sizeof(table));
-    static_assert(std::is_same_v<compiled::event_types, table::event_types>);
-    static_assert(std::is_same_v<compiled::context_type, table::context_type>);
-    CHECK(sizeof(table::configuration_type) == 4);
-    bsc::machine a{shared_chart, counter{}};
-    bsc::table::machine b{shared_chart, counter{}};
-    for (int i = 0; i < 4; ++i) {
-        CHECK(a.dispatch(go{}) == b.dispatch(go{}));
-        CHECK(a.active_configuration() == b.active_configuration());
-    }
-    CHECK(b.active_states().joined() == "Root P R1 X1 Y1");
-    CHECK(b.is<P>());
-    CHECK(b.is<X1>());
-    CHECK_FALSE(b.is<B1>());  // B's byte says B1, but B is inactive
-    CHECK(b.context().count == 1);
-    b.dispatch(back{});
-    b.dispatch(back{});  // B's deep history: B2
-    CHECK(b.active_states().joined() == "Root B B2");
-    CHECK(b.last_outcome() == bsc::outcome::consumed);
-}
-
-TEST_CASE("table: a machine is a value, observers may have any subset of the hooks") {
-    bsc::table::machine a{shared_chart, counter{}};
-    a.dispatch(go{});
-    auto b = a;
-    b.dispatch(go{});
-    CHECK(a.is<A2>());
-    CHECK(b.is<B1>());
-
-    std::string trace;
-    bsc::table::machine t{shared_chart, counter{}, trace_observer{&trace}};
-    CHECK(trace == "+Root +A +A1");
-    trace.clear();
-    t.dispatch(go{});
-    t.dispatch(go{});
-    CHECK(trace == "-A1 A1>A2 +A2 -A2 -A A2>B +B +B1");
-
-    bsc::table::machine<decltype(shared_chart), bsc::default_policy, partial> p{shared_chart, counter{}, partial{}};
-    p.dispatch(go{});
-    CHECK(p.observer().exits == 1);
-    // An observer without data costs no storage (its hook table is static).
-    CHECK(sizeof(bsc::table::machine<decltype(shared_chart)>) ==
-          sizeof(bsc::table::machine<decltype(shared_chart), bsc::default_policy, stateless_observer>));
-}
-
-TEST_CASE("table: dispatch with allow_unhandled accepts an event no transition handles, and ignores it") {
-    struct stranger {};
-    bsc::table::machine m{shared_chart, counter{}};
-    CHECK(m.dispatch(stranger{}, bsc::allow_unhandled) == bsc::outcome::ignored);
-    CHECK(m.is<A1>());
-}
-
-// ---- the BSC execution cycle --------------------------------------------------------------------
+// ---- timeout rows and the components of a cycle -------------------------------------------------
 
 namespace tbl::timed {
 struct Top;
@@ -393,60 +275,4 @@ TEST_CASE("table: timeout rows read their delay from the chart; their origins ke
     CHECK(m.is<Wait>());
     m.step(2s + 1500us);
     CHECK(m.is<Idle>());
-}
-
-namespace tbl::sys {
-struct Root;
-struct Idle;
-struct Running;
-struct Still;
-struct Moving;
-struct At;
-struct controller_io {
-    bsc::input<bool> request;
-    bsc::input<bool> arrived;
-    bsc::output<bool> motor;
-};
-inline constexpr auto controller = bsc::make_chart<controller_io>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Running>),
-    bsc::state<Idle>[([](controller_io const& c) { return c.request.get() && !c.arrived.get(); })] /
-            [](controller_io& c) { c.motor.set(true); } = bsc::state<Running>,
-    bsc::state<Running>[([](controller_io const& c) { return c.arrived.get(); })] /
-            [](controller_io& c) { c.motor.set(false); } = bsc::state<Idle>);
-struct plant_io {
-    bsc::input<bool> motor;
-    bsc::output<bool> arrived;
-};
-inline constexpr auto plant = bsc::make_chart<plant_io>(
-    bsc::composite<Root>(bsc::initial<Still>, bsc::state<Moving>, bsc::state<At>),
-    bsc::state<Still>[([](plant_io const& p) { return p.motor.get(); })] = bsc::state<Moving>,
-    bsc::state<Moving>[([](plant_io const& p) { return !p.motor.get(); })] = bsc::state<Still>,
-    bsc::state<Moving> + bsc::after(std::chrono::milliseconds{300}) / [](plant_io& p) { p.arrived.set(true); } =
-        bsc::state<At>,
-    bsc::state<At>[([](plant_io const& p) { return !p.motor.get(); })] / [](plant_io& p) { p.arrived.set(false); } =
-        bsc::state<Still>);
-// A compiled controller and a table-driven plant model in one system.
-struct actors {
-    bsc::machine<decltype(controller)> control{controller};
-    bsc::table::machine<decltype(plant)> belt{plant};
-};
-using cell = bsc::system<actors, bsc::order<&actors::control, &actors::belt>,
-                         bsc::link<&actors::control, &controller_io::motor, &actors::belt, &plant_io::motor>,
-                         bsc::link<&actors::belt, &plant_io::arrived, &actors::control, &controller_io::arrived>>;
-}  // namespace tbl::sys
-
-TEST_CASE("table: a table machine is an actor of a bsc::system, next to a compiled one") {
-    using namespace std::chrono_literals;
-    tbl::sys::cell s{};
-    s.actors.control.context().request.set(true);
-    s.step(0ms);
-    CHECK(s.actors.belt.is<tbl::sys::Moving>());  // the motor, published by the controller earlier in the order
-    s.step(299ms);
-    CHECK(s.actors.belt.is<tbl::sys::Moving>());
-    s.step(300ms);  // the plant's timeout
-    CHECK(s.actors.belt.is<tbl::sys::At>());
-    auto const r = s.step(400ms);  // the controller sees `arrived` and stops the motor; the plant sees that
-    CHECK(s.actors.control.is<tbl::sys::Idle>());
-    CHECK(s.actors.belt.is<tbl::sys::Still>());
-    CHECK(r.transitions == 2);
 }

@@ -38,9 +38,11 @@ constexpr bool chart_may_raise() {
     }(typename Model::row_types{});
 }
 
+// A chart that takes bsc::action_failed needs a queue for it, even if no action raises.
 template <class Chart, class Policy>
 using compiled_queue =
-    std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>(),
+    std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
+                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0,
                        event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
                        no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>;
 }  // namespace bsc::detail
@@ -122,15 +124,16 @@ private:
     constexpr void run_state_actions() {
         constexpr auto const& actions = plan::template rows_of<K, S>;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (row<actions[I]>().action(context_, queue_), ...);
+            (this->run([&] { row<actions[I]>().action(context_, queue_); }), ...);
         }(std::make_index_sequence<actions.size()>{});
     }
 
     template <int S>
     constexpr void run_entry() {
         run_state_actions<detail::row_kind::entry, S>();
-        if constexpr (plan::timeout_slot[S] >= 0)
-            armed_[static_cast<std::size_t>(plan::timeout_slot[S])] = clock_;
+        // Its timeouts count from its entry, at the time of the last cycle.
+        constexpr int first_slot = plan::timeout_slot[S];
+        for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = clock_;
         notify::template entered<S>(observer_);
     }
 
@@ -257,9 +260,9 @@ private:
 
     // ---- transitions -------------------------------------------------------------------
     template <int Row, class E>
-    constexpr bool guard_holds(E const& e) const {
+    constexpr bool guard_holds(E const& e) {
         if constexpr (rows.guarded[Row])
-            return row<Row>().guard(context_, e);
+            return this->test([&] { return static_cast<bool>(row<Row>().guard(context_, e)); });
         else
             return true;
     }
@@ -267,7 +270,8 @@ private:
     template <int Row, class E>
     constexpr void run_action(E const& e) {
         notify::template transition<Row>(observer_, e);
-        row<Row>().action(context_, e, queue_);
+        if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
+            this->run([&] { row<Row>().action(context_, e, queue_); });
     }
 
     template <int Row>
@@ -362,8 +366,9 @@ private:
     constexpr void fire_selected(E const& e, selection const& sel) {
         constexpr auto const& on_trigger = plan::template transitions<Trigger>;
         selection const kept = detail::resolve_conflicts(
-            sel, [](int later, int earlier) { return plan::conflict(on_trigger[later], on_trigger[earlier]); },
-            [](int later, int earlier) { return plan::preempts(on_trigger[later], on_trigger[earlier]); });
+            sel,
+            [](std::size_t later, std::size_t earlier) { return plan::conflict(on_trigger[later], on_trigger[earlier]); },
+            [](std::size_t later, std::size_t earlier) { return plan::preempts(on_trigger[later], on_trigger[earlier]); });
         for (std::size_t i = kept.size; i-- > 0;)
             with_transition<Trigger>(kept.rows[i], [&](auto r) {
                 constexpr int d = rows.domain[decltype(r)::value];
@@ -430,10 +435,10 @@ private:
 
     // ---- the BSC cycle -----------------------------------------------------------------
     template <int Row>
-    constexpr bool condition_holds() const {
+    constexpr bool condition_holds() {
         if constexpr (rows.trigger[Row] <= detail::timeout_trigger_id(0)) {
-            constexpr int slot = plan::timeout_slot[rows.source[Row]];
-            if (clock_ - armed_[static_cast<std::size_t>(slot)] < row<Row>().trigger_value.delay)
+            constexpr auto slot = static_cast<std::size_t>(plan::row_timeout_slot[Row]);
+            if (!detail::has_elapsed(armed_[slot], clock_, row<Row>().trigger_value.delay))
                 return false;
         }
         return guard_holds<Row>(eventless{});
@@ -446,6 +451,9 @@ private:
             exit_below<d>();
         run_action<Row>(eventless{});
         run_entries<Row>();
+        // An internal timeout, which leaves its state active, counts again from now.
+        if constexpr (d < 0 && plan::row_timeout_slot[Row] >= 0)
+            armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = clock_;
     }
 
     template <int Frontier, int Component>

@@ -53,7 +53,7 @@ private:
             started_ = now;
         }
         if (phase_ == phase::running) {
-            elapsed_ = now - started_;
+            elapsed_ = detail::elapsed(started_, now);
             if (elapsed_ >= limit_) expired_ = true;
         } else {
             elapsed_ = duration::zero();

@@ -49,8 +49,14 @@ struct access {
         return driver_of(m).config_;
     }
     template <class M>
-    static constexpr auto& clock(M& m) {
+    static constexpr auto clock(M const& m) {
         return driver_of(m).clock_;
+    }
+    // Sets a machine's clock as if a cycle had run at `now`.
+    template <class M>
+    static constexpr void set_clock(M& m, duration now) {
+        driver_of(m).clock_ = now;
+        driver_of(m).clock_started_ = true;
     }
     template <class M>
     static constexpr auto& armed(M& m) {

@@ -2,10 +2,14 @@
 // The chart's second table: transition rows `source + trigger [guard] / action = target`,
 // and entry/exit rows `state<S> + on_entry / action`.
 
+#include <chrono>
+#include <cstdlib>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 
 #include <bsc/duration.hpp>
+#include <bsc/error.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
 
@@ -147,11 +151,34 @@ inline constexpr bool is_exit_row<exit_row<S, A>> = true;
 
 }  // namespace bsc::detail
 
+namespace bsc::detail {
+
+// What can be an event: a complete class or enumeration type, copyable, not cv-qualified.
+template <class E>
+constexpr bool is_event_type() {
+    if constexpr (!(std::is_class_v<E> || std::is_enum_v<E>) || !std::is_same_v<E, std::remove_cv_t<E>>)
+        return false;
+    else if constexpr (!requires { sizeof(E); })
+        return false;
+    else
+        return std::is_copy_constructible_v<E> && std::is_destructible_v<E>;
+}
+
+template <class E>
+constexpr event_ref<E> checked_event_ref() {
+    if constexpr (!is_event_type<E>())
+        static_assert(error::not_an_event<E>::value);
+    return {};
+}
+
+}  // namespace bsc::detail
+
 namespace bsc {
 
 /// Names an event type as a trigger: `state<A> + event<E> = state<B>`.
+/// Requirements: E is a complete, copyable class or enumeration type, not cv-qualified.
 template <class E>
-inline constexpr detail::event_ref<E> event{};
+inline constexpr detail::event_ref<E> event = detail::checked_event_ref<E>();
 
 /// Entry action row: `state<S> + on_entry / action`; runs each time S is entered.
 inline constexpr detail::entry_keyword on_entry{};
@@ -162,10 +189,38 @@ inline constexpr detail::exit_keyword on_exit{};
 /// The tag used in diagnostics and observers for a transition without an event.
 using eventless = detail::eventless_trigger;
 
+namespace detail {
+// Deliberately not constexpr: in a constexpr chart, reaching one of these is the compile error
+// (its name says what is wrong); in a chart built at run time, it throws (or aborts without
+// exceptions), so no machine ever runs with such a delay.
+[[noreturn]] inline void bsc_after_negative_delay() {
+#if defined(__cpp_exceptions)
+    throw std::invalid_argument("bsc::after: the delay is negative");
+#else
+    std::abort();
+#endif
+}
+[[noreturn]] inline void bsc_after_delay_beyond_bsc_duration() {
+#if defined(__cpp_exceptions)
+    throw std::out_of_range("bsc::after: the delay does not fit bsc::duration (nanoseconds: about 292 years)");
+#else
+    std::abort();
+#endif
+}
+}  // namespace detail
+
 /// A state-scoped timeout trigger: `state<S> + after(3s) = state<T>` fires in the first cycle
-/// (step) at which S has been active for at least 3 s. Armed when S is entered.
+/// (step) at which S has been active for at least 3 s. Armed when S is entered. Without a
+/// target (`state<S> + after(500ms) / a`, an internal timeout) it fires every 500 ms while S is
+/// active: each time it fires, its delay counts again from that cycle.
+/// Requirements: 0 <= delay <= bsc::duration::max(); a chart with another delay does not
+/// compile (constexpr chart) or throws std::invalid_argument / std::out_of_range.
 template <class Rep, class Period>
 constexpr detail::timeout_ref after(std::chrono::duration<Rep, Period> delay) {
+    if (delay < std::chrono::duration<Rep, Period>::zero()) detail::bsc_after_negative_delay();
+    if (std::chrono::duration<long double, std::nano>(delay) >
+        std::chrono::duration<long double, std::nano>(duration::max()))
+        detail::bsc_after_delay_beyond_bsc_duration();
     return {std::chrono::duration_cast<duration>(delay)};
 }
 

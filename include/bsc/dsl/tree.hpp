@@ -167,7 +167,7 @@ constexpr auto composite(A...) {
             detail::index_in<std::false_type,
                              std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
                                                 detail::is_initial_marker<A> || detail::is_history_marker<A>>...>();
-        static_assert(error::not_a_state_declaration<S, detail::at<bad, detail::type_list<A...>>>::value);
+        static_assert(error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>::value);
     } else if constexpr (history_markers > 1) {
         static_assert(error::conflicting_history_markers<S>::value);
     }
@@ -184,7 +184,7 @@ constexpr auto parallel(A...) {
     if constexpr (!all_valid) {
         constexpr int bad =
             detail::index_in<std::false_type, std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>();
-        static_assert(error::not_a_state_declaration<S, detail::at<bad, detail::type_list<A...>>>::value);
+        static_assert(error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>::value);
     }
     using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true>()));
     return detail::parallel_node<S, children>{};

@@ -70,24 +70,27 @@ struct topology {
     std::array<bool, N> implicit{};
     int slots = 0;
 
-    constexpr bool is_leaf(int s) const { return kinds[s] == kind::basic || kinds[s] == kind::final_state; }
-    constexpr bool is_compound(int s) const { return kinds[s] == kind::composite || kinds[s] == kind::top; }
+    // States are numbered by int (negative numbers mean "none"); the arrays by size_t.
+    static constexpr std::size_t at(int s) { return static_cast<std::size_t>(s); }
+
+    constexpr bool is_leaf(int s) const { return kinds[at(s)] == kind::basic || kinds[at(s)] == kind::final_state; }
+    constexpr bool is_compound(int s) const { return kinds[at(s)] == kind::composite || kinds[at(s)] == kind::top; }
     // a is an ancestor of d, or d itself
-    constexpr bool contains(int a, int d) const { return a <= d && d < end[a]; }
-    constexpr bool is_proper_ancestor(int a, int d) const { return a < d && d < end[a]; }
+    constexpr bool contains(int a, int d) const { return a <= d && d < end[at(a)]; }
+    constexpr bool is_proper_ancestor(int a, int d) const { return a < d && d < end[at(a)]; }
     constexpr int lca(int a, int b) const {
-        while (!contains(a, b)) a = parent[a];
+        while (!contains(a, b)) a = parent[at(a)];
         return a;
     }
     // The child of `a` on the way down to its descendant d.
     constexpr int child_toward(int a, int d) const {
         int c = d;
-        while (parent[c] != a) c = parent[c];
+        while (parent[at(c)] != a) c = parent[at(c)];
         return c;
     }
     constexpr bool under_parallel(int s) const {
-        for (int a = parent[s]; a >= 0; a = parent[a])
-            if (kinds[a] == kind::parallel)
+        for (int a = parent[at(s)]; a >= 0; a = parent[at(a)])
+            if (kinds[at(a)] == kind::parallel)
                 return true;
         return false;
     }

@@ -69,21 +69,47 @@ struct chart_layout {
         return out;
     }();
 
-    // States that are the source of a timeout row get a slot for the time they were entered,
-    // numbered in document order; -1 for the others.
-    static constexpr auto timeout_slot = [] {
-        std::array<bool, static_cast<std::size_t>(N)> has{};
+    // Every timeout row has a slot for the time from which its delay counts: the entry of its
+    // source, or the cycle it last fired in for an internal timeout (which re-arms itself).
+    // Slots are numbered by source state in document order, then by row, so the slots of one
+    // state are contiguous: timeout_slot[s] is the first (-1 if none), timeout_slot_count[s]
+    // how many; row_timeout_slot[r] is row r's (-1 for other rows).
+    static constexpr auto timeout_slot_count = [] {
+        std::array<int, static_cast<std::size_t>(N)> count{};
         for (int r = 0; r < R; ++r)
-            if (is_timeout_row(r)) has[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] = true;
-        std::array<int, static_cast<std::size_t>(N)> slot{};
+            if (is_timeout_row(r)) ++count[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])];
+        return count;
+    }();
+    static constexpr auto timeout_slot = [] {
+        std::array<int, static_cast<std::size_t>(N)> first{};
         int n = 0;
-        for (std::size_t s = 0; s < slot.size(); ++s) slot[s] = has[s] ? n++ : -1;
-        return slot;
+        for (std::size_t s = 0; s < first.size(); ++s) {
+            first[s] = timeout_slot_count[s] > 0 ? n : -1;
+            n += timeout_slot_count[s];
+        }
+        return first;
     }();
     static constexpr int timeout_slots = [] {
         int n = 0;
-        for (int slot : timeout_slot) n += slot >= 0;
+        for (int count : timeout_slot_count) n += count;
         return n;
+    }();
+    static constexpr auto row_timeout_slot = [] {
+        std::array<int, static_cast<std::size_t>(R)> slot{};
+        std::array<int, static_cast<std::size_t>(N)> used{};
+        for (int r = 0; r < R; ++r) {
+            auto const source = static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)]);
+            slot[static_cast<std::size_t>(r)] = is_timeout_row(r) ? timeout_slot[source] + used[source]++ : -1;
+        }
+        return slot;
+    }();
+    // The state whose entry arms a slot.
+    static constexpr auto timeout_slot_state = [] {
+        std::array<int, static_cast<std::size_t>(timeout_slots)> state{};
+        for (int s = 0; s < N; ++s)
+            for (int k = 0; k < timeout_slot_count[static_cast<std::size_t>(s)]; ++k)
+                state[static_cast<std::size_t>(timeout_slot[static_cast<std::size_t>(s)] + k)] = s;
+        return state;
     }();
 
     static constexpr int count_rows(row_kind k, int state) {

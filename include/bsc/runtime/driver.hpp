@@ -21,6 +21,7 @@
 #include <type_traits>
 #include <utility>
 
+#include <bsc/action_failed.hpp>
 #include <bsc/configuration.hpp>
 #include <bsc/detail/access.hpp>
 #include <bsc/detail/type_name.hpp>
@@ -30,6 +31,7 @@
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/runtime/context_data.hpp>
+#include <bsc/runtime/failures.hpp>
 
 namespace bsc::detail {
 
@@ -46,8 +48,13 @@ struct observer_argument<Context, Observer> {
 template <class... Arguments>
 using observer_argument_t = typename observer_argument<Arguments...>::type;
 
+// What every machine derives from, whatever its back end (an empty base: it costs nothing).
+struct machine_base {};
+template <class T>
+inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
+
 template <class Backend, class Chart, class Policy, class Observer, class Queue>
-class driver {
+class driver : public machine_base {
 protected:
     using model = chart_model<std::remove_cv_t<Chart>>;
     using layout = chart_layout<model>;
@@ -76,24 +83,37 @@ public:
     /// reported and ignored.
     constexpr step_report step(duration now) {
         step_report report;
+        if (running_) {
+            report.status = outcome::reentrant;
+            return report;
+        }
+        run_guard const guard{running_};
         if (halted()) {
             report.status = last_ = outcome::halted;
             return report;
         }
-        if (now < clock_)
-            report.clock_went_backwards = true;
-        else
+        if (!clock_started_) {
+            // The clock starts at the first cycle, wherever the caller's time starts; what was
+            // armed before it (at construction, by a dispatch) counts from this cycle too.
+            clock_started_ = true;
             clock_ = now;
+            for (auto& armed : armed_) armed = now;
+        } else if (now < clock_) {
+            report.clock_went_backwards = true;
+        } else {
+            clock_ = now;
+        }
         update_timers(context_, clock_);
         latch_inputs(context_);
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
         report.status = last_ = drain_queue(report.transitions > 0);
         commit_outputs(context_);
+        report.status = last_ = conclude(last_);
         return report;
     }
 
-    /// The time of the last cycle (the machine's clock).
+    /// The time of the last cycle (the machine's clock; zero before the first cycle).
     constexpr duration now() const { return clock_; }
 
     /// Processes e to completion: the transitions it enables, then eventless transitions and
@@ -151,6 +171,14 @@ public:
     /// The outcome of the last dispatch (or of construction).
     constexpr outcome last_outcome() const { return last_; }
 
+    /// The exception of the last dispatch, cycle or construction whose outcome was
+    /// outcome::failed (a policy whose rethrow_failures is false); null otherwise.
+    std::exception_ptr last_failure() const {
+        if constexpr (!Policy::rethrow_failures)
+            if (last_ == outcome::failed) return reported_.get();
+        return nullptr;
+    }
+
     constexpr context_type& context() { return context_; }
     constexpr context_type const& context() const { return context_; }
     constexpr configuration_type const& active_configuration() const { return config_; }
@@ -164,12 +192,28 @@ protected:
     // Enters the initial configuration (entry actions run) and settles eventless transitions.
     // Called by the back end's constructor, once the back end exists.
     constexpr void start() {
+        run_guard const guard{running_};
         if constexpr (tree.slots > 0)
             config_.active = layout::initial_bytes;
         latch_inputs(context_);
         backend().enter_initial();
         last_ = finish(false);
         commit_outputs(context_);
+        last_ = conclude(last_);
+    }
+
+    // Runs a guard (true if it holds) or a block of an action: what either throws goes to fail().
+    template <class Guard>
+    constexpr bool test(Guard&& guard) {
+        return test_guard(guard, [this](std::exception_ptr error) { fail(std::move(error)); });
+    }
+    template <class Block>
+    constexpr void run(Block&& block) {
+        run_block(block, [this](std::exception_ptr error) { fail(std::move(error)); });
+    }
+    // The same, for code that knows the machine only by address (the table engine's thunks).
+    failure_sink sink() {
+        return {this, [](void* machine, std::exception_ptr error) { static_cast<driver*>(machine)->fail(std::move(error)); }};
     }
 
     template <int Row>
@@ -204,17 +248,60 @@ private:
 
     template <class E>
     constexpr void microstep_on(E const& e) {
-        backend().template microstep<model::template trigger_of<E>>(e);
+        bool const fired = backend().template microstep<model::template trigger_of<E>>(e);
+        if constexpr (std::is_same_v<E, action_failed>)
+            if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
     }
+
+    // Whether the chart takes bsc::action_failed: then failures go on the internal queue.
+    static constexpr bool takes_failures = model::template trigger_of<action_failed> >= 0;
+
+    // A guard or action threw: raise bsc::action_failed if the chart takes it (and the queue
+    // has room), else keep it for the caller.
+    void fail(std::exception_ptr error) {
+        if constexpr (takes_failures)
+            if (queue_(action_failed{error})) return;
+        keep_failure(std::move(error));
+    }
+    void keep_failure(std::exception_ptr error) { failure_.keep(std::move(error)); }
+
+    // The end of a run, the machine consistent and its outputs committed: a failure no
+    // transition took is rethrown, or reported as outcome::failed.
+    constexpr outcome conclude(outcome result) {
+        if (failure_) return failed_run();
+        return result;
+    }
+    outcome failed_run() {
+        if constexpr (Policy::rethrow_failures) {
+            std::rethrow_exception(failure_.take());
+        } else {
+            reported_.reset();
+            reported_.keep(failure_.take());
+            return outcome::failed;
+        }
+    }
+
+    // Marks the machine as running for the time of a dispatch, a cycle or the construction: a
+    // dispatch or step called meanwhile from one of its guards or actions is refused.
+    struct run_guard {
+        bool& running;
+        constexpr explicit run_guard(bool& flag) : running(flag) { running = true; }
+        constexpr ~run_guard() { running = false; }
+        run_guard(run_guard const&) = delete;
+        run_guard& operator=(run_guard const&) = delete;
+    };
 
     template <int Trigger, class E>
     constexpr outcome process(E const& e) {
+        if (running_)
+            return outcome::reentrant;
+        run_guard const guard{running_};
         if (halted())
             return last_ = outcome::halted;
         latch_inputs(context_);
         last_ = finish(backend().template microstep<Trigger>(e));
         commit_outputs(context_);
-        return last_;
+        return last_ = conclude(last_);
     }
 
     // The components' turns in a cycle: a component takes its turn if it was active when the
@@ -313,9 +400,11 @@ private:
     // A timeout slot's age matters only while its state is active.
     constexpr bool timeout_armed(std::size_t slot) const {
         auto const active = active_flags();
-        for (std::size_t s = 0; s < state_count; ++s)
-            if (layout::timeout_slot[s] == static_cast<int>(slot)) return active[s];
-        return false;
+        if constexpr (layout::timeout_slots > 0)
+            return slot < layout::timeout_slot_state.size() &&
+                   active[static_cast<std::size_t>(layout::timeout_slot_state[slot])];
+        else
+            return false;
     }
 
     // The longest delay of any timeout row: past it, a state's age no longer matters.
@@ -343,7 +432,15 @@ protected:
     duration clock_{};
     std::array<duration, static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
     outcome last_ = outcome::ignored;
+    bool running_ = false;        // inside a dispatch, a cycle or the constructor
+    bool clock_started_ = false;  // a cycle has run: clock_ is the caller's time
     [[no_unique_address]] Observer observer_;
+    failure_slot failure_;  // the first failure of the current run that no transition took
+    struct nothing_reported {
+        static std::exception_ptr get() { return nullptr; }
+    };
+    // The failure of the last run, for last_failure(), under a policy that does not rethrow.
+    [[no_unique_address]] std::conditional_t<Policy::rethrow_failures, nothing_reported, failure_slot> reported_;
 };
 
 }  // namespace bsc::detail

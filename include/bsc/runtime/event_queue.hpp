@@ -30,7 +30,7 @@ public:
                 overflowed_ = true;
                 return false;
             }
-            items_[(head_ + size_) % Capacity] = value_type{std::in_place_type<E>, e};
+            items_[(head_ + size_) % Capacity].template emplace<E>(e);
             ++size_;
             return true;
         }

@@ -16,7 +16,7 @@ struct selection {
     std::array<std::uint16_t, Capacity> rows{};
     std::size_t size = 0;
 
-    constexpr void add(int row) {
+    constexpr void add(std::size_t row) {
         for (std::size_t i = 0; i < size; ++i)
             if (rows[i] == row) return;
         rows[size++] = static_cast<std::uint16_t>(row);
@@ -31,11 +31,11 @@ constexpr selection<Capacity> resolve_conflicts(selection<Capacity> const& selec
                                                 Preempts preempts) {
     selection<Capacity> kept;
     for (std::size_t i = 0; i < selected.size; ++i) {
-        int const later = selected.rows[i];
+        std::size_t const later = selected.rows[i];
         bool dropped = false;
         selection<Capacity> survivors;
         for (std::size_t j = 0; j < kept.size && !dropped; ++j) {
-            int const earlier = kept.rows[j];
+            std::size_t const earlier = kept.rows[j];
             if (!conflict(later, earlier))
                 survivors.add(earlier);
             else if (!preempts(later, earlier))

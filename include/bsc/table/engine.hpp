@@ -165,19 +165,20 @@ private:
     bool is_active() const {
         return active(static_cast<state_id>(S));
     }
-    static bool is_leaf(state_id s) { return states[s].first_child == none; }
+    static bool is_leaf(state_id s) { return states[s].first_child == no_state; }
 
     // ---- entry and exit -------------------------------------------------------------------
     void run_entry(state_id s) {
-        if (auto const f = states[s].entry) f(this->chart_, this->context_, this->queue_);
+        if (auto const f = states[s].entry) f(this->chart_, this->context_, this->queue_, this->sink());
         // A state's timeouts count from its entry, at the time of the last cycle.
         if constexpr (tables_type::timeout_slots > 0)
-            if (states[s].timeout_slot >= 0) this->armed_[static_cast<std::size_t>(states[s].timeout_slot)] = this->clock_;
+            for (std::int16_t k = 0; k < states[s].timeout_slots; ++k)
+                this->armed_[static_cast<std::size_t>(states[s].timeout_slot + k)] = this->clock_;
         if constexpr (observed)
             if (auto const h = hooks::on_entry[s]) h(this->observer_);
     }
     void run_exit(state_id s) {
-        if (auto const f = states[s].exit) f(this->chart_, this->context_, this->queue_);
+        if (auto const f = states[s].exit) f(this->chart_, this->context_, this->queue_, this->sink());
         if constexpr (observed)
             if (auto const h = hooks::on_exit[s]) h(this->observer_);
     }
@@ -203,7 +204,7 @@ private:
                 case history_kind::deep: enter_restore(active_child(s)); break;
             }
         } else if (row.status.kind == state_kind::parallel) {
-            for (state_id c = row.first_child; c != none; c = states[c].next_sibling) enter_default(c);
+            for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_default(c);
         }
     }
     // Deep history: re-enters s and the whole sub-configuration the bytes remember.
@@ -213,7 +214,7 @@ private:
         if (row.status.kind == state_kind::composite)
             enter_restore(active_child(s));
         else if (row.status.kind == state_kind::parallel)
-            for (state_id c = row.first_child; c != none; c = states[c].next_sibling) enter_restore(c);
+            for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_restore(c);
     }
 
     // The paper's activPath: enters, below the active state `domain`, the states on the path
@@ -224,7 +225,7 @@ private:
         state_id c = target;
         while (states[c].parent != domain) c = states[c].parent;
         if (states[domain].status.kind == state_kind::parallel) {
-            for (state_id k = states[domain].first_child; k != none; k = states[k].next_sibling) {
+            for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
                 if (k == c)
                     enter_path_node(c, target);
                 else
@@ -263,19 +264,19 @@ private:
     // ---- transitions ----------------------------------------------------------------------
     using selection = bsc::detail::selection<tables_type::max_active_leaves>;
 
-    bool guard_holds(std::int16_t t, void const* e) const {
+    bool guard_holds(std::int16_t t, void const* e) {
         auto const g = transitions[static_cast<std::size_t>(t)].guard;
-        return g == nullptr || g(this->chart_, this->context_, e);
+        return g == nullptr || this->test([&] { return g(this->chart_, this->context_, e); });
     }
 
     // Step 2 for one active basic state: its candidates are the transitions on the event from
     // the state itself, then from its parent, and so on up to the root (deepest first); among
     // those of one origin, declaration order. The first whose guard holds is selected.
-    bool select_from(state_id leaf, event_id event, void const* e, selection& sel) const {
-        for (state_id a = leaf; a != none; a = states[a].parent)
+    bool select_from(state_id leaf, event_id event, void const* e, selection& sel) {
+        for (state_id a = leaf; a != no_state; a = states[a].parent)
             for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)])
                 if (transitions[static_cast<std::size_t>(t)].event == event && guard_holds(t, e)) {
-                    sel.add(t);
+                    sel.add(static_cast<std::size_t>(t));
                     return true;
                 }
         return false;
@@ -285,7 +286,7 @@ private:
         if constexpr (observed)
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_, e);
         if (auto const action = transitions[static_cast<std::size_t>(t)].action)
-            action(this->chart_, this->context_, e, this->queue_);
+            this->run([&] { action(this->chart_, this->context_, e, this->queue_); });
     }
 
     template <int Trigger, class E>
@@ -314,22 +315,23 @@ private:
         }
         if (sel.size == 0) return any;
         constexpr auto const& chart_row = tables_type::transition_chart_row;
-        using layout = bsc::detail::chart_layout<typename base::model>;
+        using shared_layout = typename base::layout;
         selection const fired = bsc::detail::resolve_conflicts(
-            sel, [](int later, int earlier) { return layout::conflict(chart_row[later], chart_row[earlier]); },
-            [](int later, int earlier) { return layout::preempts(chart_row[later], chart_row[earlier]); });
+            sel,
+            [](std::size_t later, std::size_t earlier) { return shared_layout::conflict(chart_row[later], chart_row[earlier]); },
+            [](std::size_t later, std::size_t earlier) { return shared_layout::preempts(chart_row[later], chart_row[earlier]); });
 
         // 3. Deactivate the states the transitions leave, running their exit actions.
         for (std::size_t i = fired.size; i-- > 0;) {
             auto const& row = transitions[fired.rows[i]];
-            if (row.to != none) deactivate_path(row.domain);
+            if (row.to != no_state) deactivate_path(row.domain);
         }
         // 4. Perform the transition actions, in selection order.
         for (std::size_t i = 0; i < fired.size; ++i) run_action(static_cast<std::int16_t>(fired.rows[i]), e);
         // 5. Activate the states they enter, running entry actions, defaults and history.
         for (std::size_t i = 0; i < fired.size; ++i) {
             auto const& row = transitions[fired.rows[i]];
-            if (row.to != none) activate_path(row.domain, row.to);
+            if (row.to != no_state) activate_path(row.domain, row.to);
         }
         return any;
     }
@@ -359,11 +361,12 @@ private:
 
     // A timeout's condition: its origin has been active for its delay (the origin is active: it
     // is on the component's active path). Then the guard, which receives bsc::eventless.
-    bool condition_holds(std::int16_t t) const {
+    bool condition_holds(std::int16_t t) {
         auto const& row = transitions[static_cast<std::size_t>(t)];
         if constexpr (tables_type::timeout_slots > 0)
             if (row.event == timeout_id &&
-                this->clock_ - this->armed_[static_cast<std::size_t>(states[row.from].timeout_slot)] < row.delay(this->chart_))
+                !bsc::detail::has_elapsed(this->armed_[static_cast<std::size_t>(row.timeout_slot)], this->clock_,
+                                          row.delay(this->chart_)))
                 return false;
         return guard_holds(t, &no_event);
     }
@@ -371,9 +374,13 @@ private:
     // Steps 3 to 5 of a microstep for one transition: a component's transition fires alone.
     void fire_condition(std::int16_t t) {
         auto const& row = transitions[static_cast<std::size_t>(t)];
-        if (row.to != none) deactivate_path(row.domain);
+        if (row.to != no_state) deactivate_path(row.domain);
         run_action(t, &no_event);
-        if (row.to != none) activate_path(row.domain, row.to);
+        if (row.to != no_state) activate_path(row.domain, row.to);
+        // An internal timeout, which leaves its state active, counts again from now.
+        if constexpr (tables_type::timeout_slots > 0)
+            if (row.to == no_state && row.timeout_slot >= 0)
+                this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->clock_;
     }
 
     // The event that eventless and timeout transitions receive.

@@ -22,14 +22,15 @@
 #include <bsc/model/layout.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/runtime/event_queue.hpp>
+#include <bsc/runtime/failures.hpp>
 
 namespace bsc::table {
 
 /// A state's number: its row in the topology table. Row 0 is the implicit top above the
 /// chart's root (the paper's ancestor 0 of MCS); since the top is nobody's child or sibling,
-/// 0 also means "none" in the first_child, next_sibling, initial and `to` columns.
+/// 0 (no_state) also means "none" in the first_child, next_sibling, initial and `to` columns.
 using state_id = std::uint16_t;
-inline constexpr state_id none = 0;
+inline constexpr state_id no_state = 0;
 
 /// An event's number: the position of its type in the machine's event_types.
 using event_id = std::int16_t;
@@ -61,23 +62,26 @@ struct state_status {
 template <class Chart, class Raise>
 struct state_row {
     using context_type = typename Chart::context_type;
-    /// Runs the state's entry (or exit) actions, in declaration order.
-    using state_action = void (*)(Chart const& chart, context_type& context, Raise& raise);
+    /// Runs the state's entry (or exit) actions, in declaration order; each is one block, and
+    /// what one throws goes to `failures` before the next runs.
+    using state_action = void (*)(Chart const& chart, context_type& context, Raise& raise,
+                                  bsc::detail::failure_sink const& failures);
 
-    state_id state = none;         ///< this row's number
-    state_id first_child = none;   ///< first child in document order (BSTATE's descendant)
-    state_id next_sibling = none;  ///< next sibling in document order (BSTATE's sibling)
-    state_id parent = none;        ///< parent, 0 (the top) for the root (BSTATE's ancestor)
+    state_id state = no_state;         ///< this row's number
+    state_id first_child = no_state;   ///< first child in document order (BSTATE's descendant)
+    state_id next_sibling = no_state;  ///< next sibling in document order (BSTATE's sibling)
+    state_id parent = no_state;        ///< parent, 0 (the top) for the root (BSTATE's ancestor)
     state_status status{};
     state_action entry = nullptr;  ///< null: no entry action
     state_action exit = nullptr;   ///< null: no exit action
 
     // Derived columns.
-    state_id initial = none;   ///< default child of a composite
+    state_id initial = no_state;   ///< default child of a composite
     std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
     std::int16_t slot = -1;    ///< the byte of the configuration a composite owns, -1 for others
     state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
-    std::int16_t timeout_slot = -1;  ///< where the time it was entered is kept if a timeout leaves it, else -1
+    std::int16_t timeout_slot = -1;    ///< the first slot of its timeout rows (see transition_row), else -1
+    std::int16_t timeout_slots = 0;    ///< how many of its rows are timeouts: its slots follow the first
 };
 
 /// One row of the transition table (the paper's BTRANS, Figure 8).
@@ -92,13 +96,16 @@ struct transition_row {
     /// delay is read from the chart like a guard.
     using delay_fn = duration (*)(Chart const& chart);
 
-    state_id from = none;           ///< origin state
+    state_id from = no_state;           ///< origin state
     event_id event = eventless_id;  ///< trigger, or `eventless_id` / `timeout_id`
-    state_id to = none;             ///< destination state; none: an internal transition
+    state_id to = no_state;             ///< destination state; no_state: an internal transition
     guard_fn guard = nullptr;       ///< null: unguarded
     action_fn action = nullptr;     ///< null: no action
-    state_id domain = none;         ///< the transition domain: the state whose active descendants it exits
+    state_id domain = no_state;         ///< the transition domain: the state whose active descendants it exits
     delay_fn delay = nullptr;       ///< a timeout's delay; null for the other transitions
+    /// A timeout's slot: where the machine keeps the time its delay counts from (its origin's
+    /// entry, or for an internal timeout the cycle it last fired in); -1 for the others.
+    std::int16_t timeout_slot = -1;
 };
 
 /// The operation rules of `Chart`: its topology table `states` and transition table
@@ -127,10 +134,15 @@ private:
 
     // ---- the thunks: one per state and per transition ---------------------------------------
     template <row_kind K, int S>
-    static void state_thunk(chart_type const& chart, context_type& context, raise_type& raise) {
+    static void state_thunk(chart_type const& chart, context_type& context, raise_type& raise,
+                            bsc::detail::failure_sink const& failures) {
         constexpr auto const& actions = layout::template rows_of<K, S>;
+        auto const report = [&](std::exception_ptr error) { failures.report(failures.machine, std::move(error)); };
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (boost::hana::at_c<static_cast<std::size_t>(actions[I])>(chart.rows).action(context, raise), ...);
+            (bsc::detail::run_block(
+                 [&] { boost::hana::at_c<static_cast<std::size_t>(actions[I])>(chart.rows).action(context, raise); },
+                 report),
+             ...);
         }(std::make_index_sequence<actions.size()>{});
     }
 
@@ -159,7 +171,7 @@ private:
             return &state_thunk<K, S>;
     }
 
-    static constexpr state_id id(int s) { return s < 0 ? none : static_cast<state_id>(s); }
+    static constexpr state_id id(int s) { return s < 0 ? no_state : static_cast<state_id>(s); }
 
     static constexpr state_kind kind_of(bsc::detail::kind k) {
         switch (k) {
@@ -196,6 +208,7 @@ private:
         row.slot = static_cast<std::int16_t>(tree.slot[i]);
         row.end = static_cast<state_id>(tree.end[i]);
         row.timeout_slot = static_cast<std::int16_t>(layout::timeout_slot[i]);
+        row.timeout_slots = static_cast<std::int16_t>(layout::timeout_slot_count[i]);
         return row;
     }
 
@@ -218,6 +231,7 @@ private:
         row.domain = id(rows.domain[i]);
         if constexpr (bsc::detail::is_timeout_row<R>)
             row.delay = &delay_thunk<r>;
+        row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
         return row;
     }
 

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -17,15 +19,7 @@
 #include <bsc/compiled/machine.hpp>
 #include <bsc/data/timer.hpp>
 #include <bsc/detail/fields.hpp>
-
-namespace bsc::detail {
-
-template <class T>
-inline constexpr bool is_machine = false;
-template <class C, class P, class O>
-inline constexpr bool is_machine<bsc::machine<C, P, O>> = true;
-
-}  // namespace bsc::detail
+#include <bsc/runtime/driver.hpp>
 
 namespace bsc::verify {
 /// Specialize as true for a context member type that does not influence behaviour (a log, a
@@ -42,16 +36,34 @@ constexpr bool is_aggregate_class() {
     return std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_base_of_v<bsc::detail::channel_base, T>;
 }
 
+// Periods since a timer or timeout started are kept in this many bits. The count is capped
+// one period past the longest delay that can still matter, so it never wraps: a model whose
+// delays need more periods than fit is refused (time_frame::cycles throws), never explored
+// with a counter that would silently restart at zero.
+inline constexpr unsigned cycle_bits = 32;
+inline constexpr std::uint64_t max_cycles = (std::uint64_t{1} << cycle_bits) - 1;
+
 // Time as the codec sees it: the clock of the enclosing machine and the cycle period
 // (zero for models that never step, where time does not pass).
 struct time_frame {
     duration clock{};
     duration period{};
-    constexpr std::uint16_t cycles(duration d, duration cap) const {
-        if (period <= duration::zero() || d <= duration::zero()) return 0;
-        auto const capped = std::min(d, cap + period);
-        return static_cast<std::uint16_t>(capped / period);
+    // The whole periods in `since .. clock`, capped at cap + one period.
+    std::uint64_t cycles(duration since, duration cap) const {
+        if (period <= duration::zero()) return 0;
+        auto const d = elapsed(since, clock);
+        if (d <= duration::zero()) return 0;
+        auto const limit = static_cast<std::uint64_t>(cap / period) + 1;
+        if (limit > max_cycles)
+            throw std::length_error("bsc::verify: a delay of " + std::to_string(cap.count()) + " ns is " +
+                                    std::to_string(limit - 1) + " periods of " + std::to_string(period.count()) +
+                                    " ns, more than the explorer counts (" + std::to_string(max_cycles - 1) +
+                                    "); explore with a longer period");
+        auto const n = static_cast<std::uint64_t>(d / period);
+        return n < limit ? n : limit;
     }
+    // The time `cycles` periods before the clock.
+    duration before(std::uint64_t cycles) const { return clock - static_cast<duration::rep>(cycles) * period; }
 };
 
 // Keys are bit strings: a flag takes one bit, a composite's byte only the bits its number of
@@ -143,7 +155,6 @@ struct fields_bits<std::tuple<F&...>> {
     static constexpr std::size_t value = (std::size_t{0} + ... + encoded_bits<std::remove_cv_t<F>>());
 };
 
-inline constexpr unsigned cycle_bits = 16;  // periods since a timer or timeout started, capped
 
 template <class T>
 constexpr std::size_t encoded_bits() {
@@ -213,14 +224,14 @@ void encode(T const& value, bit_writer& out, time_frame frame) {
         auto const& armed = access::armed(m);
         for (std::size_t i = 0; i < armed.size(); ++i)
             out.put(access::timeout_armed(m, i)
-                        ? own.cycles(own.clock - armed[i], access::longest_timeout(m))
+                        ? own.cycles(armed[i], access::longest_timeout(m))
                         : 0,
                     cycle_bits);
     } else if constexpr (std::is_same_v<T, timer>) {
         out.put(access::timer_phase(value), 2);
         out.put(value.expired() ? 1u : 0u, 1);
         bool const timing = access::timer_phase(value) == 2;  // running, expired or not
-        out.put(timing ? frame.cycles(frame.clock - access::timer_started(value), value.limit()) : 0, cycle_bits);
+        out.put(timing ? frame.cycles(access::timer_started(value), value.limit()) : 0, cycle_bits);
     } else if constexpr (is_channel<T>) {
         encode(value.pending(), out, frame);  // a channel of an aggregate: member by member too
         encode(value.get(), out, frame);
@@ -239,15 +250,15 @@ void decode(T& value, bit_reader& in, time_frame frame) {
         auto& cfg = access::configuration(value);
         constexpr auto bits = slot_bits<T>();
         for (std::size_t k = 0; k < bits.size(); ++k) cfg.active[k] = static_cast<std::uint8_t>(in.get(bits[k]));
-        access::clock(value) = frame.clock;
+        access::set_clock(value, frame.clock);
         decode(value.context(), in, frame);
         for (auto& armed : access::armed(value))
-            armed = frame.clock - static_cast<int>(in.get(cycle_bits)) * frame.period;
+            armed = frame.before(in.get(cycle_bits));
     } else if constexpr (std::is_same_v<T, timer>) {
         auto const phase = static_cast<std::uint8_t>(in.get(2));
         bool const expired = in.get(1) != 0;
-        auto const elapsed = static_cast<int>(in.get(cycle_bits)) * frame.period;
-        access::set_timer(value, phase, expired, frame.clock - elapsed, elapsed);
+        auto const started = frame.before(in.get(cycle_bits));
+        access::set_timer(value, phase, expired, started, frame.clock - started);
     } else if constexpr (is_channel<T>) {
         using V = channel_value<T>;
         V pending = value.pending();

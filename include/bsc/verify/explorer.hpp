@@ -15,6 +15,7 @@
 //   std::string label(std::uint16_t) const;              // for traces
 //   std::string describe(state const&) const;            // for traces: the configuration by name
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -56,7 +57,7 @@ public:
         if (ran_) return stats_;
         ran_ = true;
         auto const start = std::chrono::steady_clock::now();
-        table_.assign(1u << 16, none);
+        table_.assign(1u << 10, none);  // doubled as states come
         std::vector<std::byte> scratch(key_size);
         state const init = model_.initial();
         model_.encode(init, scratch.data());
@@ -70,12 +71,15 @@ public:
             if (!within_bounds()) break;
             edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
             state const s = model_.decode(key(i));
+            std::size_t successors = 0;
             model_.successors(s, [&](std::uint16_t label, state const& next) {
                 model_.encode(next, scratch.data());
                 std::uint32_t const j = insert(scratch.data(), static_cast<std::uint32_t>(i), label);
                 edge_to_.push_back(j);
                 edge_label_.push_back(label);
+                ++successors;
             });
+            most_successors_ = std::max(most_successors_, successors);
         }
         stats_.complete = stats_.stopped_by.empty();
         while (edge_begin_.size() < count()) edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
@@ -145,12 +149,27 @@ private:
                edge_label_.capacity() * 2;
     }
 
+    // What the containers may hold at the peak of the next state's expansion, which adds at
+    // most most_successors_ states and edges: a vector that must grow holds its old and its
+    // new buffer at once, the hash table its old and its doubled array.
+    std::size_t peak_of_next_expansion() const {
+        std::size_t const more = std::max<std::size_t>(most_successors_, 1);
+        auto growth = [&](auto const& v, std::size_t added) -> std::size_t {
+            if (v.size() + added <= v.capacity()) return 0;
+            return std::max(v.capacity() * 2, v.size() + added) * sizeof(v[0]);
+        };
+        std::size_t peak = memory() + growth(keys_, more * key_size) + growth(parent_, more) + growth(via_, more) +
+                           growth(edge_begin_, 1) + growth(edge_to_, more) + growth(edge_label_, more);
+        if ((count() + more) * 2 > table_.size()) peak += table_.size() * 2 * sizeof(std::uint32_t);
+        return peak;
+    }
+
     bool within_bounds() {
         if (count() > bounds_.max_states) {
             stats_.stopped_by = "max_states (" + std::to_string(bounds_.max_states) + ")";
             return false;
         }
-        if (memory() > bounds_.max_memory_bytes) {
+        if (peak_of_next_expansion() > bounds_.max_memory_bytes) {
             stats_.stopped_by = "max_memory_bytes (" + std::to_string(bounds_.max_memory_bytes) + ")";
             return false;
         }
@@ -168,6 +187,7 @@ private:
     std::vector<std::uint32_t> edge_begin_;
     std::vector<std::uint32_t> edge_to_;
     std::vector<std::uint16_t> edge_label_;
+    std::size_t most_successors_ = 0;  // of any state expanded so far
 };
 
 }  // namespace bsc::verify

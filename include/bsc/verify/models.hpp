@@ -4,7 +4,8 @@
 //  - cycle_model: a machine stepped with a fixed period, its inputs drawn each cycle from
 //    a finite set of choices the user declares;
 //  - system_model: any aggregate of machines and plant models, stepped by a user function
-//    with a finite set of choices per cycle (the closed loop of seeds 002 and 003).
+//    with a finite set of choices per cycle (the closed loops of the [BSC] and [COMDES] papers,
+//    docs/references.md).
 // Time is made relative: every explored state is decoded with its machines' clocks at the
 // same origin, so states that differ only in absolute time are one state.
 

@@ -1,0 +1,24 @@
+# The library's headers under the warnings users commonly turn on: every public header, and
+# tests/strict/strict_use.cpp, which instantiates both back ends on the examples' charts, a
+# system, the exports and the explorer, compiled with the flags below and -Werror. Part of the
+# build, so a warning in a header fails it; ctest `strict_warnings` checks the target is built.
+set(BSC_STRICT_WARNING_FLAGS
+  -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion -Wold-style-cast -Werror)
+
+file(GLOB_RECURSE bsc_strict_headers CONFIGURE_DEPENDS RELATIVE ${PROJECT_SOURCE_DIR}/include
+  ${PROJECT_SOURCE_DIR}/include/bsc/*.hpp)
+list(SORT bsc_strict_headers)
+set(bsc_strict_includes "")
+foreach(header IN LISTS bsc_strict_headers)
+  string(APPEND bsc_strict_includes "#include <${header}>\n")
+endforeach()
+file(CONFIGURE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/strict/all_headers.cpp @ONLY CONTENT "${bsc_strict_includes}")
+
+add_library(bsc_strict_warnings OBJECT
+  ${CMAKE_CURRENT_BINARY_DIR}/strict/all_headers.cpp
+  strict/strict_use.cpp)
+target_link_libraries(bsc_strict_warnings PRIVATE bsc::bsc)
+target_include_directories(bsc_strict_warnings PRIVATE ${PROJECT_SOURCE_DIR}/examples)
+target_compile_options(bsc_strict_warnings PRIVATE ${BSC_STRICT_WARNING_FLAGS})
+add_test(NAME strict_warnings
+  COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --target bsc_strict_warnings --config $<CONFIG>)
