@@ -80,6 +80,7 @@ inline char const* name(bsc::outcome o) {
         case bsc::outcome::livelock: return "livelock";
         case bsc::outcome::halted: return "halted";
         case bsc::outcome::reentrant: return "reentrant";
+        case bsc::outcome::failed: return "failed";
     }
     return "?";
 }

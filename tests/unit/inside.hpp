@@ -55,6 +55,9 @@ using bsc::detail::last_scopes;
 using bsc::detail::unique_identifiers;
 using bsc::detail::unique_names;
 
+// Where the table engine's entry and exit thunks report failures.
+using failure_sink = bsc::detail::failure_sink;
+
 // The explorer's encoding of a value.
 template <class T>
 using codec = bsc::detail::codec<T>;

@@ -131,8 +131,9 @@ TEST_CASE("table: the topology table of the MCS holds the rows of Figure 12") {
     // The Entry and Exit columns call Show.
     panel p;
     inside::queue_type<bsc::table::machine<decltype(chart)>> raise;
-    st[id<On>].entry(chart, p, raise);
-    st[id<MEM>].exit(chart, p, raise);
+    inside::failure_sink const failures{};  // Show does not throw
+    st[id<On>].entry(chart, p, raise, failures);
+    st[id<MEM>].exit(chart, p, raise, failures);
     CHECK(p.shown == "+On-MEM");
     // The derived columns: initial children, configuration bytes, subtrees.
     static_assert(st[id<MCS>].initial == id<Off> && st[id<Manual>].initial == id<JOG>);
@@ -252,10 +253,14 @@ TEST_CASE("table: timeout rows read their delay from the chart; their origins ke
     CHECK(t[4].delay(chart) == 3s);
     CHECK((tbl::mcs_like::set(t[2].guard) && !tbl::mcs_like::set(t[0].guard)));
     CHECK((!tbl::mcs_like::set(t[1].delay) && !tbl::mcs_like::set(t[5].delay)));
-    // One entry time per state that a timeout leaves, numbered in document order.
-    static_assert(tables::timeout_slots == 3);
+    // One slot per timeout row, numbered by origin in document order, then by row: a state's
+    // slots are contiguous, and its entry arms them all.
+    static_assert(tables::timeout_slots == 4);
     static_assert(tables::states[id<L1>].timeout_slot == 0 && tables::states[id<Right>].timeout_slot == 1);
-    static_assert(tables::states[id<Wait>].timeout_slot == 2 && tables::states[id<L2>].timeout_slot == -1);
+    static_assert(tables::states[id<Wait>].timeout_slot == 2 && tables::states[id<Wait>].timeout_slots == 2);
+    static_assert(tables::states[id<L2>].timeout_slot == -1 && tables::states[id<L2>].timeout_slots == 0);
+    static_assert(t[0].timeout_slot == 0 && t[1].timeout_slot == -1 && t[2].timeout_slot == 1);
+    static_assert(t[3].timeout_slot == 2 && t[4].timeout_slot == 3 && t[5].timeout_slot == -1);
     // The components of a cycle: the root and the regions of the parallel state, in document order.
     static_assert(tables::components.size() == 3);
     static_assert(tables::components[0] == id<Top> && tables::components[1] == id<Left> &&
