@@ -13,9 +13,18 @@ foreach(header IN LISTS bsc_strict_headers)
   string(APPEND bsc_strict_includes "#include <${header}>\n")
 endforeach()
 file(CONFIGURE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/strict/all_headers.cpp @ONLY CONTENT "${bsc_strict_includes}")
+# The same headers in the reverse order: a header must not depend on what happened to be
+# included before it (a name of bsc::detail hiding a public one, for instance).
+list(REVERSE bsc_strict_headers)
+set(bsc_strict_includes "")
+foreach(header IN LISTS bsc_strict_headers)
+  string(APPEND bsc_strict_includes "#include <${header}>\n")
+endforeach()
+file(CONFIGURE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/strict/all_headers_reversed.cpp @ONLY CONTENT "${bsc_strict_includes}")
 
 add_library(bsc_strict_warnings OBJECT
   ${CMAKE_CURRENT_BINARY_DIR}/strict/all_headers.cpp
+  ${CMAKE_CURRENT_BINARY_DIR}/strict/all_headers_reversed.cpp
   strict/strict_use.cpp)
 target_link_libraries(bsc_strict_warnings PRIVATE bsc::bsc)
 target_include_directories(bsc_strict_warnings PRIVATE ${PROJECT_SOURCE_DIR}/examples)

@@ -3730,7 +3730,7 @@ public:
 
     /// The names of the active states, outermost first, in document order.
     constexpr auto active_states() const {
-        state_names<state_count> names;
+        bsc::state_names<state_count> names;
         auto const active = active_flags();
         for (std::size_t s = 1; s < state_count; ++s)
             if (active[s]) names.push_back(state_names_by_index[s]);

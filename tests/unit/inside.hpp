@@ -8,6 +8,8 @@
 #include <type_traits>
 #include <utility>
 
+#include <boost/hana/unpack.hpp>
+
 #include <bsc/bsc.hpp>
 #include <bsc/compiled/plan.hpp>
 #include <bsc/detail/access.hpp>
@@ -54,6 +56,68 @@ using bsc::detail::identifier;
 using bsc::detail::last_scopes;
 using bsc::detail::unique_identifiers;
 using bsc::detail::unique_names;
+
+// ---- fault injection -------------------------------------------------------------------
+// with_faults<Injector>(chart) is the same chart with every guard and every action (transition,
+// entry and exit rows alike) calling Injector::point() first, so a test can make any call site
+// throw in turn. The rows keep their sources, triggers and targets.
+template <class Injector, class Guard>
+struct faulty_guard {
+    Guard inner;
+    template <class Ctx, class E>
+    constexpr bool operator()(Ctx const& context, E const& event) const {
+        Injector::point();
+        return static_cast<bool>(inner(context, event));
+    }
+};
+template <class Injector, class Action>
+struct faulty_action {
+    Action inner;
+    template <class... Arguments>
+    constexpr void operator()(Arguments&... arguments) const {
+        Injector::point();
+        inner(arguments...);
+    }
+};
+
+template <class Injector, class Action>
+constexpr auto faulty_transition_action(Action const& action) {
+    if constexpr (std::is_same_v<Action, bsc::detail::no_action>)
+        return action;  // no call site
+    else
+        return faulty_action<Injector, Action>{action};
+}
+
+template <class Injector, class Row>
+constexpr auto faulty_row(Row const& row) {
+    using namespace bsc::detail;
+    if constexpr (is_transition_row<Row>) {
+        auto const guard = [&] {
+            if constexpr (Row::guarded)
+                return faulty_guard<Injector, std::remove_cvref_t<decltype(row.guard)>>{row.guard};
+            else
+                return row.guard;
+        }();
+        auto const action = faulty_transition_action<Injector>(row.action);
+        return transition_row<typename Row::source, typename Row::trigger, std::remove_cvref_t<decltype(guard)>,
+                              std::remove_cvref_t<decltype(action)>, typename Row::target>{{}, row.trigger_value, guard,
+                                                                                          action};
+    } else if constexpr (is_entry_row<Row>) {
+        auto const action = faulty_action<Injector, std::remove_cvref_t<decltype(row.action)>>{row.action};
+        return entry_row<typename Row::source, std::remove_cvref_t<decltype(action)>>{{}, action};
+    } else {
+        auto const action = faulty_action<Injector, std::remove_cvref_t<decltype(row.action)>>{row.action};
+        return exit_row<typename Row::source, std::remove_cvref_t<decltype(action)>>{{}, action};
+    }
+}
+
+template <class Injector, class Chart>
+constexpr auto with_faults(Chart const& chart) {
+    return boost::hana::unpack(chart.rows, [](auto const&... rows) {
+        return bsc::make_chart<typename Chart::context_type>(typename Chart::root_type{},
+                                                             faulty_row<Injector>(rows)...);
+    });
+}
 
 // Where the table engine's entry and exit thunks report failures.
 using failure_sink = bsc::detail::failure_sink;

@@ -224,9 +224,9 @@ struct diagram {
 };
 
 template <class Tags>
-struct state_names;
+struct state_name_list;
 template <class... Tags>
-struct state_names<type_list<Tags...>> {
+struct state_name_list<type_list<Tags...>> {
     static std::vector<std::string_view> unqualified() { return {name_of<Tags>...}; }
     static std::vector<std::string_view> qualified() { return {qualified_name<Tags>...}; }
 };
@@ -311,8 +311,8 @@ diagram model_of(Chart const& chart) {
     using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
     constexpr auto const& tree = model::tree;
     diagram m;
-    auto const names = state_names<typename model::tags>::unqualified();
-    auto const qualified = state_names<typename model::tags>::qualified();
+    auto const names = state_name_list<typename model::tags>::unqualified();
+    auto const qualified = state_name_list<typename model::tags>::qualified();
     // Index 0 of the analysis is the implicit top above the root; the model starts at the root.
     std::vector<std::string_view> const own(names.begin() + 1, names.end());
     std::vector<std::string_view> const own_qualified(qualified.begin() + 1, qualified.end());
