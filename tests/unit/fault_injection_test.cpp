@@ -175,7 +175,7 @@ struct robot_fixture {
 // Every call site of an example controller: each fault reaches the caller (no row of these
 // charts takes bsc::action_failed) and no run breaks the ledger.
 template <class Backend, class Fixture>
-void check_every_site(char const* name, int steps, std::uint32_t seed) {
+void check_every_site(std::string const& name, int steps, std::uint32_t seed) {
     auto const t = inject_everywhere<Backend, Fixture>(steps, seed);
     MESSAGE(name << ": " << t.sites << " call sites, " << t.thrown << " faults reached the caller");
     CHECK(t.sites > 50);
