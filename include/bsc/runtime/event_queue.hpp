@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <variant>
 
 #include <bsc/error.hpp>
@@ -30,7 +31,13 @@ public:
                 overflowed_ = true;
                 return false;
             }
-            items_[(head_ + size_) % Capacity].template emplace<E>(e);
+            auto& slot = items_[(head_ + size_) % Capacity];
+            // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
+            // 14 cannot emplace into a variant in a constant expression, so that assigns.
+            if (std::is_constant_evaluated())
+                slot = value_type{std::in_place_type<E>, e};
+            else
+                slot.template emplace<E>(e);
             ++size_;
             return true;
         }
