@@ -57,9 +57,15 @@ struct log_ctx {
 template <int R>
 inline constexpr auto note = [](log_ctx& c) { c.log += std::to_string(R); };
 template <int R>
-inline constexpr auto exit_note = [](log_ctx& c) { c.log += "x" + std::to_string(R); };
+inline constexpr auto exit_note = [](log_ctx& c) {  // appended in two: GCC 12 -O3 misfires -Wrestrict on "x" + s
+    c.log += 'x';
+    c.log += std::to_string(R);
+};
 template <int R>
-inline constexpr auto entry_note = [](log_ctx& c) { c.log += "e" + std::to_string(R); };
+inline constexpr auto entry_note = [](log_ctx& c) {
+    c.log += 'e';
+    c.log += std::to_string(R);
+};
 
 template <int R>
 constexpr auto region() {
