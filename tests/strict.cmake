@@ -25,7 +25,9 @@ file(CONFIGURE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/strict/all_headers_reversed.cp
 add_library(bsc_strict_warnings OBJECT
   ${CMAKE_CURRENT_BINARY_DIR}/strict/all_headers.cpp
   ${CMAKE_CURRENT_BINARY_DIR}/strict/all_headers_reversed.cpp
-  strict/strict_use.cpp)
+  strict/strict_use.cpp
+  strict/no_exceptions.cpp)
+set_source_files_properties(strict/no_exceptions.cpp PROPERTIES COMPILE_OPTIONS -fno-exceptions)
 target_link_libraries(bsc_strict_warnings PRIVATE bsc::bsc)
 target_include_directories(bsc_strict_warnings PRIVATE ${PROJECT_SOURCE_DIR}/examples)
 target_compile_options(bsc_strict_warnings PRIVATE ${BSC_STRICT_WARNING_FLAGS})

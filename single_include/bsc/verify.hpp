@@ -18,6 +18,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -60,13 +61,23 @@ struct time_frame {
         auto const d = elapsed(since, clock);
         if (d <= duration::zero()) return 0;
         auto const limit = static_cast<std::uint64_t>(cap / period) + 1;
-        if (limit > max_cycles)
-            throw std::length_error("bsc::verify: a delay of " + std::to_string(cap.count()) + " ns is " +
-                                    std::to_string(limit - 1) + " periods of " + std::to_string(period.count()) +
-                                    " ns, more than the explorer counts (" + std::to_string(max_cycles - 1) +
-                                    "); explore with a longer period");
+        if (limit > max_cycles) refuse(cap, limit - 1);
         auto const n = static_cast<std::uint64_t>(d / period);
         return n < limit ? n : limit;
+    }
+    // A delay of more periods than the counter holds: no exploration may rest on a counter that
+    // would wrap. Thrown, or printed before aborting where exceptions are disabled.
+    [[noreturn]] void refuse(duration delay, std::uint64_t periods) const {
+        std::string const why = "bsc::verify: a delay of " + std::to_string(delay.count()) + " ns is " +
+                                std::to_string(periods) + " periods of " + std::to_string(period.count()) +
+                                " ns, more than the explorer counts (" + std::to_string(max_cycles - 1) +
+                                "); explore with a longer period";
+#if defined(__cpp_exceptions)
+        throw std::length_error(why);
+#else
+        std::fputs((why + "\n").c_str(), stderr);
+        std::abort();
+#endif
     }
     // The time `cycles` periods before the clock.
     duration before(std::uint64_t cycles) const { return clock - static_cast<duration::rep>(cycles) * period; }
