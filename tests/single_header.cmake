@@ -1,7 +1,8 @@
 # The unit tests once more, against the single header: bsc_tests_single is built from the same
 # sources as bsc_tests with single_include/ before include/ on the include path, so that
 # <bsc/bsc.hpp>, <bsc/verify.hpp> and <bsc/export.hpp> are the generated single headers.
-# It doubles the compile time of the unit tests; BSC_TEST_SINGLE_HEADER=OFF leaves it out.
+# It doubles the compile time of the unit tests; BSC_TEST_SINGLE_HEADER=OFF leaves it out (the
+# dev preset does; the clang preset builds it instead of the unit tests against include/).
 #
 # Some test sources include a header of the library directly (<bsc/table/engine.hpp>). Under
 # single_include/ that header would be found in include/ and define again what the single

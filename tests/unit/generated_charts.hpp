@@ -12,7 +12,8 @@
 //   - every state is reachable (an unreachable one gets a transition from a reachable state);
 //   - every basic state has a way out (one is added where missing).
 // gen::generated<Seed> wraps a chart as a fixture for differential.hpp, gen::generated_scan<Seed>
-// the same chart under a scan policy.
+// the same chart under a scan policy. gen::skeleton<K> is a chart whose rows are drawn again at
+// run time by gen::draw (see "skeletons" below): one compiled chart that stands for many.
 
 #include <array>
 #include <chrono>
@@ -202,7 +203,10 @@ struct rng {
     constexpr bool chance(int percent) { return below(100) < percent; }
 };
 
-constexpr spec make_spec(std::uint64_t seed) {
+// A skeleton (see drawn_charts below) draws the same tree and rows from its seed, but every
+// transition row has a guard and an action and every entry and exit row is there; the draws
+// that would have left them out are still made, so the random sequence is the same.
+constexpr spec make_spec(std::uint64_t seed, bool skeleton = false) {
     rng g{seed * 0x2545f4914f6cdd1dull + 17};
     spec s{};
     s.n = 8 + g.below(max_states - 8 + 1);
@@ -265,11 +269,13 @@ constexpr spec make_spec(std::uint64_t seed) {
         x.from = pick_source();
         int const trigger = g.below(100);
         x.event = trigger < 8 ? eventless : trigger < 22 ? timeout : g.below(s.events);
-        x.guarded = x.event == eventless || g.chance(50);
+        bool const guarded = x.event == eventless || g.chance(50);
+        x.guarded = skeleton || guarded;
         // An eventless internal transition would fire again at once: eventless ones have targets.
         // An internal timeout is never re-armed: it fires in every cycle once due.
         x.to = x.event != eventless && g.chance(12) ? -1 : pick_target(x.from);
-        x.acts = x.event == eventless || g.chance(65);
+        bool const acts = x.event == eventless || g.chance(65);
+        x.acts = skeleton || acts;
         if (x.event == timeout)
             x.delay = 5 * (1 + g.below(12));
         if (s.may_add(x.from, x.event, x.guarded))
@@ -302,7 +308,8 @@ constexpr spec make_spec(std::uint64_t seed) {
         for (int e = 0; e < s.events; ++e)
             if (s.may_add(from, e, true))
                 event = e;
-        s.add(row{row_kind::transition, from, event, t, true, event < 0 || g.chance(50)});
+        bool const acts = event < 0 || g.chance(50);
+        s.add(row{row_kind::transition, from, event, t, true, skeleton || acts});
     }
     // Every basic state has a way out: a transition to a state that does not lead back to it
     // (or, failing that, the state becomes final).
@@ -322,22 +329,29 @@ constexpr spec make_spec(std::uint64_t seed) {
         }
         if (to < 0)
             s.nodes[static_cast<std::size_t>(x)].kind = node_kind::final_state;
-        else
-            s.add(row{row_kind::transition, x, event, to, event == eventless || g.chance(40),
-                      event == eventless || g.chance(50), event == timeout ? 5 * (1 + g.below(12)) : 0});
+        else {
+            bool const guarded = event == eventless || g.chance(40);
+            bool const acts = event == eventless || g.chance(50);
+            s.add(row{row_kind::transition, x, event, to, skeleton || guarded, skeleton || acts,
+                      event == timeout ? 5 * (1 + g.below(12)) : 0});
+        }
     }
     // Entry and exit actions.
     for (int x = 0; x < s.n && s.r < max_rows - 1; ++x) {
-        if (g.chance(45))
+        if (g.chance(45) || skeleton)
             s.add(row{row_kind::entry, x, -1, -1, false, true});
-        if (g.chance(45) && s.r < max_rows)
+        if ((g.chance(45) || skeleton) && s.r < max_rows)
             s.add(row{row_kind::exit, x, -1, -1, false, true});
     }
     return s;
 }
 
+/// Seeds from here on are skeletons.
+inline constexpr std::uint64_t first_skeleton = std::uint64_t{1} << 32;
+constexpr bool is_skeleton(std::uint64_t seed) { return seed >= first_skeleton; }
+
 template <std::uint64_t Seed>
-inline constexpr spec spec_of = make_spec(Seed);
+inline constexpr spec spec_of = make_spec(Seed, is_skeleton(Seed));
 
 // What a guard or an action does, drawn from the seed and the row.
 struct behaviour {
@@ -466,6 +480,112 @@ struct state_action {
     }
 };
 
+// ---- skeletons: charts drawn at run time -----------------------------------------------------
+// A compiled chart costs seconds of compile time, so a test over a thousand charts cannot
+// compile a thousand. A skeleton's rows read what they are from `drawing<Seed>`, which
+// draw<Seed>(d) fills from a second seed d: whether each row is live (a dead transition's guard
+// is false, a dead entry or exit action does nothing), whether a live transition is guarded,
+// whether it acts, and what its guard tests and its action writes and raises (behaviour_of).
+// Each draw is a chart of its own on the skeleton's tree: its live rows, in the skeleton's
+// order, behave as the rows of a chart with those rows only. The static checks see the
+// skeleton, whose rows are all guarded, so they hold for every draw.
+
+struct live_row {
+    bool live = true;
+    bool guarded = true;
+    bool acts = true;
+    behaviour what{};
+};
+
+template <std::uint64_t Seed>
+inline std::array<live_row, max_rows> drawing{};
+
+template <std::uint64_t Seed>
+void draw(std::uint64_t d) {
+    static_assert(is_skeleton(Seed));
+    constexpr spec const& s = spec_of<Seed>;
+    rng g{d * 0x9e3779b97f4a7c15ull + Seed};
+    for (int i = 0; i < s.r; ++i) {
+        auto const& x = s.rows[static_cast<std::size_t>(i)];
+        auto& l = drawing<Seed>[static_cast<std::size_t>(i)];
+        bool const transition = x.kind == row_kind::transition;
+        // An eventless transition is always guarded, and its action falsifies its guard.
+        bool const eventless_row = transition && x.event == eventless;
+        l.live = g.chance(transition ? 75 : 50);
+        l.guarded = eventless_row || g.chance(50);
+        l.acts = eventless_row || g.chance(65);
+        l.what = behaviour_of(d, x, i, s.events);
+    }
+}
+
+constexpr int read_var(behaviour const& b, gctx const& c) {
+    if (b.var == channel_var) return c.in.get();
+    if (b.var == timer_var) return c.t.tm() ? 1 : 0;
+    return c.v[static_cast<std::size_t>(b.var)];
+}
+
+template <std::uint64_t Seed, int Row>
+struct drawn_guard {
+    template <class E>
+    bool operator()(gctx const& c, E const& e) const {
+        auto const& l = drawing<Seed>[static_cast<std::size_t>(Row)];
+        if (!l.live) return false;
+        if (!l.guarded) return true;
+        return (read_var(l.what, c) + (l.what.use_event ? payload(e) : 0)) % l.what.mod == l.what.rem;
+    }
+};
+
+template <std::uint64_t Seed>
+void drawn_act(gctx& c, int row, int data, auto& raise) {
+    auto const& l = drawing<Seed>[static_cast<std::size_t>(row)];
+    if (!l.live || !l.acts) return;
+    auto const& b = l.what;
+    c.log = (c.log ^ static_cast<std::uint32_t>(row)) * 16777619u + 1u;
+    int written = 0;
+    if (b.var == channel_var) {
+        written = (c.out.pending() + b.add + (b.use_event ? data : 0)) % 16;
+        c.out.set(written);
+    } else if (b.var == timer_var) {
+        if (b.add % 2 == 1)
+            c.t.start();
+        else
+            c.t.reset();
+        written = b.add;
+    } else {
+        auto& v = c.v[static_cast<std::size_t>(b.var)];
+        written = v = (v + b.add + (b.use_event ? data : 0)) % 16;
+    }
+    if (b.raise >= 0)
+        [&]<int... K>(std::integer_sequence<int, K...>) {
+            ((b.raise == K ? static_cast<void>(raise(ev<Seed, K>{written % 8})) : void()), ...);
+        }(std::make_integer_sequence<int, spec_of<Seed>.events>{});
+}
+
+template <std::uint64_t Seed, int Row>
+struct drawn_action {
+    template <class E, class Raise>
+    void operator()(gctx& c, E const& e, Raise& raise) const {
+        drawn_act<Seed>(c, Row, payload(e), raise);
+    }
+};
+
+template <std::uint64_t Seed, int Row>
+struct drawn_state_action {
+    template <class Raise>
+    void operator()(gctx& c, Raise& raise) const {
+        drawn_act<Seed>(c, Row, 0, raise);
+    }
+};
+
+template <std::uint64_t Seed, int Row>
+using guard_t = std::conditional_t<is_skeleton(Seed), drawn_guard<Seed, Row>, guard<Seed, Row>>;
+template <std::uint64_t Seed, int Row>
+using action_t = std::conditional_t<is_skeleton(Seed), drawn_action<Seed, Row>, action<Seed, Row>>;
+template <std::uint64_t Seed, int Row>
+using state_action_t = std::conditional_t<is_skeleton(Seed), drawn_state_action<Seed, Row>, state_action<Seed, Row>>;
+
+// ---- the chart ------------------------------------------------------------------------------
+
 template <std::uint64_t Seed, int I>
 constexpr auto make_node() {
     constexpr node nd = spec_of<Seed>.nodes[static_cast<std::size_t>(I)];
@@ -501,26 +621,26 @@ constexpr auto make_row() {
     constexpr row x = row_at<Seed, J>;
     using from = S<Seed, x.from>;
     if constexpr (x.kind == row_kind::entry) {
-        return bsc::state<from> + bsc::on_entry / state_action<Seed, J>{};
+        return bsc::state<from> + bsc::on_entry / state_action_t<Seed, J>{};
     } else if constexpr (x.kind == row_kind::exit) {
-        return bsc::state<from> + bsc::on_exit / state_action<Seed, J>{};
+        return bsc::state<from> + bsc::on_exit / state_action_t<Seed, J>{};
     } else {
         auto const triggered = [] {
             constexpr auto delay = std::chrono::milliseconds{row_at<Seed, J>.delay};
             if constexpr (row_at<Seed, J>.event == timeout && row_at<Seed, J>.guarded)
-                return bsc::state<from> + bsc::after(delay)[guard<Seed, J>{}];
+                return bsc::state<from> + bsc::after(delay)[guard_t<Seed, J>{}];
             else if constexpr (row_at<Seed, J>.event == timeout)
                 return bsc::state<from> + bsc::after(delay);
             else if constexpr (row_at<Seed, J>.event == eventless)
-                return bsc::state<from>[guard<Seed, J>{}];
+                return bsc::state<from>[guard_t<Seed, J>{}];
             else if constexpr (row_at<Seed, J>.guarded)
-                return bsc::state<from> + bsc::event<ev<Seed, row_at<Seed, J>.event>>[guard<Seed, J>{}];
+                return bsc::state<from> + bsc::event<ev<Seed, row_at<Seed, J>.event>>[guard_t<Seed, J>{}];
             else
                 return bsc::state<from> + bsc::event<ev<Seed, row_at<Seed, J>.event>>;
         }();
         auto const acted = [&] {
             if constexpr (row_at<Seed, J>.acts)
-                return triggered / action<Seed, J>{};
+                return triggered / action_t<Seed, J>{};
             else
                 return triggered;
         }();
@@ -565,5 +685,9 @@ struct generated {
 };
 template <std::uint64_t Seed>
 using generated_scan = generated<Seed, scan_limits>;
+
+/// The K-th skeleton.
+template <std::uint64_t K, class Policy = limits>
+using skeleton = generated<first_skeleton + K, Policy>;
 
 }  // namespace gen
