@@ -2,6 +2,11 @@
 // bsc::make_chart: a chart is its state tree and its rows, checked when it is declared.
 
 #include <boost/hana/basic_tuple.hpp>
+#include <boost/hana/unpack.hpp>
+#include <array>
+#include <cstddef>
+#include <cstdlib>
+#include <stdexcept>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -9,6 +14,7 @@
 #include <bsc/error.hpp>
 #include <bsc/checks/checks.hpp>
 #include <bsc/detail/meta.hpp>
+#include <bsc/duration.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/dsl/tree.hpp>
 
@@ -51,6 +57,66 @@ struct chart {
     boost::hana::basic_tuple<Rows...> rows;
 };
 
+namespace detail {
+// Deliberately not constexpr (as bsc_after_negative_delay): in a constexpr chart, reaching it is
+// the compile error, and its name says what is wrong; a chart built at run time throws.
+[[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout() {
+#if defined(__cpp_exceptions)
+    throw std::invalid_argument(
+        "bsc::make_chart: a timeout row can never fire: an unguarded timeout of the same state with a target "
+        "and a shorter (or equal, and earlier) delay always leaves the state first");
+#else
+    std::abort();
+#endif
+}
+
+// The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
+// a timeout row of S behind an unguarded timeout row of S with a target and a shorter delay, or
+// an equal one declared earlier, which always fires first and leaves S, so the clock of the
+// other starts again before it is due.
+template <class Chart, class Rows>
+constexpr void check_timeout_rows(Rows const& rows) {
+    using model = chart_model<Chart>;
+    constexpr auto const& r = model::rows;
+    constexpr std::size_t count = r.kinds.size();
+    if constexpr (count > 0) {
+        std::array<duration, count> delay{};
+        boost::hana::unpack(rows, [&](auto const&... row) {
+            std::size_t i = 0;
+            ((delay[i] = [&] {
+                  if constexpr (is_timeout_row<std::remove_cvref_t<decltype(row)>>)
+                      return row.trigger_value.delay;
+                  else
+                      return duration::zero();
+              }(),
+              ++i),
+             ...);
+        });
+        auto const timeout = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.trigger[i] <= -2; };
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!timeout(i) || r.guarded[i] || r.target[i] < 0) continue;
+            for (std::size_t j = 0; j < count; ++j)
+                if (j != i && timeout(j) && r.source[j] == r.source[i] &&
+                    (delay[i] < delay[j] || (delay[i] == delay[j] && i < j)))
+                    bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout();
+        }
+    }
+}
+
+// The chart, or, when its checks find errors, the rejected_chart whose destruction reports them.
+template <class Chart, class Rows>
+constexpr auto checked(Rows rows) {
+    return [&]<class... Errors>(type_list<Errors...>) {
+        if constexpr (sizeof...(Errors) == 0) {
+            check_timeout_rows<Chart>(rows);
+            return Chart{std::move(rows)};
+        } else {
+            return rejected_chart<typename Chart::context_type, Errors...>{};
+        }
+    }(check_chart<Chart>());
+}
+}  // namespace detail
+
 /// Declares a chart: first the state tree, then the rows (transitions, entry and exit actions).
 /// The static checks run here; a malformed chart fails to compile with an error that names
 /// the offending state (see docs/checks.md).
@@ -69,16 +135,14 @@ constexpr auto make_chart(Root root, Rows... rows) {
         return std::apply([&](auto... r) { return make_chart<Context>(root, std::move(r)...); },
                           std::tuple_cat(detail::row_tuple(std::move(rows))...));
     } else if constexpr (!detail::is_compound_root<Root>()) {
-        static_assert(error::root_must_be_composite<Root>::value);
-        return 0;
+        return detail::rejected_chart<Context, error::root_must_be_composite<Root>>{};
     } else if constexpr (!(detail::is_row<Rows> && ...)) {
         constexpr int bad = detail::index_in<std::false_type, std::bool_constant<detail::is_row<Rows>>...>();
-        static_assert(error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>::value);
-        return 0;
+        return detail::rejected_chart<Context,
+                                      error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>>{};
     } else {
         using chart_type = chart<Context, Root, Rows...>;
-        static_assert(detail::check_chart<chart_type>());
-        return chart_type{boost::hana::make_basic_tuple(std::move(rows)...)};
+        return detail::checked<chart_type>(boost::hana::make_basic_tuple(std::move(rows)...));
     }
 }
 

@@ -9,15 +9,28 @@
 // bsc::make_chart: a chart is its state tree and its rows, checked when it is declared.
 
 #include <boost/hana/basic_tuple.hpp>
+#include <boost/hana/unpack.hpp>
+#include <array>
+#include <cstddef>
+#include <cstdlib>
+#include <stdexcept>
 #include <tuple>
 #include <type_traits>
 #include <utility>
 
 // begin include/bsc/error.hpp
 // Every error bsc reports at compile time, in one place. Each is a class template whose
-// arguments are the culprits (states, events, callables), so the compiler's "in instantiation
-// of" line names them; its static_assert says what is wrong and how to fix it.
-// docs/checks.md lists them all with an example each.
+// arguments are the culprits (states, events, callables); the static_assert in its destructor
+// says what is wrong and how to fix it, and its condition, dependent_false<the error type>,
+// makes the compiler print the error's name with the culprits. The assertion sits in the
+// destructor so that it fires where an error object is destroyed, not where the class is
+// named: make_chart returns its findings as an object (detail::rejected_chart) whose
+// destructor raises them from a function the compiler instantiates at the end of the
+// translation unit, so the error's context is not make_chart<...the whole chart type...>.
+// detail::report<E>() raises one anywhere else. docs/checks.md lists them all with an example
+// each.
+
+#include <type_traits>
 
 // begin include/bsc/detail/meta.hpp
 // Small type-level toolkit: type lists, lookup by type and by position.
@@ -143,211 +156,306 @@ namespace bsc::error {
 
 template <class State>
 struct unreachable_state {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: unreachable state: no initial entry, history or transition can activate this state "
-                  "from the initial configuration; add a transition to it (or make it an initial child), or "
-                  "remove it");
-    static constexpr bool value = false;
+    constexpr ~unreachable_state() {
+        static_assert(detail::dependent_false<unreachable_state>,
+                      "bsc: unreachable state: no initial entry, history or transition can activate this state "
+                      "from the initial configuration; add a transition to it (or make it an initial child), or "
+                      "remove it");
+    }
 };
 
 template <class State>
 struct dead_end_state {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: dead end: no transition leaves this non-final state (neither from it, nor from an "
-                  "ancestor, nor from an orthogonal region); add one, or declare it with bsc::final_state");
-    static constexpr bool value = false;
+    constexpr ~dead_end_state() {
+        static_assert(detail::dependent_false<dead_end_state>,
+                      "bsc: dead end: no transition leaves this non-final state (neither from it, nor from an "
+                      "ancestor, nor from an orthogonal region); add one, or declare it with bsc::final_state");
+    }
 };
 
 template <class Source, class Trigger>
 struct conflicting_transitions {
-    static_assert(detail::dependent_false<Source>,
-                  "bsc: conflicting transitions: two unguarded transitions leave this state on the same "
-                  "trigger, so the chart is nondeterministic; guard one of them or remove one");
-    static constexpr bool value = false;
+    constexpr ~conflicting_transitions() {
+        static_assert(detail::dependent_false<conflicting_transitions>,
+                      "bsc: conflicting transitions: two unguarded transitions leave this state on the same "
+                      "trigger, so the chart is nondeterministic; guard one of them or remove one");
+    }
 };
 
 template <class Source, class Trigger, class Target>
 struct shadowed_transition {
-    static_assert(detail::dependent_false<Source>,
-                  "bsc: shadowed transition: an earlier unguarded transition from this state on the same "
-                  "trigger always wins, so the transition to Target can never fire; guard the earlier one or "
-                  "move this one before it");
-    static constexpr bool value = false;
+    constexpr ~shadowed_transition() {
+        static_assert(detail::dependent_false<shadowed_transition>,
+                      "bsc: shadowed transition: an earlier unguarded transition from this state on the same "
+                      "trigger always wins, so the transition to Target can never fire; guard the earlier one or "
+                      "move this one before it");
+    }
+};
+
+template <class Source, class Trigger, class Target>
+struct dead_transition {
+    constexpr ~dead_transition() {
+        static_assert(detail::dependent_false<dead_transition>,
+                      "bsc: dead transition: this row can never fire: its source is a final child of the root "
+                      "(the machine has halted there), or every state below its source takes the same event "
+                      "first with an unguarded row of its own; remove the row, guard the rows below, or move it "
+                      "(Target is bsc::detail::no_target for an internal row)");
+    }
 };
 
 template <class Source, class Target>
 struct transition_between_orthogonal_regions {
-    static_assert(detail::dependent_false<Source>,
-                  "bsc: transition between orthogonal regions: the source and the target lie in different "
-                  "regions of the same parallel state, which are always active together; target a state "
-                  "outside the parallel state instead");
-    static constexpr bool value = false;
+    constexpr ~transition_between_orthogonal_regions() {
+        static_assert(detail::dependent_false<transition_between_orthogonal_regions>,
+                      "bsc: transition between orthogonal regions: the source and the target lie in different "
+                      "regions of the same parallel state, which are always active together; target a state "
+                      "outside the parallel state instead");
+    }
 };
 
 template <class State>
 struct state_not_in_chart {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: a row names a state that the state tree does not declare; declare it in the tree "
-                  "(bsc::state, bsc::composite, bsc::parallel or bsc::final_state) or fix the row");
-    static constexpr bool value = false;
+    constexpr ~state_not_in_chart() {
+        static_assert(detail::dependent_false<state_not_in_chart>,
+                      "bsc: a row names a state that the state tree does not declare; declare it in the tree "
+                      "(bsc::state, bsc::composite, bsc::parallel or bsc::final_state) or fix the row");
+    }
 };
 
 template <class State>
 struct duplicate_state {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: this state is declared twice in the state tree; every state type may appear once");
-    static constexpr bool value = false;
+    constexpr ~duplicate_state() {
+        static_assert(detail::dependent_false<duplicate_state>,
+                      "bsc: this state is declared twice in the state tree; every state type may appear once");
+    }
 };
 
 template <class Composite>
 struct missing_initial_state {
-    static_assert(detail::dependent_false<Composite>,
-                  "bsc: this composite state has no initial child; add bsc::initial<Child> to its declaration");
-    static constexpr bool value = false;
+    constexpr ~missing_initial_state() {
+        static_assert(detail::dependent_false<missing_initial_state>,
+                      "bsc: this composite state has no initial child; add bsc::initial<Child> to its declaration");
+    }
 };
 
 template <class Composite>
 struct multiple_initial_states {
-    static_assert(detail::dependent_false<Composite>,
-                  "bsc: this composite state has more than one bsc::initial marker; keep exactly one");
-    static constexpr bool value = false;
+    constexpr ~multiple_initial_states() {
+        static_assert(detail::dependent_false<multiple_initial_states>,
+                      "bsc: this composite state has more than one bsc::initial marker; keep exactly one");
+    }
 };
 
 template <class Composite, class Initial>
 struct initial_not_a_child {
-    static_assert(detail::dependent_false<Composite>,
-                  "bsc: the initial state named by this composite is declared elsewhere in the tree, not as "
-                  "one of its children; name one of its own children in bsc::initial<...>");
-    static constexpr bool value = false;
+    constexpr ~initial_not_a_child() {
+        static_assert(detail::dependent_false<initial_not_a_child>,
+                      "bsc: the initial state named by this composite is declared elsewhere in the tree, not as "
+                      "one of its children; name one of its own children in bsc::initial<...>");
+    }
 };
 
 template <class Composite>
 struct too_many_children {
-    static_assert(detail::dependent_false<Composite>,
-                  "bsc: a composite state may have at most 255 children (its active child is kept in one "
-                  "byte); group some of them into a nested composite");
-    static constexpr bool value = false;
+    constexpr ~too_many_children() {
+        static_assert(detail::dependent_false<too_many_children>,
+                      "bsc: a composite state may have at most 255 children (its active child is kept in one "
+                      "byte); group some of them into a nested composite");
+    }
 };
 
 template <class State>
 struct eventless_livelock {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: eventless livelock: unguarded eventless transitions from this state lead back to it "
-                  "(or it has an unguarded eventless internal transition), so a dispatch would never settle; "
-                  "guard one of the transitions on the cycle or give it an event");
-    static constexpr bool value = false;
+    constexpr ~eventless_livelock() {
+        static_assert(detail::dependent_false<eventless_livelock>,
+                      "bsc: eventless livelock: unguarded eventless transitions from this state lead back to it "
+                      "(or it has an unguarded eventless internal transition), so a dispatch would never settle; "
+                      "guard one of the transitions on the cycle or give it an event");
+    }
 };
 
 template <class Event>
 struct unhandled_event {
-    static_assert(detail::dependent_false<Event>,
-                  "bsc: no transition of this chart is triggered by the dispatched event type; add one, fix "
-                  "the event type, or dispatch with bsc::allow_unhandled to ignore it on purpose");
-    static constexpr bool value = false;
+    constexpr ~unhandled_event() {
+        static_assert(detail::dependent_false<unhandled_event>,
+                      "bsc: no transition of this chart is triggered by the dispatched event type; add one, fix "
+                      "the event type, or dispatch with bsc::allow_unhandled to ignore it on purpose");
+    }
 };
 
 template <class Type>
 struct not_an_event {
-    static_assert(detail::dependent_false<Type>,
-                  "bsc: bsc::event<E> needs E to be a complete, copyable class or enumeration type without "
-                  "const or volatile (events are copied into the queue and handed to guards and actions); "
-                  "void, references, arrays, functions and pointers are not events. For a transition without "
-                  "an event, leave the trigger out: state<S> [guard] = state<T>");
-    static constexpr bool value = false;
+    constexpr ~not_an_event() {
+        static_assert(detail::dependent_false<not_an_event>,
+                      "bsc: bsc::event<E> needs E to be a complete, copyable class or enumeration type without "
+                      "const or volatile (events are copied into the queue and handed to guards and actions); "
+                      "void, references, arrays, functions and pointers are not events. For a transition without "
+                      "an event, leave the trigger out: state<S> [guard] = state<T>");
+    }
 };
 
 template <class Event>
 struct raised_event_not_in_chart {
-    static_assert(detail::dependent_false<Event>,
-                  "bsc: an action raises an event type that no transition of this chart handles");
-    static constexpr bool value = false;
+    constexpr ~raised_event_not_in_chart() {
+        static_assert(detail::dependent_false<raised_event_not_in_chart>,
+                      "bsc: an action raises an event type that no transition of this chart handles");
+    }
 };
 
 // ---- the arguments of bsc::make_chart ----------------------------------------------------
 
 template <class Argument>
 struct not_a_row {
-    static_assert(detail::dependent_false<Argument>,
-                  "bsc: after the state tree, every argument of make_chart must be a row: "
-                  "state<S> + event<E> [guard] / action = state<T>, state<S> [guard] = state<T>, "
-                  "state<S> + on_entry / action, or state<S> + on_exit / action");
-    static constexpr bool value = false;
+    constexpr ~not_a_row() {
+        static_assert(detail::dependent_false<not_a_row>,
+                      "bsc: after the state tree, every argument of make_chart must be a row: "
+                      "state<S> + event<E> [guard] / action = state<T>, state<S> [guard] = state<T>, "
+                      "state<S> + on_entry / action, or state<S> + on_exit / action");
+    }
 };
 
 template <class Root>
 struct root_must_be_composite {
-    static_assert(detail::dependent_false<Root>,
-                  "bsc: the first argument of make_chart is the root of the state tree and must be a "
-                  "bsc::composite<...>(...) or bsc::parallel<...>(...)");
-    static constexpr bool value = false;
+    constexpr ~root_must_be_composite() {
+        static_assert(detail::dependent_false<root_must_be_composite>,
+                      "bsc: the first argument of make_chart is the root of the state tree and must be a "
+                      "bsc::composite<...>(...) or bsc::parallel<...>(...)");
+    }
 };
 
 // ---- the state tree -------------------------------------------------------------------------
 
 template <class State, class Argument>
 struct not_a_state_declaration {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: an argument of this state's declaration is not a state or marker; a composite takes "
-                  "bsc::state, bsc::final_state, bsc::composite, bsc::parallel, bsc::initial, "
-                  "bsc::shallow_history and bsc::deep_history; a parallel state takes states only");
-    static constexpr bool value = false;
+    constexpr ~not_a_state_declaration() {
+        static_assert(detail::dependent_false<not_a_state_declaration>,
+                      "bsc: an argument of this state's declaration is not a state or marker; a composite takes "
+                      "bsc::state, bsc::final_state, bsc::composite, bsc::parallel, bsc::initial, "
+                      "bsc::shallow_history and bsc::deep_history; a parallel state takes states only");
+    }
+};
+
+template <class State>
+struct empty_parallel_state {
+    constexpr ~empty_parallel_state() {
+        static_assert(detail::dependent_false<empty_parallel_state>,
+                      "bsc: this parallel state has no regions; give it at least one child state (a parallel "
+                      "state's children are its regions), or declare it with bsc::state");
+    }
 };
 
 template <class State>
 struct conflicting_history_markers {
-    static_assert(detail::dependent_false<State>,
-                  "bsc: this composite state has more than one history marker; keep one of "
-                  "bsc::shallow_history or bsc::deep_history");
-    static constexpr bool value = false;
+    constexpr ~conflicting_history_markers() {
+        static_assert(detail::dependent_false<conflicting_history_markers>,
+                      "bsc: this composite state has more than one history marker; keep one of "
+                      "bsc::shallow_history or bsc::deep_history");
+    }
 };
 
 // ---- the context -----------------------------------------------------------------------------
 
 template <class Type>
 struct context_not_an_aggregate {
-    static_assert(detail::dependent_false<Type>,
-                  "bsc: the machine looks for channels and timers in the context and in its members: this "
-                  "one must be an aggregate (a struct with public members, no constructors, no virtual "
-                  "functions, no base classes)");
-    static constexpr bool value = false;
+    constexpr ~context_not_an_aggregate() {
+        static_assert(detail::dependent_false<context_not_an_aggregate>,
+                      "bsc: the machine looks for channels and timers in the context and in its members: this "
+                      "one must be an aggregate (a struct with public members, no constructors, no virtual "
+                      "functions, no base classes)");
+    }
 };
 
 template <class Type>
 struct too_many_fields {
-    static_assert(detail::dependent_false<Type>,
-                  "bsc: this struct of the context has more than 128 fields; group some of them into nested "
-                  "structs or std::arrays (channels and timers are found at any depth)");
-    static constexpr bool value = false;
+    constexpr ~too_many_fields() {
+        static_assert(detail::dependent_false<too_many_fields>,
+                      "bsc: this struct of the context has more than 128 fields; group some of them into nested "
+                      "structs or std::arrays (channels and timers are found at any depth)");
+    }
 };
 
 // ---- guards and actions ----------------------------------------------------------------------
 
 template <class Callable>
 struct guard_signature_not_supported {
-    static_assert(detail::dependent_false<Callable>,
-                  "bsc: a guard must be callable as g(context const&, event const&), g(context const&) or g(), "
-                  "and return something convertible to bool; see the Callable type in this error");
-    static constexpr bool value = false;
+    constexpr ~guard_signature_not_supported() {
+        static_assert(detail::dependent_false<guard_signature_not_supported>,
+                      "bsc: a guard must be callable as g(context const&, event const&), g(context const&) or g(), "
+                      "and return something convertible to bool; see the Callable type in this error");
+    }
 };
 
 template <class Callable>
 struct action_signature_not_supported {
-    static_assert(detail::dependent_false<Callable>,
-                  "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
-                  "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
-                  "Callable type in this error");
-    static constexpr bool value = false;
+    constexpr ~action_signature_not_supported() {
+        static_assert(detail::dependent_false<action_signature_not_supported>,
+                      "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
+                      "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
+                      "Callable type in this error");
+    }
 };
 
 }  // namespace bsc::error
+
+namespace bsc::detail {
+
+/// Raises the error E: the temporary's destruction instantiates E's destructor, whose
+/// static_assert is the error. Returns false, for the checks that go on after reporting.
+template <class Error>
+constexpr bool report() {
+    [[maybe_unused]] Error const error{};
+    return false;
+}
+
+// Raises Error from a function that is not constexpr: compilers instantiate such a function
+// at the end of the translation unit, outside the instantiation of make_chart, so the error's
+// context is this function alone and not the chain of templates that spell the whole chart.
+template <class Error>
+void raise_deferred() {
+    [[maybe_unused]] Error const error{};
+}
+
+/// What make_chart returns for a chart that fails its checks: the errors found, raised when
+/// the object is destroyed outside constant evaluation (the destructor is instantiated
+/// whenever a chart variable is declared, so every error is reported once), and the context
+/// type, so that a machine declared on it (runtime/rejected.hpp) stays silent instead of
+/// adding errors of its own.
+template <class Context, class... Errors>
+struct rejected_chart {
+    using context_type = Context;
+    constexpr ~rejected_chart() {
+        if (!std::is_constant_evaluated()) (raise_deferred<Errors>(), ...);
+    }
+};
+
+template <class T>
+inline constexpr bool is_rejected_chart = false;
+template <class Context, class... Errors>
+inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = true;
+
+}  // namespace bsc::detail
 // end include/bsc/error.hpp
 // begin include/bsc/checks/checks.hpp
-// Runs every static check of a chart and turns a finding into the error that names it.
-// Structural checks come first: the others assume a well-formed tree.
+// Runs every static check of a chart and turns each finding into the error type that names
+// it. A check returns its findings as a type_list of bsc::error types (empty: nothing found);
+// nothing is reported here: make_chart returns the findings (detail::rejected_chart), and
+// their destruction reports them. Structural checks come first: the others assume a
+// well-formed tree.
 
-// begin include/bsc/checks/determinism.hpp
-// Determinism: two unguarded transitions on the same source and trigger conflict; a
-// transition after an unguarded one on the same source and trigger is shadowed.
+// begin include/bsc/checks/dead_transitions.hpp
+// Transitions that can never fire (seed 000's "unreachable transitions"), found from the
+// structure alone, guards ignored:
+//   - a row leaving a final child of a composite root: the machine halts there, and dispatch
+//     only ever answers outcome::halted;
+//   - a row on an event leaving a composite or parallel state S when every basic or final state
+//     below S takes that event first with an unguarded row of its own or of an ancestor below S:
+//     the event is consumed below S in every configuration, so it never reaches S's row.
+// Reachability and dead ends (reachability.hpp) then follow only the rows that can fire.
+// A timeout row behind a shorter unguarded timeout of the same state is found where the
+// delays are known, in make_chart's constant evaluation (chart.hpp).
+
+#include <array>
+#include <cstddef>
 
 // begin include/bsc/model/chart_model.hpp
 // The model of a chart: its state tree and its rows flattened into constexpr arrays, from
@@ -431,7 +539,7 @@ constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) {
     else if constexpr (std::is_invocable_r_v<bool, G const&>)
         return static_cast<bool>(g());
     else
-        return error::guard_signature_not_supported<G>::value;
+        return report<error::guard_signature_not_supported<G>>();
 }
 
 template <class A, class Ctx, class E, class Raise>
@@ -445,7 +553,7 @@ constexpr void call_action(A const& a, Ctx& ctx, E const& e, Raise& raise) {
     else if constexpr (std::is_invocable_v<A const&>)
         a();
     else
-        static_assert(error::action_signature_not_supported<A>::value);
+        detail::report<error::action_signature_not_supported<A>>();
 }
 
 template <class A, class Ctx, class Raise>
@@ -457,7 +565,7 @@ constexpr void call_state_action(A const& a, Ctx& ctx, Raise& raise) {
     else if constexpr (std::is_invocable_v<A const&>)
         a();
     else
-        static_assert(error::action_signature_not_supported<A>::value);
+        detail::report<error::action_signature_not_supported<A>>();
 }
 
 }  // namespace bsc::detail
@@ -852,7 +960,7 @@ constexpr bool is_event_type() {
 template <class E>
 constexpr event_ref<E> checked_event_ref() {
     if constexpr (!is_event_type<E>())
-        static_assert(error::not_an_event<E>::value);
+        detail::report<error::not_an_event<E>>();
     return {};
 }
 
@@ -1136,9 +1244,9 @@ constexpr auto composite(A...) {
             detail::index_in<std::false_type,
                              std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
                                                 detail::is_initial_marker<A> || detail::is_history_marker<A>>...>();
-        static_assert(error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>::value);
+        detail::report<error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
     } else if constexpr (history_markers > 1) {
-        static_assert(error::conflicting_history_markers<S>::value);
+        detail::report<error::conflicting_history_markers<S>>();
     }
     using declared = decltype((detail::type_list<>{} + ... + detail::declared_tag<A>()));
     using children = typename detail::composite_children<declared, std::index_sequence_for<A...>, A...>::type;
@@ -1153,7 +1261,9 @@ constexpr auto parallel(A...) {
     if constexpr (!all_valid) {
         constexpr int bad =
             detail::index_in<std::false_type, std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>();
-        static_assert(error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>::value);
+        detail::report<error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
+    } else if constexpr (sizeof...(A) == 0) {
+        detail::report<error::empty_parallel_state<S>>();
     }
     using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true>()));
     return detail::parallel_node<S, children>{};
@@ -1422,6 +1532,56 @@ struct chart_model {
 
 namespace bsc::detail {
 
+template <std::size_t R>
+struct row_liveness {
+    std::array<bool, R> dead{};
+    int first_dead = -1;  // the first dead row in declaration order, or -1
+};
+
+template <std::size_t N, std::size_t R>
+constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<R> const& r) {
+    row_liveness<R> found;
+    constexpr int root = 1;
+    bool const root_halts = N > 1 && t.kinds[root] == kind::composite;
+    // Whether state b has an unguarded transition row on `trigger`.
+    auto takes_unguarded = [&](int b, int trigger) {
+        for (std::size_t j = 0; j < R; ++j)
+            if (r.kinds[j] == row_kind::transition && r.source[j] == b && r.trigger[j] == trigger && !r.guarded[j])
+                return true;
+        return false;
+    };
+    for (std::size_t i = 0; i < R; ++i) {
+        if (r.kinds[i] != row_kind::transition) continue;
+        int const s = r.source[i];
+        auto const si = static_cast<std::size_t>(s);
+        bool dead = false;
+        if (root_halts && t.kinds[si] == kind::final_state && t.parent[si] == root) {
+            dead = true;
+        } else if (r.trigger[i] >= 0 && !t.is_leaf(s) && t.end[si] > s + 1) {
+            dead = true;
+            for (int a = s + 1; a < t.end[si] && dead; ++a) {
+                if (!t.is_leaf(a)) continue;
+                bool taken = false;
+                for (int b = a; b != s && !taken; b = t.parent[static_cast<std::size_t>(b)])
+                    taken = takes_unguarded(b, r.trigger[i]);
+                dead = taken;
+            }
+        }
+        found.dead[i] = dead;
+        if (dead && found.first_dead < 0) found.first_dead = static_cast<int>(i);
+    }
+    return found;
+}
+
+}  // namespace bsc::detail
+// end include/bsc/checks/dead_transitions.hpp
+// begin include/bsc/checks/determinism.hpp
+// Determinism: two unguarded transitions on the same source and trigger conflict; a
+// transition after an unguarded one on the same source and trigger is shadowed.
+
+
+namespace bsc::detail {
+
 struct row_pair {
     int first = -1;
     int second = -1;
@@ -1475,7 +1635,8 @@ constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table
 // enabled in u (its source is u or an ancestor) enters v.
 
 // begin include/bsc/checks/reachability.hpp
-// Reachability (structure only, guards ignored) and dead ends.
+// Reachability (structure only, guards ignored) and dead ends. Both follow only the rows
+// that can fire: `dead` marks the ones that never do (dead_transitions.hpp).
 
 
 namespace bsc::detail {
@@ -1511,14 +1672,15 @@ constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int doma
 }
 
 template <std::size_t N, std::size_t R>
-constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R> const& r) {
+constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R> const& r,
+                                               std::array<bool, R> const& dead) {
     std::array<bool, N> reach{};
     std::array<bool, R> applied{};
     mark_default_entry(t, reach, 0);
     for (bool changed = true; changed;) {
         changed = false;
         for (std::size_t i = 0; i < R; ++i) {
-            if (applied[i] || r.kinds[i] != row_kind::transition || r.target[i] < 0)
+            if (applied[i] || dead[i] || r.kinds[i] != row_kind::transition || r.target[i] < 0)
                 continue;
             if (!reach[static_cast<std::size_t>(r.source[i])])
                 continue;
@@ -1560,15 +1722,17 @@ constexpr bool reenters(topology<N> const& t, int target, int x) {
 // (then its domain must be above that parallel state). Rows are bucketed by source, in
 // document order, so both kinds are found without scanning every row for every state.
 template <std::size_t N, std::size_t R>
-constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::array<bool, N> const& reach) {
+constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::array<bool, R> const& dead,
+                            std::array<bool, N> const& reach) {
     std::array<int, N + 1> begin{};
+    auto const counts = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.target[i] >= 0 && !dead[i]; };
     for (std::size_t i = 0; i < R; ++i)
-        if (r.kinds[i] == row_kind::transition && r.target[i] >= 0) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
+        if (counts(i)) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
     for (std::size_t s = 0; s < N; ++s) begin[s + 1] += begin[s];
     std::array<int, R + 1> order{};
     std::array<int, N + 1> fill = begin;
     for (std::size_t i = 0; i < R; ++i)
-        if (r.kinds[i] == row_kind::transition && r.target[i] >= 0)
+        if (counts(i))
             order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
     // Rows whose source lies in the states [lo, hi) of document order.
     auto way_out_among = [&](int lo, int hi, int x, int above) {
@@ -1729,6 +1893,10 @@ template <class S, class G, class A, class T>
 struct trigger_type<transition_row<S, eventless_trigger, G, A, T>> {
     using type = eventless_trigger;
 };
+template <class S, class G, class A, class T>
+struct trigger_type<transition_row<S, timeout_trigger, G, A, T>> {
+    using type = timeout_trigger;
+};
 
 // Whether the tree and the rows are well formed, computed without reporting anything, so
 // that the other checks are not even instantiated on a malformed chart.
@@ -1740,7 +1908,7 @@ constexpr bool structure_valid() {
 }
 
 template <class Chart>
-constexpr bool check_structure() {
+constexpr auto check_structure() {
     using model = chart_model<Chart>;
     constexpr int duplicate = find_duplicate(typename model::tags{});
     if constexpr (duplicate >= 0) {
@@ -1748,104 +1916,116 @@ constexpr bool check_structure() {
         constexpr int first = model::template index_of_state<S>;
         constexpr int implicit = model::tree.implicit[duplicate] ? duplicate : model::tree.implicit[first] ? first : -1;
         if constexpr (implicit >= 0)
-            return error::initial_not_a_child<typename model::template tag_at<model::tree.parent[implicit]>, S>::value;
+            return type_list<error::initial_not_a_child<typename model::template tag_at<model::tree.parent[implicit]>, S>>{};
         else
-            return error::duplicate_state<S>::value;
+            return type_list<error::duplicate_state<S>>{};
     } else {
         constexpr int unknown = find_unknown_state(model::rows);
         if constexpr (unknown >= 0) {
             using row = typename model::template row_at<unknown>;
             if constexpr (model::rows.source[unknown] == unknown_state)
-                return error::state_not_in_chart<typename row::source>::value;
+                return type_list<error::state_not_in_chart<typename row::source>>{};
             else
-                return error::state_not_in_chart<typename row::target>::value;
+                return type_list<error::state_not_in_chart<typename row::target>>{};
         } else {
             constexpr int composite = find_initial_problem(model::tree);
             if constexpr (composite >= 0) {
                 using S = typename model::template tag_at<composite>;
                 if constexpr (model::tree.child_count[composite] > 255)
-                    return error::too_many_children<S>::value;
+                    return type_list<error::too_many_children<S>>{};
                 else if constexpr (model::tree.initial_count[composite] == 0)
-                    return error::missing_initial_state<S>::value;
+                    return type_list<error::missing_initial_state<S>>{};
                 else
-                    return error::multiple_initial_states<S>::value;
+                    return type_list<error::multiple_initial_states<S>>{};
             } else {
-                return true;
+                return type_list<>{};
             }
         }
     }
 }
 
 template <class Chart>
-constexpr bool check_orthogonality() {
+constexpr auto check_orthogonality() {
     using model = chart_model<Chart>;
     constexpr int row = find_orthogonal_transition(model::tree, model::rows);
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return error::transition_between_orthogonal_regions<typename R::source, typename R::target>::value;
+        return type_list<error::transition_between_orthogonal_regions<typename R::source, typename R::target>>{};
     } else {
-        return true;
+        return type_list<>{};
     }
 }
 
 template <class Chart>
-constexpr bool check_determinism() {
+constexpr auto check_determinism() {
     using model = chart_model<Chart>;
     constexpr determinism_findings found = find_nondeterminism(model::tree, model::rows);
     constexpr row_pair conflict = found.conflict;
     constexpr row_pair shadowed = found.shadowed;
     if constexpr (conflict.found()) {
         using R = typename model::template row_at<conflict.second>;
-        return error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>::value;
+        return type_list<error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>>{};
     } else if constexpr (shadowed.found()) {
         using R = typename model::template row_at<shadowed.second>;
-        return error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
-                                          typename R::target>::value;
+        return type_list<error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
+                                          typename R::target>>{};
     } else {
-        return true;
+        return type_list<>{};
     }
 }
 
 template <class Chart>
-constexpr bool check_reachability() {
+inline constexpr auto liveness_of = find_dead_transitions(chart_model<Chart>::tree, chart_model<Chart>::rows);
+
+template <class Chart>
+constexpr auto check_dead_transitions() {
     using model = chart_model<Chart>;
-    constexpr auto reach = reachable_states(model::tree, model::rows);
+    constexpr int row = liveness_of<Chart>.first_dead;
+    if constexpr (row >= 0) {
+        using R = typename model::template row_at<row>;
+        return type_list<error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>{};
+    } else {
+        return type_list<>{};
+    }
+}
+
+template <class Chart>
+constexpr auto check_reachability() {
+    using model = chart_model<Chart>;
+    constexpr auto const& dead = liveness_of<Chart>.dead;
+    constexpr auto reach = reachable_states(model::tree, model::rows, dead);
     constexpr int unreachable = find_unreachable(model::tree, reach);
     if constexpr (unreachable >= 0) {
-        return error::unreachable_state<typename model::template tag_at<unreachable>>::value;
+        return type_list<error::unreachable_state<typename model::template tag_at<unreachable>>>{};
     } else {
-        constexpr int dead_end = find_dead_end(model::tree, model::rows, reach);
+        constexpr int dead_end = find_dead_end(model::tree, model::rows, dead, reach);
         if constexpr (dead_end >= 0)
-            return error::dead_end_state<typename model::template tag_at<dead_end>>::value;
+            return type_list<error::dead_end_state<typename model::template tag_at<dead_end>>>{};
         else
-            return true;
+            return type_list<>{};
     }
 }
 
 template <class Chart>
-constexpr bool check_livelock() {
+constexpr auto check_livelock() {
     using model = chart_model<Chart>;
     constexpr std::size_t edges = count_eventless_edges(model::tree, model::rows);
     constexpr int source = find_eventless_cycle<edges>(model::tree, model::rows);
     if constexpr (source >= 0)
-        return error::eventless_livelock<typename model::template tag_at<source>>::value;
+        return type_list<error::eventless_livelock<typename model::template tag_at<source>>>{};
     else
-        return true;
+        return type_list<>{};
 }
 
-// True for a well-formed chart; otherwise one of the bsc::error templates fails to instantiate.
+// The errors of a chart, as a type_list; empty for a well-formed chart.
 template <class Chart>
-constexpr bool check_chart() {
+constexpr auto check_chart() {
     if constexpr (!structure_valid<Chart>())
         return check_structure<Chart>();
-    else {
-        // Each check is evaluated, so one build reports every kind of problem it finds.
-        constexpr bool orthogonal = check_orthogonality<Chart>();
-        constexpr bool deterministic = check_determinism<Chart>();
-        constexpr bool reachable = check_reachability<Chart>();
-        constexpr bool settles = check_livelock<Chart>();
-        return orthogonal && deterministic && reachable && settles;
-    }
+    else
+        // Each check runs, so one build reports every kind of problem it finds.
+        return check_orthogonality<Chart>() + check_determinism<Chart>() + check_dead_transitions<Chart>() +
+               check_reachability<Chart>() + check_livelock<Chart>();
 }
 
 }  // namespace bsc::detail
@@ -1890,6 +2070,66 @@ struct chart {
     boost::hana::basic_tuple<Rows...> rows;
 };
 
+namespace detail {
+// Deliberately not constexpr (as bsc_after_negative_delay): in a constexpr chart, reaching it is
+// the compile error, and its name says what is wrong; a chart built at run time throws.
+[[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout() {
+#if defined(__cpp_exceptions)
+    throw std::invalid_argument(
+        "bsc::make_chart: a timeout row can never fire: an unguarded timeout of the same state with a target "
+        "and a shorter (or equal, and earlier) delay always leaves the state first");
+#else
+    std::abort();
+#endif
+}
+
+// The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
+// a timeout row of S behind an unguarded timeout row of S with a target and a shorter delay, or
+// an equal one declared earlier, which always fires first and leaves S, so the clock of the
+// other starts again before it is due.
+template <class Chart, class Rows>
+constexpr void check_timeout_rows(Rows const& rows) {
+    using model = chart_model<Chart>;
+    constexpr auto const& r = model::rows;
+    constexpr std::size_t count = r.kinds.size();
+    if constexpr (count > 0) {
+        std::array<duration, count> delay{};
+        boost::hana::unpack(rows, [&](auto const&... row) {
+            std::size_t i = 0;
+            ((delay[i] = [&] {
+                  if constexpr (is_timeout_row<std::remove_cvref_t<decltype(row)>>)
+                      return row.trigger_value.delay;
+                  else
+                      return duration::zero();
+              }(),
+              ++i),
+             ...);
+        });
+        auto const timeout = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.trigger[i] <= -2; };
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!timeout(i) || r.guarded[i] || r.target[i] < 0) continue;
+            for (std::size_t j = 0; j < count; ++j)
+                if (j != i && timeout(j) && r.source[j] == r.source[i] &&
+                    (delay[i] < delay[j] || (delay[i] == delay[j] && i < j)))
+                    bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout();
+        }
+    }
+}
+
+// The chart, or, when its checks find errors, the rejected_chart whose destruction reports them.
+template <class Chart, class Rows>
+constexpr auto checked(Rows rows) {
+    return [&]<class... Errors>(type_list<Errors...>) {
+        if constexpr (sizeof...(Errors) == 0) {
+            check_timeout_rows<Chart>(rows);
+            return Chart{std::move(rows)};
+        } else {
+            return rejected_chart<typename Chart::context_type, Errors...>{};
+        }
+    }(check_chart<Chart>());
+}
+}  // namespace detail
+
 /// Declares a chart: first the state tree, then the rows (transitions, entry and exit actions).
 /// The static checks run here; a malformed chart fails to compile with an error that names
 /// the offending state (see docs/checks.md).
@@ -1908,16 +2148,14 @@ constexpr auto make_chart(Root root, Rows... rows) {
         return std::apply([&](auto... r) { return make_chart<Context>(root, std::move(r)...); },
                           std::tuple_cat(detail::row_tuple(std::move(rows))...));
     } else if constexpr (!detail::is_compound_root<Root>()) {
-        static_assert(error::root_must_be_composite<Root>::value);
-        return 0;
+        return detail::rejected_chart<Context, error::root_must_be_composite<Root>>{};
     } else if constexpr (!(detail::is_row<Rows> && ...)) {
         constexpr int bad = detail::index_in<std::false_type, std::bool_constant<detail::is_row<Rows>>...>();
-        static_assert(error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>::value);
-        return 0;
+        return detail::rejected_chart<Context,
+                                      error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>>{};
     } else {
         using chart_type = chart<Context, Root, Rows...>;
-        static_assert(detail::check_chart<chart_type>());
-        return chart_type{boost::hana::make_basic_tuple(std::move(rows)...)};
+        return detail::checked<chart_type>(boost::hana::make_basic_tuple(std::move(rows)...));
     }
 }
 
@@ -3410,10 +3648,10 @@ constexpr auto tie_fields(T& t) {
     using type = std::remove_const_t<T>;
     constexpr std::size_t n = field_count<type>();
     if constexpr (!std::is_aggregate_v<type>) {
-        static_assert(error::context_not_an_aggregate<type>::value);
+        detail::report<error::context_not_an_aggregate<type>>();
         return std::tuple<>{};
     } else if constexpr (n > max_fields) {
-        static_assert(error::too_many_fields<type>::value);
+        detail::report<error::too_many_fields<type>>();
         return std::tuple<>{};
     } else {
         return bind_fields<n>(t);
@@ -3691,7 +3929,7 @@ public:
     constexpr outcome dispatch(E const& e) {
         constexpr int trigger = model::template trigger_of<E>;
         if constexpr (trigger < 0) {
-            static_assert(error::unhandled_event<E>::value);
+            detail::report<error::unhandled_event<E>>();
             return outcome::ignored;
         } else {
             return process<trigger>(e);
@@ -3713,7 +3951,7 @@ public:
     constexpr bool is() const {
         constexpr int s = model::template index_of_state<S>;
         if constexpr (s < 0) {
-            static_assert(error::state_not_in_chart<S>::value);
+            detail::report<error::state_not_in_chart<S>>();
             return false;
         } else {
             return backend().template is_active<s>();
@@ -4040,7 +4278,7 @@ public:
     template <class E>
     constexpr bool operator()(E const& e) {
         if constexpr (index_in<E, Es...>() < 0) {
-            static_assert(error::raised_event_not_in_chart<E>::value);
+            detail::report<error::raised_event_not_in_chart<E>>();
             return false;
         } else {
             if (size_ == Capacity) {
@@ -4126,6 +4364,51 @@ public:
 
 }  // namespace bsc::detail
 // end include/bsc/runtime/event_queue.hpp
+// begin include/bsc/runtime/rejected.hpp
+// A machine declared on a chart that failed its checks (detail::rejected_chart): the chart's
+// errors are already reported where the chart is declared, so the machine accepts whatever
+// the program does with it and does nothing, instead of burying the chart's errors under
+// errors of its own. Both back ends specialise their machine on it.
+
+#include <cstddef>
+#include <exception>
+#include <type_traits>
+
+
+namespace bsc::detail {
+
+template <class Chart>
+concept rejected = is_rejected_chart<std::remove_cv_t<Chart>>;
+
+template <class Chart>
+class inert_machine {
+public:
+    using chart_type = std::remove_cv_t<Chart>;
+    using context_type = typename chart_type::context_type;
+    static constexpr std::size_t queue_capacity = 0;
+
+    template <class... Arguments>
+    constexpr explicit inert_machine(Arguments const&...) {}
+
+    template <class... Arguments>
+    constexpr outcome dispatch(Arguments const&...) { return outcome::ignored; }
+    template <class... Arguments>
+    constexpr auto step(Arguments const&...) { return 0; }
+    template <class... States>
+    constexpr bool is() const { return false; }
+    constexpr bool halted() const { return false; }
+    constexpr outcome last_outcome() const { return outcome::ignored; }
+    std::exception_ptr last_failure() const { return nullptr; }
+    constexpr duration now() const { return duration::zero(); }
+    constexpr context_type& context() { return context_; }
+    constexpr context_type const& context() const { return context_; }
+
+private:
+    context_type context_{};
+};
+
+}  // namespace bsc::detail
+// end include/bsc/runtime/rejected.hpp
 // begin include/bsc/runtime/notify.hpp
 // The calls a machine makes to its observer, by state and row number: each hook is called
 // only if the observer has it, and a machine without observer generates nothing.
@@ -4695,6 +4978,14 @@ private:
 
 // Charts are declared `constexpr`, so `machine{chart, ...}` and `machine<decltype(chart)>` name
 // the same type.
+// A machine of a chart that failed its checks does nothing (runtime/rejected.hpp).
+template <class Chart, class Policy, class Observer>
+    requires detail::rejected<Chart>
+class machine<Chart, Policy, Observer> : public detail::inert_machine<Chart> {
+public:
+    using detail::inert_machine<Chart>::inert_machine;
+};
+
 template <class C, class... A>
 machine(C const&, A...) -> machine<C const, default_policy, detail::observer_argument_t<A...>>;
 
@@ -5605,6 +5896,14 @@ private:
 };
 
 // As for bsc::machine: `machine{chart, ...}` and `machine<decltype(chart)>` name the same type.
+// A machine of a chart that failed its checks does nothing (runtime/rejected.hpp).
+template <class Chart, class Policy, class Observer>
+    requires bsc::detail::rejected<Chart>
+class machine<Chart, Policy, Observer> : public bsc::detail::inert_machine<Chart> {
+public:
+    using bsc::detail::inert_machine<Chart>::inert_machine;
+};
+
 template <class C, class... A>
 machine(C const&, A...) -> machine<C const, default_policy, bsc::detail::observer_argument_t<A...>>;
 

@@ -1,7 +1,11 @@
 #pragma once
-// Runs every static check of a chart and turns a finding into the error that names it.
-// Structural checks come first: the others assume a well-formed tree.
+// Runs every static check of a chart and turns each finding into the error type that names
+// it. A check returns its findings as a type_list of bsc::error types (empty: nothing found);
+// nothing is reported here: make_chart returns the findings (detail::rejected_chart), and
+// their destruction reports them. Structural checks come first: the others assume a
+// well-formed tree.
 
+#include <bsc/checks/dead_transitions.hpp>
 #include <bsc/checks/determinism.hpp>
 #include <bsc/error.hpp>
 #include <bsc/checks/livelock.hpp>
@@ -19,6 +23,10 @@ template <class S, class G, class A, class T>
 struct trigger_type<transition_row<S, eventless_trigger, G, A, T>> {
     using type = eventless_trigger;
 };
+template <class S, class G, class A, class T>
+struct trigger_type<transition_row<S, timeout_trigger, G, A, T>> {
+    using type = timeout_trigger;
+};
 
 // Whether the tree and the rows are well formed, computed without reporting anything, so
 // that the other checks are not even instantiated on a malformed chart.
@@ -30,7 +38,7 @@ constexpr bool structure_valid() {
 }
 
 template <class Chart>
-constexpr bool check_structure() {
+constexpr auto check_structure() {
     using model = chart_model<Chart>;
     constexpr int duplicate = find_duplicate(typename model::tags{});
     if constexpr (duplicate >= 0) {
@@ -38,104 +46,116 @@ constexpr bool check_structure() {
         constexpr int first = model::template index_of_state<S>;
         constexpr int implicit = model::tree.implicit[duplicate] ? duplicate : model::tree.implicit[first] ? first : -1;
         if constexpr (implicit >= 0)
-            return error::initial_not_a_child<typename model::template tag_at<model::tree.parent[implicit]>, S>::value;
+            return type_list<error::initial_not_a_child<typename model::template tag_at<model::tree.parent[implicit]>, S>>{};
         else
-            return error::duplicate_state<S>::value;
+            return type_list<error::duplicate_state<S>>{};
     } else {
         constexpr int unknown = find_unknown_state(model::rows);
         if constexpr (unknown >= 0) {
             using row = typename model::template row_at<unknown>;
             if constexpr (model::rows.source[unknown] == unknown_state)
-                return error::state_not_in_chart<typename row::source>::value;
+                return type_list<error::state_not_in_chart<typename row::source>>{};
             else
-                return error::state_not_in_chart<typename row::target>::value;
+                return type_list<error::state_not_in_chart<typename row::target>>{};
         } else {
             constexpr int composite = find_initial_problem(model::tree);
             if constexpr (composite >= 0) {
                 using S = typename model::template tag_at<composite>;
                 if constexpr (model::tree.child_count[composite] > 255)
-                    return error::too_many_children<S>::value;
+                    return type_list<error::too_many_children<S>>{};
                 else if constexpr (model::tree.initial_count[composite] == 0)
-                    return error::missing_initial_state<S>::value;
+                    return type_list<error::missing_initial_state<S>>{};
                 else
-                    return error::multiple_initial_states<S>::value;
+                    return type_list<error::multiple_initial_states<S>>{};
             } else {
-                return true;
+                return type_list<>{};
             }
         }
     }
 }
 
 template <class Chart>
-constexpr bool check_orthogonality() {
+constexpr auto check_orthogonality() {
     using model = chart_model<Chart>;
     constexpr int row = find_orthogonal_transition(model::tree, model::rows);
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return error::transition_between_orthogonal_regions<typename R::source, typename R::target>::value;
+        return type_list<error::transition_between_orthogonal_regions<typename R::source, typename R::target>>{};
     } else {
-        return true;
+        return type_list<>{};
     }
 }
 
 template <class Chart>
-constexpr bool check_determinism() {
+constexpr auto check_determinism() {
     using model = chart_model<Chart>;
     constexpr determinism_findings found = find_nondeterminism(model::tree, model::rows);
     constexpr row_pair conflict = found.conflict;
     constexpr row_pair shadowed = found.shadowed;
     if constexpr (conflict.found()) {
         using R = typename model::template row_at<conflict.second>;
-        return error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>::value;
+        return type_list<error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>>{};
     } else if constexpr (shadowed.found()) {
         using R = typename model::template row_at<shadowed.second>;
-        return error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
-                                          typename R::target>::value;
+        return type_list<error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
+                                          typename R::target>>{};
     } else {
-        return true;
+        return type_list<>{};
     }
 }
 
 template <class Chart>
-constexpr bool check_reachability() {
+inline constexpr auto liveness_of = find_dead_transitions(chart_model<Chart>::tree, chart_model<Chart>::rows);
+
+template <class Chart>
+constexpr auto check_dead_transitions() {
     using model = chart_model<Chart>;
-    constexpr auto reach = reachable_states(model::tree, model::rows);
+    constexpr int row = liveness_of<Chart>.first_dead;
+    if constexpr (row >= 0) {
+        using R = typename model::template row_at<row>;
+        return type_list<error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>{};
+    } else {
+        return type_list<>{};
+    }
+}
+
+template <class Chart>
+constexpr auto check_reachability() {
+    using model = chart_model<Chart>;
+    constexpr auto const& dead = liveness_of<Chart>.dead;
+    constexpr auto reach = reachable_states(model::tree, model::rows, dead);
     constexpr int unreachable = find_unreachable(model::tree, reach);
     if constexpr (unreachable >= 0) {
-        return error::unreachable_state<typename model::template tag_at<unreachable>>::value;
+        return type_list<error::unreachable_state<typename model::template tag_at<unreachable>>>{};
     } else {
-        constexpr int dead_end = find_dead_end(model::tree, model::rows, reach);
+        constexpr int dead_end = find_dead_end(model::tree, model::rows, dead, reach);
         if constexpr (dead_end >= 0)
-            return error::dead_end_state<typename model::template tag_at<dead_end>>::value;
+            return type_list<error::dead_end_state<typename model::template tag_at<dead_end>>>{};
         else
-            return true;
+            return type_list<>{};
     }
 }
 
 template <class Chart>
-constexpr bool check_livelock() {
+constexpr auto check_livelock() {
     using model = chart_model<Chart>;
     constexpr std::size_t edges = count_eventless_edges(model::tree, model::rows);
     constexpr int source = find_eventless_cycle<edges>(model::tree, model::rows);
     if constexpr (source >= 0)
-        return error::eventless_livelock<typename model::template tag_at<source>>::value;
+        return type_list<error::eventless_livelock<typename model::template tag_at<source>>>{};
     else
-        return true;
+        return type_list<>{};
 }
 
-// True for a well-formed chart; otherwise one of the bsc::error templates fails to instantiate.
+// The errors of a chart, as a type_list; empty for a well-formed chart.
 template <class Chart>
-constexpr bool check_chart() {
+constexpr auto check_chart() {
     if constexpr (!structure_valid<Chart>())
         return check_structure<Chart>();
-    else {
-        // Each check is evaluated, so one build reports every kind of problem it finds.
-        constexpr bool orthogonal = check_orthogonality<Chart>();
-        constexpr bool deterministic = check_determinism<Chart>();
-        constexpr bool reachable = check_reachability<Chart>();
-        constexpr bool settles = check_livelock<Chart>();
-        return orthogonal && deterministic && reachable && settles;
-    }
+    else
+        // Each check runs, so one build reports every kind of problem it finds.
+        return check_orthogonality<Chart>() + check_determinism<Chart>() + check_dead_transitions<Chart>() +
+               check_reachability<Chart>() + check_livelock<Chart>();
 }
 
 }  // namespace bsc::detail

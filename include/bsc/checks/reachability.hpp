@@ -1,5 +1,6 @@
 #pragma once
-// Reachability (structure only, guards ignored) and dead ends.
+// Reachability (structure only, guards ignored) and dead ends. Both follow only the rows
+// that can fire: `dead` marks the ones that never do (dead_transitions.hpp).
 
 #include <bsc/model/chart_model.hpp>
 
@@ -36,14 +37,15 @@ constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int doma
 }
 
 template <std::size_t N, std::size_t R>
-constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R> const& r) {
+constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R> const& r,
+                                               std::array<bool, R> const& dead) {
     std::array<bool, N> reach{};
     std::array<bool, R> applied{};
     mark_default_entry(t, reach, 0);
     for (bool changed = true; changed;) {
         changed = false;
         for (std::size_t i = 0; i < R; ++i) {
-            if (applied[i] || r.kinds[i] != row_kind::transition || r.target[i] < 0)
+            if (applied[i] || dead[i] || r.kinds[i] != row_kind::transition || r.target[i] < 0)
                 continue;
             if (!reach[static_cast<std::size_t>(r.source[i])])
                 continue;
@@ -85,15 +87,17 @@ constexpr bool reenters(topology<N> const& t, int target, int x) {
 // (then its domain must be above that parallel state). Rows are bucketed by source, in
 // document order, so both kinds are found without scanning every row for every state.
 template <std::size_t N, std::size_t R>
-constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::array<bool, N> const& reach) {
+constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::array<bool, R> const& dead,
+                            std::array<bool, N> const& reach) {
     std::array<int, N + 1> begin{};
+    auto const counts = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.target[i] >= 0 && !dead[i]; };
     for (std::size_t i = 0; i < R; ++i)
-        if (r.kinds[i] == row_kind::transition && r.target[i] >= 0) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
+        if (counts(i)) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
     for (std::size_t s = 0; s < N; ++s) begin[s + 1] += begin[s];
     std::array<int, R + 1> order{};
     std::array<int, N + 1> fill = begin;
     for (std::size_t i = 0; i < R; ++i)
-        if (r.kinds[i] == row_kind::transition && r.target[i] >= 0)
+        if (counts(i))
             order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
     // Rows whose source lies in the states [lo, hi) of document order.
     auto way_out_among = [&](int lo, int hi, int x, int above) {

@@ -19,6 +19,7 @@
 #include <bsc/outcome.hpp>
 #include <bsc/runtime/driver.hpp>
 #include <bsc/runtime/event_queue.hpp>
+#include <bsc/runtime/rejected.hpp>
 #include <bsc/runtime/notify.hpp>
 #include <bsc/runtime/selection.hpp>
 
@@ -489,6 +490,14 @@ private:
 
 // Charts are declared `constexpr`, so `machine{chart, ...}` and `machine<decltype(chart)>` name
 // the same type.
+// A machine of a chart that failed its checks does nothing (runtime/rejected.hpp).
+template <class Chart, class Policy, class Observer>
+    requires detail::rejected<Chart>
+class machine<Chart, Policy, Observer> : public detail::inert_machine<Chart> {
+public:
+    using detail::inert_machine<Chart>::inert_machine;
+};
+
 template <class C, class... A>
 machine(C const&, A...) -> machine<C const, default_policy, detail::observer_argument_t<A...>>;
 

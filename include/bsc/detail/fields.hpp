@@ -42,10 +42,10 @@ constexpr auto tie_fields(T& t) {
     using type = std::remove_const_t<T>;
     constexpr std::size_t n = field_count<type>();
     if constexpr (!std::is_aggregate_v<type>) {
-        static_assert(error::context_not_an_aggregate<type>::value);
+        detail::report<error::context_not_an_aggregate<type>>();
         return std::tuple<>{};
     } else if constexpr (n > max_fields) {
-        static_assert(error::too_many_fields<type>::value);
+        detail::report<error::too_many_fields<type>>();
         return std::tuple<>{};
     } else {
         return bind_fields<n>(t);

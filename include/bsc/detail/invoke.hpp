@@ -20,7 +20,7 @@ constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) {
     else if constexpr (std::is_invocable_r_v<bool, G const&>)
         return static_cast<bool>(g());
     else
-        return error::guard_signature_not_supported<G>::value;
+        return report<error::guard_signature_not_supported<G>>();
 }
 
 template <class A, class Ctx, class E, class Raise>
@@ -34,7 +34,7 @@ constexpr void call_action(A const& a, Ctx& ctx, E const& e, Raise& raise) {
     else if constexpr (std::is_invocable_v<A const&>)
         a();
     else
-        static_assert(error::action_signature_not_supported<A>::value);
+        detail::report<error::action_signature_not_supported<A>>();
 }
 
 template <class A, class Ctx, class Raise>
@@ -46,7 +46,7 @@ constexpr void call_state_action(A const& a, Ctx& ctx, Raise& raise) {
     else if constexpr (std::is_invocable_v<A const&>)
         a();
     else
-        static_assert(error::action_signature_not_supported<A>::value);
+        detail::report<error::action_signature_not_supported<A>>();
 }
 
 }  // namespace bsc::detail

@@ -167,7 +167,7 @@ constexpr bool is_event_type() {
 template <class E>
 constexpr event_ref<E> checked_event_ref() {
     if constexpr (!is_event_type<E>())
-        static_assert(error::not_an_event<E>::value);
+        detail::report<error::not_an_event<E>>();
     return {};
 }
 

@@ -167,9 +167,9 @@ constexpr auto composite(A...) {
             detail::index_in<std::false_type,
                              std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
                                                 detail::is_initial_marker<A> || detail::is_history_marker<A>>...>();
-        static_assert(error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>::value);
+        detail::report<error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
     } else if constexpr (history_markers > 1) {
-        static_assert(error::conflicting_history_markers<S>::value);
+        detail::report<error::conflicting_history_markers<S>>();
     }
     using declared = decltype((detail::type_list<>{} + ... + detail::declared_tag<A>()));
     using children = typename detail::composite_children<declared, std::index_sequence_for<A...>, A...>::type;
@@ -184,7 +184,9 @@ constexpr auto parallel(A...) {
     if constexpr (!all_valid) {
         constexpr int bad =
             detail::index_in<std::false_type, std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>();
-        static_assert(error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>::value);
+        detail::report<error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
+    } else if constexpr (sizeof...(A) == 0) {
+        detail::report<error::empty_parallel_state<S>>();
     }
     using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true>()));
     return detail::parallel_node<S, children>{};

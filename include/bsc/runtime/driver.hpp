@@ -122,7 +122,7 @@ public:
     constexpr outcome dispatch(E const& e) {
         constexpr int trigger = model::template trigger_of<E>;
         if constexpr (trigger < 0) {
-            static_assert(error::unhandled_event<E>::value);
+            detail::report<error::unhandled_event<E>>();
             return outcome::ignored;
         } else {
             return process<trigger>(e);
@@ -144,7 +144,7 @@ public:
     constexpr bool is() const {
         constexpr int s = model::template index_of_state<S>;
         if constexpr (s < 0) {
-            static_assert(error::state_not_in_chart<S>::value);
+            detail::report<error::state_not_in_chart<S>>();
             return false;
         } else {
             return backend().template is_active<s>();

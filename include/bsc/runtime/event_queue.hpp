@@ -24,7 +24,7 @@ public:
     template <class E>
     constexpr bool operator()(E const& e) {
         if constexpr (index_in<E, Es...>() < 0) {
-            static_assert(error::raised_event_not_in_chart<E>::value);
+            detail::report<error::raised_event_not_in_chart<E>>();
             return false;
         } else {
             if (size_ == Capacity) {

@@ -29,6 +29,7 @@
 #include <bsc/outcome.hpp>
 #include <bsc/runtime/driver.hpp>
 #include <bsc/runtime/notify.hpp>
+#include <bsc/runtime/rejected.hpp>
 #include <bsc/runtime/selection.hpp>
 #include <bsc/table/tables.hpp>
 
@@ -388,6 +389,14 @@ private:
 };
 
 // As for bsc::machine: `machine{chart, ...}` and `machine<decltype(chart)>` name the same type.
+// A machine of a chart that failed its checks does nothing (runtime/rejected.hpp).
+template <class Chart, class Policy, class Observer>
+    requires bsc::detail::rejected<Chart>
+class machine<Chart, Policy, Observer> : public bsc::detail::inert_machine<Chart> {
+public:
+    using bsc::detail::inert_machine<Chart>::inert_machine;
+};
+
 template <class C, class... A>
 machine(C const&, A...) -> machine<C const, default_policy, bsc::detail::observer_argument_t<A...>>;
 

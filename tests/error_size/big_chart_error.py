@@ -1,0 +1,181 @@
+#!/usr/bin/env python3
+"""Compiles a 200-state chart with one defect and checks that the error fits on one screen.
+Covers the checks of make_chart; errors raised where a machine is used (an unhandled event,
+is<S> of an unknown state, a guard's signature) still spell the machine's type.
+
+    big_chart_error.py --compiler CXX --include DIR --defect KIND [--keep FILE]
+
+The chart: a root with 20 composites C0..C19 of 9 basic states each (200 states), a ring of
+transitions inside each composite and one from each composite to the next. KIND adds one
+defect (see DEFECTS); KIND+KIND+... adds several, and one error each is expected. The compiler must fail, and its output must
+  - report exactly one error (one line with "error:");
+  - be at most 60 lines and 8 KB;
+  - name the check (bsc::error::KIND) and the culprit in the text up to the first error line;
+  - carry bsc's message for the check.
+Exits 0 when all hold; otherwise prints what failed, and the output, and exits 1.
+"""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+COMPOSITES = 20
+CHILDREN = 9
+EVENTS = 10
+MAX_LINES = 60
+MAX_BYTES = 8 * 1024
+
+
+def base_chart():
+    """The tree (one declaration per composite) and the rows, as lists of C++ text."""
+    tree = {"top": []}  # "top": more children of the root
+    rows = []
+    for i in range(COMPOSITES):
+        children = [f"bsc::state<S{i}_{j}>" for j in range(CHILDREN)]
+        tree[i] = [f"bsc::initial<S{i}_0>"] + children
+        for j in range(CHILDREN):
+            rows.append(f"bsc::state<S{i}_{j}> + bsc::event<e{j % EVENTS}> = bsc::state<S{i}_{(j + 1) % CHILDREN}>")
+        rows.append(f"bsc::state<C{i}> + bsc::event<e9> = bsc::state<C{(i + 1) % COMPOSITES}>")
+    return tree, rows
+
+
+# kind -> (culprit names, message regex, edit of (tree, rows, extra declarations, main body))
+def edit(kind, tree, rows, extra, body):
+    if kind == "unreachable_state":
+        tree[5].append("bsc::state<Orphan>")
+        rows.append("bsc::state<Orphan> + bsc::event<e1> = bsc::state<S5_0>")
+        extra.append("struct Orphan;")
+        return ["Orphan"], "unreachable state"
+    if kind == "dead_end_state":
+        tree["top"].append("bsc::state<Stuck>")
+        rows.append("bsc::state<S5_3> + bsc::event<e5> = bsc::state<Stuck>")
+        extra.append("struct Stuck;")
+        return ["Stuck"], "dead end"
+    if kind == "conflicting_transitions":
+        rows.append("bsc::state<S7_2> + bsc::event<e2> = bsc::state<S7_5>")
+        return ["S7_2", "e2"], "conflicting transitions"
+    if kind == "shadowed_transition":
+        rows.append("bsc::state<S7_2> + bsc::event<e2> [([](ctx const&) { return true; })] = bsc::state<S7_5>")
+        return ["S7_2", "e2", "S7_5"], "shadowed transition"
+    if kind == "transition_between_orthogonal_regions":
+        extra.append("struct P; struct R1; struct R2; struct A; struct B;")
+        tree["top"].append("bsc::parallel<P>(bsc::composite<R1>(bsc::initial<A>), bsc::composite<R2>(bsc::initial<B>))")
+        rows.append("bsc::state<S3_4> + bsc::event<e8> = bsc::state<P>")
+        rows.append("bsc::state<A> + bsc::event<e1> = bsc::state<B>")
+        rows.append("bsc::state<B> + bsc::event<e2> = bsc::state<S3_0>")
+        return ["A", "B"], "transition between orthogonal regions"
+    if kind == "state_not_in_chart":
+        extra.append("struct Ghost;")
+        rows.append("bsc::state<S11_1> + bsc::event<e8> = bsc::state<Ghost>")
+        return ["Ghost"], "a row names a state that the state tree does not declare"
+    if kind == "duplicate_state":
+        tree[4].append("bsc::state<S3_3>")
+        return ["S3_3"], "declared twice"
+    if kind == "missing_initial_state":
+        tree[7] = tree[7][1:]
+        return ["C7"], "no initial child"
+    if kind == "multiple_initial_states":
+        tree[7].insert(1, "bsc::initial<S7_1>")
+        return ["C7"], "more than one bsc::initial"
+    if kind == "initial_not_a_child":
+        tree[7][0] = "bsc::initial<S8_0>"
+        return ["C7", "S8_0"], "declared elsewhere in the tree"
+    if kind == "eventless_livelock":
+        rows.append("bsc::state<S9_1> = bsc::state<S9_2>")
+        rows.append("bsc::state<S9_2> = bsc::state<S9_1>")
+        return ["S9_[12]"], "eventless livelock"
+    if kind == "not_a_row":
+        rows.append("bsc::state<S2_2>")
+        return ["S2_2"], "every argument of make_chart must be a row"
+    raise SystemExit(f"unknown defect {kind}")
+
+
+DEFECTS = ["unreachable_state", "dead_end_state", "conflicting_transitions", "shadowed_transition",
+           "transition_between_orthogonal_regions", "state_not_in_chart", "duplicate_state",
+           "missing_initial_state", "multiple_initial_states", "initial_not_a_child", "eventless_livelock",
+           "not_a_row"]
+
+
+def source(kinds):
+    tree, rows = base_chart()
+    extra, body = [], []
+    found = [edit(kind, tree, rows, extra, body) for kind in kinds]
+    names = [f"struct C{i};" for i in range(COMPOSITES)]
+    names += [f"struct S{i}_{j};" for i in range(COMPOSITES) for j in range(CHILDREN)]
+    events = [f"struct e{k} {{}};" for k in range(EVENTS)]
+    composites = [f"        bsc::composite<C{i}>({', '.join(tree[i])})" for i in range(COMPOSITES)]
+    composites += ["        " + t for t in tree["top"]]
+    text = ["#include <bsc/bsc.hpp>", "", "namespace big {", "struct ctx {};", "struct Root;"]
+    text += names + events + extra
+    text.append("inline constexpr auto chart = bsc::make_chart<ctx>(")
+    text.append("    bsc::composite<Root>(bsc::initial<C0>,")
+    text.append(",\n".join(composites) + "),")
+    text.append(",\n".join("    " + r for r in rows) + ");")
+    if body:
+        text.append("inline void run() {")
+        text += ["    " + b for b in body]
+        text.append("}")
+    text.append("}  // namespace big")
+    return "\n".join(text) + "\n", found
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--compiler", required=True)
+    parser.add_argument("--include", required=True, action="append")
+    parser.add_argument("--defect", required=True,
+                        help="one of DEFECTS, or several joined by '+' (then one error each is expected)")
+    parser.add_argument("--keep", help="write the generated source here")
+    args = parser.parse_args()
+
+    kinds = args.defect.split("+")
+    for kind in kinds:
+        if kind not in DEFECTS:
+            parser.error(f"unknown defect {kind}; one of {', '.join(DEFECTS)}")
+    text, found = source(kinds)
+    with tempfile.TemporaryDirectory() as work:
+        path = args.keep or os.path.join(work, "big_chart.cpp")
+        with open(path, "w") as f:
+            f.write(text)
+        command = [args.compiler, "-std=c++20", "-fsyntax-only"] + [f"-I{d}" for d in args.include] + [path]
+        result = subprocess.run(command, capture_output=True, text=True, timeout=600)
+    out = result.stdout + result.stderr
+
+    failures = []
+    if result.returncode == 0:
+        failures.append("the chart compiled")
+    errors = [line for line in out.splitlines() if re.search(r": error: ", line)]
+    if len(errors) != len(kinds):
+        failures.append(f"{len(errors)} error lines, not {len(kinds)}")
+    lines = out.count("\n")
+    if lines > MAX_LINES:
+        failures.append(f"{lines} lines (at most {MAX_LINES})")
+    if len(out.encode()) > MAX_BYTES:
+        failures.append(f"{len(out.encode())} bytes (at most {MAX_BYTES})")
+    first = out.find(": error: ")
+    head = out[: out.find("\n", first) if first >= 0 else len(out)]
+    if len(kinds) == 1:
+        (culprit, message), kind = found[0], kinds[0]
+        if f"bsc::error::{kind}<" not in head:
+            failures.append(f"bsc::error::{kind} not named up to the first error line")
+        for name in culprit:
+            if not re.search(rf"\bbig::{name}\b", head):
+                failures.append(f"the culprit {name} not named up to the first error line")
+    for (culprit, message), kind in zip(found, kinds):
+        if f"bsc::error::{kind}<" not in out:
+            failures.append(f"bsc::error::{kind} not named")
+        if not re.search(message, out):
+            failures.append(f"bsc's message ({message}) missing")
+    print(f"{args.defect}: {lines} lines, {len(out.encode())} bytes, {len(errors)} error line(s)")
+    if failures:
+        print("FAILED: " + "; ".join(failures))
+        print(out)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
