@@ -217,6 +217,18 @@ struct conflicting_history_markers {
     }
 };
 
+// ---- the row of an error ---------------------------------------------------------------------
+
+/// The row an error belongs to: `state<Source> + Trigger = state<Target>` (Trigger is the event,
+/// bsc::detail::eventless_trigger, bsc::detail::timeout_trigger, or the entry_keyword /
+/// exit_keyword of an `on_entry` / `on_exit` row; Target is bsc::detail::no_target for a row
+/// without one). make_chart reports a guard or an action that cannot be called wrapped in it,
+/// so that the error names its row.
+template <class Source, class Trigger, class Target, class Error>
+struct in_row {
+    Error error;  // destroying it raises Error
+};
+
 // ---- the context -----------------------------------------------------------------------------
 
 template <class Type>
@@ -245,7 +257,8 @@ struct guard_signature_not_supported {
     constexpr ~guard_signature_not_supported() {
         static_assert(detail::dependent_false<guard_signature_not_supported>,
                       "bsc: a guard must be callable as g(context const&, event const&), g(context const&) or g(), "
-                      "and return something convertible to bool; see the Callable type in this error");
+                      "and return something convertible to bool; the Callable type in this error is the guard, and "
+                      "bsc::error::in_row<Source, Trigger, Target, ...> the row it belongs to");
     }
 };
 
@@ -255,7 +268,7 @@ struct action_signature_not_supported {
         static_assert(detail::dependent_false<action_signature_not_supported>,
                       "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
                       "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
-                      "Callable type in this error");
+                      "Callable type in this error, and in bsc::error::in_row<Source, Trigger, Target, ...> its row");
     }
 };
 

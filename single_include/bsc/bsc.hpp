@@ -353,6 +353,18 @@ struct conflicting_history_markers {
     }
 };
 
+// ---- the row of an error ---------------------------------------------------------------------
+
+/// The row an error belongs to: `state<Source> + Trigger = state<Target>` (Trigger is the event,
+/// bsc::detail::eventless_trigger, bsc::detail::timeout_trigger, or the entry_keyword /
+/// exit_keyword of an `on_entry` / `on_exit` row; Target is bsc::detail::no_target for a row
+/// without one). make_chart reports a guard or an action that cannot be called wrapped in it,
+/// so that the error names its row.
+template <class Source, class Trigger, class Target, class Error>
+struct in_row {
+    Error error;  // destroying it raises Error
+};
+
 // ---- the context -----------------------------------------------------------------------------
 
 template <class Type>
@@ -381,7 +393,8 @@ struct guard_signature_not_supported {
     constexpr ~guard_signature_not_supported() {
         static_assert(detail::dependent_false<guard_signature_not_supported>,
                       "bsc: a guard must be callable as g(context const&, event const&), g(context const&) or g(), "
-                      "and return something convertible to bool; see the Callable type in this error");
+                      "and return something convertible to bool; the Callable type in this error is the guard, and "
+                      "bsc::error::in_row<Source, Trigger, Target, ...> the row it belongs to");
     }
 };
 
@@ -391,7 +404,7 @@ struct action_signature_not_supported {
         static_assert(detail::dependent_false<action_signature_not_supported>,
                       "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
                       "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
-                      "Callable type in this error");
+                      "Callable type in this error, and in bsc::error::in_row<Source, Trigger, Target, ...> its row");
     }
 };
 
@@ -1834,6 +1847,302 @@ constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) 
 
 }  // namespace bsc::detail
 // end include/bsc/checks/livelock.hpp
+// begin include/bsc/checks/signatures.hpp
+// Guards and actions that cannot be called, found where the chart is declared so that the
+// error names the row they belong to (bsc::error::in_row) instead of surfacing later inside a
+// machine's dispatch. A guard is called as g(context const&, event const&), g(context const&)
+// or g(); an action as a(context&, event const&, raise&), a(context&, event const&), a(context&)
+// or a(); an entry or exit action as a(context&, raise&), a(context&) or a() (detail/invoke.hpp
+// calls them so). Guards and actions combined with bsc::guard and bsc::action (!, &&, ||, the
+// comma) are checked part by part; a callable of another kind is left to the machine.
+
+#include <type_traits>
+
+// begin include/bsc/outcome.hpp
+// What dispatch reports, and the limits a machine runs under.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace bsc {
+
+/// The result of dispatching one event (run to completion, internal events included).
+enum class outcome : std::uint8_t {
+    consumed,        ///< at least one transition fired for the dispatched event
+    ignored,         ///< no transition was enabled; the event was discarded (SCXML semantics)
+    queue_overflow,  ///< an action raised an event while the internal queue was full; that event was dropped
+    livelock,        ///< the eventless-step or internal-event limit was reached; the rest was abandoned
+    halted,          ///< the machine had reached a final child of its root; nothing was processed
+    reentrant,       ///< called from inside one of the machine's own guards or actions: refused, nothing changed
+    failed,          ///< a guard or action threw and no transition took the bsc::action_failed event (the
+                     ///< policy's rethrow_failures is false; last_failure() holds the exception)
+};
+
+/// The limits of a machine. Derive from it and override a member to change one:
+/// `struct my_limits : bsc::default_policy { static constexpr std::size_t queue_capacity = 32; };`
+struct default_policy {
+    /// Events an action may raise before the queue is drained; one more is an overflow.
+    static constexpr std::size_t queue_capacity = 8;
+    /// Eventless transitions taken in a row before dispatch reports a livelock.
+    static constexpr std::size_t max_eventless_steps = 64;
+    /// Internal events processed within one dispatch before it reports a livelock.
+    static constexpr std::size_t max_internal_events = 256;
+    /// true (SCXML): construction and dispatch take eventless transitions until none is
+    /// enabled. false (BSC scan): eventless transitions are taken only by step(), at most one
+    /// per component per cycle.
+    static constexpr bool settle_eventless = true;
+    /// What happens to an exception from a guard or action that no transition takes as a
+    /// bsc::action_failed event: true, dispatch() or step() rethrows it once the machine is
+    /// consistent (and the constructor, for an entry action); false, they return
+    /// outcome::failed and last_failure() holds it.
+    static constexpr bool rethrow_failures = true;
+};
+
+/// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],
+/// docs/references.md): eventless transitions are condition-driven and run only in step(), so a
+/// chart whose components keep reacting to each other (a PLC scan loop) neither livelocks at
+/// construction nor in dispatch.
+struct scan_policy : default_policy {
+    static constexpr bool settle_eventless = false;
+};
+
+/// What one BSC execution cycle (`step(now)`) did, on either back end.
+struct step_report {
+    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
+    int transitions = 0;                ///< condition-driven transitions fired by the components
+    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
+};
+
+/// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
+/// handles is then allowed (and ignored) instead of failing to compile.
+struct allow_unhandled_t {
+    explicit allow_unhandled_t() = default;
+};
+inline constexpr allow_unhandled_t allow_unhandled{};
+
+}  // namespace bsc
+// end include/bsc/outcome.hpp
+// begin include/bsc/runtime/event_queue.hpp
+// The bounded internal event queue: a ring buffer of the chart's event types. No heap;
+// a push onto a full queue is refused and remembered, never written out of bounds.
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <variant>
+
+
+namespace bsc::detail {
+
+template <std::size_t Capacity, class Events>
+class event_queue;
+
+template <std::size_t Capacity, class... Es>
+class event_queue<Capacity, type_list<Es...>> {
+public:
+    using value_type = std::variant<std::monostate, Es...>;
+
+    /// Raises e: queues it for processing after the current step. False if the queue is full.
+    template <class E>
+    constexpr bool operator()(E const& e) {
+        if constexpr (index_in<E, Es...>() < 0) {
+            detail::report<error::raised_event_not_in_chart<E>>();
+            return false;
+        } else {
+            if (size_ == Capacity) {
+                overflowed_ = true;
+                return false;
+            }
+            auto& slot = items_[(head_ + size_) % Capacity];
+            // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
+            // 14 cannot emplace into a variant in a constant expression, so that assigns.
+            if (std::is_constant_evaluated())
+                slot = value_type{std::in_place_type<E>, e};
+            else
+                slot.template emplace<E>(e);
+            ++size_;
+            return true;
+        }
+    }
+
+    constexpr bool empty() const { return size_ == 0; }
+    constexpr std::size_t size() const { return size_; }
+    static constexpr std::size_t capacity() { return Capacity; }
+    constexpr bool overflowed() const { return overflowed_; }
+    constexpr void clear_overflow() { overflowed_ = false; }
+    constexpr void clear() { head_ = size_ = 0; }
+
+    // Removes the oldest event and calls f with it.
+    template <class F>
+    constexpr void pop(F&& f) {
+        value_type item = std::move(items_[head_]);
+        head_ = (head_ + 1) % Capacity;
+        --size_;
+        visit_index<static_cast<int>(sizeof...(Es))>(static_cast<int>(item.index()) - 1,
+                                                     [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
+    }
+
+private:
+    std::array<value_type, Capacity> items_{};
+    std::size_t head_ = 0;
+    std::size_t size_ = 0;
+    bool overflowed_ = false;
+};
+
+// A chart whose queue capacity is zero raises nothing: every raise is an overflow.
+template <class... Es>
+class event_queue<0, type_list<Es...>> {
+public:
+    template <class E>
+    constexpr bool operator()(E const&) {
+        overflowed_ = true;
+        return false;
+    }
+    constexpr bool empty() const { return true; }
+    constexpr std::size_t size() const { return 0; }
+    static constexpr std::size_t capacity() { return 0; }
+    constexpr bool overflowed() const { return overflowed_; }
+    constexpr void clear_overflow() { overflowed_ = false; }
+    constexpr void clear() {}
+    template <class F>
+    constexpr void pop(F&&) {}
+
+private:
+    bool overflowed_ = false;
+};
+
+// The queue of a chart none of whose actions can raise (detail::may_raise): it is always
+// empty, and saying so at compile time spares every dispatch the checks for raised events.
+template <class Events>
+class no_event_queue {
+public:
+    template <class E>
+    constexpr bool operator()(E const&) {  // never called: no action takes the raise argument
+        return false;
+    }
+    static constexpr bool empty() { return true; }
+    static constexpr std::size_t size() { return 0; }
+    static constexpr std::size_t capacity() { return 0; }
+    static constexpr bool overflowed() { return false; }
+    constexpr void clear_overflow() {}
+    constexpr void clear() {}
+    template <class F>
+    constexpr void pop(F&&) {}
+};
+
+}  // namespace bsc::detail
+// end include/bsc/runtime/event_queue.hpp
+
+namespace bsc::detail {
+
+// The first callable of a guard that cannot be called on (Ctx, E), as a one-element list.
+template <class G, class Ctx, class E>
+struct bad_guard {
+    using type = type_list<>;
+};
+template <class F, class Ctx, class E>
+struct bad_guard<guard_fn<F>, Ctx, E> {
+    static constexpr bool callable = std::is_invocable_r_v<bool, F const&, Ctx const&, E const&> ||
+                                     std::is_invocable_r_v<bool, F const&, Ctx const&> ||
+                                     std::is_invocable_r_v<bool, F const&>;
+    using type = std::conditional_t<callable, type_list<>, type_list<F>>;
+};
+template <class G, class Ctx, class E>
+struct bad_guard<not_guard<G>, Ctx, E> : bad_guard<G, Ctx, E> {};
+template <class L, class R, class Ctx, class E>
+struct bad_guard<and_guard<L, R>, Ctx, E> {
+    using type = decltype(typename bad_guard<L, Ctx, E>::type{} + typename bad_guard<R, Ctx, E>::type{});
+};
+template <class L, class R, class Ctx, class E>
+struct bad_guard<or_guard<L, R>, Ctx, E> {
+    using type = decltype(typename bad_guard<L, Ctx, E>::type{} + typename bad_guard<R, Ctx, E>::type{});
+};
+
+// The same for actions; Raise is the queue a machine of the default policy hands them.
+template <class A, class Ctx, class E, class Raise>
+struct bad_action {
+    using type = type_list<>;
+};
+template <class F, class Ctx, class E, class Raise>
+struct bad_action<action_fn<F>, Ctx, E, Raise> {
+    static constexpr bool callable =
+        std::is_invocable_v<F const&, Ctx&, E const&, Raise&> || std::is_invocable_v<F const&, Ctx&, E const&> ||
+        std::is_invocable_v<F const&, Ctx&> || std::is_invocable_v<F const&>;
+    using type = std::conditional_t<callable, type_list<>, type_list<F>>;
+};
+template <class... As, class Ctx, class E, class Raise>
+struct bad_action<action_seq<As...>, Ctx, E, Raise> {
+    using type = decltype((type_list<>{} + ... + typename bad_action<As, Ctx, E, Raise>::type{}));
+};
+template <class A, class Ctx, class Raise>
+struct bad_state_action {
+    static constexpr bool callable = std::is_invocable_v<A const&, Ctx&, Raise&> ||
+                                     std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+    using type = std::conditional_t<callable, type_list<>, type_list<A>>;
+};
+template <class A, class Ctx, class Raise>
+    requires bsc_action<A>
+struct bad_state_action<A, Ctx, Raise> : bad_action<A, Ctx, state_change, Raise> {};
+
+// An entry or exit row's action: state_action<F> as on_entry / on_exit make it; another
+// kind is left to the machine.
+template <class A, class Ctx, class Raise>
+struct bad_entry_action {
+    using type = type_list<>;
+};
+template <class F, class Ctx, class Raise>
+struct bad_entry_action<state_action<F>, Ctx, Raise> : bad_state_action<F, Ctx, Raise> {};
+
+// What a guard or action of a transition row is handed as its event.
+template <class Trigger>
+struct event_of_trigger {
+    using type = eventless;  // eventless transitions and timeouts
+};
+template <class E>
+struct event_of_trigger<event_trigger<E>> {
+    using type = E;
+};
+
+// The errors of one row: at most one, wrapped in error::in_row so that it names the row.
+template <class Ctx, class Raise, class Row>
+constexpr auto signature_errors(Row const*) {
+    if constexpr (is_transition_row<Row>) {
+        using E = typename event_of_trigger<typename Row::trigger>::type;
+        using trigger = std::conditional_t<std::is_same_v<typename Row::trigger, event_trigger<E>>, E, typename Row::trigger>;
+        using guards = typename bad_guard<std::remove_cv_t<decltype(Row::guard)>, Ctx, E>::type;
+        using actions = typename bad_action<std::remove_cv_t<decltype(Row::action)>, Ctx, E, Raise>::type;
+        if constexpr (guards::size > 0)
+            return type_list<error::in_row<typename Row::source, trigger, typename Row::target,
+                                           error::guard_signature_not_supported<at<0, guards>>>>{};
+        else if constexpr (actions::size > 0)
+            return type_list<error::in_row<typename Row::source, trigger, typename Row::target,
+                                           error::action_signature_not_supported<at<0, actions>>>>{};
+        else
+            return type_list<>{};
+    } else {
+        using keyword = std::conditional_t<is_entry_row<Row>, entry_keyword, exit_keyword>;
+        using actions = typename bad_entry_action<std::remove_cv_t<decltype(Row::action)>, Ctx, Raise>::type;
+        if constexpr (actions::size > 0)
+            return type_list<error::in_row<typename Row::source, keyword, no_target,
+                                           error::action_signature_not_supported<at<0, actions>>>>{};
+        else
+            return type_list<>{};
+    }
+}
+
+// The first row of a chart whose guard or action cannot be called.
+template <class Ctx, class Events, class... Rows>
+constexpr auto first_signature_error(type_list<Rows...>) {
+    using Raise = event_queue<default_policy::queue_capacity, Events>;
+    using all = decltype((type_list<>{} + ... + signature_errors<Ctx, Raise>(static_cast<Rows const*>(nullptr))));
+    if constexpr (all::size > 0)
+        return type_list<at<0, all>>{};
+    else
+        return type_list<>{};
+}
+
+}  // namespace bsc::detail
+// end include/bsc/checks/signatures.hpp
 // begin include/bsc/checks/structure.hpp
 // Structural checks: every state declared once, every row's states in the tree, exactly one
 // initial child per composite, no transition between orthogonal regions.
@@ -2025,7 +2334,9 @@ constexpr auto check_chart() {
     else
         // Each check runs, so one build reports every kind of problem it finds.
         return check_orthogonality<Chart>() + check_determinism<Chart>() + check_dead_transitions<Chart>() +
-               check_reachability<Chart>() + check_livelock<Chart>();
+               check_reachability<Chart>() + check_livelock<Chart>() +
+               first_signature_error<typename Chart::context_type, typename chart_model<Chart>::events>(
+                   typename Chart::row_types{});
 }
 
 }  // namespace bsc::detail
@@ -2753,70 +3064,6 @@ concept observes_rows = requires(O& o) {
 
 }  // namespace bsc
 // end include/bsc/observer.hpp
-// begin include/bsc/outcome.hpp
-// What dispatch reports, and the limits a machine runs under.
-
-#include <cstddef>
-#include <cstdint>
-
-namespace bsc {
-
-/// The result of dispatching one event (run to completion, internal events included).
-enum class outcome : std::uint8_t {
-    consumed,        ///< at least one transition fired for the dispatched event
-    ignored,         ///< no transition was enabled; the event was discarded (SCXML semantics)
-    queue_overflow,  ///< an action raised an event while the internal queue was full; that event was dropped
-    livelock,        ///< the eventless-step or internal-event limit was reached; the rest was abandoned
-    halted,          ///< the machine had reached a final child of its root; nothing was processed
-    reentrant,       ///< called from inside one of the machine's own guards or actions: refused, nothing changed
-    failed,          ///< a guard or action threw and no transition took the bsc::action_failed event (the
-                     ///< policy's rethrow_failures is false; last_failure() holds the exception)
-};
-
-/// The limits of a machine. Derive from it and override a member to change one:
-/// `struct my_limits : bsc::default_policy { static constexpr std::size_t queue_capacity = 32; };`
-struct default_policy {
-    /// Events an action may raise before the queue is drained; one more is an overflow.
-    static constexpr std::size_t queue_capacity = 8;
-    /// Eventless transitions taken in a row before dispatch reports a livelock.
-    static constexpr std::size_t max_eventless_steps = 64;
-    /// Internal events processed within one dispatch before it reports a livelock.
-    static constexpr std::size_t max_internal_events = 256;
-    /// true (SCXML): construction and dispatch take eventless transitions until none is
-    /// enabled. false (BSC scan): eventless transitions are taken only by step(), at most one
-    /// per component per cycle.
-    static constexpr bool settle_eventless = true;
-    /// What happens to an exception from a guard or action that no transition takes as a
-    /// bsc::action_failed event: true, dispatch() or step() rethrows it once the machine is
-    /// consistent (and the constructor, for an entry action); false, they return
-    /// outcome::failed and last_failure() holds it.
-    static constexpr bool rethrow_failures = true;
-};
-
-/// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],
-/// docs/references.md): eventless transitions are condition-driven and run only in step(), so a
-/// chart whose components keep reacting to each other (a PLC scan loop) neither livelocks at
-/// construction nor in dispatch.
-struct scan_policy : default_policy {
-    static constexpr bool settle_eventless = false;
-};
-
-/// What one BSC execution cycle (`step(now)`) did, on either back end.
-struct step_report {
-    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
-    int transitions = 0;                ///< condition-driven transitions fired by the components
-    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
-};
-
-/// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
-/// handles is then allowed (and ignored) instead of failing to compile.
-struct allow_unhandled_t {
-    explicit allow_unhandled_t() = default;
-};
-inline constexpr allow_unhandled_t allow_unhandled{};
-
-}  // namespace bsc
-// end include/bsc/outcome.hpp
 // begin include/bsc/runtime/driver.hpp
 // What both back ends share: the public interface of a machine and everything that does not
 // depend on how a transition is selected and fired. The driver owns the machine's data (chart,
@@ -4254,116 +4501,6 @@ protected:
 
 }  // namespace bsc::detail
 // end include/bsc/runtime/driver.hpp
-// begin include/bsc/runtime/event_queue.hpp
-// The bounded internal event queue: a ring buffer of the chart's event types. No heap;
-// a push onto a full queue is refused and remembered, never written out of bounds.
-
-#include <array>
-#include <cstddef>
-#include <type_traits>
-#include <variant>
-
-
-namespace bsc::detail {
-
-template <std::size_t Capacity, class Events>
-class event_queue;
-
-template <std::size_t Capacity, class... Es>
-class event_queue<Capacity, type_list<Es...>> {
-public:
-    using value_type = std::variant<std::monostate, Es...>;
-
-    /// Raises e: queues it for processing after the current step. False if the queue is full.
-    template <class E>
-    constexpr bool operator()(E const& e) {
-        if constexpr (index_in<E, Es...>() < 0) {
-            detail::report<error::raised_event_not_in_chart<E>>();
-            return false;
-        } else {
-            if (size_ == Capacity) {
-                overflowed_ = true;
-                return false;
-            }
-            auto& slot = items_[(head_ + size_) % Capacity];
-            // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
-            // 14 cannot emplace into a variant in a constant expression, so that assigns.
-            if (std::is_constant_evaluated())
-                slot = value_type{std::in_place_type<E>, e};
-            else
-                slot.template emplace<E>(e);
-            ++size_;
-            return true;
-        }
-    }
-
-    constexpr bool empty() const { return size_ == 0; }
-    constexpr std::size_t size() const { return size_; }
-    static constexpr std::size_t capacity() { return Capacity; }
-    constexpr bool overflowed() const { return overflowed_; }
-    constexpr void clear_overflow() { overflowed_ = false; }
-    constexpr void clear() { head_ = size_ = 0; }
-
-    // Removes the oldest event and calls f with it.
-    template <class F>
-    constexpr void pop(F&& f) {
-        value_type item = std::move(items_[head_]);
-        head_ = (head_ + 1) % Capacity;
-        --size_;
-        visit_index<static_cast<int>(sizeof...(Es))>(static_cast<int>(item.index()) - 1,
-                                                     [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
-    }
-
-private:
-    std::array<value_type, Capacity> items_{};
-    std::size_t head_ = 0;
-    std::size_t size_ = 0;
-    bool overflowed_ = false;
-};
-
-// A chart whose queue capacity is zero raises nothing: every raise is an overflow.
-template <class... Es>
-class event_queue<0, type_list<Es...>> {
-public:
-    template <class E>
-    constexpr bool operator()(E const&) {
-        overflowed_ = true;
-        return false;
-    }
-    constexpr bool empty() const { return true; }
-    constexpr std::size_t size() const { return 0; }
-    static constexpr std::size_t capacity() { return 0; }
-    constexpr bool overflowed() const { return overflowed_; }
-    constexpr void clear_overflow() { overflowed_ = false; }
-    constexpr void clear() {}
-    template <class F>
-    constexpr void pop(F&&) {}
-
-private:
-    bool overflowed_ = false;
-};
-
-// The queue of a chart none of whose actions can raise (detail::may_raise): it is always
-// empty, and saying so at compile time spares every dispatch the checks for raised events.
-template <class Events>
-class no_event_queue {
-public:
-    template <class E>
-    constexpr bool operator()(E const&) {  // never called: no action takes the raise argument
-        return false;
-    }
-    static constexpr bool empty() { return true; }
-    static constexpr std::size_t size() { return 0; }
-    static constexpr std::size_t capacity() { return 0; }
-    static constexpr bool overflowed() { return false; }
-    constexpr void clear_overflow() {}
-    constexpr void clear() {}
-    template <class F>
-    constexpr void pop(F&&) {}
-};
-
-}  // namespace bsc::detail
-// end include/bsc/runtime/event_queue.hpp
 // begin include/bsc/runtime/rejected.hpp
 // A machine declared on a chart that failed its checks (detail::rejected_chart): the chart's
 // errors are already reported where the chart is declared, so the machine accepts whatever

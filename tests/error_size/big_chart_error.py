@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Compiles a 200-state chart with one defect and checks that the error fits on one screen.
 Covers the checks of make_chart; errors raised where a machine is used (an unhandled event,
-is<S> of an unknown state, a guard's signature) still spell the machine's type.
+is<S> of an unknown state) still spell the machine's type.
 
     big_chart_error.py --compiler CXX --include DIR --defect KIND [--keep FILE]
 
@@ -90,13 +90,18 @@ def edit(kind, tree, rows, extra, body):
     if kind == "not_a_row":
         rows.append("bsc::state<S2_2>")
         return ["S2_2"], "every argument of make_chart must be a row"
+    if kind == "guard_signature_not_supported":
+        extra.append("struct bad_guard { bool operator()(int const&) const { return true; } };")
+        rows.append("bsc::state<S6_6> + bsc::event<e0> [bad_guard{}] = bsc::state<S6_1>")
+        # The guard is the culprit; its row must be named too, anywhere in the error.
+        return ["bad_guard"], r"(?s)(?=.*a guard must be callable as)(?=.*in_row<big::S6_6, big::e0, big::S6_1)"
     raise SystemExit(f"unknown defect {kind}")
 
 
 DEFECTS = ["unreachable_state", "dead_end_state", "conflicting_transitions", "shadowed_transition",
            "transition_between_orthogonal_regions", "state_not_in_chart", "duplicate_state",
            "missing_initial_state", "multiple_initial_states", "initial_not_a_child", "eventless_livelock",
-           "not_a_row"]
+           "not_a_row", "guard_signature_not_supported"]
 
 
 def source(kinds):

@@ -10,7 +10,10 @@
 //     unguarded one (later rows are dropped);
 //   - every eventless transition is guarded (no eventless livelock can be built);
 //   - every state is reachable (an unreachable one gets a transition from a reachable state);
-//   - every basic state has a way out (one is added where missing).
+//   - every basic state has a way out (one is added where missing);
+//   - no row is dead: none leaves a final child of the root, no row on a state with children
+//     is taken first below it in every leaf (a covering row is guarded), and no timeout
+//     follows a shorter unguarded one with a target (that one is guarded).
 // gen::generated<Seed> wraps a chart as a fixture for differential.hpp, gen::generated_scan<Seed>
 // the same chart under a scan policy. gen::skeleton<K> is a chart whose rows are drawn again at
 // run time by gen::draw (see "skeletons" below): one compiled chart that stands for many.
@@ -106,6 +109,75 @@ struct spec {
         return guarded || event >= 0;
     }
     constexpr void add(row x) { rows[static_cast<std::size_t>(r++)] = x; }
+
+    // bsc's dead transitions (checks/dead_transitions.hpp). A row leaving a final child of a
+    // composite root never fires (the machine halts there); a row on an event leaving a state
+    // with children never fires when every leaf below takes the event first with an unguarded
+    // row of its own or of an ancestor below that state.
+    constexpr bool final_root_child(int x) const {
+        return nodes[static_cast<std::size_t>(x)].parent == 0 && kind(x) == node_kind::final_state &&
+               kind(0) == node_kind::composite;
+    }
+    constexpr int covering_row(int leaf, int above, int event) const {
+        for (int b = leaf; b != above; b = nodes[static_cast<std::size_t>(b)].parent)
+            for (int i = 0; i < r; ++i) {
+                auto const& x = rows[static_cast<std::size_t>(i)];
+                if (x.kind == row_kind::transition && x.from == b && x.event == event && !x.guarded)
+                    return i;
+            }
+        return -1;
+    }
+    // Drops the rows of the first kind and guards one covering row of each of the second, so
+    // that no row is dead; says whether it changed anything.
+    constexpr bool fix_dead_rows() {
+        bool changed = false;
+        int kept = 0;
+        for (int i = 0; i < r; ++i) {
+            auto const x = rows[static_cast<std::size_t>(i)];
+            if (x.kind == row_kind::transition && final_root_child(x.from)) {
+                changed = true;
+                continue;
+            }
+            rows[static_cast<std::size_t>(kept++)] = x;
+        }
+        r = kept;
+        for (int i = 0; i < r; ++i) {
+            auto const x = rows[static_cast<std::size_t>(i)];
+            if (x.kind != row_kind::transition || x.event < 0 || child_count(x.from) == 0)
+                continue;
+            int cover = -1;
+            bool all = true;
+            for (int a = 0; a < n && all; ++a) {
+                if (a == x.from || !contains(x.from, a) || child_count(a) != 0)
+                    continue;
+                int const c = covering_row(a, x.from, x.event);
+                all = c >= 0;
+                if (cover < 0)
+                    cover = c;
+            }
+            if (all && cover >= 0) {
+                rows[static_cast<std::size_t>(cover)].guarded = true;
+                changed = true;
+            }
+        }
+        // A timeout behind an unguarded one of the same state with a target and a shorter delay
+        // (or the same, earlier) never fires: guard the shorter one.
+        for (int i = 0; i < r; ++i) {
+            auto& x = rows[static_cast<std::size_t>(i)];
+            if (x.kind != row_kind::transition || x.event != timeout || x.guarded || x.to < 0)
+                continue;
+            for (int j = 0; j < r; ++j) {
+                auto const& y = rows[static_cast<std::size_t>(j)];
+                if (j != i && y.kind == row_kind::transition && y.event == timeout && y.from == x.from &&
+                    (x.delay < y.delay || (x.delay == y.delay && i < j))) {
+                    x.guarded = true;
+                    changed = true;
+                    break;
+                }
+            }
+        }
+        return changed;
+    }
 
     // bsc's reachability (guards ignored): default entries, then the targets of transitions
     // whose source is reachable, with the default entries of parallel siblings on the way.
@@ -281,60 +353,70 @@ constexpr spec make_spec(std::uint64_t seed, bool skeleton = false) {
         if (s.may_add(x.from, x.event, x.guarded))
             s.add(x);
     }
-    // Every event triggers something, so that actions may raise any of them.
-    for (int e = 0; e < s.events; ++e) {
-        bool used = false;
-        for (int i = 0; i < s.r; ++i) used = used || s.rows[static_cast<std::size_t>(i)].event == e;
-        if (!used)
-            s.add(row{row_kind::transition, 0, e, -1, true, true});
-    }
-    // Every state reachable.
-    for (auto m = s.reachable();; m = s.reachable()) {
-        int t = -1;
-        for (int i = 0; i < s.n && t < 0; ++i)
-            if (!m[static_cast<std::size_t>(i)])
-                t = i;
-        if (t < 0)
-            break;
-        int from = 0;
-        for (int tries = 0; tries < 12; ++tries) {
-            int const c = g.below(s.n);
-            if (m[static_cast<std::size_t>(c)] && !s.orthogonal(c, t)) {
-                from = c;
+    // No dead row, every state reachable, every basic state a way out; each repair may undo
+    // another (a state made final strands its rows), so repeat until none changes anything.
+    for (int round = 0; round < 8; ++round) {
+        int const rows_before = s.r;
+        bool became_final = false;
+        bool const fixed = s.fix_dead_rows();
+        // Every event triggers something, so that actions may raise any of them.
+        for (int e = 0; e < s.events; ++e) {
+            bool used = false;
+            for (int i = 0; i < s.r; ++i) used = used || s.rows[static_cast<std::size_t>(i)].event == e;
+            if (!used)
+                s.add(row{row_kind::transition, 0, e, -1, true, true});
+        }
+        // Every state reachable.
+        for (auto m = s.reachable();; m = s.reachable()) {
+            int t = -1;
+            for (int i = 0; i < s.n && t < 0; ++i)
+                if (!m[static_cast<std::size_t>(i)])
+                    t = i;
+            if (t < 0)
                 break;
+            int from = 0;
+            for (int tries = 0; tries < 12; ++tries) {
+                int const c = g.below(s.n);
+                if (m[static_cast<std::size_t>(c)] && !s.orthogonal(c, t) && !s.final_root_child(c)) {
+                    from = c;
+                    break;
+                }
+            }
+            int event = -1;
+            for (int e = 0; e < s.events; ++e)
+                if (s.may_add(from, e, true))
+                    event = e;
+            bool const acts = event < 0 || g.chance(50);
+            s.add(row{row_kind::transition, from, event, t, true, skeleton || acts});
+        }
+        // Every basic state has a way out: a transition to a state that does not lead back to it
+        // (or, failing that, the state becomes final).
+        for (int x = 0; x < s.n; ++x) {
+            if (s.kind(x) != node_kind::basic || s.can_leave(x))
+                continue;
+            // A timeout (one time in three), else an event, else an eventless transition.
+            int event = g.chance(33) ? timeout : eventless;
+            for (int e = 0; e < s.events && event != timeout; ++e)
+                if (s.may_add(x, e, false))
+                    event = e;
+            int to = -1;
+            for (int tries = 0; tries < 24 && to < 0; ++tries) {
+                int const c = g.below(s.n);
+                if (!s.orthogonal(x, c) && !s.reenters(c, x))
+                    to = c;
+            }
+            if (to < 0) {
+                s.nodes[static_cast<std::size_t>(x)].kind = node_kind::final_state;
+                became_final = true;
+            } else {
+                bool const guarded = event == eventless || g.chance(40);
+                bool const acts = event == eventless || g.chance(50);
+                s.add(row{row_kind::transition, x, event, to, skeleton || guarded, skeleton || acts,
+                          event == timeout ? 5 * (1 + g.below(12)) : 0});
             }
         }
-        int event = -1;
-        for (int e = 0; e < s.events; ++e)
-            if (s.may_add(from, e, true))
-                event = e;
-        bool const acts = event < 0 || g.chance(50);
-        s.add(row{row_kind::transition, from, event, t, true, skeleton || acts});
-    }
-    // Every basic state has a way out: a transition to a state that does not lead back to it
-    // (or, failing that, the state becomes final).
-    for (int x = 0; x < s.n; ++x) {
-        if (s.kind(x) != node_kind::basic || s.can_leave(x))
-            continue;
-        // A timeout (one time in three), else an event, else an eventless transition.
-        int event = g.chance(33) ? timeout : eventless;
-        for (int e = 0; e < s.events && event != timeout; ++e)
-            if (s.may_add(x, e, false))
-                event = e;
-        int to = -1;
-        for (int tries = 0; tries < 24 && to < 0; ++tries) {
-            int const c = g.below(s.n);
-            if (!s.orthogonal(x, c) && !s.reenters(c, x))
-                to = c;
-        }
-        if (to < 0)
-            s.nodes[static_cast<std::size_t>(x)].kind = node_kind::final_state;
-        else {
-            bool const guarded = event == eventless || g.chance(40);
-            bool const acts = event == eventless || g.chance(50);
-            s.add(row{row_kind::transition, x, event, to, skeleton || guarded, skeleton || acts,
-                      event == timeout ? 5 * (1 + g.below(12)) : 0});
-        }
+        if (!fixed && !became_final && s.r == rows_before)
+            break;
     }
     // Entry and exit actions.
     for (int x = 0; x < s.n && s.r < max_rows - 1; ++x) {

@@ -234,7 +234,8 @@ inline constexpr auto chart = [] {
                             state<Wait>, state<Idle>),
         state<L1> + after(250ms) = state<L2>, state<L2>[([](data const& d) { return d.go; })] = state<L1>,
         state<Right> + after(2s)[([](data const& d) { return d.go; })] = state<Wait>,
-        state<Wait> + after(1500us) = state<Idle>, state<Wait> + after(3s) = state<Par>,
+        state<Wait> + after(1500us)[([](data const& d) { return d.go; })] = state<Idle>,
+        state<Wait> + after(3s) = state<Par>,  // the shorter one is guarded: unguarded, it would make this one dead
         state<Idle> + bsc::event<go> = state<Par>);
 }();
 using tables = bsc::table::tables<decltype(chart)>;

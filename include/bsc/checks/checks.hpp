@@ -10,6 +10,7 @@
 #include <bsc/error.hpp>
 #include <bsc/checks/livelock.hpp>
 #include <bsc/checks/reachability.hpp>
+#include <bsc/checks/signatures.hpp>
 #include <bsc/checks/structure.hpp>
 #include <bsc/model/chart_model.hpp>
 
@@ -155,7 +156,9 @@ constexpr auto check_chart() {
     else
         // Each check runs, so one build reports every kind of problem it finds.
         return check_orthogonality<Chart>() + check_determinism<Chart>() + check_dead_transitions<Chart>() +
-               check_reachability<Chart>() + check_livelock<Chart>();
+               check_reachability<Chart>() + check_livelock<Chart>() +
+               first_signature_error<typename Chart::context_type, typename chart_model<Chart>::events>(
+                   typename Chart::row_types{});
 }
 
 }  // namespace bsc::detail

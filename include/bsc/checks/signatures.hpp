@@ -1,0 +1,128 @@
+#pragma once
+// Guards and actions that cannot be called, found where the chart is declared so that the
+// error names the row they belong to (bsc::error::in_row) instead of surfacing later inside a
+// machine's dispatch. A guard is called as g(context const&, event const&), g(context const&)
+// or g(); an action as a(context&, event const&, raise&), a(context&, event const&), a(context&)
+// or a(); an entry or exit action as a(context&, raise&), a(context&) or a() (detail/invoke.hpp
+// calls them so). Guards and actions combined with bsc::guard and bsc::action (!, &&, ||, the
+// comma) are checked part by part; a callable of another kind is left to the machine.
+
+#include <type_traits>
+
+#include <bsc/detail/meta.hpp>
+#include <bsc/dsl/action.hpp>
+#include <bsc/dsl/guard.hpp>
+#include <bsc/dsl/row.hpp>
+#include <bsc/error.hpp>
+#include <bsc/outcome.hpp>
+#include <bsc/runtime/event_queue.hpp>
+
+namespace bsc::detail {
+
+// The first callable of a guard that cannot be called on (Ctx, E), as a one-element list.
+template <class G, class Ctx, class E>
+struct bad_guard {
+    using type = type_list<>;
+};
+template <class F, class Ctx, class E>
+struct bad_guard<guard_fn<F>, Ctx, E> {
+    static constexpr bool callable = std::is_invocable_r_v<bool, F const&, Ctx const&, E const&> ||
+                                     std::is_invocable_r_v<bool, F const&, Ctx const&> ||
+                                     std::is_invocable_r_v<bool, F const&>;
+    using type = std::conditional_t<callable, type_list<>, type_list<F>>;
+};
+template <class G, class Ctx, class E>
+struct bad_guard<not_guard<G>, Ctx, E> : bad_guard<G, Ctx, E> {};
+template <class L, class R, class Ctx, class E>
+struct bad_guard<and_guard<L, R>, Ctx, E> {
+    using type = decltype(typename bad_guard<L, Ctx, E>::type{} + typename bad_guard<R, Ctx, E>::type{});
+};
+template <class L, class R, class Ctx, class E>
+struct bad_guard<or_guard<L, R>, Ctx, E> {
+    using type = decltype(typename bad_guard<L, Ctx, E>::type{} + typename bad_guard<R, Ctx, E>::type{});
+};
+
+// The same for actions; Raise is the queue a machine of the default policy hands them.
+template <class A, class Ctx, class E, class Raise>
+struct bad_action {
+    using type = type_list<>;
+};
+template <class F, class Ctx, class E, class Raise>
+struct bad_action<action_fn<F>, Ctx, E, Raise> {
+    static constexpr bool callable =
+        std::is_invocable_v<F const&, Ctx&, E const&, Raise&> || std::is_invocable_v<F const&, Ctx&, E const&> ||
+        std::is_invocable_v<F const&, Ctx&> || std::is_invocable_v<F const&>;
+    using type = std::conditional_t<callable, type_list<>, type_list<F>>;
+};
+template <class... As, class Ctx, class E, class Raise>
+struct bad_action<action_seq<As...>, Ctx, E, Raise> {
+    using type = decltype((type_list<>{} + ... + typename bad_action<As, Ctx, E, Raise>::type{}));
+};
+template <class A, class Ctx, class Raise>
+struct bad_state_action {
+    static constexpr bool callable = std::is_invocable_v<A const&, Ctx&, Raise&> ||
+                                     std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+    using type = std::conditional_t<callable, type_list<>, type_list<A>>;
+};
+template <class A, class Ctx, class Raise>
+    requires bsc_action<A>
+struct bad_state_action<A, Ctx, Raise> : bad_action<A, Ctx, state_change, Raise> {};
+
+// An entry or exit row's action: state_action<F> as on_entry / on_exit make it; another
+// kind is left to the machine.
+template <class A, class Ctx, class Raise>
+struct bad_entry_action {
+    using type = type_list<>;
+};
+template <class F, class Ctx, class Raise>
+struct bad_entry_action<state_action<F>, Ctx, Raise> : bad_state_action<F, Ctx, Raise> {};
+
+// What a guard or action of a transition row is handed as its event.
+template <class Trigger>
+struct event_of_trigger {
+    using type = eventless;  // eventless transitions and timeouts
+};
+template <class E>
+struct event_of_trigger<event_trigger<E>> {
+    using type = E;
+};
+
+// The errors of one row: at most one, wrapped in error::in_row so that it names the row.
+template <class Ctx, class Raise, class Row>
+constexpr auto signature_errors(Row const*) {
+    if constexpr (is_transition_row<Row>) {
+        using E = typename event_of_trigger<typename Row::trigger>::type;
+        using trigger = std::conditional_t<std::is_same_v<typename Row::trigger, event_trigger<E>>, E, typename Row::trigger>;
+        using guards = typename bad_guard<std::remove_cv_t<decltype(Row::guard)>, Ctx, E>::type;
+        using actions = typename bad_action<std::remove_cv_t<decltype(Row::action)>, Ctx, E, Raise>::type;
+        if constexpr (guards::size > 0)
+            return type_list<error::in_row<typename Row::source, trigger, typename Row::target,
+                                           error::guard_signature_not_supported<at<0, guards>>>>{};
+        else if constexpr (actions::size > 0)
+            return type_list<error::in_row<typename Row::source, trigger, typename Row::target,
+                                           error::action_signature_not_supported<at<0, actions>>>>{};
+        else
+            return type_list<>{};
+    } else {
+        using keyword = std::conditional_t<is_entry_row<Row>, entry_keyword, exit_keyword>;
+        using actions = typename bad_entry_action<std::remove_cv_t<decltype(Row::action)>, Ctx, Raise>::type;
+        if constexpr (actions::size > 0)
+            return type_list<error::in_row<typename Row::source, keyword, no_target,
+                                           error::action_signature_not_supported<at<0, actions>>>>{};
+        else
+            return type_list<>{};
+    }
+}
+
+// The first row of a chart whose guard or action cannot be called.
+template <class Ctx, class Events, class... Rows>
+constexpr auto first_signature_error(type_list<Rows...>) {
+    using Raise = event_queue<default_policy::queue_capacity, Events>;
+    using all = decltype((type_list<>{} + ... + signature_errors<Ctx, Raise>(static_cast<Rows const*>(nullptr))));
+    if constexpr (all::size > 0)
+        return type_list<at<0, all>>{};
+    else
+        return type_list<>{};
+}
+
+}  // namespace bsc::detail
