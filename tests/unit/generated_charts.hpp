@@ -507,41 +507,49 @@ template <std::uint64_t Seed, int Row>
 inline constexpr behaviour behaviour_at =
     behaviour_of(Seed, spec_of<Seed>.rows[static_cast<std::size_t>(Row)], Row, spec_of<Seed>.events);
 
+// What a guard reads: the variable, the latched input or the timer that b names.
+constexpr int read_var(behaviour const& b, gctx const& c) {
+    if (b.var == channel_var) return c.in.get();
+    if (b.var == timer_var) return c.t.tm() ? 1 : 0;
+    return c.v[static_cast<std::size_t>(b.var)];
+}
+
+constexpr bool holds(behaviour const& b, gctx const& c, int data) {
+    return (read_var(b, c) + (b.use_event ? data : 0)) % b.mod == b.rem;
+}
+
 template <std::uint64_t Seed, int Row>
 struct guard {
     template <class E>
     constexpr bool operator()(gctx const& c, E const& e) const {
-        constexpr behaviour b = behaviour_at<Seed, Row>;
-        int read = 0;
-        if constexpr (b.var == channel_var)
-            read = c.in.get();
-        else if constexpr (b.var == timer_var)
-            read = c.t.tm() ? 1 : 0;
-        else
-            read = c.v[static_cast<std::size_t>(b.var)];
-        int const x = read + (b.use_event ? payload(e) : 0);
-        return x % b.mod == b.rem;
+        return holds(behaviour_at<Seed, Row>, c, payload(e));
     }
 };
 
-template <std::uint64_t Seed, int Row>
-constexpr void act_on(gctx& c, int data, auto& raise) {
-    constexpr behaviour b = behaviour_at<Seed, Row>;
-    c.log = (c.log ^ static_cast<std::uint32_t>(Row)) * 16777619u + 1u;
-    int written = 0;
-    if constexpr (b.var == channel_var) {
-        written = (c.out.pending() + b.add + (b.use_event ? data : 0)) % 16;
+// What an action does to the context: logs its row, writes the variable, the output or the
+// timer that b names; returns the value written (a raised event carries it).
+constexpr int apply(behaviour const& b, int row, gctx& c, int data) {
+    c.log = (c.log ^ static_cast<std::uint32_t>(row)) * 16777619u + 1u;
+    if (b.var == channel_var) {
+        int const written = (c.out.pending() + b.add + (b.use_event ? data : 0)) % 16;
         c.out.set(written);
-    } else if constexpr (b.var == timer_var) {
+        return written;
+    }
+    if (b.var == timer_var) {
         if (b.add % 2 == 1)
             c.t.start();
         else
             c.t.reset();
-        written = b.add;
-    } else {
-        auto& v = c.v[static_cast<std::size_t>(b.var)];
-        written = v = (v + b.add + (b.use_event ? data : 0)) % 16;
+        return b.add;
     }
+    auto& v = c.v[static_cast<std::size_t>(b.var)];
+    return v = (v + b.add + (b.use_event ? data : 0)) % 16;
+}
+
+template <std::uint64_t Seed, int Row>
+constexpr void act_on(gctx& c, int data, auto& raise) {
+    constexpr behaviour b = behaviour_at<Seed, Row>;
+    int const written = apply(b, Row, c, data);
     if constexpr (b.raise >= 0)
         raise(ev<Seed, b.raise>{written % 8});
 }
@@ -600,20 +608,13 @@ void draw(std::uint64_t d) {
     }
 }
 
-constexpr int read_var(behaviour const& b, gctx const& c) {
-    if (b.var == channel_var) return c.in.get();
-    if (b.var == timer_var) return c.t.tm() ? 1 : 0;
-    return c.v[static_cast<std::size_t>(b.var)];
-}
-
 template <std::uint64_t Seed, int Row>
 struct drawn_guard {
     template <class E>
     bool operator()(gctx const& c, E const& e) const {
         auto const& l = drawing<Seed>[static_cast<std::size_t>(Row)];
         if (!l.live) return false;
-        if (!l.guarded) return true;
-        return (read_var(l.what, c) + (l.what.use_event ? payload(e) : 0)) % l.what.mod == l.what.rem;
+        return !l.guarded || holds(l.what, c, payload(e));
     }
 };
 
@@ -622,21 +623,7 @@ void drawn_act(gctx& c, int row, int data, auto& raise) {
     auto const& l = drawing<Seed>[static_cast<std::size_t>(row)];
     if (!l.live || !l.acts) return;
     auto const& b = l.what;
-    c.log = (c.log ^ static_cast<std::uint32_t>(row)) * 16777619u + 1u;
-    int written = 0;
-    if (b.var == channel_var) {
-        written = (c.out.pending() + b.add + (b.use_event ? data : 0)) % 16;
-        c.out.set(written);
-    } else if (b.var == timer_var) {
-        if (b.add % 2 == 1)
-            c.t.start();
-        else
-            c.t.reset();
-        written = b.add;
-    } else {
-        auto& v = c.v[static_cast<std::size_t>(b.var)];
-        written = v = (v + b.add + (b.use_event ? data : 0)) % 16;
-    }
+    int const written = apply(b, row, c, data);
     if (b.raise >= 0)
         [&]<int... K>(std::integer_sequence<int, K...>) {
             ((b.raise == K ? static_cast<void>(raise(ev<Seed, K>{written % 8})) : void()), ...);
