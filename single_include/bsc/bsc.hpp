@@ -470,6 +470,14 @@ inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = tr
 #include <array>
 #include <cstddef>
 
+// begin include/bsc/checks/rows_by_source.hpp
+// The rows a check looks at, grouped by source state in declaration order (a counting sort),
+// so that a check compares only the rows of one state: linear in the chart for the usual few
+// rows per state. Rows of state s are order[begin[s]] .. order[begin[s + 1] - 1].
+
+#include <array>
+#include <cstddef>
+
 // begin include/bsc/model/chart_model.hpp
 // The model of a chart: its state tree and its rows flattened into constexpr arrays, from
 // which everything else is computed. The static checks, both back ends, the exports and the
@@ -542,6 +550,20 @@ constexpr duration elapsed(duration since, duration now) {
 
 
 namespace bsc::detail {
+
+// Whether a callable has one of the signatures below: what make_chart checks
+// (checks/signatures.hpp) and what these helpers call.
+template <class G, class Ctx, class E>
+inline constexpr bool guard_callable = std::is_invocable_r_v<bool, G const&, Ctx const&, E const&> ||
+                                       std::is_invocable_r_v<bool, G const&, Ctx const&> ||
+                                       std::is_invocable_r_v<bool, G const&>;
+template <class A, class Ctx, class E, class Raise>
+inline constexpr bool action_callable =
+    std::is_invocable_v<A const&, Ctx&, E const&, Raise&> || std::is_invocable_v<A const&, Ctx&, E const&> ||
+    std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+template <class A, class Ctx, class Raise>
+inline constexpr bool state_action_callable =
+    std::is_invocable_v<A const&, Ctx&, Raise&> || std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
 
 template <class G, class Ctx, class E>
 constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) {
@@ -1545,6 +1567,31 @@ struct chart_model {
 
 namespace bsc::detail {
 
+template <std::size_t N, std::size_t R>
+struct row_buckets {
+    std::array<int, N + 1> begin{};
+    std::array<int, R + 1> order{};
+};
+
+// Groups the transition rows for which keep(i) holds.
+template <std::size_t N, std::size_t R, class Keep>
+constexpr row_buckets<N, R> rows_by_source(row_table<R> const& r, Keep keep) {
+    row_buckets<N, R> b;
+    auto const kept = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && keep(i); };
+    for (std::size_t i = 0; i < R; ++i)
+        if (kept(i)) ++b.begin[static_cast<std::size_t>(r.source[i]) + 1];
+    for (std::size_t s = 0; s < N; ++s) b.begin[s + 1] += b.begin[s];
+    std::array<int, N + 1> fill = b.begin;
+    for (std::size_t i = 0; i < R; ++i)
+        if (kept(i)) b.order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
+    return b;
+}
+
+}  // namespace bsc::detail
+// end include/bsc/checks/rows_by_source.hpp
+
+namespace bsc::detail {
+
 template <std::size_t R>
 struct row_liveness {
     std::array<bool, R> dead{};
@@ -1557,10 +1604,11 @@ constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<
     constexpr int root = 1;
     bool const root_halts = N > 1 && t.kinds[root] == kind::composite;
     // Whether state b has an unguarded transition row on `trigger`.
+    auto const unguarded = rows_by_source<N>(r, [&](std::size_t j) { return !r.guarded[j]; });
     auto takes_unguarded = [&](int b, int trigger) {
-        for (std::size_t j = 0; j < R; ++j)
-            if (r.kinds[j] == row_kind::transition && r.source[j] == b && r.trigger[j] == trigger && !r.guarded[j])
-                return true;
+        auto const bi = static_cast<std::size_t>(b);
+        for (int k = unguarded.begin[bi]; k < unguarded.begin[bi + 1]; ++k)
+            if (r.trigger[static_cast<std::size_t>(unguarded.order[static_cast<std::size_t>(k)])] == trigger) return true;
         return false;
     };
     for (std::size_t i = 0; i < R; ++i) {
@@ -1606,21 +1654,13 @@ struct determinism_findings {
     row_pair shadowed;  // the first unguarded row followed by a guarded one
 };
 
-// Rows are bucketed by source (a counting sort keeps declaration order inside a bucket), so
-// only rows of the same source are compared: linear in the chart for the usual few rows
-// per state.
+// Only rows of the same source are compared (rows_by_source.hpp).
 template <std::size_t N, std::size_t R>
 constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table<R> const& r) {
     determinism_findings found;
-    std::array<int, N + 1> begin{};
-    for (std::size_t i = 0; i < R; ++i)
-        if (r.kinds[i] == row_kind::transition) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
-    for (std::size_t s = 0; s < N; ++s) begin[s + 1] += begin[s];
-    std::array<int, R + 1> order{};
-    std::array<int, N + 1> fill = begin;
-    for (std::size_t i = 0; i < R; ++i)
-        if (r.kinds[i] == row_kind::transition)
-            order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
+    auto const rows = rows_by_source<N>(r, [](std::size_t) { return true; });
+    auto const& begin = rows.begin;
+    auto const& order = rows.order;
     // Report the pair a reader meets first: by the earlier row, then by the later one.
     auto earlier = [](row_pair const& a, int i, int j) {
         return !a.found() || i < a.first || (i == a.first && j < a.second);
@@ -1732,21 +1772,15 @@ constexpr bool reenters(topology<N> const& t, int target, int x) {
 // A basic state x has a way out if some transition with a target can fire while x is active,
 // exits x (its domain is above x) and does not necessarily enter x again. Such a transition
 // leaves x itself or an ancestor of x, or a state in another region of a parallel ancestor of x
-// (then its domain must be above that parallel state). Rows are bucketed by source, in
-// document order, so both kinds are found without scanning every row for every state.
+// (then its domain must be above that parallel state). Rows are grouped by source
+// (rows_by_source.hpp), so both kinds are found without scanning every row for every state.
 template <std::size_t N, std::size_t R>
 constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::array<bool, R> const& dead,
                             std::array<bool, N> const& reach) {
-    std::array<int, N + 1> begin{};
-    auto const counts = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.target[i] >= 0 && !dead[i]; };
-    for (std::size_t i = 0; i < R; ++i)
-        if (counts(i)) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
-    for (std::size_t s = 0; s < N; ++s) begin[s + 1] += begin[s];
-    std::array<int, R + 1> order{};
-    std::array<int, N + 1> fill = begin;
-    for (std::size_t i = 0; i < R; ++i)
-        if (counts(i))
-            order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
+    auto const rows =
+        rows_by_source<N>(r, [&](std::size_t i) { return r.target[i] >= 0 && !dead[i]; });
+    auto const& begin = rows.begin;
+    auto const& order = rows.order;
     // Rows whose source lies in the states [lo, hi) of document order.
     auto way_out_among = [&](int lo, int hi, int x, int above) {
         for (int k = begin[static_cast<std::size_t>(lo)]; k < begin[static_cast<std::size_t>(hi)]; ++k) {
@@ -1852,8 +1886,8 @@ constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) 
 // error names the row they belong to (bsc::error::in_row) instead of surfacing later inside a
 // machine's dispatch. A guard is called as g(context const&, event const&), g(context const&)
 // or g(); an action as a(context&, event const&, raise&), a(context&, event const&), a(context&)
-// or a(); an entry or exit action as a(context&, raise&), a(context&) or a() (detail/invoke.hpp
-// calls them so). Guards and actions combined with bsc::guard and bsc::action (!, &&, ||, the
+// or a(); an entry or exit action as a(context&, raise&), a(context&) or a() (the predicates of
+// detail/invoke.hpp, which calls them so). Guards and actions combined with bsc::guard and bsc::action (!, &&, ||, the
 // comma) are checked part by part; a callable of another kind is left to the machine.
 
 #include <type_traits>
@@ -2042,10 +2076,7 @@ struct bad_guard {
 };
 template <class F, class Ctx, class E>
 struct bad_guard<guard_fn<F>, Ctx, E> {
-    static constexpr bool callable = std::is_invocable_r_v<bool, F const&, Ctx const&, E const&> ||
-                                     std::is_invocable_r_v<bool, F const&, Ctx const&> ||
-                                     std::is_invocable_r_v<bool, F const&>;
-    using type = std::conditional_t<callable, type_list<>, type_list<F>>;
+    using type = std::conditional_t<guard_callable<F, Ctx, E>, type_list<>, type_list<F>>;
 };
 template <class G, class Ctx, class E>
 struct bad_guard<not_guard<G>, Ctx, E> : bad_guard<G, Ctx, E> {};
@@ -2065,10 +2096,7 @@ struct bad_action {
 };
 template <class F, class Ctx, class E, class Raise>
 struct bad_action<action_fn<F>, Ctx, E, Raise> {
-    static constexpr bool callable =
-        std::is_invocable_v<F const&, Ctx&, E const&, Raise&> || std::is_invocable_v<F const&, Ctx&, E const&> ||
-        std::is_invocable_v<F const&, Ctx&> || std::is_invocable_v<F const&>;
-    using type = std::conditional_t<callable, type_list<>, type_list<F>>;
+    using type = std::conditional_t<action_callable<F, Ctx, E, Raise>, type_list<>, type_list<F>>;
 };
 template <class... As, class Ctx, class E, class Raise>
 struct bad_action<action_seq<As...>, Ctx, E, Raise> {
@@ -2076,9 +2104,7 @@ struct bad_action<action_seq<As...>, Ctx, E, Raise> {
 };
 template <class A, class Ctx, class Raise>
 struct bad_state_action {
-    static constexpr bool callable = std::is_invocable_v<A const&, Ctx&, Raise&> ||
-                                     std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
-    using type = std::conditional_t<callable, type_list<>, type_list<A>>;
+    using type = std::conditional_t<state_action_callable<A, Ctx, Raise>, type_list<>, type_list<A>>;
 };
 template <class A, class Ctx, class Raise>
     requires bsc_action<A>

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 
+#include <bsc/checks/rows_by_source.hpp>
 #include <bsc/model/chart_model.hpp>
 
 namespace bsc::detail {
@@ -29,10 +30,11 @@ constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<
     constexpr int root = 1;
     bool const root_halts = N > 1 && t.kinds[root] == kind::composite;
     // Whether state b has an unguarded transition row on `trigger`.
+    auto const unguarded = rows_by_source<N>(r, [&](std::size_t j) { return !r.guarded[j]; });
     auto takes_unguarded = [&](int b, int trigger) {
-        for (std::size_t j = 0; j < R; ++j)
-            if (r.kinds[j] == row_kind::transition && r.source[j] == b && r.trigger[j] == trigger && !r.guarded[j])
-                return true;
+        auto const bi = static_cast<std::size_t>(b);
+        for (int k = unguarded.begin[bi]; k < unguarded.begin[bi + 1]; ++k)
+            if (r.trigger[static_cast<std::size_t>(unguarded.order[static_cast<std::size_t>(k)])] == trigger) return true;
         return false;
     };
     for (std::size_t i = 0; i < R; ++i) {

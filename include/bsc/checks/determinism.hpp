@@ -2,6 +2,7 @@
 // Determinism: two unguarded transitions on the same source and trigger conflict; a
 // transition after an unguarded one on the same source and trigger is shadowed.
 
+#include <bsc/checks/rows_by_source.hpp>
 #include <bsc/model/chart_model.hpp>
 
 namespace bsc::detail {
@@ -17,21 +18,13 @@ struct determinism_findings {
     row_pair shadowed;  // the first unguarded row followed by a guarded one
 };
 
-// Rows are bucketed by source (a counting sort keeps declaration order inside a bucket), so
-// only rows of the same source are compared: linear in the chart for the usual few rows
-// per state.
+// Only rows of the same source are compared (rows_by_source.hpp).
 template <std::size_t N, std::size_t R>
 constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table<R> const& r) {
     determinism_findings found;
-    std::array<int, N + 1> begin{};
-    for (std::size_t i = 0; i < R; ++i)
-        if (r.kinds[i] == row_kind::transition) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
-    for (std::size_t s = 0; s < N; ++s) begin[s + 1] += begin[s];
-    std::array<int, R + 1> order{};
-    std::array<int, N + 1> fill = begin;
-    for (std::size_t i = 0; i < R; ++i)
-        if (r.kinds[i] == row_kind::transition)
-            order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
+    auto const rows = rows_by_source<N>(r, [](std::size_t) { return true; });
+    auto const& begin = rows.begin;
+    auto const& order = rows.order;
     // Report the pair a reader meets first: by the earlier row, then by the later one.
     auto earlier = [](row_pair const& a, int i, int j) {
         return !a.found() || i < a.first || (i == a.first && j < a.second);

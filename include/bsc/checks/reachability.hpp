@@ -2,6 +2,7 @@
 // Reachability (structure only, guards ignored) and dead ends. Both follow only the rows
 // that can fire: `dead` marks the ones that never do (dead_transitions.hpp).
 
+#include <bsc/checks/rows_by_source.hpp>
 #include <bsc/model/chart_model.hpp>
 
 namespace bsc::detail {
@@ -84,21 +85,15 @@ constexpr bool reenters(topology<N> const& t, int target, int x) {
 // A basic state x has a way out if some transition with a target can fire while x is active,
 // exits x (its domain is above x) and does not necessarily enter x again. Such a transition
 // leaves x itself or an ancestor of x, or a state in another region of a parallel ancestor of x
-// (then its domain must be above that parallel state). Rows are bucketed by source, in
-// document order, so both kinds are found without scanning every row for every state.
+// (then its domain must be above that parallel state). Rows are grouped by source
+// (rows_by_source.hpp), so both kinds are found without scanning every row for every state.
 template <std::size_t N, std::size_t R>
 constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::array<bool, R> const& dead,
                             std::array<bool, N> const& reach) {
-    std::array<int, N + 1> begin{};
-    auto const counts = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.target[i] >= 0 && !dead[i]; };
-    for (std::size_t i = 0; i < R; ++i)
-        if (counts(i)) ++begin[static_cast<std::size_t>(r.source[i]) + 1];
-    for (std::size_t s = 0; s < N; ++s) begin[s + 1] += begin[s];
-    std::array<int, R + 1> order{};
-    std::array<int, N + 1> fill = begin;
-    for (std::size_t i = 0; i < R; ++i)
-        if (counts(i))
-            order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
+    auto const rows =
+        rows_by_source<N>(r, [&](std::size_t i) { return r.target[i] >= 0 && !dead[i]; });
+    auto const& begin = rows.begin;
+    auto const& order = rows.order;
     // Rows whose source lies in the states [lo, hi) of document order.
     auto way_out_among = [&](int lo, int hi, int x, int above) {
         for (int k = begin[static_cast<std::size_t>(lo)]; k < begin[static_cast<std::size_t>(hi)]; ++k) {

@@ -3,12 +3,13 @@
 // error names the row they belong to (bsc::error::in_row) instead of surfacing later inside a
 // machine's dispatch. A guard is called as g(context const&, event const&), g(context const&)
 // or g(); an action as a(context&, event const&, raise&), a(context&, event const&), a(context&)
-// or a(); an entry or exit action as a(context&, raise&), a(context&) or a() (detail/invoke.hpp
-// calls them so). Guards and actions combined with bsc::guard and bsc::action (!, &&, ||, the
+// or a(); an entry or exit action as a(context&, raise&), a(context&) or a() (the predicates of
+// detail/invoke.hpp, which calls them so). Guards and actions combined with bsc::guard and bsc::action (!, &&, ||, the
 // comma) are checked part by part; a callable of another kind is left to the machine.
 
 #include <type_traits>
 
+#include <bsc/detail/invoke.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
@@ -26,10 +27,7 @@ struct bad_guard {
 };
 template <class F, class Ctx, class E>
 struct bad_guard<guard_fn<F>, Ctx, E> {
-    static constexpr bool callable = std::is_invocable_r_v<bool, F const&, Ctx const&, E const&> ||
-                                     std::is_invocable_r_v<bool, F const&, Ctx const&> ||
-                                     std::is_invocable_r_v<bool, F const&>;
-    using type = std::conditional_t<callable, type_list<>, type_list<F>>;
+    using type = std::conditional_t<guard_callable<F, Ctx, E>, type_list<>, type_list<F>>;
 };
 template <class G, class Ctx, class E>
 struct bad_guard<not_guard<G>, Ctx, E> : bad_guard<G, Ctx, E> {};
@@ -49,10 +47,7 @@ struct bad_action {
 };
 template <class F, class Ctx, class E, class Raise>
 struct bad_action<action_fn<F>, Ctx, E, Raise> {
-    static constexpr bool callable =
-        std::is_invocable_v<F const&, Ctx&, E const&, Raise&> || std::is_invocable_v<F const&, Ctx&, E const&> ||
-        std::is_invocable_v<F const&, Ctx&> || std::is_invocable_v<F const&>;
-    using type = std::conditional_t<callable, type_list<>, type_list<F>>;
+    using type = std::conditional_t<action_callable<F, Ctx, E, Raise>, type_list<>, type_list<F>>;
 };
 template <class... As, class Ctx, class E, class Raise>
 struct bad_action<action_seq<As...>, Ctx, E, Raise> {
@@ -60,9 +55,7 @@ struct bad_action<action_seq<As...>, Ctx, E, Raise> {
 };
 template <class A, class Ctx, class Raise>
 struct bad_state_action {
-    static constexpr bool callable = std::is_invocable_v<A const&, Ctx&, Raise&> ||
-                                     std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
-    using type = std::conditional_t<callable, type_list<>, type_list<A>>;
+    using type = std::conditional_t<state_action_callable<A, Ctx, Raise>, type_list<>, type_list<A>>;
 };
 template <class A, class Ctx, class Raise>
     requires bsc_action<A>

@@ -11,6 +11,20 @@
 
 namespace bsc::detail {
 
+// Whether a callable has one of the signatures below: what make_chart checks
+// (checks/signatures.hpp) and what these helpers call.
+template <class G, class Ctx, class E>
+inline constexpr bool guard_callable = std::is_invocable_r_v<bool, G const&, Ctx const&, E const&> ||
+                                       std::is_invocable_r_v<bool, G const&, Ctx const&> ||
+                                       std::is_invocable_r_v<bool, G const&>;
+template <class A, class Ctx, class E, class Raise>
+inline constexpr bool action_callable =
+    std::is_invocable_v<A const&, Ctx&, E const&, Raise&> || std::is_invocable_v<A const&, Ctx&, E const&> ||
+    std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+template <class A, class Ctx, class Raise>
+inline constexpr bool state_action_callable =
+    std::is_invocable_v<A const&, Ctx&, Raise&> || std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+
 template <class G, class Ctx, class E>
 constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) {
     if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&, E const&>)
