@@ -11,7 +11,9 @@ endfunction()
 foreach(defect IN ITEMS
     unreachable_state dead_end_state conflicting_transitions shadowed_transition
     transition_between_orthogonal_regions state_not_in_chart duplicate_state missing_initial_state
-    multiple_initial_states initial_not_a_child eventless_livelock not_a_row guard_signature_not_supported)
+    multiple_initial_states initial_not_a_child eventless_livelock not_a_row guard_signature_not_supported
+    action_signature_not_supported dead_transition empty_parallel_state dead_timeout)
   bsc_add_error_size_test(${defect} ${defect})
 endforeach()
 bsc_add_error_size_test(several "dead_end_state+conflicting_transitions+eventless_livelock")
+bsc_add_error_size_test(several_rows "shadowed_transition+dead_transition+action_signature_not_supported")

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -60,61 +61,62 @@ struct chart {
 namespace detail {
 // Deliberately not constexpr (as bsc_after_negative_delay): in a constexpr chart, reaching it is
 // the compile error, and its name says what is wrong; a chart built at run time throws.
-[[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout() {
+[[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(std::size_t row,
+                                                                                         std::size_t fires_first) {
 #if defined(__cpp_exceptions)
     throw std::invalid_argument(
-        "bsc::make_chart: a timeout row can never fire: an unguarded timeout of the same state with a target "
-        "and a shorter (or equal, and earlier) delay always leaves the state first");
+        "bsc::make_chart: the timeout row at position " + std::to_string(row) +
+        " can never fire: the unguarded timeout row at position " + std::to_string(fires_first) +
+        " leaves the same state with a shorter (or equal, and earlier) delay, always first");
 #else
+    (void)row;
+    (void)fires_first;
     std::abort();
 #endif
+}
+// The frame the compiler shows with its arguments (Clang prints their values): the positions of
+// the dead row and of the row that always fires first, counted from 1 among make_chart's rows
+// (as bsc::error::at_row counts them).
+// (The test keeps GCC from rejecting a constexpr function that can never be constant.)
+constexpr void timeout_row_never_fires(std::size_t row, std::size_t fires_first) {
+    if (row != fires_first) bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(row, fires_first);
 }
 
 // The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
 // a timeout row of S behind an unguarded timeout row of S with a target and a shorter delay, or
 // an equal one declared earlier, which always fires first and leaves S, so the clock of the
-// other starts again before it is due.
-template <class Chart, class Rows>
-constexpr void check_timeout_rows(Rows const& rows) {
-    using model = chart_model<Chart>;
-    constexpr auto const& r = model::rows;
-    constexpr std::size_t count = r.kinds.size();
-    if constexpr (count > 0) {
-        std::array<duration, count> delay{};
-        boost::hana::unpack(rows, [&](auto const&... row) {
-            std::size_t i = 0;
-            ((delay[i] = [&] {
-                  if constexpr (is_timeout_row<std::remove_cvref_t<decltype(row)>>)
-                      return row.trigger_value.delay;
-                  else
-                      return duration::zero();
-              }(),
-              ++i),
-             ...);
-        });
-        auto const timeout = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.trigger[i] <= -2; };
-        for (std::size_t i = 0; i < count; ++i) {
-            if (!timeout(i) || r.guarded[i] || r.target[i] < 0) continue;
-            for (std::size_t j = 0; j < count; ++j)
-                if (j != i && timeout(j) && r.source[j] == r.source[i] &&
-                    (delay[i] < delay[j] || (delay[i] == delay[j] && i < j)))
-                    bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout();
-        }
+// other starts again before it is due. The delays are copied out of the rows first, so that the
+// frames of a failure carry an array of numbers and not the chart's type.
+template <std::size_t Count>
+constexpr void check_timeout_rows(row_table<Count> const& r, std::array<duration, Count> const& delay) {
+    auto const timeout = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.trigger[i] <= -2; };
+    for (std::size_t i = 0; i < Count; ++i) {
+        if (!timeout(i) || r.guarded[i] || r.target[i] < 0) continue;
+        for (std::size_t j = 0; j < Count; ++j)
+            if (j != i && timeout(j) && r.source[j] == r.source[i] &&
+                (delay[i] < delay[j] || (delay[i] == delay[j] && i < j)))
+                timeout_row_never_fires(j + 1, i + 1);
     }
 }
 
-// The chart, or, when its checks find errors, the rejected_chart whose destruction reports them.
-template <class Chart, class Rows>
-constexpr auto checked(Rows rows) {
-    return [&]<class... Errors>(type_list<Errors...>) {
-        if constexpr (sizeof...(Errors) == 0) {
-            check_timeout_rows<Chart>(rows);
-            return Chart{std::move(rows)};
-        } else {
-            return rejected_chart<typename Chart::context_type, Errors...>{};
-        }
-    }(check_chart<Chart>());
+template <class... Rows>
+constexpr std::array<duration, sizeof...(Rows)> delays_of(Rows const&... rows) {
+    return {[&] {
+        if constexpr (is_timeout_row<Rows>)
+            return rows.trigger_value.delay;
+        else
+            return duration::zero();
+    }()...};
 }
+
+template <class Errors>
+struct rejected_chart_of;
+template <class... Errors>
+struct rejected_chart_of<type_list<Errors...>> {
+    template <class Context>
+    using type = rejected_chart<Context, Errors...>;
+};
+
 }  // namespace detail
 
 /// Declares a chart: first the state tree, then the rows (transitions, entry and exit actions).
@@ -141,8 +143,21 @@ constexpr auto make_chart(Root root, Rows... rows) {
         return detail::rejected_chart<Context,
                                       error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>>{};
     } else {
+        // The chart, or, when its checks find errors, the rejected_chart whose destruction
+        // reports them. Checked here and not in a helper: a dead timeout is a failure of
+        // constant evaluation, whose notes print every frame with its arguments.
         using chart_type = chart<Context, Root, Rows...>;
-        return detail::checked<chart_type>(boost::hana::make_basic_tuple(std::move(rows)...));
+        using errors = decltype(detail::check_chart<chart_type>());
+        if constexpr (errors::size == 0) {
+            if constexpr (sizeof...(Rows) > 0) {
+                auto const& table = detail::chart_model<chart_type>::rows;
+                auto const delays = detail::delays_of(rows...);
+                detail::check_timeout_rows(table, delays);
+            }
+            return chart_type{boost::hana::make_basic_tuple(std::move(rows)...)};
+        } else {
+            return typename detail::rejected_chart_of<errors>::template type<Context>{};
+        }
     }
 }
 

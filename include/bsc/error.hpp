@@ -10,8 +10,10 @@
 // detail::report<E>() raises one anywhere else. docs/checks.md lists them all with an example
 // each.
 
+#include <cstddef>
 #include <type_traits>
 
+#include <bsc/detail/fixed_string.hpp>
 #include <bsc/detail/meta.hpp>
 
 namespace bsc::error {
@@ -229,6 +231,23 @@ struct in_row {
     Error error;  // destroying it raises Error
 };
 
+/// The row as written, e.g. `as_written<"Idle + go [ready] = Busy">`: states and events by
+/// their unqualified names, guards and actions by their bsc::named names ("guard" and "action"
+/// when unnamed), a timeout as "after(...)".
+template <detail::fixed_string Text>
+struct as_written {};
+
+/// Where a row's error is: the row's Position among make_chart's rows, counted from 1 with
+/// bsc::rows groups expanded in place and entry/exit rows counted, and the row as_written. Every
+/// error that concerns one row (a dead, shadowed or conflicting transition, a transition between
+/// orthogonal regions, a state not in the chart, a guard or action that cannot be called) is
+/// reported wrapped in it. Clang prints a string template argument as character codes, so with
+/// Clang AsWritten is void and the row is identified by its position and the error's culprits.
+template <std::size_t Position, class Error, class AsWritten = void>
+struct at_row {
+    Error error;  // destroying it raises Error
+};
+
 // ---- the context -----------------------------------------------------------------------------
 
 template <class Type>
@@ -257,8 +276,9 @@ struct guard_signature_not_supported {
     constexpr ~guard_signature_not_supported() {
         static_assert(detail::dependent_false<guard_signature_not_supported>,
                       "bsc: a guard must be callable as g(context const&, event const&), g(context const&) or g(), "
-                      "and return something convertible to bool; the Callable type in this error is the guard, and "
-                      "bsc::error::in_row<Source, Trigger, Target, ...> the row it belongs to");
+                      "and return something convertible to bool; the Callable type in this error is the guard, "
+                      "bsc::error::in_row<Source, Trigger, Target, ...> the row it belongs to, and "
+                      "bsc::error::at_row<Position, ...> where that row is among make_chart's rows");
     }
 };
 
@@ -268,7 +288,8 @@ struct action_signature_not_supported {
         static_assert(detail::dependent_false<action_signature_not_supported>,
                       "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
                       "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
-                      "Callable type in this error, and in bsc::error::in_row<Source, Trigger, Target, ...> its row");
+                      "Callable type in this error, in bsc::error::in_row<Source, Trigger, Target, ...> its row, and in "
+                      "bsc::error::at_row<Position, ...> where that row is among make_chart's rows");
     }
 };
 

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -30,8 +31,32 @@
 // detail::report<E>() raises one anywhere else. docs/checks.md lists them all with an example
 // each.
 
+#include <cstddef>
 #include <type_traits>
 
+// begin include/bsc/detail/fixed_string.hpp
+// A string as a template argument: the names of bsc::named<"released"> and the rows that
+// errors reproduce (bsc::error::as_written).
+
+#include <cstddef>
+#include <string_view>
+
+namespace bsc::detail {
+
+/// N characters including the terminating zero, usable as a non-type template argument.
+template <std::size_t N>
+struct fixed_string {
+    char chars[N]{};
+    constexpr fixed_string() = default;
+    // Implicit, so that a string literal converts to it as a template argument.
+    constexpr fixed_string(char const (&text)[N]) {  // NOLINT(google-explicit-constructor)
+        for (std::size_t i = 0; i < N; ++i) chars[i] = text[i];
+    }
+    constexpr std::string_view view() const { return {chars, N - 1}; }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/fixed_string.hpp
 // begin include/bsc/detail/meta.hpp
 // Small type-level toolkit: type lists, lookup by type and by position.
 // Everything heavier than this is done by constexpr functions over arrays.
@@ -365,6 +390,23 @@ struct in_row {
     Error error;  // destroying it raises Error
 };
 
+/// The row as written, e.g. `as_written<"Idle + go [ready] = Busy">`: states and events by
+/// their unqualified names, guards and actions by their bsc::named names ("guard" and "action"
+/// when unnamed), a timeout as "after(...)".
+template <detail::fixed_string Text>
+struct as_written {};
+
+/// Where a row's error is: the row's Position among make_chart's rows, counted from 1 with
+/// bsc::rows groups expanded in place and entry/exit rows counted, and the row as_written. Every
+/// error that concerns one row (a dead, shadowed or conflicting transition, a transition between
+/// orthogonal regions, a state not in the chart, a guard or action that cannot be called) is
+/// reported wrapped in it. Clang prints a string template argument as character codes, so with
+/// Clang AsWritten is void and the row is identified by its position and the error's culprits.
+template <std::size_t Position, class Error, class AsWritten = void>
+struct at_row {
+    Error error;  // destroying it raises Error
+};
+
 // ---- the context -----------------------------------------------------------------------------
 
 template <class Type>
@@ -393,8 +435,9 @@ struct guard_signature_not_supported {
     constexpr ~guard_signature_not_supported() {
         static_assert(detail::dependent_false<guard_signature_not_supported>,
                       "bsc: a guard must be callable as g(context const&, event const&), g(context const&) or g(), "
-                      "and return something convertible to bool; the Callable type in this error is the guard, and "
-                      "bsc::error::in_row<Source, Trigger, Target, ...> the row it belongs to");
+                      "and return something convertible to bool; the Callable type in this error is the guard, "
+                      "bsc::error::in_row<Source, Trigger, Target, ...> the row it belongs to, and "
+                      "bsc::error::at_row<Position, ...> where that row is among make_chart's rows");
     }
 };
 
@@ -404,7 +447,8 @@ struct action_signature_not_supported {
         static_assert(detail::dependent_false<action_signature_not_supported>,
                       "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
                       "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
-                      "Callable type in this error, and in bsc::error::in_row<Source, Trigger, Target, ...> its row");
+                      "Callable type in this error, in bsc::error::in_row<Source, Trigger, Target, ...> its row, and in "
+                      "bsc::error::at_row<Position, ...> where that row is among make_chart's rows");
     }
 };
 
@@ -1881,6 +1925,365 @@ constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) 
 
 }  // namespace bsc::detail
 // end include/bsc/checks/livelock.hpp
+// begin include/bsc/checks/row_text.hpp
+// A row as the user wrote it, as text computed from its type: "Idle + go [ready] / start = Busy".
+// Errors about a row carry it (bsc::error::as_written), so that the row at fault can be found
+// by reading it. What the type does not hold is written generically: an unnamed guard is
+// "[guard]", an unnamed action "/ action", a timeout "after(...)" (its delay is a value).
+// Only rejected charts compute it.
+
+#include <cstddef>
+#include <string_view>
+
+// begin include/bsc/detail/type_name.hpp
+// Compile-time type names without RTTI, read from the compiler's function signature.
+
+#include <string_view>
+
+namespace bsc::detail {
+
+template <class T>
+constexpr std::string_view signature() {
+    return __PRETTY_FUNCTION__;
+}
+
+// GCC: "... [with T = ns::Name; std::string_view = ...]", Clang: "... [T = ns::Name]".
+constexpr std::string_view type_from_signature(std::string_view sig) {
+    constexpr std::string_view key = "T = ";
+    const auto start = sig.find(key) + key.size();
+    auto end = start;
+    int depth = 0;
+    for (; end < sig.size(); ++end) {
+        const char c = sig[end];
+        if (c == '<' || c == '(' || c == '[')
+            ++depth;
+        if (c == '>' || c == ')')
+            --depth;
+        if (depth < 0 || (depth == 0 && (c == ';' || c == ']')))
+            break;
+        if (c == ']')
+            --depth;
+    }
+    return sig.substr(start, end - start);
+}
+
+// "ns::outer::Name<ns::X>" -> "Name<ns::X>": the last scope at bracket depth zero.
+constexpr std::string_view unqualified(std::string_view name) {
+    std::size_t cut = 0;
+    int depth = 0;
+    for (std::size_t i = 0; i + 1 < name.size(); ++i) {
+        if (name[i] == '<')
+            ++depth;
+        if (name[i] == '>')
+            --depth;
+        if (depth == 0 && name[i] == ':' && name[i + 1] == ':')
+            cut = i + 2;
+    }
+    return name.substr(cut);
+}
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// The fully qualified name of a type, e.g. "mcs::Tape", computed at compile time.
+template <class T>
+inline constexpr std::string_view qualified_name = detail::type_from_signature(detail::signature<T>());
+
+/// The name of a type without its namespaces, e.g. "Tape"; used for states in traces.
+template <class T>
+inline constexpr std::string_view name_of = detail::unqualified(qualified_name<T>);
+
+}  // namespace bsc
+// end include/bsc/detail/type_name.hpp
+// begin include/bsc/dsl/named.hpp
+// Names for guards and actions, shown by the diagram exports (<bsc/export.hpp>):
+//
+//   inline constexpr auto released = bsc::named<"released">(bsc::guard([](io const& c) { return !c.button; }));
+//   inline constexpr auto start = bsc::named<"start">(bsc::action([](io& c) { c.motor.set(true); }));
+//
+// A named guard is still a guard and a named action still an action: wrapping changes neither
+// what they do nor how they compose. A named bsc::guard composes with !, && and ||, a named
+// bsc::action sequences with `,` and bsc::seq, and a named plain callable is used where the
+// callable itself would be (as plain callables, it composes once an operand is a bsc::guard or
+// bsc::action). The exports print composed guards and action sequences from the names of their
+// parts ("!released && at_home", "start, light_on").
+//
+// bsc::named<"text">(f) keeps the name in the type and adds nothing to the chart's size;
+// bsc::named(text, f) keeps a std::string_view in the wrapper, for names computed at compile
+// time (e.g. from bsc::name_of); the chart, and each machine that copies it, grows by one
+// std::string_view for each such name.
+
+#include <cstddef>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+
+namespace bsc::detail {
+
+template <fixed_string Text>
+struct static_name {
+    static constexpr std::string_view name = Text.view();
+};
+
+struct stored_name {
+    std::string_view name;
+};
+
+// A named guard or action derives from the wrapped one, so that it is a guard or an action of
+// the same kind (bsc_guard, bsc_action) and keeps its size: holding it as a member would place
+// two guard_base (or action_base) subobjects side by side, which takes a byte more.
+
+/// A bsc guard with a name: a guard itself, so !, && and || apply to it.
+template <class Name, class G>
+struct named_guard : G, Name {};
+
+/// A bsc action with a name: an action itself, so `,` and bsc::seq sequence it. A named
+/// sequence sequenced further is flattened into its parts, as any sequence is.
+template <class Name, class A>
+struct named_action : A, Name {};
+
+/// A plain callable with a name: called exactly as the callable is, so that bsc still picks
+/// the longest argument list it accepts.
+template <class Name, class F>
+struct named_callable : Name {
+    F fn;
+    template <class... Args>
+        requires std::is_invocable_v<F const&, Args...>
+    constexpr decltype(auto) operator()(Args&&... args) const {
+        return fn(std::forward<Args>(args)...);
+    }
+};
+
+// Naming a named guard or action again replaces its name.
+template <class T>
+constexpr T without_name(T t) {
+    return t;
+}
+template <class Name, class G>
+constexpr G without_name(named_guard<Name, G> g) {
+    return static_cast<G&&>(g);
+}
+template <class Name, class A>
+constexpr A without_name(named_action<Name, A> a) {
+    return static_cast<A&&>(a);
+}
+template <class Name, class F>
+constexpr F without_name(named_callable<Name, F> c) {
+    return std::move(c.fn);
+}
+
+template <class Name, class F>
+constexpr auto make_named(Name name, F f) {
+    if constexpr (bsc_guard<F>)
+        return named_guard<Name, F>{std::move(f), name};
+    else if constexpr (bsc_action<F>)
+        return named_action<Name, F>{std::move(f), name};
+    else
+        return named_callable<Name, F>{name, std::move(f)};
+}
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// Gives a guard or an action a name for the diagram exports: `bsc::named<"released">(g)`.
+/// The name is part of the type: it costs nothing at run time.
+template <detail::fixed_string Name, class F>
+constexpr auto named(F f) {
+    return detail::make_named(detail::static_name<Name>{}, detail::without_name(std::move(f)));
+}
+
+/// Gives a guard or an action a name held as a std::string_view (which must outlive the chart,
+/// as a string literal or a bsc::name_of does): `bsc::named("released", g)`.
+template <class F>
+constexpr auto named(std::string_view name, F f) {
+    return detail::make_named(detail::stored_name{name}, detail::without_name(std::move(f)));
+}
+
+}  // namespace bsc
+// end include/bsc/dsl/named.hpp
+
+namespace bsc::detail {
+
+// The writers run twice: once counting characters, once filling a fixed_string of that size.
+struct text_counter {
+    std::size_t size = 0;
+    constexpr void operator()(std::string_view s) { size += s.size(); }
+};
+template <std::size_t N>
+struct text_filler {
+    fixed_string<N>* out;
+    std::size_t at = 0;
+    constexpr void operator()(std::string_view s) {
+        for (char const c : s) out->chars[at++] = c;
+    }
+};
+
+// Operator precedence of a guard expression, for parentheses: || below && below !.
+enum class guard_precedence { any, disjunction, conjunction, negation };
+
+template <class G>
+struct guard_words {
+    template <class Out>
+    static constexpr void write(Out& out, guard_precedence) {
+        out("guard");
+    }
+};
+template <fixed_string Text, class G>
+struct guard_words<named_guard<static_name<Text>, G>> {
+    template <class Out>
+    static constexpr void write(Out& out, guard_precedence) {
+        out(Text.view());
+    }
+};
+template <fixed_string Text, class F>
+struct guard_words<guard_fn<named_callable<static_name<Text>, F>>> {
+    template <class Out>
+    static constexpr void write(Out& out, guard_precedence) {
+        out(Text.view());
+    }
+};
+template <class G>
+struct guard_words<not_guard<G>> {
+    template <class Out>
+    static constexpr void write(Out& out, guard_precedence) {
+        out("!");
+        guard_words<G>::write(out, guard_precedence::negation);
+    }
+};
+template <class L, class R>
+struct guard_words<and_guard<L, R>> {
+    template <class Out>
+    static constexpr void write(Out& out, guard_precedence outer) {
+        bool const parens = outer > guard_precedence::conjunction;
+        if (parens) out("(");
+        guard_words<L>::write(out, guard_precedence::conjunction);
+        out(" && ");
+        guard_words<R>::write(out, guard_precedence::conjunction);
+        if (parens) out(")");
+    }
+};
+template <class L, class R>
+struct guard_words<or_guard<L, R>> {
+    template <class Out>
+    static constexpr void write(Out& out, guard_precedence outer) {
+        bool const parens = outer > guard_precedence::disjunction;
+        if (parens) out("(");
+        guard_words<L>::write(out, guard_precedence::disjunction);
+        out(" || ");
+        guard_words<R>::write(out, guard_precedence::disjunction);
+        if (parens) out(")");
+    }
+};
+
+template <class A>
+struct action_words {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out("action");
+    }
+};
+template <fixed_string Text, class A>
+struct action_words<named_action<static_name<Text>, A>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out(Text.view());
+    }
+};
+template <fixed_string Text, class F>
+struct action_words<action_fn<named_callable<static_name<Text>, F>>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out(Text.view());
+    }
+};
+template <class A>
+struct action_words<state_action<A>> : action_words<A> {};
+template <fixed_string Text, class F>
+struct action_words<state_action<named_callable<static_name<Text>, F>>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out(Text.view());
+    }
+};
+template <class... As>
+struct action_words<action_seq<As...>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        bool first = true;
+        ((out(first ? "(" : ", "), action_words<As>::write(out), first = false), ...);
+        out(")");
+    }
+};
+
+template <class Row>
+struct row_words;
+
+template <class S, class Trigger, class G, class A, class T>
+struct row_words<transition_row<S, Trigger, G, A, T>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out(name_of<S>);
+        if constexpr (std::is_same_v<Trigger, timeout_trigger>) {
+            out(" + after(...)");
+        } else if constexpr (!std::is_same_v<Trigger, eventless_trigger>) {
+            out(" + ");
+            out(name_of<typename Trigger::event>);
+        }
+        if constexpr (!std::is_same_v<G, no_guard>) {
+            out(" [");
+            guard_words<G>::write(out, guard_precedence::any);
+            out("]");
+        }
+        if constexpr (!std::is_same_v<A, no_action>) {
+            out(" / ");
+            action_words<A>::write(out);
+        }
+        if constexpr (!std::is_same_v<T, no_target>) {
+            out(" = ");
+            out(name_of<T>);
+        }
+    }
+};
+template <class S, class A>
+struct row_words<entry_row<S, A>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out(name_of<S>);
+        out(" + on_entry / ");
+        action_words<A>::write(out);
+    }
+};
+template <class S, class A>
+struct row_words<exit_row<S, A>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out(name_of<S>);
+        out(" + on_exit / ");
+        action_words<A>::write(out);
+    }
+};
+
+template <class Row>
+constexpr std::size_t row_text_size() {
+    text_counter count;
+    row_words<Row>::write(count);
+    return count.size;
+}
+
+/// The text of a row, e.g. "Idle + go [ready] = Busy".
+template <class Row>
+constexpr auto row_text() {
+    fixed_string<row_text_size<Row>() + 1> text{};
+    text_filler<row_text_size<Row>() + 1> fill{&text};
+    row_words<Row>::write(fill);
+    return text;
+}
+
+}  // namespace bsc::detail
+// end include/bsc/checks/row_text.hpp
 // begin include/bsc/checks/signatures.hpp
 // Guards and actions that cannot be called, found where the chart is declared so that the
 // error names the row they belong to (bsc::error::in_row) instead of surfacing later inside a
@@ -2156,16 +2559,22 @@ constexpr auto signature_errors(Row const*) {
     }
 }
 
-// The first row of a chart whose guard or action cannot be called.
+// The position of the first row of a chart whose guard or action cannot be called (-1: none),
+// and that row's error.
+template <class Ctx, class Events>
+using signature_raise = event_queue<default_policy::queue_capacity, Events>;
 template <class Ctx, class Events, class... Rows>
-constexpr auto first_signature_error(type_list<Rows...>) {
-    using Raise = event_queue<default_policy::queue_capacity, Events>;
-    using all = decltype((type_list<>{} + ... + signature_errors<Ctx, Raise>(static_cast<Rows const*>(nullptr))));
-    if constexpr (all::size > 0)
-        return type_list<at<0, all>>{};
-    else
-        return type_list<>{};
+constexpr int first_signature_error(type_list<Rows...>) {
+    constexpr bool bad[] = {
+        (decltype(signature_errors<Ctx, signature_raise<Ctx, Events>>(static_cast<Rows const*>(nullptr)))::size > 0)...,
+        false};
+    for (std::size_t i = 0; i < sizeof...(Rows); ++i)
+        if (bad[i]) return static_cast<int>(i);
+    return -1;
 }
+template <class Ctx, class Events, class Row>
+using signature_error =
+    at<0, decltype(signature_errors<Ctx, signature_raise<Ctx, Events>>(static_cast<Row const*>(nullptr)))>;
 
 }  // namespace bsc::detail
 // end include/bsc/checks/signatures.hpp
@@ -2233,6 +2642,17 @@ struct trigger_type<transition_row<S, timeout_trigger, G, A, T>> {
     using type = timeout_trigger;
 };
 
+// An error about the row at Index of the chart's rows (error::at_row names its position and,
+// where the compiler prints strings legibly, the row as written).
+template <class Chart, int Index, class Error>
+using row_error = error::at_row<static_cast<std::size_t>(Index) + 1, Error,
+#if defined(__clang__)
+                                void
+#else
+                                error::as_written<row_text<typename chart_model<Chart>::template row_at<Index>>()>
+#endif
+                                >;
+
 // Whether the tree and the rows are well formed, computed without reporting anything, so
 // that the other checks are not even instantiated on a malformed chart.
 template <class Chart>
@@ -2259,9 +2679,9 @@ constexpr auto check_structure() {
         if constexpr (unknown >= 0) {
             using row = typename model::template row_at<unknown>;
             if constexpr (model::rows.source[unknown] == unknown_state)
-                return type_list<error::state_not_in_chart<typename row::source>>{};
+                return type_list<row_error<Chart, unknown, error::state_not_in_chart<typename row::source>>>{};
             else
-                return type_list<error::state_not_in_chart<typename row::target>>{};
+                return type_list<row_error<Chart, unknown, error::state_not_in_chart<typename row::target>>>{};
         } else {
             constexpr int composite = find_initial_problem(model::tree);
             if constexpr (composite >= 0) {
@@ -2285,7 +2705,8 @@ constexpr auto check_orthogonality() {
     constexpr int row = find_orthogonal_transition(model::tree, model::rows);
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return type_list<error::transition_between_orthogonal_regions<typename R::source, typename R::target>>{};
+        return type_list<
+            row_error<Chart, row, error::transition_between_orthogonal_regions<typename R::source, typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -2299,11 +2720,13 @@ constexpr auto check_determinism() {
     constexpr row_pair shadowed = found.shadowed;
     if constexpr (conflict.found()) {
         using R = typename model::template row_at<conflict.second>;
-        return type_list<error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>>{};
+        return type_list<row_error<Chart, conflict.second,
+                                   error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>>>{};
     } else if constexpr (shadowed.found()) {
         using R = typename model::template row_at<shadowed.second>;
-        return type_list<error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
-                                          typename R::target>>{};
+        return type_list<row_error<Chart, shadowed.second,
+                                   error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
+                                                              typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -2318,7 +2741,8 @@ constexpr auto check_dead_transitions() {
     constexpr int row = liveness_of<Chart>.first_dead;
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return type_list<error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>{};
+        return type_list<row_error<
+            Chart, row, error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -2352,6 +2776,18 @@ constexpr auto check_livelock() {
         return type_list<>{};
 }
 
+template <class Chart>
+constexpr auto check_signatures() {
+    using model = chart_model<Chart>;
+    using context = typename Chart::context_type;
+    constexpr int row = first_signature_error<context, typename model::events>(typename Chart::row_types{});
+    if constexpr (row >= 0)
+        return type_list<row_error<
+            Chart, row, signature_error<context, typename model::events, typename model::template row_at<row>>>>{};
+    else
+        return type_list<>{};
+}
+
 // The errors of a chart, as a type_list; empty for a well-formed chart.
 template <class Chart>
 constexpr auto check_chart() {
@@ -2361,8 +2797,7 @@ constexpr auto check_chart() {
         // Each check runs, so one build reports every kind of problem it finds.
         return check_orthogonality<Chart>() + check_determinism<Chart>() + check_dead_transitions<Chart>() +
                check_reachability<Chart>() + check_livelock<Chart>() +
-               first_signature_error<typename Chart::context_type, typename chart_model<Chart>::events>(
-                   typename Chart::row_types{});
+               check_signatures<Chart>();
 }
 
 }  // namespace bsc::detail
@@ -2410,61 +2845,62 @@ struct chart {
 namespace detail {
 // Deliberately not constexpr (as bsc_after_negative_delay): in a constexpr chart, reaching it is
 // the compile error, and its name says what is wrong; a chart built at run time throws.
-[[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout() {
+[[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(std::size_t row,
+                                                                                         std::size_t fires_first) {
 #if defined(__cpp_exceptions)
     throw std::invalid_argument(
-        "bsc::make_chart: a timeout row can never fire: an unguarded timeout of the same state with a target "
-        "and a shorter (or equal, and earlier) delay always leaves the state first");
+        "bsc::make_chart: the timeout row at position " + std::to_string(row) +
+        " can never fire: the unguarded timeout row at position " + std::to_string(fires_first) +
+        " leaves the same state with a shorter (or equal, and earlier) delay, always first");
 #else
+    (void)row;
+    (void)fires_first;
     std::abort();
 #endif
+}
+// The frame the compiler shows with its arguments (Clang prints their values): the positions of
+// the dead row and of the row that always fires first, counted from 1 among make_chart's rows
+// (as bsc::error::at_row counts them).
+// (The test keeps GCC from rejecting a constexpr function that can never be constant.)
+constexpr void timeout_row_never_fires(std::size_t row, std::size_t fires_first) {
+    if (row != fires_first) bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(row, fires_first);
 }
 
 // The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
 // a timeout row of S behind an unguarded timeout row of S with a target and a shorter delay, or
 // an equal one declared earlier, which always fires first and leaves S, so the clock of the
-// other starts again before it is due.
-template <class Chart, class Rows>
-constexpr void check_timeout_rows(Rows const& rows) {
-    using model = chart_model<Chart>;
-    constexpr auto const& r = model::rows;
-    constexpr std::size_t count = r.kinds.size();
-    if constexpr (count > 0) {
-        std::array<duration, count> delay{};
-        boost::hana::unpack(rows, [&](auto const&... row) {
-            std::size_t i = 0;
-            ((delay[i] = [&] {
-                  if constexpr (is_timeout_row<std::remove_cvref_t<decltype(row)>>)
-                      return row.trigger_value.delay;
-                  else
-                      return duration::zero();
-              }(),
-              ++i),
-             ...);
-        });
-        auto const timeout = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.trigger[i] <= -2; };
-        for (std::size_t i = 0; i < count; ++i) {
-            if (!timeout(i) || r.guarded[i] || r.target[i] < 0) continue;
-            for (std::size_t j = 0; j < count; ++j)
-                if (j != i && timeout(j) && r.source[j] == r.source[i] &&
-                    (delay[i] < delay[j] || (delay[i] == delay[j] && i < j)))
-                    bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout();
-        }
+// other starts again before it is due. The delays are copied out of the rows first, so that the
+// frames of a failure carry an array of numbers and not the chart's type.
+template <std::size_t Count>
+constexpr void check_timeout_rows(row_table<Count> const& r, std::array<duration, Count> const& delay) {
+    auto const timeout = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.trigger[i] <= -2; };
+    for (std::size_t i = 0; i < Count; ++i) {
+        if (!timeout(i) || r.guarded[i] || r.target[i] < 0) continue;
+        for (std::size_t j = 0; j < Count; ++j)
+            if (j != i && timeout(j) && r.source[j] == r.source[i] &&
+                (delay[i] < delay[j] || (delay[i] == delay[j] && i < j)))
+                timeout_row_never_fires(j + 1, i + 1);
     }
 }
 
-// The chart, or, when its checks find errors, the rejected_chart whose destruction reports them.
-template <class Chart, class Rows>
-constexpr auto checked(Rows rows) {
-    return [&]<class... Errors>(type_list<Errors...>) {
-        if constexpr (sizeof...(Errors) == 0) {
-            check_timeout_rows<Chart>(rows);
-            return Chart{std::move(rows)};
-        } else {
-            return rejected_chart<typename Chart::context_type, Errors...>{};
-        }
-    }(check_chart<Chart>());
+template <class... Rows>
+constexpr std::array<duration, sizeof...(Rows)> delays_of(Rows const&... rows) {
+    return {[&] {
+        if constexpr (is_timeout_row<Rows>)
+            return rows.trigger_value.delay;
+        else
+            return duration::zero();
+    }()...};
 }
+
+template <class Errors>
+struct rejected_chart_of;
+template <class... Errors>
+struct rejected_chart_of<type_list<Errors...>> {
+    template <class Context>
+    using type = rejected_chart<Context, Errors...>;
+};
+
 }  // namespace detail
 
 /// Declares a chart: first the state tree, then the rows (transitions, entry and exit actions).
@@ -2491,8 +2927,21 @@ constexpr auto make_chart(Root root, Rows... rows) {
         return detail::rejected_chart<Context,
                                       error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>>{};
     } else {
+        // The chart, or, when its checks find errors, the rejected_chart whose destruction
+        // reports them. Checked here and not in a helper: a dead timeout is a failure of
+        // constant evaluation, whose notes print every frame with its arguments.
         using chart_type = chart<Context, Root, Rows...>;
-        return detail::checked<chart_type>(boost::hana::make_basic_tuple(std::move(rows)...));
+        using errors = decltype(detail::check_chart<chart_type>());
+        if constexpr (errors::size == 0) {
+            if constexpr (sizeof...(Rows) > 0) {
+                auto const& table = detail::chart_model<chart_type>::rows;
+                auto const delays = detail::delays_of(rows...);
+                detail::check_timeout_rows(table, delays);
+            }
+            return chart_type{boost::hana::make_basic_tuple(std::move(rows)...)};
+        } else {
+            return typename detail::rejected_chart_of<errors>::template type<Context>{};
+        }
     }
 }
 
@@ -2985,67 +3434,6 @@ struct plan : chart_layout<Model> {
 
 #include <string_view>
 
-// begin include/bsc/detail/type_name.hpp
-// Compile-time type names without RTTI, read from the compiler's function signature.
-
-#include <string_view>
-
-namespace bsc::detail {
-
-template <class T>
-constexpr std::string_view signature() {
-    return __PRETTY_FUNCTION__;
-}
-
-// GCC: "... [with T = ns::Name; std::string_view = ...]", Clang: "... [T = ns::Name]".
-constexpr std::string_view type_from_signature(std::string_view sig) {
-    constexpr std::string_view key = "T = ";
-    const auto start = sig.find(key) + key.size();
-    auto end = start;
-    int depth = 0;
-    for (; end < sig.size(); ++end) {
-        const char c = sig[end];
-        if (c == '<' || c == '(' || c == '[')
-            ++depth;
-        if (c == '>' || c == ')')
-            --depth;
-        if (depth < 0 || (depth == 0 && (c == ';' || c == ']')))
-            break;
-        if (c == ']')
-            --depth;
-    }
-    return sig.substr(start, end - start);
-}
-
-// "ns::outer::Name<ns::X>" -> "Name<ns::X>": the last scope at bracket depth zero.
-constexpr std::string_view unqualified(std::string_view name) {
-    std::size_t cut = 0;
-    int depth = 0;
-    for (std::size_t i = 0; i + 1 < name.size(); ++i) {
-        if (name[i] == '<')
-            ++depth;
-        if (name[i] == '>')
-            --depth;
-        if (depth == 0 && name[i] == ':' && name[i + 1] == ':')
-            cut = i + 2;
-    }
-    return name.substr(cut);
-}
-
-}  // namespace bsc::detail
-
-namespace bsc {
-
-/// The fully qualified name of a type, e.g. "mcs::Tape", computed at compile time.
-template <class T>
-inline constexpr std::string_view qualified_name = detail::type_from_signature(detail::signature<T>());
-
-/// The name of a type without its namespaces, e.g. "Tape"; used for states in traces.
-template <class T>
-inline constexpr std::string_view name_of = detail::unqualified(qualified_name<T>);
-
-}  // namespace bsc
-// end include/bsc/detail/type_name.hpp
 
 namespace bsc {
 
@@ -5154,125 +5542,6 @@ machine(C const&, A...) -> machine<C const, default_policy, detail::observer_arg
 
 }  // namespace bsc
 // end include/bsc/compiled/machine.hpp
-// begin include/bsc/dsl/named.hpp
-// Names for guards and actions, shown by the diagram exports (<bsc/export.hpp>):
-//
-//   inline constexpr auto released = bsc::named<"released">(bsc::guard([](io const& c) { return !c.button; }));
-//   inline constexpr auto start = bsc::named<"start">(bsc::action([](io& c) { c.motor.set(true); }));
-//
-// A named guard is still a guard and a named action still an action: wrapping changes neither
-// what they do nor how they compose. A named bsc::guard composes with !, && and ||, a named
-// bsc::action sequences with `,` and bsc::seq, and a named plain callable is used where the
-// callable itself would be (as plain callables, it composes once an operand is a bsc::guard or
-// bsc::action). The exports print composed guards and action sequences from the names of their
-// parts ("!released && at_home", "start, light_on").
-//
-// bsc::named<"text">(f) keeps the name in the type and adds nothing to the chart's size;
-// bsc::named(text, f) keeps a std::string_view in the wrapper, for names computed at compile
-// time (e.g. from bsc::name_of); the chart, and each machine that copies it, grows by one
-// std::string_view for each such name.
-
-#include <cstddef>
-#include <string_view>
-#include <type_traits>
-#include <utility>
-
-
-namespace bsc::detail {
-
-/// A string literal as a template argument: bsc::named<"released">.
-template <std::size_t N>
-struct fixed_string {
-    char chars[N]{};
-    // Implicit, so that a string literal converts to it as a template argument.
-    constexpr fixed_string(char const (&text)[N]) {  // NOLINT(google-explicit-constructor)
-        for (std::size_t i = 0; i < N; ++i) chars[i] = text[i];
-    }
-    constexpr std::string_view view() const { return {chars, N - 1}; }
-};
-
-template <fixed_string Text>
-struct static_name {
-    static constexpr std::string_view name = Text.view();
-};
-
-struct stored_name {
-    std::string_view name;
-};
-
-// A named guard or action derives from the wrapped one, so that it is a guard or an action of
-// the same kind (bsc_guard, bsc_action) and keeps its size: holding it as a member would place
-// two guard_base (or action_base) subobjects side by side, which takes a byte more.
-
-/// A bsc guard with a name: a guard itself, so !, && and || apply to it.
-template <class Name, class G>
-struct named_guard : G, Name {};
-
-/// A bsc action with a name: an action itself, so `,` and bsc::seq sequence it. A named
-/// sequence sequenced further is flattened into its parts, as any sequence is.
-template <class Name, class A>
-struct named_action : A, Name {};
-
-/// A plain callable with a name: called exactly as the callable is, so that bsc still picks
-/// the longest argument list it accepts.
-template <class Name, class F>
-struct named_callable : Name {
-    F fn;
-    template <class... Args>
-        requires std::is_invocable_v<F const&, Args...>
-    constexpr decltype(auto) operator()(Args&&... args) const {
-        return fn(std::forward<Args>(args)...);
-    }
-};
-
-// Naming a named guard or action again replaces its name.
-template <class T>
-constexpr T without_name(T t) {
-    return t;
-}
-template <class Name, class G>
-constexpr G without_name(named_guard<Name, G> g) {
-    return static_cast<G&&>(g);
-}
-template <class Name, class A>
-constexpr A without_name(named_action<Name, A> a) {
-    return static_cast<A&&>(a);
-}
-template <class Name, class F>
-constexpr F without_name(named_callable<Name, F> c) {
-    return std::move(c.fn);
-}
-
-template <class Name, class F>
-constexpr auto make_named(Name name, F f) {
-    if constexpr (bsc_guard<F>)
-        return named_guard<Name, F>{std::move(f), name};
-    else if constexpr (bsc_action<F>)
-        return named_action<Name, F>{std::move(f), name};
-    else
-        return named_callable<Name, F>{name, std::move(f)};
-}
-
-}  // namespace bsc::detail
-
-namespace bsc {
-
-/// Gives a guard or an action a name for the diagram exports: `bsc::named<"released">(g)`.
-/// The name is part of the type: it costs nothing at run time.
-template <detail::fixed_string Name, class F>
-constexpr auto named(F f) {
-    return detail::make_named(detail::static_name<Name>{}, detail::without_name(std::move(f)));
-}
-
-/// Gives a guard or an action a name held as a std::string_view (which must outlive the chart,
-/// as a string literal or a bsc::name_of does): `bsc::named("released", g)`.
-template <class F>
-constexpr auto named(std::string_view name, F f) {
-    return detail::make_named(detail::stored_name{name}, detail::without_name(std::move(f)));
-}
-
-}  // namespace bsc
-// end include/bsc/dsl/named.hpp
 // begin include/bsc/system.hpp
 // Systems of actors (the COMDES-II paper [COMDES]; the modules of the ECA paper [ECA]; see
 // docs/references.md): several machines — controllers and plant models — wired by typed signals

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::in_row<cf::Idle, cf::go, cf::Busy, bsc::error::action_signature_not_supported<cf::bad_action> ?>.*bsc: an action must be callable as|bsc: an action must be callable as.*bsc::error::in_row<cf::Idle, cf::go, cf::Busy, bsc::error::action_signature_not_supported<cf::bad_action> ?>)
+// EXPECT: (bsc::error::at_row<1, bsc::error::in_row<cf::Idle, cf::go, cf::Busy, bsc::error::action_signature_not_supported<cf::bad_action> ?>.*bsc: an action must be callable as|bsc: an action must be callable as.*bsc::error::at_row<1, bsc::error::in_row<cf::Idle, cf::go, cf::Busy, bsc::error::action_signature_not_supported<cf::bad_action> ?>)
 // The action takes a cf::unrelated&, which is neither the context, the event nor the raise
 // queue. make_chart reports it with its row, bsc::error::in_row<cf::Idle, cf::go, cf::Busy, ...>.
 #include <bsc/bsc.hpp>

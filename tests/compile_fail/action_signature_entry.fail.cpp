@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::in_row<cf::Busy, bsc::detail::entry_keyword, bsc::detail::no_target, bsc::error::action_signature_not_supported<cf::bad_entry> ?>.*bsc: an action must be callable as|bsc: an action must be callable as.*bsc::error::in_row<cf::Busy, bsc::detail::entry_keyword, bsc::detail::no_target, bsc::error::action_signature_not_supported<cf::bad_entry> ?>)
+// EXPECT: (bsc::error::at_row<2, bsc::error::in_row<cf::Busy, bsc::detail::entry_keyword, bsc::detail::no_target, bsc::error::action_signature_not_supported<cf::bad_entry> ?>.*bsc: an action must be callable as|bsc: an action must be callable as.*bsc::error::at_row<2, bsc::error::in_row<cf::Busy, bsc::detail::entry_keyword, bsc::detail::no_target, bsc::error::action_signature_not_supported<cf::bad_entry> ?>)
 // Busy's entry action takes the event, which an entry action is never given: make_chart
 // reports it with its row, state<Busy> + on_entry.
 #include <bsc/bsc.hpp>

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::conflicting_transitions<cf::Idle, cf::go>.*bsc: conflicting transitions|bsc: conflicting transitions.*bsc::error::conflicting_transitions<cf::Idle, cf::go>)
+// EXPECT: (bsc::error::at_row<2, bsc::error::conflicting_transitions<cf::Idle, cf::go>.*bsc: conflicting transitions|bsc: conflicting transitions.*bsc::error::at_row<2, bsc::error::conflicting_transitions<cf::Idle, cf::go>)
 // Two unguarded transitions leave Idle on go: the chart cannot choose between them.
 #include <bsc/bsc.hpp>
 

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::dead_transition<cf::Work, cf::stop, cf::Idle>.*bsc: dead transition|bsc: dead transition.*bsc::error::dead_transition<cf::Work, cf::stop, cf::Idle>)
+// EXPECT: (bsc::error::at_row<5, bsc::error::dead_transition<cf::Work, cf::stop, cf::Idle>.*bsc: dead transition|bsc: dead transition.*bsc::error::at_row<5, bsc::error::dead_transition<cf::Work, cf::stop, cf::Idle>)
 // Work's row on stop can never fire: both of Work's children take stop first with unguarded
 // rows of their own, so the event never reaches Work.
 #include <bsc/bsc.hpp>

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::in_row<cf::Idle, cf::go, cf::Busy, bsc::error::guard_signature_not_supported<cf::bad_guard> ?>.*bsc: a guard must be callable as|bsc: a guard must be callable as.*bsc::error::in_row<cf::Idle, cf::go, cf::Busy, bsc::error::guard_signature_not_supported<cf::bad_guard> ?>)
+// EXPECT: (bsc::error::at_row<1, bsc::error::in_row<cf::Idle, cf::go, cf::Busy, bsc::error::guard_signature_not_supported<cf::bad_guard> ?>.*bsc: a guard must be callable as|bsc: a guard must be callable as.*bsc::error::at_row<1, bsc::error::in_row<cf::Idle, cf::go, cf::Busy, bsc::error::guard_signature_not_supported<cf::bad_guard> ?>)
 // The guard takes a cf::unrelated, which is neither the context nor the event, so it
 // cannot be called with (context, event), (context) or (). make_chart reports it with its
 // row, bsc::error::in_row<cf::Idle, cf::go, cf::Busy, ...>.

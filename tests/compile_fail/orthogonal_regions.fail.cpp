@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::transition_between_orthogonal_regions<cf::A, cf::B>.*bsc: transition between orthogonal regions|bsc: transition between orthogonal regions.*bsc::error::transition_between_orthogonal_regions<cf::A, cf::B>)
+// EXPECT: (bsc::error::at_row<1, bsc::error::transition_between_orthogonal_regions<cf::A, cf::B>.*bsc: transition between orthogonal regions|bsc: transition between orthogonal regions.*bsc::error::at_row<1, bsc::error::transition_between_orthogonal_regions<cf::A, cf::B>)
 // A and B lie in the two regions of the parallel state P, which are always active
 // together, so a transition from A to B has no meaning.
 #include <bsc/bsc.hpp>

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::shadowed_transition<cf::Idle, cf::go, cf::Other>.*bsc: shadowed transition|bsc: shadowed transition.*bsc::error::shadowed_transition<cf::Idle, cf::go, cf::Other>)
+// EXPECT: (bsc::error::at_row<2, bsc::error::shadowed_transition<cf::Idle, cf::go, cf::Other>.*bsc: shadowed transition|bsc: shadowed transition.*bsc::error::at_row<2, bsc::error::shadowed_transition<cf::Idle, cf::go, cf::Other>)
 // The unguarded transition Idle -go-> Busy comes first, so the guarded Idle -go-> Other
 // after it can never fire.
 #include <bsc/bsc.hpp>

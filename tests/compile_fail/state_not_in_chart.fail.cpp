@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::state_not_in_chart<cf::Ghost>.*bsc: a row names a state that the state tree does not declare|bsc: a row names a state that the state tree does not declare.*bsc::error::state_not_in_chart<cf::Ghost>)
+// EXPECT: (bsc::error::at_row<2, bsc::error::state_not_in_chart<cf::Ghost>.*bsc: a row names a state that the state tree does not declare|bsc: a row names a state that the state tree does not declare.*bsc::error::at_row<2, bsc::error::state_not_in_chart<cf::Ghost>)
 // The target of the second row, Ghost, is not declared in the state tree.
 #include <bsc/bsc.hpp>
 

@@ -425,3 +425,43 @@ TEST_CASE("exports of the examples: every state and transition, and the structur
         check_named(pcell::deposit_belt_chart);
     }
 }
+
+// The text of a row that make_chart's errors carry (bsc::error::as_written): the same names as
+// the exports, computed at compile time from the row's type.
+namespace row_text_test {
+struct go {};
+struct Idle;
+struct Busy;
+struct ctx {
+    int x = 0;
+};
+inline constexpr auto ready = bsc::named<"ready">(bsc::guard([](ctx const& c) { return c.x > 0; }));
+inline constexpr auto hot = bsc::named<"hot">([](ctx const& c) { return c.x > 5; });
+inline constexpr auto cold = bsc::guard([](ctx const& c) { return c.x < 0; });
+inline constexpr auto start = bsc::named<"start">(bsc::action([](ctx& c) { c.x = 1; }));
+inline constexpr auto stop = bsc::named<"stop">([](ctx& c) { c.x = 0; });
+
+// row_text<Row>() is a prvalue: keep it in a variable template so that its view stays valid.
+template <class Row>
+inline constexpr auto kept = bsc::detail::row_text<Row>();
+template <class Row>
+constexpr std::string_view kept_text(Row const&) {
+    return kept<Row>.view();
+}
+}  // namespace row_text_test
+
+TEST_CASE("a row's text as errors show it: names, composed guards, sequences, timeouts, entry and exit") {
+    using namespace row_text_test;
+    CHECK(kept_text(bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>) == "Idle + go = Busy");
+    CHECK(kept_text(bsc::state<Idle> + bsc::event<go>[ready] / start = bsc::state<Busy>) ==
+          "Idle + go [ready] / start = Busy");
+    CHECK(kept_text(bsc::state<Idle> + bsc::event<go>[!(ready || hot) && cold] / (start, bsc::action(stop))) ==
+          "Idle + go [!(ready || hot) && guard] / (start, stop)");
+    CHECK(kept_text(bsc::state<Idle> + bsc::event<go>[ready && (hot || !cold)] = bsc::state<Busy>) ==
+          "Idle + go [ready && (hot || !guard)] = Busy");
+    CHECK(kept_text(bsc::state<Busy> + bsc::after(std::chrono::seconds(3)) / [](ctx&) {}) == "Busy + after(...) / action");
+    CHECK(kept_text(bsc::state<Busy>[hot] = bsc::state<Idle>) == "Busy [hot] = Idle");
+    CHECK(kept_text(bsc::state<Idle> + bsc::on_entry / start) == "Idle + on_entry / start");
+    CHECK(kept_text(bsc::state<Idle> + bsc::on_exit / stop) == "Idle + on_exit / stop");
+    CHECK(kept_text(bsc::state<Idle> + bsc::on_exit / [](ctx&) {}) == "Idle + on_exit / action");
+}

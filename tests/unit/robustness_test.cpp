@@ -191,6 +191,23 @@ TEST_CASE("a chart built at run time with a negative or too long delay throws in
     CHECK_NOTHROW(bsc::after(std::chrono::hours{24 * 365 * 290}));
 }
 
+TEST_CASE("a chart built at run time with a timeout that can never fire throws, naming both rows") {
+    // Row 2 (after first) always leaves Heating before row 3 (after second) is due, unless
+    // row 3's delay is the shorter one.
+    auto const build = [](bsc::duration first, bsc::duration second) {
+        return bsc::make_chart<rob::oven_ctx>(bsc::composite<rob::Root>(bsc::initial<rob::Heating>, bsc::state<rob::Done>),
+                                              bsc::state<rob::Done> + bsc::event<rob::go> = bsc::state<rob::Heating>,
+                                              bsc::state<rob::Heating> + bsc::after(first) = bsc::state<rob::Done>,
+                                              bsc::state<rob::Heating> + bsc::after(second) = bsc::state<rob::Done>);
+    };
+    CHECK_THROWS_WITH_AS(build(1s, 2s),
+                         "bsc::make_chart: the timeout row at position 3 can never fire: the unguarded timeout row at "
+                         "position 2 leaves the same state with a shorter (or equal, and earlier) delay, always first",
+                         std::invalid_argument);
+    CHECK_THROWS_WITH_AS(build(1s, 1s), doctest::Contains("row at position 3 can never fire"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(build(3s, 2s), doctest::Contains("row at position 2 can never fire"), std::invalid_argument);
+}
+
 namespace rob {
 // ---- the explorer's verdicts agree with the machine ------------------------------------------
 struct Waiting; struct Expired;

@@ -10,6 +10,7 @@
 #include <bsc/error.hpp>
 #include <bsc/checks/livelock.hpp>
 #include <bsc/checks/reachability.hpp>
+#include <bsc/checks/row_text.hpp>
 #include <bsc/checks/signatures.hpp>
 #include <bsc/checks/structure.hpp>
 #include <bsc/model/chart_model.hpp>
@@ -28,6 +29,17 @@ template <class S, class G, class A, class T>
 struct trigger_type<transition_row<S, timeout_trigger, G, A, T>> {
     using type = timeout_trigger;
 };
+
+// An error about the row at Index of the chart's rows (error::at_row names its position and,
+// where the compiler prints strings legibly, the row as written).
+template <class Chart, int Index, class Error>
+using row_error = error::at_row<static_cast<std::size_t>(Index) + 1, Error,
+#if defined(__clang__)
+                                void
+#else
+                                error::as_written<row_text<typename chart_model<Chart>::template row_at<Index>>()>
+#endif
+                                >;
 
 // Whether the tree and the rows are well formed, computed without reporting anything, so
 // that the other checks are not even instantiated on a malformed chart.
@@ -55,9 +67,9 @@ constexpr auto check_structure() {
         if constexpr (unknown >= 0) {
             using row = typename model::template row_at<unknown>;
             if constexpr (model::rows.source[unknown] == unknown_state)
-                return type_list<error::state_not_in_chart<typename row::source>>{};
+                return type_list<row_error<Chart, unknown, error::state_not_in_chart<typename row::source>>>{};
             else
-                return type_list<error::state_not_in_chart<typename row::target>>{};
+                return type_list<row_error<Chart, unknown, error::state_not_in_chart<typename row::target>>>{};
         } else {
             constexpr int composite = find_initial_problem(model::tree);
             if constexpr (composite >= 0) {
@@ -81,7 +93,8 @@ constexpr auto check_orthogonality() {
     constexpr int row = find_orthogonal_transition(model::tree, model::rows);
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return type_list<error::transition_between_orthogonal_regions<typename R::source, typename R::target>>{};
+        return type_list<
+            row_error<Chart, row, error::transition_between_orthogonal_regions<typename R::source, typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -95,11 +108,13 @@ constexpr auto check_determinism() {
     constexpr row_pair shadowed = found.shadowed;
     if constexpr (conflict.found()) {
         using R = typename model::template row_at<conflict.second>;
-        return type_list<error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>>{};
+        return type_list<row_error<Chart, conflict.second,
+                                   error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>>>{};
     } else if constexpr (shadowed.found()) {
         using R = typename model::template row_at<shadowed.second>;
-        return type_list<error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
-                                          typename R::target>>{};
+        return type_list<row_error<Chart, shadowed.second,
+                                   error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
+                                                              typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -114,7 +129,8 @@ constexpr auto check_dead_transitions() {
     constexpr int row = liveness_of<Chart>.first_dead;
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return type_list<error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>{};
+        return type_list<row_error<
+            Chart, row, error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -148,6 +164,18 @@ constexpr auto check_livelock() {
         return type_list<>{};
 }
 
+template <class Chart>
+constexpr auto check_signatures() {
+    using model = chart_model<Chart>;
+    using context = typename Chart::context_type;
+    constexpr int row = first_signature_error<context, typename model::events>(typename Chart::row_types{});
+    if constexpr (row >= 0)
+        return type_list<row_error<
+            Chart, row, signature_error<context, typename model::events, typename model::template row_at<row>>>>{};
+    else
+        return type_list<>{};
+}
+
 // The errors of a chart, as a type_list; empty for a well-formed chart.
 template <class Chart>
 constexpr auto check_chart() {
@@ -157,8 +185,7 @@ constexpr auto check_chart() {
         // Each check runs, so one build reports every kind of problem it finds.
         return check_orthogonality<Chart>() + check_determinism<Chart>() + check_dead_transitions<Chart>() +
                check_reachability<Chart>() + check_livelock<Chart>() +
-               first_signature_error<typename Chart::context_type, typename chart_model<Chart>::events>(
-                   typename Chart::row_types{});
+               check_signatures<Chart>();
 }
 
 }  // namespace bsc::detail

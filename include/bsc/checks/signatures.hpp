@@ -107,15 +107,21 @@ constexpr auto signature_errors(Row const*) {
     }
 }
 
-// The first row of a chart whose guard or action cannot be called.
+// The position of the first row of a chart whose guard or action cannot be called (-1: none),
+// and that row's error.
+template <class Ctx, class Events>
+using signature_raise = event_queue<default_policy::queue_capacity, Events>;
 template <class Ctx, class Events, class... Rows>
-constexpr auto first_signature_error(type_list<Rows...>) {
-    using Raise = event_queue<default_policy::queue_capacity, Events>;
-    using all = decltype((type_list<>{} + ... + signature_errors<Ctx, Raise>(static_cast<Rows const*>(nullptr))));
-    if constexpr (all::size > 0)
-        return type_list<at<0, all>>{};
-    else
-        return type_list<>{};
+constexpr int first_signature_error(type_list<Rows...>) {
+    constexpr bool bad[] = {
+        (decltype(signature_errors<Ctx, signature_raise<Ctx, Events>>(static_cast<Rows const*>(nullptr)))::size > 0)...,
+        false};
+    for (std::size_t i = 0; i < sizeof...(Rows); ++i)
+        if (bad[i]) return static_cast<int>(i);
+    return -1;
 }
+template <class Ctx, class Events, class Row>
+using signature_error =
+    at<0, decltype(signature_errors<Ctx, signature_raise<Ctx, Events>>(static_cast<Row const*>(nullptr)))>;
 
 }  // namespace bsc::detail

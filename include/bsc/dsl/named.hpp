@@ -21,21 +21,11 @@
 #include <type_traits>
 #include <utility>
 
+#include <bsc/detail/fixed_string.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
 
 namespace bsc::detail {
-
-/// A string literal as a template argument: bsc::named<"released">.
-template <std::size_t N>
-struct fixed_string {
-    char chars[N]{};
-    // Implicit, so that a string literal converts to it as a template argument.
-    constexpr fixed_string(char const (&text)[N]) {  // NOLINT(google-explicit-constructor)
-        for (std::size_t i = 0; i < N; ++i) chars[i] = text[i];
-    }
-    constexpr std::string_view view() const { return {chars, N - 1}; }
-};
 
 template <fixed_string Text>
 struct static_name {
