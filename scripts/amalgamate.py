@@ -3,10 +3,11 @@
 
 Starting from include/bsc/bsc.hpp, every include that resolves to a file under
 include/ is inlined in place, depth-first and only the first time it is seen;
-all other includes are kept as they are. The explorer, include/bsc/verify.hpp,
-and the diagram exports, include/bsc/export.hpp, become files of their own that
-include the first and add only what it lacks. The output is deterministic so
-that it can be checked in and verified with --check.
+all other includes are kept as they are. The opt-in parts, the explorer (include/bsc/verify.hpp), the diagram exports
+(include/bsc/export.hpp) and the logger (include/bsc/logger.hpp), become files of
+their own that include the first and add only what it lacks; a header two of them
+share is guarded by a macro, so that they can be included together. The output is
+deterministic so that it can be checked in and verified with --check.
 """
 
 import argparse
@@ -21,6 +22,7 @@ INCLUDE_DIR = ROOT / "include"
 ENTRY = INCLUDE_DIR / "bsc" / "bsc.hpp"
 VERIFY_ENTRY = INCLUDE_DIR / "bsc" / "verify.hpp"
 EXPORT_ENTRY = INCLUDE_DIR / "bsc" / "export.hpp"
+LOGGER_ENTRY = INCLUDE_DIR / "bsc" / "logger.hpp"
 DEFAULT_OUTPUT = ROOT / "single_include" / "bsc" / "bsc.hpp"
 COMMAND = "python3 scripts/amalgamate.py"
 
@@ -46,6 +48,14 @@ EXPORT_HEADER = f"""\
 #pragma once
 // bsc exports - Mermaid, Graphviz, PlantUML and SCXML, single-header distribution (needs bsc.hpp beside it).
 // Generated from include/bsc/export.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+LOGGER_HEADER = f"""\
+#pragma once
+// bsc::logger - records of what a machine does, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/logger.hpp by `{COMMAND}`.
 // Do not edit: change the headers under include/ and regenerate.
 #include "bsc.hpp"
 """
@@ -76,9 +86,16 @@ def resolve(line: str, current: Path) -> Path | None:
     return None
 
 
-def inline(path: Path, seen: set[Path], out: list[str]) -> None:
+def guard_macro(path: Path) -> str:
+    return "BSC_SINGLE_" + re.sub(r"[^A-Za-z0-9]", "_", relative(path)).upper()
+
+
+def inline(path: Path, seen: set[Path], out: list[str], guarded: set[Path] = frozenset()) -> None:
+    """Inline path and what it includes; headers in `guarded` get a macro include guard."""
     seen.add(path)
     out.append(f"// begin {relative(path)}\n")
+    if path in guarded:
+        out.append(f"#ifndef {guard_macro(path)}\n#define {guard_macro(path)}\n")
     for line in path.read_text(encoding="utf-8").splitlines(keepends=True):
         if PRAGMA_ONCE_RE.match(line):
             continue
@@ -86,30 +103,38 @@ def inline(path: Path, seen: set[Path], out: list[str]) -> None:
         if target is None:
             out.append(line if line.endswith("\n") else line + "\n")
         elif target not in seen:
-            inline(target, seen, out)
+            inline(target, seen, out, guarded)
+    if path in guarded:
+        out.append(f"#endif  // {guard_macro(path)}\n")
     out.append(f"// end {relative(path)}\n")
 
 
-def amalgamate() -> tuple[str, str, str]:
-    """The single header, and the explorer's and the exports' headers that include it."""
+PARTS = [(VERIFY_ENTRY, VERIFY_HEADER, "verify.hpp"), (EXPORT_ENTRY, EXPORT_HEADER, "export.hpp"),
+         (LOGGER_ENTRY, LOGGER_HEADER, "logger.hpp")]
+
+
+def amalgamate() -> list[tuple[str, str]]:
+    """The single header, then each opt-in part's header that includes it: (name, text)."""
     if not ENTRY.is_file():
         raise SystemExit(f"missing entry header {relative(ENTRY)}")
     seen: set[Path] = set()
     out = [HEADER]
     inline(ENTRY.resolve(), seen, out)
-    in_single_header = set(seen)
-    verify = [VERIFY_HEADER]
-    inline(VERIFY_ENTRY.resolve(), seen, verify)
-    exports = [EXPORT_HEADER]
-    export_seen = set(in_single_header)
-    inline(EXPORT_ENTRY.resolve(), export_seen, exports)
-    # verify.hpp and export.hpp may be included together: neither may repeat a header of the other.
-    shared = (seen - in_single_header) & (export_seen - in_single_header)
-    if shared:
-        names = ", ".join(sorted(relative(p) for p in shared))
-        raise SystemExit(f"{names}: included by both bsc/verify.hpp and bsc/export.hpp but not by "
-                         "bsc/bsc.hpp; include it from bsc/bsc.hpp")
-    return "".join(out), "".join(verify), "".join(exports)
+    in_single_header = frozenset(seen)
+    # Which headers more than one part inlines: those get a guard.
+    uses: dict[Path, int] = {}
+    for entry, _, _ in PARTS:
+        part_seen = set(in_single_header)
+        inline(entry.resolve(), part_seen, [])
+        for path in part_seen - in_single_header:
+            uses[path] = uses.get(path, 0) + 1
+    shared = frozenset(path for path, count in uses.items() if count > 1)
+    results = [("bsc.hpp", "".join(out))]
+    for entry, header, name in PARTS:
+        text = [header]
+        inline(entry.resolve(), set(in_single_header), text, shared)
+        results.append((name, "".join(text)))
+    return results
 
 
 def check(content: str, output: Path) -> int:
@@ -143,9 +168,8 @@ def main() -> int:
                         help="exit 1 if the output file differs from a fresh amalgamation")
     args = parser.parse_args()
 
-    content, verify, exports = amalgamate()
-    outputs = [(content, args.output), (verify, args.output.parent / "verify.hpp"),
-               (exports, args.output.parent / "export.hpp")]
+    parts = amalgamate()
+    outputs = [(parts[0][1], args.output)] + [(text, args.output.parent / name) for name, text in parts[1:]]
     if args.check:
         return max(check(text, path) for text, path in outputs)
     for text, path in outputs:

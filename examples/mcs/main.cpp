@@ -1,9 +1,13 @@
 // The Mode Control Supervisor at work.
 //   mcs                 runs a scripted operator run and checks every step of it
 //   mcs --interactive   the paper's virtual HMI: reads button names from standard input
+//   --log               (with either) also writes bsc::logger's record of every exit,
+//                       transition and entry to standard error
 // Each push prints the button, the resulting active configuration, the error code and what
 // Show put on the display, e.g.
 //   JOG_P     -> MCS On Manual Jog        error 0  show -Setup +Manual +Jog
+// A button is pushed by name: bsc::event_set names the chart's events (each button's `name`),
+// and dispatch_by_number dispatches the one found.
 
 #include <algorithm>
 #include <cctype>
@@ -13,9 +17,26 @@
 #include <string>
 #include <string_view>
 
+#include <bsc/logger.hpp>
+
 #include "mcs.hpp"
 
 namespace {
+
+// The example's machine: the MCS chart with a logger, which writes only when given a stream.
+using machine = bsc::machine<decltype(mcs::chart), bsc::default_policy, bsc::logger>;
+using events = bsc::event_set<decltype(mcs::chart)>;
+
+// The transitions the logger has recorded, which the scripted run checks against its pushes.
+long logged_transitions = 0;
+
+machine make_machine(bool log) {
+    if (!log) return machine{mcs::chart, mcs::panel{}, bsc::logger{bsc::logger::sink_type{}}};
+    return machine{mcs::chart, mcs::panel{}, bsc::logger{[](bsc::log_record const& r) {
+                       std::clog << bsc::to_string(r) << '\n';
+                       logged_transitions += r.what == bsc::log_record::kind::transition;
+                   }}};
+}
 
 bool same_name(std::string_view a, std::string_view b) {
     return std::ranges::equal(a, b, [](char x, char y) {
@@ -29,21 +50,15 @@ struct push {
 };
 
 /// Pushes the button called `name` (in any case); nothing happens if no button is called so.
-std::optional<push> press(mcs::machine& m, std::string_view name) {
-    return [&]<class... Button>(mcs::button_list<Button...>) {
-        std::optional<push> result;
-        auto try_button = [&]<class B>(B const& button) {
-            if (!same_name(name, B::name)) return false;
-            m.context().display.clear();
-            result = push{B::name, m.dispatch(button)};
-            return true;
-        };
-        (void)(try_button(Button{}) || ...);
-        return result;
-    }(mcs::buttons{});
+std::optional<push> press(machine& m, std::string_view name) {
+    auto const found = std::ranges::find_if(events::names, [&](std::string_view event) { return same_name(name, event); });
+    if (found == events::names.end()) return std::nullopt;
+    m.context().display.clear();
+    auto const number = static_cast<std::size_t>(found - events::names.begin());
+    return push{*found, m.dispatch_by_number(number)};
 }
 
-void print(std::string_view button, mcs::machine const& m, bsc::outcome outcome) {
+void print(std::string_view button, machine const& m, bsc::outcome outcome) {
     std::cout << "  " << std::left << std::setw(9) << button << " -> " << std::setw(22)
               << m.active_states().joined() << "  error " << m.context().error;
     if (outcome == bsc::outcome::ignored)
@@ -103,9 +118,9 @@ constexpr step script[] = {
 
 char const* to_string(bsc::outcome o) { return o == consumed ? "consumed" : o == ignored ? "ignored" : "other"; }
 
-int run_script() {
+int run_script(bool log) {
     std::cout << "MCS scripted operator run\n";
-    mcs::machine m{mcs::chart};
+    machine m = make_machine(log);
     print("(start)", m, consumed);
     if (m.active_states().joined() != "MCS Off" || m.context().error != 0) {
         std::cerr << "mcs: the machine does not start in 'MCS Off' with error 0\n";
@@ -114,6 +129,7 @@ int run_script() {
     int number = 0;
     for (step const& s : script) {
         ++number;
+        long const logged_before = logged_transitions;
         auto const pushed = press(m, s.button);
         if (!pushed) {
             std::cerr << "mcs: step " << number << ": no button is called " << s.button << '\n';
@@ -127,8 +143,18 @@ int run_script() {
                       << m.context().error << ", " << to_string(pushed->outcome) << '\n';
             return 1;
         }
+        // With --log, the logger saw a transition for each push that was consumed, and none otherwise.
+        if (log && (logged_transitions > logged_before) != (pushed->outcome == consumed)) {
+            std::cerr << "mcs: step " << number << " (" << s.button << "): the log does not match the outcome\n";
+            return 1;
+        }
     }
-    std::cout << "script ok: " << number << " pushes, every configuration as expected\n";
+    if (log && logged_transitions == 0) {
+        std::cerr << "mcs: --log recorded no transition\n";
+        return 1;
+    }
+    std::cout << "script ok: " << number << " pushes, every configuration as expected"
+              << (log ? ", " + std::to_string(logged_transitions) + " transitions logged" : std::string{}) << '\n';
     return 0;
 }
 
@@ -149,9 +175,9 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-int run_interactive() {
+int run_interactive(bool log) {
     std::cout << "MCS virtual HMI: one button per line, 'help' lists them, 'quit' leaves\n";
-    mcs::machine m{mcs::chart};
+    machine m = make_machine(log);
     print("(start)", m, consumed);
     for (std::string line; std::getline(std::cin, line);) {
         std::string_view const name = trim(line);
@@ -162,7 +188,7 @@ int run_interactive() {
         } else if (auto const pushed = press(m, name)) {
             print(pushed->button, m, pushed->outcome);
         } else {
-            std::cerr << "mcs: unknown button '" << name << "' ('help' lists the buttons)\n";
+            std::cerr << "mcs: " << events::unknown(name) << " (any case; 'help' lists the buttons)\n";
         }
     }
     return 0;
@@ -171,11 +197,21 @@ int run_interactive() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string_view const mode = argc > 1 ? argv[1] : "";
-    if (argc == 1) return run_script();
-    if (argc == 2 && mode == "--interactive") return run_interactive();
-    std::cerr << "usage: mcs [--interactive]\n"
-                 "  without arguments: run the scripted operator run and check it\n"
-                 "  --interactive:     push buttons by name, one per line on standard input\n";
-    return 2;
+    bool interactive = false;
+    bool log = false;
+    for (int i = 1; i < argc; ++i) {
+        std::string_view const a = argv[i];
+        if (a == "--interactive" && !interactive) {
+            interactive = true;
+        } else if (a == "--log" && !log) {
+            log = true;
+        } else {
+            std::cerr << "usage: mcs [--interactive] [--log]\n"
+                         "  without arguments: run the scripted operator run and check it\n"
+                         "  --interactive:     push buttons by name, one per line on standard input\n"
+                         "  --log:             write every exit, transition and entry to standard error\n";
+            return 2;
+        }
+    }
+    return interactive ? run_interactive(log) : run_script(log);
 }

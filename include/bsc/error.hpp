@@ -149,6 +149,35 @@ struct unhandled_event {
     }
 };
 
+template <class First, class Second>
+struct duplicate_event_name {
+    constexpr ~duplicate_event_name() {
+        static_assert(detail::dependent_false<duplicate_event_name>,
+                      "bsc: two events of this chart have the same name, so bsc::event_set cannot tell them apart by "
+                      "name; give one of them a static member `name` of its own (static constexpr std::string_view "
+                      "name = \"...\";)");
+    }
+};
+
+template <class Event>
+struct not_an_event_of_the_chart {
+    constexpr ~not_an_event_of_the_chart() {
+        static_assert(detail::dependent_false<not_an_event_of_the_chart>,
+                      "bsc: bsc::event_set<Chart>::number_of<Event>: Event is none of the chart's events (the "
+                      "trigger events of its rows, bsc::action_failed left out); see bsc::event_set<Chart>::events");
+    }
+};
+
+template <class Event>
+struct event_not_constructible {
+    constexpr ~event_not_constructible() {
+        static_assert(detail::dependent_false<event_not_constructible>,
+                      "bsc: dispatch_by_name and dispatch_by_number build the event they dispatch: this event has no "
+                      "default constructor, so pass a decoder that builds it, callable as "
+                      "decode(std::type_identity<Event>{}) and returning the event");
+    }
+};
+
 template <class Type>
 struct not_an_event {
     constexpr ~not_an_event() {

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include <bsc/detail/type_name.hpp>
+#include <bsc/duration.hpp>
 
 namespace bsc {
 
@@ -18,6 +19,12 @@ struct state_tag {
 /// The target reported for an internal transition, which exits and enters nothing.
 struct internal {};
 
+/// What on_transition receives as the event of a timeout row (`after(delay)`): its delay. An
+/// eventless row's transition receives bsc::eventless, an event's transition the event.
+struct timeout_elapsed {
+    duration delay;
+};
+
 /// The default observer: no hooks, no cost.
 struct no_observer {};
 
@@ -26,8 +33,13 @@ struct no_observer {};
 ///   void on_exit(auto state);               // after state's exit actions
 ///   void on_transition(auto source, auto target, auto const& event);  // before the action
 ///   void on_row(int row);                   // the same moment: the row's position in make_chart
+///   void on_dispatch(auto const& event);    // dispatch(event) begins (not when refused)
+///   void on_cycle(bsc::duration now);       // step(now) begins, with the cycle's time
+///   void on_cycle_end();                    // that cycle's outputs are committed
 /// where `state`, `source` and `target` are bsc::state_tag<S> (target: state_tag<bsc::internal>
-/// for an internal transition) and `event` is the event (bsc::eventless for eventless ones).
+/// for an internal transition) and `event` is the event: bsc::eventless for an eventless row,
+/// bsc::timeout_elapsed{delay} for a timeout row. A hook the observer lacks costs nothing.
+/// The time of a dispatch is the machine's clock, now(): the time of the last cycle.
 namespace detail {
 template <class O, class Tag>
 concept observes_entry = requires(O& o) {
@@ -44,6 +56,18 @@ concept observes_transition = requires(O& o, E const& e) {
 template <class O>
 concept observes_rows = requires(O& o) {
     o.on_row(0);
+};
+template <class O, class E>
+concept observes_dispatch = requires(O& o, E const& e) {
+    o.on_dispatch(e);
+};
+template <class O>
+concept observes_cycles = requires(O& o) {
+    o.on_cycle(duration{});
+};
+template <class O>
+concept observes_cycle_ends = requires(O& o) {
+    o.on_cycle_end();
 };
 }  // namespace detail
 

@@ -16,6 +16,8 @@ enum class outcome : std::uint8_t {
     reentrant,       ///< called from inside one of the machine's own guards or actions: refused, nothing changed
     failed,          ///< a guard or action threw and no transition took the bsc::action_failed event (the
                      ///< policy's rethrow_failures is false; last_failure() holds the exception)
+    unknown_event,   ///< dispatch_by_name or dispatch_by_number named no event of the chart: nothing was
+                     ///< processed (bsc::event_set<Chart>::unknown(name) says why)
 };
 
 /// The limits of a machine. Derive from it and override a member to change one:

@@ -308,6 +308,35 @@ struct unhandled_event {
     }
 };
 
+template <class First, class Second>
+struct duplicate_event_name {
+    constexpr ~duplicate_event_name() {
+        static_assert(detail::dependent_false<duplicate_event_name>,
+                      "bsc: two events of this chart have the same name, so bsc::event_set cannot tell them apart by "
+                      "name; give one of them a static member `name` of its own (static constexpr std::string_view "
+                      "name = \"...\";)");
+    }
+};
+
+template <class Event>
+struct not_an_event_of_the_chart {
+    constexpr ~not_an_event_of_the_chart() {
+        static_assert(detail::dependent_false<not_an_event_of_the_chart>,
+                      "bsc: bsc::event_set<Chart>::number_of<Event>: Event is none of the chart's events (the "
+                      "trigger events of its rows, bsc::action_failed left out); see bsc::event_set<Chart>::events");
+    }
+};
+
+template <class Event>
+struct event_not_constructible {
+    constexpr ~event_not_constructible() {
+        static_assert(detail::dependent_false<event_not_constructible>,
+                      "bsc: dispatch_by_name and dispatch_by_number build the event they dispatch: this event has no "
+                      "default constructor, so pass a decoder that builds it, callable as "
+                      "decode(std::type_identity<Event>{}) and returning the event");
+    }
+};
+
 template <class Type>
 struct not_an_event {
     constexpr ~not_an_event() {
@@ -2313,6 +2342,8 @@ enum class outcome : std::uint8_t {
     reentrant,       ///< called from inside one of the machine's own guards or actions: refused, nothing changed
     failed,          ///< a guard or action threw and no transition took the bsc::action_failed event (the
                      ///< policy's rethrow_failures is false; last_failure() holds the exception)
+    unknown_event,   ///< dispatch_by_name or dispatch_by_number named no event of the chart: nothing was
+                     ///< processed (bsc::event_set<Chart>::unknown(name) says why)
 };
 
 /// The limits of a machine. Derive from it and override a member to change one:
@@ -3447,6 +3478,12 @@ struct state_tag {
 /// The target reported for an internal transition, which exits and enters nothing.
 struct internal {};
 
+/// What on_transition receives as the event of a timeout row (`after(delay)`): its delay. An
+/// eventless row's transition receives bsc::eventless, an event's transition the event.
+struct timeout_elapsed {
+    duration delay;
+};
+
 /// The default observer: no hooks, no cost.
 struct no_observer {};
 
@@ -3455,8 +3492,13 @@ struct no_observer {};
 ///   void on_exit(auto state);               // after state's exit actions
 ///   void on_transition(auto source, auto target, auto const& event);  // before the action
 ///   void on_row(int row);                   // the same moment: the row's position in make_chart
+///   void on_dispatch(auto const& event);    // dispatch(event) begins (not when refused)
+///   void on_cycle(bsc::duration now);       // step(now) begins, with the cycle's time
+///   void on_cycle_end();                    // that cycle's outputs are committed
 /// where `state`, `source` and `target` are bsc::state_tag<S> (target: state_tag<bsc::internal>
-/// for an internal transition) and `event` is the event (bsc::eventless for eventless ones).
+/// for an internal transition) and `event` is the event: bsc::eventless for an eventless row,
+/// bsc::timeout_elapsed{delay} for a timeout row. A hook the observer lacks costs nothing.
+/// The time of a dispatch is the machine's clock, now(): the time of the last cycle.
 namespace detail {
 template <class O, class Tag>
 concept observes_entry = requires(O& o) {
@@ -3473,6 +3515,18 @@ concept observes_transition = requires(O& o, E const& e) {
 template <class O>
 concept observes_rows = requires(O& o) {
     o.on_row(0);
+};
+template <class O, class E>
+concept observes_dispatch = requires(O& o, E const& e) {
+    o.on_dispatch(e);
+};
+template <class O>
+concept observes_cycles = requires(O& o) {
+    o.on_cycle(duration{});
+};
+template <class O>
+concept observes_cycle_ends = requires(O& o) {
+    o.on_cycle_end();
 };
 }  // namespace detail
 
@@ -3688,6 +3742,174 @@ private:
 
 }  // namespace bsc::detail
 // end include/bsc/detail/access.hpp
+// begin include/bsc/event_set.hpp
+// bsc::event_set<Chart>: the events of a chart, named and numbered at compile time, so that a
+// program can dispatch an event it received as text (an operator panel, a command line) or as a
+// number (a field bus, a network message):
+//
+//   m.dispatch_by_name("ON_P");                      // outcome::unknown_event if no event is so named
+//   m.dispatch_by_number(3, decode);                 // decode(std::type_identity<E>{}) builds E
+//   bsc::event_set<decltype(chart)>::names           // {"ON_P", "OFF_P", ...}
+//
+// An event's name is its static member `name` when it has one (`static constexpr
+// std::string_view name = "ON_P";`), otherwise its type's unqualified name (bsc::name_of). Its
+// number is its position among the chart's events: the trigger events of the rows, in the order
+// in which they first appear, bsc::action_failed left out (only a failing guard or action raises
+// it). Two events of a chart with the same name are an error (bsc::error::duplicate_event_name).
+
+#include <array>
+#include <cassert>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/event_name.hpp
+// The name of an event type, as bsc::event_set, dispatch_by_name and bsc::logger use it.
+
+#include <concepts>
+#include <string_view>
+#include <type_traits>
+
+
+namespace bsc {
+
+namespace detail {
+// A static member `name` (a data member called name, e.g. `std::string name;` in an event that
+// carries a name as data, is not the event's name).
+template <class E>
+concept names_itself = requires {
+    requires std::convertible_to<decltype(E::name), std::string_view>;
+    requires !std::is_member_object_pointer_v<decltype(&E::name)>;
+};
+}  // namespace detail
+
+/// The name of event type E: its static member `name` if it declares one
+/// (`static constexpr std::string_view name = "ON_P";`), otherwise bsc::name_of<E>.
+template <class E>
+inline constexpr std::string_view event_name = [] {
+    if constexpr (detail::names_itself<E>)
+        return std::string_view{E::name};
+    else
+        return name_of<E>;
+}();
+
+}  // namespace bsc
+// end include/bsc/event_name.hpp
+
+namespace bsc {
+
+namespace detail {
+
+// The first pair of events of Events with the same name, as positions (-1, -1 if none).
+template <class... Events>
+constexpr std::pair<int, int> duplicate_event_name() {
+    constexpr std::array<std::string_view, sizeof...(Events)> names{event_name<Events>...};
+    for (std::size_t i = 0; i < names.size(); ++i)
+        for (std::size_t j = i + 1; j < names.size(); ++j)
+            if (names[i] == names[j]) return {static_cast<int>(i), static_cast<int>(j)};
+    return {-1, -1};
+}
+
+// The events that can be sent by name: the chart's, without bsc::action_failed.
+template <class Events>
+struct sendable_events;
+template <class... Events>
+struct sendable_events<type_list<Events...>> {
+    using type = decltype((type_list<>{} + ... +
+                           std::conditional_t<std::is_same_v<Events, action_failed>, type_list<>, type_list<Events>>{}));
+};
+
+template <class Events>
+struct event_set_of;
+template <class... Events>
+struct event_set_of<type_list<Events...>> {
+    static constexpr std::size_t size = sizeof...(Events);
+    static constexpr std::array<std::string_view, size> names{event_name<Events>...};
+
+    // Calls f(std::type_identity<E>{}) for the event numbered `number` (< size).
+    template <class F>
+    static constexpr decltype(auto) visit(std::size_t number, F&& f) {
+        assert(number < size);
+        return visit_from<0>(number, f);
+    }
+
+private:
+    template <std::size_t I, class F>
+    static constexpr decltype(auto) visit_from(std::size_t number, F& f) {
+        if constexpr (I + 1 < size) {
+            if (number != I) return visit_from<I + 1>(number, f);
+        }
+        return f(std::type_identity<at<I, type_list<Events...>>>{});
+    }
+};
+
+// Reports the first two events of the list with the same name; true either way, so that the
+// static_assert that calls it adds no error of its own.
+template <class... Events>
+constexpr bool check_event_names(type_list<Events...>) {
+    constexpr auto duplicate = duplicate_event_name<Events...>();
+    if constexpr (duplicate.first >= 0)
+        report<error::duplicate_event_name<at<static_cast<std::size_t>(duplicate.first), type_list<Events...>>,
+                                           at<static_cast<std::size_t>(duplicate.second), type_list<Events...>>>>();
+    return true;
+}
+
+}  // namespace detail
+
+/// The events of Chart, named and numbered at compile time (see the top of this header).
+/// Requirements: no two events of the chart have the same event_name.
+template <class Chart>
+struct event_set {
+private:
+    using model = detail::chart_model<std::remove_cv_t<Chart>>;
+    using sendable = typename detail::sendable_events<typename model::events>::type;
+    using base = detail::event_set_of<sendable>;
+    static_assert(detail::check_event_names(sendable{}));
+
+public:
+    /// The chart's events as a type list, in number order.
+    using events = sendable;
+    /// How many events the chart has.
+    static constexpr std::size_t size = base::size;
+    /// Their names, by number.
+    static constexpr std::array<std::string_view, size> names = base::names;
+
+    /// The number of event E (bsc::error::not_an_event_of_the_chart if E is none of `events`).
+    template <class E>
+    static constexpr std::size_t number_of = [] {
+        constexpr int n = detail::index_of<E, sendable>;
+        if constexpr (n < 0) detail::report<error::not_an_event_of_the_chart<E>>();
+        return static_cast<std::size_t>(n < 0 ? 0 : n);
+    }();
+
+    /// The number of the event called `name` (exactly, case included), or nothing.
+    static constexpr std::optional<std::size_t> find(std::string_view name) {
+        for (std::size_t i = 0; i < size; ++i)
+            if (names[i] == name) return i;
+        return std::nullopt;
+    }
+
+    /// Why `name` names no event: "no event of this chart is named 'X'; its events are A, B, C".
+    static std::string unknown(std::string_view name) {
+        std::string text = "no event of this chart is named '";
+        text.append(name).append(size == 0 ? "'; it has no events" : "'; its events are ");
+        for (std::size_t i = 0; i < size; ++i) text.append(i == 0 ? "" : ", ").append(names[i]);
+        return text;
+    }
+
+    /// Calls f(std::type_identity<E>{}) for the event numbered `number`.
+    /// Requirements: number < size.
+    template <class F>
+    static constexpr decltype(auto) visit(std::size_t number, F&& f) {
+        return base::visit(number, f);
+    }
+};
+
+}  // namespace bsc
+// end include/bsc/event_set.hpp
 // begin include/bsc/runtime/context_data.hpp
 // The machine's view of a context's data model: it latches input channels, commits output
 // channels and updates timers, wherever they are in the context: as its members, or inside
@@ -4500,6 +4722,72 @@ constexpr bool test_guard(Guard&& guard, OnFailure&& on_failure) {
 
 }  // namespace bsc::detail
 // end include/bsc/runtime/failures.hpp
+// begin include/bsc/runtime/notify.hpp
+// The calls a machine makes to its observer, by state and row number: each hook is called
+// only if the observer has it, and a machine without observer generates nothing.
+
+#include <type_traits>
+
+
+namespace bsc::detail {
+
+template <class Model, class Observer>
+struct notify {
+    template <int S>
+    using tag = state_tag<typename Model::template tag_at<S>>;
+
+    template <int Row>
+    using source_tag = state_tag<typename Model::template row_at<Row>::source>;
+    template <int Row, class Target = typename Model::template row_at<Row>::target>
+    using target_tag = std::conditional_t<std::is_same_v<Target, no_target>, state_tag<internal>, state_tag<Target>>;
+
+    template <int S>
+    static constexpr bool observes_entry_of = S > 0 && observes_entry<Observer, tag<S>>;
+    template <int S>
+    static constexpr bool observes_exit_of = S > 0 && observes_exit<Observer, tag<S>>;
+    // The event on_transition receives for row Row taken on E: a timeout row's delay.
+    template <int Row, class E>
+    using reported_event =
+        std::conditional_t<is_timeout_row<typename Model::template row_at<Row>>, timeout_elapsed, E>;
+    template <int Row, class E>
+    static constexpr bool observes_row =
+        observes_transition<Observer, source_tag<Row>, target_tag<Row>, reported_event<Row, E>> ||
+        observes_rows<Observer>;
+
+    // After state S's entry actions.
+    template <int S>
+    static constexpr void entered(Observer& o) {
+        if constexpr (observes_entry_of<S>) o.on_entry(tag<S>{});
+    }
+    // After state S's exit actions.
+    template <int S>
+    static constexpr void exited(Observer& o) {
+        if constexpr (observes_exit_of<S>) o.on_exit(tag<S>{});
+    }
+    // Before the action of transition Row, taken on event e (for a timeout row, the caller
+    // passes timeout_elapsed with the row's delay: reported_event).
+    template <int Row, class E>
+    static constexpr void transition(Observer& o, E const& e) {
+        if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, E>)
+            o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
+        if constexpr (observes_rows<Observer>) o.on_row(Row);
+    }
+
+    // A dispatch of e begins; a cycle at time now begins; that cycle ends.
+    template <class E>
+    static constexpr void dispatching(Observer& o, E const& e) {
+        if constexpr (observes_dispatch<Observer, E>) o.on_dispatch(e);
+    }
+    static constexpr void cycle_begins(Observer& o, duration now) {
+        if constexpr (observes_cycles<Observer>) o.on_cycle(now);
+    }
+    static constexpr void cycle_ends(Observer& o) {
+        if constexpr (observes_cycle_ends<Observer>) o.on_cycle_end();
+    }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/runtime/notify.hpp
 
 namespace bsc::detail {
 
@@ -4520,6 +4808,9 @@ using observer_argument_t = typename observer_argument<Arguments...>::type;
 struct machine_base {};
 template <class T>
 inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
+
+// The decoder of dispatch_by_name when none is given: builds no event (each is default-constructed).
+struct no_decoder {};
 
 template <class Backend, class Chart, class Policy, class Observer, class Queue>
 class driver : public machine_base {
@@ -4571,12 +4862,14 @@ public:
         } else {
             clock_ = now;
         }
+        notify<model, Observer>::cycle_begins(observer_, clock_);
         update_timers(context_, clock_);
         latch_inputs(context_);
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
         report.status = last_ = drain_queue(report.transitions > 0);
         commit_outputs(context_);
+        notify<model, Observer>::cycle_ends(observer_);
         report.status = last_ = conclude(last_);
         return report;
     }
@@ -4601,10 +4894,49 @@ public:
     template <class E>
     constexpr outcome dispatch(E const& e, allow_unhandled_t) {
         constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (trigger < 0)
+        if constexpr (trigger < 0) {
+            if (!running_ && !halted()) notify<model, Observer>::dispatching(observer_, e);
             return last_ = outcome::ignored;
-        else
+        } else {
             return process<trigger>(e);
+        }
+    }
+
+    /// Dispatches the event of the chart called `name` (bsc::event_set: its static member
+    /// `name`, or its type's name), built by `decode(std::type_identity<E>{})` when the decoder
+    /// accepts that call and default-constructed otherwise. outcome::unknown_event, and nothing
+    /// processed, if no event of the chart is so named; outcome::reentrant, as dispatch, from
+    /// inside one of the machine's own guards or actions.
+    template <class Decode = no_decoder>
+    constexpr outcome dispatch_by_name(std::string_view name, Decode&& decode = {}) {
+        if (running_) return outcome::reentrant;
+        auto const number = event_set<Chart>::find(name);
+        if (!number) return last_ = outcome::unknown_event;
+        return dispatch_by_number(*number, decode);
+    }
+
+    /// As dispatch_by_name, for the event numbered `number` (bsc::event_set<Chart>::number_of).
+    template <class Decode = no_decoder>
+    constexpr outcome dispatch_by_number(std::size_t number, Decode&& decode = {}) {
+        if constexpr (event_set<Chart>::size == 0) {
+            (void)number;
+            (void)decode;
+            if (running_) return outcome::reentrant;
+            return last_ = outcome::unknown_event;
+        } else {
+            if (running_) return outcome::reentrant;
+            if (number >= event_set<Chart>::size) return last_ = outcome::unknown_event;
+            return event_set<Chart>::visit(number, [&]<class E>(std::type_identity<E> event) {
+                if constexpr (std::is_invocable_r_v<E, Decode&, std::type_identity<E>>) {
+                    return dispatch(static_cast<E>(decode(event)));
+                } else if constexpr (std::is_default_constructible_v<E>) {
+                    return dispatch(E{});
+                } else {
+                    detail::report<error::event_not_constructible<E>>();
+                    return outcome::ignored;
+                }
+            });
+        }
     }
 
     /// True if state S is active.
@@ -4768,6 +5100,7 @@ private:
         run_guard const guard{running_};
         if (halted())
             return last_ = outcome::halted;
+        notify<model, Observer>::dispatching(observer_, e);
         latch_inputs(context_);
         last_ = finish(backend().template microstep<Trigger>(e));
         commit_outputs(context_);
@@ -4944,6 +5277,10 @@ public:
     template <class... Arguments>
     constexpr outcome dispatch(Arguments const&...) { return outcome::ignored; }
     template <class... Arguments>
+    constexpr outcome dispatch_by_name(Arguments const&...) { return outcome::ignored; }
+    template <class... Arguments>
+    constexpr outcome dispatch_by_number(Arguments const&...) { return outcome::ignored; }
+    template <class... Arguments>
     constexpr auto step(Arguments const&...) { return 0; }
     template <class... States>
     constexpr bool is() const { return false; }
@@ -4960,54 +5297,6 @@ private:
 
 }  // namespace bsc::detail
 // end include/bsc/runtime/rejected.hpp
-// begin include/bsc/runtime/notify.hpp
-// The calls a machine makes to its observer, by state and row number: each hook is called
-// only if the observer has it, and a machine without observer generates nothing.
-
-#include <type_traits>
-
-
-namespace bsc::detail {
-
-template <class Model, class Observer>
-struct notify {
-    template <int S>
-    using tag = state_tag<typename Model::template tag_at<S>>;
-
-    template <int Row>
-    using source_tag = state_tag<typename Model::template row_at<Row>::source>;
-    template <int Row, class Target = typename Model::template row_at<Row>::target>
-    using target_tag = std::conditional_t<std::is_same_v<Target, no_target>, state_tag<internal>, state_tag<Target>>;
-
-    template <int S>
-    static constexpr bool observes_entry_of = S > 0 && observes_entry<Observer, tag<S>>;
-    template <int S>
-    static constexpr bool observes_exit_of = S > 0 && observes_exit<Observer, tag<S>>;
-    template <int Row, class E>
-    static constexpr bool observes_row =
-        observes_transition<Observer, source_tag<Row>, target_tag<Row>, E> || observes_rows<Observer>;
-
-    // After state S's entry actions.
-    template <int S>
-    static constexpr void entered(Observer& o) {
-        if constexpr (observes_entry_of<S>) o.on_entry(tag<S>{});
-    }
-    // After state S's exit actions.
-    template <int S>
-    static constexpr void exited(Observer& o) {
-        if constexpr (observes_exit_of<S>) o.on_exit(tag<S>{});
-    }
-    // Before the action of transition Row, taken on event e.
-    template <int Row, class E>
-    static constexpr void transition(Observer& o, E const& e) {
-        if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, E>)
-            o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
-        if constexpr (observes_rows<Observer>) o.on_row(Row);
-    }
-};
-
-}  // namespace bsc::detail
-// end include/bsc/runtime/notify.hpp
 // begin include/bsc/runtime/selection.hpp
 // The transitions one microstep selects in parallel regions, and SCXML's conflict resolution
 // over them (removeConflictingTransitions): both back ends select into this buffer and keep
@@ -5309,7 +5598,10 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        notify::template transition<Row>(observer_, e);
+        if constexpr (detail::is_timeout_row<std::remove_cvref_t<decltype(row<Row>())>>)
+            notify::template transition<Row>(observer_, timeout_elapsed{row<Row>().trigger_value.delay});
+        else
+            notify::template transition<Row>(observer_, e);
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
             this->run([&] { row<Row>().action(context_, e, queue_); });
     }
@@ -5980,7 +6272,7 @@ namespace bsc::table {
 template <class Chart, class Policy, class Observer>
 struct observer_hooks {
     using state_hook = void (*)(Observer& observer);
-    using transition_hook = void (*)(Observer& observer, void const* event);
+    using transition_hook = void (*)(Observer& observer, Chart const& chart, void const* event);
 
 private:
     using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
@@ -5993,8 +6285,13 @@ private:
         bsc::eventless, typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>;
 
     template <int Row>
-    static void transition(Observer& o, void const* event) {
-        notify::template transition<Row>(o, *static_cast<event_type<Row> const*>(event));
+    static void transition(Observer& o, Chart const& chart, void const* event) {
+        using row_type = typename model::template row_at<Row>;
+        if constexpr (bsc::detail::is_timeout_row<row_type>)
+            notify::template transition<Row>(
+                o, timeout_elapsed{boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay});
+        else
+            notify::template transition<Row>(o, *static_cast<event_type<Row> const*>(event));
     }
 
     template <std::size_t S>
@@ -6224,7 +6521,7 @@ private:
 
     void run_action(std::int16_t t, void const* e) {
         if constexpr (observed)
-            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_, e);
+            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_, this->chart_, e);
         if (auto const action = transitions[static_cast<std::size_t>(t)].action)
             this->run([&] { action(this->chart_, this->context_, e, this->queue_); });
     }

@@ -50,6 +50,28 @@
 #include <boost/hana/at.hpp>
 #include <boost/hana/basic_tuple.hpp>
 
+// begin include/bsc/detail/delay_label.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_DELAY_LABEL_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_DELAY_LABEL_HPP
+// A duration as short exact text, for the exports' timeout labels and the logger's times.
+
+#include <chrono>
+#include <string>
+
+namespace bsc::detail {
+
+/// "3s", "250ms", "20us" or "7ns": the largest unit that divides the delay.
+inline std::string delay_label(std::chrono::nanoseconds d) {
+    auto const n = d.count();
+    if (n % 1'000'000'000 == 0) return std::to_string(n / 1'000'000'000) + "s";
+    if (n % 1'000'000 == 0) return std::to_string(n / 1'000'000) + "ms";
+    if (n % 1'000 == 0) return std::to_string(n / 1'000) + "us";
+    return std::to_string(n) + "ns";
+}
+
+}  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_DELAY_LABEL_HPP
+// end include/bsc/detail/delay_label.hpp
 
 namespace bsc::detail {
 
@@ -159,15 +181,6 @@ template <class A>
 std::string action_label(A const& a) {
     auto const e = action_expression(a);
     return e.named ? e.text : "action";
-}
-
-/// "3s", "250ms", "20us" or "7ns": the largest unit that divides the delay.
-inline std::string delay_label(std::chrono::nanoseconds d) {
-    auto const n = d.count();
-    if (n % 1'000'000'000 == 0) return std::to_string(n / 1'000'000'000) + "s";
-    if (n % 1'000'000 == 0) return std::to_string(n / 1'000'000) + "ms";
-    if (n % 1'000 == 0) return std::to_string(n / 1'000) + "us";
-    return std::to_string(n) + "ns";
 }
 
 // ---- Identifiers ---------------------------------------------------------------------------

@@ -321,12 +321,14 @@ void decode(T& value, bit_reader& in, time_frame frame) {
 //   void successors(state const&, F&& emit) const;       // emit(std::uint16_t label, state const&)
 //   std::string label(std::uint16_t) const;              // for traces
 //   std::string describe(state const&) const;            // for traces: the configuration by name
+//   duration period() const;                             // optional: the time of a step, for traces
 
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -350,6 +352,17 @@ struct statistics {
     std::string stopped_by;        ///< which bound, if any
 };
 
+/// How far an exploration has got: what a progress callback receives.
+struct progress {
+    std::size_t states = 0;    ///< found so far
+    std::size_t expanded = 0;  ///< of which the successors are computed
+    std::size_t depth = 0;     ///< the breadth-first level being expanded
+    double seconds = 0;        ///< since run() began
+    double states_per_second = 0;
+    std::size_t memory_bytes = 0;  ///< held by the explorer now
+    bool done = false;             ///< the last call, when run() ends
+};
+
 template <class Model>
 class explorer {
 public:
@@ -358,6 +371,13 @@ public:
     static constexpr std::uint32_t none = 0xffffffffu;
 
     explicit explorer(Model model, limits bounds = {}) : model_(std::move(model)), bounds_(bounds) {}
+
+    /// Calls `report(progress)` every `every` expanded states during run(), and once when it
+    /// ends (progress::done), for explorations long enough to want a sign of life.
+    void on_progress(std::function<void(progress const&)> report, std::size_t every = 100'000) {
+        report_ = std::move(report);
+        report_every_ = every == 0 ? 1 : every;
+    }
 
     /// Explores every reachable state (once; later calls return the same figures).
     statistics const& run() {
@@ -370,12 +390,15 @@ public:
         model_.encode(init, scratch.data());
         insert(scratch.data(), none, 0);
         std::size_t level_end = 1;
+        std::size_t expanded = 0;  // states whose successors are computed
         for (std::size_t i = 0; i < count(); ++i) {
             if (i == level_end) {
                 ++stats_.depth;
                 level_end = count();
             }
+            if (report_ && i > 0 && i % report_every_ == 0) report_progress(i, start, false);
             if (!within_bounds()) break;
+            expanded = i + 1;
             edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
             state const s = model_.decode(key(i));
             std::size_t successors = 0;
@@ -396,6 +419,7 @@ public:
         stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         stats_.memory_bytes = memory();
         stats_.key_bytes = key_size;
+        if (report_) report_progress(expanded, start, true);
         return stats_;
     }
 
@@ -414,6 +438,18 @@ public:
 
 private:
     std::byte const* key(std::size_t i) const { return keys_.data() + i * key_size; }
+
+    void report_progress(std::size_t expanded, std::chrono::steady_clock::time_point start, bool done) const {
+        progress p;
+        p.states = count();
+        p.expanded = expanded;
+        p.depth = stats_.depth;
+        p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        p.states_per_second = p.seconds > 0 ? static_cast<double>(p.states) / p.seconds : 0;
+        p.memory_bytes = memory();
+        p.done = done;
+        report_(p);
+    }
 
     static std::uint64_t hash(std::byte const* k) {
         std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a, then a final mix
@@ -486,6 +522,8 @@ private:
     Model model_;
     limits bounds_;
     statistics stats_;
+    std::function<void(progress const&)> report_;
+    std::size_t report_every_ = 100'000;
     bool ran_ = false;
     std::vector<std::byte> keys_;
     std::vector<std::uint32_t> table_;
@@ -618,10 +656,6 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired) {
 #include <utility>
 
 
-namespace bsc::verify {
-
-}  // namespace bsc::verify
-
 namespace bsc::detail {
 // The clock every explored state is decoded at; far enough from zero that relative times fit.
 inline constexpr duration origin = std::chrono::hours{1};
@@ -671,7 +705,7 @@ public:
             ...);
     }
     std::string label(std::uint16_t i) const {
-        constexpr std::string_view names[] = {name_of<Es>...};
+        constexpr std::string_view names[] = {event_name<Es>...};
         return std::string(names[i]);
     }
     std::string describe(state const& s) const { return s.active_states().joined(); }
@@ -681,16 +715,27 @@ private:
     detail::codec<Machine> codec_{};
 };
 
+// The label of a cycle_model's choice when the user gives none.
+struct numbered_inputs {
+    std::string operator()(std::size_t choice) const { return "cycle, inputs #" + std::to_string(choice); }
+};
+
 /// Steps the machine with a fixed period; before each cycle, `apply(context, choice)` sets the
-/// inputs for one of `choices` alternatives, and every alternative is explored.
-template <class Machine, class Apply>
+/// inputs for one of `choices` alternatives, and every alternative is explored. `label(choice)`
+/// names an alternative in traces; written as `name=value` words ("P1=1 S1=0"), a trace shows
+/// only the words that changed from one step to the next (verdict::to_string).
+template <class Machine, class Apply, class Label = numbered_inputs>
 class cycle_model {
 public:
     using state = Machine;
     static constexpr std::size_t key_size = detail::codec<Machine>::key_size;
 
-    cycle_model(Machine initial, duration period, std::size_t choices, Apply apply)
-        : initial_(std::move(initial)), choices_(choices), apply_(std::move(apply)), codec_{period} {}
+    cycle_model(Machine initial, duration period, std::size_t choices, Apply apply, Label label = {})
+        : initial_(std::move(initial)),
+          choices_(choices),
+          apply_(std::move(apply)),
+          label_(std::move(label)),
+          codec_{period} {}
 
     state initial() const { return initial_; }
     void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
@@ -704,13 +749,16 @@ public:
             emit(static_cast<std::uint16_t>(c), next);
         }
     }
-    std::string label(std::uint16_t i) const { return "cycle, inputs #" + std::to_string(i); }
+    std::string label(std::uint16_t i) const { return label_(i); }
     std::string describe(state const& s) const { return s.active_states().joined(); }
+    /// The time between two cycles: a trace's step k is at k periods.
+    duration period() const { return codec_.period; }
 
 private:
     Machine initial_;
     std::size_t choices_;
     Apply apply_;
+    Label label_;
     detail::codec<Machine> codec_;
 };
 
@@ -744,6 +792,8 @@ public:
     }
     std::string label(std::uint16_t i) const { return label_(i); }
     std::string describe(state const& s) const { return describe_(s); }
+    /// The time between two steps: a trace's step k is at k periods.
+    duration period() const { return codec_.period; }
 
 private:
     System initial_;
@@ -761,19 +811,75 @@ private:
 // shortest counterexample in the chart's own names: deadlock freedom, invariants (A[] p),
 // reachability (E<> p), reinitiability and leads-to (p --> q).
 
+#include <algorithm>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+// begin include/bsc/detail/delay_label.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_DELAY_LABEL_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_DELAY_LABEL_HPP
+// A duration as short exact text, for the exports' timeout labels and the logger's times.
+
+#include <chrono>
+#include <string>
+
+namespace bsc::detail {
+
+/// "3s", "250ms", "20us" or "7ns": the largest unit that divides the delay.
+inline std::string delay_label(std::chrono::nanoseconds d) {
+    auto const n = d.count();
+    if (n % 1'000'000'000 == 0) return std::to_string(n / 1'000'000'000) + "s";
+    if (n % 1'000'000 == 0) return std::to_string(n / 1'000'000) + "ms";
+    if (n % 1'000 == 0) return std::to_string(n / 1'000) + "us";
+    return std::to_string(n) + "ns";
+}
+
+}  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_DELAY_LABEL_HPP
+// end include/bsc/detail/delay_label.hpp
+
+namespace bsc::detail {
+// `now` as written, except that when every word of it is name=value (the inputs of a cycle),
+// only the words not in `before` are kept: what changed ("(inputs unchanged)" if nothing did).
+inline std::string changed_words(std::string const& before, std::string const& now) {
+    auto const words = [](std::string const& text) {
+        std::vector<std::string> out;
+        for (std::size_t at = 0; at < text.size();) {
+            std::size_t const end = std::min(text.find(' ', at), text.size());
+            if (end > at) out.push_back(text.substr(at, end - at));
+            at = end + 1;
+        }
+        return out;
+    };
+    auto const new_words = words(now);
+    auto const assignment = [](std::string const& w) {
+        auto const eq = w.find('=');
+        return eq != std::string::npos && eq > 0 && eq + 1 < w.size();
+    };
+    if (new_words.empty() || !std::all_of(new_words.begin(), new_words.end(), assignment)) return now;
+    auto const old_words = words(before);
+    std::string out;
+    for (auto const& w : new_words)
+        if (std::find(old_words.begin(), old_words.end(), w) == old_words.end()) out += (out.empty() ? "" : " ") + w;
+    return out.empty() ? "(inputs unchanged)" : out;
+}
+}  // namespace bsc::detail
 
 namespace bsc::verify {
 
-/// One step of a trace: what was applied (an event, an input choice) and the configuration after.
+/// One step of a trace: what was applied (an event, an input choice) and the configuration after;
+/// for a model stepped with a period (cycle_model, system_model), the time of the step from the
+/// initial state (step k at k periods).
 struct trace_step {
     std::string label;
     std::string configuration;
+    std::optional<duration> time;
 };
 
 /// The outcome of one property.
@@ -787,14 +893,36 @@ struct verdict {
     bool holds() const { return result == status::holds; }
     bool fails() const { return result == status::fails; }
 
-    /// A readable report: the verdict, then the trace one step per line.
+    /// A readable report: the verdict, then the trace one step per line, with its time when the
+    /// model has one. A label made of `name=value` words only (the inputs of a cycle) shows the
+    /// words that changed since the step before. A run of steps that repeat the one before them
+    /// (the same label, the same configuration; variables and timers may still change) is one
+    /// line: "5-16. [500ms-1600ms] 12 steps, same inputs and configuration".
     std::string to_string() const {
         std::string out = property + ": " +
                           (result == status::holds ? "holds" : result == status::fails ? "FAILS" : "inconclusive");
         if (!detail.empty()) out += " (" + detail + ")";
         out += '\n';
-        for (std::size_t i = 0; i < trace.size(); ++i)
-            out += "  " + std::to_string(i) + ". " + trace[i].label + " -> " + trace[i].configuration + '\n';
+        auto const repeats = [&](std::size_t k) {
+            return k > 0 && trace[k].label == trace[k - 1].label && trace[k].configuration == trace[k - 1].configuration;
+        };
+        for (std::size_t i = 0; i < trace.size();) {
+            std::size_t end = i + 1;
+            while (repeats(i) && end < trace.size() && repeats(end)) ++end;
+            if (end - i >= 2) {
+                out += "  " + std::to_string(i) + "-" + std::to_string(end - 1) + ". ";
+                if (trace[i].time && trace[end - 1].time)
+                    out += "[" + bsc::detail::delay_label(*trace[i].time) + "-" +
+                           bsc::detail::delay_label(*trace[end - 1].time) + "] ";
+                out += std::to_string(end - i) + " steps, same inputs and configuration\n";
+            } else {
+                out += "  " + std::to_string(i) + ". ";
+                if (trace[i].time) out += "[" + bsc::detail::delay_label(*trace[i].time) + "] ";
+                out += bsc::detail::changed_words(i > 0 ? trace[i - 1].label : std::string{}, trace[i].label) + " -> " +
+                       trace[i].configuration + '\n';
+            }
+            i = end;
+        }
         return out;
     }
 };
@@ -803,9 +931,17 @@ struct verdict {
 
 namespace bsc::detail {
 
+// Whether the model is stepped with a fixed period, which gives its traces their times.
+template <class Model>
+concept timed_model = requires(Model const& m) {
+    { m.period() } -> std::convertible_to<duration>;
+};
+
 template <class Model>
 void append_step(verify::explorer<Model> const& ex, std::vector<verify::trace_step>& out, std::string label, std::size_t i) {
-    out.push_back({std::move(label), ex.model().describe(ex.at(i))});
+    std::optional<duration> time;
+    if constexpr (timed_model<Model>) time = static_cast<duration::rep>(out.size()) * ex.model().period();
+    out.push_back({std::move(label), ex.model().describe(ex.at(i)), time});
 }
 
 // The shortest path from the initial state to state i (breadth-first tree).
@@ -1025,6 +1161,97 @@ verdict leads_to(explorer<Model>& ex, std::string name, P p, Q q) {
         }
         return {name, verdict::status::fails, std::move(trace),
                 "from step " + std::to_string(detail::path_to(ex, i).size() - 1) + ": " + how};
+    }
+    return {name, verdict::status::holds, {}, {}};
+}
+
+/// p --> q within `bound`: from every reachable p-state, every path reaches a q-state within
+/// `bound` (a q-state reached `bound` after p counts; so does q holding in the p-state itself).
+/// What a safety engineer asks of a controller: "the press stops within 200 ms of the guard
+/// opening". Time is the model's steps: the model is stepped with a period (cycle_model,
+/// system_model), and `bound` covers floor(bound / period) steps. A deadlock or a cycle of non-q
+/// states after a p-state also fails it. The counterexample runs to the p-state by a shortest
+/// path, then along the slowest way to q for one step more than the bound allows.
+template <class Model, class P, class Q>
+verdict leads_to_within(explorer<Model>& ex, std::string name, P p, Q q, duration bound) {
+    static_assert(detail::timed_model<Model>,
+                  "bsc::verify::leads_to_within needs a model stepped with a period (cycle_model, system_model): "
+                  "a bound in time has no meaning for an event_model");
+    if (bound < duration::zero()) throw std::invalid_argument("bsc::verify::leads_to_within: the bound is negative");
+    if (ex.model().period() <= duration::zero())
+        throw std::invalid_argument("bsc::verify::leads_to_within: the model's period is not positive");
+    ex.run();
+    name = (name.empty() ? "p --> q" : name) + " within " + bsc::detail::delay_label(bound);
+    if (!ex.stats().complete) return detail::incomplete(ex, name);
+    std::size_t const n = ex.count();
+    auto const steps = static_cast<std::size_t>(bound / ex.model().period());
+    // slowest[i]: the most steps a path from i can take before it reaches q; `forever` for a path
+    // that never does (a deadlock or a cycle of non-q states). Computed backwards from q, as in
+    // leads_to: a non-q state is settled when its last successor is.
+    constexpr std::size_t forever = static_cast<std::size_t>(-1);
+    std::vector<char> is_p(n), settled(n, 0);
+    std::vector<std::size_t> slowest(n, forever);
+    std::vector<std::uint32_t> unsettled(n), queue;
+    for (std::size_t i = 0; i < n; ++i) {
+        auto const s = ex.at(i);
+        is_p[i] = p(s);
+        unsettled[i] = ex.edges_end(i) - ex.edges_begin(i);
+        if (q(s)) {
+            slowest[i] = 0;
+            settled[i] = 1;
+            queue.push_back(static_cast<std::uint32_t>(i));
+        }
+    }
+    detail::reverse_graph const g = detail::reversed(ex);
+    for (std::size_t k = 0; k < queue.size(); ++k)
+        for (auto e = g.begin[queue[k]]; e < g.begin[queue[k] + 1]; ++e) {
+            std::uint32_t const i = g.from[e];
+            if (settled[i] || --unsettled[i] != 0) continue;
+            std::size_t most = 0;
+            for (auto f = ex.edges_begin(i); f < ex.edges_end(i); ++f) most = std::max(most, slowest[ex.edge_target(f)]);
+            slowest[i] = most == forever ? forever : most + 1;
+            settled[i] = 1;
+            queue.push_back(i);
+        }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!is_p[i] || slowest[i] <= steps) continue;
+        auto trace = detail::path_to(ex, i);
+        std::size_t const start = trace.size() - 1;
+        // Follow the slowest successor until the bound is passed, or a deadlock or a loop; among
+        // equally slow ones, an unseen state, then the choice of the step before (so that a run
+        // of the same choice folds into one line of the report).
+        std::vector<char> seen(n, 0);
+        std::size_t s = i;
+        seen[s] = 1;
+        std::uint16_t previous = i == 0 ? std::uint16_t{0} : ex.parent_label(i);
+        std::string how = "q does not hold " + bsc::detail::delay_label(bound) + " later";
+        for (std::size_t taken = 0; taken <= steps; ++taken) {
+            std::size_t next = n;
+            std::uint16_t label = 0;
+            auto const better = [&](std::size_t t, std::uint16_t l) {
+                if (next == n || slowest[t] != slowest[next]) return next == n || slowest[t] > slowest[next];
+                if (seen[t] != seen[next]) return !seen[t];
+                return l == previous && label != previous;
+            };
+            for (auto e = ex.edges_begin(s); e < ex.edges_end(s); ++e)
+                if (better(ex.edge_target(e), ex.edge_label(e))) {
+                    next = ex.edge_target(e);
+                    label = ex.edge_label(e);
+                }
+            if (next == n) {
+                how = "no successor, q never holds";
+                break;
+            }
+            detail::append_step(ex, trace, ex.model().label(label), next);
+            if (seen[next] && taken < steps) {
+                how = "loops without reaching q";
+                break;
+            }
+            seen[next] = 1;
+            s = next;
+            previous = label;
+        }
+        return {name, verdict::status::fails, std::move(trace), "p holds at step " + std::to_string(start) + "; " + how};
     }
     return {name, verdict::status::holds, {}, {}};
 }

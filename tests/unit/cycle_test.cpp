@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstddef>
 #include <type_traits>
+#include <vector>
 
 #include <bsc/bsc.hpp>
 
@@ -402,14 +403,16 @@ inline constexpr auto competing = bsc::make_chart<order_data>(
     bsc::state<Q> + bsc::after(150ms) = bsc::state<Z>,
     bsc::state<Z> + bsc::event<kick> = bsc::state<Q>);
 
-struct row_log {  // the rows of the transitions fired, and how many received bsc::eventless
+struct row_log {  // the rows of the transitions fired, how many received bsc::eventless, and the timeouts' delays
     std::array<int, 16> rows{};
     std::size_t calls = 0;
     int eventless = 0;
+    std::vector<bsc::duration> timeouts;
     void on_row(int row) { rows[calls++ % rows.size()] = row; }
     template <class Src, class Dst, class E>
-    void on_transition(Src, Dst, E const&) {
+    void on_transition(Src, Dst, E const& e) {
         eventless += std::is_same_v<E, bsc::eventless>;
+        if constexpr (std::is_same_v<E, bsc::timeout_elapsed>) timeouts.push_back(e.delay);
     }
 };
 }  // namespace cyc
@@ -445,7 +448,8 @@ TEST_CASE_TEMPLATE("a timeout competes with its state's eventless transitions in
     CHECK(m.template is<Z>());
     auto const& log = m.observer();
     REQUIRE(log.calls == 7);
-    CHECK(log.eventless == 6);  // all but Z + kick: timeouts receive bsc::eventless too
+    CHECK(log.eventless == 2);  // the eventless rows 0 and 2; the timeouts receive their delay
+    CHECK(log.timeouts == std::vector<bsc::duration>{100ms, 100ms, 100ms, 150ms});
     int const expected[] = {1, 1, 1, 0, 4, 2, 3};  // rows in make_chart's order
     for (std::size_t i = 0; i < 7; ++i) CHECK(log.rows[i] == expected[i]);
 }

@@ -81,6 +81,7 @@ inline char const* name(bsc::outcome o) {
         case bsc::outcome::halted: return "halted";
         case bsc::outcome::reentrant: return "reentrant";
         case bsc::outcome::failed: return "failed";
+        case bsc::outcome::unknown_event: return "unknown_event";
     }
     return "?";
 }

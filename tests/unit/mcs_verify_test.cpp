@@ -72,8 +72,8 @@ TEST_CASE("MCS: a variant whose cond always holds is caught with a shortest coun
     });
     REQUIRE(v.fails());
     REQUIRE(v.trace.size() == 3);
-    CHECK(v.trace[1].label == "estop_p");
+    CHECK(v.trace[1].label == "ESTOP_P");  // the events by their bsc::event_name
     CHECK(v.trace[1].configuration == "MCS Estop");
-    CHECK(v.trace[2].label == "off_p");
+    CHECK(v.trace[2].label == "OFF_P");
     CHECK(v.trace[2].configuration == "MCS Off");
 }

@@ -4,6 +4,9 @@
 #include <doctest/doctest.h>
 
 #include <chrono>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <bsc/bsc.hpp>
 #include <bsc/verify.hpp>
@@ -150,6 +153,88 @@ TEST_CASE("cycle models: absolute time is abstracted, so a periodic behaviour ha
     CHECK(bsc::verify::leads_to(ex, "On --> Off", [](auto const& m) { return m.template is<ver::On>(); },
                                 [](auto const& m) { return m.template is<ver::Off>(); })
               .holds());
+}
+
+TEST_CASE("leads_to_within: a bounded response, with a counterexample that shows the time of each step") {
+    auto apply = [](ver::blink_data& d, std::size_t choice) { d.enable.set(choice == 1); };
+    auto label = [](std::size_t choice) { return choice == 1 ? std::string("enable=1") : std::string("enable=0"); };
+    bsc::verify::cycle_model model{bsc::machine{ver::blink, ver::blink_data{}}, 100ms, 2, apply, label};
+    bsc::verify::explorer ex{model};
+    auto const on = [](auto const& m) { return m.template is<ver::On>(); };
+    auto const off = [](auto const& m) { return m.template is<ver::Off>(); };
+    // The timer of 300 ms starts timing in the cycle after On and turns the lamp off in the cycle
+    // it expires: Off four cycles (400 ms) after On.
+    auto const holds = bsc::verify::leads_to_within(ex, "On --> Off", on, off, 400ms);
+    CHECK(holds.holds());
+    CHECK(holds.property == "On --> Off within 400ms");
+    CHECK(bsc::verify::leads_to_within(ex, "On --> Off", on, off, 499ms).holds());  // 4 whole periods
+    auto const fails = bsc::verify::leads_to_within(ex, "On --> Off", on, off, 399ms);
+    REQUIRE(fails.fails());
+    // A shortest path to On (enable at step 1), then the slowest way on, one step past the
+    // 3 periods the bound covers: Off only at step 5.
+    REQUIRE(fails.trace.size() == 6);
+    CHECK(fails.detail == "p holds at step 1; q does not hold 399ms later");
+    CHECK(fails.trace[1].time == 100ms);
+    CHECK(fails.trace[4].configuration == "Root On");
+    CHECK(fails.trace[5].time == 500ms);
+    CHECK(fails.trace[5].configuration == "Root Off");
+    CHECK(fails.to_string() ==
+          "On --> Off within 399ms: FAILS (p holds at step 1; q does not hold 399ms later)\n"
+          "  0. [0s] (initial) -> Root Off\n"
+          "  1. [100ms] enable=1 -> Root On\n"
+          "  2-4. [200ms-400ms] 3 steps, same inputs and configuration\n"
+          "  5. [500ms] (inputs unchanged) -> Root Off\n");
+    CHECK_THROWS_AS(bsc::verify::leads_to_within(ex, "", on, off, -1ms), std::invalid_argument);
+}
+
+TEST_CASE("leads_to_within fails on a cycle or a deadlock that avoids q, and q in the p-state counts") {
+    auto apply = [](ver::blink_data& d, std::size_t choice) { d.enable.set(choice == 1); };
+    bsc::verify::cycle_model model{bsc::machine{ver::blink, ver::blink_data{}}, 100ms, 2, apply};
+    bsc::verify::explorer ex{model};
+    auto const off = [](auto const& m) { return m.template is<ver::Off>(); };
+    auto const never = [](auto const&) { return false; };
+    CHECK(bsc::verify::leads_to_within(ex, "", off, off, 0ms).holds());
+    auto const v = bsc::verify::leads_to_within(ex, "", off, never, 10s);
+    REQUIRE(v.fails());
+    CHECK(v.detail.find("loops without reaching q") != std::string::npos);
+    CHECK(v.trace.front().label == "(initial)");
+}
+
+TEST_CASE("a trace report folds runs of repeated steps and shows only the inputs that changed") {
+    bsc::verify::verdict v{"A[] p", bsc::verify::verdict::status::fails, {}, {}};
+    v.trace = {{"(initial)", "Root Idle", 0ms},          {"a=0 b=1", "Root Idle", 10ms},
+               {"a=0 b=1", "Root Idle", 20ms},           {"a=0 b=1", "Root Idle", 30ms},
+               {"a=1 b=1", "Root Busy", 40ms},           {"a=1 b=1", "Root Busy Sub", 50ms}};
+    CHECK(v.to_string() ==
+          "A[] p: FAILS\n"
+          "  0. [0s] (initial) -> Root Idle\n"
+          "  1. [10ms] a=0 b=1 -> Root Idle\n"
+          "  2-3. [20ms-30ms] 2 steps, same inputs and configuration\n"
+          "  4. [40ms] a=1 -> Root Busy\n"
+          "  5. [50ms] (inputs unchanged) -> Root Busy Sub\n");
+    v.trace = {{"(initial)", "A", {}}, {"go", "B", {}}, {"go", "B", {}}};  // an event model: no time
+    CHECK(v.to_string() == "A[] p: FAILS\n  0. (initial) -> A\n  1. go -> B\n  2. go -> B\n");
+    // Only labels made of name=value words alone are shown as what changed.
+    v.trace = {{"(initial)", "A", {}}, {"push P1=0", "A", {}}, {"push P1=1", "B", {}}};
+    CHECK(v.to_string() == "A[] p: FAILS\n  0. (initial) -> A\n  1. push P1=0 -> A\n  2. push P1=1 -> B\n");
+}
+
+TEST_CASE("a progress callback reports a long exploration while it runs, and once at the end") {
+    auto apply = [](ver::blink_data& d, std::size_t choice) { d.enable.set(choice == 1); };
+    bsc::verify::cycle_model model{bsc::machine{ver::blink, ver::blink_data{}}, 100ms, 2, apply};
+    bsc::verify::explorer ex{model};
+    std::vector<bsc::verify::progress> seen;
+    ex.on_progress([&](bsc::verify::progress const& p) { seen.push_back(p); }, 2);
+    auto const& st = ex.run();
+    REQUIRE(seen.size() >= 2);
+    CHECK(seen.back().done);
+    CHECK(seen.back().states == st.states);
+    CHECK(seen.back().expanded == st.states);
+    CHECK(seen.back().depth == st.depth);
+    CHECK(seen.back().memory_bytes > 0);
+    CHECK_FALSE(seen.front().done);
+    CHECK(seen.front().expanded == 2);
+    for (std::size_t i = 1; i < seen.size(); ++i) CHECK(seen[i].states >= seen[i - 1].states);
 }
 
 namespace ver {

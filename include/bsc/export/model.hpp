@@ -19,6 +19,7 @@
 #include <boost/hana/at.hpp>
 #include <boost/hana/basic_tuple.hpp>
 
+#include <bsc/detail/delay_label.hpp>
 #include <bsc/model/chart_model.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/dsl/action.hpp>
@@ -134,15 +135,6 @@ template <class A>
 std::string action_label(A const& a) {
     auto const e = action_expression(a);
     return e.named ? e.text : "action";
-}
-
-/// "3s", "250ms", "20us" or "7ns": the largest unit that divides the delay.
-inline std::string delay_label(std::chrono::nanoseconds d) {
-    auto const n = d.count();
-    if (n % 1'000'000'000 == 0) return std::to_string(n / 1'000'000'000) + "s";
-    if (n % 1'000'000 == 0) return std::to_string(n / 1'000'000) + "ms";
-    if (n % 1'000 == 0) return std::to_string(n / 1'000) + "us";
-    return std::to_string(n) + "ns";
 }
 
 // ---- Identifiers ---------------------------------------------------------------------------

@@ -27,11 +27,13 @@
 #include <bsc/detail/type_name.hpp>
 #include <bsc/duration.hpp>
 #include <bsc/error.hpp>
+#include <bsc/event_set.hpp>
 #include <bsc/model/layout.hpp>
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/runtime/context_data.hpp>
 #include <bsc/runtime/failures.hpp>
+#include <bsc/runtime/notify.hpp>
 
 namespace bsc::detail {
 
@@ -52,6 +54,9 @@ using observer_argument_t = typename observer_argument<Arguments...>::type;
 struct machine_base {};
 template <class T>
 inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
+
+// The decoder of dispatch_by_name when none is given: builds no event (each is default-constructed).
+struct no_decoder {};
 
 template <class Backend, class Chart, class Policy, class Observer, class Queue>
 class driver : public machine_base {
@@ -103,12 +108,14 @@ public:
         } else {
             clock_ = now;
         }
+        notify<model, Observer>::cycle_begins(observer_, clock_);
         update_timers(context_, clock_);
         latch_inputs(context_);
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
         report.status = last_ = drain_queue(report.transitions > 0);
         commit_outputs(context_);
+        notify<model, Observer>::cycle_ends(observer_);
         report.status = last_ = conclude(last_);
         return report;
     }
@@ -133,10 +140,49 @@ public:
     template <class E>
     constexpr outcome dispatch(E const& e, allow_unhandled_t) {
         constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (trigger < 0)
+        if constexpr (trigger < 0) {
+            if (!running_ && !halted()) notify<model, Observer>::dispatching(observer_, e);
             return last_ = outcome::ignored;
-        else
+        } else {
             return process<trigger>(e);
+        }
+    }
+
+    /// Dispatches the event of the chart called `name` (bsc::event_set: its static member
+    /// `name`, or its type's name), built by `decode(std::type_identity<E>{})` when the decoder
+    /// accepts that call and default-constructed otherwise. outcome::unknown_event, and nothing
+    /// processed, if no event of the chart is so named; outcome::reentrant, as dispatch, from
+    /// inside one of the machine's own guards or actions.
+    template <class Decode = no_decoder>
+    constexpr outcome dispatch_by_name(std::string_view name, Decode&& decode = {}) {
+        if (running_) return outcome::reentrant;
+        auto const number = event_set<Chart>::find(name);
+        if (!number) return last_ = outcome::unknown_event;
+        return dispatch_by_number(*number, decode);
+    }
+
+    /// As dispatch_by_name, for the event numbered `number` (bsc::event_set<Chart>::number_of).
+    template <class Decode = no_decoder>
+    constexpr outcome dispatch_by_number(std::size_t number, Decode&& decode = {}) {
+        if constexpr (event_set<Chart>::size == 0) {
+            (void)number;
+            (void)decode;
+            if (running_) return outcome::reentrant;
+            return last_ = outcome::unknown_event;
+        } else {
+            if (running_) return outcome::reentrant;
+            if (number >= event_set<Chart>::size) return last_ = outcome::unknown_event;
+            return event_set<Chart>::visit(number, [&]<class E>(std::type_identity<E> event) {
+                if constexpr (std::is_invocable_r_v<E, Decode&, std::type_identity<E>>) {
+                    return dispatch(static_cast<E>(decode(event)));
+                } else if constexpr (std::is_default_constructible_v<E>) {
+                    return dispatch(E{});
+                } else {
+                    detail::report<error::event_not_constructible<E>>();
+                    return outcome::ignored;
+                }
+            });
+        }
     }
 
     /// True if state S is active.
@@ -300,6 +346,7 @@ private:
         run_guard const guard{running_};
         if (halted())
             return last_ = outcome::halted;
+        notify<model, Observer>::dispatching(observer_, e);
         latch_inputs(context_);
         last_ = finish(backend().template microstep<Trigger>(e));
         commit_outputs(context_);

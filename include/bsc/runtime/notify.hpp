@@ -23,9 +23,14 @@ struct notify {
     static constexpr bool observes_entry_of = S > 0 && observes_entry<Observer, tag<S>>;
     template <int S>
     static constexpr bool observes_exit_of = S > 0 && observes_exit<Observer, tag<S>>;
+    // The event on_transition receives for row Row taken on E: a timeout row's delay.
+    template <int Row, class E>
+    using reported_event =
+        std::conditional_t<is_timeout_row<typename Model::template row_at<Row>>, timeout_elapsed, E>;
     template <int Row, class E>
     static constexpr bool observes_row =
-        observes_transition<Observer, source_tag<Row>, target_tag<Row>, E> || observes_rows<Observer>;
+        observes_transition<Observer, source_tag<Row>, target_tag<Row>, reported_event<Row, E>> ||
+        observes_rows<Observer>;
 
     // After state S's entry actions.
     template <int S>
@@ -37,12 +42,25 @@ struct notify {
     static constexpr void exited(Observer& o) {
         if constexpr (observes_exit_of<S>) o.on_exit(tag<S>{});
     }
-    // Before the action of transition Row, taken on event e.
+    // Before the action of transition Row, taken on event e (for a timeout row, the caller
+    // passes timeout_elapsed with the row's delay: reported_event).
     template <int Row, class E>
     static constexpr void transition(Observer& o, E const& e) {
         if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, E>)
             o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
         if constexpr (observes_rows<Observer>) o.on_row(Row);
+    }
+
+    // A dispatch of e begins; a cycle at time now begins; that cycle ends.
+    template <class E>
+    static constexpr void dispatching(Observer& o, E const& e) {
+        if constexpr (observes_dispatch<Observer, E>) o.on_dispatch(e);
+    }
+    static constexpr void cycle_begins(Observer& o, duration now) {
+        if constexpr (observes_cycles<Observer>) o.on_cycle(now);
+    }
+    static constexpr void cycle_ends(Observer& o) {
+        if constexpr (observes_cycle_ends<Observer>) o.on_cycle_end();
     }
 };
 

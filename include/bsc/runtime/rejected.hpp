@@ -30,6 +30,10 @@ public:
     template <class... Arguments>
     constexpr outcome dispatch(Arguments const&...) { return outcome::ignored; }
     template <class... Arguments>
+    constexpr outcome dispatch_by_name(Arguments const&...) { return outcome::ignored; }
+    template <class... Arguments>
+    constexpr outcome dispatch_by_number(Arguments const&...) { return outcome::ignored; }
+    template <class... Arguments>
     constexpr auto step(Arguments const&...) { return 0; }
     template <class... States>
     constexpr bool is() const { return false; }

@@ -41,7 +41,7 @@ namespace bsc::table {
 template <class Chart, class Policy, class Observer>
 struct observer_hooks {
     using state_hook = void (*)(Observer& observer);
-    using transition_hook = void (*)(Observer& observer, void const* event);
+    using transition_hook = void (*)(Observer& observer, Chart const& chart, void const* event);
 
 private:
     using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
@@ -54,8 +54,13 @@ private:
         bsc::eventless, typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>;
 
     template <int Row>
-    static void transition(Observer& o, void const* event) {
-        notify::template transition<Row>(o, *static_cast<event_type<Row> const*>(event));
+    static void transition(Observer& o, Chart const& chart, void const* event) {
+        using row_type = typename model::template row_at<Row>;
+        if constexpr (bsc::detail::is_timeout_row<row_type>)
+            notify::template transition<Row>(
+                o, timeout_elapsed{boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay});
+        else
+            notify::template transition<Row>(o, *static_cast<event_type<Row> const*>(event));
     }
 
     template <std::size_t S>
@@ -285,7 +290,7 @@ private:
 
     void run_action(std::int16_t t, void const* e) {
         if constexpr (observed)
-            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_, e);
+            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_, this->chart_, e);
         if (auto const action = transitions[static_cast<std::size_t>(t)].action)
             this->run([&] { action(this->chart_, this->context_, e, this->queue_); });
     }

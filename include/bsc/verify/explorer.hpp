@@ -14,12 +14,14 @@
 //   void successors(state const&, F&& emit) const;       // emit(std::uint16_t label, state const&)
 //   std::string label(std::uint16_t) const;              // for traces
 //   std::string describe(state const&) const;            // for traces: the configuration by name
+//   duration period() const;                             // optional: the time of a step, for traces
 
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,17 @@ struct statistics {
     std::string stopped_by;        ///< which bound, if any
 };
 
+/// How far an exploration has got: what a progress callback receives.
+struct progress {
+    std::size_t states = 0;    ///< found so far
+    std::size_t expanded = 0;  ///< of which the successors are computed
+    std::size_t depth = 0;     ///< the breadth-first level being expanded
+    double seconds = 0;        ///< since run() began
+    double states_per_second = 0;
+    std::size_t memory_bytes = 0;  ///< held by the explorer now
+    bool done = false;             ///< the last call, when run() ends
+};
+
 template <class Model>
 class explorer {
 public:
@@ -51,6 +64,13 @@ public:
     static constexpr std::uint32_t none = 0xffffffffu;
 
     explicit explorer(Model model, limits bounds = {}) : model_(std::move(model)), bounds_(bounds) {}
+
+    /// Calls `report(progress)` every `every` expanded states during run(), and once when it
+    /// ends (progress::done), for explorations long enough to want a sign of life.
+    void on_progress(std::function<void(progress const&)> report, std::size_t every = 100'000) {
+        report_ = std::move(report);
+        report_every_ = every == 0 ? 1 : every;
+    }
 
     /// Explores every reachable state (once; later calls return the same figures).
     statistics const& run() {
@@ -63,12 +83,15 @@ public:
         model_.encode(init, scratch.data());
         insert(scratch.data(), none, 0);
         std::size_t level_end = 1;
+        std::size_t expanded = 0;  // states whose successors are computed
         for (std::size_t i = 0; i < count(); ++i) {
             if (i == level_end) {
                 ++stats_.depth;
                 level_end = count();
             }
+            if (report_ && i > 0 && i % report_every_ == 0) report_progress(i, start, false);
             if (!within_bounds()) break;
+            expanded = i + 1;
             edge_begin_.push_back(static_cast<std::uint32_t>(edge_to_.size()));
             state const s = model_.decode(key(i));
             std::size_t successors = 0;
@@ -89,6 +112,7 @@ public:
         stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         stats_.memory_bytes = memory();
         stats_.key_bytes = key_size;
+        if (report_) report_progress(expanded, start, true);
         return stats_;
     }
 
@@ -107,6 +131,18 @@ public:
 
 private:
     std::byte const* key(std::size_t i) const { return keys_.data() + i * key_size; }
+
+    void report_progress(std::size_t expanded, std::chrono::steady_clock::time_point start, bool done) const {
+        progress p;
+        p.states = count();
+        p.expanded = expanded;
+        p.depth = stats_.depth;
+        p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        p.states_per_second = p.seconds > 0 ? static_cast<double>(p.states) / p.seconds : 0;
+        p.memory_bytes = memory();
+        p.done = done;
+        report_(p);
+    }
 
     static std::uint64_t hash(std::byte const* k) {
         std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a, then a final mix
@@ -179,6 +215,8 @@ private:
     Model model_;
     limits bounds_;
     statistics stats_;
+    std::function<void(progress const&)> report_;
+    std::size_t report_every_ = 100'000;
     bool ran_ = false;
     std::vector<std::byte> keys_;
     std::vector<std::uint32_t> table_;

@@ -18,11 +18,8 @@
 #include <utility>
 
 #include <bsc/detail/type_name.hpp>
+#include <bsc/event_name.hpp>
 #include <bsc/verify/codec.hpp>
-
-namespace bsc::verify {
-
-}  // namespace bsc::verify
 
 namespace bsc::detail {
 // The clock every explored state is decoded at; far enough from zero that relative times fit.
@@ -73,7 +70,7 @@ public:
             ...);
     }
     std::string label(std::uint16_t i) const {
-        constexpr std::string_view names[] = {name_of<Es>...};
+        constexpr std::string_view names[] = {event_name<Es>...};
         return std::string(names[i]);
     }
     std::string describe(state const& s) const { return s.active_states().joined(); }
@@ -83,16 +80,27 @@ private:
     detail::codec<Machine> codec_{};
 };
 
+// The label of a cycle_model's choice when the user gives none.
+struct numbered_inputs {
+    std::string operator()(std::size_t choice) const { return "cycle, inputs #" + std::to_string(choice); }
+};
+
 /// Steps the machine with a fixed period; before each cycle, `apply(context, choice)` sets the
-/// inputs for one of `choices` alternatives, and every alternative is explored.
-template <class Machine, class Apply>
+/// inputs for one of `choices` alternatives, and every alternative is explored. `label(choice)`
+/// names an alternative in traces; written as `name=value` words ("P1=1 S1=0"), a trace shows
+/// only the words that changed from one step to the next (verdict::to_string).
+template <class Machine, class Apply, class Label = numbered_inputs>
 class cycle_model {
 public:
     using state = Machine;
     static constexpr std::size_t key_size = detail::codec<Machine>::key_size;
 
-    cycle_model(Machine initial, duration period, std::size_t choices, Apply apply)
-        : initial_(std::move(initial)), choices_(choices), apply_(std::move(apply)), codec_{period} {}
+    cycle_model(Machine initial, duration period, std::size_t choices, Apply apply, Label label = {})
+        : initial_(std::move(initial)),
+          choices_(choices),
+          apply_(std::move(apply)),
+          label_(std::move(label)),
+          codec_{period} {}
 
     state initial() const { return initial_; }
     void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
@@ -106,13 +114,16 @@ public:
             emit(static_cast<std::uint16_t>(c), next);
         }
     }
-    std::string label(std::uint16_t i) const { return "cycle, inputs #" + std::to_string(i); }
+    std::string label(std::uint16_t i) const { return label_(i); }
     std::string describe(state const& s) const { return s.active_states().joined(); }
+    /// The time between two cycles: a trace's step k is at k periods.
+    duration period() const { return codec_.period; }
 
 private:
     Machine initial_;
     std::size_t choices_;
     Apply apply_;
+    Label label_;
     detail::codec<Machine> codec_;
 };
 
@@ -146,6 +157,8 @@ public:
     }
     std::string label(std::uint16_t i) const { return label_(i); }
     std::string describe(state const& s) const { return describe_(s); }
+    /// The time between two steps: a trace's step k is at k periods.
+    duration period() const { return codec_.period; }
 
 private:
     System initial_;

@@ -1,0 +1,22 @@
+// Twin of not_an_event_of_the_chart.fail.cpp: cf::stop triggers a row, so it has a number (1).
+#include <bsc/bsc.hpp>
+
+#include <cstddef>
+
+namespace cf {
+struct go {};
+struct stop {};
+struct other {};
+struct Root;
+struct Idle;
+struct Busy;
+struct ctx {};
+
+inline constexpr auto chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+
+inline constexpr std::size_t number = bsc::event_set<decltype(chart)>::number_of<stop>;
+}  // namespace cf
+static_assert(cf::number == 1);
