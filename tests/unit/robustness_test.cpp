@@ -83,8 +83,11 @@ struct reentrant_ctx {
     void* self = nullptr;
     bsc::outcome (*dispatch_go)(void*) = nullptr;  // calls self->dispatch(go{})
     bsc::outcome (*step_now)(void*) = nullptr;     // calls self->step(...)
+    bsc::outcome (*by_name)(void*, char const*) = nullptr;  // calls self->dispatch_by_name(name)
     bsc::outcome inner = bsc::outcome::consumed;
     bsc::outcome inner_step = bsc::outcome::consumed;
+    bsc::outcome inner_by_name = bsc::outcome::consumed;
+    bsc::outcome inner_unknown = bsc::outcome::consumed;
     int idle_exits = 0;
     int busy_entries = 0;
 };
@@ -96,21 +99,29 @@ inline constexpr auto reentrant = bsc::make_chart<reentrant_ctx>(
             [](reentrant_ctx& c) {
                 c.inner = c.dispatch_go(c.self);  // a dispatch from inside the machine's own action
                 c.inner_step = c.step_now(c.self);
+                c.inner_by_name = c.by_name(c.self, "go");
+                c.inner_unknown = c.by_name(c.self, "no such event");
             } = bsc::state<Busy>,
     bsc::state<Busy> + bsc::event<go> = bsc::state<Other>,
     bsc::state<Other> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace rob
 
-TEST_CASE_TEMPLATE("a dispatch or step from inside the machine's own action is refused and changes nothing", Backend,
-                   compiled, table) {
+TEST_CASE_TEMPLATE("a dispatch, by type or by name, or a step from inside the machine's own action is refused and "
+                   "changes nothing",
+                   Backend, compiled, table) {
     using machine = bsc_test::machine_t<Backend, decltype(rob::reentrant)>;
     machine m{rob::reentrant};
     m.context().self = &m;
     m.context().dispatch_go = [](void* self) { return static_cast<machine*>(self)->dispatch(rob::go{}); };
     m.context().step_now = [](void* self) { return static_cast<machine*>(self)->step(1ms).status; };
+    m.context().by_name = [](void* self, char const* name) {
+        return static_cast<machine*>(self)->dispatch_by_name(name);
+    };
     CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);
     CHECK(m.context().inner == bsc::outcome::reentrant);
     CHECK(m.context().inner_step == bsc::outcome::reentrant);
+    CHECK(m.context().inner_by_name == bsc::outcome::reentrant);
+    CHECK(m.context().inner_unknown == bsc::outcome::reentrant);  // refused before the name is looked up
     // The outer transition completed once: Idle exited once, Busy entered once, nothing else.
     CHECK(m.template is<rob::Busy>());
     CHECK(m.context().idle_exits == 1);
