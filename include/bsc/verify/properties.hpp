@@ -7,6 +7,8 @@
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -103,6 +105,18 @@ struct verdict {
 }  // namespace bsc::verify
 
 namespace bsc::detail {
+
+// An argument a property cannot work with: thrown, or printed before aborting where exceptions
+// are disabled.
+[[noreturn]] inline void refuse_argument(char const* why) {
+#if defined(__cpp_exceptions)
+    throw std::invalid_argument(why);
+#else
+    std::fputs(why, stderr);
+    std::fputs("\n", stderr);
+    std::abort();
+#endif
+}
 
 // Whether the model is stepped with a fixed period, which gives its traces their times.
 template <class Model>
@@ -350,9 +364,9 @@ verdict leads_to_within(explorer<Model>& ex, std::string name, P p, Q q, duratio
     static_assert(detail::timed_model<Model>,
                   "bsc::verify::leads_to_within needs a model stepped with a period (cycle_model, system_model): "
                   "a bound in time has no meaning for an event_model");
-    if (bound < duration::zero()) throw std::invalid_argument("bsc::verify::leads_to_within: the bound is negative");
+    if (bound < duration::zero()) detail::refuse_argument("bsc::verify::leads_to_within: the bound is negative");
     if (ex.model().period() <= duration::zero())
-        throw std::invalid_argument("bsc::verify::leads_to_within: the model's period is not positive");
+        detail::refuse_argument("bsc::verify::leads_to_within: the model's period is not positive");
     ex.run();
     name = (name.empty() ? "p --> q" : name) + " within " + bsc::detail::delay_label(bound);
     if (!ex.stats().complete) return detail::incomplete(ex, name);
