@@ -84,13 +84,12 @@ public:
     // ---- the observer hooks (observer.hpp) ------------------------------------------------
     template <class E>
     void on_dispatch(E const&) {
-        time_ = last_cycle_time_;
         in_cycle_ = false;
         emit({log_record::kind::dispatch, time_, 0, {}, {}, event_name<E>});
     }
     void on_cycle(duration now) {
         ++cycles_;
-        time_ = last_cycle_time_ = now;
+        time_ = now;
         in_cycle_ = true;
     }
     void on_cycle_end() { in_cycle_ = false; }
@@ -124,8 +123,7 @@ private:
     }
 
     sink_type sink_;
-    duration time_{};
-    duration last_cycle_time_{};
+    duration time_{};  // the last cycle's time: a dispatch's too
     std::uint64_t cycles_ = 0;
     bool in_cycle_ = false;
     std::string trigger_;  // the text of the last timeout trigger, which a record views

@@ -2133,6 +2133,38 @@ constexpr auto named(std::string_view name, F f) {
 
 }  // namespace bsc
 // end include/bsc/dsl/named.hpp
+// begin include/bsc/event_name.hpp
+// The name of an event type, as bsc::event_set, dispatch_by_name and bsc::logger use it.
+
+#include <concepts>
+#include <string_view>
+#include <type_traits>
+
+
+namespace bsc {
+
+namespace detail {
+// A static member `name` (a data member called name, e.g. `std::string name;` in an event that
+// carries a name as data, is not the event's name).
+template <class E>
+concept names_itself = requires {
+    requires std::convertible_to<decltype(E::name), std::string_view>;
+    requires !std::is_member_object_pointer_v<decltype(&E::name)>;
+};
+}  // namespace detail
+
+/// The name of event type E: its static member `name` if it declares one
+/// (`static constexpr std::string_view name = "ON_P";`), otherwise bsc::name_of<E>.
+template <class E>
+inline constexpr std::string_view event_name = [] {
+    if constexpr (detail::names_itself<E>)
+        return std::string_view{E::name};
+    else
+        return name_of<E>;
+}();
+
+}  // namespace bsc
+// end include/bsc/event_name.hpp
 
 namespace bsc::detail {
 
@@ -2153,25 +2185,25 @@ struct text_filler {
 // Operator precedence of a guard expression, for parentheses: || below && below !.
 enum class guard_precedence { any, disjunction, conjunction, negation };
 
+// The name a guard or an action carries in its type (bsc::named<"text">), or "" if none: a
+// named guard or action derives from its static_name, and a named plain callable sits in the
+// guard_fn, action_fn or state_action that wraps it (member fn).
+template <class T>
+constexpr std::string_view static_name_of() {
+    if constexpr (names_itself<T>)
+        return T::name;
+    else if constexpr (requires { &T::fn; })
+        return static_name_of<decltype(T::fn)>();
+    else
+        return {};
+}
+
+// A guard part: its name if it has one, else "guard" (compositions are specialised below).
 template <class G>
 struct guard_words {
     template <class Out>
     static constexpr void write(Out& out, guard_precedence) {
-        out("guard");
-    }
-};
-template <fixed_string Text, class G>
-struct guard_words<named_guard<static_name<Text>, G>> {
-    template <class Out>
-    static constexpr void write(Out& out, guard_precedence) {
-        out(Text.view());
-    }
-};
-template <fixed_string Text, class F>
-struct guard_words<guard_fn<named_callable<static_name<Text>, F>>> {
-    template <class Out>
-    static constexpr void write(Out& out, guard_precedence) {
-        out(Text.view());
+        out(static_name_of<G>().empty() ? std::string_view{"guard"} : static_name_of<G>());
     }
 };
 template <class G>
@@ -2211,32 +2243,11 @@ template <class A>
 struct action_words {
     template <class Out>
     static constexpr void write(Out& out) {
-        out("action");
-    }
-};
-template <fixed_string Text, class A>
-struct action_words<named_action<static_name<Text>, A>> {
-    template <class Out>
-    static constexpr void write(Out& out) {
-        out(Text.view());
-    }
-};
-template <fixed_string Text, class F>
-struct action_words<action_fn<named_callable<static_name<Text>, F>>> {
-    template <class Out>
-    static constexpr void write(Out& out) {
-        out(Text.view());
+        out(static_name_of<A>().empty() ? std::string_view{"action"} : static_name_of<A>());
     }
 };
 template <class A>
 struct action_words<state_action<A>> : action_words<A> {};
-template <fixed_string Text, class F>
-struct action_words<state_action<named_callable<static_name<Text>, F>>> {
-    template <class Out>
-    static constexpr void write(Out& out) {
-        out(Text.view());
-    }
-};
 template <class... As>
 struct action_words<action_seq<As...>> {
     template <class Out>
@@ -3766,38 +3777,6 @@ private:
 #include <type_traits>
 #include <utility>
 
-// begin include/bsc/event_name.hpp
-// The name of an event type, as bsc::event_set, dispatch_by_name and bsc::logger use it.
-
-#include <concepts>
-#include <string_view>
-#include <type_traits>
-
-
-namespace bsc {
-
-namespace detail {
-// A static member `name` (a data member called name, e.g. `std::string name;` in an event that
-// carries a name as data, is not the event's name).
-template <class E>
-concept names_itself = requires {
-    requires std::convertible_to<decltype(E::name), std::string_view>;
-    requires !std::is_member_object_pointer_v<decltype(&E::name)>;
-};
-}  // namespace detail
-
-/// The name of event type E: its static member `name` if it declares one
-/// (`static constexpr std::string_view name = "ON_P";`), otherwise bsc::name_of<E>.
-template <class E>
-inline constexpr std::string_view event_name = [] {
-    if constexpr (detail::names_itself<E>)
-        return std::string_view{E::name};
-    else
-        return name_of<E>;
-}();
-
-}  // namespace bsc
-// end include/bsc/event_name.hpp
 
 namespace bsc {
 
@@ -4764,12 +4743,17 @@ struct notify {
     static constexpr void exited(Observer& o) {
         if constexpr (observes_exit_of<S>) o.on_exit(tag<S>{});
     }
-    // Before the action of transition Row, taken on event e (for a timeout row, the caller
-    // passes timeout_elapsed with the row's delay: reported_event).
-    template <int Row, class E>
-    static constexpr void transition(Observer& o, E const& e) {
-        if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, E>)
-            o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
+    // Before the action of transition Row (the row object `row`), taken on event e; a timeout
+    // row reports timeout_elapsed with its delay instead (reported_event).
+    template <int Row, class RowObject, class E>
+    static constexpr void transition(Observer& o, RowObject const& row, E const& e) {
+        using reported = reported_event<Row, E>;
+        if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, reported>) {
+            if constexpr (std::is_same_v<reported, timeout_elapsed>)
+                o.on_transition(source_tag<Row>{}, target_tag<Row>{}, timeout_elapsed{row.trigger_value.delay});
+            else
+                o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
+        }
         if constexpr (observes_rows<Observer>) o.on_row(Row);
     }
 
@@ -4909,23 +4893,16 @@ public:
     /// inside one of the machine's own guards or actions.
     template <class Decode = no_decoder>
     constexpr outcome dispatch_by_name(std::string_view name, Decode&& decode = {}) {
-        if (running_) return outcome::reentrant;
-        auto const number = event_set<Chart>::find(name);
-        if (!number) return last_ = outcome::unknown_event;
-        return dispatch_by_number(*number, decode);
+        // An unknown name is a number past the last event: dispatch_by_number refuses both alike.
+        return dispatch_by_number(event_set<Chart>::find(name).value_or(event_set<Chart>::size), decode);
     }
 
     /// As dispatch_by_name, for the event numbered `number` (bsc::event_set<Chart>::number_of).
     template <class Decode = no_decoder>
     constexpr outcome dispatch_by_number(std::size_t number, Decode&& decode = {}) {
-        if constexpr (event_set<Chart>::size == 0) {
-            (void)number;
-            (void)decode;
-            if (running_) return outcome::reentrant;
-            return last_ = outcome::unknown_event;
-        } else {
-            if (running_) return outcome::reentrant;
-            if (number >= event_set<Chart>::size) return last_ = outcome::unknown_event;
+        if (running_) return outcome::reentrant;
+        if (number >= event_set<Chart>::size) return last_ = outcome::unknown_event;
+        if constexpr (event_set<Chart>::size > 0)
             return event_set<Chart>::visit(number, [&]<class E>(std::type_identity<E> event) {
                 if constexpr (std::is_invocable_r_v<E, Decode&, std::type_identity<E>>) {
                     return dispatch(static_cast<E>(decode(event)));
@@ -4936,7 +4913,8 @@ public:
                     return outcome::ignored;
                 }
             });
-        }
+        else
+            return (void)decode, last_ = outcome::unknown_event;  // not reached: no number is below 0
     }
 
     /// True if state S is active.
@@ -5598,10 +5576,7 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        if constexpr (detail::is_timeout_row<std::remove_cvref_t<decltype(row<Row>())>>)
-            notify::template transition<Row>(observer_, timeout_elapsed{row<Row>().trigger_value.delay});
-        else
-            notify::template transition<Row>(observer_, e);
+        notify::template transition<Row>(observer_, row<Row>(), e);
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
             this->run([&] { row<Row>().action(context_, e, queue_); });
     }
@@ -6286,12 +6261,8 @@ private:
 
     template <int Row>
     static void transition(Observer& o, Chart const& chart, void const* event) {
-        using row_type = typename model::template row_at<Row>;
-        if constexpr (bsc::detail::is_timeout_row<row_type>)
-            notify::template transition<Row>(
-                o, timeout_elapsed{boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay});
-        else
-            notify::template transition<Row>(o, *static_cast<event_type<Row> const*>(event));
+        notify::template transition<Row>(o, boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows),
+                                         *static_cast<event_type<Row> const*>(event));
     }
 
     template <std::size_t S>

@@ -1066,6 +1066,37 @@ std::size_t first_cut_off(verify::explorer<Model> const& ex, std::vector<char> c
         if (!back[i]) return i;
     return verify::explorer<Model>::none;
 }
+
+// No path bound: a state from which some path never reaches q (a cycle or a dead end without q).
+inline constexpr std::size_t never = static_cast<std::size_t>(-1);
+
+// For each state, the most steps a path from it can take before it reaches a state marked in
+// `is_q` (0 for those), or `never`. The least fixpoint, by a backward worklist from q: a state
+// with successors is settled when its last successor is, one step beyond the slowest of them.
+template <class Model>
+std::vector<std::size_t> steps_to(verify::explorer<Model> const& ex, std::vector<char> const& is_q) {
+    std::size_t const n = ex.count();
+    std::vector<std::size_t> slowest(n, never);
+    std::vector<std::uint32_t> unsettled(n), queue;
+    for (std::size_t i = 0; i < n; ++i) {
+        unsettled[i] = ex.edges_end(i) - ex.edges_begin(i);
+        if (is_q[i]) {
+            slowest[i] = 0;
+            queue.push_back(static_cast<std::uint32_t>(i));
+        }
+    }
+    reverse_graph const g = reversed(ex);
+    for (std::size_t k = 0; k < queue.size(); ++k)
+        for (auto e = g.begin[queue[k]]; e < g.begin[queue[k] + 1]; ++e) {
+            std::uint32_t const i = g.from[e];
+            if (slowest[i] != never || --unsettled[i] != 0) continue;
+            std::size_t most = 0;  // every successor is settled, so finite
+            for (auto f = ex.edges_begin(i); f < ex.edges_end(i); ++f) most = std::max(most, slowest[ex.edge_target(f)]);
+            slowest[i] = most + 1;
+            queue.push_back(i);
+        }
+    return slowest;
+}
 }  // namespace bsc::detail
 
 namespace bsc::verify {
@@ -1122,33 +1153,17 @@ verdict leads_to(explorer<Model>& ex, std::string name, P p, Q q) {
     name = name.empty() ? "p --> q" : name;
     if (!ex.stats().complete) return detail::incomplete(ex, name);
     std::size_t const n = ex.count();
-    std::vector<char> is_q(n), is_p(n), sure(n, 0);
+    std::vector<char> is_q(n), is_p(n);
     for (std::size_t i = 0; i < n; ++i) {
         auto const s = ex.at(i);
         is_q[i] = q(s);
         is_p[i] = p(s);
     }
-    // sure[i]: every path from i reaches q. The least fixpoint, by a backward worklist: a
-    // state with successors becomes sure when its last unsure successor does.
-    detail::reverse_graph const g = detail::reversed(ex);
-    std::vector<std::uint32_t> unsure_successors(n), queue;
+    // sure[i]: every path from i reaches q.
+    std::vector<std::size_t> const slowest = detail::steps_to(ex, is_q);
+    auto const sure = [&](std::size_t i) { return slowest[i] != detail::never; };
     for (std::size_t i = 0; i < n; ++i) {
-        unsure_successors[i] = ex.edges_end(i) - ex.edges_begin(i);
-        if (is_q[i]) {
-            sure[i] = 1;
-            queue.push_back(static_cast<std::uint32_t>(i));
-        }
-    }
-    for (std::size_t k = 0; k < queue.size(); ++k)
-        for (auto e = g.begin[queue[k]]; e < g.begin[queue[k] + 1]; ++e) {
-            std::uint32_t const i = g.from[e];
-            if (!sure[i] && --unsure_successors[i] == 0) {
-                sure[i] = 1;
-                queue.push_back(i);
-            }
-        }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!is_p[i] || sure[i]) continue;
+        if (!is_p[i] || sure(i)) continue;
         auto trace = detail::path_to(ex, i);
         // Continue through states that can avoid q until one repeats or nothing follows.
         std::vector<char> seen(n, 0);
@@ -1159,7 +1174,7 @@ verdict leads_to(explorer<Model>& ex, std::string name, P p, Q q) {
             std::size_t next = n;
             std::uint16_t label = 0;
             for (auto e = ex.edges_begin(s); e < ex.edges_end(s); ++e)
-                if (!sure[ex.edge_target(e)]) {
+                if (!sure(ex.edge_target(e))) {
                     next = ex.edge_target(e);
                     label = ex.edge_label(e);
                     break;
@@ -1199,34 +1214,13 @@ verdict leads_to_within(explorer<Model>& ex, std::string name, P p, Q q, duratio
     if (!ex.stats().complete) return detail::incomplete(ex, name);
     std::size_t const n = ex.count();
     auto const steps = static_cast<std::size_t>(bound / ex.model().period());
-    // slowest[i]: the most steps a path from i can take before it reaches q; `forever` for a path
-    // that never does (a deadlock or a cycle of non-q states). Computed backwards from q, as in
-    // leads_to: a non-q state is settled when its last successor is.
-    constexpr std::size_t forever = static_cast<std::size_t>(-1);
-    std::vector<char> is_p(n), settled(n, 0);
-    std::vector<std::size_t> slowest(n, forever);
-    std::vector<std::uint32_t> unsettled(n), queue;
+    std::vector<char> is_p(n), is_q(n);
     for (std::size_t i = 0; i < n; ++i) {
         auto const s = ex.at(i);
         is_p[i] = p(s);
-        unsettled[i] = ex.edges_end(i) - ex.edges_begin(i);
-        if (q(s)) {
-            slowest[i] = 0;
-            settled[i] = 1;
-            queue.push_back(static_cast<std::uint32_t>(i));
-        }
+        is_q[i] = q(s);
     }
-    detail::reverse_graph const g = detail::reversed(ex);
-    for (std::size_t k = 0; k < queue.size(); ++k)
-        for (auto e = g.begin[queue[k]]; e < g.begin[queue[k] + 1]; ++e) {
-            std::uint32_t const i = g.from[e];
-            if (settled[i] || --unsettled[i] != 0) continue;
-            std::size_t most = 0;
-            for (auto f = ex.edges_begin(i); f < ex.edges_end(i); ++f) most = std::max(most, slowest[ex.edge_target(f)]);
-            slowest[i] = most == forever ? forever : most + 1;
-            settled[i] = 1;
-            queue.push_back(i);
-        }
+    std::vector<std::size_t> const slowest = detail::steps_to(ex, is_q);
     for (std::size_t i = 0; i < n; ++i) {
         if (!is_p[i] || slowest[i] <= steps) continue;
         auto trace = detail::path_to(ex, i);

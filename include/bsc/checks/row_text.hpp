@@ -11,6 +11,7 @@
 #include <bsc/detail/fixed_string.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/dsl/named.hpp>
+#include <bsc/event_name.hpp>
 #include <bsc/dsl/row.hpp>
 
 namespace bsc::detail {
@@ -32,25 +33,25 @@ struct text_filler {
 // Operator precedence of a guard expression, for parentheses: || below && below !.
 enum class guard_precedence { any, disjunction, conjunction, negation };
 
+// The name a guard or an action carries in its type (bsc::named<"text">), or "" if none: a
+// named guard or action derives from its static_name, and a named plain callable sits in the
+// guard_fn, action_fn or state_action that wraps it (member fn).
+template <class T>
+constexpr std::string_view static_name_of() {
+    if constexpr (names_itself<T>)
+        return T::name;
+    else if constexpr (requires { &T::fn; })
+        return static_name_of<decltype(T::fn)>();
+    else
+        return {};
+}
+
+// A guard part: its name if it has one, else "guard" (compositions are specialised below).
 template <class G>
 struct guard_words {
     template <class Out>
     static constexpr void write(Out& out, guard_precedence) {
-        out("guard");
-    }
-};
-template <fixed_string Text, class G>
-struct guard_words<named_guard<static_name<Text>, G>> {
-    template <class Out>
-    static constexpr void write(Out& out, guard_precedence) {
-        out(Text.view());
-    }
-};
-template <fixed_string Text, class F>
-struct guard_words<guard_fn<named_callable<static_name<Text>, F>>> {
-    template <class Out>
-    static constexpr void write(Out& out, guard_precedence) {
-        out(Text.view());
+        out(static_name_of<G>().empty() ? std::string_view{"guard"} : static_name_of<G>());
     }
 };
 template <class G>
@@ -90,32 +91,11 @@ template <class A>
 struct action_words {
     template <class Out>
     static constexpr void write(Out& out) {
-        out("action");
-    }
-};
-template <fixed_string Text, class A>
-struct action_words<named_action<static_name<Text>, A>> {
-    template <class Out>
-    static constexpr void write(Out& out) {
-        out(Text.view());
-    }
-};
-template <fixed_string Text, class F>
-struct action_words<action_fn<named_callable<static_name<Text>, F>>> {
-    template <class Out>
-    static constexpr void write(Out& out) {
-        out(Text.view());
+        out(static_name_of<A>().empty() ? std::string_view{"action"} : static_name_of<A>());
     }
 };
 template <class A>
 struct action_words<state_action<A>> : action_words<A> {};
-template <fixed_string Text, class F>
-struct action_words<state_action<named_callable<static_name<Text>, F>>> {
-    template <class Out>
-    static constexpr void write(Out& out) {
-        out(Text.view());
-    }
-};
 template <class... As>
 struct action_words<action_seq<As...>> {
     template <class Out>

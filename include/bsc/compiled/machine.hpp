@@ -270,10 +270,7 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        if constexpr (detail::is_timeout_row<std::remove_cvref_t<decltype(row<Row>())>>)
-            notify::template transition<Row>(observer_, timeout_elapsed{row<Row>().trigger_value.delay});
-        else
-            notify::template transition<Row>(observer_, e);
+        notify::template transition<Row>(observer_, row<Row>(), e);
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
             this->run([&] { row<Row>().action(context_, e, queue_); });
     }

@@ -155,23 +155,16 @@ public:
     /// inside one of the machine's own guards or actions.
     template <class Decode = no_decoder>
     constexpr outcome dispatch_by_name(std::string_view name, Decode&& decode = {}) {
-        if (running_) return outcome::reentrant;
-        auto const number = event_set<Chart>::find(name);
-        if (!number) return last_ = outcome::unknown_event;
-        return dispatch_by_number(*number, decode);
+        // An unknown name is a number past the last event: dispatch_by_number refuses both alike.
+        return dispatch_by_number(event_set<Chart>::find(name).value_or(event_set<Chart>::size), decode);
     }
 
     /// As dispatch_by_name, for the event numbered `number` (bsc::event_set<Chart>::number_of).
     template <class Decode = no_decoder>
     constexpr outcome dispatch_by_number(std::size_t number, Decode&& decode = {}) {
-        if constexpr (event_set<Chart>::size == 0) {
-            (void)number;
-            (void)decode;
-            if (running_) return outcome::reentrant;
-            return last_ = outcome::unknown_event;
-        } else {
-            if (running_) return outcome::reentrant;
-            if (number >= event_set<Chart>::size) return last_ = outcome::unknown_event;
+        if (running_) return outcome::reentrant;
+        if (number >= event_set<Chart>::size) return last_ = outcome::unknown_event;
+        if constexpr (event_set<Chart>::size > 0)
             return event_set<Chart>::visit(number, [&]<class E>(std::type_identity<E> event) {
                 if constexpr (std::is_invocable_r_v<E, Decode&, std::type_identity<E>>) {
                     return dispatch(static_cast<E>(decode(event)));
@@ -182,7 +175,8 @@ public:
                     return outcome::ignored;
                 }
             });
-        }
+        else
+            return (void)decode, last_ = outcome::unknown_event;  // not reached: no number is below 0
     }
 
     /// True if state S is active.

@@ -42,12 +42,17 @@ struct notify {
     static constexpr void exited(Observer& o) {
         if constexpr (observes_exit_of<S>) o.on_exit(tag<S>{});
     }
-    // Before the action of transition Row, taken on event e (for a timeout row, the caller
-    // passes timeout_elapsed with the row's delay: reported_event).
-    template <int Row, class E>
-    static constexpr void transition(Observer& o, E const& e) {
-        if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, E>)
-            o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
+    // Before the action of transition Row (the row object `row`), taken on event e; a timeout
+    // row reports timeout_elapsed with its delay instead (reported_event).
+    template <int Row, class RowObject, class E>
+    static constexpr void transition(Observer& o, RowObject const& row, E const& e) {
+        using reported = reported_event<Row, E>;
+        if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, reported>) {
+            if constexpr (std::is_same_v<reported, timeout_elapsed>)
+                o.on_transition(source_tag<Row>{}, target_tag<Row>{}, timeout_elapsed{row.trigger_value.delay});
+            else
+                o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
+        }
         if constexpr (observes_rows<Observer>) o.on_row(Row);
     }
 

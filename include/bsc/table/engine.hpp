@@ -55,12 +55,8 @@ private:
 
     template <int Row>
     static void transition(Observer& o, Chart const& chart, void const* event) {
-        using row_type = typename model::template row_at<Row>;
-        if constexpr (bsc::detail::is_timeout_row<row_type>)
-            notify::template transition<Row>(
-                o, timeout_elapsed{boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay});
-        else
-            notify::template transition<Row>(o, *static_cast<event_type<Row> const*>(event));
+        notify::template transition<Row>(o, boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows),
+                                         *static_cast<event_type<Row> const*>(event));
     }
 
     template <std::size_t S>
