@@ -4,7 +4,8 @@
 Starting from include/bsc/bsc.hpp, every include that resolves to a file under
 include/ is inlined in place, depth-first and only the first time it is seen;
 all other includes are kept as they are. The opt-in parts, the explorer (include/bsc/verify.hpp), the diagram exports
-(include/bsc/export.hpp) and the logger (include/bsc/logger.hpp), become files of
+(include/bsc/export.hpp), the logger (include/bsc/logger.hpp), the retentive state
+(include/bsc/retain.hpp) and the VCD recorder (include/bsc/vcd.hpp), become files of
 their own that include the first and add only what it lacks; a header two of them
 share is guarded by a macro, so that they can be included together. The output is
 deterministic so that it can be checked in and verified with --check.
@@ -23,6 +24,8 @@ ENTRY = INCLUDE_DIR / "bsc" / "bsc.hpp"
 VERIFY_ENTRY = INCLUDE_DIR / "bsc" / "verify.hpp"
 EXPORT_ENTRY = INCLUDE_DIR / "bsc" / "export.hpp"
 LOGGER_ENTRY = INCLUDE_DIR / "bsc" / "logger.hpp"
+RETAIN_ENTRY = INCLUDE_DIR / "bsc" / "retain.hpp"
+VCD_ENTRY = INCLUDE_DIR / "bsc" / "vcd.hpp"
 DEFAULT_OUTPUT = ROOT / "single_include" / "bsc" / "bsc.hpp"
 COMMAND = "python3 scripts/amalgamate.py"
 
@@ -56,6 +59,22 @@ LOGGER_HEADER = f"""\
 #pragma once
 // bsc::logger - records of what a machine does, single-header distribution (needs bsc.hpp beside it).
 // Generated from include/bsc/logger.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+RETAIN_HEADER = f"""\
+#pragma once
+// bsc::save and bsc::restore - retentive state, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/retain.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+VCD_HEADER = f"""\
+#pragma once
+// bsc::vcd_recorder - waveforms of a machine's scans, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/vcd.hpp by `{COMMAND}`.
 // Do not edit: change the headers under include/ and regenerate.
 #include "bsc.hpp"
 """
@@ -110,7 +129,8 @@ def inline(path: Path, seen: set[Path], out: list[str], guarded: set[Path] = fro
 
 
 PARTS = [(VERIFY_ENTRY, VERIFY_HEADER, "verify.hpp"), (EXPORT_ENTRY, EXPORT_HEADER, "export.hpp"),
-         (LOGGER_ENTRY, LOGGER_HEADER, "logger.hpp")]
+         (LOGGER_ENTRY, LOGGER_HEADER, "logger.hpp"), (RETAIN_ENTRY, RETAIN_HEADER, "retain.hpp"),
+         (VCD_ENTRY, VCD_HEADER, "vcd.hpp")]
 
 
 def amalgamate() -> list[tuple[str, str]]:

@@ -2,7 +2,7 @@
 // runs in closed loop with a plant model (plant.hpp) at a fixed scan period, and every cycle is
 // checked against the paper's requirements (monitor.hpp).
 //
-//   manufacturing_cell [--pieces N] [--seed S] [--period MS] [--quiet]
+//   manufacturing_cell [--pieces N] [--seed S] [--period MS] [--quiet] [--vcd FILE]
 //
 // Without --seed the pieces arrive by a fixed script (a steady start, a burst, stragglers);
 // with --seed they arrive at random gaps of 0.5 s to 12 s drawn from that seed. The trace has one
@@ -17,15 +17,20 @@
 // When the cell has nothing to do, the belt alternates between Off and Done while E1..E4 are
 // set and reset (the paper's empty cell); after its first two cycles such a run is folded into
 // one line. The run exits with status 1 if a piece was not stored or a requirement was
-// violated.
+// violated. With --vcd every cycle is also recorded in FILE as a waveform (bsc::vcd_recorder:
+// the components' states, the sensors, the actuators, E1..E4 and the timers), for GTKWave.
 
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <bsc/vcd.hpp>
 
 #include "controller.hpp"
 #include "monitor.hpp"
@@ -41,6 +46,7 @@ struct options {
     std::uint32_t seed = 0;
     bsc::duration period = 100ms;
     bool quiet = false;
+    std::string vcd;  // the waveform file, if any
 };
 
 // The active state of each component, in the paper's order.
@@ -100,11 +106,12 @@ std::vector<bsc::duration> scripted_arrivals(int pieces) {
 
 int usage() {
     std::fprintf(stderr,
-                 "usage: manufacturing_cell [--pieces N] [--seed S] [--period MS] [--quiet]\n"
+                 "usage: manufacturing_cell [--pieces N] [--seed S] [--period MS] [--quiet] [--vcd FILE]\n"
                  "  --pieces N   pieces to run through the cell (default 8)\n"
                  "  --seed S     random arrivals from seed S instead of the fixed script\n"
                  "  --period MS  scan period in milliseconds (default 100)\n"
-                 "  --quiet      print the summary only\n");
+                 "  --quiet      print the summary only\n"
+                 "  --vcd FILE   record every cycle in FILE as a value change dump (GTKWave)\n");
     return 2;
 }
 
@@ -125,6 +132,8 @@ bool parse(int argc, char** argv, options& o) {
         } else if (a == "--seed" && value(v) && v >= 0) {
             o.random = true;
             o.seed = static_cast<std::uint32_t>(v);
+        } else if (a == "--vcd" && i + 1 < argc) {
+            o.vcd = argv[++i];
         } else if (a == "--period" && value(v) && v > 0 && v <= 1000) {
             o.period = std::chrono::milliseconds{v};
         } else {
@@ -148,6 +157,16 @@ int main(int argc, char** argv) {
 
     cell::machine m{cell::chart};
     cell::closed_loop loop{m, arrivals, o.period};
+    std::ofstream vcd_file;
+    std::optional<bsc::vcd_recorder<cell::machine>> vcd;
+    if (!o.vcd.empty()) {
+        vcd_file.open(o.vcd);
+        if (!vcd_file) {
+            std::fprintf(stderr, "manufacturing_cell: cannot write %s\n", o.vcd.c_str());
+            return 2;
+        }
+        vcd.emplace(vcd_file, m);
+    }
     // Enough for every piece to go through the cell one after the other, after the last arrival.
     bsc::duration const last_arrival = arrivals.empty() ? bsc::duration{} : arrivals.back();
     long const max_cycles = static_cast<long>((last_arrival + (o.pieces + 5) * 30s) / o.period);
@@ -165,6 +184,7 @@ int main(int argc, char** argv) {
     };
     while (!loop.done() && loop.cycles() < max_cycles) {
         cell::cycle_record const r = loop.cycle();
+        if (vcd) vcd->sample();
         snapshot const now = take(m, r.latched);
         if (!o.quiet && (cycle == 0 || now != last)) {
             // An empty phase alternates two snapshots that differ only in the belt's state.
@@ -193,6 +213,15 @@ int main(int argc, char** argv) {
                         x.stored ? "stored" : "NOT stored", std::chrono::duration<double>(x.stored_at).count());
 
     bool ok = finished && loop.monitor().ok();
+    if (vcd) {
+        vcd_file.flush();
+        if (vcd_file) {
+            std::printf("waveform: %zu samples of %zu variables in %s\n", vcd->samples(), vcd->variables(), o.vcd.c_str());
+        } else {
+            std::printf("FAILED: could not write the waveform to %s\n", o.vcd.c_str());
+            ok = false;
+        }
+    }
     if (!finished) std::printf("FAILED: not every piece was stored within %ld cycles\n", max_cycles);
     for (std::string const& v : loop.monitor().violations()) std::printf("VIOLATION %s\n", v.c_str());
     if (ok) std::printf("ok: every piece drilled, tested and stored; constraints 1-3, synchronisation and timing held\n");

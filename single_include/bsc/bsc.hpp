@@ -457,6 +457,19 @@ struct too_many_fields {
     }
 };
 
+// ---- retentive state (bsc/retain.hpp) --------------------------------------------------------
+
+template <class Type>
+struct member_not_retainable {
+    constexpr ~member_not_retainable() {
+        static_assert(detail::dependent_false<member_not_retainable>,
+                      "bsc: bsc::save and bsc::restore store bool, integers, enums, float, double, channels, timers, "
+                      "machines, and std::arrays and aggregates of them; the Type in this error is none of those: "
+                      "make it one, or leave it out by specialising bsc::not_retained<Type> as true (a restored "
+                      "machine then keeps its own value of it)");
+    }
+};
+
 // ---- guards and actions ----------------------------------------------------------------------
 
 template <class Callable>
@@ -3655,8 +3668,8 @@ private:
 // begin include/bsc/detail/access.hpp
 // The one door to what users may not touch: a channel's latch and commit, a timer's update
 // and its internal state, a machine's configuration, clock, timeout slots and queue. Only the
-// machines, the explorer and the project's own tests go through it; every class it opens
-// names it as its only friend.
+// machines, the explorer, the retentive state (bsc/retain.hpp), the VCD recorder and the
+// project's own tests go through it; every class it opens names it as its only friend.
 
 #include <cstddef>
 #include <cstdint>
@@ -3694,6 +3707,10 @@ struct access {
         t.started_ = started;
         t.elapsed_ = elapsed;
     }
+    template <class Timer>
+    static constexpr void set_timer_limit(Timer& t, duration limit) {
+        t.limit_ = limit;
+    }
 
     // ---- machines: read and written by the explorer, read by the tests ---------------------
     // (through the shared driver, which holds the data and names this class its friend)
@@ -3710,6 +3727,21 @@ struct access {
     static constexpr void set_clock(M& m, duration now) {
         driver_of(m).clock_ = now;
         driver_of(m).clock_started_ = true;
+    }
+    // Whether a cycle has run (the clock is the caller's time), and setting both together.
+    template <class M>
+    static constexpr bool clock_started(M const& m) {
+        return driver_of(m).clock_started_;
+    }
+    template <class M>
+    static constexpr void set_clock(M& m, duration now, bool started) {
+        driver_of(m).clock_ = now;
+        driver_of(m).clock_started_ = started;
+    }
+    // Inside a dispatch, a cycle or the construction: the machine's data is in flux.
+    template <class M>
+    static constexpr bool running(M const& m) {
+        return driver_of(m).running_;
     }
     template <class M>
     static constexpr auto& armed(M& m) {
@@ -4019,11 +4051,13 @@ public:
     constexpr void start() {
         phase_ = phase::pending;
         expired_ = false;
+        elapsed_ = duration::zero();
     }
-    /// Stops the timer and clears tm().
+    /// Stops the timer and clears tm() and elapsed().
     constexpr void reset() {
         phase_ = phase::idle;
         expired_ = false;
+        elapsed_ = duration::zero();
     }
     /// The paper's `tm`: the limit has been reached or passed.
     constexpr bool tm() const { return expired_; }

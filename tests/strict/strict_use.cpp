@@ -6,9 +6,12 @@
 
 #include <bsc/bsc.hpp>
 #include <bsc/export.hpp>
+#include <bsc/retain.hpp>
+#include <bsc/vcd.hpp>
 #include <bsc/verify.hpp>
 
 #include <chrono>
+#include <sstream>
 #include <string>
 
 #include "manufacturing_cell/controller.hpp"
@@ -71,6 +74,21 @@ int main() {
 
     bsc::machine<decltype(cell::chart), bsc::scan_policy> controller{cell::chart};
     sum += controller.step(500ms).transitions;
+
+    std::ostringstream wave;
+    {
+        bsc::vcd_recorder cell_vcd{wave, controller};
+        cell_vcd.sample();
+        bsc::machine strict_machine{strict::chart, strict::io{}};
+        bsc::vcd_recorder strict_vcd{wave, strict_machine, "strict"};
+        strict_vcd.sample();
+        auto const bytes = bsc::save(strict_machine);
+        sum += bsc::restore(strict_machine, bytes, bsc::resume_at{1s}) ? 1 : 0;
+        bsc::table::machine strict_table{strict::chart, strict::io{}};
+        sum += bsc::restore(strict_table, bytes) ? 1 : 0;
+    }
+    auto const saved = bsc::save(controller);
+    sum += bsc::restore(controller, saved) ? static_cast<int>(wave.str().size() > 0) : 0;
 
     pcell::cell system{};
     sum += system.step(100ms).transitions;

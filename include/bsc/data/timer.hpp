@@ -25,11 +25,13 @@ public:
     constexpr void start() {
         phase_ = phase::pending;
         expired_ = false;
+        elapsed_ = duration::zero();
     }
-    /// Stops the timer and clears tm().
+    /// Stops the timer and clears tm() and elapsed().
     constexpr void reset() {
         phase_ = phase::idle;
         expired_ = false;
+        elapsed_ = duration::zero();
     }
     /// The paper's `tm`: the limit has been reached or passed.
     constexpr bool tm() const { return expired_; }

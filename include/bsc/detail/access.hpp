@@ -1,8 +1,8 @@
 #pragma once
 // The one door to what users may not touch: a channel's latch and commit, a timer's update
 // and its internal state, a machine's configuration, clock, timeout slots and queue. Only the
-// machines, the explorer and the project's own tests go through it; every class it opens
-// names it as its only friend.
+// machines, the explorer, the retentive state (bsc/retain.hpp), the VCD recorder and the
+// project's own tests go through it; every class it opens names it as its only friend.
 
 #include <cstddef>
 #include <cstdint>
@@ -41,6 +41,10 @@ struct access {
         t.started_ = started;
         t.elapsed_ = elapsed;
     }
+    template <class Timer>
+    static constexpr void set_timer_limit(Timer& t, duration limit) {
+        t.limit_ = limit;
+    }
 
     // ---- machines: read and written by the explorer, read by the tests ---------------------
     // (through the shared driver, which holds the data and names this class its friend)
@@ -57,6 +61,21 @@ struct access {
     static constexpr void set_clock(M& m, duration now) {
         driver_of(m).clock_ = now;
         driver_of(m).clock_started_ = true;
+    }
+    // Whether a cycle has run (the clock is the caller's time), and setting both together.
+    template <class M>
+    static constexpr bool clock_started(M const& m) {
+        return driver_of(m).clock_started_;
+    }
+    template <class M>
+    static constexpr void set_clock(M& m, duration now, bool started) {
+        driver_of(m).clock_ = now;
+        driver_of(m).clock_started_ = started;
+    }
+    // Inside a dispatch, a cycle or the construction: the machine's data is in flux.
+    template <class M>
+    static constexpr bool running(M const& m) {
+        return driver_of(m).running_;
     }
     template <class M>
     static constexpr auto& armed(M& m) {

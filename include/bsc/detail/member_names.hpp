@@ -1,0 +1,69 @@
+#pragma once
+// The names of an aggregate's members as its definition spells them, at compile time, without
+// macros: the address of a member of an object that is declared but never defined is a constant
+// that may be a template argument, and both supported compilers spell that argument in
+// __PRETTY_FUNCTION__ ending with the member's name (GCC 12: "{(& object<T>.T::speed)}",
+// Clang 14: "{&object.speed}"). Used by the opt-in parts that show or store a context by name
+// (the VCD recorder, the retentive state's layout fingerprint); nothing else pays for it.
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+#include <tuple>
+#include <utility>
+
+#include <bsc/detail/fields.hpp>
+
+namespace bsc::detail {
+
+// Holds the address as a class-type template argument: Clang 14 accepts a pointer to a
+// subobject there, but not as a template argument of pointer type.
+template <class T>
+struct member_address {
+    T const* address;
+};
+
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wundefined-var-template"
+#endif
+// Never defined: only its members' addresses are taken, in constant expressions.
+template <class T>
+extern T const declared_only;
+
+template <auto Address>
+constexpr char const* spelled_address() {
+    return __PRETTY_FUNCTION__;
+}
+
+constexpr bool is_identifier_char(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+// The last identifier of a signature: the member's name, before the closing brackets.
+constexpr std::string_view last_identifier(std::string_view s) {
+    std::size_t end = s.size();
+    while (end > 0 && !is_identifier_char(s[end - 1])) --end;
+    std::size_t begin = end;
+    while (begin > 0 && is_identifier_char(s[begin - 1])) --begin;
+    return s.substr(begin, end - begin);
+}
+
+template <class T, std::size_t I>
+constexpr std::string_view member_name_of() {
+    constexpr auto& member = std::get<I>(tie_fields(declared_only<T>));
+    using member_type = std::remove_cvref_t<decltype(member)>;
+    return last_identifier(spelled_address<member_address<member_type>{&member}>());
+}
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+
+/// The names of T's members, in declaration order. Requirements: T is an aggregate that
+/// detail::tie_fields supports.
+template <class T>
+inline constexpr auto member_names = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<std::string_view, sizeof...(I)>{member_name_of<T, I>()...};
+}(std::make_index_sequence<std::tuple_size_v<decltype(tie_fields(std::declval<T&>()))>>{});
+
+}  // namespace bsc::detail
