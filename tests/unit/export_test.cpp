@@ -345,15 +345,15 @@ TEST_CASE("exports of the examples: every state and transition, and the structur
     SUBCASE("MCS") {
         check_example(mcs::chart);
         auto const mermaid = bsc::to_mermaid(mcs::chart);
-        CHECK(has(mermaid, "    Off --> On : on_p\n"));
-        CHECK(has(mermaid, "    Estop --> Off : off_p [cond]\n"));
-        CHECK(has(mermaid, "    On --> Estop : estop_p / Set_Error1\n"));
+        CHECK(has(mermaid, "    Off --> On : ON_P\n"));
+        CHECK(has(mermaid, "    Estop --> Off : OFF_P [cond]\n"));
+        CHECK(has(mermaid, "    On --> Estop : ESTOP_P / Set_Error1\n"));
         CHECK(has(mermaid, "state \"On [H*]<br/>entry / Show<br/>exit / Show\" as On {\n"));
         CHECK(has(mermaid, "[*] --> Auto\n"));
         auto const scxml = bsc::to_scxml(mcs::chart);
         CHECK(has(scxml, "<history id=\"On_history\" type=\"deep\">\n"));
-        CHECK(has(scxml, "<transition event=\"reset_p\" target=\"Estop\">"));
-        CHECK(has(scxml, "<transition event=\"off_p\" cond=\"cond\" target=\"Off\"/>"));
+        CHECK(has(scxml, "<transition event=\"RESET_P\" target=\"Estop\">"));
+        CHECK(has(scxml, "<transition event=\"OFF_P\" cond=\"cond\" target=\"Off\"/>"));
         CHECK(has(scxml, "<script>/* Set_Error0 */</script>"));
         CHECK(has(scxml, "<onentry><script>/* Show */</script></onentry>"));
     }
@@ -400,7 +400,7 @@ TEST_CASE("exports of the examples: every state and transition, and the structur
         CHECK(has(mermaid, "    QueryRobotOnPress --> Idle : [Robot?Idle] / set_pressed, set_busy, start, light_on\n"));
         CHECK(has(mermaid, "    QueryRobotOnPress --> Idle : [Robot?Busy] / set_pressed\n"));
         auto const extended = bsc::to_scxml(eca::extended_main_chart);
-        CHECK(has(extended, "<transition event=\"continue_\""));
+        CHECK(has(extended, "<transition event=\"continue\""));
         CHECK(has(extended, "<transition cond=\"Pause?Paused\" target=\"Idle\">"));
     }
     SUBCASE("every guard and action of the examples has a name") {

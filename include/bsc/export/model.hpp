@@ -26,6 +26,7 @@
 #include <bsc/dsl/guard.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/dsl/tree.hpp>
+#include <bsc/event_name.hpp>
 
 namespace bsc::detail {
 
@@ -288,7 +289,7 @@ void add_row(diagram& m, Row const& row, int index, int source) {
             t.trigger = trigger_kind::eventless;
         } else {
             t.trigger = trigger_kind::event;
-            t.event = std::string(name_of<typename trigger::event>);
+            t.event = std::string(event_name<typename trigger::event>);  // as dispatch_by_name knows it
         }
         if constexpr (Row::guarded) t.guard = guard_label(row.guard);
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row.action)>, no_action>)

@@ -6,7 +6,7 @@
 // <state>, since <final> may have none), the chart's root is the <scxml> element's initial.
 // Transitions are children of their source, in declaration order (which is SCXML's priority
 // among transitions of one source):
-//   - `event` is the event's type name, made a valid token; eventless transitions have none;
+//   - `event` is the event's bsc::event_name, made a valid token; eventless transitions have none;
 //   - a state-scoped timeout `after(3s)` is a transition on the event "after(3s)", with a
 //     comment: SCXML has no timeouts, a platform would send that event delayed from <onentry>;
 //   - `cond` is the guard's name (bsc::named), or "guard";
