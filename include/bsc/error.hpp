@@ -304,10 +304,11 @@ template <class Type>
 struct member_not_retainable {
     constexpr ~member_not_retainable() {
         static_assert(detail::dependent_false<member_not_retainable>,
-                      "bsc: bsc::save and bsc::restore store bool, integers, enums, float, double, channels, timers, "
-                      "machines, and std::arrays and aggregates of them; the Type in this error is none of those: "
-                      "make it one, or leave it out by specialising bsc::not_retained<Type> as true (a restored "
-                      "machine then keeps its own value of it)");
+                      "bsc: bsc::save and bsc::restore store bool, integers of up to 64 bits, enums with a fixed "
+                      "underlying type, float, double, std::chrono::duration, channels, timers, machines, and "
+                      "std::arrays and aggregates of them, none of whose members is const or a reference; the Type "
+                      "in this error is none of those: make it one, or leave it out by specialising "
+                      "bsc::not_retained<Type> as true (a restored machine then keeps its own value of it)");
     }
 };
 

@@ -14,7 +14,8 @@
 //           6  2 bytes  flags (0)
 //           8  4 bytes  payload length
 //          12  8 bytes  the chart's fingerprint: its states' names, kinds, history, nesting and
-//                       order, and which states hold timeouts (what the saved bytes mean)
+//                       order, and its timeout rows' states, places, targets and delays (what
+//                       the saved bytes mean)
 //          20  8 bytes  the context's fingerprint: each member's name, kind, size and order, at
 //                       any depth (a renamed, retyped, added or moved member changes it)
 //          28  payload  the machine: one byte per composite (its active or remembered child: the
@@ -26,8 +27,11 @@
 // The size is fixed for a machine type (bsc::saved_size), so a controller can keep its state in a
 // static buffer. Restoring checks everything before it changes anything: bytes that are not a
 // saved state, of another version, chart or context layout, truncated, extended, corrupted, or
-// holding a value out of range are refused with the reason and the byte, and the machine is left
-// as it was. The internal queue is not saved: between runs it is empty (after the machine halted
+// holding a value no machine can hold (a configuration byte past its composite's children, a flag
+// other than 0 or 1, an outcome, a timer's phase or a negative limit) are refused with the reason
+// and the byte, and the machine is left as it was. (Within its type any value of a member is
+// taken: restore does not know the program's invariants; enums must have a fixed underlying type,
+// so that every such value is one of the enum's.) The internal queue is not saved: between runs it is empty (after the machine halted
 // it may hold events that will never be processed). Neither is the exception of a last outcome
 // `failed`, nor the observer.
 //
@@ -77,7 +81,7 @@ enum class restore_error : std::uint8_t {
     corrupted,            ///< the checksum does not match: the bytes changed after saving
     other_chart,          ///< saved from a chart with other states
     other_layout,         ///< saved with another context layout
-    invalid_value,        ///< a value out of its range (a configuration byte, a flag, a timer's phase)
+    invalid_value,        ///< a value no machine can hold (a configuration byte, a flag, an outcome, a timer's state)
 };
 
 /// The result of bsc::restore: true when restored; otherwise why not, and the byte at which the
@@ -138,6 +142,12 @@ inline constexpr bool is_chrono_duration = false;
 template <class Rep, class Period>
 inline constexpr bool is_chrono_duration<std::chrono::duration<Rep, Period>> = true;
 
+// An enum whose every value of the underlying type is a value of the enum: a scoped enum, or one
+// declared with `: type` (only those can be list-initialised from an integer). Restoring any
+// other from bytes could make a value outside its range.
+template <class T>
+inline constexpr bool has_fixed_underlying_type = requires { T{std::underlying_type_t<T>{}}; };
+
 // FNV-1a, 64 bits: fingerprints of a chart and a layout, computed at compile time.
 struct fingerprint {
     std::uint64_t value = 14695981039346656037ull;
@@ -185,11 +195,40 @@ constexpr std::uint64_t chart_fingerprint() {
     return f.value;
 }
 
+// The same, with each timeout row's place among the rows, its target and its delay (a value of
+// the chart, not of its type): a timeout row added, removed, moved or given another delay changes
+// the meaning of the start times the bytes hold.
+template <class Machine>
+std::uint64_t chart_fingerprint(Machine const& m) {
+    using model = model_of<Machine>;
+    using layout = chart_layout<model>;
+    fingerprint f{chart_fingerprint<Machine>()};
+    auto const delays = access::row_delays(m);
+    for (std::size_t row = 0; row < delays.size(); ++row) {
+        if (!layout::is_timeout_row(static_cast<int>(row))) continue;
+        f.add(row);
+        f.add(static_cast<std::uint64_t>(model::rows.target[row] + 2));
+        f.add(static_cast<std::uint64_t>(delays[row].count()));
+    }
+    return f.value;
+}
+
 enum class member_kind : std::uint8_t { boolean, signed_integer, unsigned_integer, enumeration, floating, time,
                                         input, output, inout, timer, array, aggregate, machine, skipped };
 
 template <class T>
 constexpr std::size_t size_of();
+
+// A member's size; a const member (or a const reference) cannot be restored.
+template <class Field>
+constexpr std::size_t field_size() {
+    if constexpr (std::is_const_v<Field>) {
+        detail::report<error::member_not_retainable<Field>>();
+        return 0;
+    } else {
+        return size_of<Field>();
+    }
+}
 
 template <class Machine>
 constexpr std::size_t machine_size() {
@@ -210,7 +249,9 @@ constexpr std::size_t size_of() {
         return 3 * 8 + 2;
     } else if constexpr (std::is_same_v<T, bool>) {
         return 1;
-    } else if constexpr (std::is_integral_v<T> || std::is_enum_v<T>) {
+    } else if constexpr (std::is_integral_v<T> && sizeof(T) <= 8) {
+        return sizeof(T);
+    } else if constexpr (std::is_enum_v<T> && has_fixed_underlying_type<T>) {
         return sizeof(T);
     } else if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
         return sizeof(T);
@@ -218,9 +259,9 @@ constexpr std::size_t size_of() {
         return size_of<typename T::rep>();
     } else if constexpr (is_std_array<T>) {
         return std::tuple_size_v<T> * size_of<typename T::value_type>();
-    } else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T>) {
+    } else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T> && !has_reference_field<T>) {
         return []<class... Fields>(std::tuple<Fields&...>*) {
-            return (std::size_t{0} + ... + size_of<std::remove_cv_t<Fields>>());
+            return (std::size_t{0} + ... + field_size<Fields>());
         }(static_cast<decltype(tie_fields(std::declval<T&>()))*>(nullptr));
     } else {
         detail::report<error::member_not_retainable<T>>();
@@ -252,7 +293,9 @@ constexpr void describe(fingerprint& f) {
         f.add(static_cast<std::uint64_t>(member_kind::boolean));
     } else if constexpr (std::is_enum_v<T>) {
         f.add(static_cast<std::uint64_t>(member_kind::enumeration));
+        f.add(name_of<T>);
         f.add(sizeof(T));
+        f.add(std::is_signed_v<std::underlying_type_t<T>> ? 1 : 0);
     } else if constexpr (std::is_integral_v<T>) {
         f.add(static_cast<std::uint64_t>(std::is_signed_v<T> ? member_kind::signed_integer
                                                                : member_kind::unsigned_integer));
@@ -269,7 +312,7 @@ constexpr void describe(fingerprint& f) {
         f.add(static_cast<std::uint64_t>(member_kind::array));
         f.add(std::tuple_size_v<T>);
         describe<typename T::value_type>(f);
-    } else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T>) {
+    } else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T> && !has_reference_field<T>) {
         f.add(static_cast<std::uint64_t>(member_kind::aggregate));
         [&]<class... Fields>(std::tuple<Fields&...>*) {
             f.add(sizeof...(Fields));
@@ -392,7 +435,7 @@ void put(writer& w, T const& value) {
         w.put(value ? 1 : 0, 1);
     } else if constexpr (std::is_enum_v<T>) {
         put(w, static_cast<std::underlying_type_t<T>>(value));
-    } else if constexpr (std::is_integral_v<T>) {
+    } else if constexpr (std::is_integral_v<T> && sizeof(T) <= 8) {
         w.put(static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<T>>(value)), sizeof(T));
     } else if constexpr (std::is_same_v<T, float>) {
         w.put(std::bit_cast<std::uint32_t>(value), 4);
@@ -421,6 +464,7 @@ void get_machine(reader& r, Machine& m, pass const& p) {
             if (tree.slot[s] >= 0) children[static_cast<std::size_t>(tree.slot[s])] = tree.child_count[s];
         return children;
     }();
+    if (access::running(m)) r.refuse(restore_error::machine_running, r.position());  // one held in the context
     auto config = access::configuration(m);
     for (std::size_t k = 0; k < children_by_slot.size(); ++k)
         config.active[k] = static_cast<std::uint8_t>(r.get_below(1, static_cast<std::uint64_t>(children_by_slot[k])));
@@ -438,6 +482,7 @@ void get_machine(reader& r, Machine& m, pass const& p) {
     access::set_clock(m, shifted(clock, own.shift), started);
     for (std::size_t i = 0; i < armed.size(); ++i) access::armed(m)[i] = shifted(armed[i], own.shift);
     access::last_outcome(m) = last;
+    access::forget_failure(m);  // the exception of a last outcome `failed` is not saved
     access::queue(m).clear();
     access::queue(m).clear_overflow();
 }
@@ -462,11 +507,18 @@ void get(reader& r, T& target, pass const& p) {
         access::commit(target);
         target.set(pending);
     } else if constexpr (is_timer<T>) {
+        std::size_t const at = r.position();
         auto const limit = duration{static_cast<duration::rep>(r.get(8))};
         auto const started = duration{static_cast<duration::rep>(r.get(8))};
         auto const elapsed = duration{static_cast<duration::rep>(r.get(8))};
         auto const phase = static_cast<std::uint8_t>(r.get_below(1, 3));
         bool const expired = r.get_below(1, 2) != 0;
+        // Only what a timer can come to: a limit and an elapsed time not below zero, the flag only
+        // while timing (phase 2), no elapsed time while idle or pending.
+        constexpr std::uint8_t timing = 2;
+        if (limit < duration::zero() || elapsed < duration::zero() || (expired && phase != timing) ||
+            (phase != timing && elapsed != duration::zero()))
+            r.refuse(restore_error::invalid_value, at);
         if (!p.apply) return;
         access::set_timer_limit(target, limit);
         access::set_timer(target, phase, expired, shifted(started, p.shift), elapsed);
@@ -477,7 +529,7 @@ void get(reader& r, T& target, pass const& p) {
         std::underlying_type_t<T> v{};
         get(r, v, pass{true, {}, {}});
         if (p.apply) target = static_cast<T>(v);
-    } else if constexpr (std::is_integral_v<T>) {
+    } else if constexpr (std::is_integral_v<T> && sizeof(T) <= 8) {
         // Unsigned to signed is modular (C++20): every saved value comes back exactly.
         auto const v = static_cast<T>(static_cast<std::make_unsigned_t<T>>(r.get(sizeof(T))));
         if (p.apply) target = v;
@@ -523,7 +575,7 @@ restore_result restore(Machine& m, std::span<std::byte const> bytes, std::option
     if (total < n) return {restore_error::trailing_bytes, static_cast<std::size_t>(total)};
     std::size_t const checked = header_size + static_cast<std::size_t>(payload);
     if (read_le(in + checked, 4) != crc32(in, checked)) return {restore_error::corrupted, checked};
-    if (read_le(in + 12, 8) != chart_fingerprint<Machine>()) return {restore_error::other_chart, 12};
+    if (read_le(in + 12, 8) != chart_fingerprint(m)) return {restore_error::other_chart, 12};
     if (read_le(in + 20, 8) != layout_fingerprint<Machine>() || payload != machine_size<Machine>())
         return {restore_error::other_layout, 20};
 
@@ -560,7 +612,7 @@ std::size_t save(Machine const& m, std::span<std::byte> out) {
     w.put(detail::retain::format_version, 2);
     w.put(0, 2);
     w.put(detail::retain::machine_size<Machine>(), 4);
-    w.put(detail::retain::chart_fingerprint<Machine>(), 8);
+    w.put(detail::retain::chart_fingerprint(m), 8);
     w.put(detail::retain::layout_fingerprint<Machine>(), 8);
     detail::retain::put_machine(w, m);
     w.put(detail::retain::crc32(out.data(), w.position()), 4);

@@ -334,7 +334,7 @@ void add_row(diagram& m, Row const& row, int index, int source) {
             t.trigger = trigger_kind::eventless;
         } else {
             t.trigger = trigger_kind::event;
-            t.event = std::string(name_of<typename trigger::event>);
+            t.event = std::string(event_name<typename trigger::event>);  // as dispatch_by_name knows it
         }
         if constexpr (Row::guarded) t.guard = guard_label(row.guard);
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row.action)>, no_action>)
@@ -699,7 +699,7 @@ std::string to_plantuml(Chart const& chart) {
 // <state>, since <final> may have none), the chart's root is the <scxml> element's initial.
 // Transitions are children of their source, in declaration order (which is SCXML's priority
 // among transitions of one source):
-//   - `event` is the event's type name, made a valid token; eventless transitions have none;
+//   - `event` is the event's bsc::event_name, made a valid token; eventless transitions have none;
 //   - a state-scoped timeout `after(3s)` is a transition on the event "after(3s)", with a
 //     comment: SCXML has no timeouts, a platform would send that event delayed from <onentry>;
 //   - `cond` is the guard's name (bsc::named), or "guard";

@@ -71,18 +71,27 @@ struct member_address {
 #if defined(__clang__)
 #pragma clang diagnostic push
 #pragma clang diagnostic ignored "-Wundefined-var-template"
+#pragma clang diagnostic ignored "-Wundefined-internal"
 #endif
-// Never defined: only its members' addresses are taken, in constant expressions.
+// Never defined: only its members' addresses are taken, in constant expressions. T is wrapped so
+// that a T without linkage (in an anonymous namespace, or local to a function) may be named: the
+// wrapper's linkage is the variable's, and Clang refuses an undefined variable of a type without.
 template <class T>
-extern T const declared_only;
+struct declared_object {
+    T value;
+};
+template <class T>
+extern declared_object<T> const declared_only;
 
 template <auto Address>
 constexpr char const* spelled_address() {
     return __PRETTY_FUNCTION__;
 }
 
+// Identifiers may hold letters beyond ASCII, spelled in UTF-8: every byte of those is >= 0x80.
 constexpr bool is_identifier_char(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           static_cast<unsigned char>(c) >= 0x80;
 }
 
 // The last identifier of a signature: the member's name, before the closing brackets.
@@ -96,7 +105,7 @@ constexpr std::string_view last_identifier(std::string_view s) {
 
 template <class T, std::size_t I>
 constexpr std::string_view member_name_of() {
-    constexpr auto& member = std::get<I>(tie_fields(declared_only<T>));
+    constexpr auto& member = std::get<I>(tie_fields(declared_only<T>.value));
     using member_type = std::remove_cvref_t<decltype(member)>;
     return last_identifier(spelled_address<member_address<member_type>{&member}>());
 }

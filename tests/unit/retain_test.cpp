@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -171,7 +172,8 @@ TEST_CASE("retain: bytes that are not this machine's state are refused with the 
     refused_unchanged(m, patched(good, 4, 2), restore_error::unsupported_version, 4);
     refused_unchanged(m, patched(good, 6, 1), restore_error::unsupported_version, 4);
 
-    // Any single flipped bit of the header's length, the payload or the checksum.
+    // Any single flipped bit of the fingerprints, the payload or the checksum.
+    auto const before_all = bsc::save(m);
     for (std::size_t at = 12; at < n; ++at) {
         auto corrupted = good;
         corrupted[at] ^= std::byte{0x10};
@@ -179,7 +181,7 @@ TEST_CASE("retain: bytes that are not this machine's state are refused with the 
         REQUIRE_MESSAGE(result.error == restore_error::corrupted, at, ": ", bsc::to_string(result));
         CHECK(result.offset == n - 4);
     }
-    CHECK(bsc::save(m) != good);  // none was restored
+    CHECK(bsc::save(m) == before_all);  // none changed the machine
 
     // The fingerprints are checked after the checksum: a changed one is another chart or layout.
     refused_unchanged(m, patched(good, 13, static_cast<std::uint8_t>(good[13]) ^ 1u), restore_error::other_chart, 12);
@@ -214,6 +216,21 @@ TEST_CASE("retain: bytes that are not this machine's state are refused with the 
 }
 
 // The same chart over contexts that differ in one way each.
+enum class signed_level : std::int8_t { low = -1, high = 1 };
+enum class unsigned_level : std::uint8_t { low = 1, high = 2 };
+enum legacy_color { red, green };                 // no fixed underlying type: cannot be restored
+enum fixed_color : std::uint8_t { cyan, magenta };  // can
+static_assert(!bsc::detail::retain::has_fixed_underlying_type<legacy_color>);
+static_assert(bsc::detail::retain::has_fixed_underlying_type<fixed_color>);
+static_assert(bsc::detail::retain::has_fixed_underlying_type<signed_level>);
+struct with_signed_enum {
+    bsc::input<bool> start;
+    signed_level level{};
+};
+struct with_unsigned_enum {
+    bsc::input<bool> start;
+    unsigned_level level{};
+};
 struct renamed {
     bsc::input<bool> begin;  // `start` in ctx
 };
@@ -249,10 +266,11 @@ TEST_CASE("retain: the layout fingerprint tells members' names, order, types and
     using bsc::detail::retain::layout_fingerprint;
     // The same states: the chart's fingerprint is the same.
     CHECK(chart_fingerprint<layout_machine<renamed>>() == chart_fingerprint<layout_machine<original_layout>>());
-    constexpr std::array<std::uint64_t, 5> layouts = {
-        layout_fingerprint<layout_machine<original_layout>>(), layout_fingerprint<layout_machine<renamed>>(),
-        layout_fingerprint<layout_machine<reordered>>(), layout_fingerprint<layout_machine<retyped>>(),
-        layout_fingerprint<layout_machine<output_instead>>()};
+    constexpr std::array<std::uint64_t, 7> layouts = {
+        layout_fingerprint<layout_machine<original_layout>>(),  layout_fingerprint<layout_machine<renamed>>(),
+        layout_fingerprint<layout_machine<reordered>>(),        layout_fingerprint<layout_machine<retyped>>(),
+        layout_fingerprint<layout_machine<output_instead>>(),   layout_fingerprint<layout_machine<with_signed_enum>>(),
+        layout_fingerprint<layout_machine<with_unsigned_enum>>()};
     for (std::size_t i = 0; i < layouts.size(); ++i)
         for (std::size_t j = i + 1; j < layouts.size(); ++j) CHECK(layouts[i] != layouts[j]);
 
@@ -262,6 +280,89 @@ TEST_CASE("retain: the layout fingerprint tells members' names, order, types and
     CHECK(result.error == bsc::restore_error::other_layout);
     CHECK(bsc::to_string(result) ==
           "saved with another context layout (members, names, types or order differ) (byte 20)");
+}
+
+// Two versions of a chart whose state S has the same two timeout rows in another order: the
+// bytes hold each row's start, so they must not pass from one to the other.
+struct S;
+struct T;
+struct tick_ctx {
+    int ticks = 0;
+};
+inline constexpr auto tick = [](tick_ctx& c) { ++c.ticks; };
+inline constexpr auto ticking_first = bsc::make_chart<tick_ctx>(
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<T>), bsc::state<S> + bsc::after(1s) / tick,
+    bsc::state<S> + bsc::after(10s) = bsc::state<T>, bsc::state<T> + bsc::event<go> = bsc::state<S>);
+inline constexpr auto leaving_first = bsc::make_chart<tick_ctx>(
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<T>), bsc::state<S> + bsc::after(10s) = bsc::state<T>,
+    bsc::state<S> + bsc::after(1s) / tick, bsc::state<T> + bsc::event<go> = bsc::state<S>);
+
+TEST_CASE("retain: the chart fingerprint tells the timeout rows apart") {
+    bsc::machine<decltype(ticking_first), bsc::scan_policy> first{ticking_first};
+    first.step(0s);
+    first.step(5500ms);
+    bsc::machine<decltype(leaving_first), bsc::scan_policy> second{leaving_first};
+    auto const result = bsc::restore(second, bsc::save(first));
+    CHECK(result.error == bsc::restore_error::other_chart);
+    CHECK(result.offset == 12);
+}
+
+// A context that is a timer only: its bytes follow the machine's, at a known place.
+struct timer_ctx {
+    bsc::timer t{2s};
+};
+inline constexpr auto timer_chart = bsc::make_chart<timer_ctx>(
+    bsc::composite<Root>(bsc::initial<Hold>, bsc::state<Work>),
+    bsc::state<Hold> + bsc::event<go> / [](timer_ctx& c) { c.t.start(); } = bsc::state<Work>,
+    bsc::state<Work>[([](timer_ctx const& c) { return c.t.tm(); })] = bsc::state<Hold>);
+
+TEST_CASE("retain: a timer's state that no timer can come to is refused") {
+    using machine = bsc::machine<decltype(timer_chart), bsc::scan_policy>;
+    machine m{timer_chart};
+    m.step(0s);
+    auto const idle = bsc::save(m);
+    // header, one configuration byte, the clock, the flag, the outcome; then limit, start,
+    // elapsed (8 bytes each), phase, expired
+    std::size_t const timer_at = bsc::detail::retain::header_size + 1 + 8 + 1 + 1;
+    machine target{timer_chart};
+    refused_unchanged(target, patched(idle, timer_at + 7, 0x80), bsc::restore_error::invalid_value, timer_at);
+    refused_unchanged(target, patched(idle, timer_at + 25, 1), bsc::restore_error::invalid_value, timer_at);  // idle, expired
+    refused_unchanged(target, patched(idle, timer_at + 16, 5), bsc::restore_error::invalid_value, timer_at);  // idle, elapsed
+    refused_unchanged(target, patched(idle, timer_at + 24, 3), bsc::restore_error::invalid_value, timer_at + 24);
+    CHECK(bsc::restore(target, patched(idle, timer_at, 7)));  // another limit, not below zero
+    CHECK(target.context().t.limit() == std::chrono::nanoseconds{(2'000'000'000 & ~0xff) | 7});
+
+    m.dispatch(go{});
+    m.step(1s);
+    m.step(3s);  // expired, and left in the same cycle
+    CHECK(m.is<Hold>());
+    CHECK(bsc::restore(target, bsc::save(m)));
+    CHECK(bsc::save(target) == bsc::save(m));
+}
+
+// A policy under which a failure is reported, not rethrown.
+struct reporting : bsc::default_policy {
+    static constexpr bool rethrow_failures = false;
+};
+struct fail_ctx {
+    bool fail = false;
+};
+inline constexpr auto failing_chart = bsc::make_chart<fail_ctx>(
+    bsc::composite<Root>(bsc::initial<Hold>, bsc::state<Work>),
+    bsc::state<Hold> + bsc::event<go> / [](fail_ctx& c) {
+        if (c.fail) throw std::runtime_error("jammed");
+    } = bsc::state<Work>,
+    bsc::state<Work> + bsc::event<back> = bsc::state<Hold>);
+
+TEST_CASE("retain: a restored machine does not report the exception of its own earlier run") {
+    using machine = bsc::machine<decltype(failing_chart), reporting>;
+    machine healthy{failing_chart};
+    machine target{failing_chart, fail_ctx{true}};
+    CHECK(target.dispatch(go{}) == bsc::outcome::failed);
+    REQUIRE(target.last_failure() != nullptr);
+    REQUIRE(bsc::restore(target, bsc::save(healthy)));
+    CHECK(target.last_failure() == nullptr);
+    CHECK(target.last_outcome() == healthy.last_outcome());
 }
 
 // A chart whose action saves and restores its own machine.

@@ -76,6 +76,40 @@ TEST_CASE_TEMPLATE("channels and timers inside nested structs and std::arrays ar
 }
 
 namespace rob {
+// A context with a reference to the plant before its channels: the reference has no default, so
+// no shorter list of initialisers is valid and the members must be counted up to the last.
+struct plant_model {
+    int pieces = 0;
+};
+struct referencing_io {
+    int count = 0;
+    plant_model& plant;
+    bsc::input<bool> start;
+    bsc::output<bool> motor;
+};
+inline constexpr auto referencing = bsc::make_chart<referencing_io>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+    bsc::state<Idle>[([](referencing_io const& c) { return c.start.get(); })] / [](referencing_io& c) {
+        c.motor.set(true);
+        ++c.plant.pieces;
+    } = bsc::state<Busy>,
+    bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
+static_assert(bsc::detail::field_count<referencing_io>() == 4);
+}  // namespace rob
+
+TEST_CASE_TEMPLATE("channels after a reference member of the context are latched and published", Backend, compiled,
+                   table) {
+    rob::plant_model plant;
+    bsc_test::machine_t<Backend, decltype(rob::referencing), bsc::scan_policy> m{rob::referencing,
+                                                                                 rob::referencing_io{0, plant, {}, {}}};
+    m.context().start.set(true);
+    m.step(0ms);
+    CHECK(m.template is<rob::Busy>());
+    CHECK(m.context().motor.get());
+    CHECK(plant.pieces == 1);
+}
+
+namespace rob {
 // ---- reentrant dispatch ---------------------------------------------------------------------
 struct poke {};
 struct Other;

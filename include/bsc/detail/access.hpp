@@ -77,6 +77,13 @@ struct access {
     static constexpr bool running(M const& m) {
         return driver_of(m).running_;
     }
+    // Forgets the exception of the last failed run (a restored machine's last run was not its own).
+    template <class M>
+    static constexpr void forget_failure(M& m) {
+        auto& d = driver_of(m);
+        d.failure_.reset();
+        if constexpr (requires { d.reported_.reset(); }) d.reported_.reset();
+    }
     template <class M>
     static constexpr auto& armed(M& m) {
         return driver_of(m).armed_;
@@ -92,6 +99,10 @@ struct access {
     template <class M>
     static constexpr auto longest_timeout(M const& m) {
         return driver_of(m).longest_timeout();
+    }
+    template <class M>
+    static constexpr auto row_delays(M const& m) {
+        return driver_of(m).row_delays();
     }
     template <class M>
     static constexpr auto canonical_configuration(M const& m) {

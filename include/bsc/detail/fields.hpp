@@ -1,6 +1,7 @@
 #pragma once
 // Field access for plain aggregates, without macros or reflection: the number of fields is
-// the largest N for which T{any, ..., any} (N times) compiles, and structured bindings give
+// the largest N for which T{any, ..., any} (N times) compiles (any converts to a value or, for a
+// reference member, to an lvalue), and structured bindings give
 // references to them (detail/field_bindings.hpp). Used to find the channels and timers of a
 // context, at any depth of nested aggregates and std::arrays. Supports aggregates of up to
 // max_fields (128) fields without base classes or C arrays (use std::array instead).
@@ -16,25 +17,64 @@
 
 namespace bsc::detail {
 
+// Converts to any member type: a value (preferred: the probe is an rvalue) or, for a member that
+// is a reference, an lvalue of the referenced type.
 struct any_field {
     template <class T>
-    constexpr operator T() const;  // only used in unevaluated contexts
+    constexpr operator T() &&;  // only used in unevaluated contexts
+    template <class T>
+    constexpr operator T&() const&;
+};
+// Converts to values only: it cannot initialise a reference member.
+struct any_value_field {
+    template <class T>
+    constexpr operator T() const;
 };
 
-template <class T, std::size_t... I>
+template <class T, class Probe, std::size_t... I>
 constexpr bool brace_constructible(std::index_sequence<I...>) {
-    return requires { T{(void(I), any_field{})...}; };
+    return requires { T{(void(I), Probe{})...}; };
 }
 
+// The members initialised one by one: exact for an aggregate that is default-constructible (any
+// shorter list of initialisers is valid too).
 template <class T, std::size_t N = 0>
-constexpr std::size_t field_count() {
+constexpr std::size_t leading_field_count() {
     if constexpr (N > max_fields)
         return N;
-    else if constexpr (brace_constructible<T>(std::make_index_sequence<N + 1>{}))
-        return field_count<T, N + 1>();
+    else if constexpr (brace_constructible<T, any_field>(std::make_index_sequence<N + 1>{}))
+        return leading_field_count<T, N + 1>();
     else
         return N;
 }
+
+// The largest count in [From, To] that initialises every member: an aggregate with a reference
+// member and no default initialiser for it cannot be initialised by a shorter list, so the count
+// is searched up to its size (each member takes at least a byte).
+template <class T, std::size_t From, std::size_t To>
+constexpr std::size_t largest_field_count(std::size_t found) {
+    if constexpr (From > To)
+        return found;
+    else
+        return largest_field_count<T, From + 1, To>(
+            brace_constructible<T, any_field>(std::make_index_sequence<From>{}) ? From : found);
+}
+
+template <class T>
+constexpr std::size_t field_count() {
+    constexpr std::size_t leading = leading_field_count<T>();
+    if constexpr (leading > max_fields || std::is_default_constructible_v<T>)
+        return leading;
+    else
+        return largest_field_count<T, leading + 1, (sizeof(T) < max_fields ? sizeof(T) : max_fields)>(leading);
+}
+
+/// Whether an aggregate has a member that is a non-const lvalue reference (a const one binds a
+/// value, and shows as a const field): the retentive state refuses both, since what lies behind
+/// a reference is not the machine's.
+template <class T>
+inline constexpr bool has_reference_field =
+    !brace_constructible<T, any_value_field>(std::make_index_sequence<field_count<T>()>{});
 
 // A tuple of references to the fields of an aggregate.
 template <class T>

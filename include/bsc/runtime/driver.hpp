@@ -465,6 +465,20 @@ private:
         return longest;
     }
 
+    // Each row's delay: a timeout row's, zero for the others.
+    constexpr std::array<duration, static_cast<std::size_t>(model::R)> row_delays() const {
+        std::array<duration, static_cast<std::size_t>(model::R)> delays{};
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (
+                [&] {
+                    if constexpr (layout::is_timeout_row(static_cast<int>(I)))
+                        delays[I] = row<static_cast<int>(I)>().trigger_value.delay;
+                }(),
+                ...);
+        }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
+        return delays;
+    }
+
     friend struct access;
 
 protected:
