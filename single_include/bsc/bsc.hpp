@@ -5277,15 +5277,8 @@ private:
     // The longest delay of any timeout row: past it, a state's age no longer matters.
     constexpr duration longest_timeout() const {
         duration longest{};
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (
-                [&] {
-                    if constexpr (layout::is_timeout_row(static_cast<int>(I)))
-                        if (row<static_cast<int>(I)>().trigger_value.delay > longest)
-                            longest = row<static_cast<int>(I)>().trigger_value.delay;
-                }(),
-                ...);
-        }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
+        for (duration delay : row_delays())
+            if (delay > longest) longest = delay;
         return longest;
     }
 
