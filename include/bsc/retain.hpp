@@ -178,9 +178,7 @@ template <class Machine>
 constexpr std::uint64_t chart_fingerprint() {
     using model = model_of<Machine>;
     using layout = chart_layout<model>;
-    constexpr auto names = []<class... Tags>(type_list<Tags...>) {
-        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename model::tags{});
+    constexpr auto const& names = state_names_of<model>;
     fingerprint f;
     f.add(static_cast<std::uint64_t>(model::N));
     for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s) {
@@ -244,7 +242,7 @@ constexpr std::size_t size_of() {
     } else if constexpr (is_machine<T>) {
         return machine_size<T>();
     } else if constexpr (is_channel<T>) {
-        return 2 * size_of<std::remove_cvref_t<decltype(std::declval<T const&>().get())>>();
+        return 2 * size_of<channel_value<T>>();
     } else if constexpr (is_timer<T>) {
         return 3 * 8 + 2;
     } else if constexpr (std::is_same_v<T, bool>) {
@@ -282,7 +280,7 @@ constexpr void describe(fingerprint& f) {
         f.add(chart_fingerprint<T>());
         f.add(layout_fingerprint<T>());
     } else if constexpr (is_channel<T>) {
-        using V = std::remove_cvref_t<decltype(std::declval<T const&>().get())>;
+        using V = channel_value<T>;
         f.add(static_cast<std::uint64_t>(std::is_same_v<T, input<V>>    ? member_kind::input
                                          : std::is_same_v<T, output<V>> ? member_kind::output
                                                                         : member_kind::inout));
@@ -343,6 +341,13 @@ private:
     std::size_t pos_ = 0;
 };
 
+// A little-endian number of `bytes` (at most 8) bytes.
+inline std::uint64_t read_le(std::byte const* p, std::size_t bytes) {
+    std::uint64_t v = 0;
+    for (std::size_t i = 0; i < bytes; ++i) v |= static_cast<std::uint64_t>(p[i]) << (8 * i);
+    return v;
+}
+
 // Reads what writer wrote; the first value out of range is remembered with its position.
 class reader {
 public:
@@ -352,8 +357,7 @@ public:
             refuse(restore_error::truncated, end_);
             return 0;
         }
-        std::uint64_t v = 0;
-        for (std::size_t i = 0; i < bytes; ++i) v |= static_cast<std::uint64_t>(in_[pos_ + i]) << (8 * i);
+        std::uint64_t const v = read_le(in_ + pos_, bytes);
         pos_ += bytes;
         return v;
     }
@@ -494,7 +498,7 @@ void get(reader& r, T& target, pass const& p) {
     } else if constexpr (is_machine<T>) {
         get_machine(r, target, p);
     } else if constexpr (is_channel<T>) {
-        using V = std::remove_cvref_t<decltype(target.get())>;
+        using V = channel_value<T>;
         // Read into copies, then store both through the channel's own cycle boundary.
         V pending = target.pending();
         V current = target.get();
@@ -548,12 +552,6 @@ void get(reader& r, T& target, pass const& p) {
     } else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T>) {
         for_each_field(target, [&](auto& field) { get(r, field, p); });
     }
-}
-
-inline std::uint64_t read_le(std::byte const* p, std::size_t bytes) {
-    std::uint64_t v = 0;
-    for (std::size_t i = 0; i < bytes; ++i) v |= static_cast<std::uint64_t>(p[i]) << (8 * i);
-    return v;
 }
 
 

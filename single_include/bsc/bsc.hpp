@@ -572,7 +572,69 @@ inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = tr
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 
+// begin include/bsc/detail/type_name.hpp
+// Compile-time type names without RTTI, read from the compiler's function signature.
+
+#include <string_view>
+
+namespace bsc::detail {
+
+template <class T>
+constexpr std::string_view signature() {
+    return __PRETTY_FUNCTION__;
+}
+
+// GCC: "... [with T = ns::Name; std::string_view = ...]", Clang: "... [T = ns::Name]".
+constexpr std::string_view type_from_signature(std::string_view sig) {
+    constexpr std::string_view key = "T = ";
+    const auto start = sig.find(key) + key.size();
+    auto end = start;
+    int depth = 0;
+    for (; end < sig.size(); ++end) {
+        const char c = sig[end];
+        if (c == '<' || c == '(' || c == '[')
+            ++depth;
+        if (c == '>' || c == ')')
+            --depth;
+        if (depth < 0 || (depth == 0 && (c == ';' || c == ']')))
+            break;
+        if (c == ']')
+            --depth;
+    }
+    return sig.substr(start, end - start);
+}
+
+// "ns::outer::Name<ns::X>" -> "Name<ns::X>": the last scope at bracket depth zero.
+constexpr std::string_view unqualified(std::string_view name) {
+    std::size_t cut = 0;
+    int depth = 0;
+    for (std::size_t i = 0; i + 1 < name.size(); ++i) {
+        if (name[i] == '<')
+            ++depth;
+        if (name[i] == '>')
+            --depth;
+        if (depth == 0 && name[i] == ':' && name[i + 1] == ':')
+            cut = i + 2;
+    }
+    return name.substr(cut);
+}
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// The fully qualified name of a type, e.g. "mcs::Tape", computed at compile time.
+template <class T>
+inline constexpr std::string_view qualified_name = detail::type_from_signature(detail::signature<T>());
+
+/// The name of a type without its namespaces, e.g. "Tape"; used for states in traces.
+template <class T>
+inline constexpr std::string_view name_of = detail::unqualified(qualified_name<T>);
+
+}  // namespace bsc
+// end include/bsc/detail/type_name.hpp
 // begin include/bsc/dsl/row.hpp
 // The chart's second table: transition rows `source + trigger [guard] / action = target`,
 // and entry/exit rows `state<S> + on_entry / action`.
@@ -1649,6 +1711,13 @@ struct chart_model {
     static constexpr int trigger_of = index_of<E, events>;
 };
 
+// The unqualified names of a model's states, by index (0: the implicit top). A variable of
+// its own, so that only what shows names (active_states, the tables, reports) instantiates it.
+template <class Model>
+inline constexpr auto state_names_of = []<class... Tags>(type_list<Tags...>) {
+    return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
+}(typename Model::tags{});
+
 }  // namespace bsc::detail
 // end include/bsc/model/chart_model.hpp
 
@@ -1978,67 +2047,6 @@ constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) 
 #include <cstddef>
 #include <string_view>
 
-// begin include/bsc/detail/type_name.hpp
-// Compile-time type names without RTTI, read from the compiler's function signature.
-
-#include <string_view>
-
-namespace bsc::detail {
-
-template <class T>
-constexpr std::string_view signature() {
-    return __PRETTY_FUNCTION__;
-}
-
-// GCC: "... [with T = ns::Name; std::string_view = ...]", Clang: "... [T = ns::Name]".
-constexpr std::string_view type_from_signature(std::string_view sig) {
-    constexpr std::string_view key = "T = ";
-    const auto start = sig.find(key) + key.size();
-    auto end = start;
-    int depth = 0;
-    for (; end < sig.size(); ++end) {
-        const char c = sig[end];
-        if (c == '<' || c == '(' || c == '[')
-            ++depth;
-        if (c == '>' || c == ')')
-            --depth;
-        if (depth < 0 || (depth == 0 && (c == ';' || c == ']')))
-            break;
-        if (c == ']')
-            --depth;
-    }
-    return sig.substr(start, end - start);
-}
-
-// "ns::outer::Name<ns::X>" -> "Name<ns::X>": the last scope at bracket depth zero.
-constexpr std::string_view unqualified(std::string_view name) {
-    std::size_t cut = 0;
-    int depth = 0;
-    for (std::size_t i = 0; i + 1 < name.size(); ++i) {
-        if (name[i] == '<')
-            ++depth;
-        if (name[i] == '>')
-            --depth;
-        if (depth == 0 && name[i] == ':' && name[i + 1] == ':')
-            cut = i + 2;
-    }
-    return name.substr(cut);
-}
-
-}  // namespace bsc::detail
-
-namespace bsc {
-
-/// The fully qualified name of a type, e.g. "mcs::Tape", computed at compile time.
-template <class T>
-inline constexpr std::string_view qualified_name = detail::type_from_signature(detail::signature<T>());
-
-/// The name of a type without its namespaces, e.g. "Tape"; used for states in traces.
-template <class T>
-inline constexpr std::string_view name_of = detail::unqualified(qualified_name<T>);
-
-}  // namespace bsc
-// end include/bsc/detail/type_name.hpp
 // begin include/bsc/dsl/named.hpp
 // Names for guards and actions, shown by the diagram exports (<bsc/export.hpp>):
 //
@@ -3723,19 +3731,14 @@ struct access {
     static constexpr auto clock(M const& m) {
         return driver_of(m).clock_;
     }
-    // Sets a machine's clock as if a cycle had run at `now`.
-    template <class M>
-    static constexpr void set_clock(M& m, duration now) {
-        driver_of(m).clock_ = now;
-        driver_of(m).clock_started_ = true;
-    }
-    // Whether a cycle has run (the clock is the caller's time), and setting both together.
+    // Whether a cycle has run (the clock is the caller's time).
     template <class M>
     static constexpr bool clock_started(M const& m) {
         return driver_of(m).clock_started_;
     }
+    // Sets a machine's clock as if a cycle had run at `now` (or, started = false, as if none had).
     template <class M>
-    static constexpr void set_clock(M& m, duration now, bool started) {
+    static constexpr void set_clock(M& m, duration now, bool started = true) {
         driver_of(m).clock_ = now;
         driver_of(m).clock_started_ = started;
     }
@@ -3951,6 +3954,7 @@ public:
 // at once to every later guard.
 
 #include <type_traits>
+#include <utility>
 
 
 namespace bsc::detail {
@@ -4037,6 +4041,12 @@ template <class T>
 inline constexpr bool is_channel = std::is_base_of_v<detail::channel_base, T>;
 
 }  // namespace bsc
+
+namespace bsc::detail {
+// The type of a channel's value.
+template <class Channel>
+using channel_value = std::remove_cvref_t<decltype(std::declval<Channel const&>().get())>;
+}  // namespace bsc::detail
 // end include/bsc/data/channel.hpp
 // begin include/bsc/data/timer.hpp
 // BSC timers (the Basic Statechart paper [BSC] in docs/references.md, section III.C): data in
@@ -5028,7 +5038,7 @@ public:
         bsc::state_names<state_count> names;
         auto const active = active_flags();
         for (std::size_t s = 1; s < state_count; ++s)
-            if (active[s]) names.push_back(state_names_by_index[s]);
+            if (active[s]) names.push_back(state_names_of<model>[s]);
         return names;
     }
 
@@ -5105,10 +5115,6 @@ private:
 
     constexpr Backend& backend() { return static_cast<Backend&>(*this); }
     constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
-
-    static constexpr auto state_names_by_index = []<class... Tags>(type_list<Tags...>) {
-        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename model::tags{});
 
     template <class E>
     constexpr void microstep_on(E const& e) {
@@ -6271,9 +6277,7 @@ public:
         }(std::make_index_sequence<transition_count>{});
 
     /// The unqualified names of the states, by row (row 0, the top, has an internal name).
-    static constexpr auto names = []<class... Tags>(bsc::detail::type_list<Tags...>) {
-        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename model::tags{});
+    static constexpr auto const& names = bsc::detail::state_names_of<model>;
 
     /// The transitions leaving each state, as a list threaded through the transition table in
     /// declaration order: first_out[s] is the first, next_out[t] the one after t (-1: no more).

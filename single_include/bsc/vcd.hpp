@@ -183,22 +183,22 @@ constexpr unsigned width_of() {
         return 8 * sizeof(T);
 }
 
-// Whether a context member is recorded: a channel or plain variable of a scalar type, a timer,
-// or an aggregate or std::array holding one.
+// What the recorder shows: a channel of a scalar type, a timer, a plain scalar variable. The
+// context is searched for them as the machine searches it for channels (context_data.hpp).
 template <class T>
-constexpr bool recorded() {
+constexpr bool is_recorded_channel() {
     if constexpr (is_channel<T>)
-        return is_scalar_variable<std::remove_cvref_t<decltype(std::declval<T const&>().get())>>;
-    else if constexpr (is_timer<T> || is_scalar_variable<T>)
-        return true;
-    else if constexpr (is_std_array<T>)
-        return recorded<typename T::value_type>();
-    else if constexpr (is_visited_aggregate<T>)
-        return []<class... Fields>(std::tuple<Fields&...>*) {
-            return (recorded<std::remove_cv_t<Fields>>() || ...);
-        }(static_cast<decltype(tie_fields(std::declval<T&>()))*>(nullptr));
+        return is_scalar_variable<channel_value<T>>;
     else
         return false;
+}
+struct recorded_points {
+    template <class T>
+    static constexpr bool is_point = is_recorded_channel<T>() || is_timer<T> || is_scalar_variable<T>;
+};
+template <class T>
+constexpr bool recorded() {
+    return holds_points<recorded_points, T>();
 }
 
 // Walks a context's recorded members, calling the visitor's scope(name), upscope() and
@@ -208,7 +208,7 @@ void visit_member(T const& member, std::string_view name, Visitor& v) {
     if constexpr (!recorded<T>()) {
         return;
     } else if constexpr (is_channel<T>) {
-        using V = std::remove_cvref_t<decltype(member.get())>;
+        using V = channel_value<T>;
         v.var(kind_of<V>(), width_of<V>(), name, scalar_value(member.get()));
     } else if constexpr (is_timer<T>) {
         v.scope(name);
@@ -349,9 +349,7 @@ private:
     static constexpr auto const& tree = model::tree;
     static constexpr int root = 1;
     static constexpr auto state_count = static_cast<std::size_t>(model::N);
-    static constexpr auto state_names = []<class... Tags>(detail::type_list<Tags...>) {
-        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename model::tags{});
+    static constexpr auto const& state_names = detail::state_names_of<model>;
 
     struct variable {
         detail::vcd::var_kind kind;

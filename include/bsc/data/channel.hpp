@@ -5,6 +5,7 @@
 // at once to every later guard.
 
 #include <type_traits>
+#include <utility>
 
 #include <bsc/detail/access.hpp>
 
@@ -92,3 +93,9 @@ template <class T>
 inline constexpr bool is_channel = std::is_base_of_v<detail::channel_base, T>;
 
 }  // namespace bsc
+
+namespace bsc::detail {
+// The type of a channel's value.
+template <class Channel>
+using channel_value = std::remove_cvref_t<decltype(std::declval<Channel const&>().get())>;
+}  // namespace bsc::detail

@@ -56,19 +56,14 @@ struct access {
     static constexpr auto clock(M const& m) {
         return driver_of(m).clock_;
     }
-    // Sets a machine's clock as if a cycle had run at `now`.
-    template <class M>
-    static constexpr void set_clock(M& m, duration now) {
-        driver_of(m).clock_ = now;
-        driver_of(m).clock_started_ = true;
-    }
-    // Whether a cycle has run (the clock is the caller's time), and setting both together.
+    // Whether a cycle has run (the clock is the caller's time).
     template <class M>
     static constexpr bool clock_started(M const& m) {
         return driver_of(m).clock_started_;
     }
+    // Sets a machine's clock as if a cycle had run at `now` (or, started = false, as if none had).
     template <class M>
-    static constexpr void set_clock(M& m, duration now, bool started) {
+    static constexpr void set_clock(M& m, duration now, bool started = true) {
         driver_of(m).clock_ = now;
         driver_of(m).clock_started_ = started;
     }

@@ -5,8 +5,10 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 #include <bsc/detail/meta.hpp>
+#include <bsc/detail/type_name.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/dsl/tree.hpp>
 
@@ -264,5 +266,12 @@ struct chart_model {
     template <class E>
     static constexpr int trigger_of = index_of<E, events>;
 };
+
+// The unqualified names of a model's states, by index (0: the implicit top). A variable of
+// its own, so that only what shows names (active_states, the tables, reports) instantiates it.
+template <class Model>
+inline constexpr auto state_names_of = []<class... Tags>(type_list<Tags...>) {
+    return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
+}(typename Model::tags{});
 
 }  // namespace bsc::detail

@@ -204,7 +204,7 @@ public:
         bsc::state_names<state_count> names;
         auto const active = active_flags();
         for (std::size_t s = 1; s < state_count; ++s)
-            if (active[s]) names.push_back(state_names_by_index[s]);
+            if (active[s]) names.push_back(state_names_of<model>[s]);
         return names;
     }
 
@@ -281,10 +281,6 @@ private:
 
     constexpr Backend& backend() { return static_cast<Backend&>(*this); }
     constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
-
-    static constexpr auto state_names_by_index = []<class... Tags>(type_list<Tags...>) {
-        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename model::tags{});
 
     template <class E>
     constexpr void microstep_on(E const& e) {

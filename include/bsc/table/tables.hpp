@@ -272,9 +272,7 @@ public:
         }(std::make_index_sequence<transition_count>{});
 
     /// The unqualified names of the states, by row (row 0, the top, has an internal name).
-    static constexpr auto names = []<class... Tags>(bsc::detail::type_list<Tags...>) {
-        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename model::tags{});
+    static constexpr auto const& names = bsc::detail::state_names_of<model>;
 
     /// The transitions leaving each state, as a list threaded through the transition table in
     /// declaration order: first_out[s] is the first, next_out[t] the one after t (-1: no more).

@@ -153,9 +153,6 @@ constexpr auto slot_bits() {
     return bits;
 }
 
-template <class C>
-using channel_value = std::remove_cvref_t<decltype(std::declval<C const&>().get())>;
-
 template <class T>
 constexpr std::size_t encoded_bits();
 

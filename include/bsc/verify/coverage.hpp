@@ -91,9 +91,7 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired, Ge
         for (std::size_t k = 0; k < active.size(); ++k) seen[k] = seen[k] || active[k];
     }
     coverage_report report;
-    constexpr auto names = []<class... Tags>(bsc::detail::type_list<Tags...>) {
-        return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
-    }(typename model::tags{});
+    constexpr auto const& names = bsc::detail::state_names_of<model>;
     for (std::size_t k = 1; k < seen.size(); ++k)
         if (!seen[k]) report.dead_states.emplace_back(names[k]);
     auto const rows = row_names<chart>();
