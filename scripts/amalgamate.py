@@ -5,7 +5,8 @@ Starting from include/bsc/bsc.hpp, every include that resolves to a file under
 include/ is inlined in place, depth-first and only the first time it is seen;
 all other includes are kept as they are. The opt-in parts, the explorer (include/bsc/verify.hpp), the diagram exports
 (include/bsc/export.hpp), the logger (include/bsc/logger.hpp), the retentive state
-(include/bsc/retain.hpp) and the VCD recorder (include/bsc/vcd.hpp), become files of
+(include/bsc/retain.hpp), the VCD recorder (include/bsc/vcd.hpp) and the distributed
+systems (include/bsc/net.hpp, and include/bsc/mqtt.hpp over MQTT), become files of
 their own that include the first and add only what it lacks; a header two of them
 share is guarded by a macro, so that they can be included together. The output is
 deterministic so that it can be checked in and verified with --check.
@@ -26,6 +27,8 @@ EXPORT_ENTRY = INCLUDE_DIR / "bsc" / "export.hpp"
 LOGGER_ENTRY = INCLUDE_DIR / "bsc" / "logger.hpp"
 RETAIN_ENTRY = INCLUDE_DIR / "bsc" / "retain.hpp"
 VCD_ENTRY = INCLUDE_DIR / "bsc" / "vcd.hpp"
+NET_ENTRY = INCLUDE_DIR / "bsc" / "net.hpp"
+MQTT_ENTRY = INCLUDE_DIR / "bsc" / "mqtt.hpp"
 DEFAULT_OUTPUT = ROOT / "single_include" / "bsc" / "bsc.hpp"
 COMMAND = "python3 scripts/amalgamate.py"
 
@@ -75,6 +78,22 @@ VCD_HEADER = f"""\
 #pragma once
 // bsc::vcd_recorder - waveforms of a machine's scans, single-header distribution (needs bsc.hpp beside it).
 // Generated from include/bsc/vcd.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+NET_HEADER = f"""\
+#pragma once
+// bsc::net - a system deployed across nodes, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/net.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+MQTT_HEADER = f"""\
+#pragma once
+// bsc::net over MQTT, single-header distribution (needs bsc.hpp beside it, and libmosquitto).
+// Generated from include/bsc/mqtt.hpp by `{COMMAND}`.
 // Do not edit: change the headers under include/ and regenerate.
 #include "bsc.hpp"
 """
@@ -130,7 +149,8 @@ def inline(path: Path, seen: set[Path], out: list[str], guarded: set[Path] = fro
 
 PARTS = [(VERIFY_ENTRY, VERIFY_HEADER, "verify.hpp"), (EXPORT_ENTRY, EXPORT_HEADER, "export.hpp"),
          (LOGGER_ENTRY, LOGGER_HEADER, "logger.hpp"), (RETAIN_ENTRY, RETAIN_HEADER, "retain.hpp"),
-         (VCD_ENTRY, VCD_HEADER, "vcd.hpp")]
+         (VCD_ENTRY, VCD_HEADER, "vcd.hpp"), (NET_ENTRY, NET_HEADER, "net.hpp"),
+         (MQTT_ENTRY, MQTT_HEADER, "mqtt.hpp")]
 
 
 def amalgamate() -> list[tuple[str, str]]:

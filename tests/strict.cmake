@@ -7,6 +7,9 @@ set(BSC_STRICT_WARNING_FLAGS
 
 file(GLOB_RECURSE bsc_strict_headers CONFIGURE_DEPENDS RELATIVE ${PROJECT_SOURCE_DIR}/include
   ${PROJECT_SOURCE_DIR}/include/bsc/*.hpp)
+if(NOT TARGET bsc::mqtt)  # they include <mosquitto.h>
+  list(REMOVE_ITEM bsc_strict_headers bsc/mqtt.hpp bsc/net/mosquitto_transport.hpp)
+endif()
 list(SORT bsc_strict_headers)
 set(bsc_strict_includes "")
 foreach(header IN LISTS bsc_strict_headers)
@@ -29,6 +32,9 @@ add_library(bsc_strict_warnings OBJECT
   strict/no_exceptions.cpp)
 set_source_files_properties(strict/no_exceptions.cpp PROPERTIES COMPILE_OPTIONS -fno-exceptions)
 target_link_libraries(bsc_strict_warnings PRIVATE bsc::bsc)
+if(TARGET bsc::mqtt)
+  target_link_libraries(bsc_strict_warnings PRIVATE bsc::mqtt)
+endif()
 target_include_directories(bsc_strict_warnings PRIVATE ${PROJECT_SOURCE_DIR}/examples)
 target_compile_options(bsc_strict_warnings PRIVATE ${BSC_STRICT_WARNING_FLAGS})
 # GCC 12's false -Wrestrict on inlined std::string concatenation (see cmake/bscWarnings.cmake).

@@ -38,7 +38,7 @@
 //     urgent chan ready_for_feed, a            feed_belt.table_ready; the rendezvous is a four-phase
 //     rendezvous)                              handshake of levels (ready up, done up, ready down,
 //                                              done down)
-//   the actor diagram                        system_of's list of links, grouped by actor in the
+//   the actor diagram                        cell_system's list of links, grouped by actor in the
 //                                              paper's order (feed belt, table, robot, press,
 //                                              deposit belt), then the plant-to-plant signals
 //   controllers have higher priority than    bsc::order: the five controllers step first, then the
@@ -103,31 +103,37 @@ struct basic_actors {
 
 using Actors = basic_actors<true>;
 
-/// The actor diagram: the step order (controllers first) and every signal, who sends what to whom.
-template <class A>
-using system_of = bsc::system<
-    A,
-    bsc::order<&A::feed_belt, &A::table, &A::robot, &A::press, &A::deposit_belt, &A::env_feed_belt,
-               &A::env_table, &A::env_robot, &A::env_press, &A::env_deposit_belt>,
+/// The actor diagram: every signal, who sends what to whom, for actors `A` stepped in `Order`,
+/// with the `Extra` links of a larger system (supervised.hpp).
+///
+/// What a consumer reads when the cell is distributed and a publisher falls silent (in one
+/// process nothing is ever stale and these policies change nothing): a motor command reads
+/// "stop" (bsc::fail_safe), as a drive whose controller is lost stops; a magnet keeps its last
+/// command (letting go would drop the brick); sensors and handshakes keep their last level
+/// (bsc::hold_last), so a peer waits rather than misreads; the plant models' couplings, which
+/// are physics (a brick handed from one machine to the next), are bsc::lossless.
+template <class A, class Order, class... Extra>
+using cell_system = bsc::system<
+    A, Order,
     // Feed belt actor
     bsc::link<&A::env_feed_belt, &feed_belt_io::sensor, &A::feed_belt, &feed_belt_ctl::sensor>,
-    bsc::link<&A::feed_belt, &feed_belt_ctl::motor, &A::env_feed_belt, &feed_belt_io::motor>,
+    bsc::link<&A::feed_belt, &feed_belt_ctl::motor, &A::env_feed_belt, &feed_belt_io::motor, bsc::fail_safe<false>>,
     bsc::link<&A::table, &table_ctl::ready_for_feed, &A::feed_belt, &feed_belt_ctl::table_ready>,
     bsc::link<&A::feed_belt, &feed_belt_ctl::fed, &A::table, &table_ctl::fed>,
     // Table actor
     bsc::link<&A::env_table, &table_io::height_sensor, &A::table, &table_ctl::height>,
     bsc::link<&A::env_table, &table_io::angle_sensor, &A::table, &table_ctl::angle>,
-    bsc::link<&A::table, &table_ctl::lift, &A::env_table, &table_io::lift>,
-    bsc::link<&A::table, &table_ctl::turn, &A::env_table, &table_io::turn>,
+    bsc::link<&A::table, &table_ctl::lift, &A::env_table, &table_io::lift, bsc::fail_safe<stop>>,
+    bsc::link<&A::table, &table_ctl::turn, &A::env_table, &table_io::turn, bsc::fail_safe<stop>>,
     bsc::link<&A::table, &table_ctl::ready_for_unload, &A::robot, &robot_ctl::table_ready>,
     bsc::link<&A::robot, &robot_ctl::taken, &A::table, &table_ctl::taken>,
     // Robot actor
     bsc::link<&A::env_robot, &robot_io::angle_sensor, &A::robot, &robot_ctl::angle>,
     bsc::link<&A::env_robot, &robot_io::arm1_sensor, &A::robot, &robot_ctl::ext1>,
     bsc::link<&A::env_robot, &robot_io::arm2_sensor, &A::robot, &robot_ctl::ext2>,
-    bsc::link<&A::robot, &robot_ctl::turn, &A::env_robot, &robot_io::turn>,
-    bsc::link<&A::robot, &robot_ctl::arm1, &A::env_robot, &robot_io::arm1>,
-    bsc::link<&A::robot, &robot_ctl::arm2, &A::env_robot, &robot_io::arm2>,
+    bsc::link<&A::robot, &robot_ctl::turn, &A::env_robot, &robot_io::turn, bsc::fail_safe<stop>>,
+    bsc::link<&A::robot, &robot_ctl::arm1, &A::env_robot, &robot_io::arm1, bsc::fail_safe<stop>>,
+    bsc::link<&A::robot, &robot_ctl::arm2, &A::env_robot, &robot_io::arm2, bsc::fail_safe<stop>>,
     bsc::link<&A::robot, &robot_ctl::magnet1, &A::env_robot, &robot_io::magnet1>,
     bsc::link<&A::robot, &robot_ctl::magnet2, &A::env_robot, &robot_io::magnet2>,
     bsc::link<&A::press, &press_ctl::load_ready, &A::robot, &robot_ctl::press_load_ready>,
@@ -140,20 +146,27 @@ using system_of = bsc::system<
     bsc::link<&A::env_press, &press_io::plate_sensor, &A::press, &press_ctl::level>,
     bsc::link<&A::env_robot, &robot_io::arm1_sensor, &A::press, &press_ctl::arm1_ext>,
     bsc::link<&A::env_robot, &robot_io::arm2_sensor, &A::press, &press_ctl::arm2_ext>,
-    bsc::link<&A::press, &press_ctl::plate, &A::env_press, &press_io::plate>,
+    bsc::link<&A::press, &press_ctl::plate, &A::env_press, &press_io::plate, bsc::fail_safe<stop>>,
     // Deposit belt actor
-    bsc::link<&A::deposit_belt, &deposit_belt_ctl::motor, &A::env_deposit_belt, &deposit_belt_io::motor>,
+    bsc::link<&A::deposit_belt, &deposit_belt_ctl::motor, &A::env_deposit_belt, &deposit_belt_io::motor, bsc::fail_safe<false>>,
     // Plant to plant: the bricks, and where the robot's arms are
-    bsc::link<&A::env_feed_belt, &feed_belt_io::to_table, &A::env_table, &table_io::from_belt>,
-    bsc::link<&A::env_robot, &robot_io::arm1_over_table, &A::env_table, &table_io::arm1_over>,
-    bsc::link<&A::env_robot, &robot_io::arm1_grips, &A::env_table, &table_io::arm1_grips>,
-    bsc::link<&A::env_table, &table_io::to_arm1, &A::env_robot, &robot_io::from_table>,
-    bsc::link<&A::env_robot, &robot_io::arm1_in_press, &A::env_press, &press_io::arm1_in>,
-    bsc::link<&A::env_robot, &robot_io::arm2_in_press, &A::env_press, &press_io::arm2_in>,
-    bsc::link<&A::env_robot, &robot_io::to_press, &A::env_press, &press_io::from_arm1>,
-    bsc::link<&A::env_robot, &robot_io::arm2_grips, &A::env_press, &press_io::arm2_grips>,
-    bsc::link<&A::env_press, &press_io::to_arm2, &A::env_robot, &robot_io::from_press>,
-    bsc::link<&A::env_robot, &robot_io::to_belt, &A::env_deposit_belt, &deposit_belt_io::from_arm2>>;
+    bsc::link<&A::env_feed_belt, &feed_belt_io::to_table, &A::env_table, &table_io::from_belt, bsc::lossless>,
+    bsc::link<&A::env_robot, &robot_io::arm1_over_table, &A::env_table, &table_io::arm1_over, bsc::lossless>,
+    bsc::link<&A::env_robot, &robot_io::arm1_grips, &A::env_table, &table_io::arm1_grips, bsc::lossless>,
+    bsc::link<&A::env_table, &table_io::to_arm1, &A::env_robot, &robot_io::from_table, bsc::lossless>,
+    bsc::link<&A::env_robot, &robot_io::arm1_in_press, &A::env_press, &press_io::arm1_in, bsc::lossless>,
+    bsc::link<&A::env_robot, &robot_io::arm2_in_press, &A::env_press, &press_io::arm2_in, bsc::lossless>,
+    bsc::link<&A::env_robot, &robot_io::to_press, &A::env_press, &press_io::from_arm1, bsc::lossless>,
+    bsc::link<&A::env_robot, &robot_io::arm2_grips, &A::env_press, &press_io::arm2_grips, bsc::lossless>,
+    bsc::link<&A::env_press, &press_io::to_arm2, &A::env_robot, &robot_io::from_press, bsc::lossless>,
+    bsc::link<&A::env_robot, &robot_io::to_belt, &A::env_deposit_belt, &deposit_belt_io::from_arm2, bsc::lossless>,
+    Extra...>;
+
+/// The cell's own diagram: the controllers step first, then the plant models.
+template <class A>
+using system_of = cell_system<A, bsc::order<&A::feed_belt, &A::table, &A::robot, &A::press, &A::deposit_belt,
+                                            &A::env_feed_belt, &A::env_table, &A::env_robot, &A::env_press,
+                                            &A::env_deposit_belt>>;
 
 /// The production cell.
 using cell = system_of<Actors>;

@@ -9,7 +9,10 @@
 //
 // Actors talk to each other with global signals (levels) in a four-phase handshake: the
 // receiver raises `ready`, the sender does its part and raises `done`, the receiver lowers
-// `ready` and the sender lowers `done`.
+// `ready` and the sender lowers `done`. A signal is lowered by the transition that completes its
+// phase, not by an exit action: switching a controller off (which exits every state inside On)
+// leaves its signals as they are, so a partner waits for it instead of reading a lowered signal
+// as the next phase, and the handshake resumes when it is switched on again.
 //
 // The paper names no guard or action. For the diagrams of the actors (docs/composition.md),
 // each is named (bsc::named) after what it reads or writes: a guard after the signals it tests
@@ -68,8 +71,7 @@ inline constexpr auto feed_belt_chart = bsc::make_chart<feed_belt_ctl>(
     }),
     bsc::state<FbFed>[bsc::named<"!table_ready">([](feed_belt_ctl const& c) {
         return !c.table_ready.get();
-    })] = bsc::state<FbRun>,
-    bsc::state<FbFed> + bsc::on_exit / bsc::named<"fed=0">([](feed_belt_ctl& c) { c.fed.set(false); }));
+    })] / bsc::named<"fed=0">([](feed_belt_ctl& c) { c.fed.set(false); }) = bsc::state<FbRun>);
 
 // ==== Table actor =================================================================================
 
@@ -108,10 +110,8 @@ inline constexpr auto table_chart = bsc::make_chart<table_ctl>(
         c.lift.set(stop);
         c.ready_for_feed.set(true);
     }),
-    bsc::state<TbLoad>[bsc::named<"fed">([](table_ctl const& c) { return c.fed.get(); })] = bsc::state<TbRise>,
-    bsc::state<TbLoad> + bsc::on_exit / bsc::named<"ready_for_feed=0">([](table_ctl& c) {
-        c.ready_for_feed.set(false);
-    }),
+    bsc::state<TbLoad>[bsc::named<"fed">([](table_ctl const& c) { return c.fed.get(); })] /
+        bsc::named<"ready_for_feed=0">([](table_ctl& c) { c.ready_for_feed.set(false); }) = bsc::state<TbRise>,
     bsc::state<TbRise> + bsc::on_entry / bsc::named<"lift=fwd">([](table_ctl& c) { c.lift.set(fwd); }),
     bsc::state<TbRise>[bsc::named<"height == table_top">([](table_ctl const& c) {
         return c.height.get() == table_top;
@@ -127,10 +127,8 @@ inline constexpr auto table_chart = bsc::make_chart<table_ctl>(
         c.turn.set(stop);
         c.ready_for_unload.set(true);
     }),
-    bsc::state<TbUnload>[bsc::named<"taken">([](table_ctl const& c) { return c.taken.get(); })] = bsc::state<TbReturn>,
-    bsc::state<TbUnload> + bsc::on_exit / bsc::named<"ready_for_unload=0">([](table_ctl& c) {
-        c.ready_for_unload.set(false);
-    }),
+    bsc::state<TbUnload>[bsc::named<"taken">([](table_ctl const& c) { return c.taken.get(); })] /
+        bsc::named<"ready_for_unload=0">([](table_ctl& c) { c.ready_for_unload.set(false); }) = bsc::state<TbReturn>,
     bsc::state<TbReturn> + bsc::on_entry / bsc::named<"turn=rev">([](table_ctl& c) { c.turn.set(rev); }),
     bsc::state<TbReturn>[bsc::named<"angle == 0">([](table_ctl const& c) {
         return c.angle.get() == 0;
@@ -293,8 +291,7 @@ inline constexpr auto robot_chart = bsc::make_chart<robot_ctl>(
     }),
     bsc::state<A1Handover>[bsc::named<"!table_ready">([](robot_ctl const& c) {
         return !c.table_ready.get();
-    })] = bsc::state<A1Full>,
-    bsc::state<A1Handover> + bsc::on_exit / bsc::named<"taken=0">([](robot_ctl& c) { c.taken.set(false); }),
+    })] / bsc::named<"taken=0">([](robot_ctl& c) { c.taken.set(false); }) = bsc::state<A1Full>,
     bsc::state<A1Full>[bsc::named<"at(load)">([](robot_ctl const& c) {
         return robot_ctl::at(c, job::load);
     })] = bsc::state<A1Insert>,
@@ -316,8 +313,7 @@ inline constexpr auto robot_chart = bsc::make_chart<robot_ctl>(
     bsc::state<A1Loaded> + bsc::on_entry / bsc::named<"arm1=stop">([](robot_ctl& c) { c.arm1.set(stop); }),
     bsc::state<A1Loaded>[bsc::named<"!press_load_ready">([](robot_ctl const& c) {
         return !c.press_load_ready.get();
-    })] = bsc::state<A1Empty>,
-    bsc::state<A1Loaded> + bsc::on_exit / bsc::named<"press_loaded=0">([](robot_ctl& c) { c.press_loaded.set(false); }),
+    })] / bsc::named<"press_loaded=0">([](robot_ctl& c) { c.press_loaded.set(false); }) = bsc::state<A1Empty>,
     // Arm2: from the press to the deposit belt.
     bsc::state<A2Empty>[bsc::named<"at(unload)">([](robot_ctl const& c) {
         return robot_ctl::at(c, job::unload);
@@ -344,10 +340,7 @@ inline constexpr auto robot_chart = bsc::make_chart<robot_ctl>(
     bsc::state<A2Handover> + bsc::on_entry / bsc::named<"arm2=stop">([](robot_ctl& c) { c.arm2.set(stop); }),
     bsc::state<A2Handover>[bsc::named<"!press_unload_ready">([](robot_ctl const& c) {
         return !c.press_unload_ready.get();
-    })] = bsc::state<A2Full>,
-    bsc::state<A2Handover> + bsc::on_exit / bsc::named<"press_unloaded=0">([](robot_ctl& c) {
-        c.press_unloaded.set(false);
-    }),
+    })] / bsc::named<"press_unloaded=0">([](robot_ctl& c) { c.press_unloaded.set(false); }) = bsc::state<A2Full>,
     bsc::state<A2Full>[bsc::named<"at(deposit)">([](robot_ctl const& c) {
         return robot_ctl::at(c, job::deposit);
     })] = bsc::state<A2Extend>,
@@ -369,8 +362,7 @@ inline constexpr auto robot_chart = bsc::make_chart<robot_ctl>(
     bsc::state<A2Dropped> + bsc::on_entry / bsc::named<"arm2=stop">([](robot_ctl& c) { c.arm2.set(stop); }),
     bsc::state<A2Dropped>[bsc::named<"!belt_ready">([](robot_ctl const& c) {
         return !c.belt_ready.get();
-    })] = bsc::state<A2Empty>,
-    bsc::state<A2Dropped> + bsc::on_exit / bsc::named<"dropped=0">([](robot_ctl& c) { c.dropped.set(false); }));
+    })] / bsc::named<"dropped=0">([](robot_ctl& c) { c.dropped.set(false); }) = bsc::state<A2Empty>);
 
 // ==== Press actor =================================================================================
 
@@ -421,10 +413,8 @@ constexpr auto make_press_chart() {
             c.plate.set(stop);
             c.load_ready.set(true);
         }),
-        bsc::state<PsWaitLoad>[may_forge<WaitsForArm1>] = bsc::state<PsForge>,
-        bsc::state<PsWaitLoad> + bsc::on_exit / bsc::named<"load_ready=0">([](press_ctl& c) {
-            c.load_ready.set(false);
-        }),
+        bsc::state<PsWaitLoad>[may_forge<WaitsForArm1>] /
+            bsc::named<"load_ready=0">([](press_ctl& c) { c.load_ready.set(false); }) = bsc::state<PsForge>,
         bsc::state<PsForge> + bsc::on_entry / bsc::named<"plate=fwd">([](press_ctl& c) { c.plate.set(fwd); }),
         bsc::state<PsForge>[bsc::named<"level == press_top">([](press_ctl const& c) {
             return c.level.get() == press_top;
@@ -439,10 +429,7 @@ constexpr auto make_press_chart() {
         }),
         bsc::state<PsWaitUnload>[bsc::named<"unloaded && arm2_ext == 0">([](press_ctl const& c) {
             return c.unloaded.get() && c.arm2_ext.get() == 0;
-        })] = bsc::state<PsUp>,
-        bsc::state<PsWaitUnload> + bsc::on_exit / bsc::named<"unload_ready=0">([](press_ctl& c) {
-            c.unload_ready.set(false);
-        }),
+        })] / bsc::named<"unload_ready=0">([](press_ctl& c) { c.unload_ready.set(false); }) = bsc::state<PsUp>,
         bsc::state<PsUp> + bsc::on_entry / bsc::named<"plate=fwd">([](press_ctl& c) { c.plate.set(fwd); }),
         bsc::state<PsUp>[bsc::named<"level == press_middle">([](press_ctl const& c) {
             return c.level.get() == press_middle;
@@ -473,10 +460,7 @@ inline constexpr auto deposit_belt_chart = bsc::make_chart<deposit_belt_ctl>(
         bsc::composite<On>(bsc::shallow_history, bsc::initial<DpIdle>, bsc::state<DpClear>, bsc::state<DpRun>)),
     bsc::state<Off>[switched_on] = bsc::state<On>,
     bsc::state<On>[!switched_on] = bsc::state<Off>,
-    bsc::state<On> + bsc::on_exit / bsc::named<"motor=0, ready=0">([](deposit_belt_ctl& c) {
-        c.motor.set(false);
-        c.ready.set(false);
-    }),
+    bsc::state<On> + bsc::on_exit / bsc::named<"motor=0">([](deposit_belt_ctl& c) { c.motor.set(false); }),
     bsc::state<DpIdle> + bsc::on_entry / bsc::named<"motor=0, ready=1">([](deposit_belt_ctl& c) {
         c.motor.set(false);
         c.ready.set(true);

@@ -5915,16 +5915,46 @@ machine(C const&, A...) -> machine<C const, default_policy, detail::observer_arg
 // outside. The wiring is one list, the system's actor diagram.
 
 #include <cstddef>
+#include <tuple>
 #include <type_traits>
 
 
 namespace bsc {
 
+/// What the consumer of a link reads while the link's publisher is silent, when the two actors
+/// run on different nodes (<bsc/net/node.hpp>). In one process a link is never stale, and the
+/// policy changes nothing.
+///
+/// `hold_last` (the default): the last value received stays, as a latched level would.
+struct hold_last {};
+
+/// `fail_safe<V>`: the consumer reads `V` until the publisher is heard again, e.g. a motor
+/// command that reads "stop" when its controller is lost. V is a structural value of the link's
+/// type (a number, an enumerator, an aggregate of those).
+template <auto V>
+struct fail_safe {
+    static constexpr auto value = V;
+};
+
+/// `lossless`: the link is never stale; the consumer waits for every value, however long its
+/// publisher is silent, and the publisher waits for the consumer. For the couplings of a
+/// simulated plant (a brick handed from one machine to the next), where a missed value is a
+/// lost object, not a late one.
+struct lossless {};
+
 /// A signal: the published value of output channel `FromChannel` of actor `FromActor` is
 /// written into input channel `ToChannel` of actor `ToActor` just before `ToActor` steps.
 /// Actors are members of the system's aggregate; channels are members of their contexts.
-template <auto FromActor, auto FromChannel, auto ToActor, auto ToChannel>
+/// `WhenStale` (hold_last, fail_safe<V> or lossless) says what the consumer reads when the two
+/// run on different nodes and the publisher falls silent.
+template <auto FromActor, auto FromChannel, auto ToActor, auto ToChannel, class WhenStale = hold_last>
 struct link {
+    static constexpr auto from_actor = FromActor;
+    static constexpr auto from_channel = FromChannel;
+    static constexpr auto to_actor = ToActor;
+    static constexpr auto to_channel = ToChannel;
+    using when_stale = WhenStale;
+
     template <class Actors>
     static constexpr void transfer(Actors& actors) {
         auto const& source = (actors.*FromActor).context().*FromChannel;
@@ -5959,6 +5989,10 @@ struct system;
 /// system is itself an aggregate that the explorer can encode. No heap.
 template <class Actors, auto... Steps, class... Links>
 struct system<Actors, order<Steps...>, Links...> {
+    using actors_type = Actors;
+    using order_type = order<Steps...>;
+    using links_type = std::tuple<Links...>;
+
     Actors actors;
 
     /// One step of every actor, in order: each first receives the signals linked to it (the

@@ -120,6 +120,35 @@ inline constexpr auto member_names = []<std::size_t... I>(std::index_sequence<I.
     return std::array<std::string_view, sizeof...(I)>{member_name_of<T, I>()...};
 }(std::make_index_sequence<std::tuple_size_v<decltype(tie_fields(std::declval<T&>()))>>{});
 
+template <class Class, class Member>
+Class class_of_member(Member Class::*);
+
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wundefined-var-template"
+#pragma clang diagnostic ignored "-Wundefined-internal"
+#endif
+/// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
+/// `&axis::speed`. Found by comparing addresses: GCC 12 does not accept the address that `.*`
+/// yields as a template argument, so the member's index among the aggregate's is looked up.
+template <auto Member>
+constexpr std::string_view member_name() {
+    using Class = decltype(class_of_member(Member));
+    constexpr std::size_t index = []<std::size_t... I>(std::index_sequence<I...>) {
+        auto const& object = declared_only<Class>.value;
+        void const* const target = &(object.*Member);
+        auto const fields = tie_fields(object);
+        std::size_t found = sizeof...(I);
+        ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
+        return found;
+    }(std::make_index_sequence<member_names<Class>.size()>{});
+    static_assert(index < member_names<Class>.size(), "the pointer designates no member of the aggregate");
+    return member_names<Class>[index];
+}
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+
 }  // namespace bsc::detail
 #endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_NAMES_HPP
 // end include/bsc/detail/member_names.hpp

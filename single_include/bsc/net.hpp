@@ -1,0 +1,1766 @@
+#pragma once
+// bsc::net - a system deployed across nodes, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/net.hpp by `python3 scripts/amalgamate.py`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+// begin include/bsc/net.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_NET_HPP
+#define BSC_SINGLE_INCLUDE_BSC_NET_HPP
+// Distributed systems (opt-in): a bsc::system's actors deployed on several nodes, linked over a
+// publish/subscribe transport. This header has no dependency beyond the standard library; the
+// MQTT transport is <bsc/mqtt.hpp> (CMake target bsc::mqtt, needs libmosquitto).
+
+// begin include/bsc/net/memory_transport.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_NET_MEMORY_TRANSPORT_HPP
+#define BSC_SINGLE_INCLUDE_BSC_NET_MEMORY_TRANSPORT_HPP
+// A transport inside one process: every memory_transport on the same memory_bus receives what
+// the others publish, at once and in order. For tests and for running the nodes of a system in
+// one program; it can also lose its connection on demand, so that staleness can be tested
+// without a network.
+
+#include <algorithm>
+#include <cstddef>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+// begin include/bsc/net/transport.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_NET_TRANSPORT_HPP
+#define BSC_SINGLE_INCLUDE_BSC_NET_TRANSPORT_HPP
+// What a node of a distributed system (<bsc/net/node.hpp>) needs from a network: publish and
+// subscribe by topic, and a last will. MQTT gives all of it (<bsc/net/mosquitto_transport.hpp>);
+// memory_transport (<bsc/net/memory_transport.hpp>) gives it inside one process, for tests. Another
+// transport (DDS, ZeroMQ) implements this class and nothing else changes.
+
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bsc::net {
+
+/// A message as a transport delivers it.
+struct message {
+    std::string topic;
+    std::vector<std::byte> payload;
+};
+
+/// A publish/subscribe connection. Delivery is best effort: a message may be lost (a node sends
+/// its latest messages again with every heartbeat), but the messages of one topic from one
+/// publisher never overtake each other, and none arrives corrupted.
+class transport {
+public:
+    virtual ~transport() = default;
+
+    /// The message the network publishes for this client when the connection is lost without a
+    /// goodbye (MQTT's last will). Set before the first poll; kept across reconnections.
+    virtual void set_will(std::string_view topic, std::span<std::byte const> payload) = 0;
+    /// Receive the messages whose topic matches `filter` (MQTT syntax: `+` one level, `#` the rest).
+    virtual void subscribe(std::string_view filter) = 0;
+    /// Sends a message; dropped while disconnected.
+    virtual void publish(std::string_view topic, std::span<std::byte const> payload) = 0;
+    /// Waits at most `timeout` for messages and hands each to `deliver`, in arrival order; keeps
+    /// the connection (and reconnects after a loss). Returns the number of messages handed.
+    virtual std::size_t poll(std::chrono::milliseconds timeout, std::function<void(message const&)> const& deliver) = 0;
+    /// Whether the connection is up now.
+    virtual bool connected() const = 0;
+};
+
+/// Whether `topic` matches the MQTT topic filter `filter`.
+constexpr bool topic_matches(std::string_view filter, std::string_view topic) {
+    while (true) {
+        auto const f_end = filter.find('/');
+        auto const t_end = topic.find('/');
+        auto const f_level = filter.substr(0, f_end);
+        auto const t_level = topic.substr(0, t_end);
+        if (f_level == "#") return true;
+        if (f_level != "+" && f_level != t_level) return false;
+        bool const f_last = f_end == std::string_view::npos;
+        bool const t_last = t_end == std::string_view::npos;
+        if (f_last || t_last) {
+            if (f_last && t_last) return true;
+            // "a/#" also matches "a".
+            return t_last && filter.substr(f_end + 1) == "#";
+        }
+        filter.remove_prefix(f_end + 1);
+        topic.remove_prefix(t_end + 1);
+    }
+}
+
+}  // namespace bsc::net
+#endif  // BSC_SINGLE_INCLUDE_BSC_NET_TRANSPORT_HPP
+// end include/bsc/net/transport.hpp
+
+namespace bsc::net {
+
+class memory_transport;
+
+/// The medium the memory transports of one system share. Outlives them.
+class memory_bus {
+    friend class memory_transport;
+    std::vector<memory_transport*> clients_;
+};
+
+/// A transport on a memory_bus. Single-threaded: poll never blocks.
+class memory_transport final : public transport {
+public:
+    explicit memory_transport(memory_bus& bus) : bus_(&bus) { bus_->clients_.push_back(this); }
+    ~memory_transport() override { std::erase(bus_->clients_, this); }
+    memory_transport(memory_transport const&) = delete;
+    memory_transport& operator=(memory_transport const&) = delete;
+
+    void set_will(std::string_view topic, std::span<std::byte const> payload) override {
+        will_ = message{std::string(topic), {payload.begin(), payload.end()}};
+    }
+    void subscribe(std::string_view filter) override { filters_.emplace_back(filter); }
+    void publish(std::string_view topic, std::span<std::byte const> payload) override {
+        if (!connected_) return;
+        broadcast(message{std::string(topic), {payload.begin(), payload.end()}});
+    }
+    std::size_t poll(std::chrono::milliseconds, std::function<void(message const&)> const& deliver) override {
+        std::size_t n = 0;
+        while (connected_ && !inbox_.empty()) {
+            message m = std::move(inbox_.front());
+            inbox_.pop_front();
+            deliver(m);
+            ++n;
+        }
+        return n;
+    }
+    bool connected() const override { return connected_; }
+
+    /// The connection breaks: what was not yet delivered is lost, the others receive the will.
+    void disconnect() {
+        if (!connected_) return;
+        connected_ = false;
+        inbox_.clear();
+        if (will_) broadcast(*will_);
+    }
+    /// The node hangs, or its link holds everything: nothing goes out or comes in, and the
+    /// others get no will; only their deadline tells them.
+    void fall_silent() {
+        connected_ = false;
+        inbox_.clear();
+    }
+    /// The connection is back, with the same subscriptions and will.
+    void reconnect() { connected_ = true; }
+
+private:
+    void broadcast(message const& m) {
+        for (memory_transport* c : bus_->clients_) {
+            if (c == this || !c->connected_) continue;
+            if (std::any_of(c->filters_.begin(), c->filters_.end(),
+                            [&](std::string const& f) { return topic_matches(f, m.topic); }))
+                c->inbox_.push_back(m);
+        }
+    }
+
+    memory_bus* bus_;
+    std::vector<std::string> filters_;
+    std::deque<message> inbox_;
+    std::optional<message> will_;
+    bool connected_ = true;
+};
+
+}  // namespace bsc::net
+#endif  // BSC_SINGLE_INCLUDE_BSC_NET_MEMORY_TRANSPORT_HPP
+// end include/bsc/net/memory_transport.hpp
+// begin include/bsc/net/node.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_NET_NODE_HPP
+#define BSC_SINGLE_INCLUDE_BSC_NET_NODE_HPP
+// A system deployed across processes: each process runs a bsc::net::node that steps the actors
+// it hosts, and the links between actors on different nodes travel over a transport (MQTT, or
+// memory inside one program). Which actor runs where is configuration (node_options::actors);
+// the system's declaration, its charts and its links are the same code everywhere.
+//
+// Stepping follows the system's order exactly, so that a deployed system computes what
+// bsc::system::step computes in one process, step by step: actor X runs its step n when
+//   - every link into X has its value: the publisher's step n if the publisher comes before X
+//     in the order, step n - 1 otherwise (the same rule as bsc::system);
+//   - every consumer of X's outputs has read the value X is about to replace (it completed step
+//     n - 1 if it comes after X, step n if before).
+// A remote publisher or consumer that is silent longer than node_options::deadline, or whose
+// node's last will arrived, is stale: X goes on without it, reading what the link's policy says
+// (bsc::hold_last, bsc::fail_safe<V>), except on bsc::lossless links, which always wait. An
+// actor without lossless links that finds its peers ahead (it was stale, or restarted) jumps to
+// their step instead of replaying the ones it missed. Messages carry their step: a value older
+// than one applied is never applied.
+//
+// After each step a node publishes, for every output channel that feeds an actor on another
+// node, the value (topic <prefix>/value/<actor>/<channel>) and the actor's progress (topic
+// <prefix>/progress/<actor>), and saves the actor (bsc::save) when node_options::state_dir is
+// set; a node started again resumes every actor from there. Between steps it sends its last
+// messages again every node_options::heartbeat, which both proves it alive and repairs losses.
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+// begin include/bsc/detail/member_names.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_NAMES_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_NAMES_HPP
+// The names of an aggregate's members as its definition spells them, at compile time, without
+// macros: the address of a member of an object that is declared but never defined is a constant
+// that may be a template argument, and both supported compilers spell that argument in
+// __PRETTY_FUNCTION__ ending with the member's name (GCC 12: "{(& object<T>.T::speed)}",
+// Clang 14: "{&object.speed}"). Used by the opt-in parts that show or store a context by name
+// (the VCD recorder, the retentive state's layout fingerprint); nothing else pays for it.
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+#include <tuple>
+#include <utility>
+
+
+namespace bsc::detail {
+
+// Holds the address as a class-type template argument: Clang 14 accepts a pointer to a
+// subobject there, but not as a template argument of pointer type.
+template <class T>
+struct member_address {
+    T const* address;
+};
+
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wundefined-var-template"
+#pragma clang diagnostic ignored "-Wundefined-internal"
+#endif
+// Never defined: only its members' addresses are taken, in constant expressions. T is wrapped so
+// that a T without linkage (in an anonymous namespace, or local to a function) may be named: the
+// wrapper's linkage is the variable's, and Clang refuses an undefined variable of a type without.
+template <class T>
+struct declared_object {
+    T value;
+};
+template <class T>
+extern declared_object<T> const declared_only;
+
+template <auto Address>
+constexpr char const* spelled_address() {
+    return __PRETTY_FUNCTION__;
+}
+
+// Identifiers may hold letters beyond ASCII, spelled in UTF-8: every byte of those is >= 0x80.
+constexpr bool is_identifier_char(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           static_cast<unsigned char>(c) >= 0x80;
+}
+
+// The last identifier of a signature: the member's name, before the closing brackets.
+constexpr std::string_view last_identifier(std::string_view s) {
+    std::size_t end = s.size();
+    while (end > 0 && !is_identifier_char(s[end - 1])) --end;
+    std::size_t begin = end;
+    while (begin > 0 && is_identifier_char(s[begin - 1])) --begin;
+    return s.substr(begin, end - begin);
+}
+
+template <class T, std::size_t I>
+constexpr std::string_view member_name_of() {
+    constexpr auto& member = std::get<I>(tie_fields(declared_only<T>.value));
+    using member_type = std::remove_cvref_t<decltype(member)>;
+    return last_identifier(spelled_address<member_address<member_type>{&member}>());
+}
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+
+/// The names of T's members, in declaration order. Requirements: T is an aggregate that
+/// detail::tie_fields supports.
+template <class T>
+inline constexpr auto member_names = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<std::string_view, sizeof...(I)>{member_name_of<T, I>()...};
+}(std::make_index_sequence<std::tuple_size_v<decltype(tie_fields(std::declval<T&>()))>>{});
+
+template <class Class, class Member>
+Class class_of_member(Member Class::*);
+
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wundefined-var-template"
+#pragma clang diagnostic ignored "-Wundefined-internal"
+#endif
+/// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
+/// `&axis::speed`. Found by comparing addresses: GCC 12 does not accept the address that `.*`
+/// yields as a template argument, so the member's index among the aggregate's is looked up.
+template <auto Member>
+constexpr std::string_view member_name() {
+    using Class = decltype(class_of_member(Member));
+    constexpr std::size_t index = []<std::size_t... I>(std::index_sequence<I...>) {
+        auto const& object = declared_only<Class>.value;
+        void const* const target = &(object.*Member);
+        auto const fields = tie_fields(object);
+        std::size_t found = sizeof...(I);
+        ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
+        return found;
+    }(std::make_index_sequence<member_names<Class>.size()>{});
+    static_assert(index < member_names<Class>.size(), "the pointer designates no member of the aggregate");
+    return member_names<Class>[index];
+}
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+
+}  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_NAMES_HPP
+// end include/bsc/detail/member_names.hpp
+// begin include/bsc/net/wire.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_NET_WIRE_HPP
+#define BSC_SINGLE_INCLUDE_BSC_NET_WIRE_HPP
+// The messages that the nodes of a distributed system exchange, byte by byte. Each starts with
+// the same header:
+//
+//   offset  size     field
+//        0  3 bytes  "bsc"
+//        3  1 byte   kind: 'V' a channel's value, 'P' an actor's progress, 'W' a node's will
+//        4  1 byte   format version (1)
+//        5  8 bytes  the step the message is about (two's complement, little-endian)
+//       13  8 bytes  fingerprint: of the publishing actor's chart, and for a value also of the
+//                    channel's name and value type (detail::retain's fingerprints)
+//       21           body: a value as bsc::save writes it (fixed size per type); for a will, one
+//                    byte per actor of the node (its place in the system's order)
+//
+// A message whose header, fingerprint or size does not match what the receiver expects is
+// refused and counted, never applied: two nodes built from different charts do not talk.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+// begin include/bsc/retain.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_RETAIN_HPP
+#define BSC_SINGLE_INCLUDE_BSC_RETAIN_HPP
+// Retentive state: a machine saved to bytes and restored into a fresh machine of the same chart,
+// so that a controller continues after a restart where it stopped (a PLC's retentive memory).
+//
+//   std::array<std::byte, bsc::saved_size<cell::machine>> bytes;
+//   bsc::save(m, bytes);                          // between cycles: configuration, history,
+//   ...                                           // context, timers, timeouts, time
+//   cell::machine fresh{cell::chart};
+//   if (auto r = bsc::restore(fresh, bytes); !r) std::puts(bsc::to_string(r).c_str());
+//
+// The format (all integers little-endian, the same on every platform):
+//   offset  0  4 bytes  "bscR"
+//           4  2 bytes  format version (1)
+//           6  2 bytes  flags (0)
+//           8  4 bytes  payload length
+//          12  8 bytes  the chart's fingerprint: its states' names, kinds, history, nesting and
+//                       order, and its timeout rows' states, places, targets and delays (what
+//                       the saved bytes mean)
+//          20  8 bytes  the context's fingerprint: each member's name, kind, size and order, at
+//                       any depth (a renamed, retyped, added or moved member changes it)
+//          28  payload  the machine: one byte per composite (its active or remembered child: the
+//                       configuration and the history), the clock, whether a cycle has run, each
+//                       timeout's start, the last outcome; then the context member by member
+//                       (a channel's pending and current values, a timer's limit, start, elapsed
+//                       time, phase and flag; a machine in the context as a machine)
+//          end-4       CRC-32 (IEEE 802.3) of everything before it
+// The size is fixed for a machine type (bsc::saved_size), so a controller can keep its state in a
+// static buffer. Restoring checks everything before it changes anything: bytes that are not a
+// saved state, of another version, chart or context layout, truncated, extended, corrupted, or
+// holding a value no machine can hold (a configuration byte past its composite's children, a flag
+// other than 0 or 1, an outcome, a timer's phase or a negative limit) are refused with the reason
+// and the byte, and the machine is left as it was. (Within its type any value of a member is
+// taken: restore does not know the program's invariants; enums must have a fixed underlying type,
+// so that every such value is one of the enum's.) The internal queue is not saved: between runs it is empty (after the machine halted
+// it may hold events that will never be processed). Neither is the exception of a last outcome
+// `failed`, nor the observer.
+//
+// Opt-in: <bsc/bsc.hpp> does not include it.
+
+#include <array>
+#include <bit>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+
+namespace bsc {
+
+/// Specialise as true for a context member type that is not saved (a log, a cache, a handle):
+/// a restored machine keeps its own value of such members.
+template <class T>
+inline constexpr bool not_retained = false;
+
+/// Why bsc::restore refused bytes (none: it restored them).
+enum class restore_error : std::uint8_t {
+    none,                 ///< restored
+    machine_running,      ///< called from inside one of the machine's guards or actions
+    truncated,            ///< the bytes end before the saved state does
+    not_saved_state,      ///< the bytes do not begin with bsc's mark "bscR"
+    unsupported_version,  ///< written in a format version (or with flags) this library does not read
+    trailing_bytes,       ///< more bytes follow the saved state
+    corrupted,            ///< the checksum does not match: the bytes changed after saving
+    other_chart,          ///< saved from a chart with other states
+    other_layout,         ///< saved with another context layout
+    invalid_value,        ///< a value no machine can hold (a configuration byte, a flag, an outcome, a timer's state)
+};
+
+/// The result of bsc::restore: true when restored; otherwise why not, and the byte at which the
+/// problem was found.
+struct restore_result {
+    restore_error error = restore_error::none;
+    std::size_t offset = 0;
+    constexpr explicit operator bool() const { return error == restore_error::none; }
+    friend constexpr bool operator==(restore_result const&, restore_result const&) = default;
+};
+
+/// A sentence for each reason.
+constexpr std::string_view to_string(restore_error e) {
+    switch (e) {
+        case restore_error::none: return "restored";
+        case restore_error::machine_running: return "the machine is running (restore was called from one of its guards or actions)";
+        case restore_error::truncated: return "truncated: the bytes end before the saved state does";
+        case restore_error::not_saved_state: return "not a saved bsc machine: the bytes do not begin with \"bscR\"";
+        case restore_error::unsupported_version: return "saved in a format version this library does not read";
+        case restore_error::trailing_bytes: return "more bytes follow the saved state";
+        case restore_error::corrupted: return "corrupted: the checksum does not match";
+        case restore_error::other_chart: return "saved from another chart (its states differ)";
+        case restore_error::other_layout: return "saved with another context layout (members, names, types or order differ)";
+        case restore_error::invalid_value: return "a saved value is out of range";
+    }
+    return "unknown restore_error";
+}
+
+/// "corrupted: the checksum does not match (byte 412)"; "restored" when it was.
+inline std::string to_string(restore_result const& r) {
+    std::string text{to_string(r.error)};
+    if (r.error != restore_error::none && r.error != restore_error::machine_running)
+        text += " (byte " + std::to_string(r.offset) + ")";
+    return text;
+}
+
+/// A restore option: continue the machine's time at `now` rather than at the saved time (for a
+/// caller whose clock restarted). Every time the machine keeps (its clock, its timeouts' starts,
+/// its timers' starts) moves by the same amount, so what had elapsed at the save has elapsed at
+/// `now`; the downtime does not count. A machine held in the context continues at `now` too; one
+/// that has not run a cycle keeps no time and is restored as saved.
+struct resume_at {
+    duration now;
+};
+
+}  // namespace bsc
+
+namespace bsc::detail::retain {
+
+inline constexpr std::array<char, 4> mark = {'b', 's', 'c', 'R'};
+inline constexpr std::uint16_t format_version = 1;
+inline constexpr std::size_t header_size = 28;
+inline constexpr std::size_t trailer_size = 4;
+inline constexpr std::size_t outcome_count = static_cast<std::size_t>(outcome::unknown_event) + 1;
+
+template <class T>
+inline constexpr bool is_chrono_duration = false;
+template <class Rep, class Period>
+inline constexpr bool is_chrono_duration<std::chrono::duration<Rep, Period>> = true;
+
+// An enum whose every value of the underlying type is a value of the enum: a scoped enum, or one
+// declared with `: type` (only those can be list-initialised from an integer). Restoring any
+// other from bytes could make a value outside its range.
+template <class T>
+inline constexpr bool has_fixed_underlying_type = requires { T{std::underlying_type_t<T>{}}; };
+
+// FNV-1a, 64 bits: fingerprints of a chart and a layout, computed at compile time.
+struct fingerprint {
+    std::uint64_t value = 14695981039346656037ull;
+    constexpr void add(std::uint64_t v) {
+        for (int i = 0; i < 8; ++i, v >>= 8) value = (value ^ (v & 0xffu)) * 1099511628211ull;
+    }
+    constexpr void add(std::string_view s) {
+        add(s.size());
+        for (char c : s) value = (value ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    }
+};
+
+// CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320), bit by bit: states are small.
+constexpr std::uint32_t crc32(std::byte const* data, std::size_t n) {
+    std::uint32_t crc = 0xffffffffu;
+    for (std::size_t i = 0; i < n; ++i) {
+        crc ^= static_cast<std::uint32_t>(data[i]);
+        for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+template <class Machine>
+using model_of = chart_model<typename Machine::chart_type>;
+
+// What the saved bytes of a machine mean: its states and where its timeouts are.
+template <class Machine>
+constexpr std::uint64_t chart_fingerprint() {
+    using model = model_of<Machine>;
+    using layout = chart_layout<model>;
+    constexpr auto const& names = state_names_of<model>;
+    fingerprint f;
+    f.add(static_cast<std::uint64_t>(model::N));
+    for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s) {
+        f.add(names[s]);
+        f.add(static_cast<std::uint64_t>(model::tree.kinds[s]));
+        f.add(static_cast<std::uint64_t>(model::tree.hist[s]));
+        f.add(static_cast<std::uint64_t>(model::tree.parent[s] + 1));
+    }
+    f.add(static_cast<std::uint64_t>(layout::timeout_slots));
+    if constexpr (layout::timeout_slots > 0)
+        for (int s : layout::timeout_slot_state) f.add(static_cast<std::uint64_t>(s));
+    return f.value;
+}
+
+// The same, with each timeout row's place among the rows, its target and its delay (a value of
+// the chart, not of its type): a timeout row added, removed, moved or given another delay changes
+// the meaning of the start times the bytes hold.
+template <class Machine>
+std::uint64_t chart_fingerprint(Machine const& m) {
+    using model = model_of<Machine>;
+    using layout = chart_layout<model>;
+    fingerprint f{chart_fingerprint<Machine>()};
+    auto const delays = access::row_delays(m);
+    for (std::size_t row = 0; row < delays.size(); ++row) {
+        if (!layout::is_timeout_row(static_cast<int>(row))) continue;
+        f.add(row);
+        f.add(static_cast<std::uint64_t>(model::rows.target[row] + 2));
+        f.add(static_cast<std::uint64_t>(delays[row].count()));
+    }
+    return f.value;
+}
+
+enum class member_kind : std::uint8_t { boolean, signed_integer, unsigned_integer, enumeration, floating, time,
+                                        input, output, inout, timer, array, aggregate, machine, skipped };
+
+template <class T>
+constexpr std::size_t size_of();
+
+// A member's size; a const member (or a const reference) cannot be restored.
+template <class Field>
+constexpr std::size_t field_size() {
+    if constexpr (std::is_const_v<Field>) {
+        detail::report<error::member_not_retainable<Field>>();
+        return 0;
+    } else {
+        return size_of<Field>();
+    }
+}
+
+template <class Machine>
+constexpr std::size_t machine_size() {
+    using layout = chart_layout<model_of<Machine>>;
+    return static_cast<std::size_t>(model_of<Machine>::tree.slots) + 8 + 1 +
+           8 * static_cast<std::size_t>(layout::timeout_slots) + 1 + size_of<typename Machine::context_type>();
+}
+
+template <class T>
+constexpr std::size_t size_of() {
+    if constexpr (not_retained<T>) {
+        return 0;
+    } else if constexpr (is_machine<T>) {
+        return machine_size<T>();
+    } else if constexpr (is_channel<T>) {
+        return 2 * size_of<channel_value<T>>();
+    } else if constexpr (is_timer<T>) {
+        return 3 * 8 + 2;
+    } else if constexpr (std::is_same_v<T, bool>) {
+        return 1;
+    } else if constexpr (std::is_integral_v<T> && sizeof(T) <= 8) {
+        return sizeof(T);
+    } else if constexpr (std::is_enum_v<T> && has_fixed_underlying_type<T>) {
+        return sizeof(T);
+    } else if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+        return sizeof(T);
+    } else if constexpr (is_chrono_duration<T>) {
+        return size_of<typename T::rep>();
+    } else if constexpr (is_std_array<T>) {
+        return std::tuple_size_v<T> * size_of<typename T::value_type>();
+    } else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T> && !has_reference_field<T>) {
+        return []<class... Fields>(std::tuple<Fields&...>*) {
+            return (std::size_t{0} + ... + field_size<Fields>());
+        }(static_cast<decltype(tie_fields(std::declval<T&>()))*>(nullptr));
+    } else {
+        detail::report<error::member_not_retainable<T>>();
+        return 0;
+    }
+}
+
+template <class Machine>
+constexpr std::uint64_t layout_fingerprint();
+
+// Adds T's description to f: kind, size, and for composites their parts (members by name).
+template <class T>
+constexpr void describe(fingerprint& f) {
+    if constexpr (not_retained<T>) {
+        f.add(static_cast<std::uint64_t>(member_kind::skipped));
+    } else if constexpr (is_machine<T>) {
+        f.add(static_cast<std::uint64_t>(member_kind::machine));
+        f.add(chart_fingerprint<T>());
+        f.add(layout_fingerprint<T>());
+    } else if constexpr (is_channel<T>) {
+        using V = channel_value<T>;
+        f.add(static_cast<std::uint64_t>(std::is_same_v<T, input<V>>    ? member_kind::input
+                                         : std::is_same_v<T, output<V>> ? member_kind::output
+                                                                        : member_kind::inout));
+        describe<V>(f);
+    } else if constexpr (is_timer<T>) {
+        f.add(static_cast<std::uint64_t>(member_kind::timer));
+    } else if constexpr (std::is_same_v<T, bool>) {
+        f.add(static_cast<std::uint64_t>(member_kind::boolean));
+    } else if constexpr (std::is_enum_v<T>) {
+        f.add(static_cast<std::uint64_t>(member_kind::enumeration));
+        f.add(name_of<T>);
+        f.add(sizeof(T));
+        f.add(std::is_signed_v<std::underlying_type_t<T>> ? 1 : 0);
+    } else if constexpr (std::is_integral_v<T>) {
+        f.add(static_cast<std::uint64_t>(std::is_signed_v<T> ? member_kind::signed_integer
+                                                               : member_kind::unsigned_integer));
+        f.add(sizeof(T));
+    } else if constexpr (std::is_floating_point_v<T>) {
+        f.add(static_cast<std::uint64_t>(member_kind::floating));
+        f.add(sizeof(T));
+    } else if constexpr (is_chrono_duration<T>) {
+        f.add(static_cast<std::uint64_t>(member_kind::time));
+        f.add(static_cast<std::uint64_t>(T::period::num));
+        f.add(static_cast<std::uint64_t>(T::period::den));
+        describe<typename T::rep>(f);
+    } else if constexpr (is_std_array<T>) {
+        f.add(static_cast<std::uint64_t>(member_kind::array));
+        f.add(std::tuple_size_v<T>);
+        describe<typename T::value_type>(f);
+    } else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T> && !has_reference_field<T>) {
+        f.add(static_cast<std::uint64_t>(member_kind::aggregate));
+        [&]<class... Fields>(std::tuple<Fields&...>*) {
+            f.add(sizeof...(Fields));
+            std::size_t i = 0;
+            ((f.add(member_names<T>[i++]), describe<std::remove_cv_t<Fields>>(f)), ...);
+        }(static_cast<decltype(tie_fields(std::declval<T&>()))*>(nullptr));
+    }
+    // Anything else was reported by size_of.
+}
+
+template <class Machine>
+constexpr std::uint64_t layout_fingerprint() {
+    fingerprint f;
+    describe<typename Machine::context_type>(f);
+    return f.value;
+}
+
+class writer {
+public:
+    explicit writer(std::byte* out) : out_(out) {}
+    void put(std::uint64_t v, std::size_t bytes) {
+        for (std::size_t i = 0; i < bytes; ++i, v >>= 8) out_[pos_++] = static_cast<std::byte>(v & 0xffu);
+    }
+    std::size_t position() const { return pos_; }
+
+private:
+    std::byte* out_;
+    std::size_t pos_ = 0;
+};
+
+// A little-endian number of `bytes` (at most 8) bytes.
+inline std::uint64_t read_le(std::byte const* p, std::size_t bytes) {
+    std::uint64_t v = 0;
+    for (std::size_t i = 0; i < bytes; ++i) v |= static_cast<std::uint64_t>(p[i]) << (8 * i);
+    return v;
+}
+
+// Reads what writer wrote; the first value out of range is remembered with its position.
+class reader {
+public:
+    reader(std::byte const* in, std::size_t begin, std::size_t end) : in_(in), pos_(begin), end_(end) {}
+    std::uint64_t get(std::size_t bytes) {
+        if (pos_ + bytes > end_) {  // not reached: the payload's length is checked first
+            refuse(restore_error::truncated, end_);
+            return 0;
+        }
+        std::uint64_t const v = read_le(in_ + pos_, bytes);
+        pos_ += bytes;
+        return v;
+    }
+    // A value that must be below `limit`.
+    std::uint64_t get_below(std::size_t bytes, std::uint64_t limit) {
+        std::size_t const at = pos_;
+        std::uint64_t const v = get(bytes);
+        if (v >= limit) refuse(restore_error::invalid_value, at);
+        return v < limit ? v : 0;
+    }
+    void refuse(restore_error e, std::size_t at) {
+        if (result_.error == restore_error::none) result_ = {e, at};
+    }
+    restore_result result() const { return result_; }
+    std::size_t position() const { return pos_; }
+
+private:
+    std::byte const* in_;
+    std::size_t pos_;
+    std::size_t end_;
+    restore_result result_{};
+};
+
+// What a reading pass does with the values: only check them, or also store them, each machine's
+// clock continuing at `resume` if given.
+struct pass {
+    bool apply = false;
+    std::optional<duration> resume{};
+    duration shift{};  // added to every time the enclosing machine keeps
+};
+
+// t + shift, saturated: a far-off saved time must not overflow.
+constexpr duration shifted(duration t, duration shift) {
+    auto const a = t.count();
+    auto const b = shift.count();
+    using limits = std::numeric_limits<duration::rep>;
+    if (b > 0 && a > limits::max() - b) return duration::max();
+    if (b < 0 && a < limits::min() - b) return duration::min();
+    return duration{a + b};
+}
+
+// to - from, saturated.
+constexpr duration difference(duration to, duration from) {
+    duration::rep d{};
+    if (__builtin_sub_overflow(to.count(), from.count(), &d)) return from.count() < 0 ? duration::max() : duration::min();
+    return duration{d};
+}
+
+template <class T>
+void put(writer& w, T const& value);
+
+template <class Machine>
+void put_machine(writer& w, Machine const& m) {
+    auto& machine = const_cast<Machine&>(m);  // access reads through non-const references too
+    for (auto byte : access::configuration(machine).active) w.put(byte, 1);
+    w.put(static_cast<std::uint64_t>(access::clock(m).count()), 8);
+    w.put(access::clock_started(m) ? 1 : 0, 1);
+    for (duration armed : access::armed(machine)) w.put(static_cast<std::uint64_t>(armed.count()), 8);
+    w.put(static_cast<std::uint64_t>(m.last_outcome()), 1);
+    put(w, m.context());
+}
+
+template <class T>
+void put(writer& w, T const& value) {
+    if constexpr (not_retained<T>) {
+        return;
+    } else if constexpr (is_machine<T>) {
+        put_machine(w, value);
+    } else if constexpr (is_channel<T>) {
+        put(w, value.pending());
+        put(w, value.get());
+    } else if constexpr (is_timer<T>) {
+        w.put(static_cast<std::uint64_t>(value.limit().count()), 8);
+        w.put(static_cast<std::uint64_t>(access::timer_started(value).count()), 8);
+        w.put(static_cast<std::uint64_t>(value.elapsed().count()), 8);
+        w.put(access::timer_phase(value), 1);
+        w.put(value.expired() ? 1 : 0, 1);
+    } else if constexpr (std::is_same_v<T, bool>) {
+        w.put(value ? 1 : 0, 1);
+    } else if constexpr (std::is_enum_v<T>) {
+        put(w, static_cast<std::underlying_type_t<T>>(value));
+    } else if constexpr (std::is_integral_v<T> && sizeof(T) <= 8) {
+        w.put(static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<T>>(value)), sizeof(T));
+    } else if constexpr (std::is_same_v<T, float>) {
+        w.put(std::bit_cast<std::uint32_t>(value), 4);
+    } else if constexpr (std::is_same_v<T, double>) {
+        w.put(std::bit_cast<std::uint64_t>(value), 8);
+    } else if constexpr (is_chrono_duration<T>) {
+        put(w, value.count());
+    } else if constexpr (is_std_array<T>) {
+        for (auto const& element : value) put(w, element);
+    } else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T>) {
+        for_each_field(value, [&](auto const& field) { put(w, field); });
+    }
+}
+
+template <class T>
+void get(reader& r, T& target, pass const& p);
+
+template <class Machine>
+void get_machine(reader& r, Machine& m, pass const& p) {
+    using model = model_of<Machine>;
+    constexpr auto& tree = model::tree;
+    // The children of the composite that owns each configuration byte.
+    constexpr auto children_by_slot = [] {
+        std::array<int, static_cast<std::size_t>(tree.slots)> children{};
+        for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s)
+            if (tree.slot[s] >= 0) children[static_cast<std::size_t>(tree.slot[s])] = tree.child_count[s];
+        return children;
+    }();
+    if (access::running(m)) r.refuse(restore_error::machine_running, r.position());  // one held in the context
+    auto config = access::configuration(m);
+    for (std::size_t k = 0; k < children_by_slot.size(); ++k)
+        config.active[k] = static_cast<std::uint8_t>(r.get_below(1, static_cast<std::uint64_t>(children_by_slot[k])));
+    auto const clock = duration{static_cast<duration::rep>(r.get(8))};
+    bool const started = r.get_below(1, 2) != 0;
+    auto armed = access::armed(m);
+    for (auto& a : armed) a = duration{static_cast<duration::rep>(r.get(8))};
+    auto const last = static_cast<outcome>(r.get_below(1, outcome_count));
+    // resume_at: this machine's clock continues at the given time, and what it keeps moves with
+    // it. A machine whose clock has not started keeps no time of the caller's: nothing moves.
+    pass const own{p.apply, p.resume, started && p.resume ? difference(*p.resume, clock) : duration{}};
+    get(r, m.context(), own);
+    if (!p.apply) return;
+    access::configuration(m) = config;
+    access::set_clock(m, shifted(clock, own.shift), started);
+    for (std::size_t i = 0; i < armed.size(); ++i) access::armed(m)[i] = shifted(armed[i], own.shift);
+    access::last_outcome(m) = last;
+    access::forget_failure(m);  // the exception of a last outcome `failed` is not saved
+    access::queue(m).clear();
+    access::queue(m).clear_overflow();
+}
+
+template <class T>
+void get(reader& r, T& target, pass const& p) {
+    if constexpr (not_retained<T>) {
+        return;
+    } else if constexpr (is_machine<T>) {
+        get_machine(r, target, p);
+    } else if constexpr (is_channel<T>) {
+        using V = channel_value<T>;
+        // Read into copies, then store both through the channel's own cycle boundary.
+        V pending = target.pending();
+        V current = target.get();
+        pass const into_copies{true, p.resume, p.shift};
+        get(r, pending, into_copies);
+        get(r, current, into_copies);
+        if (!p.apply) return;
+        target.set(current);
+        access::latch(target);
+        access::commit(target);
+        target.set(pending);
+    } else if constexpr (is_timer<T>) {
+        std::size_t const at = r.position();
+        auto const limit = duration{static_cast<duration::rep>(r.get(8))};
+        auto const started = duration{static_cast<duration::rep>(r.get(8))};
+        auto const elapsed = duration{static_cast<duration::rep>(r.get(8))};
+        auto const phase = static_cast<std::uint8_t>(r.get_below(1, 3));
+        bool const expired = r.get_below(1, 2) != 0;
+        // Only what a timer can come to: a limit and an elapsed time not below zero, the flag only
+        // while timing (phase 2), no elapsed time while idle or pending.
+        constexpr std::uint8_t timing = 2;
+        if (limit < duration::zero() || elapsed < duration::zero() || (expired && phase != timing) ||
+            (phase != timing && elapsed != duration::zero()))
+            r.refuse(restore_error::invalid_value, at);
+        if (!p.apply) return;
+        access::set_timer_limit(target, limit);
+        access::set_timer(target, phase, expired, shifted(started, p.shift), elapsed);
+    } else if constexpr (std::is_same_v<T, bool>) {
+        bool const v = r.get_below(1, 2) != 0;
+        if (p.apply) target = v;
+    } else if constexpr (std::is_enum_v<T>) {
+        std::underlying_type_t<T> v{};
+        get(r, v, pass{true, {}, {}});
+        if (p.apply) target = static_cast<T>(v);
+    } else if constexpr (std::is_integral_v<T> && sizeof(T) <= 8) {
+        // Unsigned to signed is modular (C++20): every saved value comes back exactly.
+        auto const v = static_cast<T>(static_cast<std::make_unsigned_t<T>>(r.get(sizeof(T))));
+        if (p.apply) target = v;
+    } else if constexpr (std::is_same_v<T, float>) {
+        auto const v = std::bit_cast<float>(static_cast<std::uint32_t>(r.get(4)));
+        if (p.apply) target = v;
+    } else if constexpr (std::is_same_v<T, double>) {
+        auto const v = std::bit_cast<double>(r.get(8));
+        if (p.apply) target = v;
+    } else if constexpr (is_chrono_duration<T>) {
+        typename T::rep v{};
+        get(r, v, pass{true, {}, {}});
+        if (p.apply) target = T{v};
+    } else if constexpr (is_std_array<T>) {
+        for (auto& element : target) get(r, element, p);
+    } else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T>) {
+        for_each_field(target, [&](auto& field) { get(r, field, p); });
+    }
+}
+
+
+template <class Machine>
+restore_result restore(Machine& m, std::span<std::byte const> bytes, std::optional<duration> resume) {
+    static_assert(is_machine<Machine>, "bsc::restore: the argument must be a bsc::machine or bsc::table_machine");
+    if (access::running(m)) return {restore_error::machine_running, 0};
+    std::size_t const n = bytes.size();
+    std::byte const* in = bytes.data();
+    for (std::size_t i = 0; i < mark.size(); ++i) {
+        if (i >= n) return {restore_error::truncated, n};
+        if (in[i] != static_cast<std::byte>(mark[i])) return {restore_error::not_saved_state, i};
+    }
+    if (n < header_size) return {restore_error::truncated, n};
+    if (read_le(in + 4, 2) != format_version || read_le(in + 6, 2) != 0) return {restore_error::unsupported_version, 4};
+    std::uint64_t const payload = read_le(in + 8, 4);
+    std::uint64_t const total = header_size + payload + trailer_size;
+    if (total > n) return {restore_error::truncated, n};
+    if (total < n) return {restore_error::trailing_bytes, static_cast<std::size_t>(total)};
+    std::size_t const checked = header_size + static_cast<std::size_t>(payload);
+    if (read_le(in + checked, 4) != crc32(in, checked)) return {restore_error::corrupted, checked};
+    if (read_le(in + 12, 8) != chart_fingerprint(m)) return {restore_error::other_chart, 12};
+    if (read_le(in + 20, 8) != layout_fingerprint<Machine>() || payload != machine_size<Machine>())
+        return {restore_error::other_layout, 20};
+
+    // First only check every value, then store them: a refusal changes nothing.
+    reader check{in, header_size, checked};
+    get_machine(check, m, pass{false, {}, {}});
+    if (!check.result()) return check.result();
+    reader store{in, header_size, checked};
+    get_machine(store, m, pass{true, resume, {}});
+    return {};
+}
+
+}  // namespace bsc::detail::retain
+
+namespace bsc {
+
+/// The number of bytes bsc::save writes for a machine of type Machine (header, payload and
+/// checksum): fixed, known at compile time. Fails to compile, with
+/// bsc::error::member_not_retainable<T>, if the context holds a member that cannot be saved.
+template <class Machine>
+inline constexpr std::size_t saved_size =
+    detail::retain::header_size + detail::retain::machine_size<Machine>() + detail::retain::trailer_size;
+
+/// Saves the machine into `out`. Returns the bytes written (saved_size<Machine>), or 0 when
+/// `out` is shorter than that or the machine is running (save was called from one of its guards
+/// or actions, when its state is in flux). Save between dispatches and cycles.
+template <class Machine>
+std::size_t save(Machine const& m, std::span<std::byte> out) {
+    static_assert(detail::is_machine<Machine>, "bsc::save: the argument must be a bsc::machine or bsc::table_machine");
+    constexpr std::size_t size = saved_size<Machine>;
+    if (out.size() < size || detail::access::running(m)) return 0;
+    detail::retain::writer w{out.data()};
+    for (char c : detail::retain::mark) w.put(static_cast<unsigned char>(c), 1);
+    w.put(detail::retain::format_version, 2);
+    w.put(0, 2);
+    w.put(detail::retain::machine_size<Machine>(), 4);
+    w.put(detail::retain::chart_fingerprint(m), 8);
+    w.put(detail::retain::layout_fingerprint<Machine>(), 8);
+    detail::retain::put_machine(w, m);
+    w.put(detail::retain::crc32(out.data(), w.position()), 4);
+    return w.position();
+}
+
+/// Saves the machine into a new vector of saved_size<Machine> bytes; empty when the machine is
+/// running.
+template <class Machine>
+std::vector<std::byte> save(Machine const& m) {
+    std::vector<std::byte> bytes(saved_size<Machine>);
+    bytes.resize(save(m, std::span<std::byte>{bytes}));
+    return bytes;
+}
+
+/// Restores into `m` a machine that bsc::save saved, with the saved time. Everything is checked
+/// before anything changes: on any refusal `m` is left as it was and the result says why.
+template <class Machine>
+restore_result restore(Machine& m, std::span<std::byte const> bytes) {
+    return detail::retain::restore(m, bytes, std::nullopt);
+}
+
+/// As restore(m, bytes), continuing the machine's time at `when.now` (bsc::resume_at).
+template <class Machine>
+restore_result restore(Machine& m, std::span<std::byte const> bytes, resume_at when) {
+    return detail::retain::restore(m, bytes, when.now);
+}
+
+}  // namespace bsc
+#endif  // BSC_SINGLE_INCLUDE_BSC_RETAIN_HPP
+// end include/bsc/retain.hpp
+
+namespace bsc::net::wire {
+
+inline constexpr std::uint8_t format_version = 1;
+inline constexpr std::size_t header_size = 21;
+
+enum class kind : std::uint8_t { value = 'V', progress = 'P', will = 'W' };
+
+struct header {
+    kind what{};
+    std::int64_t step = 0;
+    std::uint64_t fingerprint = 0;
+};
+
+inline void put_header(detail::retain::writer& w, kind what, std::int64_t step, std::uint64_t fingerprint) {
+    w.put('b', 1);
+    w.put('s', 1);
+    w.put('c', 1);
+    w.put(static_cast<std::uint8_t>(what), 1);
+    w.put(format_version, 1);
+    w.put(static_cast<std::uint64_t>(step), 8);
+    w.put(fingerprint, 8);
+}
+
+/// The header of `bytes`, if they start with one of this format's version.
+inline std::optional<header> read_header(std::span<std::byte const> bytes) {
+    if (bytes.size() < header_size) return std::nullopt;
+    auto const* p = bytes.data();
+    if (p[0] != std::byte{'b'} || p[1] != std::byte{'s'} || p[2] != std::byte{'c'}) return std::nullopt;
+    auto const what = static_cast<kind>(p[3]);
+    if (what != kind::value && what != kind::progress && what != kind::will) return std::nullopt;
+    if (static_cast<std::uint8_t>(p[4]) != format_version) return std::nullopt;
+    return header{what, static_cast<std::int64_t>(detail::retain::read_le(p + 5, 8)),
+                  detail::retain::read_le(p + 13, 8)};
+}
+
+/// The fingerprint of actor `Machine`'s output channel `Channel`: its chart, its name, its value's type.
+template <class Machine, auto Channel>
+constexpr std::uint64_t value_fingerprint() {
+    using channel = std::remove_cvref_t<decltype(std::declval<typename Machine::context_type&>().*Channel)>;
+    detail::retain::fingerprint f{detail::retain::chart_fingerprint<Machine>()};
+    f.add(detail::member_name<Channel>());
+    detail::retain::describe<detail::channel_value<channel>>(f);
+    return f.value;
+}
+
+/// A progress message (an actor completed `step`), or a will (`actors` are the node's).
+inline std::vector<std::byte> encode(kind what, std::int64_t step, std::uint64_t fingerprint,
+                                     std::span<std::uint8_t const> actors = {}) {
+    std::vector<std::byte> out(header_size + actors.size());
+    detail::retain::writer w{out.data()};
+    put_header(w, what, step, fingerprint);
+    for (auto a : actors) w.put(a, 1);
+    return out;
+}
+
+/// A value message.
+template <class T>
+std::vector<std::byte> encode_value(std::int64_t step, std::uint64_t fingerprint, T const& value) {
+    std::vector<std::byte> out(header_size + detail::retain::size_of<T>());
+    detail::retain::writer w{out.data()};
+    put_header(w, kind::value, step, fingerprint);
+    detail::retain::put(w, value);
+    return out;
+}
+
+/// Reads a value message's body into `out`; false (and `out` unchanged) if its size or any of
+/// its values is wrong.
+template <class T>
+bool decode_value(std::span<std::byte const> bytes, T& out) {
+    if (bytes.size() != header_size + detail::retain::size_of<T>()) return false;
+    detail::retain::reader check{bytes.data(), header_size, bytes.size()};
+    T value = out;
+    detail::retain::get(check, value, detail::retain::pass{true, std::nullopt, {}});
+    if (check.result().error != restore_error::none) return false;
+    out = value;
+    return true;
+}
+
+}  // namespace bsc::net::wire
+#endif  // BSC_SINGLE_INCLUDE_BSC_NET_WIRE_HPP
+// end include/bsc/net/wire.hpp
+
+namespace bsc::net {
+
+/// How a node runs. Every node of a system must agree on `prefix` and `period`.
+struct node_options {
+    std::string prefix = "bsc";         ///< the system's topics start with it
+    std::string name = "node";          ///< the node's name, unique in the system (its will's topic)
+    std::vector<std::string> actors{};  ///< names of the actors this node runs; empty: all of them
+    duration period = std::chrono::milliseconds{100};  ///< step n runs at time n * period
+    std::int64_t last_step = std::numeric_limits<std::int64_t>::max();  ///< the actors stop after it
+    std::chrono::milliseconds deadline{300};   ///< silence after which a peer is stale
+    std::chrono::milliseconds startup{10000};  ///< how long a peer never heard of is waited for
+    std::chrono::milliseconds heartbeat{50};   ///< the last messages are sent again this often
+    std::chrono::microseconds pace{0};  ///< at least this much wall time per step (0: as fast as inputs allow)
+    std::filesystem::path state_dir{};  ///< where each actor is saved after each step; empty: nowhere
+    std::function<std::chrono::steady_clock::time_point()> clock = [] { return std::chrono::steady_clock::now(); };
+};
+
+/// What a node has done so far.
+struct node_stats {
+    std::uint64_t steps = 0;        ///< actor steps taken
+    std::uint64_t jumps = 0;        ///< steps that skipped ahead to rejoin the peers
+    std::uint64_t stale_steps = 0;  ///< actor steps taken with at least one stale input
+    std::uint64_t published = 0;    ///< messages sent, heartbeats included
+    std::uint64_t received = 0;     ///< messages applied
+    std::uint64_t old = 0;          ///< messages not newer than what was applied (repeats, late ones)
+    std::uint64_t refused = 0;      ///< messages with a wrong header, fingerprint or body
+    std::uint64_t restored = 0;     ///< actors resumed from saved state
+};
+
+namespace detail {
+
+template <auto A, auto B>
+constexpr bool same_member() {
+    if constexpr (std::is_same_v<decltype(A), decltype(B)>)
+        return A == B;
+    else
+        return false;
+}
+
+template <std::size_t I, auto... Members>
+struct nth_member;
+template <auto First, auto... Rest>
+struct nth_member<0, First, Rest...> {
+    static constexpr auto value = First;
+};
+template <std::size_t I, auto First, auto... Rest>
+struct nth_member<I, First, Rest...> : nth_member<I - 1, Rest...> {};
+
+template <class System>
+struct deployment {
+    static_assert(sizeof(System) == 0, "bsc::net::node<System>: System must be a bsc::system<Actors, bsc::order<...>, links...>");
+};
+
+template <class Actors, auto... Steps, class... Links>
+struct deployment<system<Actors, order<Steps...>, Links...>> {
+    static constexpr std::size_t actor_count = sizeof...(Steps);
+    static constexpr std::size_t link_count = sizeof...(Links);
+    static constexpr std::array<std::string_view, actor_count> names{bsc::detail::member_name<Steps>()...};
+
+    template <auto Actor>
+    static constexpr std::size_t place() {
+        std::size_t i = 0, found = actor_count;
+        ((same_member<Actor, Steps>() ? (found = i, ++i) : ++i), ...);
+        return found;
+    }
+    template <std::size_t I>
+    static constexpr auto step_at = nth_member<I, Steps...>::value;
+    template <std::size_t I>
+    using machine_at = std::remove_cvref_t<decltype(std::declval<Actors&>().*nth_member<I, Steps...>::value)>;
+
+    template <class L>
+    using value_of = bsc::detail::channel_value<std::remove_cvref_t<
+        decltype(((std::declval<Actors&>().*L::from_actor).context()).*L::from_channel)>>;
+
+    static constexpr std::array<std::size_t, link_count> from{place<Links::from_actor>()...};
+    static constexpr std::array<std::size_t, link_count> to{place<Links::to_actor>()...};
+    static constexpr std::array<bool, link_count> lossless{std::is_same_v<typename Links::when_stale, bsc::lossless>...};
+    static_assert(((place<Links::from_actor>() < actor_count && place<Links::to_actor>() < actor_count) && ...),
+                  "bsc::net::node: every actor a link names must be in the system's order");
+};
+
+}  // namespace detail
+
+/// One node of a distributed `System` (a bsc::system): runs the actors it hosts on the system it
+/// is given (the other actors of that system are unused) and talks over `transport`.
+/// Requirements: every actor is a bsc::machine whose context bsc::save can store; the value type
+/// of every link crossing nodes can be saved too. Not thread-safe: one thread runs a node.
+template <class System>
+class node {
+    using plan = detail::deployment<System>;
+    static constexpr std::size_t N = plan::actor_count;
+    static constexpr std::size_t L = plan::link_count;
+    using links = typename System::links_type;
+    using time_point = std::chrono::steady_clock::time_point;
+    static constexpr std::int64_t unknown = std::numeric_limits<std::int64_t>::min();
+    // The largest step a message or a saved state may name: far from overflow in n + 1 and in
+    // n * period, and more than 29,000 years of 100 ms steps.
+    static constexpr std::int64_t max_step = std::int64_t{1} << 43;
+    static_assert(N <= 255, "bsc::net::node: a will names the node's actors in one byte each");
+
+public:
+    /// Called after each actor step, with the actor's place in the system's order and the step.
+    std::function<void(std::size_t actor, std::int64_t step)> on_step;
+
+    node(System& sys, transport& t, node_options options) : system_(sys), net_(t), options_(std::move(options)) {
+        if (!valid_topic_part(options_.prefix, true) || !valid_topic_part(options_.name, false))
+            throw std::invalid_argument("bsc::net::node: the prefix and the node's name must not be empty nor hold "
+                                        "'+', '#' or NUL, and the name no '/'");
+        if (options_.period <= duration::zero())
+            throw std::invalid_argument("bsc::net::node: the period must be positive");
+        // Far beyond any use, and far from the clock's overflow.
+        constexpr std::chrono::milliseconds day{24 * 3600 * 1000};
+        options_.deadline = std::clamp(options_.deadline, std::chrono::milliseconds{0}, day);
+        options_.startup = std::clamp(options_.startup, options_.deadline, day);
+        options_.heartbeat = std::clamp(options_.heartbeat, std::chrono::milliseconds{1}, day);
+        options_.last_step = std::clamp<std::int64_t>(options_.last_step, -1, max_step);
+        if (!options_.state_dir.empty()) std::filesystem::create_directories(options_.state_dir);
+        for (std::size_t a = 0; a < N; ++a) {
+            local_[a] = options_.actors.empty() ||
+                        std::find(options_.actors.begin(), options_.actors.end(), plan::names[a]) != options_.actors.end();
+        }
+        for (auto const& name : options_.actors)
+            if (std::find(plan::names.begin(), plan::names.end(), name) == plan::names.end())
+                throw std::invalid_argument("bsc::net::node: the system has no actor named \"" + name + "\"");
+        start_ = options_.clock();
+        for (std::size_t a = 0; a < N; ++a) {
+            peers_[a].completed = local_[a] ? -1 : unknown;
+            // Never heard of: stale once `startup` has passed.
+            peers_[a].heard = start_ + options_.startup - options_.deadline;
+            progress_topic_[a] = options_.prefix + "/progress/" + std::string(plan::names[a]);
+        }
+        link_topics();
+        for (std::size_t a = 0; a < N; ++a)
+            if (local_[a]) restore_actor(a);
+        subscribe();
+        std::vector<std::uint8_t> mine;
+        for (std::size_t a = 0; a < N; ++a)
+            if (local_[a]) mine.push_back(static_cast<std::uint8_t>(a));
+        auto const will = wire::encode(wire::kind::will, 0, system_fingerprint(), mine);
+        net_.set_will(options_.prefix + "/node/" + options_.name, will);
+        for (std::size_t a = 0; a < N; ++a)
+            if (local_[a]) publish_actor(a);
+        last_heartbeat_ = start_;
+    }
+
+    node(node const&) = delete;
+    node& operator=(node const&) = delete;
+
+    /// Applies what has arrived and steps each hosted actor at most once, if it can; when none
+    /// can, waits at most `wait` for a message. Returns the number of actor steps taken. Call it
+    /// in a loop: between calls nothing happens, and no call blocks longer than `wait` (or the
+    /// heartbeat) beyond the transport's poll.
+    std::size_t run_once(std::chrono::milliseconds wait) {
+        receive(std::chrono::milliseconds{0});
+        std::size_t taken = step_ready();
+        if (taken == 0) {
+            auto timeout = std::min(wait, options_.heartbeat);
+            if (paced_until_) {  // an actor waits for its pace, not for a message
+                auto const left = std::chrono::ceil<std::chrono::milliseconds>(*paced_until_ - options_.clock());
+                timeout = std::clamp(left, std::chrono::milliseconds{0}, timeout);
+            }
+            receive(timeout);
+            taken = step_ready();
+        }
+        auto const now = options_.clock();
+        if (now - last_heartbeat_ >= options_.heartbeat) {
+            last_heartbeat_ = now;
+            for (std::size_t a = 0; a < N; ++a)
+                if (local_[a]) resend(a);
+        }
+        return taken;
+    }
+
+    /// Every hosted actor has completed node_options::last_step, and every peer on another node
+    /// linked to them, reader or publisher, has completed it too (or is stale, on a link that is
+    /// not lossless): the node may stop without leaving anyone waiting for its messages.
+    bool finished() const {
+        auto const now = options_.clock();
+        for (std::size_t a = 0; a < N; ++a)
+            if (local_[a] && peers_[a].completed < options_.last_step) return false;
+        for (std::size_t i = 0; i < L; ++i) {
+            auto const p = plan::from[i], c = plan::to[i];
+            if (local_[p] == local_[c]) continue;
+            auto const remote = local_[p] ? c : p;
+            if (peers_[remote].completed < options_.last_step && (plan::lossless[i] || !stale(remote, now)))
+                return false;
+        }
+        return true;
+    }
+
+    /// Lets the hosted actors run up to `step` (node_options::last_step), e.g. to extend a run.
+    void stop_after(std::int64_t step) { options_.last_step = std::clamp<std::int64_t>(step, -1, max_step); }
+
+    /// The actors' names, in the system's order.
+    static constexpr std::span<std::string_view const, N> actor_names() { return plan::names; }
+    /// Whether this node runs the actor at `place` in the system's order.
+    bool hosts(std::size_t place) const { return local_[place]; }
+    /// The last step the actor is known to have completed (-1: none yet; lowest value: never heard of).
+    std::int64_t completed(std::size_t place) const { return peers_[place].completed; }
+    /// Whether the actor at `place` (on another node) is stale now.
+    bool is_stale(std::size_t place) const { return !local_[place] && stale(place, options_.clock()); }
+    /// What each hosted actor that has not finished waits for, e.g. "table waits for step 12 of
+    /// robot (robot.taken)"; empty when none waits. For diagnostics.
+    std::string waiting() const {
+        std::string out;
+        auto const now = options_.clock();
+        for (std::size_t a = 0; a < N; ++a) {
+            if (!local_[a] || peers_[a].completed >= options_.last_step) continue;
+            auto const n = peers_[a].completed + 1;
+            for (std::size_t i = 0; i < L; ++i) {
+                auto const p = plan::from[i], c = plan::to[i];
+                std::string why;
+                if (c == a && p != a) {
+                    auto const needed = p < a ? n : n - 1;
+                    bool const have = local_[p] ? peers_[p].completed >= needed
+                                                : slot_step(i) >= needed && same_step_from(p, a, i);
+                    if (!have && (local_[p] || plan::lossless[i] || !stale(p, now)))
+                        why = "the value of step " + std::to_string(needed) + " of " + std::string(plan::names[p]) +
+                              " (has " + std::to_string(local_[p] ? peers_[p].completed : slot_step(i)) + ")";
+                }
+                if (p == a && c != a && why.empty()) {
+                    auto const needed = c > a ? n - 1 : n;
+                    if (peers_[c].completed < needed && (local_[c] || plan::lossless[i] || !stale(c, now)))
+                        why = std::string(plan::names[c]) + " to complete step " + std::to_string(needed) +
+                              " (has " + std::to_string(peers_[c].completed) + ")";
+                }
+                if (why.empty()) continue;
+                if (!out.empty()) out += "; ";
+                out += std::string(plan::names[a]) + " waits for " + why;
+                break;
+            }
+        }
+        return out;
+    }
+    /// Whether the last step of the hosted actor at `place` read a stale value.
+    bool stepped_stale(std::size_t place) const { return stepped_stale_[place]; }
+    node_stats const& stats() const { return stats_; }
+    System& system() { return system_; }
+    System const& system() const { return system_; }
+
+private:
+    struct peer {
+        std::int64_t completed = unknown;
+        time_point heard{};
+        bool will = false;  // the node's will arrived after its last message
+    };
+    template <class T>
+    struct slot {
+        T value{};
+        std::int64_t step = unknown;
+    };
+    template <class Link>
+    using slot_of = slot<typename plan::template value_of<Link>>;
+    template <class... Ls>
+    static auto slots_of(std::tuple<Ls...>*) -> std::tuple<slot_of<Ls>...>;
+
+    // ---- set-up ---------------------------------------------------------------------------------
+
+    static bool valid_topic_part(std::string const& s, bool slashes) {
+        return !s.empty() && s.find_first_of(std::string("+#\0", 3)) == std::string::npos &&
+               (slashes || s.find('/') == std::string::npos);
+    }
+
+    static constexpr std::uint64_t system_fingerprint() {
+        bsc::detail::retain::fingerprint f;
+        [&]<std::size_t... A>(std::index_sequence<A...>) {
+            ((f.add(plan::names[A]),
+              f.add(bsc::detail::retain::chart_fingerprint<typename plan::template machine_at<A>>())),
+             ...);
+        }(std::make_index_sequence<N>{});
+        // The wiring too: the same charts linked otherwise are another system.
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((f.add(plan::from[I]), f.add(plan::to[I]), f.add(plan::lossless[I] ? 1u : 0u),
+              f.add(bsc::detail::member_name<std::tuple_element_t<I, links>::from_channel>()),
+              f.add(bsc::detail::member_name<std::tuple_element_t<I, links>::to_channel>())),
+             ...);
+        }(std::make_index_sequence<L>{});
+        return f.value;
+    }
+
+    template <std::size_t A>
+    static constexpr std::uint64_t actor_fingerprint() {
+        return bsc::detail::retain::chart_fingerprint<typename plan::template machine_at<A>>();
+    }
+    static constexpr std::array<std::uint64_t, N> actor_fingerprints = []<std::size_t... A>(std::index_sequence<A...>) {
+        return std::array<std::uint64_t, N>{actor_fingerprint<A>()...};
+    }(std::make_index_sequence<N>{});
+
+    template <std::size_t I>
+    static constexpr std::uint64_t link_fingerprint() {
+        using link = std::tuple_element_t<I, links>;
+        return wire::value_fingerprint<typename plan::template machine_at<plan::from[I]>, link::from_channel>();
+    }
+
+    void link_topics() {
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((value_topic_[I] = options_.prefix + "/value/" + std::string(plan::names[plan::from[I]]) + "/" +
+                                std::string(bsc::detail::member_name<std::tuple_element_t<I, links>::from_channel>())),
+             ...);
+        }(std::make_index_sequence<L>{});
+        // One message per channel, whatever the number of links that read it.
+        for (std::size_t i = 0; i < L; ++i) {
+            first_reader_[i] = i;
+            for (std::size_t j = 0; j < i; ++j)
+                if (value_topic_[j] == value_topic_[i]) {
+                    first_reader_[i] = first_reader_[j];
+                    break;
+                }
+        }
+    }
+
+    void subscribe() {
+        std::vector<std::string> done;
+        auto once = [&](std::string const& filter) {
+            if (std::find(done.begin(), done.end(), filter) != done.end()) return;
+            done.push_back(filter);
+            net_.subscribe(filter);
+        };
+        for (std::size_t i = 0; i < L; ++i) {
+            auto const p = plan::from[i], c = plan::to[i];
+            if (local_[c] && !local_[p]) {
+                once(value_topic_[i]);
+                once(progress_topic_[p]);
+                topic_links_[value_topic_[i]].push_back(i);
+            }
+            if (local_[p] && !local_[c]) once(progress_topic_[c]);
+        }
+        for (std::size_t a = 0; a < N; ++a) topic_actor_[progress_topic_[a]] = a;
+        once(options_.prefix + "/node/+");
+    }
+
+    // ---- retained state -------------------------------------------------------------------------
+
+    std::filesystem::path state_file(std::size_t a) const {
+        return options_.state_dir / (std::string(plan::names[a]) + ".bsc");
+    }
+
+    void restore_actor(std::size_t a) {
+        if (options_.state_dir.empty()) return;
+        auto const file = state_file(a);
+        if (!std::filesystem::exists(file)) return;
+        std::ifstream in(file, std::ios::binary);
+        std::vector<char> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        auto const* bytes = reinterpret_cast<std::byte const*>(raw.data());
+        // "bscN", the step, a CRC-32 of the step: bsc::save's own checksum covers the rest.
+        bool const whole = raw.size() >= state_header && std::equal(raw.begin(), raw.begin() + 4, "bscN") &&
+                           bsc::detail::retain::read_le(bytes + 12, 4) == bsc::detail::retain::crc32(bytes + 4, 8);
+        auto const step = whole ? static_cast<std::int64_t>(bsc::detail::retain::read_le(bytes + 4, 8)) : 0;
+        if (!whole || step < -1 || step > max_step)
+            throw std::runtime_error("bsc::net::node: " + file.string() + " is not a saved state of a node's actor");
+        std::span<std::byte const> const saved{bytes + state_header, raw.size() - state_header};
+        restore_result result{};
+        for_actor(a, [&](auto A) { result = bsc::restore(system_.actors.*plan::template step_at<A>, saved); });
+        if (result.error != restore_error::none)
+            throw std::runtime_error("bsc::net::node: cannot resume " + std::string(plan::names[a]) + " from " +
+                                     file.string() + ": " + to_string(result));
+        peers_[a].completed = step;
+        ++stats_.restored;
+    }
+
+    static constexpr std::size_t state_header = 16;
+
+    void save_actor(std::size_t a) {
+        if (options_.state_dir.empty()) return;
+        std::vector<std::byte> bytes(state_header);
+        bsc::detail::retain::writer w{bytes.data()};
+        for (char c : {'b', 's', 'c', 'N'}) w.put(static_cast<unsigned char>(c), 1);
+        w.put(static_cast<std::uint64_t>(peers_[a].completed), 8);
+        w.put(bsc::detail::retain::crc32(bytes.data() + 4, 8), 4);
+        for_actor(a, [&](auto A) {
+            auto const saved = bsc::save(system_.actors.*plan::template step_at<A>);
+            bytes.insert(bytes.end(), saved.begin(), saved.end());
+        });
+        // Written aside, then renamed: a node killed while writing leaves the previous state whole.
+        auto const file = state_file(a);
+        auto const tmp = std::filesystem::path(file.string() + ".tmp");
+        {
+            std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+            out.write(reinterpret_cast<char const*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+            if (!out) throw std::runtime_error("bsc::net::node: cannot write " + tmp.string());
+        }
+        std::filesystem::rename(tmp, file);
+    }
+
+    // ---- receiving ------------------------------------------------------------------------------
+
+    void receive(std::chrono::milliseconds wait) {
+        net_.poll(wait, [&](message const& m) { apply(m); });
+    }
+
+    void apply(message const& m) {
+        auto const h = wire::read_header(m.payload);
+        if (!h) {
+            ++stats_.refused;
+            return;
+        }
+        auto const now = options_.clock();
+        if (h->step < -1 || h->step > max_step) {
+            ++stats_.refused;
+            return;
+        }
+        if (h->what == wire::kind::will) {
+            if (h->fingerprint != system_fingerprint()) {
+                ++stats_.refused;
+                return;
+            }
+            for (std::size_t i = wire::header_size; i < m.payload.size(); ++i) {
+                auto const a = static_cast<std::size_t>(m.payload[i]);
+                if (a < N && !local_[a]) peers_[a].will = true;
+            }
+            ++stats_.received;
+            return;
+        }
+        if (h->what == wire::kind::progress) {
+            auto const it = topic_actor_.find(m.topic);
+            if (it == topic_actor_.end() || local_[it->second] || h->fingerprint != actor_fingerprints[it->second] ||
+                m.payload.size() != wire::header_size) {
+                ++stats_.refused;
+                return;
+            }
+            heard(it->second, h->step, now);
+            return;
+        }
+        auto const it = topic_links_.find(m.topic);
+        if (it == topic_links_.end()) {
+            ++stats_.refused;
+            return;
+        }
+        bool fresh = false, refused = false;
+        for (std::size_t const i : it->second) {
+            for_link(i, [&](auto I) {
+                if (h->fingerprint != link_fingerprint<I>()) {
+                    refused = true;
+                    return;
+                }
+                auto& s = std::get<I>(slots_);
+                if (h->step <= s.step) return;
+                if (!wire::decode_value(m.payload, s.value)) {
+                    refused = true;
+                    return;
+                }
+                s.step = h->step;
+                fresh = true;
+            });
+        }
+        if (refused) {
+            ++stats_.refused;
+            return;
+        }
+        if (!fresh) {
+            ++stats_.old;
+            heard(plan::from[it->second.front()], unknown, now);
+            return;
+        }
+        heard(plan::from[it->second.front()], h->step, now);
+    }
+
+    void heard(std::size_t a, std::int64_t step, time_point now) {
+        auto& p = peers_[a];
+        p.heard = now;
+        p.will = false;
+        if (step > p.completed) {
+            p.completed = step;
+            ++stats_.received;
+        } else if (step != unknown) {
+            ++stats_.old;
+        }
+    }
+
+    bool stale(std::size_t a, time_point now) const {
+        return peers_[a].will || now - peers_[a].heard > options_.deadline;
+    }
+
+    // ---- stepping -------------------------------------------------------------------------------
+
+    // Each hosted actor, in the system's order, steps at most once: the network is read again
+    // before anyone goes further, whatever the staleness of the peers.
+    std::size_t step_ready() {
+        std::size_t taken = 0;
+        paced_until_.reset();
+        for (std::size_t a = 0; a < N; ++a) {
+            if (!local_[a] || peers_[a].completed >= options_.last_step) continue;
+            auto const now = options_.clock();
+            rejoin(a, now);
+            auto const n = peers_[a].completed + 1;
+            bool stale_input = false;
+            if (!ready(a, n, now, stale_input) || !paced(a, n, stale_input, now)) continue;
+            run_step(a, n, now);
+            ++taken;
+        }
+        return taken;
+    }
+
+    bool has_lossless(std::size_t a) const {
+        for (std::size_t i = 0; i < L; ++i)
+            if (plan::lossless[i] && (plan::from[i] == a || plan::to[i] == a)) return true;
+        return false;
+    }
+
+    // An actor without lossless links that finds every peer it hears from on other nodes further
+    // on (it was stale to them, or its node restarted) skips to the furthest step at which those
+    // peers' values are all there, instead of replaying the ones it missed: its completed step
+    // moves forward without stepping, as if it had held its outputs. Never past a remote peer that
+    // is not there yet (that peer may be waiting for it); peers on its own node are in the same
+    // situation and skip alike.
+    void rejoin(std::size_t a, time_point now) {
+        if (has_lossless(a)) return;
+        std::int64_t reach = std::numeric_limits<std::int64_t>::max();
+        bool remote = false;
+        for (std::size_t i = 0; i < L; ++i) {
+            std::size_t const other = plan::from[i] == a ? plan::to[i] : plan::to[i] == a ? plan::from[i] : a;
+            if (other == a || local_[other] || stale(other, now)) continue;
+            if (peers_[other].completed == unknown) return;
+            remote = true;
+            reach = std::min(reach, peers_[other].completed + (other > a ? 1 : 0));
+        }
+        reach = std::min(reach, options_.last_step);
+        if (!remote || reach - 1 <= peers_[a].completed) return;
+        peers_[a].completed = reach - 1;
+        ++stats_.jumps;
+        // Its outputs are held at the skipped steps: say so, or the peers would wait for them.
+        save_actor(a);
+        publish_actor(a);
+    }
+
+    // Whether actor `a` can run step `n`; `stale_input` tells whether it would read a stale value.
+    bool ready(std::size_t a, std::int64_t n, time_point now, bool& stale_input) const {
+        for (std::size_t i = 0; i < L; ++i) {
+            auto const p = plan::from[i], c = plan::to[i];
+            if (c == a && p != a) {  // an input: the publisher's step n if it comes first, else n - 1
+                auto const needed = p < a ? n : n - 1;
+                if (local_[p]) {
+                    if (peers_[p].completed < needed) return false;
+                } else if (slot_step(i) < needed || !same_step_from(p, a, i)) {
+                    if (plan::lossless[i] || !stale(p, now)) return false;
+                    stale_input = true;
+                }
+            }
+            if (p == a && c != a) {  // an output: its reader has read the value about to change
+                auto const needed = c > a ? n - 1 : n;
+                if (peers_[c].completed < needed && (local_[c] || plan::lossless[i] || !stale(c, now)))
+                    return false;
+            }
+        }
+        return true;
+    }
+
+    // The values from one publisher are read at one step: a reader does not mix a channel of step
+    // 12 with another of step 11 (each travels in its own message).
+    bool same_step_from(std::size_t p, std::size_t a, std::size_t i) const {
+        auto const step = slot_step(i);
+        for (std::size_t j = 0; j < L; ++j)
+            if (plan::from[j] == p && plan::to[j] == a && slot_step(j) != step) return false;
+        return true;
+    }
+
+    // The wall clock's say: at least `pace` between two steps of an actor, and, for a step that
+    // reads a stale value, at least the pace or else the period: an actor that goes on without a
+    // peer runs on its own clock, not as fast as the processor allows.
+    bool paced(std::size_t a, std::int64_t n, bool stale_input, time_point now) {
+        auto const gap = stale_input ? (options_.pace.count() > 0 ? std::chrono::duration_cast<std::chrono::steady_clock::duration>(options_.pace)
+                                                                   : std::chrono::duration_cast<std::chrono::steady_clock::duration>(options_.period))
+                                     : std::chrono::duration_cast<std::chrono::steady_clock::duration>(options_.pace);
+        (void)n;
+        if (gap.count() == 0 || !last_step_at_[a]) return true;
+        auto const due = *last_step_at_[a] + gap;
+        if (now >= due) return true;
+        paced_until_ = paced_until_ ? std::min(*paced_until_, due) : due;
+        return false;
+    }
+
+    std::int64_t slot_step(std::size_t i) const {
+        std::int64_t s = unknown;
+        for_link(i, [&](auto I) { s = std::get<I>(slots_).step; });
+        return s;
+    }
+
+    void run_step(std::size_t a, std::int64_t n, time_point now) {
+        bool stale_input = false;
+        for (std::size_t i = 0; i < L; ++i) {
+            if (plan::to[i] != a) continue;
+            for_link(i, [&](auto I) { stale_input = feed<I>(n, now) || stale_input; });
+        }
+        if (stale_input) ++stats_.stale_steps;
+        stepped_stale_[a] = stale_input;
+        for_actor(a, [&](auto A) { (system_.actors.*plan::template step_at<A>).step(n * options_.period); });
+        peers_[a].completed = n;
+        last_step_at_[a] = now;
+        ++stats_.steps;
+        save_actor(a);
+        publish_actor(a);
+        if (on_step) on_step(a, n);
+    }
+
+    // Writes link I's value into its consumer's input; true if the value is a stale one.
+    template <std::size_t I>
+    bool feed(std::int64_t n, time_point now) {
+        using link = std::tuple_element_t<I, links>;
+        constexpr auto p = plan::from[I];
+        constexpr auto c = plan::to[I];
+        auto& target = (system_.actors.*link::to_actor).context().*link::to_channel;
+        if (local_[p]) {
+            target.set(((system_.actors.*link::from_actor).context().*link::from_channel).get());
+            return false;
+        }
+        auto const& s = std::get<I>(slots_);
+        auto const needed = p < c ? n : n - 1;
+        if (s.step >= needed && same_step_from(p, c, I)) {
+            target.set(s.value);
+            return false;
+        }
+        (void)now;
+        if constexpr (requires { link::when_stale::value; }) {
+            target.set(typename plan::template value_of<link>(link::when_stale::value));
+        } else if (s.step != unknown) {
+            target.set(s.value);
+        }
+        return true;
+    }
+
+    // ---- publishing -----------------------------------------------------------------------------
+
+    void publish_actor(std::size_t a) {
+        auto& out = last_sent_[a];
+        out.clear();
+        for (std::size_t i = 0; i < L; ++i) {
+            if (plan::from[i] != a || first_reader_[i] != i) continue;
+            bool remote = false;
+            for (std::size_t j = i; j < L; ++j)
+                remote = remote || (first_reader_[j] == i && !local_[plan::to[j]]);
+            if (!remote) continue;
+            for_link(i, [&](auto I) {
+                using link = std::tuple_element_t<I, links>;
+                auto const& channel = (system_.actors.*link::from_actor).context().*link::from_channel;
+                out.emplace_back(value_topic_[I], wire::encode_value(peers_[a].completed, link_fingerprint<I>(),
+                                                                      channel.get()));
+            });
+        }
+        bool remote_peer = false;
+        for (std::size_t i = 0; i < L; ++i)
+            remote_peer = remote_peer || (plan::from[i] == a && !local_[plan::to[i]]) ||
+                          (plan::to[i] == a && !local_[plan::from[i]]);
+        if (remote_peer)
+            out.emplace_back(progress_topic_[a],
+                             wire::encode(wire::kind::progress, peers_[a].completed, actor_fingerprints[a]));
+        resend(a);
+    }
+
+    void resend(std::size_t a) {
+        for (auto const& [topic, bytes] : last_sent_[a]) {
+            net_.publish(topic, bytes);
+            ++stats_.published;
+        }
+    }
+
+    // ---- dispatch from a runtime index to a compile-time one --------------------------------------
+
+    template <class F>
+    static void for_actor(std::size_t a, F&& f) {
+        [&]<std::size_t... A>(std::index_sequence<A...>) {
+            ((a == A ? (f(std::integral_constant<std::size_t, A>{}), 0) : 0), ...);
+        }(std::make_index_sequence<N>{});
+    }
+    template <class F>
+    static void for_link(std::size_t i, F&& f) {
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((i == I ? (f(std::integral_constant<std::size_t, I>{}), 0) : 0), ...);
+        }(std::make_index_sequence<L>{});
+    }
+
+    System& system_;
+    transport& net_;
+    node_options options_;
+    node_stats stats_{};
+    std::array<bool, N> local_{};
+    std::array<peer, N> peers_{};
+    std::array<std::string, N> progress_topic_{};
+    std::array<std::string, L> value_topic_{};
+    std::array<std::size_t, L> first_reader_{};
+    std::unordered_map<std::string, std::vector<std::size_t>> topic_links_;
+    std::unordered_map<std::string, std::size_t> topic_actor_;
+    decltype(slots_of(static_cast<links*>(nullptr))) slots_{};
+    std::array<std::vector<std::pair<std::string, std::vector<std::byte>>>, N> last_sent_{};
+    time_point start_{};
+    time_point last_heartbeat_{};
+    std::array<std::optional<time_point>, N> last_step_at_{};
+    std::array<bool, N> stepped_stale_{};
+    std::optional<time_point> paced_until_;
+};
+
+}  // namespace bsc::net
+#endif  // BSC_SINGLE_INCLUDE_BSC_NET_NODE_HPP
+// end include/bsc/net/node.hpp
+#endif  // BSC_SINGLE_INCLUDE_BSC_NET_HPP
+// end include/bsc/net.hpp
