@@ -39,6 +39,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <deque>
 #include <functional>
 #include <span>
 #include <string>
@@ -73,6 +74,19 @@ public:
     /// Whether the connection is up now.
     virtual bool connected() const = 0;
 };
+
+/// Hands every message of `inbox` to `deliver`, oldest first, and empties it; returns how many.
+/// Takes each message out before delivering it: `deliver` may publish, and so add to an inbox.
+inline std::size_t deliver_all(std::deque<message>& inbox, std::function<void(message const&)> const& deliver) {
+    std::size_t n = 0;
+    while (!inbox.empty()) {
+        message m = std::move(inbox.front());
+        inbox.pop_front();
+        deliver(m);
+        ++n;
+    }
+    return n;
+}
 
 /// Whether `topic` matches the MQTT topic filter `filter`.
 constexpr bool topic_matches(std::string_view filter, std::string_view topic) {
@@ -126,14 +140,7 @@ public:
         broadcast(message{std::string(topic), {payload.begin(), payload.end()}});
     }
     std::size_t poll(std::chrono::milliseconds, std::function<void(message const&)> const& deliver) override {
-        std::size_t n = 0;
-        while (connected_ && !inbox_.empty()) {
-            message m = std::move(inbox_.front());
-            inbox_.pop_front();
-            deliver(m);
-            ++n;
-        }
-        return n;
+        return connected_ ? deliver_all(inbox_, deliver) : 0;
     }
     bool connected() const override { return connected_; }
 
@@ -1849,7 +1856,8 @@ public:
         std::string const t(topic);
         int const rc = mosquitto_publish(client_, nullptr, t.c_str(), static_cast<int>(payload.size()), payload.data(),
                                          0, false);
-        if (rc == MOSQ_ERR_NO_CONN || rc == MOSQ_ERR_CONN_LOST) drop_connection();
+        // Before CONNACK the library refuses too: that is no loss of a connection.
+        if ((rc == MOSQ_ERR_NO_CONN || rc == MOSQ_ERR_CONN_LOST) && connected_) drop_connection();
     }
     std::size_t poll(std::chrono::milliseconds timeout, std::function<void(message const&)> const& deliver) override {
         auto const until = std::chrono::steady_clock::now() + timeout;
@@ -1874,14 +1882,7 @@ public:
                 }
             }
         } while (inbox_.empty() && std::chrono::steady_clock::now() < until);
-        std::size_t n = 0;
-        while (!inbox_.empty()) {
-            message m = std::move(inbox_.front());
-            inbox_.pop_front();
-            deliver(m);
-            ++n;
-        }
-        return n;
+        return deliver_all(inbox_, deliver);
     }
     bool connected() const override { return connected_; }
 

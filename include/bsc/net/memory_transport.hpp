@@ -40,14 +40,7 @@ public:
         broadcast(message{std::string(topic), {payload.begin(), payload.end()}});
     }
     std::size_t poll(std::chrono::milliseconds, std::function<void(message const&)> const& deliver) override {
-        std::size_t n = 0;
-        while (connected_ && !inbox_.empty()) {
-            message m = std::move(inbox_.front());
-            inbox_.pop_front();
-            deliver(m);
-            ++n;
-        }
-        return n;
+        return connected_ ? deliver_all(inbox_, deliver) : 0;
     }
     bool connected() const override { return connected_; }
 

@@ -80,7 +80,8 @@ public:
         std::string const t(topic);
         int const rc = mosquitto_publish(client_, nullptr, t.c_str(), static_cast<int>(payload.size()), payload.data(),
                                          0, false);
-        if (rc == MOSQ_ERR_NO_CONN || rc == MOSQ_ERR_CONN_LOST) drop_connection();
+        // Before CONNACK the library refuses too: that is no loss of a connection.
+        if ((rc == MOSQ_ERR_NO_CONN || rc == MOSQ_ERR_CONN_LOST) && connected_) drop_connection();
     }
     std::size_t poll(std::chrono::milliseconds timeout, std::function<void(message const&)> const& deliver) override {
         auto const until = std::chrono::steady_clock::now() + timeout;
@@ -105,14 +106,7 @@ public:
                 }
             }
         } while (inbox_.empty() && std::chrono::steady_clock::now() < until);
-        std::size_t n = 0;
-        while (!inbox_.empty()) {
-            message m = std::move(inbox_.front());
-            inbox_.pop_front();
-            deliver(m);
-            ++n;
-        }
-        return n;
+        return deliver_all(inbox_, deliver);
     }
     bool connected() const override { return connected_; }
 

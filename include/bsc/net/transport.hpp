@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <deque>
 #include <functional>
 #include <span>
 #include <string>
@@ -40,6 +41,19 @@ public:
     /// Whether the connection is up now.
     virtual bool connected() const = 0;
 };
+
+/// Hands every message of `inbox` to `deliver`, oldest first, and empties it; returns how many.
+/// Takes each message out before delivering it: `deliver` may publish, and so add to an inbox.
+inline std::size_t deliver_all(std::deque<message>& inbox, std::function<void(message const&)> const& deliver) {
+    std::size_t n = 0;
+    while (!inbox.empty()) {
+        message m = std::move(inbox.front());
+        inbox.pop_front();
+        deliver(m);
+        ++n;
+    }
+    return n;
+}
 
 /// Whether `topic` matches the MQTT topic filter `filter`.
 constexpr bool topic_matches(std::string_view filter, std::string_view topic) {
