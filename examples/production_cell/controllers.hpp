@@ -9,10 +9,14 @@
 //
 // Actors talk to each other with global signals (levels) in a four-phase handshake: the
 // receiver raises `ready`, the sender does its part and raises `done`, the receiver lowers
-// `ready` and the sender lowers `done`. A signal is lowered by the transition that completes its
-// phase, not by an exit action: switching a controller off (which exits every state inside On)
-// leaves its signals as they are, so a partner waits for it instead of reading a lowered signal
-// as the next phase, and the handshake resumes when it is switched on again.
+// `ready` and the sender lowers `done`. The receiver raises `ready` (by a transition inside its
+// waiting state, not by the state's entry action, which history would run again) only once the
+// sender's `done` of the previous round is low, and takes `done` only while its own `ready` is
+// published, so that a partner's signal seen late (a slow or lost peer of a distributed cell) is
+// never taken for the next round. A signal is lowered by the transition that completes its phase, not by an
+// exit action: switching a controller off (which exits every state inside On) leaves its signals
+// as they are, so a partner waits for it instead of reading a lowered signal as the next phase,
+// and the handshake resumes when it is switched on again.
 //
 // The paper names no guard or action. For the diagrams of the actors (docs/composition.md),
 // each is named (bsc::named) after what it reads or writes: a guard after the signals it tests
@@ -106,12 +110,13 @@ inline constexpr auto table_chart = bsc::make_chart<table_ctl>(
         c.lift.set(stop);
         c.turn.set(stop);
     }),
-    bsc::state<TbLoad> + bsc::on_entry / bsc::named<"lift=stop, ready_for_feed=1">([](table_ctl& c) {
-        c.lift.set(stop);
-        c.ready_for_feed.set(true);
-    }),
-    bsc::state<TbLoad>[bsc::named<"fed">([](table_ctl const& c) { return c.fed.get(); })] /
-        bsc::named<"ready_for_feed=0">([](table_ctl& c) { c.ready_for_feed.set(false); }) = bsc::state<TbRise>,
+    bsc::state<TbLoad> + bsc::on_entry / bsc::named<"lift=stop">([](table_ctl& c) { c.lift.set(stop); }),
+    bsc::state<TbLoad>[bsc::named<"!fed && !ready_for_feed">([](table_ctl const& c) {
+        return !c.fed.get() && !c.ready_for_feed.pending();
+    })] / bsc::named<"ready_for_feed=1">([](table_ctl& c) { c.ready_for_feed.set(true); }),
+    bsc::state<TbLoad>[bsc::named<"fed && ready_for_feed">([](table_ctl const& c) {
+        return c.fed.get() && c.ready_for_feed.get();
+    })] / bsc::named<"ready_for_feed=0">([](table_ctl& c) { c.ready_for_feed.set(false); }) = bsc::state<TbRise>,
     bsc::state<TbRise> + bsc::on_entry / bsc::named<"lift=fwd">([](table_ctl& c) { c.lift.set(fwd); }),
     bsc::state<TbRise>[bsc::named<"height == table_top">([](table_ctl const& c) {
         return c.height.get() == table_top;
@@ -123,12 +128,13 @@ inline constexpr auto table_chart = bsc::make_chart<table_ctl>(
     bsc::state<TbTurn>[bsc::named<"angle == table_unload">([](table_ctl const& c) {
         return c.angle.get() == table_unload;
     })] = bsc::state<TbUnload>,
-    bsc::state<TbUnload> + bsc::on_entry / bsc::named<"turn=stop, ready_for_unload=1">([](table_ctl& c) {
-        c.turn.set(stop);
-        c.ready_for_unload.set(true);
-    }),
-    bsc::state<TbUnload>[bsc::named<"taken">([](table_ctl const& c) { return c.taken.get(); })] /
-        bsc::named<"ready_for_unload=0">([](table_ctl& c) { c.ready_for_unload.set(false); }) = bsc::state<TbReturn>,
+    bsc::state<TbUnload> + bsc::on_entry / bsc::named<"turn=stop">([](table_ctl& c) { c.turn.set(stop); }),
+    bsc::state<TbUnload>[bsc::named<"!taken && !ready_for_unload">([](table_ctl const& c) {
+        return !c.taken.get() && !c.ready_for_unload.pending();
+    })] / bsc::named<"ready_for_unload=1">([](table_ctl& c) { c.ready_for_unload.set(true); }),
+    bsc::state<TbUnload>[bsc::named<"taken && ready_for_unload">([](table_ctl const& c) {
+        return c.taken.get() && c.ready_for_unload.get();
+    })] / bsc::named<"ready_for_unload=0">([](table_ctl& c) { c.ready_for_unload.set(false); }) = bsc::state<TbReturn>,
     bsc::state<TbReturn> + bsc::on_entry / bsc::named<"turn=rev">([](table_ctl& c) { c.turn.set(rev); }),
     bsc::state<TbReturn>[bsc::named<"angle == 0">([](table_ctl const& c) {
         return c.angle.get() == 0;
@@ -389,7 +395,8 @@ struct press_ctl {
 /// retracted too.
 template <bool WaitsForArm1>
 inline constexpr auto may_forge = [] {
-    auto const loaded = bsc::named<"loaded">(bsc::guard([](press_ctl const& c) { return c.loaded.get(); }));
+    auto const loaded = bsc::named<"loaded && load_ready">(
+        bsc::guard([](press_ctl const& c) { return c.loaded.get() && c.load_ready.get(); }));
     if constexpr (WaitsForArm1)
         return loaded &&
                bsc::named<"arm1_ext == 0">(bsc::guard([](press_ctl const& c) { return c.arm1_ext.get() == 0; }));
@@ -409,10 +416,10 @@ constexpr auto make_press_chart() {
         bsc::state<Off>[switched_on] = bsc::state<On>,
         bsc::state<On>[!switched_on] = bsc::state<Off>,
         bsc::state<On> + bsc::on_exit / bsc::named<"plate=stop">([](press_ctl& c) { c.plate.set(stop); }),
-        bsc::state<PsWaitLoad> + bsc::on_entry / bsc::named<"plate=stop, load_ready=1">([](press_ctl& c) {
-            c.plate.set(stop);
-            c.load_ready.set(true);
-        }),
+        bsc::state<PsWaitLoad> + bsc::on_entry / bsc::named<"plate=stop">([](press_ctl& c) { c.plate.set(stop); }),
+        bsc::state<PsWaitLoad>[bsc::named<"!loaded && !load_ready">([](press_ctl const& c) {
+            return !c.loaded.get() && !c.load_ready.pending();
+        })] / bsc::named<"load_ready=1">([](press_ctl& c) { c.load_ready.set(true); }),
         bsc::state<PsWaitLoad>[may_forge<WaitsForArm1>] /
             bsc::named<"load_ready=0">([](press_ctl& c) { c.load_ready.set(false); }) = bsc::state<PsForge>,
         bsc::state<PsForge> + bsc::on_entry / bsc::named<"plate=fwd">([](press_ctl& c) { c.plate.set(fwd); }),
@@ -423,12 +430,12 @@ constexpr auto make_press_chart() {
         bsc::state<PsDown>[bsc::named<"level == press_bottom">([](press_ctl const& c) {
             return c.level.get() == press_bottom;
         })] = bsc::state<PsWaitUnload>,
-        bsc::state<PsWaitUnload> + bsc::on_entry / bsc::named<"plate=stop, unload_ready=1">([](press_ctl& c) {
-            c.plate.set(stop);
-            c.unload_ready.set(true);
-        }),
-        bsc::state<PsWaitUnload>[bsc::named<"unloaded && arm2_ext == 0">([](press_ctl const& c) {
-            return c.unloaded.get() && c.arm2_ext.get() == 0;
+        bsc::state<PsWaitUnload> + bsc::on_entry / bsc::named<"plate=stop">([](press_ctl& c) { c.plate.set(stop); }),
+        bsc::state<PsWaitUnload>[bsc::named<"!unloaded && !unload_ready">([](press_ctl const& c) {
+            return !c.unloaded.get() && !c.unload_ready.pending();
+        })] / bsc::named<"unload_ready=1">([](press_ctl& c) { c.unload_ready.set(true); }),
+        bsc::state<PsWaitUnload>[bsc::named<"unloaded && unload_ready && arm2_ext == 0">([](press_ctl const& c) {
+            return c.unloaded.get() && c.unload_ready.get() && c.arm2_ext.get() == 0;
         })] / bsc::named<"unload_ready=0">([](press_ctl& c) { c.unload_ready.set(false); }) = bsc::state<PsUp>,
         bsc::state<PsUp> + bsc::on_entry / bsc::named<"plate=fwd">([](press_ctl& c) { c.plate.set(fwd); }),
         bsc::state<PsUp>[bsc::named<"level == press_middle">([](press_ctl const& c) {

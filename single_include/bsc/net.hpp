@@ -1251,19 +1251,16 @@ public:
 
     /// Every hosted actor has completed node_options::last_step, and every peer on another node
     /// linked to them, reader or publisher, has completed it too (or is stale, on a link that is
-    /// not lossless): the node may stop without leaving anyone waiting for its messages.
+    /// not lossless), and has been so for two heartbeats, in which run_once sent the last messages
+    /// again: the node may stop without leaving anyone waiting for its messages.
     bool finished() const {
         auto const now = options_.clock();
-        for (std::size_t a = 0; a < N; ++a)
-            if (local_[a] && peers_[a].completed < options_.last_step) return false;
-        for (std::size_t i = 0; i < L; ++i) {
-            auto const p = plan::from[i], c = plan::to[i];
-            if (local_[p] == local_[c]) continue;
-            auto const remote = local_[p] ? c : p;
-            if (peers_[remote].completed < options_.last_step && (plan::lossless[i] || !stale(remote, now)))
-                return false;
+        if (!all_done(now)) {
+            done_since_.reset();
+            return false;
         }
-        return true;
+        if (!done_since_) done_since_ = now;
+        return now - *done_since_ >= 2 * options_.heartbeat;
     }
 
     /// Lets the hosted actors run up to `step` (node_options::last_step), e.g. to extend a run.
@@ -1331,6 +1328,19 @@ private:
     using slot_of = slot<typename plan::template value_of<Link>>;
     template <class... Ls>
     static auto slots_of(std::tuple<Ls...>*) -> std::tuple<slot_of<Ls>...>;
+
+    bool all_done(time_point now) const {
+        for (std::size_t a = 0; a < N; ++a)
+            if (local_[a] && peers_[a].completed < options_.last_step) return false;
+        for (std::size_t i = 0; i < L; ++i) {
+            auto const p = plan::from[i], c = plan::to[i];
+            if (local_[p] == local_[c]) continue;
+            auto const remote = local_[p] ? c : p;
+            if (peers_[remote].completed < options_.last_step && (plan::lossless[i] || !stale(remote, now)))
+                return false;
+        }
+        return true;
+    }
 
     // ---- set-up ---------------------------------------------------------------------------------
 
@@ -1764,6 +1774,7 @@ private:
     std::array<std::optional<time_point>, N> last_step_at_{};
     std::array<bool, N> stepped_stale_{};
     std::optional<time_point> paced_until_;
+    mutable std::optional<time_point> done_since_;
 };
 
 }  // namespace bsc::net

@@ -386,8 +386,8 @@ TEST_CASE("exports of the examples: every state and transition, and the structur
         CHECK(has(robot, "state \"On [H*]<br/>exit / turn=stop, arm1=stop, arm2=stop\" as On {\n"));
         CHECK(has(robot, "    TuIdle --> TuTurn : [arm2_full && belt_ready] / task=deposit, target=arm2_to_belt\n"));
         CHECK(has(bsc::to_mermaid(pcell::feed_belt_chart), "FbFed : entry / motor=0, fed=1\n"));
-        CHECK(has(bsc::to_mermaid(pcell::press_chart), "    PsWaitLoad --> PsForge : [loaded && arm1_ext == 0] / load_ready=0\n"));
-        CHECK(has(bsc::to_mermaid(pcell::press_chart_variant<false>), "    PsWaitLoad --> PsForge : [loaded] / load_ready=0\n"));
+        CHECK(has(bsc::to_mermaid(pcell::press_chart), "    PsWaitLoad --> PsForge : [loaded && load_ready && arm1_ext == 0] / load_ready=0\n"));
+        CHECK(has(bsc::to_mermaid(pcell::press_chart_variant<false>), "    PsWaitLoad --> PsForge : [loaded && load_ready] / load_ready=0\n"));
         auto const deposit = bsc::to_scxml(pcell::deposit_belt_chart);
         CHECK(has(deposit, "event=\"after("));
         CHECK(has(deposit, "cond=\"!dropped\""));

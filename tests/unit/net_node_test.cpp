@@ -139,7 +139,9 @@ TEST_CASE("a system deployed on two nodes takes the same steps as in one process
     std::map<std::pair<std::size_t, std::int64_t>, std::vector<std::byte>> deployed;
     n1.on_step = [&](std::size_t, std::int64_t step) { deployed[{0, step}] = bsc::save(s1.actors.control); };
     n2.on_step = [&](std::size_t, std::int64_t step) { deployed[{1, step}] = bsc::save(s2.actors.belt); };
-    for (int i = 0; i < 10000 && !(n1.finished() && n2.finished()); ++i) {
+    // finished() also waits two heartbeats (100 ms of the real clock) after the last step.
+    auto const give_up = std::chrono::steady_clock::now() + 10s;
+    while (!(n1.finished() && n2.finished()) && std::chrono::steady_clock::now() < give_up) {
         n1.run_once(0ms);
         n2.run_once(0ms);
     }

@@ -59,8 +59,12 @@ public:
     }
     ~mosquitto_transport() override {
         if (connected_) {
+            // What is still queued goes out before the goodbye (at most 200 ms).
+            auto const until = std::chrono::steady_clock::now() + std::chrono::milliseconds{200};
+            while (mosquitto_want_write(client_) && std::chrono::steady_clock::now() < until)
+                if (mosquitto_loop_write(client_, 1) != MOSQ_ERR_SUCCESS) break;
             mosquitto_disconnect(client_);
-            mosquitto_loop(client_, 10, 1);
+            mosquitto_loop_write(client_, 1);
         }
         mosquitto_destroy(client_);
     }
