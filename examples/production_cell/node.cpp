@@ -106,6 +106,7 @@ arguments parse(int argc, char** argv) {
     return a;
 }
 
+#if defined(BSC_HAS_MOSQUITTO)
 // ---- The trace: what each actor's step leaves for the checker ------------------------------------
 
 char const* flag(bool b) { return b ? "true" : "false"; }
@@ -190,6 +191,8 @@ std::string trace_line(cell const& s, std::size_t actor, std::int64_t step, bool
     if (name.starts_with("env_")) line += ",\"bricks\":" + json_bricks(bricks);
     return line + "}";
 }
+
+#endif
 
 bsc::net::node_options options_of(arguments const& args) {
     bsc::net::node_options o;
