@@ -128,8 +128,11 @@ def guard_macro(path: Path) -> str:
     return "BSC_SINGLE_" + re.sub(r"[^A-Za-z0-9]", "_", relative(path)).upper()
 
 
-def inline(path: Path, seen: set[Path], out: list[str], guarded: set[Path] = frozenset()) -> None:
-    """Inline path and what it includes; headers in `guarded` get a macro include guard."""
+def inline(path: Path, seen: set[Path], out: list[str], guarded: set[Path] = frozenset(),
+           parts: dict[Path, tuple[str, frozenset[Path]]] | None = None) -> None:
+    """Inline path and what it includes; headers in `guarded` get a macro include guard. An
+    include of another part's entry header (in `parts`: its single header's name and what that
+    holds) becomes an include of that single header, not a second copy of its content."""
     seen.add(path)
     out.append(f"// begin {relative(path)}\n")
     if path in guarded:
@@ -140,8 +143,12 @@ def inline(path: Path, seen: set[Path], out: list[str], guarded: set[Path] = fro
         target = resolve(line, path)
         if target is None:
             out.append(line if line.endswith("\n") else line + "\n")
+        elif parts and target in parts and target not in seen:
+            name, holds = parts[target]
+            out.append(f'#include "{name}"\n')
+            seen |= holds
         elif target not in seen:
-            inline(target, seen, out, guarded)
+            inline(target, seen, out, guarded, parts)
     if path in guarded:
         out.append(f"#endif  // {guard_macro(path)}\n")
     out.append(f"// end {relative(path)}\n")
@@ -161,18 +168,27 @@ def amalgamate() -> list[tuple[str, str]]:
     out = [HEADER]
     inline(ENTRY.resolve(), seen, out)
     in_single_header = frozenset(seen)
-    # Which headers more than one part inlines: those get a guard.
+    # Each part in order: a part that includes an earlier one includes its single header. What
+    # each part holds, and which headers more than one part inlines (those get a guard).
+    parts: dict[Path, tuple[str, frozenset[Path]]] = {}
     uses: dict[Path, int] = {}
-    for entry, _, _ in PARTS:
+    for entry, _, name in PARTS:
         part_seen = set(in_single_header)
-        inline(entry.resolve(), part_seen, [])
-        for path in part_seen - in_single_header:
+        inline(entry.resolve(), part_seen, [], frozenset(), parts)
+        parts[entry.resolve()] = (name, frozenset(part_seen))
+    owned: dict[Path, frozenset[Path]] = {}
+    for entry, _, name in PARTS:
+        own = set(in_single_header)
+        inline(entry.resolve(), own, [], frozenset(), {k: v for k, v in parts.items() if k != entry.resolve()})
+        owned[entry.resolve()] = frozenset(own - in_single_header)
+        for path in owned[entry.resolve()]:
             uses[path] = uses.get(path, 0) + 1
     shared = frozenset(path for path, count in uses.items() if count > 1)
     results = [("bsc.hpp", "".join(out))]
     for entry, header, name in PARTS:
         text = [header]
-        inline(entry.resolve(), set(in_single_header), text, shared)
+        earlier = {k: v for k, v in parts.items() if k != entry.resolve()}
+        inline(entry.resolve(), set(in_single_header), text, shared, earlier)
         results.append((name, "".join(text)))
     return results
 

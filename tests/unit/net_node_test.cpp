@@ -172,6 +172,7 @@ TEST_CASE("an actor waits for its inputs and its readers, and goes on without a 
     d.control_node.stop_after(10);
     d.settle();
     CHECK(d.control_node.completed(0) == 6);  // step 6 reads the belt's step 5, which arrived; step 7 waits
+    CHECK(d.control_node.waiting() == "control waits for belt to complete step 6 (has 5)");
     d.now += 299ms;
     CHECK(d.control_node.run_once(0ms) == 0);  // not yet stale
     CHECK_FALSE(d.control_node.is_stale(1));

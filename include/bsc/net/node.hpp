@@ -254,29 +254,11 @@ public:
         auto const now = options_.clock();
         for (std::size_t a = 0; a < N; ++a) {
             if (!local_[a] || peers_[a].completed >= options_.last_step) continue;
-            auto const n = peers_[a].completed + 1;
-            for (std::size_t i = 0; i < L; ++i) {
-                auto const p = plan::from[i], c = plan::to[i];
-                std::string why;
-                if (c == a && p != a) {
-                    auto const needed = p < a ? n : n - 1;
-                    bool const have = local_[p] ? peers_[p].completed >= needed
-                                                : slot_step(i) >= needed && same_step_from(p, a, i);
-                    if (!have && (local_[p] || plan::lossless[i] || !stale(p, now)))
-                        why = "the value of step " + std::to_string(needed) + " of " + std::string(plan::names[p]) +
-                              " (has " + std::to_string(local_[p] ? peers_[p].completed : slot_step(i)) + ")";
-                }
-                if (p == a && c != a && why.empty()) {
-                    auto const needed = c > a ? n - 1 : n;
-                    if (peers_[c].completed < needed && (local_[c] || plan::lossless[i] || !stale(c, now)))
-                        why = std::string(plan::names[c]) + " to complete step " + std::to_string(needed) +
-                              " (has " + std::to_string(peers_[c].completed) + ")";
-                }
-                if (why.empty()) continue;
-                if (!out.empty()) out += "; ";
-                out += std::string(plan::names[a]) + " waits for " + why;
-                break;
-            }
+            std::string why;
+            bool stale_input = false;
+            if (ready(a, peers_[a].completed + 1, now, stale_input, &why)) continue;
+            if (!out.empty()) out += "; ";
+            out += std::string(plan::names[a]) + " waits for " + why;
         }
         return out;
     }
@@ -552,11 +534,13 @@ private:
         return taken;
     }
 
-    bool has_lossless(std::size_t a) const {
+    // The actors with a lossless link: they never jump.
+    static constexpr std::array<bool, N> has_lossless = [] {
+        std::array<bool, N> any{};
         for (std::size_t i = 0; i < L; ++i)
-            if (plan::lossless[i] && (plan::from[i] == a || plan::to[i] == a)) return true;
-        return false;
-    }
+            if (plan::lossless[i]) any[plan::from[i]] = any[plan::to[i]] = true;
+        return any;
+    }();
 
     // An actor without lossless links that finds every peer it hears from on other nodes further
     // on (it was stale to them, or its node restarted) skips to the furthest step at which those
@@ -565,7 +549,7 @@ private:
     // is not there yet (that peer may be waiting for it); peers on its own node are in the same
     // situation and skip alike.
     void rejoin(std::size_t a, time_point now) {
-        if (has_lossless(a)) return;
+        if (has_lossless[a]) return;
         std::int64_t reach = std::numeric_limits<std::int64_t>::max();
         bool remote = false;
         for (std::size_t i = 0; i < L; ++i) {
@@ -584,23 +568,32 @@ private:
         publish_actor(a);
     }
 
-    // Whether actor `a` can run step `n`; `stale_input` tells whether it would read a stale value.
-    bool ready(std::size_t a, std::int64_t n, time_point now, bool& stale_input) const {
+    // Whether actor `a` can run step `n`; `stale_input` tells whether it would read a stale value,
+    // and `why`, if given, what it waits for when it cannot.
+    bool ready(std::size_t a, std::int64_t n, time_point now, bool& stale_input, std::string* why = nullptr) const {
         for (std::size_t i = 0; i < L; ++i) {
             auto const p = plan::from[i], c = plan::to[i];
             if (c == a && p != a) {  // an input: the publisher's step n if it comes first, else n - 1
                 auto const needed = p < a ? n : n - 1;
-                if (local_[p]) {
-                    if (peers_[p].completed < needed) return false;
-                } else if (slot_step(i) < needed || !same_step_from(p, a, i)) {
-                    if (plan::lossless[i] || !stale(p, now)) return false;
+                auto const has = local_[p] ? peers_[p].completed : slot_step(i);
+                if (has < needed || (!local_[p] && !same_step_from(p, a, i))) {
+                    if (local_[p] || plan::lossless[i] || !stale(p, now)) {
+                        if (why)
+                            *why = "the value of step " + std::to_string(needed) + " of " +
+                                   std::string(plan::names[p]) + " (has " + std::to_string(has) + ")";
+                        return false;
+                    }
                     stale_input = true;
                 }
             }
             if (p == a && c != a) {  // an output: its reader has read the value about to change
                 auto const needed = c > a ? n - 1 : n;
-                if (peers_[c].completed < needed && (local_[c] || plan::lossless[i] || !stale(c, now)))
+                if (peers_[c].completed < needed && (local_[c] || plan::lossless[i] || !stale(c, now))) {
+                    if (why)
+                        *why = std::string(plan::names[c]) + " to complete step " + std::to_string(needed) +
+                               " (has " + std::to_string(peers_[c].completed) + ")";
                     return false;
+                }
             }
         }
         return true;
