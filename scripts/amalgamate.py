@@ -7,8 +7,10 @@ all other includes are kept as they are. The opt-in parts, the explorer (include
 (include/bsc/export.hpp), the logger (include/bsc/logger.hpp), the retentive state
 (include/bsc/retain.hpp), the VCD recorder (include/bsc/vcd.hpp) and the distributed
 systems (include/bsc/net.hpp, and include/bsc/mqtt.hpp over MQTT), become files of
-their own that include the first and add only what it lacks; a header two of them
-share is guarded by a macro, so that they can be included together. The output is
+their own that include the first and add only what it lacks; a part whose entry
+includes another part's entry includes that part's single header instead of a copy of
+it (net.hpp includes retain.hpp, mqtt.hpp includes net.hpp); a header two of them
+share otherwise is guarded by a macro, so that they can be included together. The output is
 deterministic so that it can be checked in and verified with --check.
 """
 
