@@ -485,7 +485,7 @@ void get_machine(reader& r, Machine& m, pass const& p) {
     access::configuration(m) = config;
     access::set_clock(m, shifted(clock, own.shift), started);
     for (std::size_t i = 0; i < armed.size(); ++i) access::armed(m)[i] = shifted(armed[i], own.shift);
-    access::last_outcome(m) = last;
+    access::set_last_outcome(m, last);
     access::forget_failure(m);  // the exception of a last outcome `failed` is not saved
     access::queue(m).clear();
     access::queue(m).clear_overflow();

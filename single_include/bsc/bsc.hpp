@@ -714,8 +714,40 @@ template <class A, class Ctx, class Raise>
 inline constexpr bool state_action_callable =
     std::is_invocable_v<A const&, Ctx&, Raise&> || std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
 
+// Whether the call these helpers make cannot throw: the form they pick is noexcept. A chart
+// none of whose guards and actions can throw needs no record of failures (runtime/driver.hpp).
 template <class G, class Ctx, class E>
-constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) {
+constexpr bool guard_nothrow() {
+    if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&, E const&>)
+        return std::is_nothrow_invocable_r_v<bool, G const&, Ctx const&, E const&>;
+    else if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&>)
+        return std::is_nothrow_invocable_r_v<bool, G const&, Ctx const&>;
+    else
+        return std::is_nothrow_invocable_r_v<bool, G const&>;
+}
+template <class A, class Ctx, class E, class Raise>
+constexpr bool action_nothrow() {
+    if constexpr (std::is_invocable_v<A const&, Ctx&, E const&, Raise&>)
+        return std::is_nothrow_invocable_v<A const&, Ctx&, E const&, Raise&>;
+    else if constexpr (std::is_invocable_v<A const&, Ctx&, E const&>)
+        return std::is_nothrow_invocable_v<A const&, Ctx&, E const&>;
+    else if constexpr (std::is_invocable_v<A const&, Ctx&>)
+        return std::is_nothrow_invocable_v<A const&, Ctx&>;
+    else
+        return std::is_nothrow_invocable_v<A const&>;
+}
+template <class A, class Ctx, class Raise>
+constexpr bool state_action_nothrow() {
+    if constexpr (std::is_invocable_v<A const&, Ctx&, Raise&>)
+        return std::is_nothrow_invocable_v<A const&, Ctx&, Raise&>;
+    else if constexpr (std::is_invocable_v<A const&, Ctx&>)
+        return std::is_nothrow_invocable_v<A const&, Ctx&>;
+    else
+        return std::is_nothrow_invocable_v<A const&>;
+}
+
+template <class G, class Ctx, class E>
+constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) noexcept(guard_nothrow<G, Ctx, E>()) {
     if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&, E const&>)
         return static_cast<bool>(g(ctx, e));
     else if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&>)
@@ -727,7 +759,7 @@ constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) {
 }
 
 template <class A, class Ctx, class E, class Raise>
-constexpr void call_action(A const& a, Ctx& ctx, E const& e, Raise& raise) {
+constexpr void call_action(A const& a, Ctx& ctx, E const& e, Raise& raise) noexcept(action_nothrow<A, Ctx, E, Raise>()) {
     if constexpr (std::is_invocable_v<A const&, Ctx&, E const&, Raise&>)
         a(ctx, e, raise);
     else if constexpr (std::is_invocable_v<A const&, Ctx&, E const&>)
@@ -741,7 +773,7 @@ constexpr void call_action(A const& a, Ctx& ctx, E const& e, Raise& raise) {
 }
 
 template <class A, class Ctx, class Raise>
-constexpr void call_state_action(A const& a, Ctx& ctx, Raise& raise) {
+constexpr void call_state_action(A const& a, Ctx& ctx, Raise& raise) noexcept(state_action_nothrow<A, Ctx, Raise>()) {
     if constexpr (std::is_invocable_v<A const&, Ctx&, Raise&>)
         a(ctx, raise);
     else if constexpr (std::is_invocable_v<A const&, Ctx&>)
@@ -764,18 +796,19 @@ concept bsc_action = std::is_base_of_v<action_base, A>;
 
 template <class F>
 struct action_fn : action_base {
-    F fn;
+    [[no_unique_address]] F fn;
     template <class Ctx, class E, class Raise>
-    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const {
+    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const noexcept(noexcept(call_action(fn, ctx, e, raise))) {
         call_action(fn, ctx, e, raise);
     }
 };
 
 template <class... As>
 struct action_seq : action_base {
-    std::tuple<As...> actions;
+    [[no_unique_address]] std::tuple<As...> actions;
     template <class Ctx, class E, class Raise>
-    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const {
+    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const
+        noexcept((std::is_nothrow_invocable_v<As const&, Ctx&, E const&, Raise&> && ...)) {
         std::apply([&](auto const&... a) { (a(ctx, e, raise), ...); }, actions);
     }
 };
@@ -809,7 +842,7 @@ constexpr auto operator,(L l, R r) {
 
 struct no_action {
     template <class Ctx, class E, class Raise>
-    constexpr void operator()(Ctx&, E const&, Raise&) const {}
+    constexpr void operator()(Ctx&, E const&, Raise&) const noexcept {}
 };
 
 // The event a bsc action sees when it runs as an entry or exit action.
@@ -818,9 +851,16 @@ struct state_change {};
 // Entry and exit actions see the context (and the raise queue), never an event.
 template <class A>
 struct state_action {
-    A fn;
+    [[no_unique_address]] A fn;
     template <class Ctx, class Raise>
-    constexpr void operator()(Ctx& ctx, Raise& raise) const {
+    static constexpr bool nothrow() {
+        if constexpr (bsc_action<A>)
+            return std::is_nothrow_invocable_v<A const&, Ctx&, state_change const&, Raise&>;
+        else
+            return state_action_nothrow<A, Ctx, Raise>();
+    }
+    template <class Ctx, class Raise>
+    constexpr void operator()(Ctx& ctx, Raise& raise) const noexcept(nothrow<Ctx, Raise>()) {
         if constexpr (bsc_action<A>)
             fn(ctx, state_change{}, raise);
         else
@@ -875,7 +915,7 @@ constexpr auto seq(Fs... fs) {
 /// the current step, before dispatch returns.
 template <class E>
 constexpr auto raise(E e) {
-    return action([e](auto&, auto const&, auto& queue) { queue(e); });
+    return action([e](auto&, auto const&, auto& queue) noexcept(noexcept(queue(e))) { queue(e); });
 }
 
 }  // namespace bsc
@@ -897,38 +937,38 @@ concept bsc_guard = std::is_base_of_v<guard_base, G>;
 
 template <class F>
 struct guard_fn : guard_base {
-    F fn;
+    [[no_unique_address]] F fn;
     template <class Ctx, class E>
-    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+    constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(call_guard(fn, ctx, e))) {
         return call_guard(fn, ctx, e);
     }
 };
 
 template <class G>
 struct not_guard : guard_base {
-    G g;
+    [[no_unique_address]] G g;
     template <class Ctx, class E>
-    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+    constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(!g(ctx, e))) {
         return !g(ctx, e);
     }
 };
 
 template <class L, class R>
 struct and_guard : guard_base {
-    L l;
-    R r;
+    [[no_unique_address]] L l;
+    [[no_unique_address]] R r;
     template <class Ctx, class E>
-    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+    constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(l(ctx, e) && r(ctx, e))) {
         return l(ctx, e) && r(ctx, e);
     }
 };
 
 template <class L, class R>
 struct or_guard : guard_base {
-    L l;
-    R r;
+    [[no_unique_address]] L l;
+    [[no_unique_address]] R r;
     template <class Ctx, class E>
-    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+    constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(l(ctx, e) || r(ctx, e))) {
         return l(ctx, e) || r(ctx, e);
     }
 };
@@ -944,7 +984,7 @@ constexpr auto as_guard(G g) {
 
 struct no_guard {
     template <class Ctx, class E>
-    constexpr bool operator()(Ctx const&, E const&) const {
+    constexpr bool operator()(Ctx const&, E const&) const noexcept {
         return true;
     }
 };
@@ -1008,13 +1048,19 @@ struct timeout_trigger {
 /// The target of an internal transition: no exit, no entry.
 struct no_target {};
 
-struct row_base {};
+// What marks a row. A base of its own for each row type: rows whose guard, action and trigger
+// are empty are empty themselves, and the tuple of a chart's rows can then take no space at
+// all, which it could not if every row had the same (empty) base at a distinct address.
+template <class Row>
+struct row_base {
+    using bsc_row_type = Row;
+};
 
 template <class Trigger, class G, class A>
 struct trigger_spec {
     [[no_unique_address]] Trigger trigger;
-    G guard;
-    A action;
+    [[no_unique_address]] G guard;
+    [[no_unique_address]] A action;
     template <class A2>
         requires std::is_same_v<A, no_action>
     constexpr auto operator/(A2 a) const {
@@ -1053,14 +1099,14 @@ struct timeout_ref {
 };
 
 template <class S, class Trigger, class G, class A, class T>
-struct transition_row : row_base {
+struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
     using source = S;
     using trigger = Trigger;
     using target = T;
     static constexpr bool guarded = !std::is_same_v<G, no_guard>;
     [[no_unique_address]] Trigger trigger_value;
-    G guard;
-    A action;
+    [[no_unique_address]] G guard;
+    [[no_unique_address]] A action;
 
     template <class T2>
         requires std::is_same_v<T, no_target>
@@ -1077,11 +1123,11 @@ struct transition_row : row_base {
 
 template <class A>
 struct entry_spec {
-    A action;
+    [[no_unique_address]] A action;
 };
 template <class A>
 struct exit_spec {
-    A action;
+    [[no_unique_address]] A action;
 };
 struct entry_keyword {
     template <class A>
@@ -1097,18 +1143,21 @@ struct exit_keyword {
 };
 
 template <class S, class A>
-struct entry_row : row_base {
+struct entry_row : row_base<entry_row<S, A>> {
     using source = S;
-    A action;
+    [[no_unique_address]] A action;
 };
 template <class S, class A>
-struct exit_row : row_base {
+struct exit_row : row_base<exit_row<S, A>> {
     using source = S;
-    A action;
+    [[no_unique_address]] A action;
 };
 
 template <class R>
-inline constexpr bool is_row = std::is_base_of_v<row_base, R>;
+inline constexpr bool is_row = requires {
+    typename R::bsc_row_type;
+    requires std::is_same_v<typename R::bsc_row_type, R>;
+};
 template <class R>
 inline constexpr bool is_transition_row = false;
 template <class S, class Tr, class G, class A, class T>
@@ -2099,10 +2148,10 @@ struct named_action : A, Name {};
 /// the longest argument list it accepts.
 template <class Name, class F>
 struct named_callable : Name {
-    F fn;
+    [[no_unique_address]] F fn;
     template <class... Args>
         requires std::is_invocable_v<F const&, Args...>
-    constexpr decltype(auto) operator()(Args&&... args) const {
+    constexpr decltype(auto) operator()(Args&&... args) const noexcept(std::is_nothrow_invocable_v<F const&, Args...>) {
         return fn(std::forward<Args>(args)...);
     }
 };
@@ -2445,7 +2494,7 @@ public:
 
     /// Raises e: queues it for processing after the current step. False if the queue is full.
     template <class E>
-    constexpr bool operator()(E const& e) {
+    constexpr bool operator()(E const& e) noexcept(std::is_nothrow_copy_constructible_v<E>) {
         if constexpr (index_in<E, Es...>() < 0) {
             detail::report<error::raised_event_not_in_chart<E>>();
             return false;
@@ -2495,7 +2544,7 @@ template <class... Es>
 class event_queue<0, type_list<Es...>> {
 public:
     template <class E>
-    constexpr bool operator()(E const&) {
+    constexpr bool operator()(E const&) noexcept {
         overflowed_ = true;
         return false;
     }
@@ -2518,7 +2567,7 @@ template <class Events>
 class no_event_queue {
 public:
     template <class E>
-    constexpr bool operator()(E const&) {  // never called: no action takes the raise argument
+    constexpr bool operator()(E const&) noexcept {  // never called: no action takes the raise argument
         return false;
     }
     static constexpr bool empty() { return true; }
@@ -3745,7 +3794,7 @@ struct access {
     // Inside a dispatch, a cycle or the construction: the machine's data is in flux.
     template <class M>
     static constexpr bool running(M const& m) {
-        return driver_of(m).running_;
+        return driver_of(m).running();
     }
     // Forgets the exception of the last failed run (a restored machine's last run was not its own).
     template <class M>
@@ -3759,8 +3808,8 @@ struct access {
         return driver_of(m).armed_;
     }
     template <class M>
-    static constexpr auto& last_outcome(M& m) {
-        return driver_of(m).last_;
+    static constexpr void set_last_outcome(M& m, outcome last) {
+        driver_of(m).record(last);
     }
     template <class M>
     static constexpr auto& queue(M& m) {
@@ -4892,6 +4941,88 @@ inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
 // The decoder of dispatch_by_name when none is given: builds no event (each is default-constructed).
 struct no_decoder {};
 
+// Whether a row's guard or action can throw, called as a machine calls it: a transition's
+// guard with (context, event) and its action with (context, event, queue), an entry or exit
+// action with (context, queue).
+template <class Context, class Queue, class Row>
+struct row_nothrow;
+template <class Context, class Queue, class S, class Trigger, class G, class A, class T>
+struct row_nothrow<Context, Queue, transition_row<S, Trigger, G, A, T>> {
+    using row = transition_row<S, Trigger, G, A, T>;
+    using event = std::conditional_t<std::is_void_v<typename trigger_event<row>::type>, eventless,
+                                     typename trigger_event<row>::type>;
+    static constexpr bool value = std::is_nothrow_invocable_v<G const&, Context const&, event const&> &&
+                                  std::is_nothrow_invocable_v<A const&, Context&, event const&, Queue&>;
+};
+template <class Context, class Queue, class S, class A>
+struct row_nothrow<Context, Queue, entry_row<S, A>> {
+    static constexpr bool value = std::is_nothrow_invocable_v<A const&, Context&, Queue&>;
+};
+template <class Context, class Queue, class S, class A>
+struct row_nothrow<Context, Queue, exit_row<S, A>> {
+    static constexpr bool value = std::is_nothrow_invocable_v<A const&, Context&, Queue&>;
+};
+
+// Whether any guard or action of the chart can throw. If none can (each is noexcept, or the
+// code is built without exceptions), a machine keeps no record of failures and never checks
+// for one: containing failures costs nothing where nothing can fail.
+template <class Model, class Queue>
+constexpr bool chart_may_throw() {
+#if defined(__cpp_exceptions)
+    return []<class... Rows>(type_list<Rows...>) {
+        return !(row_nothrow<typename Model::chart_context, Queue, Rows>::value && ...);
+    }(typename Model::row_types{});
+#else
+    return false;
+#endif
+}
+
+// Whether a chart holds no data at all: each row is empty (its trigger, guard and action
+// carry no value: no delay, no captures) and can be made again from nothing. A machine of
+// such a chart stores no copy of it; it calls the rows of stateless_chart instead.
+template <class Chart, class Rows = typename Chart::row_types>
+inline constexpr bool is_stateless_chart = false;
+template <class Chart, class... Rows>
+inline constexpr bool is_stateless_chart<Chart, type_list<Rows...>> =
+    ((std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>) && ...) && std::is_default_constructible_v<Chart>;
+template <class Chart>
+inline constexpr Chart stateless_chart{};
+
+// The entry times of a chart without timeouts: none, and unlike std::array<duration, 0>, no
+// byte. (No index is ever valid; operator[] exists for code that loops over zero slots.)
+struct no_timeout_slots {
+    static constexpr std::size_t size() { return 0; }
+    constexpr duration* begin() { return nullptr; }
+    constexpr duration* end() { return nullptr; }
+    constexpr duration const* begin() const { return nullptr; }
+    constexpr duration const* end() const { return nullptr; }
+    constexpr duration& operator[](std::size_t) const { return unused; }
+
+private:
+    static inline duration unused{};
+};
+template <std::size_t Slots>
+using timeout_slots = std::conditional_t<Slots == 0, no_timeout_slots, std::array<duration, Slots>>;
+
+// A member handed out by reference (the context, the observer): no space when T is empty, and
+// otherwise T whole. A [[no_unique_address]] T itself could lend its tail padding to the next
+// members, and an assignment through the reference would then overwrite them.
+template <class T, bool Empty = std::is_empty_v<T>>
+struct whole {
+    T value;
+};
+template <class T>
+struct whole<T, true> {
+    [[no_unique_address]] T value;
+};
+
+// The record of failures of a machine none of whose guards and actions can throw.
+struct no_failure_slot {
+    constexpr explicit operator bool() const { return false; }
+    constexpr void reset() {}
+    static std::exception_ptr get() { return nullptr; }
+};
+
 template <class Backend, class Chart, class Policy, class Observer, class Queue>
 class driver : public machine_base {
 protected:
@@ -4922,15 +5053,22 @@ public:
     /// reported and ignored.
     constexpr step_report step(duration now) {
         step_report report;
-        if (running_) {
+        if (running()) {
             report.status = outcome::reentrant;
             return report;
         }
-        run_guard const guard{running_};
         if (halted()) {
-            report.status = last_ = outcome::halted;
+            report.status = record(outcome::halted);
             return report;
         }
+        mark_running();
+        report.status = end_run(run_to_end([&] { return cycle(now, report); }));
+        return report;
+    }
+
+private:
+    // The cycle of step(now), which has marked the machine running; returns its outcome.
+    constexpr outcome cycle(duration now, step_report& report) {
         if (!clock_started_) {
             // The clock starts at the first cycle, wherever the caller's time starts; what was
             // armed before it (at construction, by a dispatch) counts from this cycle too.
@@ -4942,18 +5080,18 @@ public:
         } else {
             clock_ = now;
         }
-        notify<model, Observer>::cycle_begins(observer_, clock_);
-        update_timers(context_, clock_);
-        latch_inputs(context_);
+        notify<model, Observer>::cycle_begins(observer_.value, clock_);
+        update_timers(context_.value, clock_);
+        latch_inputs(context_.value);
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
-        report.status = last_ = drain_queue(report.transitions > 0);
-        commit_outputs(context_);
-        notify<model, Observer>::cycle_ends(observer_);
-        report.status = last_ = conclude(last_);
-        return report;
+        outcome const drained = drain_queue(report.transitions > 0);
+        commit_outputs(context_.value);
+        notify<model, Observer>::cycle_ends(observer_.value);
+        return drained;
     }
 
+public:
     /// The time of the last cycle (the machine's clock; zero before the first cycle).
     constexpr duration now() const { return clock_; }
 
@@ -4975,8 +5113,9 @@ public:
     constexpr outcome dispatch(E const& e, allow_unhandled_t) {
         constexpr int trigger = model::template trigger_of<E>;
         if constexpr (trigger < 0) {
-            if (!running_ && !halted()) notify<model, Observer>::dispatching(observer_, e);
-            return last_ = outcome::ignored;
+            if (running()) return outcome::ignored;  // inside a run: nothing to record
+            if (!halted()) notify<model, Observer>::dispatching(observer_.value, e);
+            return record(outcome::ignored);
         } else {
             return process<trigger>(e);
         }
@@ -4996,8 +5135,8 @@ public:
     /// As dispatch_by_name, for the event numbered `number` (bsc::event_set<Chart>::number_of).
     template <class Decode = no_decoder>
     constexpr outcome dispatch_by_number(std::size_t number, Decode&& decode = {}) {
-        if (running_) return outcome::reentrant;
-        if (number >= event_set<Chart>::size) return last_ = outcome::unknown_event;
+        if (running()) return outcome::reentrant;
+        if (number >= event_set<Chart>::size) return record(outcome::unknown_event);
         if constexpr (event_set<Chart>::size > 0)
             return event_set<Chart>::visit(number, [&]<class E>(std::type_identity<E> event) {
                 if constexpr (std::is_invocable_r_v<E, Decode&, std::type_identity<E>>) {
@@ -5010,7 +5149,7 @@ public:
                 }
             });
         else
-            return (void)decode, last_ = outcome::unknown_event;  // not reached: no number is below 0
+            return (void)decode, record(outcome::unknown_event);  // not reached: no number is below 0
     }
 
     /// True if state S is active.
@@ -5043,38 +5182,56 @@ public:
     }
 
     /// The outcome of the last dispatch (or of construction).
-    constexpr outcome last_outcome() const { return last_; }
+    constexpr outcome last_outcome() const { return static_cast<outcome>(bits(status_) & ~running_bit); }
 
     /// The exception of the last dispatch, cycle or construction whose outcome was
     /// outcome::failed (a policy whose rethrow_failures is false); null otherwise.
     std::exception_ptr last_failure() const {
-        if constexpr (!Policy::rethrow_failures)
-            if (last_ == outcome::failed) return reported_.get();
+        if constexpr (!Policy::rethrow_failures && may_throw)
+            if (last_outcome() == outcome::failed) return reported_.get();
         return nullptr;
     }
 
-    constexpr context_type& context() { return context_; }
-    constexpr context_type const& context() const { return context_; }
+    constexpr context_type& context() { return context_.value; }
+    constexpr context_type const& context() const { return context_.value; }
     constexpr configuration_type const& active_configuration() const { return config_; }
-    constexpr Observer& observer() { return observer_; }
-    constexpr Observer const& observer() const { return observer_; }
+    constexpr Observer& observer() { return observer_.value; }
+    constexpr Observer const& observer() const { return observer_.value; }
 
 protected:
     constexpr driver(Chart const& chart, context_type context, Observer observer)
-        : chart_(chart), context_(std::move(context)), observer_(std::move(observer)) {}
+        : chart_(stored_chart(chart)), observer_{std::move(observer)}, context_{std::move(context)} {}
+
+    // The chart: the machine's copy, or, for a stateless chart, the one every machine shares.
+    constexpr chart_type const& chart() const {
+        if constexpr (is_stateless_chart<chart_type>)
+            return stateless_chart<chart_type>;
+        else
+            return chart_;
+    }
 
     // Enters the initial configuration (entry actions run) and settles eventless transitions.
     // Called by the back end's constructor, once the back end exists.
     constexpr void start() {
-        run_guard const guard{running_};
-        if constexpr (tree.slots > 0)
-            config_.active = layout::initial_bytes;
-        latch_inputs(context_);
-        backend().enter_initial();
-        last_ = finish(false);
-        commit_outputs(context_);
-        last_ = conclude(last_);
+        mark_running();
+        end_run(run_to_end([&] {
+            if constexpr (tree.slots > 0)
+                config_.active = layout::initial_bytes;
+            latch_inputs(context_.value);
+            backend().enter_initial();
+            outcome const settled = finish(false);
+            commit_outputs(context_.value);
+            return settled;
+        }));
     }
+
+    // The machine counts as running from the start of a run to its end, or, in a dispatch on a
+    // back end that says so (Backend::marks_running_lazily), from the first guard or transition
+    // it is about to run (the back end calls mark_running() there): only guards, actions and
+    // the observer can call the machine back, and a dispatch that runs none of them (an
+    // ignored event) then never writes the mark.
+    constexpr bool running() const { return (bits(status_) & running_bit) != 0; }
+    constexpr void mark_running() { status_ = static_cast<run_status>(bits(status_) | running_bit); }
 
     // Runs a guard (true if it holds) or a block of an action: what either throws goes to fail().
     template <class Guard>
@@ -5092,7 +5249,7 @@ protected:
 
     template <int Row>
     constexpr auto const& row() const {
-        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart_.rows);
+        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart().rows);
     }
 
     // Whether state s is active, read from the bytes; outermost first, so one pass suffices.
@@ -5127,54 +5284,102 @@ private:
     static constexpr bool takes_failures = model::template trigger_of<action_failed> >= 0;
 
     // A guard or action threw: raise bsc::action_failed if the chart takes it (and the queue
-    // has room), else keep it for the caller.
-    void fail(std::exception_ptr error) {
-        if constexpr (takes_failures)
-            if (queue_(action_failed{error})) return;
-        keep_failure(std::move(error));
+    // has room), else keep it for the caller. (Where nothing can throw, nothing gets here: a
+    // noexcept function that throws has already ended the program.)
+    // (noexcept: what could throw here is recording a failure, an allocation; the program then
+    // ends, as it would if a destructor threw while unwinding.)
+    void fail(std::exception_ptr error) noexcept {
+        if constexpr (may_throw) {
+            if constexpr (takes_failures)
+                if (queue_(action_failed{error})) return;
+            keep_failure(std::move(error));
+        } else {
+            (void)error;
+            std::terminate();
+        }
     }
-    void keep_failure(std::exception_ptr error) { failure_.keep(std::move(error)); }
+    void keep_failure(std::exception_ptr error) noexcept {
+        if constexpr (may_throw)
+            failure_.keep(std::move(error));
+        else
+            (void)error;
+    }
 
-    // The end of a run, the machine consistent and its outputs committed: a failure no
-    // transition took is rethrown, or reported as outcome::failed.
-    constexpr outcome conclude(outcome result) {
-#if defined(__cpp_exceptions)
-        if (failure_) return failed_run();
-#endif
-        return result;  // without exceptions nothing can have failed: no test
+    // The end of a run, the machine consistent and its outputs committed: records the outcome
+    // (which ends the run), and then rethrows a failure no transition took, or reports it as
+    // outcome::failed.
+    constexpr outcome end_run(outcome result) {
+        if constexpr (may_throw)
+            if (failure_) return failed_run(result);
+        return record(result);  // where nothing can throw nothing can have failed: no test
     }
-    outcome failed_run() {
+    outcome failed_run(outcome result) {
         if constexpr (Policy::rethrow_failures) {
+            record(result);
             std::rethrow_exception(failure_.take());
         } else {
             reported_.reset();
             reported_.keep(failure_.take());
-            return outcome::failed;
+            return record(outcome::failed);
         }
     }
 
-    // Marks the machine as running for the time of a dispatch, a cycle or the construction: a
-    // dispatch or step called meanwhile from one of its guards or actions is refused.
-    struct run_guard {
-        bool& running;
-        constexpr explicit run_guard(bool& flag) : running(flag) { running = true; }
-        constexpr ~run_guard() { running = false; }
-        run_guard(run_guard const&) = delete;
-        run_guard& operator=(run_guard const&) = delete;
-    };
+    // The outcome of a dispatch that ran no guard, action or observer: recorded, and returned.
+    constexpr outcome record(outcome result) {
+        status_ = static_cast<run_status>(result);
+        return result;
+    }
+
+    // Runs the body of a dispatch, a cycle or the construction, whose caller records the
+    // outcome it returns (record() ends the run). If the body ends by an exception instead (a
+    // rethrown failure, a throwing observer), the run ends here and the last outcome stays.
+    // (A try block and not an object whose destructor ends the run: the object would have to
+    // live on the stack of every dispatch.)
+    template <class Body>
+    [[gnu::always_inline]] constexpr outcome run_to_end(Body&& body) {
+#if defined(__cpp_exceptions)
+        try {
+            return body();
+        } catch (...) {
+            end_run_by_exception();
+            throw;
+        }
+#else
+        return body();
+#endif
+    }
+    constexpr void end_run_by_exception() { status_ = static_cast<run_status>(bits(status_) & ~running_bit); }
 
     template <int Trigger, class E>
     constexpr outcome process(E const& e) {
-        if (running_)
+        if (running())
             return outcome::reentrant;
-        run_guard const guard{running_};
         if (halted())
-            return last_ = outcome::halted;
-        notify<model, Observer>::dispatching(observer_, e);
-        latch_inputs(context_);
-        last_ = finish(backend().template microstep<Trigger>(e));
-        commit_outputs(context_);
-        return last_ = conclude(last_);
+            return record(outcome::halted);
+        if (!Backend::marks_running_lazily || !std::is_same_v<Observer, no_observer>) mark_running();
+        // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined.)
+        outcome settled = outcome::ignored;
+#if defined(__cpp_exceptions)
+        try {
+            settled = dispatch_to_end<Trigger>(e);
+        } catch (...) {
+            end_run_by_exception();
+            throw;
+        }
+#else
+        settled = dispatch_to_end<Trigger>(e);
+#endif
+        return end_run(settled);
+    }
+
+    // The body of a dispatch (process), between its checks and its end.
+    template <int Trigger, class E>
+    constexpr outcome dispatch_to_end(E const& e) {
+        notify<model, Observer>::dispatching(observer_.value, e);
+        latch_inputs(context_.value);
+        outcome const settled = finish(backend().template microstep<Trigger>(e));
+        commit_outputs(context_.value);
+        return settled;
     }
 
     // The components' turns in a cycle: a component takes its turn if it was active when the
@@ -5305,26 +5510,75 @@ private:
     friend struct access;
 
 protected:
-    [[no_unique_address]] chart_type chart_;
-    context_type context_;
-    configuration_type config_{};
+    struct no_chart {};
+    using stored_chart_type = std::conditional_t<is_stateless_chart<chart_type>, no_chart, chart_type>;
+    static constexpr stored_chart_type stored_chart(chart_type const& chart) {
+        if constexpr (is_stateless_chart<chart_type>)
+            return (void)chart, no_chart{};
+        else
+            return chart;
+    }
+    // The members whose alignment is known to be large first, the context next to the bytes, so
+    // that a small machine has no padding inside.
+    [[no_unique_address]] stored_chart_type chart_;
     [[no_unique_address]] Queue queue_{};
     duration clock_{};
-    std::array<duration, static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
-    outcome last_ = outcome::ignored;
-    bool running_ = false;        // inside a dispatch, a cycle or the constructor
-    bool clock_started_ = false;  // a cycle has run: clock_ is the caller's time
-    [[no_unique_address]] Observer observer_;
-    failure_slot failure_;  // the first failure of the current run that no transition took
-    struct nothing_reported {
-        static std::exception_ptr get() { return nullptr; }
-    };
+    [[no_unique_address]] timeout_slots<static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
+    // Whether a guard or action of the chart can throw (detail::chart_may_throw).
+    static constexpr bool may_throw = chart_may_throw<model, Queue>();
+    // The first failure of the current run that no transition took.
+    [[no_unique_address]] std::conditional_t<may_throw, failure_slot, no_failure_slot> failure_;
     // The failure of the last run, for last_failure(), under a policy that does not rethrow.
-    [[no_unique_address]] std::conditional_t<Policy::rethrow_failures, nothing_reported, failure_slot> reported_;
+    [[no_unique_address]] std::conditional_t<Policy::rethrow_failures || !may_throw, no_failure_slot, failure_slot> reported_;
+    [[no_unique_address]] whole<Observer> observer_;
+    [[no_unique_address]] whole<context_type> context_;
+    configuration_type config_{};
+    // The outcome of the last run (low bits) and the mark of a run under way (running_bit). An
+    // enumeration and not a std::uint8_t: a store through an unsigned char may alias any object,
+    // so the compiler would reload the context after every mark.
+    enum class run_status : std::uint8_t {};
+    static constexpr std::uint8_t running_bit = 0x80;
+    static constexpr std::uint8_t bits(run_status s) { return static_cast<std::uint8_t>(s); }
+    run_status status_ = static_cast<run_status>(outcome::ignored);
+    bool clock_started_ = false;  // a cycle has run: clock_ is the caller's time
 };
 
 }  // namespace bsc::detail
 // end include/bsc/runtime/driver.hpp
+// begin include/bsc/runtime/queue_for.hpp
+// The internal event queue a machine of a chart needs: none if no action of the chart can raise
+// an event (detail::may_raise) and the chart does not take bsc::action_failed.
+
+#include <type_traits>
+
+
+namespace bsc::detail {
+// Whether any action of the chart can raise an event; if none can, the machine has no queue.
+template <class Model, class Policy>
+constexpr bool chart_may_raise() {
+    using context = typename Model::chart_context;
+    using raise = event_queue<Policy::queue_capacity, typename Model::events>;
+    return []<class... Rows>(type_list<Rows...>) {
+        // The event an action sees: the row's event, or bsc::eventless for condition-driven
+        // rows (entry and exit rows see none; may_raise ignores it for them).
+        return (may_raise<context, std::conditional_t<std::is_void_v<typename trigger_event<Rows>::type>, eventless_trigger,
+                                                      typename trigger_event<Rows>::type>,
+                          raise>(static_cast<decltype(Rows::action) const*>(nullptr)) ||
+                ...);
+    }(typename Model::row_types{});
+}
+
+// The queue of a machine of the chart (either back end): a bounded queue of the chart's events
+// if an action can raise, or the chart takes bsc::action_failed (which the machine raises);
+// otherwise none, and no test for raised events after a microstep.
+template <class Chart, class Policy>
+using queue_for =
+    std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
+                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0,
+                       event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
+                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>;
+}  // namespace bsc::detail
+// end include/bsc/runtime/queue_for.hpp
 // begin include/bsc/runtime/rejected.hpp
 // A machine declared on a chart that failed its checks (detail::rejected_chart): the chart's
 // errors are already reported where the chart is declared, so the machine accepts whatever
@@ -5428,30 +5682,6 @@ constexpr selection<Capacity> resolve_conflicts(selection<Capacity> const& selec
 }  // namespace bsc::detail
 // end include/bsc/runtime/selection.hpp
 
-namespace bsc::detail {
-// Whether any action of the chart can raise an event; if none can, the machine has no queue.
-template <class Model, class Policy>
-constexpr bool chart_may_raise() {
-    using context = typename Model::chart_context;
-    using raise = event_queue<Policy::queue_capacity, typename Model::events>;
-    return []<class... Rows>(type_list<Rows...>) {
-        // The event an action sees: the row's event, or bsc::eventless for condition-driven
-        // rows (entry and exit rows see none; may_raise ignores it for them).
-        return (may_raise<context, std::conditional_t<std::is_void_v<typename trigger_event<Rows>::type>, eventless_trigger,
-                                                      typename trigger_event<Rows>::type>,
-                          raise>(static_cast<decltype(Rows::action) const*>(nullptr)) ||
-                ...);
-    }(typename Model::row_types{});
-}
-
-// A chart that takes bsc::action_failed needs a queue for it, even if no action raises.
-template <class Chart, class Policy>
-using compiled_queue =
-    std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
-                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0,
-                       event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
-                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>;
-}  // namespace bsc::detail
 
 namespace bsc {
 
@@ -5464,15 +5694,18 @@ namespace bsc {
 /// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
 template <class Chart, class Policy = default_policy, class Observer = no_observer>
 class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, Policy, Observer,
-                                      detail::compiled_queue<Chart, Policy>> {
-    using base = detail::driver<machine, Chart, Policy, Observer, detail::compiled_queue<Chart, Policy>>;
+                                      detail::queue_for<Chart, Policy>> {
+    using base = detail::driver<machine, Chart, Policy, Observer, detail::queue_for<Chart, Policy>>;
     friend base;
+    // A dispatch marks the machine running only where a guard or a transition is about to run
+    // (guard_holds, fire_from), or, in a chart with parallel states, at each microstep: an
+    // ignored event in a chart without parallel states writes nothing.
+    static constexpr bool marks_running_lazily = true;
     using typename base::model;
     using plan = detail::plan<model>;
     static constexpr auto const& tree = model::tree;
     static constexpr auto const& rows = model::rows;
     static constexpr int root = plan::root;
-    using base::chart_;
     using base::context_;
     using base::config_;
     using base::queue_;
@@ -5530,7 +5763,7 @@ private:
     constexpr void run_state_actions() {
         constexpr auto const& actions = plan::template rows_of<K, S>;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (this->run([&] { row<actions[I]>().action(context_, queue_); }), ...);
+            (this->run([&] { row<actions[I]>().action(context_.value, queue_); }), ...);
         }(std::make_index_sequence<actions.size()>{});
     }
 
@@ -5540,13 +5773,13 @@ private:
         // Its timeouts count from its entry, at the time of the last cycle.
         constexpr int first_slot = plan::timeout_slot[S];
         for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = clock_;
-        notify::template entered<S>(observer_);
+        notify::template entered<S>(observer_.value);
     }
 
     template <int S>
     constexpr void run_exit() {
         run_state_actions<detail::row_kind::exit, S>();
-        notify::template exited<S>(observer_);
+        notify::template exited<S>(observer_.value);
     }
 
     template <int S, class F>
@@ -5667,17 +5900,19 @@ private:
     // ---- transitions -------------------------------------------------------------------
     template <int Row, class E>
     constexpr bool guard_holds(E const& e) {
-        if constexpr (rows.guarded[Row])
-            return this->test([&] { return static_cast<bool>(row<Row>().guard(context_, e)); });
-        else
+        if constexpr (rows.guarded[Row]) {
+            if constexpr (!plan::has_parallel) this->mark_running();
+            return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, e)); });
+        } else {
             return true;
+        }
     }
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        notify::template transition<Row>(observer_, row<Row>(), e);
+        notify::template transition<Row>(observer_.value, row<Row>(), e);
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-            this->run([&] { row<Row>().action(context_, e, queue_); });
+            this->run([&] { row<Row>().action(context_.value, e, queue_); });
     }
 
     template <int Row>
@@ -5691,6 +5926,7 @@ private:
     // the exit path is known, so exits, action and entries are straight-line code.
     template <int Leaf, int Row, class E>
     constexpr void fire_from(E const& e) {
+        if constexpr (!plan::has_parallel) this->mark_running();  // else microstep has marked
         constexpr int d = rows.domain[Row];
         if constexpr (d >= 0)
             exit_up<Leaf, d>();
@@ -5819,12 +6055,19 @@ private:
         }(std::make_index_sequence<n>{});
     }
 
-    // One microstep on a trigger; true if a transition fired.
+    // One microstep on a trigger; true if a transition fired. Flattened: the walk of the
+    // relevant states, the guards, exits, actions and entries become one straight-line nest of
+    // switches for the trigger, whatever the compiler's inlining budget for the function that
+    // dispatches (a dispatch of a parallel chart otherwise ended up as calls of the walk's
+    // lambdas, which cost more than the walk).
     template <int Trigger, class E>
-    constexpr bool microstep(E const& e) {
+    [[gnu::flatten]] constexpr bool microstep(E const& e) {
         if constexpr (!plan::has_trigger(Trigger)) {
             return false;
         } else {
+            // With parallel regions, several transitions may fire in one microstep: one mark
+            // before them all costs less than one each.
+            if constexpr (plan::has_parallel) this->mark_running();
             using sel_type = selection_for<Trigger>;
             sel_type sel;
             bool const any = select<0, Trigger>(e, sel);
@@ -6154,7 +6397,7 @@ template <class Chart, class Policy = default_policy>
 struct tables {
     using chart_type = std::remove_cv_t<Chart>;
     using context_type = typename chart_type::context_type;
-    using raise_type = bsc::detail::event_queue<Policy::queue_capacity, typename bsc::detail::chart_model<chart_type>::events>;
+    using raise_type = bsc::detail::queue_for<chart_type, Policy>;
     using state_row_type = state_row<chart_type, raise_type>;
     using transition_row_type = transition_row<chart_type, raise_type>;
 
@@ -6451,6 +6694,7 @@ class machine : public bsc::detail::driver<machine<Chart, Policy, Observer>, Cha
                                            typename tables<Chart, Policy>::raise_type> {
     using base = bsc::detail::driver<machine, Chart, Policy, Observer, typename tables<Chart, Policy>::raise_type>;
     friend base;
+    static constexpr bool marks_running_lazily = false;  // a dispatch is marked running throughout
     using hooks = observer_hooks<Chart, Policy, Observer>;
     static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
 
@@ -6508,18 +6752,18 @@ private:
 
     // ---- entry and exit -------------------------------------------------------------------
     void run_entry(state_id s) {
-        if (auto const f = states[s].entry) f(this->chart_, this->context_, this->queue_, this->sink());
+        if (auto const f = states[s].entry) f(this->chart(), this->context_.value, this->queue_, this->sink());
         // A state's timeouts count from its entry, at the time of the last cycle.
         if constexpr (tables_type::timeout_slots > 0)
             for (std::int16_t k = 0; k < states[s].timeout_slots; ++k)
                 this->armed_[static_cast<std::size_t>(states[s].timeout_slot + k)] = this->clock_;
         if constexpr (observed)
-            if (auto const h = hooks::on_entry[s]) h(this->observer_);
+            if (auto const h = hooks::on_entry[s]) h(this->observer_.value);
     }
     void run_exit(state_id s) {
-        if (auto const f = states[s].exit) f(this->chart_, this->context_, this->queue_, this->sink());
+        if (auto const f = states[s].exit) f(this->chart(), this->context_.value, this->queue_, this->sink());
         if constexpr (observed)
-            if (auto const h = hooks::on_exit[s]) h(this->observer_);
+            if (auto const h = hooks::on_exit[s]) h(this->observer_.value);
     }
 
     // The paper's StartStEng: the initial configuration, entered from the root down.
@@ -6605,7 +6849,7 @@ private:
 
     bool guard_holds(std::int16_t t, void const* e) {
         auto const g = transitions[static_cast<std::size_t>(t)].guard;
-        return g == nullptr || this->test([&] { return g(this->chart_, this->context_, e); });
+        return g == nullptr || this->test([&] { return g(this->chart(), this->context_.value, e); });
     }
 
     // Step 2 for one active basic state: its candidates are the transitions on the event from
@@ -6623,9 +6867,9 @@ private:
 
     void run_action(std::int16_t t, void const* e) {
         if constexpr (observed)
-            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_, this->chart_, e);
+            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_.value, this->chart(), e);
         if (auto const action = transitions[static_cast<std::size_t>(t)].action)
-            this->run([&] { action(this->chart_, this->context_, e, this->queue_); });
+            this->run([&] { action(this->chart(), this->context_.value, e, this->queue_); });
     }
 
     template <int Trigger, class E>
@@ -6705,7 +6949,7 @@ private:
         if constexpr (tables_type::timeout_slots > 0)
             if (row.event == timeout_id &&
                 !bsc::detail::has_elapsed(this->armed_[static_cast<std::size_t>(row.timeout_slot)], this->clock_,
-                                          row.delay(this->chart_)))
+                                          row.delay(this->chart())))
                 return false;
         return guard_holds(t, &no_event);
     }

@@ -18,35 +18,11 @@
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/runtime/driver.hpp>
-#include <bsc/runtime/event_queue.hpp>
+#include <bsc/runtime/queue_for.hpp>
 #include <bsc/runtime/rejected.hpp>
 #include <bsc/runtime/notify.hpp>
 #include <bsc/runtime/selection.hpp>
 
-namespace bsc::detail {
-// Whether any action of the chart can raise an event; if none can, the machine has no queue.
-template <class Model, class Policy>
-constexpr bool chart_may_raise() {
-    using context = typename Model::chart_context;
-    using raise = event_queue<Policy::queue_capacity, typename Model::events>;
-    return []<class... Rows>(type_list<Rows...>) {
-        // The event an action sees: the row's event, or bsc::eventless for condition-driven
-        // rows (entry and exit rows see none; may_raise ignores it for them).
-        return (may_raise<context, std::conditional_t<std::is_void_v<typename trigger_event<Rows>::type>, eventless_trigger,
-                                                      typename trigger_event<Rows>::type>,
-                          raise>(static_cast<decltype(Rows::action) const*>(nullptr)) ||
-                ...);
-    }(typename Model::row_types{});
-}
-
-// A chart that takes bsc::action_failed needs a queue for it, even if no action raises.
-template <class Chart, class Policy>
-using compiled_queue =
-    std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
-                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0,
-                       event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
-                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>;
-}  // namespace bsc::detail
 
 namespace bsc {
 
@@ -59,15 +35,18 @@ namespace bsc {
 /// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
 template <class Chart, class Policy = default_policy, class Observer = no_observer>
 class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, Policy, Observer,
-                                      detail::compiled_queue<Chart, Policy>> {
-    using base = detail::driver<machine, Chart, Policy, Observer, detail::compiled_queue<Chart, Policy>>;
+                                      detail::queue_for<Chart, Policy>> {
+    using base = detail::driver<machine, Chart, Policy, Observer, detail::queue_for<Chart, Policy>>;
     friend base;
+    // A dispatch marks the machine running only where a guard or a transition is about to run
+    // (guard_holds, fire_from), or, in a chart with parallel states, at each microstep: an
+    // ignored event in a chart without parallel states writes nothing.
+    static constexpr bool marks_running_lazily = true;
     using typename base::model;
     using plan = detail::plan<model>;
     static constexpr auto const& tree = model::tree;
     static constexpr auto const& rows = model::rows;
     static constexpr int root = plan::root;
-    using base::chart_;
     using base::context_;
     using base::config_;
     using base::queue_;
@@ -125,7 +104,7 @@ private:
     constexpr void run_state_actions() {
         constexpr auto const& actions = plan::template rows_of<K, S>;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (this->run([&] { row<actions[I]>().action(context_, queue_); }), ...);
+            (this->run([&] { row<actions[I]>().action(context_.value, queue_); }), ...);
         }(std::make_index_sequence<actions.size()>{});
     }
 
@@ -135,13 +114,13 @@ private:
         // Its timeouts count from its entry, at the time of the last cycle.
         constexpr int first_slot = plan::timeout_slot[S];
         for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = clock_;
-        notify::template entered<S>(observer_);
+        notify::template entered<S>(observer_.value);
     }
 
     template <int S>
     constexpr void run_exit() {
         run_state_actions<detail::row_kind::exit, S>();
-        notify::template exited<S>(observer_);
+        notify::template exited<S>(observer_.value);
     }
 
     template <int S, class F>
@@ -262,17 +241,19 @@ private:
     // ---- transitions -------------------------------------------------------------------
     template <int Row, class E>
     constexpr bool guard_holds(E const& e) {
-        if constexpr (rows.guarded[Row])
-            return this->test([&] { return static_cast<bool>(row<Row>().guard(context_, e)); });
-        else
+        if constexpr (rows.guarded[Row]) {
+            if constexpr (!plan::has_parallel) this->mark_running();
+            return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, e)); });
+        } else {
             return true;
+        }
     }
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        notify::template transition<Row>(observer_, row<Row>(), e);
+        notify::template transition<Row>(observer_.value, row<Row>(), e);
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-            this->run([&] { row<Row>().action(context_, e, queue_); });
+            this->run([&] { row<Row>().action(context_.value, e, queue_); });
     }
 
     template <int Row>
@@ -286,6 +267,7 @@ private:
     // the exit path is known, so exits, action and entries are straight-line code.
     template <int Leaf, int Row, class E>
     constexpr void fire_from(E const& e) {
+        if constexpr (!plan::has_parallel) this->mark_running();  // else microstep has marked
         constexpr int d = rows.domain[Row];
         if constexpr (d >= 0)
             exit_up<Leaf, d>();
@@ -414,12 +396,19 @@ private:
         }(std::make_index_sequence<n>{});
     }
 
-    // One microstep on a trigger; true if a transition fired.
+    // One microstep on a trigger; true if a transition fired. Flattened: the walk of the
+    // relevant states, the guards, exits, actions and entries become one straight-line nest of
+    // switches for the trigger, whatever the compiler's inlining budget for the function that
+    // dispatches (a dispatch of a parallel chart otherwise ended up as calls of the walk's
+    // lambdas, which cost more than the walk).
     template <int Trigger, class E>
-    constexpr bool microstep(E const& e) {
+    [[gnu::flatten]] constexpr bool microstep(E const& e) {
         if constexpr (!plan::has_trigger(Trigger)) {
             return false;
         } else {
+            // With parallel regions, several transitions may fire in one microstep: one mark
+            // before them all costs less than one each.
+            if constexpr (plan::has_parallel) this->mark_running();
             using sel_type = selection_for<Trigger>;
             sel_type sel;
             bool const any = select<0, Trigger>(e, sel);

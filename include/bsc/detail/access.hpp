@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include <bsc/duration.hpp>
+#include <bsc/outcome.hpp>
 
 namespace bsc::detail {
 
@@ -70,7 +71,7 @@ struct access {
     // Inside a dispatch, a cycle or the construction: the machine's data is in flux.
     template <class M>
     static constexpr bool running(M const& m) {
-        return driver_of(m).running_;
+        return driver_of(m).running();
     }
     // Forgets the exception of the last failed run (a restored machine's last run was not its own).
     template <class M>
@@ -84,8 +85,8 @@ struct access {
         return driver_of(m).armed_;
     }
     template <class M>
-    static constexpr auto& last_outcome(M& m) {
-        return driver_of(m).last_;
+    static constexpr void set_last_outcome(M& m, outcome last) {
+        driver_of(m).record(last);
     }
     template <class M>
     static constexpr auto& queue(M& m) {

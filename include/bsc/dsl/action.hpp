@@ -17,18 +17,19 @@ concept bsc_action = std::is_base_of_v<action_base, A>;
 
 template <class F>
 struct action_fn : action_base {
-    F fn;
+    [[no_unique_address]] F fn;
     template <class Ctx, class E, class Raise>
-    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const {
+    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const noexcept(noexcept(call_action(fn, ctx, e, raise))) {
         call_action(fn, ctx, e, raise);
     }
 };
 
 template <class... As>
 struct action_seq : action_base {
-    std::tuple<As...> actions;
+    [[no_unique_address]] std::tuple<As...> actions;
     template <class Ctx, class E, class Raise>
-    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const {
+    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const
+        noexcept((std::is_nothrow_invocable_v<As const&, Ctx&, E const&, Raise&> && ...)) {
         std::apply([&](auto const&... a) { (a(ctx, e, raise), ...); }, actions);
     }
 };
@@ -62,7 +63,7 @@ constexpr auto operator,(L l, R r) {
 
 struct no_action {
     template <class Ctx, class E, class Raise>
-    constexpr void operator()(Ctx&, E const&, Raise&) const {}
+    constexpr void operator()(Ctx&, E const&, Raise&) const noexcept {}
 };
 
 // The event a bsc action sees when it runs as an entry or exit action.
@@ -71,9 +72,16 @@ struct state_change {};
 // Entry and exit actions see the context (and the raise queue), never an event.
 template <class A>
 struct state_action {
-    A fn;
+    [[no_unique_address]] A fn;
     template <class Ctx, class Raise>
-    constexpr void operator()(Ctx& ctx, Raise& raise) const {
+    static constexpr bool nothrow() {
+        if constexpr (bsc_action<A>)
+            return std::is_nothrow_invocable_v<A const&, Ctx&, state_change const&, Raise&>;
+        else
+            return state_action_nothrow<A, Ctx, Raise>();
+    }
+    template <class Ctx, class Raise>
+    constexpr void operator()(Ctx& ctx, Raise& raise) const noexcept(nothrow<Ctx, Raise>()) {
         if constexpr (bsc_action<A>)
             fn(ctx, state_change{}, raise);
         else
@@ -128,7 +136,7 @@ constexpr auto seq(Fs... fs) {
 /// the current step, before dispatch returns.
 template <class E>
 constexpr auto raise(E e) {
-    return action([e](auto&, auto const&, auto& queue) { queue(e); });
+    return action([e](auto&, auto const&, auto& queue) noexcept(noexcept(queue(e))) { queue(e); });
 }
 
 }  // namespace bsc

@@ -16,38 +16,38 @@ concept bsc_guard = std::is_base_of_v<guard_base, G>;
 
 template <class F>
 struct guard_fn : guard_base {
-    F fn;
+    [[no_unique_address]] F fn;
     template <class Ctx, class E>
-    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+    constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(call_guard(fn, ctx, e))) {
         return call_guard(fn, ctx, e);
     }
 };
 
 template <class G>
 struct not_guard : guard_base {
-    G g;
+    [[no_unique_address]] G g;
     template <class Ctx, class E>
-    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+    constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(!g(ctx, e))) {
         return !g(ctx, e);
     }
 };
 
 template <class L, class R>
 struct and_guard : guard_base {
-    L l;
-    R r;
+    [[no_unique_address]] L l;
+    [[no_unique_address]] R r;
     template <class Ctx, class E>
-    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+    constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(l(ctx, e) && r(ctx, e))) {
         return l(ctx, e) && r(ctx, e);
     }
 };
 
 template <class L, class R>
 struct or_guard : guard_base {
-    L l;
-    R r;
+    [[no_unique_address]] L l;
+    [[no_unique_address]] R r;
     template <class Ctx, class E>
-    constexpr bool operator()(Ctx const& ctx, E const& e) const {
+    constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(l(ctx, e) || r(ctx, e))) {
         return l(ctx, e) || r(ctx, e);
     }
 };
@@ -63,7 +63,7 @@ constexpr auto as_guard(G g) {
 
 struct no_guard {
     template <class Ctx, class E>
-    constexpr bool operator()(Ctx const&, E const&) const {
+    constexpr bool operator()(Ctx const&, E const&) const noexcept {
         return true;
     }
 };

@@ -53,10 +53,10 @@ struct named_action : A, Name {};
 /// the longest argument list it accepts.
 template <class Name, class F>
 struct named_callable : Name {
-    F fn;
+    [[no_unique_address]] F fn;
     template <class... Args>
         requires std::is_invocable_v<F const&, Args...>
-    constexpr decltype(auto) operator()(Args&&... args) const {
+    constexpr decltype(auto) operator()(Args&&... args) const noexcept(std::is_nothrow_invocable_v<F const&, Args...>) {
         return fn(std::forward<Args>(args)...);
     }
 };

@@ -31,13 +31,19 @@ struct timeout_trigger {
 /// The target of an internal transition: no exit, no entry.
 struct no_target {};
 
-struct row_base {};
+// What marks a row. A base of its own for each row type: rows whose guard, action and trigger
+// are empty are empty themselves, and the tuple of a chart's rows can then take no space at
+// all, which it could not if every row had the same (empty) base at a distinct address.
+template <class Row>
+struct row_base {
+    using bsc_row_type = Row;
+};
 
 template <class Trigger, class G, class A>
 struct trigger_spec {
     [[no_unique_address]] Trigger trigger;
-    G guard;
-    A action;
+    [[no_unique_address]] G guard;
+    [[no_unique_address]] A action;
     template <class A2>
         requires std::is_same_v<A, no_action>
     constexpr auto operator/(A2 a) const {
@@ -76,14 +82,14 @@ struct timeout_ref {
 };
 
 template <class S, class Trigger, class G, class A, class T>
-struct transition_row : row_base {
+struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
     using source = S;
     using trigger = Trigger;
     using target = T;
     static constexpr bool guarded = !std::is_same_v<G, no_guard>;
     [[no_unique_address]] Trigger trigger_value;
-    G guard;
-    A action;
+    [[no_unique_address]] G guard;
+    [[no_unique_address]] A action;
 
     template <class T2>
         requires std::is_same_v<T, no_target>
@@ -100,11 +106,11 @@ struct transition_row : row_base {
 
 template <class A>
 struct entry_spec {
-    A action;
+    [[no_unique_address]] A action;
 };
 template <class A>
 struct exit_spec {
-    A action;
+    [[no_unique_address]] A action;
 };
 struct entry_keyword {
     template <class A>
@@ -120,18 +126,21 @@ struct exit_keyword {
 };
 
 template <class S, class A>
-struct entry_row : row_base {
+struct entry_row : row_base<entry_row<S, A>> {
     using source = S;
-    A action;
+    [[no_unique_address]] A action;
 };
 template <class S, class A>
-struct exit_row : row_base {
+struct exit_row : row_base<exit_row<S, A>> {
     using source = S;
-    A action;
+    [[no_unique_address]] A action;
 };
 
 template <class R>
-inline constexpr bool is_row = std::is_base_of_v<row_base, R>;
+inline constexpr bool is_row = requires {
+    typename R::bsc_row_type;
+    requires std::is_same_v<typename R::bsc_row_type, R>;
+};
 template <class R>
 inline constexpr bool is_transition_row = false;
 template <class S, class Tr, class G, class A, class T>

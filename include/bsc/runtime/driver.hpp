@@ -58,6 +58,88 @@ inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
 // The decoder of dispatch_by_name when none is given: builds no event (each is default-constructed).
 struct no_decoder {};
 
+// Whether a row's guard or action can throw, called as a machine calls it: a transition's
+// guard with (context, event) and its action with (context, event, queue), an entry or exit
+// action with (context, queue).
+template <class Context, class Queue, class Row>
+struct row_nothrow;
+template <class Context, class Queue, class S, class Trigger, class G, class A, class T>
+struct row_nothrow<Context, Queue, transition_row<S, Trigger, G, A, T>> {
+    using row = transition_row<S, Trigger, G, A, T>;
+    using event = std::conditional_t<std::is_void_v<typename trigger_event<row>::type>, eventless,
+                                     typename trigger_event<row>::type>;
+    static constexpr bool value = std::is_nothrow_invocable_v<G const&, Context const&, event const&> &&
+                                  std::is_nothrow_invocable_v<A const&, Context&, event const&, Queue&>;
+};
+template <class Context, class Queue, class S, class A>
+struct row_nothrow<Context, Queue, entry_row<S, A>> {
+    static constexpr bool value = std::is_nothrow_invocable_v<A const&, Context&, Queue&>;
+};
+template <class Context, class Queue, class S, class A>
+struct row_nothrow<Context, Queue, exit_row<S, A>> {
+    static constexpr bool value = std::is_nothrow_invocable_v<A const&, Context&, Queue&>;
+};
+
+// Whether any guard or action of the chart can throw. If none can (each is noexcept, or the
+// code is built without exceptions), a machine keeps no record of failures and never checks
+// for one: containing failures costs nothing where nothing can fail.
+template <class Model, class Queue>
+constexpr bool chart_may_throw() {
+#if defined(__cpp_exceptions)
+    return []<class... Rows>(type_list<Rows...>) {
+        return !(row_nothrow<typename Model::chart_context, Queue, Rows>::value && ...);
+    }(typename Model::row_types{});
+#else
+    return false;
+#endif
+}
+
+// Whether a chart holds no data at all: each row is empty (its trigger, guard and action
+// carry no value: no delay, no captures) and can be made again from nothing. A machine of
+// such a chart stores no copy of it; it calls the rows of stateless_chart instead.
+template <class Chart, class Rows = typename Chart::row_types>
+inline constexpr bool is_stateless_chart = false;
+template <class Chart, class... Rows>
+inline constexpr bool is_stateless_chart<Chart, type_list<Rows...>> =
+    ((std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>) && ...) && std::is_default_constructible_v<Chart>;
+template <class Chart>
+inline constexpr Chart stateless_chart{};
+
+// The entry times of a chart without timeouts: none, and unlike std::array<duration, 0>, no
+// byte. (No index is ever valid; operator[] exists for code that loops over zero slots.)
+struct no_timeout_slots {
+    static constexpr std::size_t size() { return 0; }
+    constexpr duration* begin() { return nullptr; }
+    constexpr duration* end() { return nullptr; }
+    constexpr duration const* begin() const { return nullptr; }
+    constexpr duration const* end() const { return nullptr; }
+    constexpr duration& operator[](std::size_t) const { return unused; }
+
+private:
+    static inline duration unused{};
+};
+template <std::size_t Slots>
+using timeout_slots = std::conditional_t<Slots == 0, no_timeout_slots, std::array<duration, Slots>>;
+
+// A member handed out by reference (the context, the observer): no space when T is empty, and
+// otherwise T whole. A [[no_unique_address]] T itself could lend its tail padding to the next
+// members, and an assignment through the reference would then overwrite them.
+template <class T, bool Empty = std::is_empty_v<T>>
+struct whole {
+    T value;
+};
+template <class T>
+struct whole<T, true> {
+    [[no_unique_address]] T value;
+};
+
+// The record of failures of a machine none of whose guards and actions can throw.
+struct no_failure_slot {
+    constexpr explicit operator bool() const { return false; }
+    constexpr void reset() {}
+    static std::exception_ptr get() { return nullptr; }
+};
+
 template <class Backend, class Chart, class Policy, class Observer, class Queue>
 class driver : public machine_base {
 protected:
@@ -88,15 +170,22 @@ public:
     /// reported and ignored.
     constexpr step_report step(duration now) {
         step_report report;
-        if (running_) {
+        if (running()) {
             report.status = outcome::reentrant;
             return report;
         }
-        run_guard const guard{running_};
         if (halted()) {
-            report.status = last_ = outcome::halted;
+            report.status = record(outcome::halted);
             return report;
         }
+        mark_running();
+        report.status = end_run(run_to_end([&] { return cycle(now, report); }));
+        return report;
+    }
+
+private:
+    // The cycle of step(now), which has marked the machine running; returns its outcome.
+    constexpr outcome cycle(duration now, step_report& report) {
         if (!clock_started_) {
             // The clock starts at the first cycle, wherever the caller's time starts; what was
             // armed before it (at construction, by a dispatch) counts from this cycle too.
@@ -108,18 +197,18 @@ public:
         } else {
             clock_ = now;
         }
-        notify<model, Observer>::cycle_begins(observer_, clock_);
-        update_timers(context_, clock_);
-        latch_inputs(context_);
+        notify<model, Observer>::cycle_begins(observer_.value, clock_);
+        update_timers(context_.value, clock_);
+        latch_inputs(context_.value);
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
-        report.status = last_ = drain_queue(report.transitions > 0);
-        commit_outputs(context_);
-        notify<model, Observer>::cycle_ends(observer_);
-        report.status = last_ = conclude(last_);
-        return report;
+        outcome const drained = drain_queue(report.transitions > 0);
+        commit_outputs(context_.value);
+        notify<model, Observer>::cycle_ends(observer_.value);
+        return drained;
     }
 
+public:
     /// The time of the last cycle (the machine's clock; zero before the first cycle).
     constexpr duration now() const { return clock_; }
 
@@ -141,8 +230,9 @@ public:
     constexpr outcome dispatch(E const& e, allow_unhandled_t) {
         constexpr int trigger = model::template trigger_of<E>;
         if constexpr (trigger < 0) {
-            if (!running_ && !halted()) notify<model, Observer>::dispatching(observer_, e);
-            return last_ = outcome::ignored;
+            if (running()) return outcome::ignored;  // inside a run: nothing to record
+            if (!halted()) notify<model, Observer>::dispatching(observer_.value, e);
+            return record(outcome::ignored);
         } else {
             return process<trigger>(e);
         }
@@ -162,8 +252,8 @@ public:
     /// As dispatch_by_name, for the event numbered `number` (bsc::event_set<Chart>::number_of).
     template <class Decode = no_decoder>
     constexpr outcome dispatch_by_number(std::size_t number, Decode&& decode = {}) {
-        if (running_) return outcome::reentrant;
-        if (number >= event_set<Chart>::size) return last_ = outcome::unknown_event;
+        if (running()) return outcome::reentrant;
+        if (number >= event_set<Chart>::size) return record(outcome::unknown_event);
         if constexpr (event_set<Chart>::size > 0)
             return event_set<Chart>::visit(number, [&]<class E>(std::type_identity<E> event) {
                 if constexpr (std::is_invocable_r_v<E, Decode&, std::type_identity<E>>) {
@@ -176,7 +266,7 @@ public:
                 }
             });
         else
-            return (void)decode, last_ = outcome::unknown_event;  // not reached: no number is below 0
+            return (void)decode, record(outcome::unknown_event);  // not reached: no number is below 0
     }
 
     /// True if state S is active.
@@ -209,38 +299,56 @@ public:
     }
 
     /// The outcome of the last dispatch (or of construction).
-    constexpr outcome last_outcome() const { return last_; }
+    constexpr outcome last_outcome() const { return static_cast<outcome>(bits(status_) & ~running_bit); }
 
     /// The exception of the last dispatch, cycle or construction whose outcome was
     /// outcome::failed (a policy whose rethrow_failures is false); null otherwise.
     std::exception_ptr last_failure() const {
-        if constexpr (!Policy::rethrow_failures)
-            if (last_ == outcome::failed) return reported_.get();
+        if constexpr (!Policy::rethrow_failures && may_throw)
+            if (last_outcome() == outcome::failed) return reported_.get();
         return nullptr;
     }
 
-    constexpr context_type& context() { return context_; }
-    constexpr context_type const& context() const { return context_; }
+    constexpr context_type& context() { return context_.value; }
+    constexpr context_type const& context() const { return context_.value; }
     constexpr configuration_type const& active_configuration() const { return config_; }
-    constexpr Observer& observer() { return observer_; }
-    constexpr Observer const& observer() const { return observer_; }
+    constexpr Observer& observer() { return observer_.value; }
+    constexpr Observer const& observer() const { return observer_.value; }
 
 protected:
     constexpr driver(Chart const& chart, context_type context, Observer observer)
-        : chart_(chart), context_(std::move(context)), observer_(std::move(observer)) {}
+        : chart_(stored_chart(chart)), observer_{std::move(observer)}, context_{std::move(context)} {}
+
+    // The chart: the machine's copy, or, for a stateless chart, the one every machine shares.
+    constexpr chart_type const& chart() const {
+        if constexpr (is_stateless_chart<chart_type>)
+            return stateless_chart<chart_type>;
+        else
+            return chart_;
+    }
 
     // Enters the initial configuration (entry actions run) and settles eventless transitions.
     // Called by the back end's constructor, once the back end exists.
     constexpr void start() {
-        run_guard const guard{running_};
-        if constexpr (tree.slots > 0)
-            config_.active = layout::initial_bytes;
-        latch_inputs(context_);
-        backend().enter_initial();
-        last_ = finish(false);
-        commit_outputs(context_);
-        last_ = conclude(last_);
+        mark_running();
+        end_run(run_to_end([&] {
+            if constexpr (tree.slots > 0)
+                config_.active = layout::initial_bytes;
+            latch_inputs(context_.value);
+            backend().enter_initial();
+            outcome const settled = finish(false);
+            commit_outputs(context_.value);
+            return settled;
+        }));
     }
+
+    // The machine counts as running from the start of a run to its end, or, in a dispatch on a
+    // back end that says so (Backend::marks_running_lazily), from the first guard or transition
+    // it is about to run (the back end calls mark_running() there): only guards, actions and
+    // the observer can call the machine back, and a dispatch that runs none of them (an
+    // ignored event) then never writes the mark.
+    constexpr bool running() const { return (bits(status_) & running_bit) != 0; }
+    constexpr void mark_running() { status_ = static_cast<run_status>(bits(status_) | running_bit); }
 
     // Runs a guard (true if it holds) or a block of an action: what either throws goes to fail().
     template <class Guard>
@@ -258,7 +366,7 @@ protected:
 
     template <int Row>
     constexpr auto const& row() const {
-        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart_.rows);
+        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart().rows);
     }
 
     // Whether state s is active, read from the bytes; outermost first, so one pass suffices.
@@ -293,54 +401,102 @@ private:
     static constexpr bool takes_failures = model::template trigger_of<action_failed> >= 0;
 
     // A guard or action threw: raise bsc::action_failed if the chart takes it (and the queue
-    // has room), else keep it for the caller.
-    void fail(std::exception_ptr error) {
-        if constexpr (takes_failures)
-            if (queue_(action_failed{error})) return;
-        keep_failure(std::move(error));
+    // has room), else keep it for the caller. (Where nothing can throw, nothing gets here: a
+    // noexcept function that throws has already ended the program.)
+    // (noexcept: what could throw here is recording a failure, an allocation; the program then
+    // ends, as it would if a destructor threw while unwinding.)
+    void fail(std::exception_ptr error) noexcept {
+        if constexpr (may_throw) {
+            if constexpr (takes_failures)
+                if (queue_(action_failed{error})) return;
+            keep_failure(std::move(error));
+        } else {
+            (void)error;
+            std::terminate();
+        }
     }
-    void keep_failure(std::exception_ptr error) { failure_.keep(std::move(error)); }
+    void keep_failure(std::exception_ptr error) noexcept {
+        if constexpr (may_throw)
+            failure_.keep(std::move(error));
+        else
+            (void)error;
+    }
 
-    // The end of a run, the machine consistent and its outputs committed: a failure no
-    // transition took is rethrown, or reported as outcome::failed.
-    constexpr outcome conclude(outcome result) {
-#if defined(__cpp_exceptions)
-        if (failure_) return failed_run();
-#endif
-        return result;  // without exceptions nothing can have failed: no test
+    // The end of a run, the machine consistent and its outputs committed: records the outcome
+    // (which ends the run), and then rethrows a failure no transition took, or reports it as
+    // outcome::failed.
+    constexpr outcome end_run(outcome result) {
+        if constexpr (may_throw)
+            if (failure_) return failed_run(result);
+        return record(result);  // where nothing can throw nothing can have failed: no test
     }
-    outcome failed_run() {
+    outcome failed_run(outcome result) {
         if constexpr (Policy::rethrow_failures) {
+            record(result);
             std::rethrow_exception(failure_.take());
         } else {
             reported_.reset();
             reported_.keep(failure_.take());
-            return outcome::failed;
+            return record(outcome::failed);
         }
     }
 
-    // Marks the machine as running for the time of a dispatch, a cycle or the construction: a
-    // dispatch or step called meanwhile from one of its guards or actions is refused.
-    struct run_guard {
-        bool& running;
-        constexpr explicit run_guard(bool& flag) : running(flag) { running = true; }
-        constexpr ~run_guard() { running = false; }
-        run_guard(run_guard const&) = delete;
-        run_guard& operator=(run_guard const&) = delete;
-    };
+    // The outcome of a dispatch that ran no guard, action or observer: recorded, and returned.
+    constexpr outcome record(outcome result) {
+        status_ = static_cast<run_status>(result);
+        return result;
+    }
+
+    // Runs the body of a dispatch, a cycle or the construction, whose caller records the
+    // outcome it returns (record() ends the run). If the body ends by an exception instead (a
+    // rethrown failure, a throwing observer), the run ends here and the last outcome stays.
+    // (A try block and not an object whose destructor ends the run: the object would have to
+    // live on the stack of every dispatch.)
+    template <class Body>
+    [[gnu::always_inline]] constexpr outcome run_to_end(Body&& body) {
+#if defined(__cpp_exceptions)
+        try {
+            return body();
+        } catch (...) {
+            end_run_by_exception();
+            throw;
+        }
+#else
+        return body();
+#endif
+    }
+    constexpr void end_run_by_exception() { status_ = static_cast<run_status>(bits(status_) & ~running_bit); }
 
     template <int Trigger, class E>
     constexpr outcome process(E const& e) {
-        if (running_)
+        if (running())
             return outcome::reentrant;
-        run_guard const guard{running_};
         if (halted())
-            return last_ = outcome::halted;
-        notify<model, Observer>::dispatching(observer_, e);
-        latch_inputs(context_);
-        last_ = finish(backend().template microstep<Trigger>(e));
-        commit_outputs(context_);
-        return last_ = conclude(last_);
+            return record(outcome::halted);
+        if (!Backend::marks_running_lazily || !std::is_same_v<Observer, no_observer>) mark_running();
+        // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined.)
+        outcome settled = outcome::ignored;
+#if defined(__cpp_exceptions)
+        try {
+            settled = dispatch_to_end<Trigger>(e);
+        } catch (...) {
+            end_run_by_exception();
+            throw;
+        }
+#else
+        settled = dispatch_to_end<Trigger>(e);
+#endif
+        return end_run(settled);
+    }
+
+    // The body of a dispatch (process), between its checks and its end.
+    template <int Trigger, class E>
+    constexpr outcome dispatch_to_end(E const& e) {
+        notify<model, Observer>::dispatching(observer_.value, e);
+        latch_inputs(context_.value);
+        outcome const settled = finish(backend().template microstep<Trigger>(e));
+        commit_outputs(context_.value);
+        return settled;
     }
 
     // The components' turns in a cycle: a component takes its turn if it was active when the
@@ -471,22 +627,37 @@ private:
     friend struct access;
 
 protected:
-    [[no_unique_address]] chart_type chart_;
-    context_type context_;
-    configuration_type config_{};
+    struct no_chart {};
+    using stored_chart_type = std::conditional_t<is_stateless_chart<chart_type>, no_chart, chart_type>;
+    static constexpr stored_chart_type stored_chart(chart_type const& chart) {
+        if constexpr (is_stateless_chart<chart_type>)
+            return (void)chart, no_chart{};
+        else
+            return chart;
+    }
+    // The members whose alignment is known to be large first, the context next to the bytes, so
+    // that a small machine has no padding inside.
+    [[no_unique_address]] stored_chart_type chart_;
     [[no_unique_address]] Queue queue_{};
     duration clock_{};
-    std::array<duration, static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
-    outcome last_ = outcome::ignored;
-    bool running_ = false;        // inside a dispatch, a cycle or the constructor
-    bool clock_started_ = false;  // a cycle has run: clock_ is the caller's time
-    [[no_unique_address]] Observer observer_;
-    failure_slot failure_;  // the first failure of the current run that no transition took
-    struct nothing_reported {
-        static std::exception_ptr get() { return nullptr; }
-    };
+    [[no_unique_address]] timeout_slots<static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
+    // Whether a guard or action of the chart can throw (detail::chart_may_throw).
+    static constexpr bool may_throw = chart_may_throw<model, Queue>();
+    // The first failure of the current run that no transition took.
+    [[no_unique_address]] std::conditional_t<may_throw, failure_slot, no_failure_slot> failure_;
     // The failure of the last run, for last_failure(), under a policy that does not rethrow.
-    [[no_unique_address]] std::conditional_t<Policy::rethrow_failures, nothing_reported, failure_slot> reported_;
+    [[no_unique_address]] std::conditional_t<Policy::rethrow_failures || !may_throw, no_failure_slot, failure_slot> reported_;
+    [[no_unique_address]] whole<Observer> observer_;
+    [[no_unique_address]] whole<context_type> context_;
+    configuration_type config_{};
+    // The outcome of the last run (low bits) and the mark of a run under way (running_bit). An
+    // enumeration and not a std::uint8_t: a store through an unsigned char may alias any object,
+    // so the compiler would reload the context after every mark.
+    enum class run_status : std::uint8_t {};
+    static constexpr std::uint8_t running_bit = 0x80;
+    static constexpr std::uint8_t bits(run_status s) { return static_cast<std::uint8_t>(s); }
+    run_status status_ = static_cast<run_status>(outcome::ignored);
+    bool clock_started_ = false;  // a cycle has run: clock_ is the caller's time
 };
 
 }  // namespace bsc::detail

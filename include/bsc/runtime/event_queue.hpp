@@ -22,7 +22,7 @@ public:
 
     /// Raises e: queues it for processing after the current step. False if the queue is full.
     template <class E>
-    constexpr bool operator()(E const& e) {
+    constexpr bool operator()(E const& e) noexcept(std::is_nothrow_copy_constructible_v<E>) {
         if constexpr (index_in<E, Es...>() < 0) {
             detail::report<error::raised_event_not_in_chart<E>>();
             return false;
@@ -72,7 +72,7 @@ template <class... Es>
 class event_queue<0, type_list<Es...>> {
 public:
     template <class E>
-    constexpr bool operator()(E const&) {
+    constexpr bool operator()(E const&) noexcept {
         overflowed_ = true;
         return false;
     }
@@ -95,7 +95,7 @@ template <class Events>
 class no_event_queue {
 public:
     template <class E>
-    constexpr bool operator()(E const&) {  // never called: no action takes the raise argument
+    constexpr bool operator()(E const&) noexcept {  // never called: no action takes the raise argument
         return false;
     }
     static constexpr bool empty() { return true; }

@@ -114,6 +114,7 @@ class machine : public bsc::detail::driver<machine<Chart, Policy, Observer>, Cha
                                            typename tables<Chart, Policy>::raise_type> {
     using base = bsc::detail::driver<machine, Chart, Policy, Observer, typename tables<Chart, Policy>::raise_type>;
     friend base;
+    static constexpr bool marks_running_lazily = false;  // a dispatch is marked running throughout
     using hooks = observer_hooks<Chart, Policy, Observer>;
     static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
 
@@ -171,18 +172,18 @@ private:
 
     // ---- entry and exit -------------------------------------------------------------------
     void run_entry(state_id s) {
-        if (auto const f = states[s].entry) f(this->chart_, this->context_, this->queue_, this->sink());
+        if (auto const f = states[s].entry) f(this->chart(), this->context_.value, this->queue_, this->sink());
         // A state's timeouts count from its entry, at the time of the last cycle.
         if constexpr (tables_type::timeout_slots > 0)
             for (std::int16_t k = 0; k < states[s].timeout_slots; ++k)
                 this->armed_[static_cast<std::size_t>(states[s].timeout_slot + k)] = this->clock_;
         if constexpr (observed)
-            if (auto const h = hooks::on_entry[s]) h(this->observer_);
+            if (auto const h = hooks::on_entry[s]) h(this->observer_.value);
     }
     void run_exit(state_id s) {
-        if (auto const f = states[s].exit) f(this->chart_, this->context_, this->queue_, this->sink());
+        if (auto const f = states[s].exit) f(this->chart(), this->context_.value, this->queue_, this->sink());
         if constexpr (observed)
-            if (auto const h = hooks::on_exit[s]) h(this->observer_);
+            if (auto const h = hooks::on_exit[s]) h(this->observer_.value);
     }
 
     // The paper's StartStEng: the initial configuration, entered from the root down.
@@ -268,7 +269,7 @@ private:
 
     bool guard_holds(std::int16_t t, void const* e) {
         auto const g = transitions[static_cast<std::size_t>(t)].guard;
-        return g == nullptr || this->test([&] { return g(this->chart_, this->context_, e); });
+        return g == nullptr || this->test([&] { return g(this->chart(), this->context_.value, e); });
     }
 
     // Step 2 for one active basic state: its candidates are the transitions on the event from
@@ -286,9 +287,9 @@ private:
 
     void run_action(std::int16_t t, void const* e) {
         if constexpr (observed)
-            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_, this->chart_, e);
+            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_.value, this->chart(), e);
         if (auto const action = transitions[static_cast<std::size_t>(t)].action)
-            this->run([&] { action(this->chart_, this->context_, e, this->queue_); });
+            this->run([&] { action(this->chart(), this->context_.value, e, this->queue_); });
     }
 
     template <int Trigger, class E>
@@ -368,7 +369,7 @@ private:
         if constexpr (tables_type::timeout_slots > 0)
             if (row.event == timeout_id &&
                 !bsc::detail::has_elapsed(this->armed_[static_cast<std::size_t>(row.timeout_slot)], this->clock_,
-                                          row.delay(this->chart_)))
+                                          row.delay(this->chart())))
                 return false;
         return guard_holds(t, &no_event);
     }

@@ -21,7 +21,7 @@
 #include <bsc/dsl/row.hpp>
 #include <bsc/model/layout.hpp>
 #include <bsc/outcome.hpp>
-#include <bsc/runtime/event_queue.hpp>
+#include <bsc/runtime/queue_for.hpp>
 #include <bsc/runtime/failures.hpp>
 
 namespace bsc::table {
@@ -115,7 +115,7 @@ template <class Chart, class Policy = default_policy>
 struct tables {
     using chart_type = std::remove_cv_t<Chart>;
     using context_type = typename chart_type::context_type;
-    using raise_type = bsc::detail::event_queue<Policy::queue_capacity, typename bsc::detail::chart_model<chart_type>::events>;
+    using raise_type = bsc::detail::queue_for<chart_type, Policy>;
     using state_row_type = state_row<chart_type, raise_type>;
     using transition_row_type = transition_row<chart_type, raise_type>;
 

@@ -171,8 +171,7 @@ constexpr std::size_t encoded_bits() {
     } else if constexpr (is_machine<T>) {
         std::size_t config = 0;
         for (unsigned b : slot_bits<T>()) config += b;
-        constexpr std::size_t timeouts =
-            std::tuple_size_v<std::remove_reference_t<decltype(access::armed(std::declval<T&>()))>>;
+        constexpr std::size_t timeouts = std::remove_cvref_t<decltype(access::armed(std::declval<T&>()))>{}.size();
         return config + encoded_bits<typename T::context_type>() + cycle_bits * timeouts;
     } else if constexpr (std::is_same_v<T, timer>) {
         return 2 + 1 + cycle_bits;  // phase, expired, periods since timing began

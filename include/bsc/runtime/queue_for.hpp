@@ -1,0 +1,39 @@
+#pragma once
+// The internal event queue a machine of a chart needs: none if no action of the chart can raise
+// an event (detail::may_raise) and the chart does not take bsc::action_failed.
+
+#include <type_traits>
+
+#include <bsc/action_failed.hpp>
+#include <bsc/detail/meta.hpp>
+#include <bsc/dsl/action.hpp>
+#include <bsc/dsl/row.hpp>
+#include <bsc/model/chart_model.hpp>
+#include <bsc/runtime/event_queue.hpp>
+
+namespace bsc::detail {
+// Whether any action of the chart can raise an event; if none can, the machine has no queue.
+template <class Model, class Policy>
+constexpr bool chart_may_raise() {
+    using context = typename Model::chart_context;
+    using raise = event_queue<Policy::queue_capacity, typename Model::events>;
+    return []<class... Rows>(type_list<Rows...>) {
+        // The event an action sees: the row's event, or bsc::eventless for condition-driven
+        // rows (entry and exit rows see none; may_raise ignores it for them).
+        return (may_raise<context, std::conditional_t<std::is_void_v<typename trigger_event<Rows>::type>, eventless_trigger,
+                                                      typename trigger_event<Rows>::type>,
+                          raise>(static_cast<decltype(Rows::action) const*>(nullptr)) ||
+                ...);
+    }(typename Model::row_types{});
+}
+
+// The queue of a machine of the chart (either back end): a bounded queue of the chart's events
+// if an action can raise, or the chart takes bsc::action_failed (which the machine raises);
+// otherwise none, and no test for raised events after a microstep.
+template <class Chart, class Policy>
+using queue_for =
+    std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
+                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0,
+                       event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
+                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>;
+}  // namespace bsc::detail

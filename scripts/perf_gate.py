@@ -1,0 +1,203 @@
+#!/usr/bin/env python3
+"""The performance gate: fails when bsc's dispatch or compile time grows past its recorded baseline.
+
+    perf_gate.py instructions --compiler CXX [--record]
+    perf_gate.py compile-time --compiler CXX [--record]
+
+instructions: builds each dispatch workload of bench/ (flat, mcs, deep, wide, and flat with its
+actions declared noexcept: bsc and the hand-written switch, -O2, no sanitizers), counts with callgrind the instructions per event of
+`bench_<workload>_insns IMPL N` minus `... IMPL 0`, divided by N, and fails if bsc's count of a
+workload exceeds the baseline by more than 0.5 % (plus 0.1 instruction for rounding). Callgrind
+counts are deterministic for a given compiler and library, so the margin is small; a change that
+makes dispatch cheaper passes and should record the new, lower baseline.
+
+compile-time: compiles the 50-state flat chart probe (bench/compile_time/flat_bsc.cpp.in) and a
+reference translation unit (bench/compile_time/reference.cpp: the hand-written flat workload,
+which includes the same standard and benchmark headers) alternately, three times each, and takes
+the least CPU time (user + system) and the largest peak memory of each. The gate is on the ratios
+probe / reference, so that the speed and load of the machine cancel: it fails if the CPU ratio
+exceeds its baseline by more than 25 % or the memory ratio by more than 15 %.
+
+Baselines are kept per compiler and major version in bench/baselines.json; --record writes the
+measured values there instead of checking them. A compiler with no baseline is reported and the
+script exits 77 (ctest counts the test as skipped). Exit 0: within the baseline; 1: over it.
+"""
+
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+BASELINES = ROOT / "bench" / "baselines.json"
+# (name, bench/ directory, extra compile flags): flat_noexcept is the flat workload with its
+# actions declared noexcept, where the machine keeps no record of failures.
+WORKLOADS = [("flat", "flat", []), ("flat_noexcept", "flat", ["-DBENCH_NOEXCEPT_ACTIONS=1"]),
+             ("mcs", "mcs", []), ("deep", "deep", []), ("wide", "wide", [])]
+IMPLEMENTATIONS = ["bsc_compiled", "hand_written"]
+EVENTS = 20000
+INSTRUCTION_MARGIN = 0.005
+INSTRUCTION_SLACK = 0.1
+CPU_MARGIN = 0.25
+MEMORY_MARGIN = 0.15
+REPEATS = 3
+SKIP = 77
+
+
+def compiler_id(cxx):
+    """'gcc-12' or 'clang-14', from the compiler's own version banner."""
+    banner = subprocess.run([cxx, "--version"], capture_output=True, text=True, check=True).stdout
+    kind = "clang" if "clang" in banner else "gcc"
+    found = re.search(r"(\d+)\.\d+(\.\d+)?", banner.splitlines()[0])
+    return f"{kind}-{found.group(1) if found else 'unknown'}"
+
+
+def flags():
+    return ["-std=c++20", "-O2", "-DNDEBUG", f"-I{ROOT / 'include'}", f"-I{ROOT / 'bench'}"]
+
+
+def compile_object(cxx, source, out, extra=()):
+    subprocess.run([cxx, *flags(), *extra, "-c", str(source), "-o", str(out)], check=True)
+
+
+def callgrind_total(cmd, work):
+    out = work / "callgrind.out"
+    run = subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", *map(str, cmd)],
+                         capture_output=True, text=True)
+    if run.returncode != 0:
+        raise RuntimeError(f"{' '.join(map(str, cmd))} under callgrind failed:\n{run.stderr}")
+    for line in out.read_text().splitlines():
+        if line.startswith("totals:") or line.startswith("summary:"):
+            return int(line.split()[1])
+    raise RuntimeError("no totals in callgrind output")
+
+
+def measure_instructions(cxx, work):
+    counts = {}
+    for w, directory, extra in WORKLOADS:
+        objects = []
+        for impl in ("bsc", "hand"):
+            obj = work / f"{w}_{impl}.o"
+            compile_object(cxx, ROOT / "bench" / directory / f"{directory}_{impl}.cpp", obj, extra)
+            objects.append(str(obj))
+        exe = work / f"{w}_insns"
+        subprocess.run([cxx, *flags(), f'-DBENCH_WORKLOAD_HEADER="{directory}/{directory}_workload.hpp"',
+                        f"-DBENCH_WORKLOAD={directory}_bench::workload", str(ROOT / "bench" / "insns_main.cpp"),
+                        *objects, "-lbenchmark", "-lpthread", "-o", str(exe)], check=True)
+        counts[w] = {}
+        for impl in IMPLEMENTATIONS:
+            with_events = callgrind_total([exe, impl, EVENTS], work)
+            without = callgrind_total([exe, impl, 0], work)
+            counts[w][impl] = round((with_events - without) / EVENTS, 2)
+        print(f"{w}: " + ", ".join(f"{impl} {counts[w][impl]:.2f}" for impl in IMPLEMENTATIONS) +
+              f" instructions/event (bsc / hand {counts[w]['bsc_compiled'] / counts[w]['hand_written']:.3f})")
+    return counts
+
+
+def check_instructions(measured, baseline):
+    failures = []
+    for w, impls in measured.items():
+        if w not in baseline:
+            failures.append(f"{w}: no baseline (record one with --record)")
+            continue
+        limit = baseline[w]["bsc_compiled"] * (1 + INSTRUCTION_MARGIN) + INSTRUCTION_SLACK
+        if impls["bsc_compiled"] > limit:
+            failures.append(f"{w}: bsc dispatch costs {impls['bsc_compiled']:.2f} instructions/event, over its "
+                            f"baseline {baseline[w]['bsc_compiled']:.2f} (limit {limit:.2f})")
+    return failures
+
+
+def timed_compile(cxx, source, work):
+    """CPU seconds (user + system) and peak memory (KiB) of compiling source: the resource usage
+    of that one child process, as wait4 reports it."""
+    with open(work / "compile.log", "w+") as log:
+        child = subprocess.Popen([cxx, *flags(), "-c", str(source), "-o", str(work / "probe.o")],
+                                 stdout=log, stderr=subprocess.STDOUT)
+        _, status, usage = os.wait4(child.pid, 0)
+        child.returncode = os.waitstatus_to_exitcode(status)
+        if child.returncode != 0:
+            log.seek(0)
+            raise RuntimeError(f"compiling {source} failed:\n{log.read()}")
+    return usage.ru_utime + usage.ru_stime, usage.ru_maxrss
+
+
+def measure_compile_time(cxx, work):
+    probe = work / "flat_bsc_50.cpp"
+    template = (ROOT / "bench" / "compile_time" / "flat_bsc.cpp.in").read_text()
+    probe.write_text(template.replace("@N@", "50"))
+    reference = ROOT / "bench" / "compile_time" / "reference.cpp"
+    results = {"probe": [], "reference": []}
+    for _ in range(REPEATS):
+        results["reference"].append(timed_compile(cxx, reference, work))
+        results["probe"].append(timed_compile(cxx, probe, work))
+    probe_cpu = min(c for c, _ in results["probe"])
+    ref_cpu = min(c for c, _ in results["reference"])
+    probe_mem = max(m for _, m in results["probe"])
+    ref_mem = max(m for _, m in results["reference"])
+    measured = {"probe_cpu_seconds": round(probe_cpu, 3), "reference_cpu_seconds": round(ref_cpu, 3),
+                "probe_peak_kib": probe_mem, "reference_peak_kib": ref_mem,
+                "cpu_ratio": round(probe_cpu / ref_cpu, 3), "memory_ratio": round(probe_mem / ref_mem, 3)}
+    print(f"50-state flat chart: {probe_cpu:.2f} s CPU, {probe_mem / 1024:.0f} MiB; reference: {ref_cpu:.2f} s, "
+          f"{ref_mem / 1024:.0f} MiB; ratios: CPU {measured['cpu_ratio']:.3f}, memory {measured['memory_ratio']:.3f}")
+    return measured
+
+
+def check_compile_time(measured, baseline):
+    failures = []
+    cpu_limit = baseline["cpu_ratio"] * (1 + CPU_MARGIN)
+    mem_limit = baseline["memory_ratio"] * (1 + MEMORY_MARGIN)
+    if measured["cpu_ratio"] > cpu_limit:
+        failures.append(f"compile CPU ratio {measured['cpu_ratio']:.3f} over its baseline {baseline['cpu_ratio']:.3f} "
+                        f"(limit {cpu_limit:.3f})")
+    if measured["memory_ratio"] > mem_limit:
+        failures.append(f"compile memory ratio {measured['memory_ratio']:.3f} over its baseline "
+                        f"{baseline['memory_ratio']:.3f} (limit {mem_limit:.3f})")
+    return failures
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("gate", choices=["instructions", "compile-time"])
+    parser.add_argument("--compiler", required=True)
+    parser.add_argument("--record", action="store_true", help="write the measured values as the new baseline")
+    args = parser.parse_args()
+
+    cxx = shutil.which(args.compiler) or args.compiler
+    ident = compiler_id(cxx)
+    key = "instructions" if args.gate == "instructions" else "compile_time"
+    if args.gate == "instructions" and shutil.which("valgrind") is None:
+        print("valgrind is not installed: no instruction counts (scripts/run deps installs it)")
+        return SKIP
+    baselines = json.loads(BASELINES.read_text()) if BASELINES.exists() else {}
+    baseline = baselines.get(ident, {}).get(key)
+    if baseline is None and not args.record:
+        print(f"no {key} baseline for {ident} in {BASELINES.relative_to(ROOT)}: nothing to compare with")
+        return SKIP
+
+    started = time.monotonic()
+    with tempfile.TemporaryDirectory(prefix="bsc-perf-gate-") as tmp:
+        work = Path(tmp)
+        measured = (measure_instructions if args.gate == "instructions" else measure_compile_time)(cxx, work)
+    print(f"({ident}, {time.monotonic() - started:.0f} s)")
+
+    if args.record:
+        baselines.setdefault(ident, {})[key] = measured
+        BASELINES.write_text(json.dumps(baselines, indent=2, sort_keys=True) + "\n")
+        print(f"recorded as the {key} baseline for {ident}")
+        return 0
+    failures = (check_instructions if args.gate == "instructions" else check_compile_time)(measured, baseline)
+    for f in failures:
+        print("OVER BASELINE: " + f)
+    if not failures:
+        print("within the baseline")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

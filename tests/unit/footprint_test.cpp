@@ -1,0 +1,170 @@
+// What a machine stores and what a dispatch pays for: a machine holds its configuration and
+// what its chart really needs (no copy of a chart whose rows carry no data, no record of
+// failures where nothing can throw, no timeout slots without timeouts), and the mark of a run
+// under way is written only when the machine's own code could call it back.
+
+#include <doctest/doctest.h>
+
+#include <bsc/bsc.hpp>
+#include <bsc/table/engine.hpp>
+#include <stdexcept>
+
+#include "backends.hpp"
+
+using namespace std::chrono_literals;
+
+namespace fp {
+struct Root;
+struct A;
+struct B;
+struct C;
+struct go {};
+struct back {};
+
+struct none {};
+struct count {
+    int n = 0;
+};
+
+// The smallest useful chart: three states, empty context, no action.
+inline constexpr auto bare = bsc::make_chart<none>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+                                                   bsc::state<A> + bsc::event<go> = bsc::state<B>,
+                                                   bsc::state<B> + bsc::event<go> = bsc::state<C>,
+                                                   bsc::state<C> + bsc::event<back> = bsc::state<A>);
+
+// The same with actions and a guard that cannot throw (noexcept), and with ones that can.
+inline constexpr auto quiet = bsc::make_chart<count>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+    bsc::state<A> + bsc::event<go>[([](count const& c) noexcept { return c.n < 100; })] /
+                            [](count& c) noexcept { ++c.n; } = bsc::state<B>,
+    bsc::state<B> + bsc::on_entry / [](count& c) noexcept { c.n += 10; },
+    bsc::state<B> + bsc::event<go> / [](count& c) noexcept { ++c.n; } = bsc::state<C>,
+    bsc::state<C> + bsc::event<back> = bsc::state<A>);
+inline constexpr auto loud = bsc::make_chart<count>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+    bsc::state<A> + bsc::event<go>[([](count const& c) { return c.n < 100; })] / [](count& c) { ++c.n; } =
+        bsc::state<B>,
+    bsc::state<B> + bsc::on_entry / [](count& c) { c.n += 10; },
+    bsc::state<B> + bsc::event<go> / [](count& c) { ++c.n; } = bsc::state<C>,
+    bsc::state<C> + bsc::event<back> = bsc::state<A>);
+
+// A chart whose action captures a value: its rows carry data, so a machine keeps its copy.
+inline constexpr int step_size = 7;
+inline constexpr auto capturing = bsc::make_chart<count>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+    bsc::state<A> + bsc::event<go> / [k = step_size](count& c) noexcept { c.n += k; } = bsc::state<B>,
+    bsc::state<B> + bsc::event<go> = bsc::state<C>, bsc::state<C> + bsc::event<back> = bsc::state<A>);
+
+// With a timeout: its delay is data, and the machine has a timeout slot.
+inline constexpr auto timed = bsc::make_chart<none>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+                                                    bsc::state<A> + bsc::after(5ms) = bsc::state<B>,
+                                                    bsc::state<B> + bsc::event<go> = bsc::state<C>,
+                                                    bsc::state<C> + bsc::event<back> = bsc::state<A>);
+
+constexpr std::size_t padded(std::size_t bytes, std::size_t alignment) {
+    return (bytes + alignment - 1) / alignment * alignment;
+}
+}  // namespace fp
+
+TEST_CASE_TEMPLATE("a machine stores its configuration and what its chart needs, nothing more", Backend,
+                   bsc_test::compiled, bsc_test::table) {
+    using bare = bsc_test::machine_t<Backend, decltype(fp::bare)>;
+    using quiet = bsc_test::machine_t<Backend, decltype(fp::quiet)>;
+    using loud = bsc_test::machine_t<Backend, decltype(fp::loud)>;
+    using capturing = bsc_test::machine_t<Backend, decltype(fp::capturing)>;
+    using timed = bsc_test::machine_t<Backend, decltype(fp::timed)>;
+    constexpr std::size_t clock = sizeof(bsc::duration);
+    constexpr std::size_t bytes = 3;  // the configuration, the status (last outcome, running), clock started
+    // No chart, no context, no queue, no failure record: the clock and three bytes.
+    CHECK(sizeof(bare) == fp::padded(clock + bytes, alignof(bsc::duration)));
+    // Its context (an int) on top, and still no chart: guards and actions that capture nothing
+    // are made again from nothing.
+    CHECK(sizeof(quiet) == fp::padded(clock + sizeof(int) + bytes, alignof(bsc::duration)));
+    // Guards and actions that may throw: the record of a failure (one pointer) on top.
+    CHECK(sizeof(loud) == fp::padded(clock + sizeof(void*) + sizeof(int) + bytes, alignof(bsc::duration)));
+    // A captured value: the chart's copy (which holds the capture) on top.
+    CHECK(sizeof(decltype(fp::capturing)) >= sizeof(int));
+    CHECK(sizeof(capturing) ==
+          fp::padded(fp::padded(sizeof(decltype(fp::capturing)), alignof(bsc::duration)) + clock + sizeof(int) + bytes,
+                     alignof(bsc::duration)));
+    // A timeout: the chart's copy (which holds the delay) and the state's entry time on top.
+    CHECK(sizeof(decltype(fp::timed)) >= clock);
+    CHECK(sizeof(timed) == fp::padded(sizeof(decltype(fp::timed)), alignof(bsc::duration)) + clock + clock +
+                               fp::padded(bytes, alignof(bsc::duration)));
+}
+
+TEST_CASE_TEMPLATE("a machine that stores no chart behaves as one that does", Backend, bsc_test::compiled,
+                   bsc_test::table) {
+    bsc_test::machine_t<Backend, decltype(fp::quiet)> quiet{fp::quiet};
+    bsc_test::machine_t<Backend, decltype(fp::loud)> loud{fp::loud};
+    for (int i = 0; i < 9; ++i) {
+        CHECK(quiet.dispatch(fp::back{}) == loud.dispatch(fp::back{}));  // ignored in A
+        CHECK(quiet.dispatch(fp::go{}) == loud.dispatch(fp::go{}));
+        CHECK(quiet.dispatch(fp::go{}) == loud.dispatch(fp::go{}));
+        CHECK(quiet.dispatch(fp::back{}) == loud.dispatch(fp::back{}));
+        CHECK(quiet.context().n == loud.context().n);
+        CHECK(quiet.last_outcome() == loud.last_outcome());
+    }
+    CHECK(quiet.context().n == 9 * 12);
+    CHECK(quiet.last_failure() == nullptr);  // nothing can have failed: always null
+    bsc_test::machine_t<Backend, decltype(fp::capturing)> capturing{fp::capturing};
+    CHECK(capturing.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(capturing.context().n == fp::step_size);
+}
+
+namespace fp {
+// A machine called back from its own guard, entry action or observer: each is refused.
+struct callback {
+    void* self = nullptr;
+    bsc::outcome (*poke)(void*) = nullptr;
+    bsc::outcome from_guard = bsc::outcome::consumed;
+    bsc::outcome from_entry = bsc::outcome::consumed;
+};
+inline constexpr auto calls_back = bsc::make_chart<callback>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+    bsc::state<A> + bsc::event<go>[([](callback const& c) {
+        // The guard's context is const; the callback goes through the stored pointer.
+        const_cast<callback&>(c).from_guard = c.poke(c.self);
+        return true;
+    })] = bsc::state<B>,
+    bsc::state<B> + bsc::on_entry / [](callback& c) { c.from_entry = c.poke(c.self); },
+    bsc::state<B> + bsc::event<go> = bsc::state<C>, bsc::state<C> + bsc::event<back> = bsc::state<A>);
+
+struct calling_observer {
+    void* self = nullptr;
+    bsc::outcome (*poke)(void*) = nullptr;
+    bsc::outcome seen = bsc::outcome::consumed;
+    template <class E>
+    void on_dispatch(E const&) {
+        if (self != nullptr) seen = poke(self);
+    }
+};
+}  // namespace fp
+
+TEST_CASE_TEMPLATE("a dispatch from the machine's own guard or entry action is refused", Backend, bsc_test::compiled,
+                   bsc_test::table) {
+    using machine = bsc_test::machine_t<Backend, decltype(fp::calls_back)>;
+    machine m{fp::calls_back};
+    m.context().self = &m;
+    m.context().poke = [](void* self) { return static_cast<machine*>(self)->dispatch(fp::back{}); };
+    CHECK(m.dispatch(fp::back{}) == bsc::outcome::ignored);  // no guard or action ran: a plain dispatch
+    CHECK(m.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(m.context().from_guard == bsc::outcome::reentrant);
+    CHECK(m.context().from_entry == bsc::outcome::reentrant);
+    CHECK(m.template is<fp::B>());
+    CHECK(m.last_outcome() == bsc::outcome::consumed);
+    // The run is over: the machine takes events again.
+    CHECK(m.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(m.dispatch(fp::back{}) == bsc::outcome::consumed);
+    CHECK(m.template is<fp::A>());
+}
+
+TEST_CASE_TEMPLATE("a dispatch from the machine's observer is refused", Backend, bsc_test::compiled, bsc_test::table) {
+    using machine = bsc_test::machine_t<Backend, decltype(fp::bare), bsc::default_policy, fp::calling_observer>;
+    machine m{fp::bare, fp::none{}, fp::calling_observer{}};
+    m.observer().self = &m;
+    m.observer().poke = [](void* self) { return static_cast<machine*>(self)->dispatch(fp::back{}); };
+    CHECK(m.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(m.observer().seen == bsc::outcome::reentrant);
+    CHECK(m.template is<fp::B>());
+}
