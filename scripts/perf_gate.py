@@ -4,8 +4,9 @@
     perf_gate.py instructions --compiler CXX [--record]
     perf_gate.py compile-time --compiler CXX [--record]
 
-instructions: builds each dispatch workload of bench/ (flat, mcs, deep, wide, and flat with its
-actions declared noexcept: bsc and the hand-written switch, -O2, no sanitizers), counts with callgrind the instructions per event of
+instructions: builds each dispatch workload of bench/ (flat, mcs, deep, wide; flat with its
+actions declared noexcept; flat, deep and wide with noexcept actions and bsc::lean_policy: bsc
+and the hand-written switch, -O2, no sanitizers), counts with callgrind the instructions per event of
 `bench_<workload>_insns IMPL N` minus `... IMPL 0`, divided by N, and fails if bsc's count of a
 workload exceeds the baseline by more than 0.5 % (plus 0.1 instruction for rounding). Callgrind
 counts are deterministic for a given compiler and library, so the margin is small; a change that
@@ -37,9 +38,13 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 BASELINES = ROOT / "bench" / "baselines.json"
 # (name, bench/ directory, extra compile flags): flat_noexcept is the flat workload with its
-# actions declared noexcept, where the machine keeps no record of failures.
+# actions declared noexcept, where the machine keeps no record of failures; *_lean also runs the
+# machine under bsc::lean_policy (no reentrancy test, no record of the last outcome).
 WORKLOADS = [("flat", "flat", []), ("flat_noexcept", "flat", ["-DBENCH_NOEXCEPT_ACTIONS=1"]),
-             ("mcs", "mcs", []), ("deep", "deep", []), ("wide", "wide", [])]
+             ("flat_lean", "flat", ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"]),
+             ("mcs", "mcs", []), ("deep", "deep", []),
+             ("deep_lean", "deep", ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"]), ("wide", "wide", []),
+             ("wide_lean", "wide", ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"])]
 IMPLEMENTATIONS = ["bsc_compiled", "hand_written"]
 EVENTS = 20000
 INSTRUCTION_MARGIN = 0.005

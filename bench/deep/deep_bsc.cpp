@@ -21,11 +21,22 @@ struct counters {
     std::uint64_t entries = 0;
 };
 
+// Built with -DBENCH_NOEXCEPT_ACTIONS=1 the actions are declared noexcept, and with
+// -DBENCH_LEAN_POLICY=1 the compiled machine runs under bsc::lean_policy (scripts/perf_gate.py).
+#ifndef BENCH_NOEXCEPT_ACTIONS
+#define BENCH_NOEXCEPT_ACTIONS 0
+#endif
+#if defined(BENCH_LEAN_POLICY) && BENCH_LEAN_POLICY
+using bench_policy = bsc::lean_policy;
+#else
+using bench_policy = bsc::default_policy;
+#endif
+
 template <int K>
-inline constexpr auto leave = [](counters& c) { c.count += static_cast<std::uint64_t>(K); };
+inline constexpr auto leave = [](counters& c) noexcept(BENCH_NOEXCEPT_ACTIONS) { c.count += static_cast<std::uint64_t>(K); };
 template <int K>
-inline constexpr auto come_back = [](counters& c) { c.count += 100u * static_cast<std::uint64_t>(K); };
-inline constexpr auto entered = [](counters& c) { ++c.entries; };
+inline constexpr auto come_back = [](counters& c) noexcept(BENCH_NOEXCEPT_ACTIONS) { c.count += 100u * static_cast<std::uint64_t>(K); };
+inline constexpr auto entered = [](counters& c) noexcept(BENCH_NOEXCEPT_ACTIONS) { ++c.entries; };
 
 template <int K>
 constexpr auto level() {
@@ -63,7 +74,7 @@ private:
     Machine m_{chart};
 };
 
-using compiled = bsc::machine<decltype(chart)>;
+using compiled = bsc::machine<decltype(chart), bench_policy>;
 using table = decltype(bsc::table::machine{chart});
 
 }  // namespace

@@ -149,6 +149,15 @@ struct unhandled_event {
     }
 };
 
+template <class Policy>
+struct last_outcome_not_kept {
+    constexpr ~last_outcome_not_kept() {
+        static_assert(detail::dependent_false<last_outcome_not_kept>,
+                      "bsc: this machine's policy has keep_last_outcome = false, so it keeps no outcome: read the "
+                      "outcome dispatch or step returns, or use a policy that keeps it (bsc::default_policy)");
+    }
+};
+
 template <class First, class Second>
 struct duplicate_event_name {
     constexpr ~duplicate_event_name() {

@@ -38,6 +38,14 @@ struct default_policy {
     /// consistent (and the constructor, for an entry action); false, they return
     /// outcome::failed and last_failure() holds it.
     static constexpr bool rethrow_failures = true;
+    /// true: a dispatch or step called from inside the machine's own guards, actions or
+    /// observer hooks is refused (outcome::reentrant). false: the caller promises that none
+    /// is; the machine does not test for it, and one would run nested inside the run under
+    /// way, against run to completion.
+    static constexpr bool refuse_reentry = true;
+    /// true: the machine keeps each run's outcome for last_outcome(). false: it keeps nothing
+    /// (dispatch and step still return it); last_outcome() and last_failure() do not compile.
+    static constexpr bool keep_last_outcome = true;
 };
 
 /// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],
@@ -46,6 +54,16 @@ struct default_policy {
 /// construction nor in dispatch.
 struct scan_policy : default_policy {
     static constexpr bool settle_eventless = false;
+};
+
+/// The policy of a dispatch with nothing but the chart's own work: no test for a reentrant
+/// call and no record of the last outcome (docs/benchmarks.md, analysis section 8: on a flat
+/// chart with noexcept actions, a dispatch is then as short as a hand-written switch). For
+/// code whose guards, actions and observer never call the machine back, and that reads each
+/// outcome from dispatch's return value.
+struct lean_policy : default_policy {
+    static constexpr bool refuse_reentry = false;
+    static constexpr bool keep_last_outcome = false;
 };
 
 /// What one BSC execution cycle (`step(now)`) did, on either back end.

@@ -416,7 +416,7 @@ void put_machine(writer& w, Machine const& m) {
     w.put(static_cast<std::uint64_t>(access::clock(m).count()), 8);
     w.put(access::clock_started(m) ? 1 : 0, 1);
     for (duration armed : access::armed(machine)) w.put(static_cast<std::uint64_t>(armed.count()), 8);
-    w.put(static_cast<std::uint64_t>(m.last_outcome()), 1);
+    w.put(static_cast<std::uint64_t>(access::last_outcome(m)), 1);
     put(w, m.context());
 }
 

@@ -308,6 +308,15 @@ struct unhandled_event {
     }
 };
 
+template <class Policy>
+struct last_outcome_not_kept {
+    constexpr ~last_outcome_not_kept() {
+        static_assert(detail::dependent_false<last_outcome_not_kept>,
+                      "bsc: this machine's policy has keep_last_outcome = false, so it keeps no outcome: read the "
+                      "outcome dispatch or step returns, or use a policy that keeps it (bsc::default_policy)");
+    }
+};
+
 template <class First, class Second>
 struct duplicate_event_name {
     constexpr ~duplicate_event_name() {
@@ -2446,6 +2455,14 @@ struct default_policy {
     /// consistent (and the constructor, for an entry action); false, they return
     /// outcome::failed and last_failure() holds it.
     static constexpr bool rethrow_failures = true;
+    /// true: a dispatch or step called from inside the machine's own guards, actions or
+    /// observer hooks is refused (outcome::reentrant). false: the caller promises that none
+    /// is; the machine does not test for it, and one would run nested inside the run under
+    /// way, against run to completion.
+    static constexpr bool refuse_reentry = true;
+    /// true: the machine keeps each run's outcome for last_outcome(). false: it keeps nothing
+    /// (dispatch and step still return it); last_outcome() and last_failure() do not compile.
+    static constexpr bool keep_last_outcome = true;
 };
 
 /// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],
@@ -2454,6 +2471,16 @@ struct default_policy {
 /// construction nor in dispatch.
 struct scan_policy : default_policy {
     static constexpr bool settle_eventless = false;
+};
+
+/// The policy of a dispatch with nothing but the chart's own work: no test for a reentrant
+/// call and no record of the last outcome (docs/benchmarks.md, analysis section 8: on a flat
+/// chart with noexcept actions, a dispatch is then as short as a hand-written switch). For
+/// code whose guards, actions and observer never call the machine back, and that reads each
+/// outcome from dispatch's return value.
+struct lean_policy : default_policy {
+    static constexpr bool refuse_reentry = false;
+    static constexpr bool keep_last_outcome = false;
 };
 
 /// What one BSC execution cycle (`step(now)`) did, on either back end.
@@ -3807,6 +3834,11 @@ struct access {
     static constexpr auto& armed(M& m) {
         return driver_of(m).armed_;
     }
+    // The last outcome as the machine keeps it (outcome::ignored under a policy that keeps none).
+    template <class M>
+    static constexpr outcome last_outcome(M const& m) {
+        return driver_of(m).kept_outcome();
+    }
     template <class M>
     static constexpr void set_last_outcome(M& m, outcome last) {
         driver_of(m).record(last);
@@ -5006,7 +5038,8 @@ using timeout_slots = std::conditional_t<Slots == 0, no_timeout_slots, std::arra
 
 // A member handed out by reference (the context, the observer): no space when T is empty, and
 // otherwise T whole. A [[no_unique_address]] T itself could lend its tail padding to the next
-// members, and an assignment through the reference would then overwrite them.
+// members, and bytes copied over the reference (std::memcpy of a trivially copyable object)
+// would then overwrite them.
 template <class T, bool Empty = std::is_empty_v<T>>
 struct whole {
     T value;
@@ -5182,13 +5215,17 @@ public:
     }
 
     /// The outcome of the last dispatch (or of construction).
-    constexpr outcome last_outcome() const { return static_cast<outcome>(bits(status_) & ~running_bit); }
+    constexpr outcome last_outcome() const {
+        if constexpr (!Policy::keep_last_outcome) detail::report<error::last_outcome_not_kept<Policy>>();
+        return kept_outcome();
+    }
 
     /// The exception of the last dispatch, cycle or construction whose outcome was
     /// outcome::failed (a policy whose rethrow_failures is false); null otherwise.
     std::exception_ptr last_failure() const {
+        if constexpr (!Policy::keep_last_outcome) detail::report<error::last_outcome_not_kept<Policy>>();
         if constexpr (!Policy::rethrow_failures && may_throw)
-            if (last_outcome() == outcome::failed) return reported_.get();
+            if (kept_outcome() == outcome::failed) return reported_.get();
         return nullptr;
     }
 
@@ -5230,8 +5267,17 @@ protected:
     // it is about to run (the back end calls mark_running() there): only guards, actions and
     // the observer can call the machine back, and a dispatch that runs none of them (an
     // ignored event) then never writes the mark.
-    constexpr bool running() const { return (bits(status_) & running_bit) != 0; }
-    constexpr void mark_running() { status_ = static_cast<run_status>(bits(status_) | running_bit); }
+    constexpr bool running() const {
+        if constexpr (Policy::refuse_reentry)
+            return (bits(status_) & running_bit) != 0;
+        else
+            return false;  // the caller's promise: never called back
+    }
+    constexpr void mark_running() {
+        if constexpr (Policy::refuse_reentry) status_ = static_cast<run_status>(bits(status_) | running_bit);
+    }
+    // The outcome of the last run as kept (outcome::ignored if the policy keeps none).
+    constexpr outcome kept_outcome() const { return static_cast<outcome>(bits(status_) & ~running_bit); }
 
     // Runs a guard (true if it holds) or a block of an action: what either throws goes to fail().
     template <class Guard>
@@ -5326,7 +5372,7 @@ private:
 
     // The outcome of a dispatch that ran no guard, action or observer: recorded, and returned.
     constexpr outcome record(outcome result) {
-        status_ = static_cast<run_status>(result);
+        if constexpr (Policy::keep_last_outcome || Policy::refuse_reentry) status_ = static_cast<run_status>(result);
         return result;
     }
 

@@ -7,7 +7,10 @@
 
 #include <bsc/bsc.hpp>
 #include <bsc/table/engine.hpp>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
+#include <type_traits>
 
 #include "backends.hpp"
 
@@ -113,6 +116,42 @@ TEST_CASE_TEMPLATE("a machine that stores no chart behaves as one that does", Ba
 }
 
 namespace fp {
+// A context with tail padding (8 + 1 bytes in 16): the machine's own bytes must not live there,
+// or copying bytes over the whole context would overwrite them.
+struct padded_context {
+    std::int64_t total = 0;
+    bool flag = false;
+};
+inline constexpr auto padded_chart = bsc::make_chart<padded_context>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+    bsc::state<A> + bsc::event<go> / [](padded_context& c) noexcept { c.total += 1; } = bsc::state<B>,
+    bsc::state<B> + bsc::event<go> = bsc::state<C>, bsc::state<C> + bsc::event<back> = bsc::state<A>);
+}  // namespace fp
+
+TEST_CASE_TEMPLATE("bytes copied over the whole context leave the machine's configuration and outcome alone", Backend,
+                   bsc_test::compiled, bsc_test::table) {
+    bsc_test::machine_t<Backend, decltype(fp::padded_chart)> m{fp::padded_chart};
+    CHECK(m.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(m.dispatch(fp::go{}) == bsc::outcome::consumed);
+    REQUIRE(m.template is<fp::C>());
+    // Bytes copied into the context, padding included, as a trivially copyable object may be
+    // (restored from a buffer, say): allowed because the context is not a potentially
+    // overlapping subobject, whose tail padding could hold the machine's own bytes.
+    static_assert(std::is_trivially_copyable_v<fp::padded_context>);
+    fp::padded_context replacement;
+    std::memset(static_cast<void*>(&replacement), 0xff, sizeof replacement);
+    replacement.total = 40;
+    replacement.flag = true;
+    std::memcpy(static_cast<void*>(&m.context()), &replacement, sizeof replacement);
+    CHECK(m.template is<fp::C>());
+    CHECK(m.last_outcome() == bsc::outcome::consumed);
+    CHECK(m.dispatch(fp::back{}) == bsc::outcome::consumed);
+    CHECK(m.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(m.context().total == 41);
+    CHECK(m.template is<fp::B>());
+}
+
+namespace fp {
 // A machine called back from its own guard, entry action or observer: each is refused.
 struct callback {
     void* self = nullptr;
@@ -167,4 +206,26 @@ TEST_CASE_TEMPLATE("a dispatch from the machine's observer is refused", Backend,
     CHECK(m.dispatch(fp::go{}) == bsc::outcome::consumed);
     CHECK(m.observer().seen == bsc::outcome::reentrant);
     CHECK(m.template is<fp::B>());
+}
+
+TEST_CASE_TEMPLATE("a machine under bsc::lean_policy behaves as one under the default policy and returns each outcome",
+                   Backend, bsc_test::compiled, bsc_test::table) {
+    bsc_test::machine_t<Backend, decltype(fp::quiet)> kept{fp::quiet};
+    bsc_test::machine_t<Backend, decltype(fp::quiet), bsc::lean_policy> lean{fp::quiet};
+    static_assert(!bsc::lean_policy::refuse_reentry && !bsc::lean_policy::keep_last_outcome);
+    auto const same = [&] {
+        return kept.context().n == lean.context().n && kept.template is<fp::A>() == lean.template is<fp::A>() &&
+               kept.template is<fp::B>() == lean.template is<fp::B>() &&
+               kept.template is<fp::C>() == lean.template is<fp::C>();
+    };
+    for (int i = 0; i < 20; ++i) {
+        auto const outcome = lean.dispatch(fp::go{});
+        CHECK(outcome == kept.dispatch(fp::go{}));
+        CHECK(outcome == kept.last_outcome());
+        CHECK(lean.dispatch(fp::back{}) == kept.dispatch(fp::back{}));
+        CHECK(lean.step(bsc::duration{i}).status == kept.step(bsc::duration{i}).status);
+        CHECK(same());
+    }
+    CHECK(lean.context().n > 0);
+    CHECK(lean.dispatch(fp::back{}, bsc::allow_unhandled) == bsc::outcome::ignored);
 }

@@ -84,6 +84,11 @@ struct access {
     static constexpr auto& armed(M& m) {
         return driver_of(m).armed_;
     }
+    // The last outcome as the machine keeps it (outcome::ignored under a policy that keeps none).
+    template <class M>
+    static constexpr outcome last_outcome(M const& m) {
+        return driver_of(m).kept_outcome();
+    }
     template <class M>
     static constexpr void set_last_outcome(M& m, outcome last) {
         driver_of(m).record(last);

@@ -123,7 +123,8 @@ using timeout_slots = std::conditional_t<Slots == 0, no_timeout_slots, std::arra
 
 // A member handed out by reference (the context, the observer): no space when T is empty, and
 // otherwise T whole. A [[no_unique_address]] T itself could lend its tail padding to the next
-// members, and an assignment through the reference would then overwrite them.
+// members, and bytes copied over the reference (std::memcpy of a trivially copyable object)
+// would then overwrite them.
 template <class T, bool Empty = std::is_empty_v<T>>
 struct whole {
     T value;
@@ -299,13 +300,17 @@ public:
     }
 
     /// The outcome of the last dispatch (or of construction).
-    constexpr outcome last_outcome() const { return static_cast<outcome>(bits(status_) & ~running_bit); }
+    constexpr outcome last_outcome() const {
+        if constexpr (!Policy::keep_last_outcome) detail::report<error::last_outcome_not_kept<Policy>>();
+        return kept_outcome();
+    }
 
     /// The exception of the last dispatch, cycle or construction whose outcome was
     /// outcome::failed (a policy whose rethrow_failures is false); null otherwise.
     std::exception_ptr last_failure() const {
+        if constexpr (!Policy::keep_last_outcome) detail::report<error::last_outcome_not_kept<Policy>>();
         if constexpr (!Policy::rethrow_failures && may_throw)
-            if (last_outcome() == outcome::failed) return reported_.get();
+            if (kept_outcome() == outcome::failed) return reported_.get();
         return nullptr;
     }
 
@@ -347,8 +352,17 @@ protected:
     // it is about to run (the back end calls mark_running() there): only guards, actions and
     // the observer can call the machine back, and a dispatch that runs none of them (an
     // ignored event) then never writes the mark.
-    constexpr bool running() const { return (bits(status_) & running_bit) != 0; }
-    constexpr void mark_running() { status_ = static_cast<run_status>(bits(status_) | running_bit); }
+    constexpr bool running() const {
+        if constexpr (Policy::refuse_reentry)
+            return (bits(status_) & running_bit) != 0;
+        else
+            return false;  // the caller's promise: never called back
+    }
+    constexpr void mark_running() {
+        if constexpr (Policy::refuse_reentry) status_ = static_cast<run_status>(bits(status_) | running_bit);
+    }
+    // The outcome of the last run as kept (outcome::ignored if the policy keeps none).
+    constexpr outcome kept_outcome() const { return static_cast<outcome>(bits(status_) & ~running_bit); }
 
     // Runs a guard (true if it holds) or a block of an action: what either throws goes to fail().
     template <class Guard>
@@ -443,7 +457,7 @@ private:
 
     // The outcome of a dispatch that ran no guard, action or observer: recorded, and returned.
     constexpr outcome record(outcome result) {
-        status_ = static_cast<run_status>(result);
+        if constexpr (Policy::keep_last_outcome || Policy::refuse_reentry) status_ = static_cast<run_status>(result);
         return result;
     }
 
