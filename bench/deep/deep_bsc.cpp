@@ -4,6 +4,7 @@
 #include <bsc/bsc.hpp>
 #include <bsc/table/engine.hpp>
 
+#include "../bsc_variant.hpp"
 #include "deep_workload.hpp"
 
 namespace {
@@ -21,17 +22,7 @@ struct counters {
     std::uint64_t entries = 0;
 };
 
-// Built with -DBENCH_NOEXCEPT_ACTIONS=1 the actions are declared noexcept, and with
-// -DBENCH_LEAN_POLICY=1 the compiled machine runs under bsc::lean_policy (scripts/perf_gate.py).
-#ifndef BENCH_NOEXCEPT_ACTIONS
-#define BENCH_NOEXCEPT_ACTIONS 0
-#endif
-#if defined(BENCH_LEAN_POLICY) && BENCH_LEAN_POLICY
-using bench_policy = bsc::lean_policy;
-#else
-using bench_policy = bsc::default_policy;
-#endif
-
+// The actions' noexcept and the machine's policy: bench/bsc_variant.hpp.
 template <int K>
 inline constexpr auto leave = [](counters& c) noexcept(BENCH_NOEXCEPT_ACTIONS) { c.count += static_cast<std::uint64_t>(K); };
 template <int K>
@@ -74,7 +65,7 @@ private:
     Machine m_{chart};
 };
 
-using compiled = bsc::machine<decltype(chart), bench_policy>;
+using compiled = bsc::machine<decltype(chart), bench::bsc_policy>;
 using table = decltype(bsc::table::machine{chart});
 
 }  // namespace

@@ -33,13 +33,7 @@ private:
     Machine m_{chart};
 };
 
-// Built with -DBENCH_LEAN_POLICY=1, the compiled machine runs under bsc::lean_policy (no test for
-// a reentrant call, no record of the last outcome): scripts/perf_gate.py counts that too.
-#if defined(BENCH_LEAN_POLICY) && BENCH_LEAN_POLICY
-using compiled = bsc::machine<chart_type, bsc::lean_policy>;
-#else
-using compiled = bsc::machine<chart_type>;
-#endif
+using compiled = bsc::machine<chart_type, bench::bsc_policy>;  // bench/bsc_variant.hpp
 using table = decltype(bsc::table::machine{chart});
 
 }  // namespace

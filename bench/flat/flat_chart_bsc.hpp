@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <utility>
 
+#include "../bsc_variant.hpp"
+
 namespace flat_bsc {
 
 template <std::size_t N>
@@ -19,12 +21,7 @@ struct counter {
     std::uint64_t count = 0;
 };
 
-// The actions are plain lambdas, as users write them, so the machine contains what they might
-// throw. Built with -DBENCH_NOEXCEPT_ACTIONS=1 they are declared noexcept, and the machine
-// keeps no record of failures (scripts/perf_gate.py counts both).
-#ifndef BENCH_NOEXCEPT_ACTIONS
-#define BENCH_NOEXCEPT_ACTIONS 0
-#endif
+// The actions' noexcept: bench/bsc_variant.hpp.
 template <std::size_t I>
 inline constexpr auto count_action = [](counter& c) noexcept(BENCH_NOEXCEPT_ACTIONS) { c.count += I + 1; };
 
