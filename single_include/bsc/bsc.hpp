@@ -582,6 +582,7 @@ inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = tr
 #include <array>
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
 
 // begin include/bsc/detail/type_name.hpp
 // Compile-time type names without RTTI, read from the compiler's function signature.
@@ -1673,6 +1674,12 @@ template <class S, class E, class G, class A, class T>
 struct trigger_event<transition_row<S, event_trigger<E>, G, A, T>> {
     using type = E;
 };
+
+// The event a row's guard and action are called with: its trigger event, or bsc::eventless for
+// a condition-driven row (entry and exit actions see no event).
+template <class Row>
+using row_event_t = std::conditional_t<std::is_void_v<typename trigger_event<Row>::type>, eventless_trigger,
+                                       typename trigger_event<Row>::type>;
 
 // The events of the rows, each once, in order of first appearance.
 template <class List>
@@ -4977,22 +4984,14 @@ struct no_decoder {};
 // guard with (context, event) and its action with (context, event, queue), an entry or exit
 // action with (context, queue).
 template <class Context, class Queue, class Row>
-struct row_nothrow;
+struct row_nothrow {  // an entry or exit row
+    static constexpr bool value = std::is_nothrow_invocable_v<decltype(Row::action) const&, Context&, Queue&>;
+};
 template <class Context, class Queue, class S, class Trigger, class G, class A, class T>
 struct row_nothrow<Context, Queue, transition_row<S, Trigger, G, A, T>> {
-    using row = transition_row<S, Trigger, G, A, T>;
-    using event = std::conditional_t<std::is_void_v<typename trigger_event<row>::type>, eventless,
-                                     typename trigger_event<row>::type>;
+    using event = row_event_t<transition_row<S, Trigger, G, A, T>>;
     static constexpr bool value = std::is_nothrow_invocable_v<G const&, Context const&, event const&> &&
                                   std::is_nothrow_invocable_v<A const&, Context&, event const&, Queue&>;
-};
-template <class Context, class Queue, class S, class A>
-struct row_nothrow<Context, Queue, entry_row<S, A>> {
-    static constexpr bool value = std::is_nothrow_invocable_v<A const&, Context&, Queue&>;
-};
-template <class Context, class Queue, class S, class A>
-struct row_nothrow<Context, Queue, exit_row<S, A>> {
-    static constexpr bool value = std::is_nothrow_invocable_v<A const&, Context&, Queue&>;
 };
 
 // Whether any guard or action of the chart can throw. If none can (each is noexcept, or the
@@ -5605,12 +5604,8 @@ constexpr bool chart_may_raise() {
     using context = typename Model::chart_context;
     using raise = event_queue<Policy::queue_capacity, typename Model::events>;
     return []<class... Rows>(type_list<Rows...>) {
-        // The event an action sees: the row's event, or bsc::eventless for condition-driven
-        // rows (entry and exit rows see none; may_raise ignores it for them).
-        return (may_raise<context, std::conditional_t<std::is_void_v<typename trigger_event<Rows>::type>, eventless_trigger,
-                                                      typename trigger_event<Rows>::type>,
-                          raise>(static_cast<decltype(Rows::action) const*>(nullptr)) ||
-                ...);
+        // (Entry and exit rows see no event; may_raise ignores it for them.)
+        return (may_raise<context, row_event_t<Rows>, raise>(static_cast<decltype(Rows::action) const*>(nullptr)) || ...);
     }(typename Model::row_types{});
 }
 
@@ -6456,9 +6451,7 @@ private:
 
     // The event type a transition row's guard and action receive.
     template <int Row>
-    using event_type_of = std::conditional_t<
-        std::is_void_v<typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>,
-        bsc::eventless, typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>;
+    using event_type_of = bsc::detail::row_event_t<typename model::template row_at<Row>>;
 
     // ---- the thunks: one per state and per transition ---------------------------------------
     template <row_kind K, int S>
@@ -6675,9 +6668,7 @@ private:
     using tables_type = tables<Chart, Policy>;
 
     template <int Row>
-    using event_type = std::conditional_t<
-        std::is_void_v<typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>,
-        bsc::eventless, typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>;
+    using event_type = bsc::detail::row_event_t<typename model::template row_at<Row>>;
 
     template <int Row>
     static void transition(Observer& o, Chart const& chart, void const* event) {

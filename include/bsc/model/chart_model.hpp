@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
 
 #include <bsc/detail/meta.hpp>
 #include <bsc/detail/type_name.hpp>
@@ -171,6 +172,12 @@ template <class S, class E, class G, class A, class T>
 struct trigger_event<transition_row<S, event_trigger<E>, G, A, T>> {
     using type = E;
 };
+
+// The event a row's guard and action are called with: its trigger event, or bsc::eventless for
+// a condition-driven row (entry and exit actions see no event).
+template <class Row>
+using row_event_t = std::conditional_t<std::is_void_v<typename trigger_event<Row>::type>, eventless_trigger,
+                                       typename trigger_event<Row>::type>;
 
 // The events of the rows, each once, in order of first appearance.
 template <class List>

@@ -62,22 +62,14 @@ struct no_decoder {};
 // guard with (context, event) and its action with (context, event, queue), an entry or exit
 // action with (context, queue).
 template <class Context, class Queue, class Row>
-struct row_nothrow;
+struct row_nothrow {  // an entry or exit row
+    static constexpr bool value = std::is_nothrow_invocable_v<decltype(Row::action) const&, Context&, Queue&>;
+};
 template <class Context, class Queue, class S, class Trigger, class G, class A, class T>
 struct row_nothrow<Context, Queue, transition_row<S, Trigger, G, A, T>> {
-    using row = transition_row<S, Trigger, G, A, T>;
-    using event = std::conditional_t<std::is_void_v<typename trigger_event<row>::type>, eventless,
-                                     typename trigger_event<row>::type>;
+    using event = row_event_t<transition_row<S, Trigger, G, A, T>>;
     static constexpr bool value = std::is_nothrow_invocable_v<G const&, Context const&, event const&> &&
                                   std::is_nothrow_invocable_v<A const&, Context&, event const&, Queue&>;
-};
-template <class Context, class Queue, class S, class A>
-struct row_nothrow<Context, Queue, entry_row<S, A>> {
-    static constexpr bool value = std::is_nothrow_invocable_v<A const&, Context&, Queue&>;
-};
-template <class Context, class Queue, class S, class A>
-struct row_nothrow<Context, Queue, exit_row<S, A>> {
-    static constexpr bool value = std::is_nothrow_invocable_v<A const&, Context&, Queue&>;
 };
 
 // Whether any guard or action of the chart can throw. If none can (each is noexcept, or the

@@ -18,12 +18,8 @@ constexpr bool chart_may_raise() {
     using context = typename Model::chart_context;
     using raise = event_queue<Policy::queue_capacity, typename Model::events>;
     return []<class... Rows>(type_list<Rows...>) {
-        // The event an action sees: the row's event, or bsc::eventless for condition-driven
-        // rows (entry and exit rows see none; may_raise ignores it for them).
-        return (may_raise<context, std::conditional_t<std::is_void_v<typename trigger_event<Rows>::type>, eventless_trigger,
-                                                      typename trigger_event<Rows>::type>,
-                          raise>(static_cast<decltype(Rows::action) const*>(nullptr)) ||
-                ...);
+        // (Entry and exit rows see no event; may_raise ignores it for them.)
+        return (may_raise<context, row_event_t<Rows>, raise>(static_cast<decltype(Rows::action) const*>(nullptr)) || ...);
     }(typename Model::row_types{});
 }
 

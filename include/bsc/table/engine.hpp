@@ -49,9 +49,7 @@ private:
     using tables_type = tables<Chart, Policy>;
 
     template <int Row>
-    using event_type = std::conditional_t<
-        std::is_void_v<typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>,
-        bsc::eventless, typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>;
+    using event_type = bsc::detail::row_event_t<typename model::template row_at<Row>>;
 
     template <int Row>
     static void transition(Observer& o, Chart const& chart, void const* event) {

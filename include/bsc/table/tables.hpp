@@ -128,9 +128,7 @@ private:
 
     // The event type a transition row's guard and action receive.
     template <int Row>
-    using event_type_of = std::conditional_t<
-        std::is_void_v<typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>,
-        bsc::eventless, typename bsc::detail::trigger_event<typename model::template row_at<Row>>::type>;
+    using event_type_of = bsc::detail::row_event_t<typename model::template row_at<Row>>;
 
     // ---- the thunks: one per state and per transition ---------------------------------------
     template <row_kind K, int S>
