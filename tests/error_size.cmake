@@ -12,7 +12,9 @@ foreach(defect IN ITEMS
     unreachable_state dead_end_state conflicting_transitions shadowed_transition
     transition_between_orthogonal_regions state_not_in_chart duplicate_state missing_initial_state
     multiple_initial_states initial_not_a_child eventless_livelock not_a_row guard_signature_not_supported
-    action_signature_not_supported dead_transition empty_parallel_state dead_timeout)
+    action_signature_not_supported dead_transition empty_parallel_state dead_timeout
+    local_target_outside_source event_in_two_families initial_action_without_initial_transition
+    invalid_history_state)
   bsc_add_error_size_test(${defect} ${defect})
 endforeach()
 bsc_add_error_size_test(several "dead_end_state+conflicting_transitions+eventless_livelock")

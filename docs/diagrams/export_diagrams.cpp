@@ -1,5 +1,6 @@
 // Writes the diagrams of the examples: <dir>/<name>.mmd (Mermaid) and <dir>/<name>.dot
-// (Graphviz) for each chart below, and with --all also <name>.puml (PlantUML) and <name>.scxml.
+// (Graphviz) for each chart below, and with --all also <name>.puml (PlantUML) and <name>.scxml,
+// and the chart of tests/export/beyond_core_chart.hpp in all four.
 // scripts/diagrams.py runs it on docs/diagrams/, renders the SVGs and updates the Diagram
 // sections of the example pages; the ctests exports.* run it with --all on a directory of the
 // build, check the SCXML and render the DOT, and diagrams_up_to_date compares with docs/.
@@ -19,6 +20,7 @@
 #include "../../examples/manufacturing_cell/controller.hpp"
 #include "../../examples/mcs/mcs.hpp"
 #include "../../examples/production_cell/controllers.hpp"
+#include "../../tests/export/beyond_core_chart.hpp"
 
 namespace {
 
@@ -61,5 +63,7 @@ int main(int argc, char** argv) {
     ok = export_chart(dir, "production_cell_robot", pcell::robot_chart) && ok;
     ok = export_chart(dir, "production_cell_press", pcell::press_chart) && ok;
     ok = export_chart(dir, "production_cell_deposit_belt", pcell::deposit_belt_chart) && ok;
+    // Not an example: the constructs beyond the core, for the exports.* tests only.
+    if (all_formats) ok = export_chart(dir, "beyond_core", beyond_core::chart) && ok;
     return ok ? 0 : 1;
 }

@@ -53,8 +53,8 @@ struct shadowed_transition {
     constexpr ~shadowed_transition() {
         static_assert(detail::dependent_false<shadowed_transition>,
                       "bsc: shadowed transition: an earlier unguarded transition from this state on the same "
-                      "trigger always wins, so the transition to Target can never fire; guard the earlier one or "
-                      "move this one before it");
+                      "trigger (or on a family of it: a base class, or bsc::any_event) always wins, so the "
+                      "transition to Target can never fire; guard the earlier one or move this one before it");
     }
 };
 
@@ -66,6 +66,49 @@ struct dead_transition {
                       "(the machine has halted there), or every state below its source takes the same event "
                       "first with an unguarded row of its own; remove the row, guard the rows below, or move it "
                       "(Target is bsc::detail::no_target for an internal row)");
+    }
+};
+
+template <class Event>
+struct event_in_two_families {
+    constexpr ~event_in_two_families() {
+        static_assert(detail::dependent_false<event_in_two_families>,
+                      "bsc: event in two families: two triggers of the chart that do not derive from one another "
+                      "are both base classes of this event, so it is unclear which rows take it; an event's "
+                      "families (its base classes among the chart's triggers, and bsc::any_event) must form one "
+                      "chain: derive one family from the other, or trigger no row with one of them");
+    }
+};
+
+template <class HistoryState>
+struct invalid_history_state {
+    constexpr ~invalid_history_state() {
+        static_assert(detail::dependent_false<invalid_history_state>,
+                      "bsc: invalid history state: a history state (shallow_history_state<H, Default>, "
+                      "deep_history_state<H, Default>) must be declared in a composite, its Default must be a "
+                      "state inside that composite (not a history state), and it takes no rows but on_initial "
+                      "(the action of its default transition); it is never active, so no transition leaves it");
+    }
+};
+
+template <class State>
+struct initial_action_without_initial_transition {
+    constexpr ~initial_action_without_initial_transition() {
+        static_assert(detail::dependent_false<initial_action_without_initial_transition>,
+                      "bsc: initial action of a state without an initial transition: an on_initial row runs when "
+                      "a composite is entered through its initial state, and this state is not a composite, or "
+                      "has a history marker (it is entered through its history instead); use on_entry, or remove "
+                      "the history marker");
+    }
+};
+
+template <class Source, class Target>
+struct local_target_outside_source {
+    constexpr ~local_target_outside_source() {
+        static_assert(detail::dependent_false<local_target_outside_source>,
+                      "bsc: local transition to a state outside its source: a local transition "
+                      "(= bsc::local(state<Target>)) keeps its source active, so its target must lie below the "
+                      "source; target a descendant, or make it an ordinary transition (= state<Target>)");
     }
 };
 
@@ -116,8 +159,8 @@ template <class Composite, class Initial>
 struct initial_not_a_child {
     constexpr ~initial_not_a_child() {
         static_assert(detail::dependent_false<initial_not_a_child>,
-                      "bsc: the initial state named by this composite is declared elsewhere in the tree, not as "
-                      "one of its children; name one of its own children in bsc::initial<...>");
+                      "bsc: the initial state named by this composite is declared elsewhere in the tree, not inside "
+                      "it; name one of its own children, or a state below it, in bsc::initial<...>");
     }
 };
 

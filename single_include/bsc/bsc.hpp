@@ -212,8 +212,8 @@ struct shadowed_transition {
     constexpr ~shadowed_transition() {
         static_assert(detail::dependent_false<shadowed_transition>,
                       "bsc: shadowed transition: an earlier unguarded transition from this state on the same "
-                      "trigger always wins, so the transition to Target can never fire; guard the earlier one or "
-                      "move this one before it");
+                      "trigger (or on a family of it: a base class, or bsc::any_event) always wins, so the "
+                      "transition to Target can never fire; guard the earlier one or move this one before it");
     }
 };
 
@@ -225,6 +225,49 @@ struct dead_transition {
                       "(the machine has halted there), or every state below its source takes the same event "
                       "first with an unguarded row of its own; remove the row, guard the rows below, or move it "
                       "(Target is bsc::detail::no_target for an internal row)");
+    }
+};
+
+template <class Event>
+struct event_in_two_families {
+    constexpr ~event_in_two_families() {
+        static_assert(detail::dependent_false<event_in_two_families>,
+                      "bsc: event in two families: two triggers of the chart that do not derive from one another "
+                      "are both base classes of this event, so it is unclear which rows take it; an event's "
+                      "families (its base classes among the chart's triggers, and bsc::any_event) must form one "
+                      "chain: derive one family from the other, or trigger no row with one of them");
+    }
+};
+
+template <class HistoryState>
+struct invalid_history_state {
+    constexpr ~invalid_history_state() {
+        static_assert(detail::dependent_false<invalid_history_state>,
+                      "bsc: invalid history state: a history state (shallow_history_state<H, Default>, "
+                      "deep_history_state<H, Default>) must be declared in a composite, its Default must be a "
+                      "state inside that composite (not a history state), and it takes no rows but on_initial "
+                      "(the action of its default transition); it is never active, so no transition leaves it");
+    }
+};
+
+template <class State>
+struct initial_action_without_initial_transition {
+    constexpr ~initial_action_without_initial_transition() {
+        static_assert(detail::dependent_false<initial_action_without_initial_transition>,
+                      "bsc: initial action of a state without an initial transition: an on_initial row runs when "
+                      "a composite is entered through its initial state, and this state is not a composite, or "
+                      "has a history marker (it is entered through its history instead); use on_entry, or remove "
+                      "the history marker");
+    }
+};
+
+template <class Source, class Target>
+struct local_target_outside_source {
+    constexpr ~local_target_outside_source() {
+        static_assert(detail::dependent_false<local_target_outside_source>,
+                      "bsc: local transition to a state outside its source: a local transition "
+                      "(= bsc::local(state<Target>)) keeps its source active, so its target must lie below the "
+                      "source; target a descendant, or make it an ordinary transition (= state<Target>)");
     }
 };
 
@@ -275,8 +318,8 @@ template <class Composite, class Initial>
 struct initial_not_a_child {
     constexpr ~initial_not_a_child() {
         static_assert(detail::dependent_false<initial_not_a_child>,
-                      "bsc: the initial state named by this composite is declared elsewhere in the tree, not as "
-                      "one of its children; name one of its own children in bsc::initial<...>");
+                      "bsc: the initial state named by this composite is declared elsewhere in the tree, not inside "
+                      "it; name one of its own children, or a state below it, in bsc::initial<...>");
     }
 };
 
@@ -557,7 +600,8 @@ inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = tr
 //   - a row leaving a final child of a composite root: the machine halts there, and dispatch
 //     only ever answers outcome::halted;
 //   - a row on an event leaving a composite or parallel state S when every basic or final state
-//     below S takes that event first with an unguarded row of its own or of an ancestor below S:
+//     below S takes that event first with an unguarded row of its own or of an ancestor below S
+//     (on the event or on a family of it):
 //     the event is consumed below S in every configuration, so it never reaches S's row.
 // Reachability and dead ends (reachability.hpp) then follow only the rows that can fire.
 // A timeout row behind a shorter unguarded timeout of the same state is found where the
@@ -1044,6 +1088,8 @@ namespace bsc::detail {
 
 template <class S>
 struct state_ref;
+template <class S>
+struct local_ref;
 
 /// The trigger of a transition taken without an event, when its guard holds.
 struct eventless_trigger {};
@@ -1057,6 +1103,20 @@ struct timeout_trigger {
 };
 /// The target of an internal transition: no exit, no entry.
 struct no_target {};
+/// The target T of a local transition (bsc::local): in a row's type, so that the row says so.
+template <class T>
+struct local_target {};
+// A row's target state, and whether the row is local.
+template <class T>
+struct target_parts {
+    using state = T;
+    static constexpr bool local = false;
+};
+template <class T>
+struct target_parts<local_target<T>> {
+    using state = T;
+    static constexpr bool local = true;
+};
 
 // What marks a row. A base of its own for each row type: rows whose guard, action and trigger
 // are empty are empty themselves, and the tuple of a chart's rows can then take no space at
@@ -1112,7 +1172,9 @@ template <class S, class Trigger, class G, class A, class T>
 struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
     using source = S;
     using trigger = Trigger;
-    using target = T;
+    using target = typename target_parts<T>::state;
+    /// A local transition (`= bsc::local(state<T>)`): its source stays active.
+    static constexpr bool local = target_parts<T>::local;
     static constexpr bool guarded = !std::is_same_v<G, no_guard>;
     [[no_unique_address]] Trigger trigger_value;
     [[no_unique_address]] G guard;
@@ -1122,6 +1184,11 @@ struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
         requires std::is_same_v<T, no_target>
     constexpr auto operator=(state_ref<T2>) const {
         return transition_row<S, Trigger, G, A, T2>{{}, trigger_value, guard, action};
+    }
+    template <class T2>
+        requires std::is_same_v<T, no_target>
+    constexpr auto operator=(local_ref<T2>) const {
+        return transition_row<S, Trigger, G, A, local_target<T2>>{{}, trigger_value, guard, action};
     }
     template <class A2>
         requires(std::is_same_v<A, no_action> && std::is_same_v<T, no_target>)
@@ -1151,6 +1218,16 @@ struct exit_keyword {
         return exit_spec<state_action<A>>{{std::move(a)}};
     }
 };
+template <class A>
+struct initial_spec {
+    [[no_unique_address]] A action;
+};
+struct initial_keyword {
+    template <class A>
+    constexpr auto operator/(A a) const {
+        return initial_spec<state_action<A>>{{std::move(a)}};
+    }
+};
 
 template <class S, class A>
 struct entry_row : row_base<entry_row<S, A>> {
@@ -1159,6 +1236,12 @@ struct entry_row : row_base<entry_row<S, A>> {
 };
 template <class S, class A>
 struct exit_row : row_base<exit_row<S, A>> {
+    using source = S;
+    [[no_unique_address]] A action;
+};
+// The action of a composite's initial transition (SCXML's <initial><transition>).
+template <class S, class A>
+struct initial_row : row_base<initial_row<S, A>> {
     using source = S;
     [[no_unique_address]] A action;
 };
@@ -1184,6 +1267,10 @@ template <class R>
 inline constexpr bool is_exit_row = false;
 template <class S, class A>
 inline constexpr bool is_exit_row<exit_row<S, A>> = true;
+template <class R>
+inline constexpr bool is_initial_row = false;
+template <class S, class A>
+inline constexpr bool is_initial_row<initial_row<S, A>> = true;
 
 }  // namespace bsc::detail
 
@@ -1222,8 +1309,30 @@ inline constexpr detail::entry_keyword on_entry{};
 /// Exit action row: `state<S> + on_exit / action`; runs each time S is exited.
 inline constexpr detail::exit_keyword on_exit{};
 
+/// The action of composite S's initial transition: `state<S> + on_initial / action` runs when
+/// S is entered through its initial state (not through history, not by a transition to a state
+/// inside S), after S's entry actions and before the initial state's (SCXML's
+/// `<initial><transition>` content).
+/// Requirements: S is a composite without a history marker
+/// (bsc::error::initial_action_without_initial_transition).
+inline constexpr detail::initial_keyword on_initial{};
+
 /// The tag used in diagnostics and observers for a transition without an event.
 using eventless = detail::eventless_trigger;
+
+/// The trigger every event matches: `state<S> + event<bsc::any_event> = state<T>` takes any
+/// event that no deeper state and no earlier row of S takes first (SCXML's event="*",
+/// Boost.SML's event<_>). Its guard and action receive this tag, not the event.
+struct any_event {};
+
+/// The completion event of state S (SCXML's done.state.S): raised when a final child of the
+/// composite S is entered, or, for a parallel S, when every region of S has entered a final
+/// state. A row takes it like any event: `state<Work> + event<bsc::done<Work>> = state<Next>`.
+/// (A final child of the root raises nothing: the machine halts.)
+template <class S>
+struct done {
+    using state = S;
+};
 
 namespace detail {
 // Deliberately not constexpr: in a constexpr chart, reaching one of these is the compile error
@@ -1302,6 +1411,10 @@ struct state_ref {
     constexpr auto operator+(exit_spec<A> spec) const {
         return exit_row<S, A>{{}, std::move(spec.action)};
     }
+    template <class A>
+    constexpr auto operator+(initial_spec<A> spec) const {
+        return initial_row<S, A>{{}, std::move(spec.action)};
+    }
     // Eventless transitions: state<S> [guard] / action = state<T>.
     template <class G>
     constexpr auto operator[](G g) const {
@@ -1317,6 +1430,16 @@ struct state_ref {
     constexpr auto operator=(state_ref<T>) const {
         return transition_row<S, eventless_trigger, no_guard, no_action, T>{};
     }
+    template <class T>
+    constexpr auto operator=(local_ref<T>) const {
+        return transition_row<S, eventless_trigger, no_guard, no_action, local_target<T>>{};
+    }
+};
+
+// What bsc::local returns: the target of a local transition.
+template <class S>
+struct local_ref {
+    using tag = S;
 };
 
 }  // namespace bsc::detail
@@ -1327,12 +1450,24 @@ namespace bsc {
 template <class S>
 inline constexpr detail::state_ref<S> state{};
 
+/// The target of a local transition (UML's kind = local, SCXML's type="internal"):
+/// `state<Work> + event<restart> = local(state<Step1>)` goes from composite Work to its
+/// descendant Step1 without leaving Work: only the active states below Work are exited, Work's
+/// own exit and entry actions do not run, and its timeouts keep counting.
+/// Requirements: the target is a proper descendant of the row's source (else the chart is
+/// rejected: bsc::error::local_target_outside_source). From a parallel source the transition
+/// is an ordinary one, as in SCXML, where only a compound state can keep itself active.
+template <class S>
+constexpr detail::local_ref<S> local(detail::state_ref<S>) {
+    return {};
+}
+
 }  // namespace bsc
 // end include/bsc/dsl/state.hpp
 
 namespace bsc::detail {
 
-enum class kind : std::uint8_t { top, basic, final_state, composite, parallel };
+enum class kind : std::uint8_t { top, basic, final_state, composite, parallel, history };
 enum class history : std::uint8_t { none, shallow, deep };
 
 struct node_base {};
@@ -1366,6 +1501,19 @@ struct parallel_node : node_base {
     static constexpr bool implicit = false;
     using initials = type_list<>;
     using children = Children;
+};
+
+// A history pseudo-state of the enclosing composite: never active; entering it restores the
+// composite's remembered configuration, or enters Default when there is none.
+template <class S, history H, class Default>
+struct history_node : node_base {
+    using tag = S;
+    using default_state = Default;
+    static constexpr kind node_kind = kind::history;
+    static constexpr history hist = H;
+    static constexpr bool implicit = false;
+    using initials = type_list<>;
+    using children = type_list<>;
 };
 
 template <class S>
@@ -1431,9 +1579,24 @@ constexpr auto initials_from() {
         return type_list<>{};
 }
 
+// The states an argument declares: a node and everything below it, or a basic state. An
+// initial<X> naming one of them declares nothing (X is the initial child, or, lying deeper,
+// the target of a deep initial transition).
+template <class Node>
+constexpr auto subtree_tags();
+template <class... C>
+constexpr auto subtree_tags_of(type_list<C...>) {
+    return (type_list<>{} + ... + subtree_tags<C>());
+}
+template <class Node>
+constexpr auto subtree_tags() {
+    return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
+}
 template <class A>
 constexpr auto declared_tag() {
-    if constexpr (is_node<A> || is_state_ref<A>)
+    if constexpr (is_node<A>)
+        return subtree_tags<A>();
+    else if constexpr (is_state_ref<A>)
         return type_list<typename tag_of<A>::type>{};
     else
         return type_list<>{};
@@ -1460,8 +1623,11 @@ struct composite_children<type_list<Declared...>, std::index_sequence<I...>, A..
 
 namespace bsc {
 
-/// Names the initial (default) child of a composite state. If no child of that name is
-/// declared among the composite's arguments, `initial<S>` also declares S as a basic child.
+/// Names the initial (default) state of a composite state: a child, or a deeper descendant (a
+/// deep initial, SCXML's `<initial>` whose transition targets a descendant: entering the
+/// composite by default enters the path down to it, the other regions of parallel states on
+/// the way by default). If S is declared nowhere among the composite's arguments,
+/// `initial<S>` also declares S as a basic child.
 template <class S>
 inline constexpr detail::initial_marker<S> initial{};
 
@@ -1470,6 +1636,20 @@ inline constexpr detail::history_marker<detail::history::shallow> shallow_histor
 
 /// Marks a composite state as remembering its whole last active sub-configuration.
 inline constexpr detail::history_marker<detail::history::deep> deep_history{};
+
+/// A shallow history pseudo-state H of the composite it is declared in (SCXML's
+/// `<history type="shallow">`): a transition to H enters the composite in the child it was last
+/// in (that child by default), or, if the composite was never active, enters Default (a state
+/// inside the composite) after running H's `state<H> + on_initial / action` rows. H is never
+/// active itself and takes no other rows. A composite may have several history states.
+/// Requirements: declared in a composite, Default inside it (bsc::error::invalid_history_state).
+template <class H, class Default>
+inline constexpr detail::history_node<H, detail::history::shallow, Default> shallow_history_state{};
+
+/// A deep history pseudo-state H (SCXML's `<history type="deep">`): as shallow_history_state,
+/// but a transition to H restores the whole sub-configuration the composite was last in.
+template <class H, class Default>
+inline constexpr detail::history_node<H, detail::history::deep, Default> deep_history_state{};
 
 /// A final state: reaching it is an intended end, so it is exempt from the dead-end check.
 /// A final child of the root state halts the machine.
@@ -1514,6 +1694,120 @@ constexpr auto parallel(A...) {
 
 }  // namespace bsc
 // end include/bsc/dsl/tree.hpp
+// begin include/bsc/model/event_families.hpp
+// Event families: a row on event U also takes every event E derived from U, and a row on
+// bsc::any_event takes every event (SCXML's event descriptors, which match by prefix, written
+// as C++ inheritance). U is then a family of E. Computed from the chart's events by the model,
+// the queue (which stores an event the chart does not name as its nearest family) and the
+// back ends (which hand a row the event as its own type).
+
+#include <array>
+#include <cstddef>
+
+
+namespace bsc::detail {
+
+// A row on event U also takes every event E derived from U (publicly or not: the conversion is
+// checked where the row is called), and a row on bsc::any_event takes every event: U is then
+// E's family. The families of an event must form one chain (each family below the next), so
+// that an event's rows are those of its own type and of its chain, and an event the chart does
+// not name behaves as the most derived chart event of its chain.
+// The chart events (Us) that are E's families. (Built-in traits, not std::is_base_of_v: a
+// chart of K events asks K * K times, and no template is instantiated per pair.)
+template <class E, class... Us>
+constexpr std::array<bool, sizeof...(Us)> families_of() {
+    return {(!__is_same(Us, E) && (__is_same(Us, any_event) || __is_base_of(Us, E)))...};
+}
+
+// Of the families `of` (a row of the matrix below), the nearest to the event: the one with
+// the most families of its own (`counts`). -1 if there is none; -2 if the families do not
+// form a chain.
+template <std::size_t K>
+constexpr int nearest_family(std::array<bool, K> const& of, std::array<std::array<bool, K>, K> const& family,
+                             std::array<int, K> const& counts) {
+    int nearest = -1;
+    for (std::size_t u = 0; u < K; ++u)
+        if (of[u] && (nearest < 0 || counts[u] > counts[static_cast<std::size_t>(nearest)])) nearest = static_cast<int>(u);
+    if (nearest < 0) return -1;
+    // A chain: the nearest family's own families are all the others.
+    for (std::size_t u = 0; u < K; ++u)
+        if (of[u] && static_cast<int>(u) != nearest && !family[static_cast<std::size_t>(nearest)][u]) return -2;
+    return nearest;
+}
+
+template <class Events>
+struct event_families;
+template <class... Us>
+struct event_families<type_list<Us...>> {
+    static constexpr std::size_t K = sizeof...(Us);
+    // Whether chart event E has a family among the chart's events; any: whether one has.
+    template <class E>
+    static constexpr bool has_family = (false || ... || (!__is_same(Us, E) && (__is_same(Us, any_event) || __is_base_of(Us, E))));
+    static constexpr bool any = (false || ... || has_family<Us>);
+    // family[t][u]: chart event u is a family of chart event t. (Built only where some event
+    // has a family: a chart of K events would otherwise hold K * K flags for nothing.)
+    static constexpr auto family = [] {
+        if constexpr (any)
+            return std::array<std::array<bool, K>, K>{families_of<Us, Us...>()...};
+        else
+            return std::array<std::array<bool, K>, 0>{};
+    }();
+    // counts[u]: how many families chart event u has.
+    static constexpr std::array<int, K> counts = [] {
+        std::array<int, K> out{};
+        if constexpr (any)
+            for (std::size_t u = 0; u < K; ++u)
+                for (bool b : family[u]) out[u] += b ? 1 : 0;
+        return out;
+    }();
+    // nearest[t]: the nearest family of chart event t, -1 if none, -2 if not a chain.
+    static constexpr std::array<int, K> nearest = [] {
+        std::array<int, K> out{};
+        for (std::size_t t = 0; t < K; ++t) {
+            if constexpr (any)
+                out[t] = nearest_family(family[t], family, counts);
+            else
+                out[t] = -1;
+        }
+        return out;
+    }();
+    // Where no chart event has a family, an event's families form a chain only if it has one.
+    static constexpr int single_family(std::array<bool, K> const& of) {
+        int found = -1;
+        for (std::size_t u = 0; u < K; ++u)
+            if (of[u]) found = found == -1 ? static_cast<int>(u) : -2;
+        return found;
+    }
+    // The trigger of event E: its own position if the chart names it, else its nearest family's
+    // (-1: none; -2: its families are not a chain).
+    template <class E>
+    static constexpr int trigger_of() {
+        constexpr int own = index_in<E, Us...>();
+        if constexpr (own >= 0)
+            return own;
+        else if constexpr (!has_family<E>)
+            return -1;
+        else if constexpr (any)
+            return nearest_family(families_of<E, Us...>(), family, counts);
+        else
+            return single_family(families_of<E, Us...>());
+    }
+};
+
+// The event as row Row's guard and action see it, whatever event E took the row: as the row's
+// own event type (a row on a family sees the family), or bsc::any_event.
+template <class Seen, class E>
+constexpr decltype(auto) event_as(E const& e) {
+    if constexpr (__is_same(Seen, E))
+        return (e);
+    else if constexpr (__is_same(Seen, any_event))
+        return any_event{};
+    else
+        return static_cast<Seen const&>(e);
+}
+
+}  // namespace bsc::detail
+// end include/bsc/model/event_families.hpp
 
 namespace bsc::detail {
 
@@ -1548,7 +1842,7 @@ struct tags_of<type_list<Nodes...>> {
     using type = type_list<typename Nodes::tag...>;
 };
 
-enum class row_kind : std::uint8_t { transition, entry, exit };
+enum class row_kind : std::uint8_t { transition, entry, exit, initial };
 
 inline constexpr int eventless_id = -1;
 // Every timeout row has a trigger of its own, so two timeouts on one state never "conflict".
@@ -1568,6 +1862,7 @@ struct topology {
     std::array<int, N> child_count{};
     std::array<int, N> ordinal{};        // position among siblings
     std::array<int, N> initial{};        // state index of the initial child, or -1
+    std::array<int, N> initial_target{};  // the initial state: the initial child, or a deeper descendant
     std::array<int, N> initial_count{};  // number of initial markers
     std::array<int, N> depth{};
     std::array<int, N> end{};   // one past the last descendant: d is below s iff s < d < end[s]
@@ -1613,6 +1908,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     t.first_child[i] = -1;
     t.next_sibling[i] = -1;
     t.initial[i] = -1;
+    t.initial_target[i] = -1;
     t.initial_count[i] = static_cast<int>(Node::initials::size);
     t.slot[i] = -1;
     if (Node::node_kind == kind::composite)
@@ -1633,16 +1929,42 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
             }(),
             ...);
         if constexpr (Node::initials::size == 1) {
-            constexpr int pos = index_in<at<0, typename Node::initials>, typename C::tag...>();
-            if (pos >= 0) {
+            using initial_tag = at<0, typename Node::initials>;
+            constexpr int pos = index_in<initial_tag, typename C::tag...>();
+            if constexpr (pos >= 0) {
                 int c = t.first_child[i];
                 for (int k = 0; k < pos; ++k) c = t.next_sibling[static_cast<std::size_t>(c)];
                 t.initial[i] = c;
+                t.initial_target[i] = c;
+            } else {
+                // A deep initial: a descendant further down, numbered in document order below Node.
+                constexpr int offset = index_of<initial_tag, typename tags_of<decltype(flatten<Node>())>::type>;
+                if (offset > 0) {
+                    t.initial_target[i] = index + offset;
+                    t.initial[i] = t.child_toward(index, index + offset);
+                }
             }
         }
     }(typename Node::children{});
     t.child_count[i] = count;
     t.end[i] = next;
+    // The defaults of its history states, which lie anywhere below Node (-1 if not found).
+    if constexpr (Node::node_kind == kind::composite)
+        [&]<class... C>(type_list<C...>) {
+            (
+                [&] {
+                    if constexpr (C::node_kind == kind::history) {
+                        using tags = typename tags_of<decltype(flatten<Node>())>::type;
+                        constexpr int h = index_of<typename C::tag, tags>;
+                        constexpr int offset = index_of<typename C::default_state, tags>;
+                        if (offset > 0 && index + offset != index + h) {
+                            t.initial_target[static_cast<std::size_t>(index + h)] = index + offset;
+                            t.initial[static_cast<std::size_t>(index + h)] = t.child_toward(index, index + offset);
+                        }
+                    }
+                }(),
+                ...);
+        }(typename Node::children{});
     return next;
 }
 
@@ -1654,6 +1976,20 @@ struct row_table {
     std::array<int, R> trigger{};  // eventless_id, or the event's position in the chart's event list
     std::array<bool, R> guarded{};
     std::array<int, R> domain{};  // the transition domain (SCXML), no_state if internal
+    std::array<bool, R> local{};  // declared local (bsc::local): its domain is its source
+    // By event position (there are no more events than rows): the event's nearest family among
+    // the chart's events (-1: none, -2: not a chain). All -1 in a chart without families.
+    std::array<int, R> event_family{};
+
+    // Whether a row on trigger `row_trigger` takes trigger `taken`: the same trigger, or an
+    // event position whose chain of families holds row_trigger.
+    constexpr bool takes(int row_trigger, int taken) const {
+        if (row_trigger == taken) return true;
+        if (row_trigger < 0) return false;
+        for (int t = taken; t >= 0; t = event_family[static_cast<std::size_t>(t)])
+            if (t == row_trigger) return true;
+        return false;
+    }
 };
 
 template <class Row>
@@ -1662,6 +1998,8 @@ constexpr row_kind kind_of_row() {
         return row_kind::entry;
     else if constexpr (is_exit_row<Row>)
         return row_kind::exit;
+    else if constexpr (is_initial_row<Row>)
+        return row_kind::initial;
     else
         return row_kind::transition;
 }
@@ -1712,9 +2050,12 @@ constexpr int state_index() {
 }
 
 template <std::size_t N>
-constexpr int transition_domain(topology<N> const& t, int source, int target) {
+constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false) {
     if (target < 0)
         return no_state;
+    // SCXML's type="internal": a compound source that contains the target stays active.
+    if (local && t.kinds[static_cast<std::size_t>(source)] == kind::composite && t.is_proper_ancestor(source, target))
+        return source;
     // SCXML: the nearest compound proper ancestor of the source that is a proper ancestor of the target.
     for (int a = t.parent[static_cast<std::size_t>(source)]; a >= 0; a = t.parent[static_cast<std::size_t>(a)])
         if (t.is_compound(a) && t.is_proper_ancestor(a, target))
@@ -1742,6 +2083,9 @@ struct chart_model {
 
     static constexpr row_table<row_types::size> rows = []<class... Rs>(type_list<Rs...>) {
         row_table<row_types::size> r{};
+        for (int& f : r.event_family) f = -1;
+        std::size_t e = 0;
+        for (int f : event_families<events>::nearest) r.event_family[e++] = f;
         std::size_t i = 0;
         (
             [&] {
@@ -1753,13 +2097,14 @@ struct chart_model {
                 if constexpr (is_transition_row<Rs>) {
                     r.target[i] = state_index<typename Rs::target, tags>();
                     r.guarded[i] = Rs::guarded;
+                    r.local[i] = Rs::local;
                     using E = typename trigger_event<Rs>::type;
                     if constexpr (!std::is_void_v<E>) r.trigger[i] = index_of<E, events>;
                     if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
                 }
                 r.domain[i] = no_state;
                 if (r.source[i] >= 0 && r.target[i] >= 0)
-                    r.domain[i] = transition_domain(tree, r.source[i], r.target[i]);
+                    r.domain[i] = transition_domain(tree, r.source[i], r.target[i], r.local[i]);
                 ++i;
             }(),
             ...);
@@ -1772,8 +2117,13 @@ struct chart_model {
     using row_at = at<static_cast<std::size_t>(I), row_types>;
     template <class S>
     static constexpr int index_of_state = index_of<S, tags>;
+    // Whether some event of the chart has a family (a base class among the chart's events, or
+    // bsc::any_event): only then can an event take rows of another type.
+    static constexpr bool has_families = event_families<events>::any;
+    // The trigger of event E: its position among the chart's events, or, for an event the chart
+    // does not name, its nearest family's (-1: none; -2: its families are not a chain).
     template <class E>
-    static constexpr int trigger_of = index_of<E, events>;
+    static constexpr int trigger_of = event_families<events>::template trigger_of<E>();
 };
 
 // The unqualified names of a model's states, by index (0: the implicit top). A variable of
@@ -1824,12 +2174,12 @@ constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<
     row_liveness<R> found;
     constexpr int root = 1;
     bool const root_halts = N > 1 && t.kinds[root] == kind::composite;
-    // Whether state b has an unguarded transition row on `trigger`.
+    // Whether state b has an unguarded transition row on `trigger` or on a family of it.
     auto const unguarded = rows_by_source<N>(r, [&](std::size_t j) { return !r.guarded[j]; });
     auto takes_unguarded = [&](int b, int trigger) {
         auto const bi = static_cast<std::size_t>(b);
         for (int k = unguarded.begin[bi]; k < unguarded.begin[bi + 1]; ++k)
-            if (r.trigger[static_cast<std::size_t>(unguarded.order[static_cast<std::size_t>(k)])] == trigger) return true;
+            if (r.takes(r.trigger[static_cast<std::size_t>(unguarded.order[static_cast<std::size_t>(k)])], trigger)) return true;
         return false;
     };
     for (std::size_t i = 0; i < R; ++i) {
@@ -1859,7 +2209,8 @@ constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<
 // end include/bsc/checks/dead_transitions.hpp
 // begin include/bsc/checks/determinism.hpp
 // Determinism: two unguarded transitions on the same source and trigger conflict; a
-// transition after an unguarded one on the same source and trigger is shadowed.
+// transition after an unguarded one on the same source and trigger, or on a family of its
+// trigger (model/event_families.hpp), is shadowed.
 
 
 namespace bsc::detail {
@@ -1892,8 +2243,10 @@ constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table
             if (r.guarded[i]) continue;
             for (int b = a + 1; b < begin[s + 1]; ++b) {
                 auto const j = static_cast<std::size_t>(order[static_cast<std::size_t>(b)]);
-                if (r.trigger[j] != r.trigger[i]) continue;
-                row_pair& slot = r.guarded[j] ? found.shadowed : found.conflict;
+                // Row i takes every event row j takes: the same trigger, or a family of j's.
+                if (!r.takes(r.trigger[i], r.trigger[j])) continue;
+                bool const same = r.trigger[j] == r.trigger[i];
+                row_pair& slot = r.guarded[j] || !same ? found.shadowed : found.conflict;
                 if (earlier(slot, static_cast<int>(i), static_cast<int>(j)))
                     slot = {static_cast<int>(i), static_cast<int>(j)};
             }
@@ -1915,17 +2268,26 @@ constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table
 
 namespace bsc::detail {
 
-// Marks s and the states its default entry activates (initial children, all regions).
+template <std::size_t N>
+constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int domain, int target);
+
+// Marks s and the states its default entry activates (initial states, all regions, a
+// history state's default).
 template <std::size_t N>
 constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, int s) {
     m[static_cast<std::size_t>(s)] = true;
     auto const i = static_cast<std::size_t>(s);
     if (t.is_compound(s)) {
-        if (t.initial[i] >= 0)
+        if (t.initial_target[i] >= 0 && t.initial_target[i] != t.initial[i])
+            mark_entry(t, m, s, t.initial_target[i]);  // a deep initial
+        else if (t.initial[i] >= 0)
             mark_default_entry(t, m, t.initial[i]);
     } else if (t.kinds[i] == kind::parallel) {
         for (int c = t.first_child[i]; c >= 0; c = t.next_sibling[static_cast<std::size_t>(c)])
             mark_default_entry(t, m, c);
+    } else if (t.kinds[i] == kind::history && t.initial_target[i] >= 0) {
+        // A history state enters its default (what it restores has been active before).
+        mark_entry(t, m, t.parent[i], t.initial_target[i]);
     }
 }
 
@@ -2223,7 +2585,9 @@ constexpr auto named(std::string_view name, F f) {
 // begin include/bsc/event_name.hpp
 // The name of an event type, as bsc::event_set, dispatch_by_name and bsc::logger use it.
 
+#include <array>
 #include <concepts>
+#include <cstddef>
 #include <string_view>
 #include <type_traits>
 
@@ -2240,8 +2604,28 @@ concept names_itself = requires {
 };
 }  // namespace detail
 
+template <class S>
+struct done;
+struct any_event;
+
+namespace detail {
+// "done.state." and the state's name, in static storage.
+template <class S>
+inline constexpr auto done_event_text = [] {
+    constexpr std::string_view prefix = "done.state.";
+    constexpr std::string_view state = name_of<S>;
+    std::array<char, prefix.size() + state.size()> text{};
+    std::size_t n = 0;
+    for (char c : prefix) text[n++] = c;
+    for (char c : state) text[n++] = c;
+    return text;
+}();
+}  // namespace detail
+
 /// The name of event type E: its static member `name` if it declares one
-/// (`static constexpr std::string_view name = "ON_P";`), otherwise bsc::name_of<E>.
+/// (`static constexpr std::string_view name = "ON_P";`), otherwise bsc::name_of<E>. SCXML's
+/// names for the two events bsc defines: "done.state.S" for bsc::done<S>, "*" for
+/// bsc::any_event.
 template <class E>
 inline constexpr std::string_view event_name = [] {
     if constexpr (detail::names_itself<E>)
@@ -2249,6 +2633,11 @@ inline constexpr std::string_view event_name = [] {
     else
         return name_of<E>;
 }();
+template <class S>
+inline constexpr std::string_view event_name<done<S>> = {detail::done_event_text<S>.data(),
+                                                         detail::done_event_text<S>.size()};
+template <>
+inline constexpr std::string_view event_name<any_event> = "*";
 
 }  // namespace bsc
 // end include/bsc/event_name.hpp
@@ -2368,7 +2757,11 @@ struct row_words<transition_row<S, Trigger, G, A, T>> {
             out(" / ");
             action_words<A>::write(out);
         }
-        if constexpr (!std::is_same_v<T, no_target>) {
+        if constexpr (target_parts<T>::local) {
+            out(" = local(");
+            out(name_of<typename target_parts<T>::state>);
+            out(")");
+        } else if constexpr (!std::is_same_v<T, no_target>) {
             out(" = ");
             out(name_of<T>);
         }
@@ -2380,6 +2773,15 @@ struct row_words<entry_row<S, A>> {
     static constexpr void write(Out& out) {
         out(name_of<S>);
         out(" + on_entry / ");
+        action_words<A>::write(out);
+    }
+};
+template <class S, class A>
+struct row_words<initial_row<S, A>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out(name_of<S>);
+        out(" + on_initial / ");
         action_words<A>::write(out);
     }
 };
@@ -2527,25 +2929,22 @@ public:
     using value_type = std::variant<std::monostate, Es...>;
 
     /// Raises e: queues it for processing after the current step. False if the queue is full.
+    /// An event the chart does not name is queued as its nearest family (model/event_families.hpp):
+    /// the rows that take it see no more of it than that.
     template <class E>
     constexpr bool operator()(E const& e) noexcept(std::is_nothrow_copy_constructible_v<E>) {
-        if constexpr (index_in<E, Es...>() < 0) {
-            detail::report<error::raised_event_not_in_chart<E>>();
-            return false;
+        constexpr int own = index_in<E, Es...>();
+        if constexpr (own >= 0) {
+            return push<E>(e);
         } else {
-            if (size_ == Capacity) {
-                overflowed_ = true;
+            constexpr int family = event_families<type_list<Es...>>::template trigger_of<E>();
+            if constexpr (family < 0) {
+                detail::report<error::raised_event_not_in_chart<E>>();
                 return false;
+            } else {
+                using F = at<static_cast<std::size_t>(family), type_list<Es...>>;
+                return push<F>(event_as<F>(e));
             }
-            auto& slot = items_[(head_ + size_) % Capacity];
-            // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
-            // 14 cannot emplace into a variant in a constant expression, so that assigns.
-            if (std::is_constant_evaluated())
-                slot = value_type{std::in_place_type<E>, e};
-            else
-                slot.template emplace<E>(e);
-            ++size_;
-            return true;
         }
     }
 
@@ -2567,6 +2966,23 @@ public:
     }
 
 private:
+    template <class E>
+    constexpr bool push(E const& e) {
+        if (size_ == Capacity) {
+            overflowed_ = true;
+            return false;
+        }
+        auto& slot = items_[(head_ + size_) % Capacity];
+        // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
+        // 14 cannot emplace into a variant in a constant expression, so that assigns.
+        if (std::is_constant_evaluated())
+            slot = value_type{std::in_place_type<E>, e};
+        else
+            slot.template emplace<E>(e);
+        ++size_;
+        return true;
+    }
+
     std::array<value_type, Capacity> items_{};
     std::size_t head_ = 0;
     std::size_t size_ = 0;
@@ -2696,7 +3112,8 @@ constexpr auto signature_errors(Row const*) {
         else
             return type_list<>{};
     } else {
-        using keyword = std::conditional_t<is_entry_row<Row>, entry_keyword, exit_keyword>;
+        using keyword = std::conditional_t<is_entry_row<Row>, entry_keyword,
+                                           std::conditional_t<is_initial_row<Row>, initial_keyword, exit_keyword>>;
         using actions = typename bad_entry_action<std::remove_cv_t<decltype(Row::action)>, Ctx, Raise>::type;
         if constexpr (actions::size > 0)
             return type_list<error::in_row<typename Row::source, keyword, no_target,
@@ -2727,7 +3144,8 @@ using signature_error =
 // end include/bsc/checks/signatures.hpp
 // begin include/bsc/checks/structure.hpp
 // Structural checks: every state declared once, every row's states in the tree, exactly one
-// initial child per composite, no transition between orthogonal regions.
+// initial child per composite, no transition between orthogonal regions, every local
+// transition's target inside its source.
 
 
 namespace bsc::detail {
@@ -2771,6 +3189,46 @@ constexpr int find_orthogonal_transition(topology<N> const& t, row_table<R> cons
     return -1;
 }
 
+// The first history pseudo-state that is not a child of a composite, whose default does not
+// lie inside its composite (or is a history state), or that is the source of a row other than
+// on_initial; -1 if none.
+template <std::size_t N, std::size_t R>
+constexpr int find_invalid_history(topology<N> const& t, row_table<R> const& r) {
+    for (std::size_t s = 1; s < N; ++s) {
+        if (t.kinds[s] != kind::history) continue;
+        auto const p = static_cast<std::size_t>(t.parent[s]);
+        int const d = t.initial_target[s];
+        if (t.kinds[p] != kind::composite || d < 0 || t.kinds[static_cast<std::size_t>(d)] == kind::history)
+            return static_cast<int>(s);
+    }
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.kinds[i] != row_kind::initial && r.source[i] >= 0 && t.kinds[static_cast<std::size_t>(r.source[i])] == kind::history)
+            return r.source[i];
+    return -1;
+}
+
+// The first on_initial row of a state that takes no initial transition (not a composite, or
+// one with a history marker, which takes its history instead), or -1.
+template <std::size_t N, std::size_t R>
+constexpr int find_misplaced_initial_action(topology<N> const& t, row_table<R> const& r) {
+    for (std::size_t i = 0; i < R; ++i) {
+        if (r.kinds[i] != row_kind::initial) continue;
+        auto const s = static_cast<std::size_t>(r.source[i]);
+        if (t.kinds[s] == kind::history) continue;  // the action of a history state's default transition
+        if (t.kinds[s] != kind::composite || t.hist[s] != history::none) return static_cast<int>(i);
+    }
+    return -1;
+}
+
+// The first local row whose target is not a proper descendant of its source, or -1.
+template <std::size_t N, std::size_t R>
+constexpr int find_misplaced_local(topology<N> const& t, row_table<R> const& r) {
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.local[i] && !t.is_proper_ancestor(r.source[i], r.target[i]))
+            return static_cast<int>(i);
+    return -1;
+}
+
 }  // namespace bsc::detail
 // end include/bsc/checks/structure.hpp
 
@@ -2806,7 +3264,7 @@ template <class Chart>
 constexpr bool structure_valid() {
     using model = chart_model<Chart>;
     return find_duplicate(typename model::tags{}) < 0 && find_unknown_state(model::rows) < 0 &&
-           find_initial_problem(model::tree) < 0;
+           find_initial_problem(model::tree) < 0 && find_invalid_history(model::tree, model::rows) < 0;
 }
 
 template <class Chart>
@@ -2840,7 +3298,11 @@ constexpr auto check_structure() {
                 else
                     return type_list<error::multiple_initial_states<S>>{};
             } else {
-                return type_list<>{};
+                constexpr int history_state = find_invalid_history(model::tree, model::rows);
+                if constexpr (history_state >= 0)
+                    return type_list<error::invalid_history_state<typename model::template tag_at<history_state>>>{};
+                else
+                    return type_list<>{};
             }
         }
     }
@@ -2857,6 +3319,44 @@ constexpr auto check_orthogonality() {
     } else {
         return type_list<>{};
     }
+}
+
+template <class Chart>
+constexpr auto check_local_targets() {
+    using model = chart_model<Chart>;
+    constexpr int row = find_misplaced_local(model::tree, model::rows);
+    if constexpr (row >= 0) {
+        using R = typename model::template row_at<row>;
+        return type_list<row_error<Chart, row, error::local_target_outside_source<typename R::source, typename R::target>>>{};
+    } else {
+        return type_list<>{};
+    }
+}
+
+template <class Chart>
+constexpr auto check_initial_actions() {
+    using model = chart_model<Chart>;
+    constexpr int row = find_misplaced_initial_action(model::tree, model::rows);
+    if constexpr (row >= 0)
+        return type_list<row_error<Chart, row, error::initial_action_without_initial_transition<
+                                                   typename model::template row_at<row>::source>>>{};
+    else
+        return type_list<>{};
+}
+
+template <class Chart>
+constexpr auto check_event_families() {
+    using events = typename chart_model<Chart>::events;
+    constexpr auto const& nearest = event_families<events>::nearest;
+    constexpr int tangled = [] {
+        for (std::size_t t = 0; t < nearest.size(); ++t)
+            if (nearest[t] == -2) return static_cast<int>(t);
+        return -1;
+    }();
+    if constexpr (tangled >= 0)
+        return type_list<error::event_in_two_families<at<static_cast<std::size_t>(tangled), events>>>{};
+    else
+        return type_list<>{};
 }
 
 template <class Chart>
@@ -2942,7 +3442,9 @@ constexpr auto check_chart() {
         return check_structure<Chart>();
     else
         // Each check runs, so one build reports every kind of problem it finds.
-        return check_orthogonality<Chart>() + check_determinism<Chart>() + check_dead_transitions<Chart>() +
+        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_initial_actions<Chart>() +
+               check_event_families<Chart>() +
+               check_determinism<Chart>() + check_dead_transitions<Chart>() +
                check_reachability<Chart>() + check_livelock<Chart>() +
                check_signatures<Chart>();
 }
@@ -3167,11 +3669,17 @@ struct chart_layout {
     static constexpr int R = Model::R;
     static constexpr int root = 1;  // state 0 is the implicit top above the chart's root
 
-    // `trigger` is an event's position, eventless_id, or any_condition (eventless or timeout).
+    // Whether row `row` is a transition on `trigger`: an event's position, eventless_id, or
+    // any_condition (eventless or timeout).
     static constexpr bool is_transition_on(int row, int trigger) {
         auto const r = static_cast<std::size_t>(row);
         if (rows.kinds[r] != row_kind::transition) return false;
-        return trigger == any_condition ? rows.trigger[r] < 0 : rows.trigger[r] == trigger;
+        if (trigger == any_condition) return rows.trigger[r] < 0;
+        // A row on a family of the trigger's event takes it too (model/event_families.hpp).
+        if constexpr (Model::has_families)
+            return rows.takes(rows.trigger[r], trigger);
+        else
+            return rows.trigger[r] == trigger;
     }
 
     static constexpr bool has_trigger(int trigger) {
@@ -3299,15 +3807,51 @@ struct chart_layout {
         return false;
     }();
 
-    // The initial configuration: every composite's byte at its initial child.
+    // history_child[s]: the first history pseudo-state among the children of composite s, -1
+    // if none; deep_history_child[s]: whether one of them is deep.
+    static constexpr auto history_child = [] {
+        std::array<int, static_cast<std::size_t>(N)> out{};
+        for (int s = 0; s < N; ++s) {
+            out[static_cast<std::size_t>(s)] = -1;
+            for (int c = tree.first_child[static_cast<std::size_t>(s)]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                if (tree.kinds[static_cast<std::size_t>(c)] == kind::history && out[static_cast<std::size_t>(s)] < 0)
+                    out[static_cast<std::size_t>(s)] = c;
+        }
+        return out;
+    }();
+    static constexpr auto deep_history_child = [] {
+        std::array<bool, static_cast<std::size_t>(N)> out{};
+        for (int s = 1; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(s)] == kind::history && tree.hist[static_cast<std::size_t>(s)] == history::deep)
+                out[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] = true;
+        return out;
+    }();
+    static constexpr bool has_history_states = [] {
+        for (int s = 0; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(s)] == kind::history) return true;
+        return false;
+    }();
+
+    // The initial configuration: every composite's byte at its initial child; the byte of a
+    // composite with history states at the first of them, which is never active: the mark of a
+    // composite that has never been active, whose history states take their defaults.
     static constexpr auto initial_bytes = [] {
         std::array<std::uint8_t, static_cast<std::size_t>(tree.slots)> bytes{};
         for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s)
             if (tree.slot[s] >= 0)
-                bytes[static_cast<std::size_t>(tree.slot[s])] =
-                    static_cast<std::uint8_t>(tree.ordinal[static_cast<std::size_t>(tree.initial[s])]);
+                bytes[static_cast<std::size_t>(tree.slot[s])] = static_cast<std::uint8_t>(
+                    tree.ordinal[static_cast<std::size_t>(history_child[s] >= 0 ? history_child[s] : tree.initial[s])]);
         return bytes;
     }();
+    // Whether composite s's byte says it has never been active (it selects a history state).
+    template <int S>
+    static constexpr bool never_active_byte(std::uint8_t byte) {
+        bool is_history = false;
+        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+            is_history = is_history || (tree.kinds[static_cast<std::size_t>(c)] == kind::history &&
+                                        tree.ordinal[static_cast<std::size_t>(c)] == byte);
+        return is_history;
+    }
 
     // Which children of the root are final, by ordinal: the machine halts when its root's
     // byte selects one. Empty unless the root is a composite with a final child.
@@ -3551,7 +4095,7 @@ struct plan : chart_layout<Model> {
             for (int r2 = 0; r2 < R; ++r2) {
                 auto const k = rows.kinds[static_cast<std::size_t>(r2)];
                 int const s = rows.source[static_cast<std::size_t>(r2)];
-                if ((k == row_kind::entry || k == row_kind::exit) && s != d && tree.contains(d, s)) return false;
+                if (k != row_kind::transition && s != d && tree.contains(d, s)) return false;
             }
         }
         return true;
@@ -4024,6 +4568,90 @@ public:
 
 }  // namespace bsc
 // end include/bsc/event_set.hpp
+// begin include/bsc/model/completion.hpp
+// Completion (SCXML 3.7.1): which states raise bsc::done<S>, and the flags a machine keeps
+// while it enters a parallel state. Computed only for a chart that can take a done event (it
+// names one, or takes bsc::any_event); for every other chart all of this is empty, and the
+// back ends generate nothing for it.
+
+#include <array>
+#include <cstddef>
+
+
+namespace bsc::detail {
+
+template <class E>
+inline constexpr bool is_done_event = false;
+template <class S>
+inline constexpr bool is_done_event<done<S>> = true;
+template <>
+inline constexpr bool is_done_event<any_event> = true;  // it takes done events too
+
+template <class Model>
+struct completion {
+    static constexpr int N = Model::N;
+    static constexpr auto const& tree = Model::tree;
+
+    // Whether a row of the chart can take a done event.
+    static constexpr bool takes_any = []<class... Es>(type_list<Es...>) {
+        return (is_done_event<Es> || ...);
+    }(typename Model::events{});
+
+    // trigger[s]: the trigger of bsc::done<S> for a composite or parallel state S other than
+    // the root, or -1 (no row takes it, or it is never raised).
+    static constexpr std::array<int, static_cast<std::size_t>(N)> trigger = [] {
+        std::array<int, static_cast<std::size_t>(N)> out{};
+        for (int& t : out) t = -1;
+        if constexpr (takes_any)
+            [&]<class... Tags>(type_list<Tags...>) {
+                std::size_t s = 0;
+                ((out[s] = s > 1 && (tree.kinds[s] == kind::composite || tree.kinds[s] == kind::parallel)
+                               ? Model::template trigger_of<done<Tags>>
+                               : -1,
+                  ++s),
+                 ...);
+            }(typename Model::tags{});
+        return out;
+    }();
+
+    // Whether the machine ever raises a done event: then it needs a queue.
+    static constexpr bool raises = [] {
+        for (int t : trigger)
+            if (t >= 0) return true;
+        return false;
+    }();
+
+    // The parallel states whose done event is taken, numbered: while one is being entered, a
+    // final state entered in one of its regions must not look at the regions not yet entered
+    // (their bytes are the history of an earlier visit).
+    static constexpr int parallel_count = [] {
+        int n = 0;
+        for (int s = 0; s < N; ++s)
+            n += tree.kinds[static_cast<std::size_t>(s)] == kind::parallel && trigger[static_cast<std::size_t>(s)] >= 0;
+        return n;
+    }();
+    static constexpr auto parallel_number = [] {
+        std::array<int, static_cast<std::size_t>(N)> out{};
+        int n = 0;
+        for (int s = 0; s < N; ++s)
+            out[static_cast<std::size_t>(s)] =
+                tree.kinds[static_cast<std::size_t>(s)] == kind::parallel && trigger[static_cast<std::size_t>(s)] >= 0 ? n++
+                                                                                                                      : -1;
+        return out;
+    }();
+};
+
+// What a machine keeps for completion: one flag per parallel state whose done event is taken,
+// set while the state's regions are being entered. Nothing for other charts.
+template <int Parallels>
+struct entering_flags {
+    std::array<bool, static_cast<std::size_t>(Parallels)> flag{};
+};
+template <>
+struct entering_flags<0> {};
+
+}  // namespace bsc::detail
+// end include/bsc/model/completion.hpp
 // begin include/bsc/runtime/context_data.hpp
 // The machine's view of a context's data model: it latches input channels, commits output
 // channels and updates timers, wherever they are in the context: as its members, or inside
@@ -5132,7 +5760,10 @@ public:
     template <class E>
     constexpr outcome dispatch(E const& e) {
         constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (trigger < 0) {
+        if constexpr (trigger == -2) {
+            detail::report<error::event_in_two_families<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger < 0) {
             detail::report<error::unhandled_event<E>>();
             return outcome::ignored;
         } else {
@@ -5144,7 +5775,10 @@ public:
     template <class E>
     constexpr outcome dispatch(E const& e, allow_unhandled_t) {
         constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (trigger < 0) {
+        if constexpr (trigger == -2) {
+            detail::report<error::event_in_two_families<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger < 0) {
             if (running()) return outcome::ignored;  // inside a run: nothing to record
             if (!halted()) notify<model, Observer>::dispatching(observer_.value, e);
             return record(outcome::ignored);
@@ -5261,6 +5895,95 @@ protected:
         }));
     }
 
+    // ---- completion (model/completion.hpp), called by the back ends ----------------------
+    using completion = detail::completion<model>;
+
+    // After the entry actions of final state f: raises done for its parent, and for the
+    // parallel state above the parent if every region of it is now in a final state (SCXML's
+    // enterStates). A final child of the root raises nothing: the machine halts.
+    constexpr void entered_final(int f) {
+        if constexpr (completion::raises) {
+            int const p = tree.parent[static_cast<std::size_t>(f)];
+            if (p == root) return;
+            raise_done(p);
+            int const g = tree.parent[static_cast<std::size_t>(p)];
+            if (tree.kinds[static_cast<std::size_t>(g)] == kind::parallel && !entering(g) && in_final(g)) raise_done(g);
+        } else {
+            (void)f;
+        }
+    }
+
+    // Enters the regions of parallel state g (enter_regions(), the back end's loop). While it
+    // does, a final state entered in a region does not look at the regions after its own, which
+    // are not entered yet; once they all are, done for g is raised if they are all final and
+    // the last was entered through a final state of its own (a composite region): where SCXML
+    // raises it, after the last final state entered.
+    template <class Enter>
+    constexpr void enter_parallel(int g, Enter&& enter_regions) {
+        if constexpr (completion::parallel_count > 0) {
+            int const n = completion::parallel_number[static_cast<std::size_t>(g)];
+            if (n >= 0) {
+                entering_.flag[static_cast<std::size_t>(n)] = true;
+                enter_regions();
+                entering_.flag[static_cast<std::size_t>(n)] = false;
+                if (tree.kinds[static_cast<std::size_t>(last_child(g))] == kind::composite && in_final(g)) raise_done(g);
+                return;
+            }
+        }
+        enter_regions();
+    }
+
+    // Runs the exit actions of every active state, innermost first, when the machine halts
+    // (SCXML's exitInterpreter).
+    constexpr void halt_if_final() {
+        if constexpr (layout::can_halt)
+            if (halted()) backend().exit_all();
+    }
+
+private:
+    constexpr bool entering(int g) const {
+        if constexpr (completion::parallel_count > 0) {
+            int const n = completion::parallel_number[static_cast<std::size_t>(g)];
+            return n >= 0 && entering_.flag[static_cast<std::size_t>(n)];
+        } else {
+            return (void)g, false;
+        }
+    }
+    static constexpr int last_child(int s) {
+        int last = tree.first_child[static_cast<std::size_t>(s)];
+        while (tree.next_sibling[static_cast<std::size_t>(last)] >= 0) last = tree.next_sibling[static_cast<std::size_t>(last)];
+        return last;
+    }
+    // SCXML's isInFinalState: a composite whose active child is final, a parallel state all of
+    // whose regions are.
+    constexpr bool in_final(int s) const {
+        auto const i = static_cast<std::size_t>(s);
+        if (tree.kinds[i] == kind::composite) {
+            auto const ordinal = config_.active[static_cast<std::size_t>(tree.slot[i])];
+            for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                if (tree.ordinal[static_cast<std::size_t>(c)] == ordinal)
+                    return tree.kinds[static_cast<std::size_t>(c)] == kind::final_state;
+            return false;
+        }
+        if (tree.kinds[i] == kind::parallel) {
+            for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                if (!in_final(c)) return false;
+            return true;
+        }
+        return false;
+    }
+    // Queues done<S> for state s, if a row takes it.
+    constexpr void raise_done(int s) {
+        [&]<std::size_t... S>(std::index_sequence<S...>) {
+            (void)((s == static_cast<int>(S) ? (raise_done_of<S>(), true) : false) || ...);
+        }(std::make_index_sequence<state_count>{});
+    }
+    template <std::size_t S>
+    constexpr void raise_done_of() {
+        if constexpr (completion::trigger[S] >= 0) (void)queue_(done<typename model::template tag_at<static_cast<int>(S)>>{});
+    }
+
+protected:
     // The machine counts as running from the start of a run to its end, or, in a dispatch on a
     // back end that says so (Backend::marks_running_lazily), from the first guard or transition
     // it is about to run (the back end calls mark_running() there): only guards, actions and
@@ -5393,7 +6116,10 @@ private:
         return body();
 #endif
     }
-    constexpr void end_run_by_exception() { status_ = static_cast<run_status>(bits(status_) & ~running_bit); }
+    constexpr void end_run_by_exception() {
+        status_ = static_cast<run_status>(bits(status_) & ~running_bit);
+        if constexpr (completion::parallel_count > 0) entering_ = {};  // the run is over, whatever it was entering
+    }
 
     template <int Trigger, class E>
     constexpr outcome process(E const& e) {
@@ -5451,7 +6177,7 @@ private:
             return drain_queue(consumed);
         // The common case, kept inline: nothing raised, and no eventless transition to try.
         if constexpr (!layout::has_trigger(eventless_id))
-            if (queue_.empty() && !queue_.overflowed())
+            if (queue_.empty() && !queue_.overflowed() && !(layout::can_halt && halted()))
                 return consumed ? outcome::consumed : outcome::ignored;
         return settle(consumed);
     }
@@ -5486,6 +6212,7 @@ private:
     }
 
     constexpr outcome settled(bool consumed) {
+        halt_if_final();
         if (queue_.overflowed()) {
             queue_.clear_overflow();
             return outcome::queue_overflow;
@@ -5501,20 +6228,21 @@ private:
 
     // ---- for the explorer (through detail::access) -------------------------------------------
     // The configuration with every byte that can never matter again reset to its initial
-    // child: the byte of an inactive composite that neither has history nor lies below a
-    // deep history. Two machines with equal canonical configurations behave the same.
+    // value: the byte of an inactive composite that neither has history (a marker or a history
+    // state) nor lies below a deep one. Two machines with equal canonical configurations behave
+    // the same.
     constexpr configuration_type canonical_configuration() const {
         configuration_type c = config_;
         if constexpr (tree.slots > 0) {
             auto const active = active_flags();
             for (std::size_t s = 1; s < state_count; ++s) {
                 if (tree.slot[s] < 0 || active[s]) continue;
-                bool remembered = tree.hist[s] != history::none;
+                bool remembered = tree.hist[s] != history::none || layout::history_child[s] >= 0;
                 for (int a = tree.parent[s]; a > 0 && !remembered; a = tree.parent[static_cast<std::size_t>(a)])
-                    remembered = tree.hist[static_cast<std::size_t>(a)] == history::deep;
+                    remembered = tree.hist[static_cast<std::size_t>(a)] == history::deep ||
+                                 layout::deep_history_child[static_cast<std::size_t>(a)];
                 if (!remembered)
-                    c.active[static_cast<std::size_t>(tree.slot[s])] =
-                        static_cast<std::uint8_t>(tree.ordinal[static_cast<std::size_t>(tree.initial[s])]);
+                    c.active[static_cast<std::size_t>(tree.slot[s])] = layout::initial_bytes[static_cast<std::size_t>(tree.slot[s])];
             }
         }
         return c;
@@ -5578,6 +6306,7 @@ protected:
     [[no_unique_address]] whole<Observer> observer_;
     [[no_unique_address]] whole<context_type> context_;
     configuration_type config_{};
+    [[no_unique_address]] entering_flags<completion::parallel_count> entering_;
     // The outcome of the last run (low bits) and the mark of a run under way (running_bit). An
     // enumeration and not a std::uint8_t: a store through an unsigned char may alias any object,
     // so the compiler would reload the context after every mark.
@@ -5592,7 +6321,7 @@ protected:
 // end include/bsc/runtime/driver.hpp
 // begin include/bsc/runtime/queue_for.hpp
 // The internal event queue a machine of a chart needs: none if no action of the chart can raise
-// an event (detail::may_raise) and the chart does not take bsc::action_failed.
+// an event (detail::may_raise) and the chart takes neither bsc::action_failed nor a done event.
 
 #include <type_traits>
 
@@ -5610,12 +6339,14 @@ constexpr bool chart_may_raise() {
 }
 
 // The queue of a machine of the chart (either back end): a bounded queue of the chart's events
-// if an action can raise, or the chart takes bsc::action_failed (which the machine raises);
+// if an action can raise, or the chart takes bsc::action_failed or a bsc::done event (which the
+// machine raises);
 // otherwise none, and no test for raised events after a microstep.
 template <class Chart, class Policy>
 using queue_for =
     std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
-                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0,
+                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0 ||
+                           completion<chart_model<std::remove_cv_t<Chart>>>::raises,
                        event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
                        no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>;
 }  // namespace bsc::detail
@@ -5795,8 +6526,19 @@ private:
     constexpr auto const& row() const {
         return base::template row<Row>();
     }
+    // The event e as row Row sees it: its own event type, a family of it, or bsc::any_event.
+    // (Where E is the row's own event, e is passed as it is: most rows of most charts, and no
+    // conversion to instantiate.)
+    template <int Row, class E>
+    static constexpr bool sees_itself = __is_same(E, detail::row_event_t<typename model::template row_at<Row>>);
+    template <int Row, class E>
+    static constexpr decltype(auto) seen_by(E const& e) {
+        return detail::event_as<detail::row_event_t<typename model::template row_at<Row>>>(e);
+    }
 
     constexpr void enter_initial() { enter_default<root>(); }
+    // When the machine halts: every active state's exit actions, innermost first.
+    constexpr void exit_all() { exit_below<0>(); }
 
     // ---- entry and exit ----------------------------------------------------------------
     // The entry (or exit) actions of state S, in declaration order.
@@ -5811,6 +6553,7 @@ private:
     template <int S>
     constexpr void run_entry() {
         run_state_actions<detail::row_kind::entry, S>();
+        if constexpr (tree.kinds[S] == detail::kind::final_state) this->entered_final(S);
         // Its timeouts count from its entry, at the time of the last cycle.
         constexpr int first_slot = plan::timeout_slot[S];
         for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = clock_;
@@ -5862,16 +6605,45 @@ private:
         if constexpr (k == detail::kind::composite) {
             constexpr auto h = tree.hist[S];
             if constexpr (h == detail::history::none) {
+                // The initial transition: its actions, then its target, a child or deeper.
                 constexpr int init = tree.initial[S];
-                set_active_child<S>(tree.ordinal[init]);
-                enter_default<init>();
+                run_state_actions<detail::row_kind::initial, S>();
+                if constexpr (tree.kinds[init] == detail::kind::history) {
+                    enter_history<init>();
+                } else if constexpr (tree.initial_target[S] == init) {
+                    set_active_child<S>(tree.ordinal[init]);
+                    enter_default<init>();
+                } else {
+                    enter_toward<S, tree.initial_target[S]>();
+                }
             } else if constexpr (h == detail::history::shallow) {
                 with_active_child<S>([&](auto c) { enter_default<decltype(c)::value>(); });
             } else {
                 with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
             }
         } else if constexpr (k == detail::kind::parallel) {
-            for_each_child<S>([&](auto c) { enter_default<decltype(c)::value>(); });
+            this->enter_parallel(S, [&] { for_each_child<S>([&](auto c) { enter_default<decltype(c)::value>(); }); });
+        }
+    }
+
+    // Enters history state H of composite P: P's remembered child (shallow) or remembered
+    // sub-configuration (deep), or, if P has never been active, H's default transition.
+    template <int H>
+    constexpr void enter_history() {
+        constexpr int p = tree.parent[H];
+        if (plan::template never_active_byte<p>(static_cast<std::uint8_t>(active_child<p>()))) {
+            run_state_actions<detail::row_kind::initial, H>();
+            constexpr int c = tree.initial[H];
+            if constexpr (tree.initial_target[H] == c) {
+                set_active_child<p>(tree.ordinal[c]);
+                enter_default<c>();
+            } else {
+                enter_toward<p, tree.initial_target[H]>();
+            }
+        } else if constexpr (tree.hist[H] == detail::history::shallow) {
+            with_active_child<p>([&](auto c) { enter_default<decltype(c)::value>(); });
+        } else {
+            with_active_child<p>([&](auto c) { enter_restore<decltype(c)::value>(); });
         }
     }
 
@@ -5883,7 +6655,7 @@ private:
         if constexpr (k == detail::kind::composite)
             with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
         else if constexpr (k == detail::kind::parallel)
-            for_each_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
+            this->enter_parallel(S, [&] { for_each_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); }); });
     }
 
     // Enters, below the active state D, the path to Target (and parallel siblings on the way).
@@ -5891,12 +6663,17 @@ private:
     constexpr void enter_toward() {
         constexpr int c = tree.child_toward(D, Target);
         if constexpr (tree.kinds[D] == detail::kind::parallel) {
-            for_each_child<D>([&](auto k) {
-                if constexpr (decltype(k)::value == c)
-                    enter_path_node<c, Target>();
-                else
-                    enter_default<decltype(k)::value>();
+            // (A parallel D is never a transition's domain: it has just been entered.)
+            this->enter_parallel(D, [&] {
+                for_each_child<D>([&](auto k) {
+                    if constexpr (decltype(k)::value == c)
+                        enter_path_node<c, Target>();
+                    else
+                        enter_default<decltype(k)::value>();
+                });
             });
+        } else if constexpr (tree.kinds[c] == detail::kind::history) {
+            enter_history<c>();  // D, its composite, has been entered: now its history
         } else {
             set_active_child<D>(tree.ordinal[c]);
             enter_path_node<c, Target>();
@@ -5943,7 +6720,10 @@ private:
     constexpr bool guard_holds(E const& e) {
         if constexpr (rows.guarded[Row]) {
             if constexpr (!plan::has_parallel) this->mark_running();
-            return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, e)); });
+            if constexpr (sees_itself<Row, E>)
+                return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, e)); });
+            else
+                return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, seen_by<Row>(e))); });
         } else {
             return true;
         }
@@ -5951,9 +6731,15 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        notify::template transition<Row>(observer_.value, row<Row>(), e);
-        if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-            this->run([&] { row<Row>().action(context_.value, e, queue_); });
+        if constexpr (sees_itself<Row, E>) {
+            notify::template transition<Row>(observer_.value, row<Row>(), e);
+            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
+                this->run([&] { row<Row>().action(context_.value, e, queue_); });
+        } else {
+            notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
+            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
+                this->run([&] { row<Row>().action(context_.value, seen_by<Row>(e), queue_); });
+        }
     }
 
     template <int Row>
@@ -6370,6 +7156,7 @@ enum class state_kind : std::uint8_t {
     final_state,  ///< an atomic state that ends its parent (the root: the machine halts)
     composite,    ///< exactly one child active (the paper's hierarchical, or OR, state)
     parallel,     ///< all children active (the paper's concurrent, or AND, state)
+    history,      ///< a history pseudo-state of its parent composite: never active
 };
 enum class history_kind : std::uint8_t { none, shallow, deep };
 
@@ -6397,9 +7184,11 @@ struct state_row {
     state_status status{};
     state_action entry = nullptr;  ///< null: no entry action
     state_action exit = nullptr;   ///< null: no exit action
+    state_action initial_action = nullptr;  ///< a composite's initial transition's actions (on_initial); null: none
 
     // Derived columns.
-    state_id initial = no_state;   ///< default child of a composite
+    state_id initial = no_state;   ///< default child of a composite (of a history state: its default's path)
+    state_id initial_target = no_state;  ///< its initial state: `initial`, or a descendant below it (a deep initial)
     std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
     std::int16_t slot = -1;    ///< the byte of the configuration a composite owns, -1 for others
     state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
@@ -6501,6 +7290,7 @@ private:
             case bsc::detail::kind::final_state: return state_kind::final_state;
             case bsc::detail::kind::composite: return state_kind::composite;
             case bsc::detail::kind::parallel: return state_kind::parallel;
+            case bsc::detail::kind::history: return state_kind::history;
         }
         return state_kind::basic;
     }
@@ -6525,6 +7315,8 @@ private:
         row.entry = state_action_of<row_kind::entry, S>();
         row.exit = state_action_of<row_kind::exit, S>();
         row.initial = id(tree.initial[i]);
+        row.initial_target = id(tree.initial_target[i]);
+        row.initial_action = state_action_of<row_kind::initial, S>();
         row.ordinal = static_cast<std::uint8_t>(tree.ordinal[i]);
         row.slot = static_cast<std::int16_t>(tree.slot[i]);
         row.end = static_cast<state_id>(tree.end[i]);
@@ -6620,10 +7412,20 @@ public:
     /// How many states keep an entry time for their timeouts.
     static constexpr std::size_t timeout_slots = static_cast<std::size_t>(layout::timeout_slots);
 
-    /// True if some transition is triggered by `event` (an event id, or `eventless_id`).
+    /// True if a transition triggered by `row_event` takes `event`: the same event, or a family
+    /// of it (a base class of its type among the chart's events, or bsc::any_event).
+    static constexpr bool takes(event_id row_event, event_id event) {
+        if constexpr (model::has_families)
+            return rows.takes(row_event, event);
+        else
+            return row_event == event;
+    }
+
+    /// True if some transition is triggered by `event` (an event id, or `eventless_id`), or by
+    /// a family of it.
     static constexpr bool handles(event_id event) {
         for (auto const& t : transitions)
-            if (t.event == event) return true;
+            if (takes(t.event, event)) return true;
         return false;
     }
 
@@ -6790,6 +7592,8 @@ private:
     // ---- entry and exit -------------------------------------------------------------------
     void run_entry(state_id s) {
         if (auto const f = states[s].entry) f(this->chart(), this->context_.value, this->queue_, this->sink());
+        if constexpr (base::completion::raises)
+            if (states[s].status.kind == state_kind::final_state) this->entered_final(s);
         // A state's timeouts count from its entry, at the time of the last cycle.
         if constexpr (tables_type::timeout_slots > 0)
             for (std::int16_t k = 0; k < states[s].timeout_slots; ++k)
@@ -6805,6 +7609,8 @@ private:
 
     // The paper's StartStEng: the initial configuration, entered from the root down.
     void enter_initial() { enter_default(tables_type::root); }
+    // When the machine halts: every active state's exit actions, innermost first.
+    void exit_all() { deactivate_path(no_state); }
 
     // Enters s and its default completion: the initial child of a composite, or the child its
     // history remembers; every child of a parallel state.
@@ -6817,16 +7623,47 @@ private:
         if (row.status.kind == state_kind::composite) {
             switch (row.status.history) {
                 case history_kind::none:
-                    set_byte(row.slot, states[row.initial].ordinal);
-                    enter_default(row.initial);
+                    // The initial transition: its actions, then its target, a child or deeper.
+                    if (auto const f = row.initial_action) f(this->chart(), this->context_.value, this->queue_, this->sink());
+                    if (states[row.initial].status.kind == state_kind::history) {
+                        enter_history(row.initial);
+                    } else if (row.initial_target != row.initial) {
+                        activate_path(s, row.initial_target);
+                    } else {
+                        set_byte(row.slot, states[row.initial].ordinal);
+                        enter_default(row.initial);
+                    }
                     break;
                 case history_kind::shallow: enter_default(active_child(s)); break;
                 case history_kind::deep: enter_restore(active_child(s)); break;
             }
         } else if (row.status.kind == state_kind::parallel) {
-            for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_default(c);
+            this->enter_parallel(s, [&] {
+                for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_default(c);
+            });
         }
     }
+    // Enters history state h of composite p: p's remembered child (shallow) or remembered
+    // sub-configuration (deep), or, if p has never been active (its byte selects a history
+    // state), h's default transition.
+    void enter_history(state_id h) {
+        state_id const p = states[h].parent;
+        state_id const remembered = active_child(p);
+        if (states[remembered].status.kind == state_kind::history) {
+            if (auto const f = states[h].initial_action) f(this->chart(), this->context_.value, this->queue_, this->sink());
+            if (states[h].initial_target != states[h].initial) {
+                activate_path(p, states[h].initial_target);
+            } else {
+                set_byte(states[p].slot, states[states[h].initial].ordinal);
+                enter_default(states[h].initial);
+            }
+        } else if (states[h].status.history == history_kind::shallow) {
+            enter_default(remembered);
+        } else {
+            enter_restore(remembered);
+        }
+    }
+
     // Deep history: re-enters s and the whole sub-configuration the bytes remember.
     void enter_restore(state_id s) {
         run_entry(s);
@@ -6834,7 +7671,9 @@ private:
         if (row.status.kind == state_kind::composite)
             enter_restore(active_child(s));
         else if (row.status.kind == state_kind::parallel)
-            for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_restore(c);
+            this->enter_parallel(s, [&] {
+                for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_restore(c);
+            });
     }
 
     // The paper's activPath: enters, below the active state `domain`, the states on the path
@@ -6845,12 +7684,17 @@ private:
         state_id c = target;
         while (states[c].parent != domain) c = states[c].parent;
         if (states[domain].status.kind == state_kind::parallel) {
-            for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
-                if (k == c)
-                    enter_path_node(c, target);
-                else
-                    enter_default(k);
-            }
+            // (A parallel `domain` here has just been entered: no transition's domain is parallel.)
+            this->enter_parallel(domain, [&] {
+                for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
+                    if (k == c)
+                        enter_path_node(c, target);
+                    else
+                        enter_default(k);
+                }
+            });
+        } else if (states[c].status.kind == state_kind::history) {
+            enter_history(c);  // `domain`, its composite, has been entered: now its history
         } else {
             if (states[domain].slot >= 0) set_byte(states[domain].slot, states[c].ordinal);
             enter_path_node(c, target);
@@ -6889,16 +7733,54 @@ private:
         return g == nullptr || this->test([&] { return g(this->chart(), this->context_.value, e); });
     }
 
-    // Step 2 for one active basic state: its candidates are the transitions on the event from
-    // the state itself, then from its parent, and so on up to the root (deepest first); among
-    // those of one origin, declaration order. The first whose guard holds is selected.
-    bool select_from(state_id leaf, event_id event, void const* e, selection& sel) {
+    // The event a microstep processes, as the thunks of a transition receive it. Without
+    // families, every transition on it takes it as it is.
+    struct plain_event {
+        void const* event;
+        void const* as(event_id) const { return event; }
+    };
+    // With families, a transition on a family of the event receives the event as that family
+    // (a base class subobject, or bsc::any_event): one pointer per event of the chart.
+    struct family_event {
+        std::array<void const*, tables_type::event_count> seen{};
+        void const* as(event_id row_event) const { return seen[static_cast<std::size_t>(row_event)]; }
+    };
+    template <class E>
+    static family_event as_families(E const& e) {
+        family_event view;
+        [&]<class... Us>(bsc::detail::type_list<Us...>) {
+            std::size_t u = 0;
+            ((view.seen[u++] = address_as<Us>(e)), ...);
+        }(typename base::event_types{});
+        return view;
+    }
+    template <class U, class E>
+    static void const* address_as(E const& e) {
+        if constexpr (std::is_same_v<U, E>)
+            return &e;
+        else if constexpr (std::is_same_v<U, bsc::any_event>)
+            return &any_event_value;
+        else if constexpr (__is_base_of(U, E))
+            return static_cast<U const*>(&e);
+        else
+            return nullptr;  // not a family of E: no transition on U takes E
+    }
+    static constexpr bsc::any_event any_event_value{};
+
+    // Step 2 for one active basic state: its candidates are the transitions on the event (or on
+    // a family of it) from the state itself, then from its parent, and so on up to the root
+    // (deepest first); among those of one origin, declaration order. The first whose guard
+    // holds is selected.
+    template <class Event>
+    bool select_from(state_id leaf, event_id event, Event const& e, selection& sel) {
         for (state_id a = leaf; a != no_state; a = states[a].parent)
-            for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)])
-                if (transitions[static_cast<std::size_t>(t)].event == event && guard_holds(t, e)) {
+            for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)]) {
+                auto const on = transitions[static_cast<std::size_t>(t)].event;
+                if (tables_type::takes(on, event) && guard_holds(t, e.as(on))) {
                     sel.add(static_cast<std::size_t>(t));
                     return true;
                 }
+            }
         return false;
     }
 
@@ -6911,12 +7793,19 @@ private:
 
     template <int Trigger, class E>
     bool microstep(E const& e) {
-        return microstep(static_cast<event_id>(Trigger), &e);
+        if constexpr (Trigger >= 0 && base::model::has_families)
+            return microstep(static_cast<event_id>(Trigger), as_families(e));
+        else if constexpr (Trigger >= 0)  // E, or an event the chart does not name, as the trigger's type
+            return microstep(static_cast<event_id>(Trigger),
+                             plain_event{address_as<bsc::detail::at<static_cast<std::size_t>(Trigger), typename base::event_types>>(e)});
+        else
+            return microstep(static_cast<event_id>(Trigger), plain_event{&e});
     }
 
     // One microstep for an event, the five steps of the paper's Figure 9; true if a
     // transition was selected.
-    bool microstep(event_id event, void const* e) {
+    template <class Event>
+    bool microstep(event_id event, Event const& e) {
         // 1. Sense the event: an event no transition is triggered by changes nothing.
         if (!tables_type::handles(event)) return false;
 
@@ -6947,7 +7836,8 @@ private:
             if (row.to != no_state) deactivate_path(row.domain);
         }
         // 4. Perform the transition actions, in selection order.
-        for (std::size_t i = 0; i < fired.size; ++i) run_action(static_cast<std::int16_t>(fired.rows[i]), e);
+        for (std::size_t i = 0; i < fired.size; ++i)
+            run_action(static_cast<std::int16_t>(fired.rows[i]), e.as(transitions[fired.rows[i]].event));
         // 5. Activate the states they enter, running entry actions, defaults and history.
         for (std::size_t i = 0; i < fired.size; ++i) {
             auto const& row = transitions[fired.rows[i]];

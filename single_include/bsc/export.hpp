@@ -221,12 +221,18 @@ struct state_info {
     history hist = history::none;
     int parent = -1;  ///< index in diagram::states; -1 for the root
     std::vector<int> children;
-    int initial = -1;  ///< the initial child of a composite state
+    int initial = -1;  ///< a composite's initial state (a child, or deeper); a history state's default
     std::vector<std::string> entry;  ///< labels of the entry actions, in declaration order
     std::vector<std::string> exit;   ///< labels of the exit actions
+    /// labels of the actions of its initial transition (a composite) or default transition (a
+    /// history state): its on_initial rows
+    std::vector<std::string> initial_actions;
     std::vector<int> internal;       ///< internal transitions (indices in diagram::transitions)
 
-    bool is_leaf() const { return node_kind == kind::basic || node_kind == kind::final_state; }
+    /// Drawn as a node, not a cluster: a basic or final state, or a history state.
+    bool is_leaf() const {
+        return node_kind == kind::basic || node_kind == kind::final_state || node_kind == kind::history;
+    }
 };
 
 struct transition_info {
@@ -238,12 +244,14 @@ struct transition_info {
     std::string delay;  ///< a timeout's delay, "3s"
     std::string guard;  ///< empty if unguarded
     std::string action;  ///< empty if no action
+    bool local = false;  ///< a local transition (bsc::local): its source stays active
 
-    /// "event [guard] / action", with the parts that exist.
+    /// "event [guard] / action", with the parts that exist, and "(local)" for a local one.
     std::string label() const {
         std::string out = event;
         if (!guard.empty()) out += (out.empty() ? "[" : " [") + guard + "]";
         if (!action.empty()) out += (out.empty() ? "/ " : " / ") + action;
+        if (local) out += out.empty() ? "(local)" : " (local)";
         return out;
     }
 };
@@ -321,6 +329,8 @@ void add_row(diagram& m, Row const& row, int index, int source) {
         m.states[static_cast<std::size_t>(source)].entry.push_back(action_label(row.action));
     } else if constexpr (is_exit_row<Row>) {
         m.states[static_cast<std::size_t>(source)].exit.push_back(action_label(row.action));
+    } else if constexpr (is_initial_row<Row>) {
+        m.states[static_cast<std::size_t>(source)].initial_actions.push_back(action_label(row.action));
     } else {
         transition_info t;
         t.row = index;
@@ -364,7 +374,8 @@ diagram model_of(Chart const& chart) {
         info.node_kind = tree.kinds[i];
         info.hist = tree.hist[i];
         info.parent = tree.parent[i] - 1;
-        info.initial = tree.initial[i] >= 0 ? tree.initial[i] - 1 : -1;
+        // A composite's initial state (a child, or deeper), a history state's default.
+        info.initial = tree.initial_target[i] >= 0 ? tree.initial_target[i] - 1 : -1;
         for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
             info.children.push_back(c - 1);
         m.states.push_back(std::move(info));
@@ -378,6 +389,8 @@ diagram model_of(Chart const& chart) {
                        ? model::rows.target[static_cast<std::size_t>(t.row)] - 1
                        : -1;
         if (t.target < 0) m.states[static_cast<std::size_t>(t.source)].internal.push_back(static_cast<int>(k));
+        // Local in effect: the domain is the source (bsc::local from a composite).
+        t.local = t.target >= 0 && model::rows.domain[static_cast<std::size_t>(t.row)] == model::rows.source[static_cast<std::size_t>(t.row)];
     }
     return m;
 }
@@ -411,6 +424,14 @@ inline std::string xml_escaped(std::string_view text) {
 /// " [H]" or " [H*]" after the name of a composite state with shallow or deep history.
 inline std::string history_suffix(history h) {
     return h == history::deep ? " [H*]" : h == history::shallow ? " [H]" : "";
+}
+
+/// The label of a composite's initial transition or a history state's default transition: its
+/// actions, "/ a, b", or empty.
+inline std::string initial_label(state_info const& st) {
+    std::string out;
+    for (auto const& a : st.initial_actions) out += (out.empty() ? "/ " : ", ") + a;
+    return out;
 }
 
 /// Lines that describe a state besides its name: "entry / a", "exit / b", and its internal
@@ -465,9 +486,16 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
             out += pad + "}\n";
             return;
         }
-        out += pad + dot_quoted(st.id) + " [label=" + dot_quoted(dot_label(m, s));
+        out += pad + dot_quoted(st.id) + " [label=" + dot_quoted(dot_label(m, s) + history_suffix(st.hist));
         if (st.node_kind == kind::final_state) out += ", peripheries=2";
+        if (st.node_kind == kind::history) out += ", shape=circle";
         out += "];\n";
+        if (st.node_kind == kind::history && st.initial >= 0) {  // its default transition
+            out += pad + dot_quoted(st.id) + " -> " + dot_node(m, st.initial) + " [style=dashed";
+            if (!m[st.initial].is_leaf()) out += ", lhead=" + dot_cluster(m, st.initial);
+            if (!st.initial_actions.empty()) out += ", label=" + dot_quoted(initial_label(st));
+            out += "];\n";
+        }
         return;
     }
     out += pad + "subgraph " + dot_cluster(m, s) + " {\n";
@@ -478,7 +506,11 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
         auto const initial = dot_quoted(st.id + ":initial");
         out += pad + "    " + initial + " [shape=point, width=0.12, label=\"\"];\n";
         out += pad + "    " + initial + " -> " + dot_node(m, st.initial);
-        if (!m[st.initial].is_leaf()) out += " [lhead=" + dot_cluster(m, st.initial) + "]";
+        std::string attributes;
+        if (!m[st.initial].is_leaf()) attributes += "lhead=" + dot_cluster(m, st.initial);
+        if (!st.initial_actions.empty())
+            attributes += (attributes.empty() ? "" : ", ") + std::string("label=") + dot_quoted(initial_label(st));
+        if (!attributes.empty()) out += " [" + attributes + "]";
         out += ";\n";
     }
     if (st.hist != history::none)
@@ -562,23 +594,27 @@ inline std::string mermaid_text(std::string_view text) {
     return out;
 }
 
+inline std::string with_label(std::string const& label) { return label.empty() ? "" : " : " + mermaid_text(label); }
+
 inline void mermaid_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const activities = activity_lines(m, s);
     if (st.is_leaf()) {
-        if (st.label != st.id || !activities.empty())
-            out += indent(level) + "state \"" + mermaid_text(st.label) + "\" as " + st.id + "\n";
+        if (st.label != st.id || !activities.empty() || st.node_kind == kind::history)
+            out += indent(level) + "state \"" + mermaid_text(st.label + history_suffix(st.hist)) + "\" as " + st.id + "\n";
         else
             out += indent(level) + st.id + "\n";
         for (auto const& line : activities) out += indent(level) + st.id + " : " + mermaid_text(line) + "\n";
         if (st.node_kind == kind::final_state) out += indent(level) + st.id + " --> [*]\n";
+        if (st.node_kind == kind::history && st.initial >= 0)  // its default transition
+            out += indent(level) + st.id + " --> " + m[st.initial].id + with_label(initial_label(st)) + "\n";
         return;
     }
     // A composite state's description would replace its name: its activities go into its title.
     std::string title = mermaid_text(st.label) + history_suffix(st.hist);
     for (auto const& line : activities) title += "<br/>" + mermaid_text(line);
     out += indent(level) + "state \"" + title + "\" as " + st.id + " {\n";
-    if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + "\n";
+    if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + with_label(initial_label(st)) + "\n";
     bool first = true;
     for (int const c : st.children) {
         if (st.node_kind == kind::parallel && !first) out += indent(level + 1) + "--\n";
@@ -652,7 +688,10 @@ inline void plantuml_state(diagram const& m, int s, int level, std::string& out)
         out += "\n";
     } else {
         out += " {\n";
-        if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + "\n";
+        if (st.initial >= 0) {
+            auto const label = initial_label(st);
+            out += indent(level + 1) + "[*] --> " + m[st.initial].id + (label.empty() ? "" : " : " + plantuml_text(label)) + "\n";
+        }
         bool first = true;
         for (int const c : st.children) {
             if (st.node_kind == kind::parallel && !first) out += indent(level + 1) + "--\n";
@@ -663,6 +702,10 @@ inline void plantuml_state(diagram const& m, int s, int level, std::string& out)
     }
     for (auto const& line : activity_lines(m, s)) out += pad + st.id + " : " + plantuml_text(line) + "\n";
     if (st.node_kind == kind::final_state) out += pad + st.id + " --> [*]\n";
+    if (st.node_kind == kind::history && st.initial >= 0) {  // its default transition
+        auto const label = initial_label(st);
+        out += pad + st.id + " --> " + m[st.initial].id + (label.empty() ? "" : " : " + plantuml_text(label)) + "\n";
+    }
 }
 
 inline std::string to_plantuml(diagram const& m) {
@@ -703,9 +746,18 @@ std::string to_plantuml(Chart const& chart) {
 //   - a state-scoped timeout `after(3s)` is a transition on the event "after(3s)", with a
 //     comment: SCXML has no timeouts, a platform would send that event delayed from <onentry>;
 //   - `cond` is the guard's name (bsc::named), or "guard";
-//   - an internal transition (a row without a target) is type="internal" without a target;
+//   - an internal transition (a row without a target) is type="internal" without a target, and
+//     a local one (bsc::local) type="internal" with its target;
+//   - bsc::done<S> is the event done.state.S, bsc::any_event the descriptor "*", and an event
+//     whose type derives from another's takes its rows only if its name extends theirs
+//     (name events "error" and "error.send" to keep the families SCXML's);
 //   - actions, and entry and exit actions (<onentry>, <onexit>), are <script> placeholders that
 //     name the action in a comment.
+// A chart that halts (a final child of its root) leaves its root on done.state.Root for a
+// top-level <final>, since SCXML halts only there.
+// History states (shallow_history_state, deep_history_state) are <history> elements whose
+// <transition> is their default; an initial transition with actions (on_initial) is an <initial>
+// element, and a deep initial state is the `initial` attribute's (a descendant).
 // History: bsc restores a composite with history on every entry that does not name a state
 // inside it, which is what entering its <history> pseudo-state does in SCXML; so such a
 // composite's <initial> targets its <history>, whose default transition targets the initial child.
@@ -739,6 +791,27 @@ inline std::string history_id(diagram const& m, int s) {
     return id;
 }
 
+// An event's name as an SCXML event descriptor: "*" stays, and so do letters, digits, '_', '-'
+// and the dots that separate the descriptor's parts ("done.state.Work"); every other run of
+// characters becomes one '_' ("cell::Start" becomes "cell_Start").
+inline std::string event_descriptor(std::string_view name) {
+    if (name == "*") return "*";
+    std::string out;
+    bool gap = false;
+    for (char const c : name) {
+        bool const kept = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+                          c == '-' || c == '.';
+        if (!kept) {
+            gap = true;
+            continue;
+        }
+        if (gap && !out.empty()) out += '_';
+        out += c;
+        gap = false;
+    }
+    return out.empty() ? "unnamed" : out;
+}
+
 inline void scxml_transition(diagram const& m, transition_info const& t, int level, std::string& out) {
     auto const pad = indent(level);
     if (t.trigger == trigger_kind::timeout)
@@ -748,28 +821,52 @@ inline void scxml_transition(diagram const& m, transition_info const& t, int lev
     if (t.trigger == trigger_kind::timeout)
         out += " event=\"" + xml_escaped(t.event) + "\"";
     else if (t.trigger == trigger_kind::event)
-        out += " event=\"" + identifier(t.event) + "\"";
+        out += " event=\"" + event_descriptor(t.event) + "\"";
     if (!t.guard.empty()) out += " cond=\"" + xml_escaped(t.guard) + "\"";
     if (t.target >= 0)
         out += " target=\"" + m[t.target].id + "\"";
-    else
-        out += " type=\"internal\"";
+    if (t.target < 0 || t.local) out += " type=\"internal\"";
     if (t.action.empty())
         out += "/>\n";
     else
         out += ">\n" + pad + "    " + scxml_script(t.action) + "\n" + pad + "</transition>\n";
 }
 
+// Whether the chart halts: its root is a composite with a final child. In SCXML the root is a
+// <state>, whose final child raises done.state.Root; the document then leaves the root for a
+// <final> of the <scxml> element, which ends it after running the same exit actions.
+inline bool halts(diagram const& m) {
+    if (m[0].node_kind != kind::composite) return false;
+    for (int const c : m[0].children)
+        if (m[c].node_kind == kind::final_state) return true;
+    return false;
+}
+
 inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const pad = indent(level);
+    if (st.node_kind == kind::history) {  // a history state and its default transition
+        out += pad + "<history id=\"" + st.id + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") + "\">\n";
+        out += pad + "    <transition target=\"" + m[st.initial].id + "\"";
+        if (st.initial_actions.empty()) {
+            out += "/>\n";
+        } else {
+            out += ">\n";
+            for (auto const& a : st.initial_actions) out += pad + "        " + scxml_script(a) + "\n";
+            out += pad + "    </transition>\n";
+        }
+        out += pad + "</history>\n";
+        return;
+    }
     bool has_transitions = false;
     for (auto const& t : m.transitions) has_transitions = has_transitions || t.source == s;
     std::string element = "state";
     if (st.node_kind == kind::parallel) element = "parallel";
     if (st.node_kind == kind::final_state && !has_transitions) element = "final";
     out += pad + "<" + element + " id=\"" + st.id + "\"";
-    if (st.initial >= 0 && st.hist == history::none) out += " initial=\"" + m[st.initial].id + "\"";
+    // An initial transition with actions is an <initial> element; without, the attribute.
+    bool const initial_element = st.initial >= 0 && st.hist == history::none && !st.initial_actions.empty();
+    if (st.initial >= 0 && st.hist == history::none && !initial_element) out += " initial=\"" + m[st.initial].id + "\"";
     bool const empty = st.children.empty() && st.entry.empty() && st.exit.empty() && !has_transitions;
     if (empty) {
         out += "/>\n";
@@ -779,6 +876,11 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     auto const inner = indent(level + 1);
     if (st.node_kind == kind::final_state && element == "state")
         out += inner + "<!-- a final state of the chart; <final> may not have transitions -->\n";
+    if (initial_element) {
+        out += inner + "<initial>\n" + inner + "    <transition target=\"" + m[st.initial].id + "\">\n";
+        for (auto const& a : st.initial_actions) out += inner + "        " + scxml_script(a) + "\n";
+        out += inner + "    </transition>\n" + inner + "</initial>\n";
+    }
     if (st.initial >= 0 && st.hist != history::none) {
         auto const h = history_id(m, s);
         out += inner + "<initial>\n" + inner + "    <transition target=\"" + h + "\"/>\n" + inner + "</initial>\n";
@@ -789,6 +891,8 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     for (auto const& a : st.exit) out += inner + "<onexit>" + scxml_script(a) + "</onexit>\n";
     for (auto const& t : m.transitions)
         if (t.source == s) scxml_transition(m, t, level + 1, out);
+    if (s == 0 && halts(m))
+        out += inner + "<transition event=\"done.state." + m[0].id + "\" target=\"" + m[0].id + "_halted\"/>\n";
     for (int const c : st.children) scxml_state(m, c, level + 1, out);
     out += pad + "</" + element + ">\n";
 }
@@ -800,6 +904,7 @@ inline std::string to_scxml(diagram const& m) {
     out += "<scxml xmlns=\"http://www.w3.org/2005/07/scxml\" version=\"1.0\" name=\"" + m[0].id + "\" initial=\"" +
            m[0].id + "\">\n";
     scxml_state(m, 0, 1, out);
+    if (halts(m)) out += "    <final id=\"" + m[0].id + "_halted\"/>\n";
     return out + "</scxml>\n";
 }
 

@@ -614,8 +614,8 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired, Ge
     }
     coverage_report report;
     constexpr auto const& names = bsc::detail::state_names_of<model>;
-    for (std::size_t k = 1; k < seen.size(); ++k)
-        if (!seen[k]) report.dead_states.emplace_back(names[k]);
+    for (std::size_t k = 1; k < seen.size(); ++k)  // (a history state is never active: not dead)
+        if (!seen[k] && model::tree.kinds[k] != bsc::detail::kind::history) report.dead_states.emplace_back(names[k]);
     auto const rows = row_names<chart>();
     for (std::size_t r = 0; r < rows.size(); ++r)
         if (!rows[r].empty() && (r >= fired.size() || !fired[r])) report.dead_transitions.push_back(rows[r]);

@@ -121,6 +121,23 @@ def edit(kind, tree, rows, extra, body):
         rows.append("bsc::state<S4_4> + bsc::after(std::chrono::seconds(1)) = bsc::state<S4_0>")
         rows.append("bsc::state<S4_4> + bsc::after(std::chrono::seconds(2)) = bsc::state<S4_1>")
         return [], "bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout", None
+    if kind == "local_target_outside_source":
+        rows.append("bsc::state<C3> + bsc::event<e8> = bsc::local(bsc::state<S4_0>)")
+        return ["C3", "S4_0"], "local transition to a state outside its source", "C3 + e8 = local(S4_0)"
+    if kind == "event_in_two_families":
+        extra.append("struct fa {}; struct fb {}; struct fab : fa, fb {};")
+        rows.append("bsc::state<S2_3> + bsc::event<fab> = bsc::state<S2_4>")
+        rows.append("bsc::state<S2_3> + bsc::event<fa> = bsc::state<S2_5>")
+        rows.append("bsc::state<S2_3> + bsc::event<fb> = bsc::state<S2_6>")
+        return ["fab"], "event in two families"
+    if kind == "initial_action_without_initial_transition":
+        rows.append("bsc::state<S8_8> + bsc::on_initial / [](ctx&) {}")
+        return ["S8_8"], "initial action of a state without an initial transition", "S8_8 + on_initial / action"
+    if kind == "invalid_history_state":
+        extra.append("struct H;")
+        tree[6].append("bsc::shallow_history_state<H, S7_0>")
+        rows.append("bsc::state<S5_5> + bsc::event<e9> = bsc::state<H>")
+        return ["H"], "invalid history state"
     raise SystemExit(f"unknown defect {kind}")
 
 
@@ -128,7 +145,8 @@ DEFECTS = ["unreachable_state", "dead_end_state", "conflicting_transitions", "sh
            "transition_between_orthogonal_regions", "state_not_in_chart", "duplicate_state",
            "missing_initial_state", "multiple_initial_states", "initial_not_a_child", "eventless_livelock",
            "not_a_row", "guard_signature_not_supported", "action_signature_not_supported", "dead_transition",
-           "empty_parallel_state", "dead_timeout"]
+           "empty_parallel_state", "dead_timeout", "local_target_outside_source", "event_in_two_families",
+           "initial_action_without_initial_transition", "invalid_history_state"]
 
 # Found by constant evaluation of the chart (timeouts are values), not by a bsc::error type. Its
 # error is the failed evaluation, whose notes show the call stack from make_chart down: Clang
@@ -151,7 +169,10 @@ def source(kinds):
         row = re.sub(r"bsc::(state|event)<(\w+)>", r"\2", row)
         row = re.sub(r"\[\(.*\)\]", "[guard]", row)
         row = re.sub(r"\[bad_guard\{\}\]", "[guard]", row)
-        return re.sub(r"/ bad_action\{\}", "/ action", row.replace("bsc::on_exit", "on_exit"))
+        row = re.sub(r"bsc::local\((\w+)\)", r"local(\1)", row)
+        row = re.sub(r"/ \[\]\(ctx&\) \{\}", "/ action", row)
+        row = row.replace("bsc::on_exit", "on_exit").replace("bsc::on_initial", "on_initial")
+        return re.sub(r"/ bad_action\{\}", "/ action", row)
     written = [as_written(r) for r in rows]
     found = [(c, m, (row, written.index(row) + 1) if row else None) for c, m, row in found]
     names = [f"struct C{i};" for i in range(COMPOSITES)]

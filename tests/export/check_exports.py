@@ -2,7 +2,9 @@
 """Checks the files written by `export_diagrams --all DIR` (ctests exports.*).
 
   check_exports.py scxml DIR   each .scxml is well-formed XML, an SCXML 1.0 document whose ids
-                               are unique and whose targets and initial states exist
+                               are unique and whose targets and initial states exist, whose
+                               internal transitions with a target stay inside their source, and
+                               whose done.state.X events name states
   check_exports.py dot DIR     each .dot renders with Graphviz (dot -Tsvg) without a warning;
                                exits 77 (the ctest counts it as skipped) when dot is not installed
 """
@@ -43,6 +45,19 @@ def check_scxml(path: Path) -> list[str]:
         if tag in ("state", "parallel", "final") and element.get("initial"):
             if parent.get(ids.get(element.get("initial"))) is not element:
                 errors.append(f"<{tag} id={element.get('id')!r}> has an initial state that is not its child")
+    for element in root.iter(SCXML + "transition"):
+        source = parent.get(element)
+        # type="internal" with a target: the target lies below the source (else SCXML takes it
+        # as an external transition, and the export meant something else).
+        if element.get("type") == "internal" and element.get("target"):
+            target = ids.get(element.get("target"))
+            below = target is not None and any(node is target for node in source.iter() if node is not source)
+            if not below:
+                errors.append(f"internal transition of {source.get('id')!r} targets {element.get('target')!r}, not a descendant")
+        # done.state.X names a state.
+        for descriptor in (element.get("event") or "").split():
+            if descriptor.startswith("done.state.") and descriptor.removeprefix("done.state.") not in ids:
+                errors.append(f"event {descriptor!r} names no state")
     if root.get("initial") not in ids:
         errors.append("<scxml> has no initial state")
     return errors

@@ -39,7 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
         return 0;
     std::uint8_t const* steps = data + 1;
     std::size_t const n = size - 1;
-    switch (data[0] % 18) {
+    switch (data[0] % 19) {
         case 0: drive<fx::hierarchy>("hierarchy", steps, n); break;
         case 1: drive<fx::parallel>("parallel", steps, n); break;
         case 2: drive<fx::history>("history", steps, n); break;
@@ -57,6 +57,7 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
         case 14: drive<gen::generated<8>>("generated 8", steps, n); break;
         case 15: drive<gen::generated_scan<5>>("generated 5, scan policy", steps, n); break;
         case 16: drive<gen::generated_scan<9>>("generated 9, scan policy", steps, n); break;
+        case 17: drive<fx::beyond_core>("beyond the core", steps, n); break;
         default: drive<gen::generated_scan<11>>("generated 11, scan policy", steps, n); break;
     }
     return 0;

@@ -122,17 +122,24 @@ public:
     using table_type = bsc::table::machine<chart_type, policy, recorder>;
     using events = typename compiled_type::event_types;
     using tags = typename inside::model<chart_type>::tags;
+    // What the twin dispatches: the chart's events, and the fixture's extra_events (events the
+    // chart does not name, which rows on their families take).
+    template <class F>
+    static auto extra_of(int) -> typename F::extra_events;
+    template <class F>
+    static auto extra_of(long) -> inside::type_list<>;
+    using dispatched = decltype(events{} + decltype(extra_of<Fixture>(0)){});
 
     static_assert(std::is_same_v<typename compiled_type::configuration_type, typename table_type::configuration_type>);
     // The compiled machine drops the queue of a chart none of whose actions can raise.
     static_assert(compiled_type::queue_capacity == table_type::queue_capacity || compiled_type::queue_capacity == 0);
     static_assert(std::is_same_v<events, typename table_type::event_types>);
 
-    /// Number of choices step() maps a random number onto: the chart's events, an unhandled
+    /// Number of choices step() maps a random number onto: the dispatched events, an unhandled
     /// event, a write to the context by the environment, and as many (at least two) execution
     /// cycles as events, so that about half the steps are cycles.
-    static constexpr std::uint32_t cycle_choices = events::size > 2 ? static_cast<std::uint32_t>(events::size) : 2;
-    static constexpr std::uint32_t choices = static_cast<std::uint32_t>(events::size) + 2 + cycle_choices;
+    static constexpr std::uint32_t cycle_choices = dispatched::size > 2 ? static_cast<std::uint32_t>(dispatched::size) : 2;
+    static constexpr std::uint32_t choices = static_cast<std::uint32_t>(dispatched::size) + 2 + cycle_choices;
 
     twin() = default;
     twin(twin const&) = delete;
@@ -158,14 +165,14 @@ public:
             ++tally_.restarts;
             return start();
         }
-        if (choice < events::size)
+        if (choice < dispatched::size)
             return dispatch_at(choice, static_cast<int>(arg % 8));
-        if (choice == events::size) {
+        if (choice == dispatched::size) {
             auto const a = compiled_->dispatch(stray{}, bsc::allow_unhandled);
             auto const b = table_->dispatch(stray{}, bsc::allow_unhandled);
             return compare("stray", a, b);
         }
-        if (choice == events::size + 1) {
+        if (choice == dispatched::size + 1) {
             Fixture::perturb(compiled_->context(), arg);
             Fixture::perturb(table_->context(), arg);
             return compare("environment write", compiled_->last_outcome(), table_->last_outcome());
@@ -207,10 +214,10 @@ private:
 
     template <std::size_t I = 0>
     std::string dispatch_at(std::uint32_t choice, int n) {
-        if constexpr (I < events::size) {
+        if constexpr (I < dispatched::size) {
             if (choice != I)
                 return dispatch_at<I + 1>(choice, n);
-            using E = inside::at<I, events>;
+            using E = inside::at<I, dispatched>;
             E const e = make_event<E>(n);
             auto const a = compiled_->dispatch(e);
             auto const b = table_->dispatch(e);

@@ -81,6 +81,7 @@ TEST_CASE("differential: hand-written charts, 10,000 random events and cycles ea
     check(run_differential<bsc_diff::mcs_fixture>(7, "mcs"));
     check(run_differential<fx::cycles>(8, "cycles"));
     check(run_differential<fx::scan_cycles>(9, "cycles, scan policy"));
+    check(run_differential<fx::beyond_core>(11, "beyond the core"));
 }
 
 TEST_CASE("differential: the manufacturing cell controller, 20,000 random cycles and sensor changes") {

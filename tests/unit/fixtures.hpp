@@ -13,6 +13,8 @@
 
 #include <bsc/bsc.hpp>
 
+#include "inside.hpp"
+
 namespace fx {
 
 struct go {};
@@ -354,6 +356,64 @@ struct halting {
             state<A> + event<tick> = state<B2>, state<B> + event<e1>[a_even] = state<F>,
             state<B1> + event<num> / add_n, state<B> + event<back> = state<A>,
             state<F> + on_entry / note<10>, state<B> + on_exit / note<11>);
+    }();
+    static ctx initial() { return {}; }
+    static void perturb(ctx& c, std::uint32_t r) { perturb_ab(c, r); }
+};
+
+// ---- beyond the core: a local transition, event families, any_event, done events, an initial
+// action, a history state -----------------------------------------------------------------------
+namespace beyond {
+// A family: a row on fam takes fam_a and fam_b; fam_b is named by no row (the twin dispatches
+// it as one of the fixture's extra events, and an action raises it).
+struct fam {
+    int n = 0;
+};
+struct fam_a : fam {};
+struct fam_b : fam_a {};
+struct Root;
+struct W;
+struct W1;
+struct W2;
+struct WF;
+struct P;
+struct R1;
+struct R2;
+struct X1;
+struct XF;
+struct Y1;
+struct YF;
+struct C;
+struct F;
+struct WH;
+}  // namespace beyond
+
+struct beyond_core {
+    using policy = bsc::default_policy;
+    using extra_events = inside::type_list<beyond::fam_b>;
+    static constexpr auto chart = [] {
+        using namespace beyond;
+        using bsc::state, bsc::event, bsc::on_entry, bsc::on_exit;
+        return bsc::make_chart<ctx>(
+            bsc::composite<Root>(
+                bsc::initial<W>,
+                bsc::composite<W>(bsc::initial<W1>, bsc::deep_history_state<WH, W2>, state<W1>, state<W2>, bsc::final_state<WF>),
+                bsc::parallel<P>(bsc::composite<R1>(bsc::initial<X1>, state<X1>, bsc::final_state<XF>),
+                                 bsc::composite<R2>(bsc::initial<Y1>, state<Y1>, bsc::final_state<YF>)),
+                state<C>, bsc::final_state<F>),
+            state<W1> + event<go> = state<W2>, state<W2> + event<go>[a_big] / note<1> = state<WF>,
+            state<W> + event<back> / note<2> = bsc::local(state<W1>),
+            state<W> + event<bsc::done<W>> / note<3> = state<P>,
+            state<W2> + event<e1> / bsc::raise(fam_b{}),
+            state<W2> + event<fam_a> / note<12> = state<C>,
+            state<X1> + event<tick> = state<XF>, state<Y1> + event<ping> = state<YF>,
+            state<R1> + event<bsc::done<R1>> / note<5>, state<P> + event<bsc::done<P>> / note<4> = state<C>,
+            state<P> + event<back> = state<C>,
+            state<C> + event<fam_a> / inc_b = state<W>, state<C> + event<fam> / note<6> = state<F>,
+            state<C> + event<bsc::any_event>[a_even] / note<7>, state<C> + event<pong> = state<WH>,
+            state<W> + bsc::on_initial / note<15>, state<WH> + bsc::on_initial / note<16>,
+            state<F> + on_entry / note<8>, state<F> + on_exit / note<13>, state<W> + on_exit / note<9>,
+            state<W> + on_entry / note<10>, state<P> + on_exit / note<11>, state<Root> + on_exit / note<14>);
     }();
     static ctx initial() { return {}; }
     static void perturb(ctx& c, std::uint32_t r) { perturb_ab(c, r); }

@@ -47,7 +47,7 @@ template <class Chart>
 constexpr bool structure_valid() {
     using model = chart_model<Chart>;
     return find_duplicate(typename model::tags{}) < 0 && find_unknown_state(model::rows) < 0 &&
-           find_initial_problem(model::tree) < 0;
+           find_initial_problem(model::tree) < 0 && find_invalid_history(model::tree, model::rows) < 0;
 }
 
 template <class Chart>
@@ -81,7 +81,11 @@ constexpr auto check_structure() {
                 else
                     return type_list<error::multiple_initial_states<S>>{};
             } else {
-                return type_list<>{};
+                constexpr int history_state = find_invalid_history(model::tree, model::rows);
+                if constexpr (history_state >= 0)
+                    return type_list<error::invalid_history_state<typename model::template tag_at<history_state>>>{};
+                else
+                    return type_list<>{};
             }
         }
     }
@@ -98,6 +102,44 @@ constexpr auto check_orthogonality() {
     } else {
         return type_list<>{};
     }
+}
+
+template <class Chart>
+constexpr auto check_local_targets() {
+    using model = chart_model<Chart>;
+    constexpr int row = find_misplaced_local(model::tree, model::rows);
+    if constexpr (row >= 0) {
+        using R = typename model::template row_at<row>;
+        return type_list<row_error<Chart, row, error::local_target_outside_source<typename R::source, typename R::target>>>{};
+    } else {
+        return type_list<>{};
+    }
+}
+
+template <class Chart>
+constexpr auto check_initial_actions() {
+    using model = chart_model<Chart>;
+    constexpr int row = find_misplaced_initial_action(model::tree, model::rows);
+    if constexpr (row >= 0)
+        return type_list<row_error<Chart, row, error::initial_action_without_initial_transition<
+                                                   typename model::template row_at<row>::source>>>{};
+    else
+        return type_list<>{};
+}
+
+template <class Chart>
+constexpr auto check_event_families() {
+    using events = typename chart_model<Chart>::events;
+    constexpr auto const& nearest = event_families<events>::nearest;
+    constexpr int tangled = [] {
+        for (std::size_t t = 0; t < nearest.size(); ++t)
+            if (nearest[t] == -2) return static_cast<int>(t);
+        return -1;
+    }();
+    if constexpr (tangled >= 0)
+        return type_list<error::event_in_two_families<at<static_cast<std::size_t>(tangled), events>>>{};
+    else
+        return type_list<>{};
 }
 
 template <class Chart>
@@ -183,7 +225,9 @@ constexpr auto check_chart() {
         return check_structure<Chart>();
     else
         // Each check runs, so one build reports every kind of problem it finds.
-        return check_orthogonality<Chart>() + check_determinism<Chart>() + check_dead_transitions<Chart>() +
+        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_initial_actions<Chart>() +
+               check_event_families<Chart>() +
+               check_determinism<Chart>() + check_dead_transitions<Chart>() +
                check_reachability<Chart>() + check_livelock<Chart>() +
                check_signatures<Chart>();
 }

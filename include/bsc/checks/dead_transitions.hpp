@@ -4,7 +4,8 @@
 //   - a row leaving a final child of a composite root: the machine halts there, and dispatch
 //     only ever answers outcome::halted;
 //   - a row on an event leaving a composite or parallel state S when every basic or final state
-//     below S takes that event first with an unguarded row of its own or of an ancestor below S:
+//     below S takes that event first with an unguarded row of its own or of an ancestor below S
+//     (on the event or on a family of it):
 //     the event is consumed below S in every configuration, so it never reaches S's row.
 // Reachability and dead ends (reachability.hpp) then follow only the rows that can fire.
 // A timeout row behind a shorter unguarded timeout of the same state is found where the
@@ -29,12 +30,12 @@ constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<
     row_liveness<R> found;
     constexpr int root = 1;
     bool const root_halts = N > 1 && t.kinds[root] == kind::composite;
-    // Whether state b has an unguarded transition row on `trigger`.
+    // Whether state b has an unguarded transition row on `trigger` or on a family of it.
     auto const unguarded = rows_by_source<N>(r, [&](std::size_t j) { return !r.guarded[j]; });
     auto takes_unguarded = [&](int b, int trigger) {
         auto const bi = static_cast<std::size_t>(b);
         for (int k = unguarded.begin[bi]; k < unguarded.begin[bi + 1]; ++k)
-            if (r.trigger[static_cast<std::size_t>(unguarded.order[static_cast<std::size_t>(k)])] == trigger) return true;
+            if (r.takes(r.trigger[static_cast<std::size_t>(unguarded.order[static_cast<std::size_t>(k)])], trigger)) return true;
         return false;
     };
     for (std::size_t i = 0; i < R; ++i) {

@@ -1,6 +1,7 @@
 #pragma once
 // Determinism: two unguarded transitions on the same source and trigger conflict; a
-// transition after an unguarded one on the same source and trigger is shadowed.
+// transition after an unguarded one on the same source and trigger, or on a family of its
+// trigger (model/event_families.hpp), is shadowed.
 
 #include <bsc/checks/rows_by_source.hpp>
 #include <bsc/model/chart_model.hpp>
@@ -35,8 +36,10 @@ constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table
             if (r.guarded[i]) continue;
             for (int b = a + 1; b < begin[s + 1]; ++b) {
                 auto const j = static_cast<std::size_t>(order[static_cast<std::size_t>(b)]);
-                if (r.trigger[j] != r.trigger[i]) continue;
-                row_pair& slot = r.guarded[j] ? found.shadowed : found.conflict;
+                // Row i takes every event row j takes: the same trigger, or a family of j's.
+                if (!r.takes(r.trigger[i], r.trigger[j])) continue;
+                bool const same = r.trigger[j] == r.trigger[i];
+                row_pair& slot = r.guarded[j] || !same ? found.shadowed : found.conflict;
                 if (earlier(slot, static_cast<int>(i), static_cast<int>(j)))
                     slot = {static_cast<int>(i), static_cast<int>(j)};
             }

@@ -7,17 +7,26 @@
 
 namespace bsc::detail {
 
-// Marks s and the states its default entry activates (initial children, all regions).
+template <std::size_t N>
+constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int domain, int target);
+
+// Marks s and the states its default entry activates (initial states, all regions, a
+// history state's default).
 template <std::size_t N>
 constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, int s) {
     m[static_cast<std::size_t>(s)] = true;
     auto const i = static_cast<std::size_t>(s);
     if (t.is_compound(s)) {
-        if (t.initial[i] >= 0)
+        if (t.initial_target[i] >= 0 && t.initial_target[i] != t.initial[i])
+            mark_entry(t, m, s, t.initial_target[i]);  // a deep initial
+        else if (t.initial[i] >= 0)
             mark_default_entry(t, m, t.initial[i]);
     } else if (t.kinds[i] == kind::parallel) {
         for (int c = t.first_child[i]; c >= 0; c = t.next_sibling[static_cast<std::size_t>(c)])
             mark_default_entry(t, m, c);
+    } else if (t.kinds[i] == kind::history && t.initial_target[i] >= 0) {
+        // A history state enters its default (what it restores has been active before).
+        mark_entry(t, m, t.parent[i], t.initial_target[i]);
     }
 }
 

@@ -129,7 +129,11 @@ struct row_words<transition_row<S, Trigger, G, A, T>> {
             out(" / ");
             action_words<A>::write(out);
         }
-        if constexpr (!std::is_same_v<T, no_target>) {
+        if constexpr (target_parts<T>::local) {
+            out(" = local(");
+            out(name_of<typename target_parts<T>::state>);
+            out(")");
+        } else if constexpr (!std::is_same_v<T, no_target>) {
             out(" = ");
             out(name_of<T>);
         }
@@ -141,6 +145,15 @@ struct row_words<entry_row<S, A>> {
     static constexpr void write(Out& out) {
         out(name_of<S>);
         out(" + on_entry / ");
+        action_words<A>::write(out);
+    }
+};
+template <class S, class A>
+struct row_words<initial_row<S, A>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out(name_of<S>);
+        out(" + on_initial / ");
         action_words<A>::write(out);
     }
 };

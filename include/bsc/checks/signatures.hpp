@@ -97,7 +97,8 @@ constexpr auto signature_errors(Row const*) {
         else
             return type_list<>{};
     } else {
-        using keyword = std::conditional_t<is_entry_row<Row>, entry_keyword, exit_keyword>;
+        using keyword = std::conditional_t<is_entry_row<Row>, entry_keyword,
+                                           std::conditional_t<is_initial_row<Row>, initial_keyword, exit_keyword>>;
         using actions = typename bad_entry_action<std::remove_cv_t<decltype(Row::action)>, Ctx, Raise>::type;
         if constexpr (actions::size > 0)
             return type_list<error::in_row<typename Row::source, keyword, no_target,

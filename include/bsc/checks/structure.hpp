@@ -1,6 +1,7 @@
 #pragma once
 // Structural checks: every state declared once, every row's states in the tree, exactly one
-// initial child per composite, no transition between orthogonal regions.
+// initial child per composite, no transition between orthogonal regions, every local
+// transition's target inside its source.
 
 #include <bsc/model/chart_model.hpp>
 
@@ -42,6 +43,46 @@ constexpr int find_orthogonal_transition(topology<N> const& t, row_table<R> cons
         if (t.kinds[static_cast<std::size_t>(l)] == kind::parallel && l != s && l != d)
             return static_cast<int>(i);
     }
+    return -1;
+}
+
+// The first history pseudo-state that is not a child of a composite, whose default does not
+// lie inside its composite (or is a history state), or that is the source of a row other than
+// on_initial; -1 if none.
+template <std::size_t N, std::size_t R>
+constexpr int find_invalid_history(topology<N> const& t, row_table<R> const& r) {
+    for (std::size_t s = 1; s < N; ++s) {
+        if (t.kinds[s] != kind::history) continue;
+        auto const p = static_cast<std::size_t>(t.parent[s]);
+        int const d = t.initial_target[s];
+        if (t.kinds[p] != kind::composite || d < 0 || t.kinds[static_cast<std::size_t>(d)] == kind::history)
+            return static_cast<int>(s);
+    }
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.kinds[i] != row_kind::initial && r.source[i] >= 0 && t.kinds[static_cast<std::size_t>(r.source[i])] == kind::history)
+            return r.source[i];
+    return -1;
+}
+
+// The first on_initial row of a state that takes no initial transition (not a composite, or
+// one with a history marker, which takes its history instead), or -1.
+template <std::size_t N, std::size_t R>
+constexpr int find_misplaced_initial_action(topology<N> const& t, row_table<R> const& r) {
+    for (std::size_t i = 0; i < R; ++i) {
+        if (r.kinds[i] != row_kind::initial) continue;
+        auto const s = static_cast<std::size_t>(r.source[i]);
+        if (t.kinds[s] == kind::history) continue;  // the action of a history state's default transition
+        if (t.kinds[s] != kind::composite || t.hist[s] != history::none) return static_cast<int>(i);
+    }
+    return -1;
+}
+
+// The first local row whose target is not a proper descendant of its source, or -1.
+template <std::size_t N, std::size_t R>
+constexpr int find_misplaced_local(topology<N> const& t, row_table<R> const& r) {
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.local[i] && !t.is_proper_ancestor(r.source[i], r.target[i]))
+            return static_cast<int>(i);
     return -1;
 }
 

@@ -95,8 +95,19 @@ private:
     constexpr auto const& row() const {
         return base::template row<Row>();
     }
+    // The event e as row Row sees it: its own event type, a family of it, or bsc::any_event.
+    // (Where E is the row's own event, e is passed as it is: most rows of most charts, and no
+    // conversion to instantiate.)
+    template <int Row, class E>
+    static constexpr bool sees_itself = __is_same(E, detail::row_event_t<typename model::template row_at<Row>>);
+    template <int Row, class E>
+    static constexpr decltype(auto) seen_by(E const& e) {
+        return detail::event_as<detail::row_event_t<typename model::template row_at<Row>>>(e);
+    }
 
     constexpr void enter_initial() { enter_default<root>(); }
+    // When the machine halts: every active state's exit actions, innermost first.
+    constexpr void exit_all() { exit_below<0>(); }
 
     // ---- entry and exit ----------------------------------------------------------------
     // The entry (or exit) actions of state S, in declaration order.
@@ -111,6 +122,7 @@ private:
     template <int S>
     constexpr void run_entry() {
         run_state_actions<detail::row_kind::entry, S>();
+        if constexpr (tree.kinds[S] == detail::kind::final_state) this->entered_final(S);
         // Its timeouts count from its entry, at the time of the last cycle.
         constexpr int first_slot = plan::timeout_slot[S];
         for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = clock_;
@@ -162,16 +174,45 @@ private:
         if constexpr (k == detail::kind::composite) {
             constexpr auto h = tree.hist[S];
             if constexpr (h == detail::history::none) {
+                // The initial transition: its actions, then its target, a child or deeper.
                 constexpr int init = tree.initial[S];
-                set_active_child<S>(tree.ordinal[init]);
-                enter_default<init>();
+                run_state_actions<detail::row_kind::initial, S>();
+                if constexpr (tree.kinds[init] == detail::kind::history) {
+                    enter_history<init>();
+                } else if constexpr (tree.initial_target[S] == init) {
+                    set_active_child<S>(tree.ordinal[init]);
+                    enter_default<init>();
+                } else {
+                    enter_toward<S, tree.initial_target[S]>();
+                }
             } else if constexpr (h == detail::history::shallow) {
                 with_active_child<S>([&](auto c) { enter_default<decltype(c)::value>(); });
             } else {
                 with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
             }
         } else if constexpr (k == detail::kind::parallel) {
-            for_each_child<S>([&](auto c) { enter_default<decltype(c)::value>(); });
+            this->enter_parallel(S, [&] { for_each_child<S>([&](auto c) { enter_default<decltype(c)::value>(); }); });
+        }
+    }
+
+    // Enters history state H of composite P: P's remembered child (shallow) or remembered
+    // sub-configuration (deep), or, if P has never been active, H's default transition.
+    template <int H>
+    constexpr void enter_history() {
+        constexpr int p = tree.parent[H];
+        if (plan::template never_active_byte<p>(static_cast<std::uint8_t>(active_child<p>()))) {
+            run_state_actions<detail::row_kind::initial, H>();
+            constexpr int c = tree.initial[H];
+            if constexpr (tree.initial_target[H] == c) {
+                set_active_child<p>(tree.ordinal[c]);
+                enter_default<c>();
+            } else {
+                enter_toward<p, tree.initial_target[H]>();
+            }
+        } else if constexpr (tree.hist[H] == detail::history::shallow) {
+            with_active_child<p>([&](auto c) { enter_default<decltype(c)::value>(); });
+        } else {
+            with_active_child<p>([&](auto c) { enter_restore<decltype(c)::value>(); });
         }
     }
 
@@ -183,7 +224,7 @@ private:
         if constexpr (k == detail::kind::composite)
             with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
         else if constexpr (k == detail::kind::parallel)
-            for_each_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
+            this->enter_parallel(S, [&] { for_each_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); }); });
     }
 
     // Enters, below the active state D, the path to Target (and parallel siblings on the way).
@@ -191,12 +232,17 @@ private:
     constexpr void enter_toward() {
         constexpr int c = tree.child_toward(D, Target);
         if constexpr (tree.kinds[D] == detail::kind::parallel) {
-            for_each_child<D>([&](auto k) {
-                if constexpr (decltype(k)::value == c)
-                    enter_path_node<c, Target>();
-                else
-                    enter_default<decltype(k)::value>();
+            // (A parallel D is never a transition's domain: it has just been entered.)
+            this->enter_parallel(D, [&] {
+                for_each_child<D>([&](auto k) {
+                    if constexpr (decltype(k)::value == c)
+                        enter_path_node<c, Target>();
+                    else
+                        enter_default<decltype(k)::value>();
+                });
             });
+        } else if constexpr (tree.kinds[c] == detail::kind::history) {
+            enter_history<c>();  // D, its composite, has been entered: now its history
         } else {
             set_active_child<D>(tree.ordinal[c]);
             enter_path_node<c, Target>();
@@ -243,7 +289,10 @@ private:
     constexpr bool guard_holds(E const& e) {
         if constexpr (rows.guarded[Row]) {
             if constexpr (!plan::has_parallel) this->mark_running();
-            return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, e)); });
+            if constexpr (sees_itself<Row, E>)
+                return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, e)); });
+            else
+                return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, seen_by<Row>(e))); });
         } else {
             return true;
         }
@@ -251,9 +300,15 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        notify::template transition<Row>(observer_.value, row<Row>(), e);
-        if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-            this->run([&] { row<Row>().action(context_.value, e, queue_); });
+        if constexpr (sees_itself<Row, E>) {
+            notify::template transition<Row>(observer_.value, row<Row>(), e);
+            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
+                this->run([&] { row<Row>().action(context_.value, e, queue_); });
+        } else {
+            notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
+            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
+                this->run([&] { row<Row>().action(context_.value, seen_by<Row>(e), queue_); });
+        }
     }
 
     template <int Row>

@@ -216,7 +216,7 @@ struct plan : chart_layout<Model> {
             for (int r2 = 0; r2 < R; ++r2) {
                 auto const k = rows.kinds[static_cast<std::size_t>(r2)];
                 int const s = rows.source[static_cast<std::size_t>(r2)];
-                if ((k == row_kind::entry || k == row_kind::exit) && s != d && tree.contains(d, s)) return false;
+                if (k != row_kind::transition && s != d && tree.contains(d, s)) return false;
             }
         }
         return true;

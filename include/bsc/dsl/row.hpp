@@ -17,6 +17,8 @@ namespace bsc::detail {
 
 template <class S>
 struct state_ref;
+template <class S>
+struct local_ref;
 
 /// The trigger of a transition taken without an event, when its guard holds.
 struct eventless_trigger {};
@@ -30,6 +32,20 @@ struct timeout_trigger {
 };
 /// The target of an internal transition: no exit, no entry.
 struct no_target {};
+/// The target T of a local transition (bsc::local): in a row's type, so that the row says so.
+template <class T>
+struct local_target {};
+// A row's target state, and whether the row is local.
+template <class T>
+struct target_parts {
+    using state = T;
+    static constexpr bool local = false;
+};
+template <class T>
+struct target_parts<local_target<T>> {
+    using state = T;
+    static constexpr bool local = true;
+};
 
 // What marks a row. A base of its own for each row type: rows whose guard, action and trigger
 // are empty are empty themselves, and the tuple of a chart's rows can then take no space at
@@ -85,7 +101,9 @@ template <class S, class Trigger, class G, class A, class T>
 struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
     using source = S;
     using trigger = Trigger;
-    using target = T;
+    using target = typename target_parts<T>::state;
+    /// A local transition (`= bsc::local(state<T>)`): its source stays active.
+    static constexpr bool local = target_parts<T>::local;
     static constexpr bool guarded = !std::is_same_v<G, no_guard>;
     [[no_unique_address]] Trigger trigger_value;
     [[no_unique_address]] G guard;
@@ -95,6 +113,11 @@ struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
         requires std::is_same_v<T, no_target>
     constexpr auto operator=(state_ref<T2>) const {
         return transition_row<S, Trigger, G, A, T2>{{}, trigger_value, guard, action};
+    }
+    template <class T2>
+        requires std::is_same_v<T, no_target>
+    constexpr auto operator=(local_ref<T2>) const {
+        return transition_row<S, Trigger, G, A, local_target<T2>>{{}, trigger_value, guard, action};
     }
     template <class A2>
         requires(std::is_same_v<A, no_action> && std::is_same_v<T, no_target>)
@@ -124,6 +147,16 @@ struct exit_keyword {
         return exit_spec<state_action<A>>{{std::move(a)}};
     }
 };
+template <class A>
+struct initial_spec {
+    [[no_unique_address]] A action;
+};
+struct initial_keyword {
+    template <class A>
+    constexpr auto operator/(A a) const {
+        return initial_spec<state_action<A>>{{std::move(a)}};
+    }
+};
 
 template <class S, class A>
 struct entry_row : row_base<entry_row<S, A>> {
@@ -132,6 +165,12 @@ struct entry_row : row_base<entry_row<S, A>> {
 };
 template <class S, class A>
 struct exit_row : row_base<exit_row<S, A>> {
+    using source = S;
+    [[no_unique_address]] A action;
+};
+// The action of a composite's initial transition (SCXML's <initial><transition>).
+template <class S, class A>
+struct initial_row : row_base<initial_row<S, A>> {
     using source = S;
     [[no_unique_address]] A action;
 };
@@ -157,6 +196,10 @@ template <class R>
 inline constexpr bool is_exit_row = false;
 template <class S, class A>
 inline constexpr bool is_exit_row<exit_row<S, A>> = true;
+template <class R>
+inline constexpr bool is_initial_row = false;
+template <class S, class A>
+inline constexpr bool is_initial_row<initial_row<S, A>> = true;
 
 }  // namespace bsc::detail
 
@@ -195,8 +238,30 @@ inline constexpr detail::entry_keyword on_entry{};
 /// Exit action row: `state<S> + on_exit / action`; runs each time S is exited.
 inline constexpr detail::exit_keyword on_exit{};
 
+/// The action of composite S's initial transition: `state<S> + on_initial / action` runs when
+/// S is entered through its initial state (not through history, not by a transition to a state
+/// inside S), after S's entry actions and before the initial state's (SCXML's
+/// `<initial><transition>` content).
+/// Requirements: S is a composite without a history marker
+/// (bsc::error::initial_action_without_initial_transition).
+inline constexpr detail::initial_keyword on_initial{};
+
 /// The tag used in diagnostics and observers for a transition without an event.
 using eventless = detail::eventless_trigger;
+
+/// The trigger every event matches: `state<S> + event<bsc::any_event> = state<T>` takes any
+/// event that no deeper state and no earlier row of S takes first (SCXML's event="*",
+/// Boost.SML's event<_>). Its guard and action receive this tag, not the event.
+struct any_event {};
+
+/// The completion event of state S (SCXML's done.state.S): raised when a final child of the
+/// composite S is entered, or, for a parallel S, when every region of S has entered a final
+/// state. A row takes it like any event: `state<Work> + event<bsc::done<Work>> = state<Next>`.
+/// (A final child of the root raises nothing: the machine halts.)
+template <class S>
+struct done {
+    using state = S;
+};
 
 namespace detail {
 // Deliberately not constexpr: in a constexpr chart, reaching one of these is the compile error

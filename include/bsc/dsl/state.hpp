@@ -31,6 +31,10 @@ struct state_ref {
     constexpr auto operator+(exit_spec<A> spec) const {
         return exit_row<S, A>{{}, std::move(spec.action)};
     }
+    template <class A>
+    constexpr auto operator+(initial_spec<A> spec) const {
+        return initial_row<S, A>{{}, std::move(spec.action)};
+    }
     // Eventless transitions: state<S> [guard] / action = state<T>.
     template <class G>
     constexpr auto operator[](G g) const {
@@ -46,6 +50,16 @@ struct state_ref {
     constexpr auto operator=(state_ref<T>) const {
         return transition_row<S, eventless_trigger, no_guard, no_action, T>{};
     }
+    template <class T>
+    constexpr auto operator=(local_ref<T>) const {
+        return transition_row<S, eventless_trigger, no_guard, no_action, local_target<T>>{};
+    }
+};
+
+// What bsc::local returns: the target of a local transition.
+template <class S>
+struct local_ref {
+    using tag = S;
 };
 
 }  // namespace bsc::detail
@@ -55,5 +69,17 @@ namespace bsc {
 /// Names the state S: a basic state in the tree, a source or target in a transition row.
 template <class S>
 inline constexpr detail::state_ref<S> state{};
+
+/// The target of a local transition (UML's kind = local, SCXML's type="internal"):
+/// `state<Work> + event<restart> = local(state<Step1>)` goes from composite Work to its
+/// descendant Step1 without leaving Work: only the active states below Work are exited, Work's
+/// own exit and entry actions do not run, and its timeouts keep counting.
+/// Requirements: the target is a proper descendant of the row's source (else the chart is
+/// rejected: bsc::error::local_target_outside_source). From a parallel source the transition
+/// is an ordinary one, as in SCXML, where only a compound state can keep itself active.
+template <class S>
+constexpr detail::local_ref<S> local(detail::state_ref<S>) {
+    return {};
+}
 
 }  // namespace bsc

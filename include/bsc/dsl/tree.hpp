@@ -12,7 +12,7 @@
 
 namespace bsc::detail {
 
-enum class kind : std::uint8_t { top, basic, final_state, composite, parallel };
+enum class kind : std::uint8_t { top, basic, final_state, composite, parallel, history };
 enum class history : std::uint8_t { none, shallow, deep };
 
 struct node_base {};
@@ -46,6 +46,19 @@ struct parallel_node : node_base {
     static constexpr bool implicit = false;
     using initials = type_list<>;
     using children = Children;
+};
+
+// A history pseudo-state of the enclosing composite: never active; entering it restores the
+// composite's remembered configuration, or enters Default when there is none.
+template <class S, history H, class Default>
+struct history_node : node_base {
+    using tag = S;
+    using default_state = Default;
+    static constexpr kind node_kind = kind::history;
+    static constexpr history hist = H;
+    static constexpr bool implicit = false;
+    using initials = type_list<>;
+    using children = type_list<>;
 };
 
 template <class S>
@@ -111,9 +124,24 @@ constexpr auto initials_from() {
         return type_list<>{};
 }
 
+// The states an argument declares: a node and everything below it, or a basic state. An
+// initial<X> naming one of them declares nothing (X is the initial child, or, lying deeper,
+// the target of a deep initial transition).
+template <class Node>
+constexpr auto subtree_tags();
+template <class... C>
+constexpr auto subtree_tags_of(type_list<C...>) {
+    return (type_list<>{} + ... + subtree_tags<C>());
+}
+template <class Node>
+constexpr auto subtree_tags() {
+    return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
+}
 template <class A>
 constexpr auto declared_tag() {
-    if constexpr (is_node<A> || is_state_ref<A>)
+    if constexpr (is_node<A>)
+        return subtree_tags<A>();
+    else if constexpr (is_state_ref<A>)
         return type_list<typename tag_of<A>::type>{};
     else
         return type_list<>{};
@@ -140,8 +168,11 @@ struct composite_children<type_list<Declared...>, std::index_sequence<I...>, A..
 
 namespace bsc {
 
-/// Names the initial (default) child of a composite state. If no child of that name is
-/// declared among the composite's arguments, `initial<S>` also declares S as a basic child.
+/// Names the initial (default) state of a composite state: a child, or a deeper descendant (a
+/// deep initial, SCXML's `<initial>` whose transition targets a descendant: entering the
+/// composite by default enters the path down to it, the other regions of parallel states on
+/// the way by default). If S is declared nowhere among the composite's arguments,
+/// `initial<S>` also declares S as a basic child.
 template <class S>
 inline constexpr detail::initial_marker<S> initial{};
 
@@ -150,6 +181,20 @@ inline constexpr detail::history_marker<detail::history::shallow> shallow_histor
 
 /// Marks a composite state as remembering its whole last active sub-configuration.
 inline constexpr detail::history_marker<detail::history::deep> deep_history{};
+
+/// A shallow history pseudo-state H of the composite it is declared in (SCXML's
+/// `<history type="shallow">`): a transition to H enters the composite in the child it was last
+/// in (that child by default), or, if the composite was never active, enters Default (a state
+/// inside the composite) after running H's `state<H> + on_initial / action` rows. H is never
+/// active itself and takes no other rows. A composite may have several history states.
+/// Requirements: declared in a composite, Default inside it (bsc::error::invalid_history_state).
+template <class H, class Default>
+inline constexpr detail::history_node<H, detail::history::shallow, Default> shallow_history_state{};
+
+/// A deep history pseudo-state H (SCXML's `<history type="deep">`): as shallow_history_state,
+/// but a transition to H restores the whole sub-configuration the composite was last in.
+template <class H, class Default>
+inline constexpr detail::history_node<H, detail::history::deep, Default> deep_history_state{};
 
 /// A final state: reaching it is an intended end, so it is exempt from the dead-end check.
 /// A final child of the root state halts the machine.

@@ -54,9 +54,16 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
             out += pad + "}\n";
             return;
         }
-        out += pad + dot_quoted(st.id) + " [label=" + dot_quoted(dot_label(m, s));
+        out += pad + dot_quoted(st.id) + " [label=" + dot_quoted(dot_label(m, s) + history_suffix(st.hist));
         if (st.node_kind == kind::final_state) out += ", peripheries=2";
+        if (st.node_kind == kind::history) out += ", shape=circle";
         out += "];\n";
+        if (st.node_kind == kind::history && st.initial >= 0) {  // its default transition
+            out += pad + dot_quoted(st.id) + " -> " + dot_node(m, st.initial) + " [style=dashed";
+            if (!m[st.initial].is_leaf()) out += ", lhead=" + dot_cluster(m, st.initial);
+            if (!st.initial_actions.empty()) out += ", label=" + dot_quoted(initial_label(st));
+            out += "];\n";
+        }
         return;
     }
     out += pad + "subgraph " + dot_cluster(m, s) + " {\n";
@@ -67,7 +74,11 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
         auto const initial = dot_quoted(st.id + ":initial");
         out += pad + "    " + initial + " [shape=point, width=0.12, label=\"\"];\n";
         out += pad + "    " + initial + " -> " + dot_node(m, st.initial);
-        if (!m[st.initial].is_leaf()) out += " [lhead=" + dot_cluster(m, st.initial) + "]";
+        std::string attributes;
+        if (!m[st.initial].is_leaf()) attributes += "lhead=" + dot_cluster(m, st.initial);
+        if (!st.initial_actions.empty())
+            attributes += (attributes.empty() ? "" : ", ") + std::string("label=") + dot_quoted(initial_label(st));
+        if (!attributes.empty()) out += " [" + attributes + "]";
         out += ";\n";
     }
     if (st.hist != history::none)

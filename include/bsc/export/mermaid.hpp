@@ -35,23 +35,27 @@ inline std::string mermaid_text(std::string_view text) {
     return out;
 }
 
+inline std::string with_label(std::string const& label) { return label.empty() ? "" : " : " + mermaid_text(label); }
+
 inline void mermaid_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const activities = activity_lines(m, s);
     if (st.is_leaf()) {
-        if (st.label != st.id || !activities.empty())
-            out += indent(level) + "state \"" + mermaid_text(st.label) + "\" as " + st.id + "\n";
+        if (st.label != st.id || !activities.empty() || st.node_kind == kind::history)
+            out += indent(level) + "state \"" + mermaid_text(st.label + history_suffix(st.hist)) + "\" as " + st.id + "\n";
         else
             out += indent(level) + st.id + "\n";
         for (auto const& line : activities) out += indent(level) + st.id + " : " + mermaid_text(line) + "\n";
         if (st.node_kind == kind::final_state) out += indent(level) + st.id + " --> [*]\n";
+        if (st.node_kind == kind::history && st.initial >= 0)  // its default transition
+            out += indent(level) + st.id + " --> " + m[st.initial].id + with_label(initial_label(st)) + "\n";
         return;
     }
     // A composite state's description would replace its name: its activities go into its title.
     std::string title = mermaid_text(st.label) + history_suffix(st.hist);
     for (auto const& line : activities) title += "<br/>" + mermaid_text(line);
     out += indent(level) + "state \"" + title + "\" as " + st.id + " {\n";
-    if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + "\n";
+    if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + with_label(initial_label(st)) + "\n";
     bool first = true;
     for (int const c : st.children) {
         if (st.node_kind == kind::parallel && !first) out += indent(level + 1) + "--\n";

@@ -176,12 +176,18 @@ struct state_info {
     history hist = history::none;
     int parent = -1;  ///< index in diagram::states; -1 for the root
     std::vector<int> children;
-    int initial = -1;  ///< the initial child of a composite state
+    int initial = -1;  ///< a composite's initial state (a child, or deeper); a history state's default
     std::vector<std::string> entry;  ///< labels of the entry actions, in declaration order
     std::vector<std::string> exit;   ///< labels of the exit actions
+    /// labels of the actions of its initial transition (a composite) or default transition (a
+    /// history state): its on_initial rows
+    std::vector<std::string> initial_actions;
     std::vector<int> internal;       ///< internal transitions (indices in diagram::transitions)
 
-    bool is_leaf() const { return node_kind == kind::basic || node_kind == kind::final_state; }
+    /// Drawn as a node, not a cluster: a basic or final state, or a history state.
+    bool is_leaf() const {
+        return node_kind == kind::basic || node_kind == kind::final_state || node_kind == kind::history;
+    }
 };
 
 struct transition_info {
@@ -193,12 +199,14 @@ struct transition_info {
     std::string delay;  ///< a timeout's delay, "3s"
     std::string guard;  ///< empty if unguarded
     std::string action;  ///< empty if no action
+    bool local = false;  ///< a local transition (bsc::local): its source stays active
 
-    /// "event [guard] / action", with the parts that exist.
+    /// "event [guard] / action", with the parts that exist, and "(local)" for a local one.
     std::string label() const {
         std::string out = event;
         if (!guard.empty()) out += (out.empty() ? "[" : " [") + guard + "]";
         if (!action.empty()) out += (out.empty() ? "/ " : " / ") + action;
+        if (local) out += out.empty() ? "(local)" : " (local)";
         return out;
     }
 };
@@ -276,6 +284,8 @@ void add_row(diagram& m, Row const& row, int index, int source) {
         m.states[static_cast<std::size_t>(source)].entry.push_back(action_label(row.action));
     } else if constexpr (is_exit_row<Row>) {
         m.states[static_cast<std::size_t>(source)].exit.push_back(action_label(row.action));
+    } else if constexpr (is_initial_row<Row>) {
+        m.states[static_cast<std::size_t>(source)].initial_actions.push_back(action_label(row.action));
     } else {
         transition_info t;
         t.row = index;
@@ -319,7 +329,8 @@ diagram model_of(Chart const& chart) {
         info.node_kind = tree.kinds[i];
         info.hist = tree.hist[i];
         info.parent = tree.parent[i] - 1;
-        info.initial = tree.initial[i] >= 0 ? tree.initial[i] - 1 : -1;
+        // A composite's initial state (a child, or deeper), a history state's default.
+        info.initial = tree.initial_target[i] >= 0 ? tree.initial_target[i] - 1 : -1;
         for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
             info.children.push_back(c - 1);
         m.states.push_back(std::move(info));
@@ -333,6 +344,8 @@ diagram model_of(Chart const& chart) {
                        ? model::rows.target[static_cast<std::size_t>(t.row)] - 1
                        : -1;
         if (t.target < 0) m.states[static_cast<std::size_t>(t.source)].internal.push_back(static_cast<int>(k));
+        // Local in effect: the domain is the source (bsc::local from a composite).
+        t.local = t.target >= 0 && model::rows.domain[static_cast<std::size_t>(t.row)] == model::rows.source[static_cast<std::size_t>(t.row)];
     }
     return m;
 }
@@ -366,6 +379,14 @@ inline std::string xml_escaped(std::string_view text) {
 /// " [H]" or " [H*]" after the name of a composite state with shallow or deep history.
 inline std::string history_suffix(history h) {
     return h == history::deep ? " [H*]" : h == history::shallow ? " [H]" : "";
+}
+
+/// The label of a composite's initial transition or a history state's default transition: its
+/// actions, "/ a, b", or empty.
+inline std::string initial_label(state_info const& st) {
+    std::string out;
+    for (auto const& a : st.initial_actions) out += (out.empty() ? "/ " : ", ") + a;
+    return out;
 }
 
 /// Lines that describe a state besides its name: "entry / a", "exit / b", and its internal

@@ -37,7 +37,10 @@ inline void plantuml_state(diagram const& m, int s, int level, std::string& out)
         out += "\n";
     } else {
         out += " {\n";
-        if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + "\n";
+        if (st.initial >= 0) {
+            auto const label = initial_label(st);
+            out += indent(level + 1) + "[*] --> " + m[st.initial].id + (label.empty() ? "" : " : " + plantuml_text(label)) + "\n";
+        }
         bool first = true;
         for (int const c : st.children) {
             if (st.node_kind == kind::parallel && !first) out += indent(level + 1) + "--\n";
@@ -48,6 +51,10 @@ inline void plantuml_state(diagram const& m, int s, int level, std::string& out)
     }
     for (auto const& line : activity_lines(m, s)) out += pad + st.id + " : " + plantuml_text(line) + "\n";
     if (st.node_kind == kind::final_state) out += pad + st.id + " --> [*]\n";
+    if (st.node_kind == kind::history && st.initial >= 0) {  // its default transition
+        auto const label = initial_label(st);
+        out += pad + st.id + " --> " + m[st.initial].id + (label.empty() ? "" : " : " + plantuml_text(label)) + "\n";
+    }
 }
 
 inline std::string to_plantuml(diagram const& m) {

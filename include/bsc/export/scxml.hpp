@@ -10,9 +10,18 @@
 //   - a state-scoped timeout `after(3s)` is a transition on the event "after(3s)", with a
 //     comment: SCXML has no timeouts, a platform would send that event delayed from <onentry>;
 //   - `cond` is the guard's name (bsc::named), or "guard";
-//   - an internal transition (a row without a target) is type="internal" without a target;
+//   - an internal transition (a row without a target) is type="internal" without a target, and
+//     a local one (bsc::local) type="internal" with its target;
+//   - bsc::done<S> is the event done.state.S, bsc::any_event the descriptor "*", and an event
+//     whose type derives from another's takes its rows only if its name extends theirs
+//     (name events "error" and "error.send" to keep the families SCXML's);
 //   - actions, and entry and exit actions (<onentry>, <onexit>), are <script> placeholders that
 //     name the action in a comment.
+// A chart that halts (a final child of its root) leaves its root on done.state.Root for a
+// top-level <final>, since SCXML halts only there.
+// History states (shallow_history_state, deep_history_state) are <history> elements whose
+// <transition> is their default; an initial transition with actions (on_initial) is an <initial>
+// element, and a deep initial state is the `initial` attribute's (a descendant).
 // History: bsc restores a composite with history on every entry that does not name a state
 // inside it, which is what entering its <history> pseudo-state does in SCXML; so such a
 // composite's <initial> targets its <history>, whose default transition targets the initial child.
@@ -47,6 +56,27 @@ inline std::string history_id(diagram const& m, int s) {
     return id;
 }
 
+// An event's name as an SCXML event descriptor: "*" stays, and so do letters, digits, '_', '-'
+// and the dots that separate the descriptor's parts ("done.state.Work"); every other run of
+// characters becomes one '_' ("cell::Start" becomes "cell_Start").
+inline std::string event_descriptor(std::string_view name) {
+    if (name == "*") return "*";
+    std::string out;
+    bool gap = false;
+    for (char const c : name) {
+        bool const kept = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+                          c == '-' || c == '.';
+        if (!kept) {
+            gap = true;
+            continue;
+        }
+        if (gap && !out.empty()) out += '_';
+        out += c;
+        gap = false;
+    }
+    return out.empty() ? "unnamed" : out;
+}
+
 inline void scxml_transition(diagram const& m, transition_info const& t, int level, std::string& out) {
     auto const pad = indent(level);
     if (t.trigger == trigger_kind::timeout)
@@ -56,28 +86,52 @@ inline void scxml_transition(diagram const& m, transition_info const& t, int lev
     if (t.trigger == trigger_kind::timeout)
         out += " event=\"" + xml_escaped(t.event) + "\"";
     else if (t.trigger == trigger_kind::event)
-        out += " event=\"" + identifier(t.event) + "\"";
+        out += " event=\"" + event_descriptor(t.event) + "\"";
     if (!t.guard.empty()) out += " cond=\"" + xml_escaped(t.guard) + "\"";
     if (t.target >= 0)
         out += " target=\"" + m[t.target].id + "\"";
-    else
-        out += " type=\"internal\"";
+    if (t.target < 0 || t.local) out += " type=\"internal\"";
     if (t.action.empty())
         out += "/>\n";
     else
         out += ">\n" + pad + "    " + scxml_script(t.action) + "\n" + pad + "</transition>\n";
 }
 
+// Whether the chart halts: its root is a composite with a final child. In SCXML the root is a
+// <state>, whose final child raises done.state.Root; the document then leaves the root for a
+// <final> of the <scxml> element, which ends it after running the same exit actions.
+inline bool halts(diagram const& m) {
+    if (m[0].node_kind != kind::composite) return false;
+    for (int const c : m[0].children)
+        if (m[c].node_kind == kind::final_state) return true;
+    return false;
+}
+
 inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const pad = indent(level);
+    if (st.node_kind == kind::history) {  // a history state and its default transition
+        out += pad + "<history id=\"" + st.id + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") + "\">\n";
+        out += pad + "    <transition target=\"" + m[st.initial].id + "\"";
+        if (st.initial_actions.empty()) {
+            out += "/>\n";
+        } else {
+            out += ">\n";
+            for (auto const& a : st.initial_actions) out += pad + "        " + scxml_script(a) + "\n";
+            out += pad + "    </transition>\n";
+        }
+        out += pad + "</history>\n";
+        return;
+    }
     bool has_transitions = false;
     for (auto const& t : m.transitions) has_transitions = has_transitions || t.source == s;
     std::string element = "state";
     if (st.node_kind == kind::parallel) element = "parallel";
     if (st.node_kind == kind::final_state && !has_transitions) element = "final";
     out += pad + "<" + element + " id=\"" + st.id + "\"";
-    if (st.initial >= 0 && st.hist == history::none) out += " initial=\"" + m[st.initial].id + "\"";
+    // An initial transition with actions is an <initial> element; without, the attribute.
+    bool const initial_element = st.initial >= 0 && st.hist == history::none && !st.initial_actions.empty();
+    if (st.initial >= 0 && st.hist == history::none && !initial_element) out += " initial=\"" + m[st.initial].id + "\"";
     bool const empty = st.children.empty() && st.entry.empty() && st.exit.empty() && !has_transitions;
     if (empty) {
         out += "/>\n";
@@ -87,6 +141,11 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     auto const inner = indent(level + 1);
     if (st.node_kind == kind::final_state && element == "state")
         out += inner + "<!-- a final state of the chart; <final> may not have transitions -->\n";
+    if (initial_element) {
+        out += inner + "<initial>\n" + inner + "    <transition target=\"" + m[st.initial].id + "\">\n";
+        for (auto const& a : st.initial_actions) out += inner + "        " + scxml_script(a) + "\n";
+        out += inner + "    </transition>\n" + inner + "</initial>\n";
+    }
     if (st.initial >= 0 && st.hist != history::none) {
         auto const h = history_id(m, s);
         out += inner + "<initial>\n" + inner + "    <transition target=\"" + h + "\"/>\n" + inner + "</initial>\n";
@@ -97,6 +156,8 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     for (auto const& a : st.exit) out += inner + "<onexit>" + scxml_script(a) + "</onexit>\n";
     for (auto const& t : m.transitions)
         if (t.source == s) scxml_transition(m, t, level + 1, out);
+    if (s == 0 && halts(m))
+        out += inner + "<transition event=\"done.state." + m[0].id + "\" target=\"" + m[0].id + "_halted\"/>\n";
     for (int const c : st.children) scxml_state(m, c, level + 1, out);
     out += pad + "</" + element + ">\n";
 }
@@ -108,6 +169,7 @@ inline std::string to_scxml(diagram const& m) {
     out += "<scxml xmlns=\"http://www.w3.org/2005/07/scxml\" version=\"1.0\" name=\"" + m[0].id + "\" initial=\"" +
            m[0].id + "\">\n";
     scxml_state(m, 0, 1, out);
+    if (halts(m)) out += "    <final id=\"" + m[0].id + "_halted\"/>\n";
     return out + "</scxml>\n";
 }
 

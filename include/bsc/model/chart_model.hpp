@@ -12,6 +12,7 @@
 #include <bsc/detail/type_name.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/dsl/tree.hpp>
+#include <bsc/model/event_families.hpp>
 
 namespace bsc::detail {
 
@@ -46,7 +47,7 @@ struct tags_of<type_list<Nodes...>> {
     using type = type_list<typename Nodes::tag...>;
 };
 
-enum class row_kind : std::uint8_t { transition, entry, exit };
+enum class row_kind : std::uint8_t { transition, entry, exit, initial };
 
 inline constexpr int eventless_id = -1;
 // Every timeout row has a trigger of its own, so two timeouts on one state never "conflict".
@@ -66,6 +67,7 @@ struct topology {
     std::array<int, N> child_count{};
     std::array<int, N> ordinal{};        // position among siblings
     std::array<int, N> initial{};        // state index of the initial child, or -1
+    std::array<int, N> initial_target{};  // the initial state: the initial child, or a deeper descendant
     std::array<int, N> initial_count{};  // number of initial markers
     std::array<int, N> depth{};
     std::array<int, N> end{};   // one past the last descendant: d is below s iff s < d < end[s]
@@ -111,6 +113,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     t.first_child[i] = -1;
     t.next_sibling[i] = -1;
     t.initial[i] = -1;
+    t.initial_target[i] = -1;
     t.initial_count[i] = static_cast<int>(Node::initials::size);
     t.slot[i] = -1;
     if (Node::node_kind == kind::composite)
@@ -131,16 +134,42 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
             }(),
             ...);
         if constexpr (Node::initials::size == 1) {
-            constexpr int pos = index_in<at<0, typename Node::initials>, typename C::tag...>();
-            if (pos >= 0) {
+            using initial_tag = at<0, typename Node::initials>;
+            constexpr int pos = index_in<initial_tag, typename C::tag...>();
+            if constexpr (pos >= 0) {
                 int c = t.first_child[i];
                 for (int k = 0; k < pos; ++k) c = t.next_sibling[static_cast<std::size_t>(c)];
                 t.initial[i] = c;
+                t.initial_target[i] = c;
+            } else {
+                // A deep initial: a descendant further down, numbered in document order below Node.
+                constexpr int offset = index_of<initial_tag, typename tags_of<decltype(flatten<Node>())>::type>;
+                if (offset > 0) {
+                    t.initial_target[i] = index + offset;
+                    t.initial[i] = t.child_toward(index, index + offset);
+                }
             }
         }
     }(typename Node::children{});
     t.child_count[i] = count;
     t.end[i] = next;
+    // The defaults of its history states, which lie anywhere below Node (-1 if not found).
+    if constexpr (Node::node_kind == kind::composite)
+        [&]<class... C>(type_list<C...>) {
+            (
+                [&] {
+                    if constexpr (C::node_kind == kind::history) {
+                        using tags = typename tags_of<decltype(flatten<Node>())>::type;
+                        constexpr int h = index_of<typename C::tag, tags>;
+                        constexpr int offset = index_of<typename C::default_state, tags>;
+                        if (offset > 0 && index + offset != index + h) {
+                            t.initial_target[static_cast<std::size_t>(index + h)] = index + offset;
+                            t.initial[static_cast<std::size_t>(index + h)] = t.child_toward(index, index + offset);
+                        }
+                    }
+                }(),
+                ...);
+        }(typename Node::children{});
     return next;
 }
 
@@ -152,6 +181,20 @@ struct row_table {
     std::array<int, R> trigger{};  // eventless_id, or the event's position in the chart's event list
     std::array<bool, R> guarded{};
     std::array<int, R> domain{};  // the transition domain (SCXML), no_state if internal
+    std::array<bool, R> local{};  // declared local (bsc::local): its domain is its source
+    // By event position (there are no more events than rows): the event's nearest family among
+    // the chart's events (-1: none, -2: not a chain). All -1 in a chart without families.
+    std::array<int, R> event_family{};
+
+    // Whether a row on trigger `row_trigger` takes trigger `taken`: the same trigger, or an
+    // event position whose chain of families holds row_trigger.
+    constexpr bool takes(int row_trigger, int taken) const {
+        if (row_trigger == taken) return true;
+        if (row_trigger < 0) return false;
+        for (int t = taken; t >= 0; t = event_family[static_cast<std::size_t>(t)])
+            if (t == row_trigger) return true;
+        return false;
+    }
 };
 
 template <class Row>
@@ -160,6 +203,8 @@ constexpr row_kind kind_of_row() {
         return row_kind::entry;
     else if constexpr (is_exit_row<Row>)
         return row_kind::exit;
+    else if constexpr (is_initial_row<Row>)
+        return row_kind::initial;
     else
         return row_kind::transition;
 }
@@ -210,9 +255,12 @@ constexpr int state_index() {
 }
 
 template <std::size_t N>
-constexpr int transition_domain(topology<N> const& t, int source, int target) {
+constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false) {
     if (target < 0)
         return no_state;
+    // SCXML's type="internal": a compound source that contains the target stays active.
+    if (local && t.kinds[static_cast<std::size_t>(source)] == kind::composite && t.is_proper_ancestor(source, target))
+        return source;
     // SCXML: the nearest compound proper ancestor of the source that is a proper ancestor of the target.
     for (int a = t.parent[static_cast<std::size_t>(source)]; a >= 0; a = t.parent[static_cast<std::size_t>(a)])
         if (t.is_compound(a) && t.is_proper_ancestor(a, target))
@@ -240,6 +288,9 @@ struct chart_model {
 
     static constexpr row_table<row_types::size> rows = []<class... Rs>(type_list<Rs...>) {
         row_table<row_types::size> r{};
+        for (int& f : r.event_family) f = -1;
+        std::size_t e = 0;
+        for (int f : event_families<events>::nearest) r.event_family[e++] = f;
         std::size_t i = 0;
         (
             [&] {
@@ -251,13 +302,14 @@ struct chart_model {
                 if constexpr (is_transition_row<Rs>) {
                     r.target[i] = state_index<typename Rs::target, tags>();
                     r.guarded[i] = Rs::guarded;
+                    r.local[i] = Rs::local;
                     using E = typename trigger_event<Rs>::type;
                     if constexpr (!std::is_void_v<E>) r.trigger[i] = index_of<E, events>;
                     if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
                 }
                 r.domain[i] = no_state;
                 if (r.source[i] >= 0 && r.target[i] >= 0)
-                    r.domain[i] = transition_domain(tree, r.source[i], r.target[i]);
+                    r.domain[i] = transition_domain(tree, r.source[i], r.target[i], r.local[i]);
                 ++i;
             }(),
             ...);
@@ -270,8 +322,13 @@ struct chart_model {
     using row_at = at<static_cast<std::size_t>(I), row_types>;
     template <class S>
     static constexpr int index_of_state = index_of<S, tags>;
+    // Whether some event of the chart has a family (a base class among the chart's events, or
+    // bsc::any_event): only then can an event take rows of another type.
+    static constexpr bool has_families = event_families<events>::any;
+    // The trigger of event E: its position among the chart's events, or, for an event the chart
+    // does not name, its nearest family's (-1: none; -2: its families are not a chain).
     template <class E>
-    static constexpr int trigger_of = index_of<E, events>;
+    static constexpr int trigger_of = event_families<events>::template trigger_of<E>();
 };
 
 // The unqualified names of a model's states, by index (0: the implicit top). A variable of

@@ -20,11 +20,17 @@ struct chart_layout {
     static constexpr int R = Model::R;
     static constexpr int root = 1;  // state 0 is the implicit top above the chart's root
 
-    // `trigger` is an event's position, eventless_id, or any_condition (eventless or timeout).
+    // Whether row `row` is a transition on `trigger`: an event's position, eventless_id, or
+    // any_condition (eventless or timeout).
     static constexpr bool is_transition_on(int row, int trigger) {
         auto const r = static_cast<std::size_t>(row);
         if (rows.kinds[r] != row_kind::transition) return false;
-        return trigger == any_condition ? rows.trigger[r] < 0 : rows.trigger[r] == trigger;
+        if (trigger == any_condition) return rows.trigger[r] < 0;
+        // A row on a family of the trigger's event takes it too (model/event_families.hpp).
+        if constexpr (Model::has_families)
+            return rows.takes(rows.trigger[r], trigger);
+        else
+            return rows.trigger[r] == trigger;
     }
 
     static constexpr bool has_trigger(int trigger) {
@@ -152,15 +158,51 @@ struct chart_layout {
         return false;
     }();
 
-    // The initial configuration: every composite's byte at its initial child.
+    // history_child[s]: the first history pseudo-state among the children of composite s, -1
+    // if none; deep_history_child[s]: whether one of them is deep.
+    static constexpr auto history_child = [] {
+        std::array<int, static_cast<std::size_t>(N)> out{};
+        for (int s = 0; s < N; ++s) {
+            out[static_cast<std::size_t>(s)] = -1;
+            for (int c = tree.first_child[static_cast<std::size_t>(s)]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                if (tree.kinds[static_cast<std::size_t>(c)] == kind::history && out[static_cast<std::size_t>(s)] < 0)
+                    out[static_cast<std::size_t>(s)] = c;
+        }
+        return out;
+    }();
+    static constexpr auto deep_history_child = [] {
+        std::array<bool, static_cast<std::size_t>(N)> out{};
+        for (int s = 1; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(s)] == kind::history && tree.hist[static_cast<std::size_t>(s)] == history::deep)
+                out[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] = true;
+        return out;
+    }();
+    static constexpr bool has_history_states = [] {
+        for (int s = 0; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(s)] == kind::history) return true;
+        return false;
+    }();
+
+    // The initial configuration: every composite's byte at its initial child; the byte of a
+    // composite with history states at the first of them, which is never active: the mark of a
+    // composite that has never been active, whose history states take their defaults.
     static constexpr auto initial_bytes = [] {
         std::array<std::uint8_t, static_cast<std::size_t>(tree.slots)> bytes{};
         for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s)
             if (tree.slot[s] >= 0)
-                bytes[static_cast<std::size_t>(tree.slot[s])] =
-                    static_cast<std::uint8_t>(tree.ordinal[static_cast<std::size_t>(tree.initial[s])]);
+                bytes[static_cast<std::size_t>(tree.slot[s])] = static_cast<std::uint8_t>(
+                    tree.ordinal[static_cast<std::size_t>(history_child[s] >= 0 ? history_child[s] : tree.initial[s])]);
         return bytes;
     }();
+    // Whether composite s's byte says it has never been active (it selects a history state).
+    template <int S>
+    static constexpr bool never_active_byte(std::uint8_t byte) {
+        bool is_history = false;
+        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+            is_history = is_history || (tree.kinds[static_cast<std::size_t>(c)] == kind::history &&
+                                        tree.ordinal[static_cast<std::size_t>(c)] == byte);
+        return is_history;
+    }
 
     // Which children of the root are final, by ordinal: the machine halts when its root's
     // byte selects one. Empty unless the root is a composite with a final child.

@@ -28,6 +28,7 @@
 #include <bsc/duration.hpp>
 #include <bsc/error.hpp>
 #include <bsc/event_set.hpp>
+#include <bsc/model/completion.hpp>
 #include <bsc/model/layout.hpp>
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
@@ -210,7 +211,10 @@ public:
     template <class E>
     constexpr outcome dispatch(E const& e) {
         constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (trigger < 0) {
+        if constexpr (trigger == -2) {
+            detail::report<error::event_in_two_families<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger < 0) {
             detail::report<error::unhandled_event<E>>();
             return outcome::ignored;
         } else {
@@ -222,7 +226,10 @@ public:
     template <class E>
     constexpr outcome dispatch(E const& e, allow_unhandled_t) {
         constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (trigger < 0) {
+        if constexpr (trigger == -2) {
+            detail::report<error::event_in_two_families<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger < 0) {
             if (running()) return outcome::ignored;  // inside a run: nothing to record
             if (!halted()) notify<model, Observer>::dispatching(observer_.value, e);
             return record(outcome::ignored);
@@ -339,6 +346,95 @@ protected:
         }));
     }
 
+    // ---- completion (model/completion.hpp), called by the back ends ----------------------
+    using completion = detail::completion<model>;
+
+    // After the entry actions of final state f: raises done for its parent, and for the
+    // parallel state above the parent if every region of it is now in a final state (SCXML's
+    // enterStates). A final child of the root raises nothing: the machine halts.
+    constexpr void entered_final(int f) {
+        if constexpr (completion::raises) {
+            int const p = tree.parent[static_cast<std::size_t>(f)];
+            if (p == root) return;
+            raise_done(p);
+            int const g = tree.parent[static_cast<std::size_t>(p)];
+            if (tree.kinds[static_cast<std::size_t>(g)] == kind::parallel && !entering(g) && in_final(g)) raise_done(g);
+        } else {
+            (void)f;
+        }
+    }
+
+    // Enters the regions of parallel state g (enter_regions(), the back end's loop). While it
+    // does, a final state entered in a region does not look at the regions after its own, which
+    // are not entered yet; once they all are, done for g is raised if they are all final and
+    // the last was entered through a final state of its own (a composite region): where SCXML
+    // raises it, after the last final state entered.
+    template <class Enter>
+    constexpr void enter_parallel(int g, Enter&& enter_regions) {
+        if constexpr (completion::parallel_count > 0) {
+            int const n = completion::parallel_number[static_cast<std::size_t>(g)];
+            if (n >= 0) {
+                entering_.flag[static_cast<std::size_t>(n)] = true;
+                enter_regions();
+                entering_.flag[static_cast<std::size_t>(n)] = false;
+                if (tree.kinds[static_cast<std::size_t>(last_child(g))] == kind::composite && in_final(g)) raise_done(g);
+                return;
+            }
+        }
+        enter_regions();
+    }
+
+    // Runs the exit actions of every active state, innermost first, when the machine halts
+    // (SCXML's exitInterpreter).
+    constexpr void halt_if_final() {
+        if constexpr (layout::can_halt)
+            if (halted()) backend().exit_all();
+    }
+
+private:
+    constexpr bool entering(int g) const {
+        if constexpr (completion::parallel_count > 0) {
+            int const n = completion::parallel_number[static_cast<std::size_t>(g)];
+            return n >= 0 && entering_.flag[static_cast<std::size_t>(n)];
+        } else {
+            return (void)g, false;
+        }
+    }
+    static constexpr int last_child(int s) {
+        int last = tree.first_child[static_cast<std::size_t>(s)];
+        while (tree.next_sibling[static_cast<std::size_t>(last)] >= 0) last = tree.next_sibling[static_cast<std::size_t>(last)];
+        return last;
+    }
+    // SCXML's isInFinalState: a composite whose active child is final, a parallel state all of
+    // whose regions are.
+    constexpr bool in_final(int s) const {
+        auto const i = static_cast<std::size_t>(s);
+        if (tree.kinds[i] == kind::composite) {
+            auto const ordinal = config_.active[static_cast<std::size_t>(tree.slot[i])];
+            for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                if (tree.ordinal[static_cast<std::size_t>(c)] == ordinal)
+                    return tree.kinds[static_cast<std::size_t>(c)] == kind::final_state;
+            return false;
+        }
+        if (tree.kinds[i] == kind::parallel) {
+            for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                if (!in_final(c)) return false;
+            return true;
+        }
+        return false;
+    }
+    // Queues done<S> for state s, if a row takes it.
+    constexpr void raise_done(int s) {
+        [&]<std::size_t... S>(std::index_sequence<S...>) {
+            (void)((s == static_cast<int>(S) ? (raise_done_of<S>(), true) : false) || ...);
+        }(std::make_index_sequence<state_count>{});
+    }
+    template <std::size_t S>
+    constexpr void raise_done_of() {
+        if constexpr (completion::trigger[S] >= 0) (void)queue_(done<typename model::template tag_at<static_cast<int>(S)>>{});
+    }
+
+protected:
     // The machine counts as running from the start of a run to its end, or, in a dispatch on a
     // back end that says so (Backend::marks_running_lazily), from the first guard or transition
     // it is about to run (the back end calls mark_running() there): only guards, actions and
@@ -471,7 +567,10 @@ private:
         return body();
 #endif
     }
-    constexpr void end_run_by_exception() { status_ = static_cast<run_status>(bits(status_) & ~running_bit); }
+    constexpr void end_run_by_exception() {
+        status_ = static_cast<run_status>(bits(status_) & ~running_bit);
+        if constexpr (completion::parallel_count > 0) entering_ = {};  // the run is over, whatever it was entering
+    }
 
     template <int Trigger, class E>
     constexpr outcome process(E const& e) {
@@ -529,7 +628,7 @@ private:
             return drain_queue(consumed);
         // The common case, kept inline: nothing raised, and no eventless transition to try.
         if constexpr (!layout::has_trigger(eventless_id))
-            if (queue_.empty() && !queue_.overflowed())
+            if (queue_.empty() && !queue_.overflowed() && !(layout::can_halt && halted()))
                 return consumed ? outcome::consumed : outcome::ignored;
         return settle(consumed);
     }
@@ -564,6 +663,7 @@ private:
     }
 
     constexpr outcome settled(bool consumed) {
+        halt_if_final();
         if (queue_.overflowed()) {
             queue_.clear_overflow();
             return outcome::queue_overflow;
@@ -579,20 +679,21 @@ private:
 
     // ---- for the explorer (through detail::access) -------------------------------------------
     // The configuration with every byte that can never matter again reset to its initial
-    // child: the byte of an inactive composite that neither has history nor lies below a
-    // deep history. Two machines with equal canonical configurations behave the same.
+    // value: the byte of an inactive composite that neither has history (a marker or a history
+    // state) nor lies below a deep one. Two machines with equal canonical configurations behave
+    // the same.
     constexpr configuration_type canonical_configuration() const {
         configuration_type c = config_;
         if constexpr (tree.slots > 0) {
             auto const active = active_flags();
             for (std::size_t s = 1; s < state_count; ++s) {
                 if (tree.slot[s] < 0 || active[s]) continue;
-                bool remembered = tree.hist[s] != history::none;
+                bool remembered = tree.hist[s] != history::none || layout::history_child[s] >= 0;
                 for (int a = tree.parent[s]; a > 0 && !remembered; a = tree.parent[static_cast<std::size_t>(a)])
-                    remembered = tree.hist[static_cast<std::size_t>(a)] == history::deep;
+                    remembered = tree.hist[static_cast<std::size_t>(a)] == history::deep ||
+                                 layout::deep_history_child[static_cast<std::size_t>(a)];
                 if (!remembered)
-                    c.active[static_cast<std::size_t>(tree.slot[s])] =
-                        static_cast<std::uint8_t>(tree.ordinal[static_cast<std::size_t>(tree.initial[s])]);
+                    c.active[static_cast<std::size_t>(tree.slot[s])] = layout::initial_bytes[static_cast<std::size_t>(tree.slot[s])];
             }
         }
         return c;
@@ -656,6 +757,7 @@ protected:
     [[no_unique_address]] whole<Observer> observer_;
     [[no_unique_address]] whole<context_type> context_;
     configuration_type config_{};
+    [[no_unique_address]] entering_flags<completion::parallel_count> entering_;
     // The outcome of the last run (low bits) and the mark of a run under way (running_bit). An
     // enumeration and not a std::uint8_t: a store through an unsigned char may alias any object,
     // so the compiler would reload the context after every mark.

@@ -9,6 +9,7 @@
 
 #include <bsc/error.hpp>
 #include <bsc/detail/meta.hpp>
+#include <bsc/model/event_families.hpp>
 
 namespace bsc::detail {
 
@@ -21,25 +22,22 @@ public:
     using value_type = std::variant<std::monostate, Es...>;
 
     /// Raises e: queues it for processing after the current step. False if the queue is full.
+    /// An event the chart does not name is queued as its nearest family (model/event_families.hpp):
+    /// the rows that take it see no more of it than that.
     template <class E>
     constexpr bool operator()(E const& e) noexcept(std::is_nothrow_copy_constructible_v<E>) {
-        if constexpr (index_in<E, Es...>() < 0) {
-            detail::report<error::raised_event_not_in_chart<E>>();
-            return false;
+        constexpr int own = index_in<E, Es...>();
+        if constexpr (own >= 0) {
+            return push<E>(e);
         } else {
-            if (size_ == Capacity) {
-                overflowed_ = true;
+            constexpr int family = event_families<type_list<Es...>>::template trigger_of<E>();
+            if constexpr (family < 0) {
+                detail::report<error::raised_event_not_in_chart<E>>();
                 return false;
+            } else {
+                using F = at<static_cast<std::size_t>(family), type_list<Es...>>;
+                return push<F>(event_as<F>(e));
             }
-            auto& slot = items_[(head_ + size_) % Capacity];
-            // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
-            // 14 cannot emplace into a variant in a constant expression, so that assigns.
-            if (std::is_constant_evaluated())
-                slot = value_type{std::in_place_type<E>, e};
-            else
-                slot.template emplace<E>(e);
-            ++size_;
-            return true;
         }
     }
 
@@ -61,6 +59,23 @@ public:
     }
 
 private:
+    template <class E>
+    constexpr bool push(E const& e) {
+        if (size_ == Capacity) {
+            overflowed_ = true;
+            return false;
+        }
+        auto& slot = items_[(head_ + size_) % Capacity];
+        // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
+        // 14 cannot emplace into a variant in a constant expression, so that assigns.
+        if (std::is_constant_evaluated())
+            slot = value_type{std::in_place_type<E>, e};
+        else
+            slot.template emplace<E>(e);
+        ++size_;
+        return true;
+    }
+
     std::array<value_type, Capacity> items_{};
     std::size_t head_ = 0;
     std::size_t size_ = 0;

@@ -1,6 +1,6 @@
 #pragma once
 // The internal event queue a machine of a chart needs: none if no action of the chart can raise
-// an event (detail::may_raise) and the chart does not take bsc::action_failed.
+// an event (detail::may_raise) and the chart takes neither bsc::action_failed nor a done event.
 
 #include <type_traits>
 
@@ -9,6 +9,7 @@
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/model/chart_model.hpp>
+#include <bsc/model/completion.hpp>
 #include <bsc/runtime/event_queue.hpp>
 
 namespace bsc::detail {
@@ -24,12 +25,14 @@ constexpr bool chart_may_raise() {
 }
 
 // The queue of a machine of the chart (either back end): a bounded queue of the chart's events
-// if an action can raise, or the chart takes bsc::action_failed (which the machine raises);
+// if an action can raise, or the chart takes bsc::action_failed or a bsc::done event (which the
+// machine raises);
 // otherwise none, and no test for raised events after a microstep.
 template <class Chart, class Policy>
 using queue_for =
     std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
-                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0,
+                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0 ||
+                           completion<chart_model<std::remove_cv_t<Chart>>>::raises,
                        event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
                        no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>;
 }  // namespace bsc::detail

@@ -171,6 +171,8 @@ private:
     // ---- entry and exit -------------------------------------------------------------------
     void run_entry(state_id s) {
         if (auto const f = states[s].entry) f(this->chart(), this->context_.value, this->queue_, this->sink());
+        if constexpr (base::completion::raises)
+            if (states[s].status.kind == state_kind::final_state) this->entered_final(s);
         // A state's timeouts count from its entry, at the time of the last cycle.
         if constexpr (tables_type::timeout_slots > 0)
             for (std::int16_t k = 0; k < states[s].timeout_slots; ++k)
@@ -186,6 +188,8 @@ private:
 
     // The paper's StartStEng: the initial configuration, entered from the root down.
     void enter_initial() { enter_default(tables_type::root); }
+    // When the machine halts: every active state's exit actions, innermost first.
+    void exit_all() { deactivate_path(no_state); }
 
     // Enters s and its default completion: the initial child of a composite, or the child its
     // history remembers; every child of a parallel state.
@@ -198,16 +202,47 @@ private:
         if (row.status.kind == state_kind::composite) {
             switch (row.status.history) {
                 case history_kind::none:
-                    set_byte(row.slot, states[row.initial].ordinal);
-                    enter_default(row.initial);
+                    // The initial transition: its actions, then its target, a child or deeper.
+                    if (auto const f = row.initial_action) f(this->chart(), this->context_.value, this->queue_, this->sink());
+                    if (states[row.initial].status.kind == state_kind::history) {
+                        enter_history(row.initial);
+                    } else if (row.initial_target != row.initial) {
+                        activate_path(s, row.initial_target);
+                    } else {
+                        set_byte(row.slot, states[row.initial].ordinal);
+                        enter_default(row.initial);
+                    }
                     break;
                 case history_kind::shallow: enter_default(active_child(s)); break;
                 case history_kind::deep: enter_restore(active_child(s)); break;
             }
         } else if (row.status.kind == state_kind::parallel) {
-            for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_default(c);
+            this->enter_parallel(s, [&] {
+                for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_default(c);
+            });
         }
     }
+    // Enters history state h of composite p: p's remembered child (shallow) or remembered
+    // sub-configuration (deep), or, if p has never been active (its byte selects a history
+    // state), h's default transition.
+    void enter_history(state_id h) {
+        state_id const p = states[h].parent;
+        state_id const remembered = active_child(p);
+        if (states[remembered].status.kind == state_kind::history) {
+            if (auto const f = states[h].initial_action) f(this->chart(), this->context_.value, this->queue_, this->sink());
+            if (states[h].initial_target != states[h].initial) {
+                activate_path(p, states[h].initial_target);
+            } else {
+                set_byte(states[p].slot, states[states[h].initial].ordinal);
+                enter_default(states[h].initial);
+            }
+        } else if (states[h].status.history == history_kind::shallow) {
+            enter_default(remembered);
+        } else {
+            enter_restore(remembered);
+        }
+    }
+
     // Deep history: re-enters s and the whole sub-configuration the bytes remember.
     void enter_restore(state_id s) {
         run_entry(s);
@@ -215,7 +250,9 @@ private:
         if (row.status.kind == state_kind::composite)
             enter_restore(active_child(s));
         else if (row.status.kind == state_kind::parallel)
-            for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_restore(c);
+            this->enter_parallel(s, [&] {
+                for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_restore(c);
+            });
     }
 
     // The paper's activPath: enters, below the active state `domain`, the states on the path
@@ -226,12 +263,17 @@ private:
         state_id c = target;
         while (states[c].parent != domain) c = states[c].parent;
         if (states[domain].status.kind == state_kind::parallel) {
-            for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
-                if (k == c)
-                    enter_path_node(c, target);
-                else
-                    enter_default(k);
-            }
+            // (A parallel `domain` here has just been entered: no transition's domain is parallel.)
+            this->enter_parallel(domain, [&] {
+                for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
+                    if (k == c)
+                        enter_path_node(c, target);
+                    else
+                        enter_default(k);
+                }
+            });
+        } else if (states[c].status.kind == state_kind::history) {
+            enter_history(c);  // `domain`, its composite, has been entered: now its history
         } else {
             if (states[domain].slot >= 0) set_byte(states[domain].slot, states[c].ordinal);
             enter_path_node(c, target);
@@ -270,16 +312,54 @@ private:
         return g == nullptr || this->test([&] { return g(this->chart(), this->context_.value, e); });
     }
 
-    // Step 2 for one active basic state: its candidates are the transitions on the event from
-    // the state itself, then from its parent, and so on up to the root (deepest first); among
-    // those of one origin, declaration order. The first whose guard holds is selected.
-    bool select_from(state_id leaf, event_id event, void const* e, selection& sel) {
+    // The event a microstep processes, as the thunks of a transition receive it. Without
+    // families, every transition on it takes it as it is.
+    struct plain_event {
+        void const* event;
+        void const* as(event_id) const { return event; }
+    };
+    // With families, a transition on a family of the event receives the event as that family
+    // (a base class subobject, or bsc::any_event): one pointer per event of the chart.
+    struct family_event {
+        std::array<void const*, tables_type::event_count> seen{};
+        void const* as(event_id row_event) const { return seen[static_cast<std::size_t>(row_event)]; }
+    };
+    template <class E>
+    static family_event as_families(E const& e) {
+        family_event view;
+        [&]<class... Us>(bsc::detail::type_list<Us...>) {
+            std::size_t u = 0;
+            ((view.seen[u++] = address_as<Us>(e)), ...);
+        }(typename base::event_types{});
+        return view;
+    }
+    template <class U, class E>
+    static void const* address_as(E const& e) {
+        if constexpr (std::is_same_v<U, E>)
+            return &e;
+        else if constexpr (std::is_same_v<U, bsc::any_event>)
+            return &any_event_value;
+        else if constexpr (__is_base_of(U, E))
+            return static_cast<U const*>(&e);
+        else
+            return nullptr;  // not a family of E: no transition on U takes E
+    }
+    static constexpr bsc::any_event any_event_value{};
+
+    // Step 2 for one active basic state: its candidates are the transitions on the event (or on
+    // a family of it) from the state itself, then from its parent, and so on up to the root
+    // (deepest first); among those of one origin, declaration order. The first whose guard
+    // holds is selected.
+    template <class Event>
+    bool select_from(state_id leaf, event_id event, Event const& e, selection& sel) {
         for (state_id a = leaf; a != no_state; a = states[a].parent)
-            for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)])
-                if (transitions[static_cast<std::size_t>(t)].event == event && guard_holds(t, e)) {
+            for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)]) {
+                auto const on = transitions[static_cast<std::size_t>(t)].event;
+                if (tables_type::takes(on, event) && guard_holds(t, e.as(on))) {
                     sel.add(static_cast<std::size_t>(t));
                     return true;
                 }
+            }
         return false;
     }
 
@@ -292,12 +372,19 @@ private:
 
     template <int Trigger, class E>
     bool microstep(E const& e) {
-        return microstep(static_cast<event_id>(Trigger), &e);
+        if constexpr (Trigger >= 0 && base::model::has_families)
+            return microstep(static_cast<event_id>(Trigger), as_families(e));
+        else if constexpr (Trigger >= 0)  // E, or an event the chart does not name, as the trigger's type
+            return microstep(static_cast<event_id>(Trigger),
+                             plain_event{address_as<bsc::detail::at<static_cast<std::size_t>(Trigger), typename base::event_types>>(e)});
+        else
+            return microstep(static_cast<event_id>(Trigger), plain_event{&e});
     }
 
     // One microstep for an event, the five steps of the paper's Figure 9; true if a
     // transition was selected.
-    bool microstep(event_id event, void const* e) {
+    template <class Event>
+    bool microstep(event_id event, Event const& e) {
         // 1. Sense the event: an event no transition is triggered by changes nothing.
         if (!tables_type::handles(event)) return false;
 
@@ -328,7 +415,8 @@ private:
             if (row.to != no_state) deactivate_path(row.domain);
         }
         // 4. Perform the transition actions, in selection order.
-        for (std::size_t i = 0; i < fired.size; ++i) run_action(static_cast<std::int16_t>(fired.rows[i]), e);
+        for (std::size_t i = 0; i < fired.size; ++i)
+            run_action(static_cast<std::int16_t>(fired.rows[i]), e.as(transitions[fired.rows[i]].event));
         // 5. Activate the states they enter, running entry actions, defaults and history.
         for (std::size_t i = 0; i < fired.size; ++i) {
             auto const& row = transitions[fired.rows[i]];

@@ -47,6 +47,7 @@ enum class state_kind : std::uint8_t {
     final_state,  ///< an atomic state that ends its parent (the root: the machine halts)
     composite,    ///< exactly one child active (the paper's hierarchical, or OR, state)
     parallel,     ///< all children active (the paper's concurrent, or AND, state)
+    history,      ///< a history pseudo-state of its parent composite: never active
 };
 enum class history_kind : std::uint8_t { none, shallow, deep };
 
@@ -74,9 +75,11 @@ struct state_row {
     state_status status{};
     state_action entry = nullptr;  ///< null: no entry action
     state_action exit = nullptr;   ///< null: no exit action
+    state_action initial_action = nullptr;  ///< a composite's initial transition's actions (on_initial); null: none
 
     // Derived columns.
-    state_id initial = no_state;   ///< default child of a composite
+    state_id initial = no_state;   ///< default child of a composite (of a history state: its default's path)
+    state_id initial_target = no_state;  ///< its initial state: `initial`, or a descendant below it (a deep initial)
     std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
     std::int16_t slot = -1;    ///< the byte of the configuration a composite owns, -1 for others
     state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
@@ -178,6 +181,7 @@ private:
             case bsc::detail::kind::final_state: return state_kind::final_state;
             case bsc::detail::kind::composite: return state_kind::composite;
             case bsc::detail::kind::parallel: return state_kind::parallel;
+            case bsc::detail::kind::history: return state_kind::history;
         }
         return state_kind::basic;
     }
@@ -202,6 +206,8 @@ private:
         row.entry = state_action_of<row_kind::entry, S>();
         row.exit = state_action_of<row_kind::exit, S>();
         row.initial = id(tree.initial[i]);
+        row.initial_target = id(tree.initial_target[i]);
+        row.initial_action = state_action_of<row_kind::initial, S>();
         row.ordinal = static_cast<std::uint8_t>(tree.ordinal[i]);
         row.slot = static_cast<std::int16_t>(tree.slot[i]);
         row.end = static_cast<state_id>(tree.end[i]);
@@ -297,10 +303,20 @@ public:
     /// How many states keep an entry time for their timeouts.
     static constexpr std::size_t timeout_slots = static_cast<std::size_t>(layout::timeout_slots);
 
-    /// True if some transition is triggered by `event` (an event id, or `eventless_id`).
+    /// True if a transition triggered by `row_event` takes `event`: the same event, or a family
+    /// of it (a base class of its type among the chart's events, or bsc::any_event).
+    static constexpr bool takes(event_id row_event, event_id event) {
+        if constexpr (model::has_families)
+            return rows.takes(row_event, event);
+        else
+            return row_event == event;
+    }
+
+    /// True if some transition is triggered by `event` (an event id, or `eventless_id`), or by
+    /// a family of it.
     static constexpr bool handles(event_id event) {
         for (auto const& t : transitions)
-            if (t.event == event) return true;
+            if (takes(t.event, event)) return true;
         return false;
     }
 

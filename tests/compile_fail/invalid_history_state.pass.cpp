@@ -1,0 +1,22 @@
+// Twin of invalid_history_state.fail.cpp: the default of Resume is now Step2, inside Work.
+#include <bsc/bsc.hpp>
+
+namespace cf {
+struct go {};
+struct back {};
+struct Root;
+struct Idle;
+struct Work;
+struct Resume;
+struct Step1;
+struct Step2;
+struct ctx {};
+
+inline constexpr auto chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
+                         bsc::composite<Work>(bsc::initial<Step1>, bsc::shallow_history_state<Resume, Step2>,
+                                              bsc::state<Step1>, bsc::state<Step2>)),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Resume>,
+    bsc::state<Step1> + bsc::event<go> = bsc::state<Step2>, bsc::state<Step2> + bsc::event<go> = bsc::state<Step1>,
+    bsc::state<Work> + bsc::event<back> = bsc::state<Idle>);
+}  // namespace cf

@@ -1,0 +1,444 @@
+// The constructs of SCXML and UML beyond the core formalism (docs/semantics.md, "Beyond the
+// core"): local transitions, event families and bsc::any_event, done events and halting.
+// Each case runs against both back ends; the names quote docs/semantics.md.
+
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include <bsc/export.hpp>
+#include <bsc/verify.hpp>
+
+#include "backends.hpp"
+#include "trace.hpp"
+
+using bsc_test::compiled;
+using bsc_test::machine_t;
+using bsc_test::table;
+
+namespace beyond {
+struct go {};
+struct back {};
+struct restart {};
+struct Root;
+struct Work;
+struct Step1;
+struct Step2;
+struct Idle;
+struct ctx {
+    std::string log;
+};
+inline constexpr auto log = [](char const* what) {
+    return bsc::action([what](ctx& c) {
+        if (!c.log.empty()) c.log += ' ';
+        c.log += what;
+    });
+};
+}  // namespace beyond
+
+using namespace beyond;
+
+// ---- local transitions ---------------------------------------------------------------------
+
+namespace beyond {
+inline constexpr auto local_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
+                         bsc::composite<Work>(bsc::initial<Step1>, bsc::state<Step1>, bsc::state<Step2>)),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>,
+    bsc::state<Step1> + bsc::event<go> = bsc::state<Step2>,
+    bsc::state<Work> + bsc::event<restart> / log("restart") = bsc::local(bsc::state<Step1>),
+    bsc::state<Work> + bsc::event<back> / log("back") = bsc::state<Step1>,
+    bsc::state<Work> + bsc::on_entry / log("enter Work"), bsc::state<Work> + bsc::on_exit / log("exit Work"),
+    bsc::state<Step1> + bsc::on_entry / log("enter Step1"), bsc::state<Step1> + bsc::on_exit / log("exit Step1"),
+    bsc::state<Step2> + bsc::on_entry / log("enter Step2"), bsc::state<Step2> + bsc::on_exit / log("exit Step2"),
+    bsc::state<Step2> + bsc::event<go> = bsc::state<Idle>);
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("a local transition exits and enters only below its source", Backend, compiled, table) {
+    machine_t<Backend, decltype(local_chart)> m{local_chart, ctx{}};
+    m.dispatch(go{});
+    m.dispatch(go{});
+    REQUIRE(m.active_states().joined() == "Root Work Step2");
+    m.context().log.clear();
+    CHECK(m.dispatch(restart{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "exit Step2 restart enter Step1");
+    CHECK(m.active_states().joined() == "Root Work Step1");
+    m.dispatch(go{});
+    m.context().log.clear();
+    // The same target without bsc::local leaves and re-enters the source (SCXML's external).
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "exit Step2 exit Work back enter Work enter Step1");
+}
+
+TEST_CASE("a local transition is drawn as such, and exported as SCXML's type=\"internal\"") {
+    auto const scxml = bsc::to_scxml(local_chart);
+    CHECK(scxml.find("<transition event=\"restart\" target=\"Step1\" type=\"internal\">") != std::string::npos);
+    CHECK(scxml.find("<transition event=\"back\" target=\"Step1\">") != std::string::npos);
+    CHECK(bsc::to_mermaid(local_chart).find("Work --> Step1 : restart / action (local)") != std::string::npos);
+}
+
+// ---- event families and bsc::any_event -------------------------------------------------------
+
+namespace beyond {
+// SCXML's "error", "error.send" and "error.send.failed", as classes.
+struct error {};
+struct error_send : error {
+    int code = 0;
+};
+struct error_send_failed : error_send {};
+struct other {};
+struct Fault;
+struct Sent;
+struct Caught;
+inline constexpr auto family_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Sent>, bsc::state<Fault>,
+                         bsc::state<Caught>),
+    bsc::state<Idle> + bsc::event<error_send>[([](ctx const&, error_send const& e) { return e.code > 0; })] /
+                           bsc::action([](ctx& c, error_send const& e) { c.log += "send " + std::to_string(e.code); }) =
+        bsc::state<Sent>,
+    bsc::state<Idle> + bsc::event<error> / log("error") = bsc::state<Fault>,
+    bsc::state<Idle> + bsc::event<bsc::any_event> / log("any") = bsc::state<Caught>,
+    bsc::state<Sent> + bsc::event<go> = bsc::state<Idle>, bsc::state<Fault> + bsc::event<go> = bsc::state<Idle>,
+    bsc::state<Caught> + bsc::event<go> = bsc::state<Idle>);
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("a row on an event takes the events derived from it; the first matching row in document order wins",
+                   Backend, compiled, table) {
+    machine_t<Backend, decltype(family_chart)> m{family_chart, ctx{}};
+    error_send_failed failed;  // not named by any row: its families' rows take it
+    failed.code = 7;
+    CHECK(m.dispatch(failed) == bsc::outcome::consumed);
+    CHECK(m.context().log == "send 7");
+    CHECK(m.template is<Sent>());
+    m.dispatch(go{});
+    m.context().log.clear();
+    failed.code = 0;  // the first row's guard fails: the row on the family `error` is next
+    CHECK(m.dispatch(failed) == bsc::outcome::consumed);
+    CHECK(m.context().log == "error");
+    CHECK(m.template is<Fault>());
+    m.dispatch(go{});
+    m.context().log.clear();
+    CHECK(m.dispatch(error{}) == bsc::outcome::consumed);  // not an error_send: the first row is not a candidate
+    CHECK(m.template is<Fault>());
+    m.dispatch(go{});
+    m.context().log.clear();
+    CHECK(m.dispatch(other{}) == bsc::outcome::consumed);  // only bsc::any_event takes it
+    CHECK(m.context().log == "any");
+    CHECK(m.template is<Caught>());
+    // bsc::any_event takes every event, so nothing is unhandled: an event of no row at all too.
+    struct stranger {};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.dispatch(stranger{}) == bsc::outcome::consumed);
+    CHECK(m.template is<Caught>());
+}
+
+namespace beyond {
+struct Outer;
+struct Inner;
+struct Elsewhere;
+inline constexpr auto deepest_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Outer>,
+                         bsc::composite<Outer>(bsc::initial<Inner>, bsc::state<Inner>, bsc::state<Elsewhere>),
+                         bsc::state<Caught>),
+    bsc::state<Outer> + bsc::event<bsc::any_event> / log("outer any") = bsc::state<Caught>,
+    bsc::state<Inner> + bsc::event<go> / log("inner go") = bsc::state<Elsewhere>,
+    bsc::state<Elsewhere> + bsc::event<back> = bsc::state<Inner>,
+    bsc::state<Caught> + bsc::event<back> = bsc::state<Outer>,
+    // Raised as error_send_failed, which the chart does not name: queued as error_send.
+    bsc::state<Elsewhere> + bsc::event<restart> / bsc::action([](ctx&, restart const&, auto& raise) {
+        error_send_failed e;
+        e.code = 3;
+        raise(e);
+    }),
+    bsc::state<Elsewhere> + bsc::event<error_send> / bsc::action([](ctx& c, error_send const& e) {
+        c.log += " raised " + std::to_string(e.code);
+    }) = bsc::state<Inner>);
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("bsc::any_event has the priority of its row: a deeper state's row on the event wins", Backend, compiled,
+                   table) {
+    machine_t<Backend, decltype(deepest_chart)> m{deepest_chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "inner go");
+    CHECK(m.template is<Elsewhere>());
+    m.context().log.clear();
+    CHECK(m.dispatch(restart{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == " raised 3");
+    CHECK(m.template is<Inner>());
+    m.context().log.clear();
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);  // Inner has no row on back: Outer's any_event row
+    CHECK(m.context().log == "outer any");
+    CHECK(m.template is<Caught>());
+}
+
+// ---- done events and halting -----------------------------------------------------------------
+
+namespace beyond {
+struct Finished;
+struct Next;
+inline constexpr auto done_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Work>,
+                         bsc::composite<Work>(bsc::initial<Step1>, bsc::state<Step1>, bsc::final_state<Finished>),
+                         bsc::state<Next>),
+    bsc::state<Step1> + bsc::event<go> / log("go") = bsc::state<Finished>,
+    bsc::state<Work> + bsc::event<bsc::done<Work>> / log("done Work") = bsc::state<Next>,
+    bsc::state<Next> + bsc::event<back> = bsc::state<Work>,
+    bsc::state<Step1> + bsc::on_exit / log("exit Step1"), bsc::state<Finished> + bsc::on_entry / log("enter Finished"),
+    bsc::state<Finished> + bsc::on_exit / log("exit Finished"), bsc::state<Work> + bsc::on_exit / log("exit Work"),
+    bsc::state<Next> + bsc::on_entry / log("enter Next"));
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("entering a final child of a composite raises done for the composite, after the final state's entry",
+                   Backend, compiled, table) {
+    machine_t<Backend, decltype(done_chart)> m{done_chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "exit Step1 go enter Finished exit Finished exit Work done Work enter Next");
+    CHECK(m.template is<Next>());
+    m.context().log.clear();
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
+    CHECK(m.template is<Step1>());
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.template is<Next>());
+}
+
+namespace beyond {
+struct a {};
+struct b {};
+struct P;
+struct R1;
+struct R2;
+struct A1;
+struct B1;
+struct F1;
+struct F2;
+inline constexpr auto parallel_done_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<P>,
+                         bsc::parallel<P>(bsc::composite<R1>(bsc::initial<A1>, bsc::state<A1>, bsc::final_state<F1>),
+                                          bsc::composite<R2>(bsc::initial<B1>, bsc::state<B1>, bsc::final_state<F2>)),
+                         bsc::state<Next>),
+    bsc::state<A1> + bsc::event<a> = bsc::state<F1>, bsc::state<B1> + bsc::event<b> = bsc::state<F2>,
+    bsc::state<R1> + bsc::event<bsc::done<R1>> / log("done R1"),
+    bsc::state<R2> + bsc::event<bsc::done<R2>> / log("done R2"),
+    bsc::state<P> + bsc::event<bsc::done<P>> / log("done P") = bsc::state<Next>,
+    bsc::state<Next> + bsc::event<go> = bsc::state<P>);
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("when every region of a parallel state is in a final state, done for the parallel state follows the region's",
+                   Backend, compiled, table) {
+    machine_t<Backend, decltype(parallel_done_chart)> m{parallel_done_chart, ctx{}};
+    CHECK(m.dispatch(a{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "done R1");
+    CHECK(m.template is<F1>());
+    CHECK(m.dispatch(b{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "done R1 done R2 done P");
+    CHECK(m.template is<Next>());
+    // Back in P, the regions start over from their initial states: nothing is complete, and
+    // the bytes of the regions (F1, F2 from the last visit) do not count while P is entered.
+    m.context().log.clear();
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log.empty());
+    CHECK(m.template is<A1>());
+    CHECK(m.template is<B1>());
+}
+
+namespace beyond {
+struct Q;
+struct Q1;
+struct Q2;
+inline constexpr auto entered_complete_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
+                         bsc::parallel<Q>(bsc::composite<Q1>(bsc::initial<F1>, bsc::final_state<F1>),
+                                          bsc::composite<Q2>(bsc::initial<F2>, bsc::final_state<F2>)),
+                         bsc::state<Next>),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Q>,
+    bsc::state<Q1> + bsc::event<bsc::done<Q1>> / log("done Q1"),
+    bsc::state<Q2> + bsc::event<bsc::done<Q2>> / log("done Q2"),
+    bsc::state<Q> + bsc::event<bsc::done<Q>> / log("done Q") = bsc::state<Next>,
+    bsc::state<Next> + bsc::event<go> = bsc::state<Idle>);
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("a parallel state entered with every region final raises its done once, after its regions'", Backend,
+                   compiled, table) {
+    machine_t<Backend, decltype(entered_complete_chart)> m{entered_complete_chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "done Q1 done Q2 done Q");
+    CHECK(m.template is<Next>());
+    m.dispatch(go{});
+    m.context().log.clear();
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "done Q1 done Q2 done Q");
+}
+
+namespace beyond {
+struct End;
+inline constexpr auto halting_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Work>, bsc::composite<Work>(bsc::initial<Step1>, bsc::state<Step1>),
+                         bsc::final_state<End>),
+    bsc::state<Step1> + bsc::event<go> / (bsc::raise(back{}), log("go")) = bsc::state<End>,
+    bsc::state<End> + bsc::on_entry / log("enter End"), bsc::state<End> + bsc::on_exit / log("exit End"),
+    bsc::state<Work> + bsc::on_exit / log("exit Work"), bsc::state<Step1> + bsc::on_exit / log("exit Step1"),
+    bsc::state<Root> + bsc::on_exit / log("exit Root"),
+    bsc::state<Work> + bsc::event<back> / log("back") = bsc::state<Work>);
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("reaching a final child of the root runs every active state's exit actions, innermost first, and halts",
+                   Backend, compiled, table) {
+    machine_t<Backend, decltype(halting_chart)> m{halting_chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    // The raised `back` is dropped: the machine halted before it was processed (SCXML).
+    CHECK(m.context().log == "exit Step1 exit Work go enter End exit End exit Root");
+    CHECK(m.halted());
+    CHECK(m.dispatch(go{}) == bsc::outcome::halted);
+    CHECK(m.context().log == "exit Step1 exit Work go enter End exit End exit Root");
+}
+
+// ---- the exports -------------------------------------------------------------------------------
+
+TEST_CASE("done events, any_event and halting are exported as SCXML has them") {
+    auto const scxml = bsc::to_scxml(done_chart);
+    CHECK(scxml.find("<transition event=\"done.state.Work\" target=\"Next\">") != std::string::npos);
+    auto const any = bsc::to_scxml(deepest_chart);
+    CHECK(any.find("<transition event=\"*\" target=\"Caught\">") != std::string::npos);
+    // SCXML halts only in a final child of <scxml>: the root leaves for one on its done event.
+    auto const halting = bsc::to_scxml(halting_chart);
+    CHECK(halting.find("<transition event=\"done.state.Root\" target=\"Root_halted\"/>") != std::string::npos);
+    CHECK(halting.find("<final id=\"Root_halted\"/>") != std::string::npos);
+    CHECK(bsc::to_scxml(local_chart).find("_halted") == std::string::npos);
+    CHECK(bsc::to_mermaid(done_chart).find("Work --> Next : done.state.Work") != std::string::npos);
+}
+
+// ---- initial transitions: actions and deep targets ---------------------------------------------
+
+namespace beyond {
+struct Deep;
+struct Mid;
+struct Other;
+inline constexpr auto initial_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
+                         bsc::composite<Work>(bsc::initial<Deep>, bsc::state<Step1>,
+                                              bsc::composite<Mid>(bsc::initial<Other>, bsc::state<Other>, bsc::state<Deep>))),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>,
+    bsc::state<Work> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<Idle> + bsc::event<restart> = bsc::state<Step1>,
+    bsc::state<Step1> + bsc::event<go> = bsc::state<Other>, bsc::state<Other> + bsc::event<go> = bsc::state<Deep>,
+    bsc::state<Deep> + bsc::event<go> = bsc::state<Step1>, bsc::state<Step1> + bsc::event<back> = bsc::state<Mid>,
+    bsc::state<Work> + bsc::on_entry / log("enter Work"), bsc::state<Work> + bsc::on_initial / log("initial Work"),
+    bsc::state<Mid> + bsc::on_entry / log("enter Mid"), bsc::state<Mid> + bsc::on_initial / log("initial Mid"),
+    bsc::state<Deep> + bsc::on_entry / log("enter Deep"), bsc::state<Step1> + bsc::on_entry / log("enter Step1"));
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("an initial transition runs its actions after its state's entry, and may target a deeper state",
+                   Backend, compiled, table) {
+    machine_t<Backend, decltype(initial_chart)> m{initial_chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    // Work's initial goes to Deep, inside Mid: Mid is entered on the way, and its own initial
+    // transition (to Other) is not taken.
+    CHECK(m.context().log == "enter Work initial Work enter Mid enter Deep");
+    CHECK(m.active_states().joined() == "Root Work Mid Deep");
+    m.dispatch(back{});
+    m.context().log.clear();
+    // A transition to a state inside Work does not take Work's initial transition.
+    CHECK(m.dispatch(restart{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "enter Work enter Step1");
+    m.context().log.clear();
+    // Entering Mid as a transition's target takes Mid's initial transition.
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "enter Mid initial Mid");
+    CHECK(m.template is<Other>());
+}
+
+// ---- history states -----------------------------------------------------------------------------
+
+namespace beyond {
+struct resume {};
+struct Hs;
+struct Hd;
+struct Sub;
+struct SubA;
+struct SubB;
+inline constexpr auto history_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(
+        bsc::initial<Idle>, bsc::state<Idle>,
+        bsc::composite<Work>(bsc::initial<Step1>, bsc::shallow_history_state<Hs, Sub>, bsc::deep_history_state<Hd, SubB>,
+                             bsc::state<Step1>, bsc::composite<Sub>(bsc::initial<SubA>, bsc::state<SubA>, bsc::state<SubB>))),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Hs>, bsc::state<Idle> + bsc::event<resume> = bsc::state<Hd>,
+    bsc::state<Idle> + bsc::event<restart> = bsc::state<Work>,
+    bsc::state<SubA> + bsc::event<go> = bsc::state<SubB>, bsc::state<SubB> + bsc::event<go> = bsc::state<Step1>,
+    bsc::state<Step1> + bsc::event<go> = bsc::state<Sub>, bsc::state<Work> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<Hs> + bsc::on_initial / log("Hs default"),
+    bsc::state<Work> + bsc::on_entry / log("enter Work"), bsc::state<Sub> + bsc::on_entry / log("enter Sub"),
+    bsc::state<SubA> + bsc::on_entry / log("enter SubA"), bsc::state<SubB> + bsc::on_entry / log("enter SubB"),
+    bsc::state<Step1> + bsc::on_entry / log("enter Step1"));
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("a history state restores its composite, or takes its default transition if the composite was never active",
+                   Backend, compiled, table) {
+    SUBCASE("shallow, never active: the default, with its action; then the remembered child, entered by default") {
+        machine_t<Backend, decltype(history_chart)> m{history_chart, ctx{}};
+        CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+        CHECK(m.context().log == "enter Work Hs default enter Sub enter SubA");
+        m.dispatch(go{});  // SubA -> SubB
+        m.dispatch(back{});
+        m.context().log.clear();
+        CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+        CHECK(m.context().log == "enter Work enter Sub enter SubA");  // shallow: Sub, then Sub's initial
+    }
+    SUBCASE("deep, never active: the default (deep inside); then the whole remembered configuration") {
+        machine_t<Backend, decltype(history_chart)> m{history_chart, ctx{}};
+        CHECK(m.dispatch(resume{}) == bsc::outcome::consumed);
+        CHECK(m.context().log == "enter Work enter Sub enter SubB");
+        m.dispatch(go{});  // SubB -> Step1
+        m.dispatch(go{});  // Step1 -> Sub (SubA)
+        m.dispatch(go{});  // SubA -> SubB
+        m.dispatch(back{});
+        m.context().log.clear();
+        CHECK(m.dispatch(resume{}) == bsc::outcome::consumed);
+        CHECK(m.context().log == "enter Work enter Sub enter SubB");
+        CHECK(m.active_states().joined() == "Root Work Sub SubB");
+    }
+    SUBCASE("a transition to the composite itself takes its initial state, not its history") {
+        machine_t<Backend, decltype(history_chart)> m{history_chart, ctx{}};
+        m.dispatch(resume{});
+        m.dispatch(back{});
+        m.context().log.clear();
+        CHECK(m.dispatch(restart{}) == bsc::outcome::consumed);
+        CHECK(m.context().log == "enter Work enter Step1");
+        // ... and is remembered: the shallow history now restores Step1.
+        m.dispatch(back{});
+        m.context().log.clear();
+        m.dispatch(go{});
+        CHECK(m.context().log == "enter Work enter Step1");
+    }
+}
+
+// ---- exploring a chart that uses them ------------------------------------------------------------
+
+// The log shows what ran; it does not change behaviour, so the explorer leaves it out.
+template <>
+inline constexpr bool bsc::verify::unexplored<std::string> = true;
+
+TEST_CASE("the explorer covers history states and done events") {
+    std::vector<bool> fired(64, false);
+    using M = bsc::machine<decltype(history_chart), bsc::default_policy, bsc::verify::row_recorder>;
+    bsc::verify::explorer ex{bsc::verify::event_model<M, go, back, resume, restart>{
+        M{history_chart, ctx{}, bsc::verify::row_recorder{&fired}}}};
+    auto const report = bsc::verify::coverage(ex, fired);
+    // Every state but the history states (never active) is reached and every row fires; the
+    // explored configurations tell "Work never active" (its byte at Hs) from "Work left in
+    // Step1", so the history defaults are taken once per path, not on every entry.
+    CHECK(report.dead_states.empty());
+    CHECK(report.dead_transitions.empty());
+    // Idle with Work never active; SubA, SubB, Step1 (with Sub last in SubA or in SubB); and Idle
+    // with Work left in Sub or in Step1, each with Sub's byte, which a deep history state keeps:
+    // 1 + 2 + 2 + 4.
+    CHECK(ex.count() == 9);
+
+    std::vector<bool> fired_done(64, false);
+    using D = bsc::machine<decltype(parallel_done_chart), bsc::default_policy, bsc::verify::row_recorder>;
+    bsc::verify::explorer done_ex{bsc::verify::event_model<D, a, b, go>{
+        D{parallel_done_chart, ctx{}, bsc::verify::row_recorder{&fired_done}}}};
+    auto const done_report = bsc::verify::coverage(done_ex, fired_done);
+    CHECK(done_report.dead_states.empty());
+    CHECK(done_report.dead_transitions.empty());
+}
