@@ -8,6 +8,7 @@
 #include <bsc/data/channel.hpp>
 #include <bsc/data/timer.hpp>
 #include <bsc/dsl/action.hpp>
+#include <bsc/dsl/delayed.hpp>
 #include <bsc/dsl/guard.hpp>
 #include <bsc/dsl/named.hpp>
 #include <bsc/dsl/row.hpp>

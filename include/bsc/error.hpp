@@ -91,6 +91,28 @@ struct invalid_history_state {
     }
 };
 
+template <class Chart>
+struct pending_events_not_encoded {
+    constexpr ~pending_events_not_encoded() {
+        static_assert(detail::dependent_false<pending_events_not_encoded>,
+                      "bsc: the explorer (bsc::verify) and bsc::save / bsc::restore encode a machine by its "
+                      "configuration, context and timeouts, not by the events it keeps pending (deferred by / "
+                      "bsc::defer, or sent by bsc::raise_after), so a machine of this chart with events waiting "
+                      "would be taken for one without; explore or save a chart that neither defers nor delays "
+                      "events");
+    }
+};
+
+template <class Source, class Trigger>
+struct invalid_deferral {
+    constexpr ~invalid_deferral() {
+        static_assert(detail::dependent_false<invalid_deferral>,
+                      "bsc: invalid deferral: a row that defers (/ bsc::defer) keeps its event for later, so it "
+                      "needs an event trigger (not eventless, not a timeout, not bsc::any_event, which would keep "
+                      "only its tag) and no target; defer the events by name, one row each");
+    }
+};
+
 template <class State>
 struct initial_action_without_initial_transition {
     constexpr ~initial_action_without_initial_transition() {

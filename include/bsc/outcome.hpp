@@ -25,6 +25,12 @@ enum class outcome : std::uint8_t {
 struct default_policy {
     /// Events an action may raise before the queue is drained; one more is an overflow.
     static constexpr std::size_t queue_capacity = 8;
+    /// Events a machine keeps deferred (`/ bsc::defer`) at once; one more is an overflow. Read
+    /// only for a chart with a deferring row.
+    static constexpr std::size_t deferred_capacity = 8;
+    /// Events sent with bsc::raise_after pending at once; one more is an overflow. Read only for
+    /// a chart whose actions send delayed events.
+    static constexpr std::size_t delayed_capacity = 8;
     /// Eventless transitions taken in a row before dispatch reports a livelock.
     static constexpr std::size_t max_eventless_steps = 64;
     /// Internal events processed within one dispatch before it reports a livelock.

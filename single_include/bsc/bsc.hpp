@@ -250,6 +250,28 @@ struct invalid_history_state {
     }
 };
 
+template <class Chart>
+struct pending_events_not_encoded {
+    constexpr ~pending_events_not_encoded() {
+        static_assert(detail::dependent_false<pending_events_not_encoded>,
+                      "bsc: the explorer (bsc::verify) and bsc::save / bsc::restore encode a machine by its "
+                      "configuration, context and timeouts, not by the events it keeps pending (deferred by / "
+                      "bsc::defer, or sent by bsc::raise_after), so a machine of this chart with events waiting "
+                      "would be taken for one without; explore or save a chart that neither defers nor delays "
+                      "events");
+    }
+};
+
+template <class Source, class Trigger>
+struct invalid_deferral {
+    constexpr ~invalid_deferral() {
+        static_assert(detail::dependent_false<invalid_deferral>,
+                      "bsc: invalid deferral: a row that defers (/ bsc::defer) keeps its event for later, so it "
+                      "needs an event trigger (not eventless, not a timeout, not bsc::any_event, which would keep "
+                      "only its tag) and no target; defer the events by name, one row each");
+    }
+};
+
 template <class State>
 struct initial_action_without_initial_transition {
     constexpr ~initial_action_without_initial_transition() {
@@ -848,6 +870,13 @@ struct action_base {};  // marks bsc action wrappers, so operator, applies to th
 template <class A>
 concept bsc_action = std::is_base_of_v<action_base, A>;
 
+// What bsc::defer is: the "action" of a row that defers its event. The machines recognise it
+// by its type and keep the event instead of calling it; it runs nothing itself.
+struct defer_action {
+    template <class Ctx, class E, class Raise>
+    constexpr void operator()(Ctx&, E const&, Raise&) const noexcept {}
+};
+
 template <class F>
 struct action_fn : action_base {
     [[no_unique_address]] F fn;
@@ -869,7 +898,7 @@ struct action_seq : action_base {
 
 template <class A>
 constexpr auto as_action(A a) {
-    if constexpr (bsc_action<A>)
+    if constexpr (bsc_action<A> || std::is_same_v<A, defer_action>)
         return a;
     else
         return action_fn<A>{{}, std::move(a)};
@@ -877,6 +906,9 @@ constexpr auto as_action(A a) {
 
 template <class A>
 constexpr auto as_tuple(A a) {
+    static_assert(!std::is_same_v<A, defer_action>,
+                  "bsc::defer is a row's whole action: `state<S> + event<E> / bsc::defer`; it does not sequence with "
+                  "other actions");
     if constexpr (requires { a.actions; })
         return a.actions;
     else
@@ -898,6 +930,7 @@ struct no_action {
     template <class Ctx, class E, class Raise>
     constexpr void operator()(Ctx&, E const&, Raise&) const noexcept {}
 };
+
 
 // The event a bsc action sees when it runs as an entry or exit action.
 struct state_change {};
@@ -933,6 +966,10 @@ template <class Ctx, class E, class Raise>
 constexpr bool may_raise(no_action const*) {
     return false;
 }
+template <class Ctx, class E, class Raise>
+constexpr bool may_raise(defer_action const*) {
+    return false;
+}
 template <class Ctx, class E, class Raise, class F>
 constexpr bool may_raise(action_fn<F> const*) {
     return std::is_invocable_v<F const&, Ctx&, E const&, Raise&>;
@@ -964,6 +1001,15 @@ template <class... Fs>
 constexpr auto seq(Fs... fs) {
     return detail::make_seq(std::tuple_cat(detail::as_tuple(std::move(fs))...));
 }
+
+/// The action of a row that defers its event (UML's deferred events, Boost.SML's `defer`):
+/// `state<S> + event<E> / bsc::defer`. Selected like any row (the deepest source first, then
+/// declaration order), it keeps the event, unless another region takes it with a transition in
+/// the same microstep; kept events are dispatched again, in the order they came, after the next
+/// transition that changes the configuration (docs/semantics.md, "Deferred events").
+/// Requirements: the row has an event trigger other than bsc::any_event and no target
+/// (bsc::error::invalid_deferral).
+inline constexpr detail::defer_action defer{};
 
 /// An action that raises `e` into the machine's internal queue; it is processed after
 /// the current step, before dispatch returns.
@@ -1176,6 +1222,8 @@ struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
     /// A local transition (`= bsc::local(state<T>)`): its source stays active.
     static constexpr bool local = target_parts<T>::local;
     static constexpr bool guarded = !std::is_same_v<G, no_guard>;
+    /// A row that defers its event (`/ bsc::defer`).
+    static constexpr bool defers = std::is_same_v<A, defer_action>;
     [[no_unique_address]] Trigger trigger_value;
     [[no_unique_address]] G guard;
     [[no_unique_address]] A action;
@@ -1977,6 +2025,7 @@ struct row_table {
     std::array<bool, R> guarded{};
     std::array<int, R> domain{};  // the transition domain (SCXML), no_state if internal
     std::array<bool, R> local{};  // declared local (bsc::local): its domain is its source
+    std::array<bool, R> defers{};  // defers its event (/ bsc::defer)
     // By event position (there are no more events than rows): the event's nearest family among
     // the chart's events (-1: none, -2: not a chain). All -1 in a chart without families.
     std::array<int, R> event_family{};
@@ -2098,6 +2147,7 @@ struct chart_model {
                     r.target[i] = state_index<typename Rs::target, tags>();
                     r.guarded[i] = Rs::guarded;
                     r.local[i] = Rs::local;
+                    r.defers[i] = Rs::defers;
                     using E = typename trigger_event<Rs>::type;
                     if constexpr (!std::is_void_v<E>) r.trigger[i] = index_of<E, events>;
                     if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
@@ -2120,6 +2170,12 @@ struct chart_model {
     // Whether some event of the chart has a family (a base class among the chart's events, or
     // bsc::any_event): only then can an event take rows of another type.
     static constexpr bool has_families = event_families<events>::any;
+    // Whether a row defers its event: only then does a machine keep deferred events.
+    static constexpr bool has_deferral = [] {
+        for (bool d : rows.defers)
+            if (d) return true;
+        return false;
+    }();
     // The trigger of event E: its position among the chart's events, or, for an event the chart
     // does not name, its nearest family's (-1: none; -2: its families are not a chain).
     template <class E>
@@ -2851,6 +2907,12 @@ enum class outcome : std::uint8_t {
 struct default_policy {
     /// Events an action may raise before the queue is drained; one more is an overflow.
     static constexpr std::size_t queue_capacity = 8;
+    /// Events a machine keeps deferred (`/ bsc::defer`) at once; one more is an overflow. Read
+    /// only for a chart with a deferring row.
+    static constexpr std::size_t deferred_capacity = 8;
+    /// Events sent with bsc::raise_after pending at once; one more is an overflow. Read only for
+    /// a chart whose actions send delayed events.
+    static constexpr std::size_t delayed_capacity = 8;
     /// Eventless transitions taken in a row before dispatch reports a livelock.
     static constexpr std::size_t max_eventless_steps = 64;
     /// Internal events processed within one dispatch before it reports a livelock.
@@ -2964,6 +3026,23 @@ public:
         visit_index<static_cast<int>(sizeof...(Es))>(static_cast<int>(item.index()) - 1,
                                                      [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
     }
+
+protected:
+    // Queues an item already held as the queue's variant (a delayed event coming due).
+    constexpr bool push_item(value_type const& item) {
+        if (size_ == Capacity) {
+            overflowed_ = true;
+            return false;
+        }
+        items_[(head_ + size_) % Capacity] = item;
+        ++size_;
+        return true;
+    }
+    // The chart's event an event E is queued as: E itself, or its nearest family (-1: none).
+    template <class E>
+    static constexpr int queued_as = index_in<E, Es...>() >= 0
+                                         ? index_in<E, Es...>()
+                                         : event_families<type_list<Es...>>::template trigger_of<E>();
 
 private:
     template <class E>
@@ -3220,6 +3299,16 @@ constexpr int find_misplaced_initial_action(topology<N> const& t, row_table<R> c
     return -1;
 }
 
+// The first row that defers but has no event trigger (eventless, a timeout), takes
+// bsc::any_event (which would keep only its tag), or has a target; -1 if none.
+template <std::size_t R>
+constexpr int find_invalid_deferral(row_table<R> const& r, int any_event_trigger) {
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.defers[i] && (r.trigger[i] < 0 || r.trigger[i] == any_event_trigger || r.target[i] >= 0))
+            return static_cast<int>(i);
+    return -1;
+}
+
 // The first local row whose target is not a proper descendant of its source, or -1.
 template <std::size_t N, std::size_t R>
 constexpr int find_misplaced_local(topology<N> const& t, row_table<R> const& r) {
@@ -3334,6 +3423,18 @@ constexpr auto check_local_targets() {
 }
 
 template <class Chart>
+constexpr auto check_deferrals() {
+    using model = chart_model<Chart>;
+    constexpr int row = find_invalid_deferral(model::rows, index_of<any_event, typename model::events>);
+    if constexpr (row >= 0) {
+        using R = typename model::template row_at<row>;
+        return type_list<row_error<Chart, row, error::invalid_deferral<typename R::source, typename trigger_type<R>::type>>>{};
+    } else {
+        return type_list<>{};
+    }
+}
+
+template <class Chart>
 constexpr auto check_initial_actions() {
     using model = chart_model<Chart>;
     constexpr int row = find_misplaced_initial_action(model::tree, model::rows);
@@ -3442,7 +3543,7 @@ constexpr auto check_chart() {
         return check_structure<Chart>();
     else
         // Each check runs, so one build reports every kind of problem it finds.
-        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_initial_actions<Chart>() +
+        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_initial_actions<Chart>() + check_deferrals<Chart>() +
                check_event_families<Chart>() +
                check_determinism<Chart>() + check_dead_transitions<Chart>() +
                check_reachability<Chart>() + check_livelock<Chart>() +
@@ -5676,6 +5777,25 @@ struct whole<T, true> {
     [[no_unique_address]] T value;
 };
 
+// The capacity of the deferred events of a machine: Policy::deferred_capacity for a chart that
+// defers, and for any other no member read (a policy written before it existed still works).
+template <class Policy, bool Defers>
+inline constexpr std::size_t deferred_capacity_of = 0;
+template <class Policy>
+inline constexpr std::size_t deferred_capacity_of<Policy, true> = Policy::deferred_capacity;
+
+// What a machine of a chart that defers keeps besides its deferred events: whether the
+// microstep under way selected a deferring row, or fired another transition; whether a
+// transition changed the configuration since the last round of retries; and how many deferred
+// events the current round still retries.
+struct deferral_state {
+    bool requested = false;
+    bool other_fired = false;
+    bool changed = false;
+    std::size_t retry = 0;
+};
+struct no_deferral {};
+
 // The record of failures of a machine none of whose guards and actions can throw.
 struct no_failure_slot {
     constexpr explicit operator bool() const { return false; }
@@ -5735,16 +5855,20 @@ private:
             clock_started_ = true;
             clock_ = now;
             for (auto& armed : armed_) armed = now;
+            if constexpr (delays) queue_.start_clock(now);
         } else if (now < clock_) {
             report.clock_went_backwards = true;
         } else {
             clock_ = now;
+            if constexpr (delays) queue_.set_clock(now);
         }
         notify<model, Observer>::cycle_begins(observer_.value, clock_);
         update_timers(context_.value, clock_);
         latch_inputs(context_.value);
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
+        // The delayed events due now, as raised events (bsc::raise_after).
+        if constexpr (delays) queue_.release_due(clock_);
         outcome const drained = drain_queue(report.transitions > 0);
         commit_outputs(context_.value);
         notify<model, Observer>::cycle_ends(observer_.value);
@@ -5895,6 +6019,27 @@ protected:
         }));
     }
 
+    // Whether the chart sends delayed events (bsc::raise_after): its queue keeps them.
+    static constexpr bool delays = requires(Queue& q) { q.release_due(duration{}); };
+
+    // ---- deferred events, called by the back ends ------------------------------------------
+    static constexpr bool defers = model::has_deferral;
+
+    // A deferring row was selected: its event is kept at the end of the microstep, unless
+    // another transition fired in it.
+    constexpr void deferral_selected() {
+        if constexpr (defers) deferral_.requested = true;
+    }
+    // A transition that does not defer fired; `changes`: it has a target.
+    constexpr void transition_fired(bool changes) {
+        if constexpr (defers) {
+            deferral_.other_fired = true;
+            if (changes) deferral_.changed = true;
+        } else {
+            (void)changes;
+        }
+    }
+
     // ---- completion (model/completion.hpp), called by the back ends ----------------------
     using completion = detail::completion<model>;
 
@@ -6041,9 +6186,42 @@ private:
     constexpr Backend& backend() { return static_cast<Backend&>(*this); }
     constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
 
+    // One microstep on an event (not on the eventless pseudo-event): where the chart defers,
+    // the event is kept if only deferring rows took it.
+    template <int Trigger, class E>
+    constexpr bool event_microstep(E const& e) {
+        if constexpr (defers) {
+            deferral_.requested = false;
+            deferral_.other_fired = false;
+            bool const fired = backend().template microstep<Trigger>(e);
+            if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
+            return fired;
+        } else {
+            return backend().template microstep<Trigger>(e);
+        }
+    }
+
+    // Processes one deferred event again, if a round of retries is under way, or if a
+    // transition has changed the configuration since the last round (which starts a round over
+    // every event kept, in the order they came). True if it processed one.
+    constexpr bool retry_deferred() {
+        if constexpr (defers) {
+            if (deferral_.retry == 0 && deferral_.changed) {
+                deferral_.changed = false;
+                deferral_.retry = deferred_.size();
+            }
+            if (deferral_.retry == 0) return false;
+            --deferral_.retry;
+            deferred_.pop([&](auto const& ev) { microstep_on(ev); });
+            return true;
+        } else {
+            return false;
+        }
+    }
+
     template <class E>
     constexpr void microstep_on(E const& e) {
-        bool const fired = backend().template microstep<model::template trigger_of<E>>(e);
+        bool const fired = event_microstep<model::template trigger_of<E>>(e);
         if constexpr (std::is_same_v<E, action_failed>)
             if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
     }
@@ -6148,7 +6326,7 @@ private:
     constexpr outcome dispatch_to_end(E const& e) {
         notify<model, Observer>::dispatching(observer_.value, e);
         latch_inputs(context_.value);
-        outcome const settled = finish(backend().template microstep<Trigger>(e));
+        outcome const settled = finish(event_microstep<Trigger>(e));
         commit_outputs(context_.value);
         return settled;
     }
@@ -6176,7 +6354,7 @@ private:
         if constexpr (!Policy::settle_eventless)
             return drain_queue(consumed);
         // The common case, kept inline: nothing raised, and no eventless transition to try.
-        if constexpr (!layout::has_trigger(eventless_id))
+        if constexpr (!layout::has_trigger(eventless_id) && !defers)
             if (queue_.empty() && !queue_.overflowed() && !(layout::can_halt && halted()))
                 return consumed ? outcome::consumed : outcome::ignored;
         return settle(consumed);
@@ -6191,8 +6369,19 @@ private:
                     if (++steps > Policy::max_eventless_steps)
                         return abandon();
             }
-            if (queue_.empty() || halted())
+            if (halted())
                 break;
+            if (queue_.empty()) {
+                // Then the deferred events, one at a time, each followed by its eventless
+                // transitions and what it raises.
+                if constexpr (defers) {
+                    if (deferral_.retry > 0 || deferral_.changed) {
+                        if (++internal_events > Policy::max_internal_events) return abandon();
+                        if (retry_deferred()) continue;
+                    }
+                }
+                break;
+            }
             if (++internal_events > Policy::max_internal_events)
                 return abandon();
             queue_.pop([&](auto const& ev) { microstep_on(ev); });
@@ -6203,16 +6392,35 @@ private:
     // The raised events of a cycle, each one microstep and no eventless settling, so that no
     // component fires twice in a cycle.
     constexpr outcome drain_queue(bool consumed) {
-        for (std::size_t n = 0; !queue_.empty() && !halted();) {
+        std::size_t n = 0;
+        for (; !queue_.empty() && !halted();) {
             if (++n > Policy::max_internal_events)
                 return abandon();
             queue_.pop([&](auto const& ev) { microstep_on(ev); });
+        }
+        if constexpr (defers) {
+            // The deferred events a transition of this cycle released, each one microstep.
+            while (!halted() && (deferral_.retry > 0 || deferral_.changed)) {
+                if (++n > Policy::max_internal_events) return abandon();
+                if (!retry_deferred()) break;
+                for (; !queue_.empty() && !halted();) {
+                    if (++n > Policy::max_internal_events) return abandon();
+                    queue_.pop([&](auto const& ev) { microstep_on(ev); });
+                }
+            }
         }
         return settled(consumed);
     }
 
     constexpr outcome settled(bool consumed) {
         halt_if_final();
+        if constexpr (defers) {
+            if (deferred_.overflowed()) {
+                deferred_.clear_overflow();
+                queue_.clear_overflow();
+                return outcome::queue_overflow;
+            }
+        }
         if (queue_.overflowed()) {
             queue_.clear_overflow();
             return outcome::queue_overflow;
@@ -6223,6 +6431,7 @@ private:
     constexpr outcome abandon() {
         queue_.clear();
         queue_.clear_overflow();
+        if constexpr (defers) deferral_.retry = 0;  // the deferred events stay, for a later change
         return outcome::livelock;
     }
 
@@ -6307,6 +6516,10 @@ protected:
     [[no_unique_address]] whole<context_type> context_;
     configuration_type config_{};
     [[no_unique_address]] entering_flags<completion::parallel_count> entering_;
+    // The events deferred (`/ bsc::defer`), oldest first, and the state of their retries.
+    [[no_unique_address]] std::conditional_t<
+        defers, event_queue<deferred_capacity_of<Policy, defers>, typename model::events>, no_deferral> deferred_;
+    [[no_unique_address]] std::conditional_t<defers, deferral_state, no_deferral> deferral_;
     // The outcome of the last run (low bits) and the mark of a run under way (running_bit). An
     // enumeration and not a std::uint8_t: a store through an unsigned char may alias any object,
     // so the compiler would reload the context after every mark.
@@ -6325,6 +6538,185 @@ protected:
 
 #include <type_traits>
 
+// begin include/bsc/dsl/delayed.hpp
+// Delayed events to self: the actions bsc::raise_after and bsc::cancel_delayed. They reach the
+// machine's pending events (runtime/delayed_events.hpp) through the raise argument that every
+// action receives; a chart that uses them gets a queue with slots for them (runtime/queue_for.hpp).
+
+#include <chrono>
+#include <type_traits>
+#include <utility>
+
+
+namespace bsc::detail {
+
+// bsc::raise_after and bsc::cancel_delayed: actions that reach the machine's delayed events
+// (runtime/delayed_events.hpp) through the raise argument.
+template <class E>
+struct delayed_raise : action_base {
+    duration delay;
+    E event;
+    int id;
+    template <class Ctx, class Ev, class Raise>
+    constexpr void operator()(Ctx&, Ev const&, Raise& raise) const noexcept(std::is_nothrow_copy_constructible_v<E>) {
+        (void)raise.schedule(delay, event, id);
+    }
+};
+struct cancel_delayed_action : action_base {
+    int id;
+    template <class Ctx, class Ev, class Raise>
+    constexpr void operator()(Ctx&, Ev const&, Raise& raise) const noexcept {
+        raise.cancel(id);
+    }
+};
+
+template <class A>
+inline constexpr bool is_delayed_raise = false;
+template <class E>
+inline constexpr bool is_delayed_raise<delayed_raise<E>> = true;
+
+// Whether an action sends or cancels delayed events: then the machine keeps slots for them.
+template <class A>
+inline constexpr bool sends_delayed = false;
+template <class E>
+inline constexpr bool sends_delayed<delayed_raise<E>> = true;
+template <>
+inline constexpr bool sends_delayed<cancel_delayed_action> = true;
+template <class... As>
+inline constexpr bool sends_delayed<action_seq<As...>> = (sends_delayed<As> || ...);
+template <class A>
+inline constexpr bool sends_delayed<state_action<A>> = sends_delayed<A>;
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// An action that raises `e` to the machine after `delay` (SCXML's `<send delay>` to itself):
+/// the first `step(now)` whose time is at least the machine's clock when the action ran plus
+/// `delay` processes it, after the components' turns, as a raised event. It is not tied to the
+/// state that sent it; `bsc::cancel_delayed(id)` cancels it while it is pending (an id of 0 is
+/// none). The machine keeps `Policy::delayed_capacity` pending events; one more is dropped and
+/// the run reports `outcome::queue_overflow`.
+/// Requirements: `e` is an event of the chart (or of a family of one); 0 <= delay.
+template <class Rep, class Period, class E>
+constexpr auto raise_after(std::chrono::duration<Rep, Period> delay, E e, int id = 0) {
+    if (delay < std::chrono::duration<Rep, Period>::zero()) detail::bsc_after_negative_delay();
+    return detail::delayed_raise<E>{{}, std::chrono::duration_cast<duration>(delay), std::move(e), id};
+}
+
+/// An action that cancels the delayed events still pending under `id` (bsc::raise_after).
+constexpr auto cancel_delayed(int id) { return detail::cancel_delayed_action{{}, id}; }
+
+}  // namespace bsc
+// end include/bsc/dsl/delayed.hpp
+// begin include/bsc/runtime/delayed_events.hpp
+// Delayed events to self (SCXML's <send delay> to the machine): bsc::raise_after(delay, e, id)
+// schedules e, bsc::cancel_delayed(id) cancels what was scheduled under id. The internal queue
+// of a chart that sends them (runtime/queue_for.hpp) is a delaying_queue: the ring of raised
+// events plus a fixed number of slots, each an event with the time it comes due. step(now)
+// moves the events due into the ring, earliest first; a pending event does not belong to the
+// state that sent it, so leaving that state does not cancel it.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+
+namespace bsc::detail {
+
+template <std::size_t Capacity, std::size_t Slots, class Events>
+class delaying_queue;
+
+template <std::size_t Capacity, std::size_t Slots, class... Es>
+class delaying_queue<Capacity, Slots, type_list<Es...>> : public event_queue<Capacity, type_list<Es...>> {
+    using base = event_queue<Capacity, type_list<Es...>>;
+
+public:
+    using typename base::value_type;
+
+    /// Schedules e to come due `delay` after the machine's clock (the time of its last cycle).
+    /// False, and an overflow reported at the end of the run, if every slot is taken.
+    template <class E>
+    constexpr bool schedule(duration delay, E const& e, int id) noexcept(std::is_nothrow_copy_constructible_v<E>) {
+        constexpr int as = base::template queued_as<E>;
+        if constexpr (as < 0) {
+            detail::report<error::raised_event_not_in_chart<E>>();
+            return false;
+        } else {
+            using F = at<static_cast<std::size_t>(as), type_list<Es...>>;
+            for (auto& s : slots_)
+                if (!s.pending) {
+                    s.pending = true;
+                    s.due = delay > duration::max() - clock_ ? duration::max() : clock_ + delay;
+                    s.order = sent_++;
+                    s.id = id;
+                    s.event = value_type{std::in_place_type<F>, event_as<F>(e)};
+                    return true;
+                }
+            delayed_overflow_ = true;
+            return false;
+        }
+    }
+
+    /// Cancels every pending event scheduled under `id` (0: none).
+    constexpr void cancel(int id) noexcept {
+        if (id == 0) return;
+        for (auto& s : slots_)
+            if (s.pending && s.id == id) s.pending = false;
+    }
+
+    /// The number of events pending.
+    constexpr std::size_t pending() const {
+        std::size_t n = 0;
+        for (auto const& s : slots_) n += s.pending ? 1 : 0;
+        return n;
+    }
+
+    // ---- for the machine -----------------------------------------------------------------------
+    constexpr void set_clock(duration now) { clock_ = now; }
+    // The machine's clock started at `now` (its first cycle): what was scheduled before counts
+    // from there, as the timeouts armed before it do.
+    constexpr void start_clock(duration now) {
+        for (auto& s : slots_)
+            if (s.pending) s.due = s.due > duration::max() - now ? duration::max() : s.due + now;
+        clock_ = now;
+    }
+    // Moves the events due at `now` into the queue of raised events, earliest first, and among
+    // those due at once in the order they were sent.
+    constexpr void release_due(duration now) {
+        for (;;) {
+            slot* next = nullptr;
+            for (auto& s : slots_)
+                if (s.pending && s.due <= now && (next == nullptr || s.due < next->due || (s.due == next->due && s.order < next->order)))
+                    next = &s;
+            if (next == nullptr) return;
+            next->pending = false;
+            (void)this->push_item(next->event);
+        }
+    }
+    constexpr bool overflowed() const { return base::overflowed() || delayed_overflow_; }
+    constexpr void clear_overflow() {
+        base::clear_overflow();
+        delayed_overflow_ = false;
+    }
+
+private:
+    struct slot {
+        bool pending = false;
+        duration due{};
+        std::uint32_t order = 0;
+        int id = 0;
+        value_type event{};
+    };
+    std::array<slot, Slots> slots_{};
+    duration clock_{};
+    std::uint32_t sent_ = 0;
+    bool delayed_overflow_ = false;
+};
+
+}  // namespace bsc::detail
+// end include/bsc/runtime/delayed_events.hpp
 
 namespace bsc::detail {
 // Whether any action of the chart can raise an event; if none can, the machine has no queue.
@@ -6338,17 +6730,32 @@ constexpr bool chart_may_raise() {
     }(typename Model::row_types{});
 }
 
-// The queue of a machine of the chart (either back end): a bounded queue of the chart's events
-// if an action can raise, or the chart takes bsc::action_failed or a bsc::done event (which the
-// machine raises);
-// otherwise none, and no test for raised events after a microstep.
-template <class Chart, class Policy>
-using queue_for =
+// Whether an action of the chart sends or cancels delayed events (bsc::raise_after): then its
+// queue keeps slots for them.
+template <class Model>
+constexpr bool chart_sends_delayed() {
+    return []<class... Rows>(type_list<Rows...>) {
+        return (sends_delayed<std::remove_cv_t<decltype(Rows::action)>> || ...);
+    }(typename Model::row_types{});
+}
+template <class Policy, bool Sends>
+inline constexpr std::size_t delayed_capacity_of = 0;
+template <class Policy>
+inline constexpr std::size_t delayed_capacity_of<Policy, true> = Policy::delayed_capacity;
+
+// The queue of a machine of the chart (either back end): with slots for delayed events if an
+// action sends them; a bounded queue of the chart's events if an action can raise, or the chart
+// takes bsc::action_failed or a bsc::done event (which the machine raises); otherwise none, and
+// no test for raised events after a microstep.
+template <class Chart, class Policy, class Model = chart_model<std::remove_cv_t<Chart>>,
+          bool Delays = chart_sends_delayed<Model>()>
+using queue_for = std::conditional_t<
+    Delays, delaying_queue<Policy::queue_capacity, delayed_capacity_of<Policy, Delays>, typename Model::events>,
     std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
                            chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0 ||
                            completion<chart_model<std::remove_cv_t<Chart>>>::raises,
                        event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
-                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>;
+                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>>;
 }  // namespace bsc::detail
 // end include/bsc/runtime/queue_for.hpp
 // begin include/bsc/runtime/rejected.hpp
@@ -6731,6 +7138,13 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
+        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, event_microstep)
+            notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
+            this->deferral_selected();
+            return;
+        } else if constexpr (base::defers) {
+            this->transition_fired(rows.domain[Row] >= 0);
+        }
         if constexpr (sees_itself<Row, E>) {
             notify::template transition<Row>(observer_.value, row<Row>(), e);
             if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
@@ -7218,6 +7632,7 @@ struct transition_row {
     /// A timeout's slot: where the machine keeps the time its delay counts from (its origin's
     /// entry, or for an internal timeout the cycle it last fired in); -1 for the others.
     std::int16_t timeout_slot = -1;
+    bool defers = false;  ///< the row defers its event (`/ bsc::defer`): it keeps the event, and has no action
 };
 
 /// The operation rules of `Chart`: its topology table `states` and transition table
@@ -7345,6 +7760,8 @@ private:
         if constexpr (bsc::detail::is_timeout_row<R>)
             row.delay = &delay_thunk<r>;
         row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
+        row.defers = rows.defers[i];
+        if (row.defers) row.action = nullptr;
         return row;
     }
 
@@ -7787,6 +8204,13 @@ private:
     void run_action(std::int16_t t, void const* e) {
         if constexpr (observed)
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_.value, this->chart(), e);
+        if constexpr (base::defers) {
+            if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's event_microstep)
+                this->deferral_selected();
+                return;
+            }
+            this->transition_fired(transitions[static_cast<std::size_t>(t)].to != no_state);
+        }
         if (auto const action = transitions[static_cast<std::size_t>(t)].action)
             this->run([&] { action(this->chart(), this->context_.value, e, this->queue_); });
     }

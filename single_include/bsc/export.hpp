@@ -154,6 +154,15 @@ template <class A>
 expression action_expression(A const& a) {
     if constexpr (has_name<A>) {
         return {std::string(std::string_view{a.name}), true, 3};
+    } else if constexpr (std::is_same_v<A, defer_action>) {
+        return {"defer", true, 3};
+    } else if constexpr (is_delayed_raise<A>) {
+        std::string text = "raise_after(" + delay_label(a.delay) + ", " +
+                           std::string(event_name<std::remove_cvref_t<decltype(a.event)>>);
+        if (a.id != 0) text += ", " + std::to_string(a.id);
+        return {text + ")", true, 3};
+    } else if constexpr (std::is_same_v<A, cancel_delayed_action>) {
+        return {"cancel_delayed(" + std::to_string(a.id) + ")", true, 3};
     } else if constexpr (is_action_seq<A>) {
         expression out{"", false, 3};
         std::apply(
@@ -245,6 +254,7 @@ struct transition_info {
     std::string guard;  ///< empty if unguarded
     std::string action;  ///< empty if no action
     bool local = false;  ///< a local transition (bsc::local): its source stays active
+    bool defers = false;  ///< a row that defers its event (`/ bsc::defer`)
 
     /// "event [guard] / action", with the parts that exist, and "(local)" for a local one.
     std::string label() const {
@@ -349,6 +359,7 @@ void add_row(diagram& m, Row const& row, int index, int source) {
         if constexpr (Row::guarded) t.guard = guard_label(row.guard);
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row.action)>, no_action>)
             t.action = action_label(row.action);
+        t.defers = Row::defers;
         m.transitions.push_back(std::move(t));
     }
 }
@@ -751,6 +762,7 @@ std::string to_plantuml(Chart const& chart) {
 //   - bsc::done<S> is the event done.state.S, bsc::any_event the descriptor "*", and an event
 //     whose type derives from another's takes its rows only if its name extends theirs
 //     (name events "error" and "error.send" to keep the families SCXML's);
+//   - a row that defers its event (`/ bsc::defer`) is a comment: SCXML has no deferral;
 //   - actions, and entry and exit actions (<onentry>, <onexit>), are <script> placeholders that
 //     name the action in a comment.
 // A chart that halts (a final child of its root) leaves its root on done.state.Root for a
@@ -814,6 +826,10 @@ inline std::string event_descriptor(std::string_view name) {
 
 inline void scxml_transition(diagram const& m, transition_info const& t, int level, std::string& out) {
     auto const pad = indent(level);
+    if (t.defers) {  // SCXML has no deferral: a comment in its place
+        out += pad + "<!-- " + scxml_comment(t.label()) + ": the event is deferred (UML), which SCXML cannot say -->\n";
+        return;
+    }
     if (t.trigger == trigger_kind::timeout)
         out += pad + "<!-- " + t.event + ": a timeout, enabled once " + scxml_comment(m[t.source].label) +
                " has been active for " + t.delay + " -->\n";

@@ -345,6 +345,9 @@ constexpr std::size_t size_of() {
     if constexpr (not_retained<T>) {
         return 0;
     } else if constexpr (is_machine<T>) {
+        if constexpr (chart_model<typename T::chart_type>::has_deferral ||
+                      chart_sends_delayed<chart_model<typename T::chart_type>>())
+            detail::report<error::pending_events_not_encoded<typename T::chart_type>>();
         return machine_size<T>();
     } else if constexpr (is_channel<T>) {
         return 2 * size_of<channel_value<T>>();

@@ -362,7 +362,7 @@ struct halting {
 };
 
 // ---- beyond the core: a local transition, event families, any_event, done events, an initial
-// action, a history state -----------------------------------------------------------------------
+// action, a history state, deferred and delayed events ------------------------------------------
 namespace beyond {
 // A family: a row on fam takes fam_a and fam_b; fam_b is named by no row (the twin dispatches
 // it as one of the fixture's extra events, and an action raises it).
@@ -409,6 +409,9 @@ struct beyond_core {
             state<X1> + event<tick> = state<XF>, state<Y1> + event<ping> = state<YF>,
             state<R1> + event<bsc::done<R1>> / note<5>, state<P> + event<bsc::done<P>> / note<4> = state<C>,
             state<P> + event<back> = state<C>,
+            state<C> + event<tick> / bsc::defer, state<W1> + event<tick>[a_even] / bsc::defer,
+            state<W2> + event<pong> / bsc::raise_after(std::chrono::milliseconds{30}, ping{}, 2),
+            state<W1> + event<pong> / bsc::cancel_delayed(2),
             state<C> + event<fam_a> / inc_b = state<W>, state<C> + event<fam> / note<6> = state<F>,
             state<C> + event<bsc::any_event>[a_even] / note<7>, state<C> + event<pong> = state<WH>,
             state<W> + bsc::on_initial / note<15>, state<WH> + bsc::on_initial / note<16>,

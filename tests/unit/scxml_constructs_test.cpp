@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -441,4 +442,172 @@ TEST_CASE("the explorer covers history states and done events") {
     auto const done_report = bsc::verify::coverage(done_ex, fired_done);
     CHECK(done_report.dead_states.empty());
     CHECK(done_report.dead_transitions.empty());
+}
+
+// ---- deferred events --------------------------------------------------------------------------
+
+namespace beyond {
+struct job {
+    int n = 0;
+};
+struct start {};
+struct finish {};
+struct Busy;
+struct Busy2;
+inline constexpr auto record_job = bsc::action([](ctx& c, job const& j) {
+    if (!c.log.empty()) c.log += ' ';
+    c.log += "job " + std::to_string(j.n);
+});
+inline constexpr auto defer_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Busy>, bsc::state<Busy2>),
+    bsc::state<Idle> + bsc::event<start> = bsc::state<Busy>,
+    bsc::state<Idle> + bsc::event<job> / record_job,
+    bsc::state<Busy> + bsc::event<job> / bsc::defer,
+    bsc::state<Busy> + bsc::event<go> = bsc::state<Busy2>,
+    bsc::state<Busy2> + bsc::event<job>[([](ctx const&, job const& j) { return j.n > 1; })] / bsc::defer,
+    bsc::state<Busy2> + bsc::event<job> / record_job,
+    bsc::state<Busy> + bsc::event<finish> = bsc::state<Idle>,
+    bsc::state<Busy2> + bsc::event<finish> = bsc::state<Idle>);
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("a deferred event waits, and is dispatched again after the next change of configuration, in order",
+                   Backend, compiled, table) {
+    machine_t<Backend, decltype(defer_chart)> m{defer_chart, ctx{}};
+    m.dispatch(start{});
+    CHECK(m.dispatch(job{1}) == bsc::outcome::consumed);
+    CHECK(m.dispatch(job{2}) == bsc::outcome::consumed);
+    CHECK(m.dispatch(job{3}) == bsc::outcome::consumed);
+    CHECK(m.context().log.empty());
+    // Busy2 defers only the jobs above 1: job 1 is taken there, 2 and 3 wait on.
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "job 1");
+    CHECK(m.dispatch(finish{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "job 1 job 2 job 3");
+    CHECK(m.template is<Idle>());
+    // Nothing is kept any more.
+    m.dispatch(start{});
+    m.dispatch(finish{});
+    CHECK(m.context().log == "job 1 job 2 job 3");
+}
+
+TEST_CASE_TEMPLATE("deferring more events than the policy keeps reports an overflow and drops the newest", Backend,
+                   compiled, table) {
+    machine_t<Backend, decltype(defer_chart)> m{defer_chart, ctx{}};
+    m.dispatch(start{});
+    for (int i = 1; i <= static_cast<int>(bsc::default_policy::deferred_capacity); ++i)
+        CHECK(m.dispatch(job{i}) == bsc::outcome::consumed);
+    CHECK(m.dispatch(job{99}) == bsc::outcome::queue_overflow);
+    m.dispatch(finish{});
+    CHECK(m.context().log == "job 1 job 2 job 3 job 4 job 5 job 6 job 7 job 8");
+}
+
+namespace beyond {
+struct Left;
+struct Right;
+struct L1;
+struct L2;
+struct R1b;
+struct R2b;
+struct Par;
+inline constexpr auto defer_parallel_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(
+        bsc::initial<Par>,
+        bsc::parallel<Par>(bsc::composite<Left>(bsc::initial<L1>, bsc::state<L1>, bsc::state<L2>),
+                           bsc::composite<Right>(bsc::initial<R1b>, bsc::state<R1b>, bsc::state<R2b>))),
+    bsc::state<L1> + bsc::event<job> / bsc::defer, bsc::state<L1> + bsc::event<go> = bsc::state<L2>,
+    bsc::state<L2> + bsc::event<job> / record_job, bsc::state<L2> + bsc::event<back> = bsc::state<L1>,
+    bsc::state<R1b> + bsc::event<job>[([](ctx const&, job const& j) { return j.n == 7; })] = bsc::state<R2b>,
+    bsc::state<R2b> + bsc::event<back> = bsc::state<R1b>);
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("an event another region takes with a transition is not deferred", Backend, compiled, table) {
+    machine_t<Backend, decltype(defer_parallel_chart)> m{defer_parallel_chart, ctx{}};
+    CHECK(m.dispatch(job{7}) == bsc::outcome::consumed);  // Right takes it: L1's deferral does not keep it
+    CHECK(m.template is<R2b>());
+    CHECK(m.dispatch(job{5}) == bsc::outcome::consumed);  // only L1 takes it: kept
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);    // L1 -> L2 releases it
+    CHECK(m.context().log == "job 5");
+}
+
+TEST_CASE("a deferring row is drawn with / defer, and is a comment in SCXML, which has no deferral") {
+    CHECK(bsc::to_mermaid(defer_chart).find("Busy : job / defer") != std::string::npos);
+    CHECK(bsc::to_scxml(defer_chart).find("<!-- job / defer: the event is deferred (UML), which SCXML cannot say -->") !=
+          std::string::npos);
+}
+
+// ---- delayed events to self ------------------------------------------------------------------
+
+namespace beyond {
+struct tick {};
+struct start_again {};
+struct Wait;
+struct Rang;
+inline constexpr auto delayed_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Wait>, bsc::state<Rang>),
+    bsc::state<Idle> + bsc::event<start> / bsc::raise_after(std::chrono::seconds{2}, tick{}, 1) = bsc::state<Wait>,
+    bsc::state<Idle> + bsc::event<start_again> / bsc::raise_after(std::chrono::seconds{1}, tick{}) = bsc::state<Wait>,
+    bsc::state<Wait> + bsc::event<tick> / log("tick") = bsc::state<Rang>,
+    bsc::state<Wait> + bsc::event<finish> / bsc::cancel_delayed(1) = bsc::state<Idle>,
+    bsc::state<Wait> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<Rang> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<Idle> + bsc::event<tick> / log("late tick"));
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("a delayed event comes due in the first cycle at or after its delay, and can be cancelled by its id",
+                   Backend, compiled, table) {
+    using namespace std::chrono_literals;
+    SUBCASE("delivered by step(now), after the delay from the clock of the run that sent it") {
+        machine_t<Backend, decltype(delayed_chart)> m{delayed_chart, ctx{}};
+        m.step(10s);
+        CHECK(m.dispatch(start{}) == bsc::outcome::consumed);
+        m.step(11s);
+        CHECK(m.template is<Wait>());
+        CHECK(m.step(12s).status == bsc::outcome::ignored);  // the tick's microstep is a raised event's
+        CHECK(m.context().log == "tick");
+        CHECK(m.template is<Rang>());
+    }
+    SUBCASE("cancelled while pending: never delivered") {
+        machine_t<Backend, decltype(delayed_chart)> m{delayed_chart, ctx{}};
+        m.step(0s);
+        m.dispatch(start{});
+        m.dispatch(finish{});
+        m.step(5s);
+        CHECK(m.context().log.empty());
+        CHECK(m.template is<Idle>());
+    }
+    SUBCASE("not tied to the state that sent it: leaving it does not cancel it") {
+        machine_t<Backend, decltype(delayed_chart)> m{delayed_chart, ctx{}};
+        m.step(0s);
+        m.dispatch(start_again{});
+        m.dispatch(back{});
+        m.step(1s);
+        CHECK(m.context().log == "late tick");
+    }
+    SUBCASE("sent before the first cycle: counted from the first cycle, as timeouts are") {
+        machine_t<Backend, decltype(delayed_chart)> m{delayed_chart, ctx{}};
+        m.dispatch(start{});
+        m.step(100s);
+        m.step(101s);
+        CHECK(m.template is<Wait>());
+        m.step(102s);
+        CHECK(m.template is<Rang>());
+    }
+    SUBCASE("more pending events than the policy keeps: an overflow, and the newest dropped") {
+        machine_t<Backend, decltype(delayed_chart)> m{delayed_chart, ctx{}};
+        m.step(0s);
+        for (std::size_t i = 0; i < bsc::default_policy::delayed_capacity; ++i) {
+            CHECK(m.dispatch(start_again{}) == bsc::outcome::consumed);
+            m.dispatch(back{});
+        }
+        CHECK(m.dispatch(start_again{}) == bsc::outcome::queue_overflow);
+        m.dispatch(back{});
+        m.step(1s);  // eight ticks come due in Idle
+        CHECK(m.context().log == "late tick late tick late tick late tick late tick late tick late tick late tick");
+    }
+}
+
+TEST_CASE("a delayed event and its cancellation are labelled in the exports") {
+    auto const mermaid = bsc::to_mermaid(delayed_chart);
+    CHECK(mermaid.find("Idle --> Wait : start / raise_after(2s, tick, 1)") != std::string::npos);
+    CHECK(mermaid.find("Wait --> Idle : finish / cancel_delayed(1)") != std::string::npos);
 }

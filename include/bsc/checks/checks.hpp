@@ -117,6 +117,18 @@ constexpr auto check_local_targets() {
 }
 
 template <class Chart>
+constexpr auto check_deferrals() {
+    using model = chart_model<Chart>;
+    constexpr int row = find_invalid_deferral(model::rows, index_of<any_event, typename model::events>);
+    if constexpr (row >= 0) {
+        using R = typename model::template row_at<row>;
+        return type_list<row_error<Chart, row, error::invalid_deferral<typename R::source, typename trigger_type<R>::type>>>{};
+    } else {
+        return type_list<>{};
+    }
+}
+
+template <class Chart>
 constexpr auto check_initial_actions() {
     using model = chart_model<Chart>;
     constexpr int row = find_misplaced_initial_action(model::tree, model::rows);
@@ -225,7 +237,7 @@ constexpr auto check_chart() {
         return check_structure<Chart>();
     else
         // Each check runs, so one build reports every kind of problem it finds.
-        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_initial_actions<Chart>() +
+        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_initial_actions<Chart>() + check_deferrals<Chart>() +
                check_event_families<Chart>() +
                check_determinism<Chart>() + check_dead_transitions<Chart>() +
                check_reachability<Chart>() + check_livelock<Chart>() +

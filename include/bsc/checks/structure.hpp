@@ -77,6 +77,16 @@ constexpr int find_misplaced_initial_action(topology<N> const& t, row_table<R> c
     return -1;
 }
 
+// The first row that defers but has no event trigger (eventless, a timeout), takes
+// bsc::any_event (which would keep only its tag), or has a target; -1 if none.
+template <std::size_t R>
+constexpr int find_invalid_deferral(row_table<R> const& r, int any_event_trigger) {
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.defers[i] && (r.trigger[i] < 0 || r.trigger[i] == any_event_trigger || r.target[i] >= 0))
+            return static_cast<int>(i);
+    return -1;
+}
+
 // The first local row whose target is not a proper descendant of its source, or -1.
 template <std::size_t N, std::size_t R>
 constexpr int find_misplaced_local(topology<N> const& t, row_table<R> const& r) {

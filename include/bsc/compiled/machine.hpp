@@ -300,6 +300,13 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
+        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, event_microstep)
+            notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
+            this->deferral_selected();
+            return;
+        } else if constexpr (base::defers) {
+            this->transition_fired(rows.domain[Row] >= 0);
+        }
         if constexpr (sees_itself<Row, E>) {
             notify::template transition<Row>(observer_.value, row<Row>(), e);
             if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)

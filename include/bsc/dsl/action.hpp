@@ -15,6 +15,13 @@ struct action_base {};  // marks bsc action wrappers, so operator, applies to th
 template <class A>
 concept bsc_action = std::is_base_of_v<action_base, A>;
 
+// What bsc::defer is: the "action" of a row that defers its event. The machines recognise it
+// by its type and keep the event instead of calling it; it runs nothing itself.
+struct defer_action {
+    template <class Ctx, class E, class Raise>
+    constexpr void operator()(Ctx&, E const&, Raise&) const noexcept {}
+};
+
 template <class F>
 struct action_fn : action_base {
     [[no_unique_address]] F fn;
@@ -36,7 +43,7 @@ struct action_seq : action_base {
 
 template <class A>
 constexpr auto as_action(A a) {
-    if constexpr (bsc_action<A>)
+    if constexpr (bsc_action<A> || std::is_same_v<A, defer_action>)
         return a;
     else
         return action_fn<A>{{}, std::move(a)};
@@ -44,6 +51,9 @@ constexpr auto as_action(A a) {
 
 template <class A>
 constexpr auto as_tuple(A a) {
+    static_assert(!std::is_same_v<A, defer_action>,
+                  "bsc::defer is a row's whole action: `state<S> + event<E> / bsc::defer`; it does not sequence with "
+                  "other actions");
     if constexpr (requires { a.actions; })
         return a.actions;
     else
@@ -65,6 +75,7 @@ struct no_action {
     template <class Ctx, class E, class Raise>
     constexpr void operator()(Ctx&, E const&, Raise&) const noexcept {}
 };
+
 
 // The event a bsc action sees when it runs as an entry or exit action.
 struct state_change {};
@@ -100,6 +111,10 @@ template <class Ctx, class E, class Raise>
 constexpr bool may_raise(no_action const*) {
     return false;
 }
+template <class Ctx, class E, class Raise>
+constexpr bool may_raise(defer_action const*) {
+    return false;
+}
 template <class Ctx, class E, class Raise, class F>
 constexpr bool may_raise(action_fn<F> const*) {
     return std::is_invocable_v<F const&, Ctx&, E const&, Raise&>;
@@ -131,6 +146,15 @@ template <class... Fs>
 constexpr auto seq(Fs... fs) {
     return detail::make_seq(std::tuple_cat(detail::as_tuple(std::move(fs))...));
 }
+
+/// The action of a row that defers its event (UML's deferred events, Boost.SML's `defer`):
+/// `state<S> + event<E> / bsc::defer`. Selected like any row (the deepest source first, then
+/// declaration order), it keeps the event, unless another region takes it with a transition in
+/// the same microstep; kept events are dispatched again, in the order they came, after the next
+/// transition that changes the configuration (docs/semantics.md, "Deferred events").
+/// Requirements: the row has an event trigger other than bsc::any_event and no target
+/// (bsc::error::invalid_deferral).
+inline constexpr detail::defer_action defer{};
 
 /// An action that raises `e` into the machine's internal queue; it is processed after
 /// the current step, before dispatch returns.

@@ -105,6 +105,8 @@ struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
     /// A local transition (`= bsc::local(state<T>)`): its source stays active.
     static constexpr bool local = target_parts<T>::local;
     static constexpr bool guarded = !std::is_same_v<G, no_guard>;
+    /// A row that defers its event (`/ bsc::defer`).
+    static constexpr bool defers = std::is_same_v<A, defer_action>;
     [[no_unique_address]] Trigger trigger_value;
     [[no_unique_address]] G guard;
     [[no_unique_address]] A action;

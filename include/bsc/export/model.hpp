@@ -20,6 +20,7 @@
 #include <boost/hana/basic_tuple.hpp>
 
 #include <bsc/detail/delay_label.hpp>
+#include <bsc/dsl/delayed.hpp>
 #include <bsc/model/chart_model.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/dsl/action.hpp>
@@ -109,6 +110,15 @@ template <class A>
 expression action_expression(A const& a) {
     if constexpr (has_name<A>) {
         return {std::string(std::string_view{a.name}), true, 3};
+    } else if constexpr (std::is_same_v<A, defer_action>) {
+        return {"defer", true, 3};
+    } else if constexpr (is_delayed_raise<A>) {
+        std::string text = "raise_after(" + delay_label(a.delay) + ", " +
+                           std::string(event_name<std::remove_cvref_t<decltype(a.event)>>);
+        if (a.id != 0) text += ", " + std::to_string(a.id);
+        return {text + ")", true, 3};
+    } else if constexpr (std::is_same_v<A, cancel_delayed_action>) {
+        return {"cancel_delayed(" + std::to_string(a.id) + ")", true, 3};
     } else if constexpr (is_action_seq<A>) {
         expression out{"", false, 3};
         std::apply(
@@ -200,6 +210,7 @@ struct transition_info {
     std::string guard;  ///< empty if unguarded
     std::string action;  ///< empty if no action
     bool local = false;  ///< a local transition (bsc::local): its source stays active
+    bool defers = false;  ///< a row that defers its event (`/ bsc::defer`)
 
     /// "event [guard] / action", with the parts that exist, and "(local)" for a local one.
     std::string label() const {
@@ -304,6 +315,7 @@ void add_row(diagram& m, Row const& row, int index, int source) {
         if constexpr (Row::guarded) t.guard = guard_label(row.guard);
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row.action)>, no_action>)
             t.action = action_label(row.action);
+        t.defers = Row::defers;
         m.transitions.push_back(std::move(t));
     }
 }

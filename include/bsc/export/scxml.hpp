@@ -15,6 +15,7 @@
 //   - bsc::done<S> is the event done.state.S, bsc::any_event the descriptor "*", and an event
 //     whose type derives from another's takes its rows only if its name extends theirs
 //     (name events "error" and "error.send" to keep the families SCXML's);
+//   - a row that defers its event (`/ bsc::defer`) is a comment: SCXML has no deferral;
 //   - actions, and entry and exit actions (<onentry>, <onexit>), are <script> placeholders that
 //     name the action in a comment.
 // A chart that halts (a final child of its root) leaves its root on done.state.Root for a
@@ -79,6 +80,10 @@ inline std::string event_descriptor(std::string_view name) {
 
 inline void scxml_transition(diagram const& m, transition_info const& t, int level, std::string& out) {
     auto const pad = indent(level);
+    if (t.defers) {  // SCXML has no deferral: a comment in its place
+        out += pad + "<!-- " + scxml_comment(t.label()) + ": the event is deferred (UML), which SCXML cannot say -->\n";
+        return;
+    }
     if (t.trigger == trigger_kind::timeout)
         out += pad + "<!-- " + t.event + ": a timeout, enabled once " + scxml_comment(m[t.source].label) +
                " has been active for " + t.delay + " -->\n";

@@ -182,6 +182,7 @@ struct row_table {
     std::array<bool, R> guarded{};
     std::array<int, R> domain{};  // the transition domain (SCXML), no_state if internal
     std::array<bool, R> local{};  // declared local (bsc::local): its domain is its source
+    std::array<bool, R> defers{};  // defers its event (/ bsc::defer)
     // By event position (there are no more events than rows): the event's nearest family among
     // the chart's events (-1: none, -2: not a chain). All -1 in a chart without families.
     std::array<int, R> event_family{};
@@ -303,6 +304,7 @@ struct chart_model {
                     r.target[i] = state_index<typename Rs::target, tags>();
                     r.guarded[i] = Rs::guarded;
                     r.local[i] = Rs::local;
+                    r.defers[i] = Rs::defers;
                     using E = typename trigger_event<Rs>::type;
                     if constexpr (!std::is_void_v<E>) r.trigger[i] = index_of<E, events>;
                     if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
@@ -325,6 +327,12 @@ struct chart_model {
     // Whether some event of the chart has a family (a base class among the chart's events, or
     // bsc::any_event): only then can an event take rows of another type.
     static constexpr bool has_families = event_families<events>::any;
+    // Whether a row defers its event: only then does a machine keep deferred events.
+    static constexpr bool has_deferral = [] {
+        for (bool d : rows.defers)
+            if (d) return true;
+        return false;
+    }();
     // The trigger of event E: its position among the chart's events, or, for an event the chart
     // does not name, its nearest family's (-1: none; -2: its families are not a chain).
     template <class E>

@@ -33,6 +33,7 @@
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/runtime/context_data.hpp>
+#include <bsc/runtime/event_queue.hpp>
 #include <bsc/runtime/failures.hpp>
 #include <bsc/runtime/notify.hpp>
 
@@ -127,6 +128,25 @@ struct whole<T, true> {
     [[no_unique_address]] T value;
 };
 
+// The capacity of the deferred events of a machine: Policy::deferred_capacity for a chart that
+// defers, and for any other no member read (a policy written before it existed still works).
+template <class Policy, bool Defers>
+inline constexpr std::size_t deferred_capacity_of = 0;
+template <class Policy>
+inline constexpr std::size_t deferred_capacity_of<Policy, true> = Policy::deferred_capacity;
+
+// What a machine of a chart that defers keeps besides its deferred events: whether the
+// microstep under way selected a deferring row, or fired another transition; whether a
+// transition changed the configuration since the last round of retries; and how many deferred
+// events the current round still retries.
+struct deferral_state {
+    bool requested = false;
+    bool other_fired = false;
+    bool changed = false;
+    std::size_t retry = 0;
+};
+struct no_deferral {};
+
 // The record of failures of a machine none of whose guards and actions can throw.
 struct no_failure_slot {
     constexpr explicit operator bool() const { return false; }
@@ -186,16 +206,20 @@ private:
             clock_started_ = true;
             clock_ = now;
             for (auto& armed : armed_) armed = now;
+            if constexpr (delays) queue_.start_clock(now);
         } else if (now < clock_) {
             report.clock_went_backwards = true;
         } else {
             clock_ = now;
+            if constexpr (delays) queue_.set_clock(now);
         }
         notify<model, Observer>::cycle_begins(observer_.value, clock_);
         update_timers(context_.value, clock_);
         latch_inputs(context_.value);
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
+        // The delayed events due now, as raised events (bsc::raise_after).
+        if constexpr (delays) queue_.release_due(clock_);
         outcome const drained = drain_queue(report.transitions > 0);
         commit_outputs(context_.value);
         notify<model, Observer>::cycle_ends(observer_.value);
@@ -346,6 +370,27 @@ protected:
         }));
     }
 
+    // Whether the chart sends delayed events (bsc::raise_after): its queue keeps them.
+    static constexpr bool delays = requires(Queue& q) { q.release_due(duration{}); };
+
+    // ---- deferred events, called by the back ends ------------------------------------------
+    static constexpr bool defers = model::has_deferral;
+
+    // A deferring row was selected: its event is kept at the end of the microstep, unless
+    // another transition fired in it.
+    constexpr void deferral_selected() {
+        if constexpr (defers) deferral_.requested = true;
+    }
+    // A transition that does not defer fired; `changes`: it has a target.
+    constexpr void transition_fired(bool changes) {
+        if constexpr (defers) {
+            deferral_.other_fired = true;
+            if (changes) deferral_.changed = true;
+        } else {
+            (void)changes;
+        }
+    }
+
     // ---- completion (model/completion.hpp), called by the back ends ----------------------
     using completion = detail::completion<model>;
 
@@ -492,9 +537,42 @@ private:
     constexpr Backend& backend() { return static_cast<Backend&>(*this); }
     constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
 
+    // One microstep on an event (not on the eventless pseudo-event): where the chart defers,
+    // the event is kept if only deferring rows took it.
+    template <int Trigger, class E>
+    constexpr bool event_microstep(E const& e) {
+        if constexpr (defers) {
+            deferral_.requested = false;
+            deferral_.other_fired = false;
+            bool const fired = backend().template microstep<Trigger>(e);
+            if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
+            return fired;
+        } else {
+            return backend().template microstep<Trigger>(e);
+        }
+    }
+
+    // Processes one deferred event again, if a round of retries is under way, or if a
+    // transition has changed the configuration since the last round (which starts a round over
+    // every event kept, in the order they came). True if it processed one.
+    constexpr bool retry_deferred() {
+        if constexpr (defers) {
+            if (deferral_.retry == 0 && deferral_.changed) {
+                deferral_.changed = false;
+                deferral_.retry = deferred_.size();
+            }
+            if (deferral_.retry == 0) return false;
+            --deferral_.retry;
+            deferred_.pop([&](auto const& ev) { microstep_on(ev); });
+            return true;
+        } else {
+            return false;
+        }
+    }
+
     template <class E>
     constexpr void microstep_on(E const& e) {
-        bool const fired = backend().template microstep<model::template trigger_of<E>>(e);
+        bool const fired = event_microstep<model::template trigger_of<E>>(e);
         if constexpr (std::is_same_v<E, action_failed>)
             if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
     }
@@ -599,7 +677,7 @@ private:
     constexpr outcome dispatch_to_end(E const& e) {
         notify<model, Observer>::dispatching(observer_.value, e);
         latch_inputs(context_.value);
-        outcome const settled = finish(backend().template microstep<Trigger>(e));
+        outcome const settled = finish(event_microstep<Trigger>(e));
         commit_outputs(context_.value);
         return settled;
     }
@@ -627,7 +705,7 @@ private:
         if constexpr (!Policy::settle_eventless)
             return drain_queue(consumed);
         // The common case, kept inline: nothing raised, and no eventless transition to try.
-        if constexpr (!layout::has_trigger(eventless_id))
+        if constexpr (!layout::has_trigger(eventless_id) && !defers)
             if (queue_.empty() && !queue_.overflowed() && !(layout::can_halt && halted()))
                 return consumed ? outcome::consumed : outcome::ignored;
         return settle(consumed);
@@ -642,8 +720,19 @@ private:
                     if (++steps > Policy::max_eventless_steps)
                         return abandon();
             }
-            if (queue_.empty() || halted())
+            if (halted())
                 break;
+            if (queue_.empty()) {
+                // Then the deferred events, one at a time, each followed by its eventless
+                // transitions and what it raises.
+                if constexpr (defers) {
+                    if (deferral_.retry > 0 || deferral_.changed) {
+                        if (++internal_events > Policy::max_internal_events) return abandon();
+                        if (retry_deferred()) continue;
+                    }
+                }
+                break;
+            }
             if (++internal_events > Policy::max_internal_events)
                 return abandon();
             queue_.pop([&](auto const& ev) { microstep_on(ev); });
@@ -654,16 +743,35 @@ private:
     // The raised events of a cycle, each one microstep and no eventless settling, so that no
     // component fires twice in a cycle.
     constexpr outcome drain_queue(bool consumed) {
-        for (std::size_t n = 0; !queue_.empty() && !halted();) {
+        std::size_t n = 0;
+        for (; !queue_.empty() && !halted();) {
             if (++n > Policy::max_internal_events)
                 return abandon();
             queue_.pop([&](auto const& ev) { microstep_on(ev); });
+        }
+        if constexpr (defers) {
+            // The deferred events a transition of this cycle released, each one microstep.
+            while (!halted() && (deferral_.retry > 0 || deferral_.changed)) {
+                if (++n > Policy::max_internal_events) return abandon();
+                if (!retry_deferred()) break;
+                for (; !queue_.empty() && !halted();) {
+                    if (++n > Policy::max_internal_events) return abandon();
+                    queue_.pop([&](auto const& ev) { microstep_on(ev); });
+                }
+            }
         }
         return settled(consumed);
     }
 
     constexpr outcome settled(bool consumed) {
         halt_if_final();
+        if constexpr (defers) {
+            if (deferred_.overflowed()) {
+                deferred_.clear_overflow();
+                queue_.clear_overflow();
+                return outcome::queue_overflow;
+            }
+        }
         if (queue_.overflowed()) {
             queue_.clear_overflow();
             return outcome::queue_overflow;
@@ -674,6 +782,7 @@ private:
     constexpr outcome abandon() {
         queue_.clear();
         queue_.clear_overflow();
+        if constexpr (defers) deferral_.retry = 0;  // the deferred events stay, for a later change
         return outcome::livelock;
     }
 
@@ -758,6 +867,10 @@ protected:
     [[no_unique_address]] whole<context_type> context_;
     configuration_type config_{};
     [[no_unique_address]] entering_flags<completion::parallel_count> entering_;
+    // The events deferred (`/ bsc::defer`), oldest first, and the state of their retries.
+    [[no_unique_address]] std::conditional_t<
+        defers, event_queue<deferred_capacity_of<Policy, defers>, typename model::events>, no_deferral> deferred_;
+    [[no_unique_address]] std::conditional_t<defers, deferral_state, no_deferral> deferral_;
     // The outcome of the last run (low bits) and the mark of a run under way (running_bit). An
     // enumeration and not a std::uint8_t: a store through an unsigned char may alias any object,
     // so the compiler would reload the context after every mark.

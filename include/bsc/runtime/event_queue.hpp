@@ -58,6 +58,23 @@ public:
                                                      [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
     }
 
+protected:
+    // Queues an item already held as the queue's variant (a delayed event coming due).
+    constexpr bool push_item(value_type const& item) {
+        if (size_ == Capacity) {
+            overflowed_ = true;
+            return false;
+        }
+        items_[(head_ + size_) % Capacity] = item;
+        ++size_;
+        return true;
+    }
+    // The chart's event an event E is queued as: E itself, or its nearest family (-1: none).
+    template <class E>
+    static constexpr int queued_as = index_in<E, Es...>() >= 0
+                                         ? index_in<E, Es...>()
+                                         : event_families<type_list<Es...>>::template trigger_of<E>();
+
 private:
     template <class E>
     constexpr bool push(E const& e) {

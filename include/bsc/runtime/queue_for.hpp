@@ -10,6 +10,8 @@
 #include <bsc/dsl/row.hpp>
 #include <bsc/model/chart_model.hpp>
 #include <bsc/model/completion.hpp>
+#include <bsc/dsl/delayed.hpp>
+#include <bsc/runtime/delayed_events.hpp>
 #include <bsc/runtime/event_queue.hpp>
 
 namespace bsc::detail {
@@ -24,15 +26,30 @@ constexpr bool chart_may_raise() {
     }(typename Model::row_types{});
 }
 
-// The queue of a machine of the chart (either back end): a bounded queue of the chart's events
-// if an action can raise, or the chart takes bsc::action_failed or a bsc::done event (which the
-// machine raises);
-// otherwise none, and no test for raised events after a microstep.
-template <class Chart, class Policy>
-using queue_for =
+// Whether an action of the chart sends or cancels delayed events (bsc::raise_after): then its
+// queue keeps slots for them.
+template <class Model>
+constexpr bool chart_sends_delayed() {
+    return []<class... Rows>(type_list<Rows...>) {
+        return (sends_delayed<std::remove_cv_t<decltype(Rows::action)>> || ...);
+    }(typename Model::row_types{});
+}
+template <class Policy, bool Sends>
+inline constexpr std::size_t delayed_capacity_of = 0;
+template <class Policy>
+inline constexpr std::size_t delayed_capacity_of<Policy, true> = Policy::delayed_capacity;
+
+// The queue of a machine of the chart (either back end): with slots for delayed events if an
+// action sends them; a bounded queue of the chart's events if an action can raise, or the chart
+// takes bsc::action_failed or a bsc::done event (which the machine raises); otherwise none, and
+// no test for raised events after a microstep.
+template <class Chart, class Policy, class Model = chart_model<std::remove_cv_t<Chart>>,
+          bool Delays = chart_sends_delayed<Model>()>
+using queue_for = std::conditional_t<
+    Delays, delaying_queue<Policy::queue_capacity, delayed_capacity_of<Policy, Delays>, typename Model::events>,
     std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
                            chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0 ||
                            completion<chart_model<std::remove_cv_t<Chart>>>::raises,
                        event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
-                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>;
+                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>>;
 }  // namespace bsc::detail

@@ -366,6 +366,13 @@ private:
     void run_action(std::int16_t t, void const* e) {
         if constexpr (observed)
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_.value, this->chart(), e);
+        if constexpr (base::defers) {
+            if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's event_microstep)
+                this->deferral_selected();
+                return;
+            }
+            this->transition_fired(transitions[static_cast<std::size_t>(t)].to != no_state);
+        }
         if (auto const action = transitions[static_cast<std::size_t>(t)].action)
             this->run([&] { action(this->chart(), this->context_.value, e, this->queue_); });
     }

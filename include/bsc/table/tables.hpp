@@ -109,6 +109,7 @@ struct transition_row {
     /// A timeout's slot: where the machine keeps the time its delay counts from (its origin's
     /// entry, or for an internal timeout the cycle it last fired in); -1 for the others.
     std::int16_t timeout_slot = -1;
+    bool defers = false;  ///< the row defers its event (`/ bsc::defer`): it keeps the event, and has no action
 };
 
 /// The operation rules of `Chart`: its topology table `states` and transition table
@@ -236,6 +237,8 @@ private:
         if constexpr (bsc::detail::is_timeout_row<R>)
             row.delay = &delay_thunk<r>;
         row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
+        row.defers = rows.defers[i];
+        if (row.defers) row.action = nullptr;
         return row;
     }
 

@@ -21,6 +21,7 @@
 #include <bsc/data/timer.hpp>
 #include <bsc/detail/fields.hpp>
 #include <bsc/runtime/driver.hpp>
+#include <bsc/runtime/queue_for.hpp>
 
 namespace bsc::verify {
 /// Specialize as true for a context member type that does not influence behaviour (a log, a
@@ -169,6 +170,9 @@ constexpr std::size_t encoded_bits() {
     if constexpr (verify::unexplored<T>) {
         return 0;
     } else if constexpr (is_machine<T>) {
+        if constexpr (chart_model<typename T::chart_type>::has_deferral ||
+                      chart_sends_delayed<chart_model<typename T::chart_type>>())
+            detail::report<error::pending_events_not_encoded<typename T::chart_type>>();
         std::size_t config = 0;
         for (unsigned b : slot_bits<T>()) config += b;
         constexpr std::size_t timeouts = std::remove_cvref_t<decltype(access::armed(std::declval<T&>()))>{}.size();

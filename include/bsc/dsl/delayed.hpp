@@ -1,0 +1,73 @@
+#pragma once
+// Delayed events to self: the actions bsc::raise_after and bsc::cancel_delayed. They reach the
+// machine's pending events (runtime/delayed_events.hpp) through the raise argument that every
+// action receives; a chart that uses them gets a queue with slots for them (runtime/queue_for.hpp).
+
+#include <chrono>
+#include <type_traits>
+#include <utility>
+
+#include <bsc/dsl/action.hpp>
+#include <bsc/dsl/row.hpp>
+#include <bsc/duration.hpp>
+
+namespace bsc::detail {
+
+// bsc::raise_after and bsc::cancel_delayed: actions that reach the machine's delayed events
+// (runtime/delayed_events.hpp) through the raise argument.
+template <class E>
+struct delayed_raise : action_base {
+    duration delay;
+    E event;
+    int id;
+    template <class Ctx, class Ev, class Raise>
+    constexpr void operator()(Ctx&, Ev const&, Raise& raise) const noexcept(std::is_nothrow_copy_constructible_v<E>) {
+        (void)raise.schedule(delay, event, id);
+    }
+};
+struct cancel_delayed_action : action_base {
+    int id;
+    template <class Ctx, class Ev, class Raise>
+    constexpr void operator()(Ctx&, Ev const&, Raise& raise) const noexcept {
+        raise.cancel(id);
+    }
+};
+
+template <class A>
+inline constexpr bool is_delayed_raise = false;
+template <class E>
+inline constexpr bool is_delayed_raise<delayed_raise<E>> = true;
+
+// Whether an action sends or cancels delayed events: then the machine keeps slots for them.
+template <class A>
+inline constexpr bool sends_delayed = false;
+template <class E>
+inline constexpr bool sends_delayed<delayed_raise<E>> = true;
+template <>
+inline constexpr bool sends_delayed<cancel_delayed_action> = true;
+template <class... As>
+inline constexpr bool sends_delayed<action_seq<As...>> = (sends_delayed<As> || ...);
+template <class A>
+inline constexpr bool sends_delayed<state_action<A>> = sends_delayed<A>;
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// An action that raises `e` to the machine after `delay` (SCXML's `<send delay>` to itself):
+/// the first `step(now)` whose time is at least the machine's clock when the action ran plus
+/// `delay` processes it, after the components' turns, as a raised event. It is not tied to the
+/// state that sent it; `bsc::cancel_delayed(id)` cancels it while it is pending (an id of 0 is
+/// none). The machine keeps `Policy::delayed_capacity` pending events; one more is dropped and
+/// the run reports `outcome::queue_overflow`.
+/// Requirements: `e` is an event of the chart (or of a family of one); 0 <= delay.
+template <class Rep, class Period, class E>
+constexpr auto raise_after(std::chrono::duration<Rep, Period> delay, E e, int id = 0) {
+    if (delay < std::chrono::duration<Rep, Period>::zero()) detail::bsc_after_negative_delay();
+    return detail::delayed_raise<E>{{}, std::chrono::duration_cast<duration>(delay), std::move(e), id};
+}
+
+/// An action that cancels the delayed events still pending under `id` (bsc::raise_after).
+constexpr auto cancel_delayed(int id) { return detail::cancel_delayed_action{{}, id}; }
+
+}  // namespace bsc

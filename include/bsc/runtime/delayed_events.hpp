@@ -1,0 +1,111 @@
+#pragma once
+// Delayed events to self (SCXML's <send delay> to the machine): bsc::raise_after(delay, e, id)
+// schedules e, bsc::cancel_delayed(id) cancels what was scheduled under id. The internal queue
+// of a chart that sends them (runtime/queue_for.hpp) is a delaying_queue: the ring of raised
+// events plus a fixed number of slots, each an event with the time it comes due. step(now)
+// moves the events due into the ring, earliest first; a pending event does not belong to the
+// state that sent it, so leaving that state does not cancel it.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+#include <bsc/detail/meta.hpp>
+#include <bsc/duration.hpp>
+#include <bsc/error.hpp>
+#include <bsc/runtime/event_queue.hpp>
+
+namespace bsc::detail {
+
+template <std::size_t Capacity, std::size_t Slots, class Events>
+class delaying_queue;
+
+template <std::size_t Capacity, std::size_t Slots, class... Es>
+class delaying_queue<Capacity, Slots, type_list<Es...>> : public event_queue<Capacity, type_list<Es...>> {
+    using base = event_queue<Capacity, type_list<Es...>>;
+
+public:
+    using typename base::value_type;
+
+    /// Schedules e to come due `delay` after the machine's clock (the time of its last cycle).
+    /// False, and an overflow reported at the end of the run, if every slot is taken.
+    template <class E>
+    constexpr bool schedule(duration delay, E const& e, int id) noexcept(std::is_nothrow_copy_constructible_v<E>) {
+        constexpr int as = base::template queued_as<E>;
+        if constexpr (as < 0) {
+            detail::report<error::raised_event_not_in_chart<E>>();
+            return false;
+        } else {
+            using F = at<static_cast<std::size_t>(as), type_list<Es...>>;
+            for (auto& s : slots_)
+                if (!s.pending) {
+                    s.pending = true;
+                    s.due = delay > duration::max() - clock_ ? duration::max() : clock_ + delay;
+                    s.order = sent_++;
+                    s.id = id;
+                    s.event = value_type{std::in_place_type<F>, event_as<F>(e)};
+                    return true;
+                }
+            delayed_overflow_ = true;
+            return false;
+        }
+    }
+
+    /// Cancels every pending event scheduled under `id` (0: none).
+    constexpr void cancel(int id) noexcept {
+        if (id == 0) return;
+        for (auto& s : slots_)
+            if (s.pending && s.id == id) s.pending = false;
+    }
+
+    /// The number of events pending.
+    constexpr std::size_t pending() const {
+        std::size_t n = 0;
+        for (auto const& s : slots_) n += s.pending ? 1 : 0;
+        return n;
+    }
+
+    // ---- for the machine -----------------------------------------------------------------------
+    constexpr void set_clock(duration now) { clock_ = now; }
+    // The machine's clock started at `now` (its first cycle): what was scheduled before counts
+    // from there, as the timeouts armed before it do.
+    constexpr void start_clock(duration now) {
+        for (auto& s : slots_)
+            if (s.pending) s.due = s.due > duration::max() - now ? duration::max() : s.due + now;
+        clock_ = now;
+    }
+    // Moves the events due at `now` into the queue of raised events, earliest first, and among
+    // those due at once in the order they were sent.
+    constexpr void release_due(duration now) {
+        for (;;) {
+            slot* next = nullptr;
+            for (auto& s : slots_)
+                if (s.pending && s.due <= now && (next == nullptr || s.due < next->due || (s.due == next->due && s.order < next->order)))
+                    next = &s;
+            if (next == nullptr) return;
+            next->pending = false;
+            (void)this->push_item(next->event);
+        }
+    }
+    constexpr bool overflowed() const { return base::overflowed() || delayed_overflow_; }
+    constexpr void clear_overflow() {
+        base::clear_overflow();
+        delayed_overflow_ = false;
+    }
+
+private:
+    struct slot {
+        bool pending = false;
+        duration due{};
+        std::uint32_t order = 0;
+        int id = 0;
+        value_type event{};
+    };
+    std::array<slot, Slots> slots_{};
+    duration clock_{};
+    std::uint32_t sent_ = 0;
+    bool delayed_overflow_ = false;
+};
+
+}  // namespace bsc::detail
