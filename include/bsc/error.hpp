@@ -91,6 +91,31 @@ struct invalid_history_state {
     }
 };
 
+template <class Composite>
+struct initial_states_not_orthogonal {
+    constexpr ~initial_states_not_orthogonal() {
+        static_assert(detail::dependent_false<initial_states_not_orthogonal>,
+                      "bsc: initial states not orthogonal: the states named by bsc::initial<A, B, ...> must lie "
+                      "below this composite, one in each of several regions of a parallel state (none containing "
+                      "another); name one state per region");
+    }
+};
+
+/// The states of a transition with several targets, as an error names them.
+template <class... States>
+struct target_states {};
+
+template <class Source, class Targets>
+struct targets_not_orthogonal {
+    constexpr ~targets_not_orthogonal() {
+        static_assert(detail::dependent_false<targets_not_orthogonal>,
+                      "bsc: targets not orthogonal: a transition with several targets (bsc::targets) enters one "
+                      "state in each of several regions of a parallel state, so no target may contain another, "
+                      "and any two must lie in different regions of a parallel state; keep one target per "
+                      "region");
+    }
+};
+
 template <class Chart>
 struct pending_events_not_encoded {
     constexpr ~pending_events_not_encoded() {

@@ -250,6 +250,31 @@ struct invalid_history_state {
     }
 };
 
+template <class Composite>
+struct initial_states_not_orthogonal {
+    constexpr ~initial_states_not_orthogonal() {
+        static_assert(detail::dependent_false<initial_states_not_orthogonal>,
+                      "bsc: initial states not orthogonal: the states named by bsc::initial<A, B, ...> must lie "
+                      "below this composite, one in each of several regions of a parallel state (none containing "
+                      "another); name one state per region");
+    }
+};
+
+/// The states of a transition with several targets, as an error names them.
+template <class... States>
+struct target_states {};
+
+template <class Source, class Targets>
+struct targets_not_orthogonal {
+    constexpr ~targets_not_orthogonal() {
+        static_assert(detail::dependent_false<targets_not_orthogonal>,
+                      "bsc: targets not orthogonal: a transition with several targets (bsc::targets) enters one "
+                      "state in each of several regions of a parallel state, so no target may contain another, "
+                      "and any two must lie in different regions of a parallel state; keep one target per "
+                      "region");
+    }
+};
+
 template <class Chart>
 struct pending_events_not_encoded {
     constexpr ~pending_events_not_encoded() {
@@ -1136,6 +1161,8 @@ template <class S>
 struct state_ref;
 template <class S>
 struct local_ref;
+template <class... S>
+struct targets_ref;
 
 /// The trigger of a transition taken without an event, when its guard holds.
 struct eventless_trigger {};
@@ -1153,15 +1180,34 @@ struct no_target {};
 template <class T>
 struct local_target {};
 // A row's target state, and whether the row is local.
+/// The targets of a transition with several, one in each of orthogonal regions (bsc::targets).
+template <class T, class... More>
+struct several_targets {};
+// A row's target state (its first, where it has several), whether the row is local, and all
+// its targets.
 template <class T>
 struct target_parts {
     using state = T;
     static constexpr bool local = false;
+    using all = type_list<T>;
+};
+template <>
+struct target_parts<no_target> {
+    using state = no_target;
+    static constexpr bool local = false;
+    using all = type_list<>;
 };
 template <class T>
 struct target_parts<local_target<T>> {
     using state = T;
     static constexpr bool local = true;
+    using all = type_list<T>;
+};
+template <class T, class... More>
+struct target_parts<several_targets<T, More...>> {
+    using state = T;
+    static constexpr bool local = false;
+    using all = type_list<T, More...>;
 };
 
 // What marks a row. A base of its own for each row type: rows whose guard, action and trigger
@@ -1221,6 +1267,8 @@ struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
     using target = typename target_parts<T>::state;
     /// A local transition (`= bsc::local(state<T>)`): its source stays active.
     static constexpr bool local = target_parts<T>::local;
+    /// Every target: none, the one, or several (`= bsc::targets(state<A>, state<B>)`).
+    using targets = typename target_parts<T>::all;
     static constexpr bool guarded = !std::is_same_v<G, no_guard>;
     /// A row that defers its event (`/ bsc::defer`).
     static constexpr bool defers = std::is_same_v<A, defer_action>;
@@ -1237,6 +1285,11 @@ struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
         requires std::is_same_v<T, no_target>
     constexpr auto operator=(local_ref<T2>) const {
         return transition_row<S, Trigger, G, A, local_target<T2>>{{}, trigger_value, guard, action};
+    }
+    template <class... T2>
+        requires std::is_same_v<T, no_target>
+    constexpr auto operator=(targets_ref<T2...>) const {
+        return transition_row<S, Trigger, G, A, several_targets<T2...>>{{}, trigger_value, guard, action};
     }
     template <class A2>
         requires(std::is_same_v<A, no_action> && std::is_same_v<T, no_target>)
@@ -1482,7 +1535,15 @@ struct state_ref {
     constexpr auto operator=(local_ref<T>) const {
         return transition_row<S, eventless_trigger, no_guard, no_action, local_target<T>>{};
     }
+    template <class... T>
+    constexpr auto operator=(targets_ref<T...>) const {
+        return transition_row<S, eventless_trigger, no_guard, no_action, several_targets<T...>>{};
+    }
 };
+
+// What bsc::targets returns: the targets of a transition with several.
+template <class... S>
+struct targets_ref {};
 
 // What bsc::local returns: the target of a local transition.
 template <class S>
@@ -1510,6 +1571,19 @@ constexpr detail::local_ref<S> local(detail::state_ref<S>) {
     return {};
 }
 
+/// The targets of a transition that enters a chosen state in each of several orthogonal
+/// regions (SCXML's `target="a b"`): `state<Idle> + event<go> = targets(state<A2>, state<B3>)`.
+/// The transition's domain is the nearest composite above its source and all its targets; the
+/// regions of a parallel state on the way that hold no target are entered by default.
+/// Requirements: 2 to 4 targets, each pair in different regions of a parallel state
+/// (bsc::error::targets_not_orthogonal).
+template <class... S>
+constexpr detail::targets_ref<S...> targets(detail::state_ref<S>...) {
+    static_assert(sizeof...(S) >= 2 && sizeof...(S) <= 4,
+                  "bsc::targets takes 2 to 4 states (one transition's targets in orthogonal regions)");
+    return {};
+}
+
 }  // namespace bsc
 // end include/bsc/dsl/state.hpp
 
@@ -1531,7 +1605,7 @@ struct leaf_node : node_base {
     using children = type_list<>;
 };
 
-template <class S, history H, class Initials, class Children>
+template <class S, history H, class Initials, class Children, class MoreInitials = type_list<>>
 struct composite_node : node_base {
     using tag = S;
     static constexpr kind node_kind = kind::composite;
@@ -1539,6 +1613,9 @@ struct composite_node : node_base {
     static constexpr bool implicit = false;
     using initials = Initials;
     using children = Children;
+    // The initial states after the first, one in each region of a parallel state below
+    // (`bsc::initial<A, B>`, SCXML's initial="a b").
+    using more_initials = MoreInitials;
 };
 
 template <class S, class Children>
@@ -1564,9 +1641,10 @@ struct history_node : node_base {
     using children = type_list<>;
 };
 
-template <class S>
+template <class S, class... More>
 struct initial_marker {
     using tag = S;
+    using more = type_list<More...>;
 };
 template <history H>
 struct history_marker {};
@@ -1579,8 +1657,8 @@ template <class S>
 inline constexpr bool is_state_ref<state_ref<S>> = true;
 template <class A>
 inline constexpr bool is_initial_marker = false;
-template <class S>
-inline constexpr bool is_initial_marker<initial_marker<S>> = true;
+template <class S, class... More>
+inline constexpr bool is_initial_marker<initial_marker<S, More...>> = true;
 template <class A>
 inline constexpr bool is_history_marker = false;
 template <history H>
@@ -1641,6 +1719,14 @@ constexpr auto subtree_tags() {
     return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
 }
 template <class A>
+constexpr auto more_initials_from() {
+    if constexpr (is_initial_marker<A>)
+        return typename A::more{};
+    else
+        return type_list<>{};
+}
+
+template <class A>
 constexpr auto declared_tag() {
     if constexpr (is_node<A>)
         return subtree_tags<A>();
@@ -1676,8 +1762,13 @@ namespace bsc {
 /// composite by default enters the path down to it, the other regions of parallel states on
 /// the way by default). If S is declared nowhere among the composite's arguments,
 /// `initial<S>` also declares S as a basic child.
-template <class S>
-inline constexpr detail::initial_marker<S> initial{};
+///
+/// `initial<A, B, ...>` names several, one in each of orthogonal regions below the composite
+/// (SCXML's `initial="a b"`): entering the composite by default enters each, and the regions
+/// that hold none by default. At most 4 (bsc::error::targets_not_orthogonal if two are not in
+/// different regions of a parallel state).
+template <class S, class... More>
+inline constexpr detail::initial_marker<S, More...> initial{};
 
 /// Marks a composite state as remembering its last active child (restored on re-entry).
 inline constexpr detail::history_marker<detail::history::shallow> shallow_history{};
@@ -1722,7 +1813,9 @@ constexpr auto composite(A...) {
     using declared = decltype((detail::type_list<>{} + ... + detail::declared_tag<A>()));
     using children = typename detail::composite_children<declared, std::index_sequence_for<A...>, A...>::type;
     using initials = decltype((detail::type_list<>{} + ... + detail::initials_from<A>()));
-    return detail::composite_node<S, detail::history_from<A...>(), initials, children>{};
+    using more_initials = decltype((detail::type_list<>{} + ... + detail::more_initials_from<A>()));
+    static_assert(more_initials::size <= 3, "bsc::initial takes at most 4 states");
+    return detail::composite_node<S, detail::history_from<A...>(), initials, children, more_initials>{};
 }
 
 /// A parallel (AND) state: all of its children (its components, or regions) are active while it is.
@@ -1911,6 +2004,7 @@ struct topology {
     std::array<int, N> ordinal{};        // position among siblings
     std::array<int, N> initial{};        // state index of the initial child, or -1
     std::array<int, N> initial_target{};  // the initial state: the initial child, or a deeper descendant
+    std::array<std::array<int, 3>, N> more_initial{};  // initial states after the first (initial<A, B>), else -1
     std::array<int, N> initial_count{};  // number of initial markers
     std::array<int, N> depth{};
     std::array<int, N> end{};   // one past the last descendant: d is below s iff s < d < end[s]
@@ -1957,6 +2051,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     t.next_sibling[i] = -1;
     t.initial[i] = -1;
     t.initial_target[i] = -1;
+    for (int& m : t.more_initial[i]) m = -1;
     t.initial_count[i] = static_cast<int>(Node::initials::size);
     t.slot[i] = -1;
     if (Node::node_kind == kind::composite)
@@ -1996,6 +2091,13 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     }(typename Node::children{});
     t.child_count[i] = count;
     t.end[i] = next;
+    // Its initial states after the first, below it (unknown_state if not declared there).
+    if constexpr (requires { typename Node::more_initials; })
+        [&]<class... More>(type_list<More...>) {
+            using tags = typename tags_of<decltype(flatten<Node>())>::type;
+            std::size_t k = 0;
+            ((t.more_initial[i][k++] = index_of<More, tags> > 0 ? index + index_of<More, tags> : unknown_state), ...);
+        }(typename Node::more_initials{});
     // The defaults of its history states, which lie anywhere below Node (-1 if not found).
     if constexpr (Node::node_kind == kind::composite)
         [&]<class... C>(type_list<C...>) {
@@ -2026,6 +2128,12 @@ struct row_table {
     std::array<int, R> domain{};  // the transition domain (SCXML), no_state if internal
     std::array<bool, R> local{};  // declared local (bsc::local): its domain is its source
     std::array<bool, R> defers{};  // defers its event (/ bsc::defer)
+    // A transition with several targets (bsc::targets): `target` is the first, these the others
+    // (no_state where there are fewer).
+    static constexpr std::size_t max_more_targets = 3;
+    std::array<std::array<int, max_more_targets>, R> more_targets{};
+    // Whether row r has several targets.
+    constexpr bool several(std::size_t r) const { return more_targets[r][0] >= 0; }
     // By event position (there are no more events than rows): the event's nearest family among
     // the chart's events (-1: none, -2: not a chain). All -1 in a chart without families.
     std::array<int, R> event_family{};
@@ -2098,17 +2206,22 @@ constexpr int state_index() {
     }
 }
 
-template <std::size_t N>
-constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false) {
+template <std::size_t N, std::size_t M = 0>
+constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false,
+                                std::array<int, M> const& more = {}) {
     if (target < 0)
         return no_state;
     // SCXML's type="internal": a compound source that contains the target stays active.
     if (local && t.kinds[static_cast<std::size_t>(source)] == kind::composite && t.is_proper_ancestor(source, target))
         return source;
-    // SCXML: the nearest compound proper ancestor of the source that is a proper ancestor of the target.
-    for (int a = t.parent[static_cast<std::size_t>(source)]; a >= 0; a = t.parent[static_cast<std::size_t>(a)])
-        if (t.is_compound(a) && t.is_proper_ancestor(a, target))
-            return a;
+    // SCXML: the nearest compound proper ancestor of the source that is a proper ancestor of
+    // every target.
+    for (int a = t.parent[static_cast<std::size_t>(source)]; a >= 0; a = t.parent[static_cast<std::size_t>(a)]) {
+        bool above_all = t.is_compound(a) && t.is_proper_ancestor(a, target);
+        for (int m : more)
+            if (m >= 0) above_all = above_all && t.is_proper_ancestor(a, m);
+        if (above_all) return a;
+    }
     return 0;
 }
 
@@ -2152,9 +2265,17 @@ struct chart_model {
                     if constexpr (!std::is_void_v<E>) r.trigger[i] = index_of<E, events>;
                     if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
                 }
+                for (int& m : r.more_targets[i]) m = no_state;
+                if constexpr (is_transition_row<Rs>) {
+                    if constexpr (Rs::targets::size > 1)
+                        [&]<class First, class... More>(type_list<First, More...>*) {
+                            std::size_t k = 0;
+                            ((r.more_targets[i][k++] = state_index<More, tags>()), ...);
+                        }(static_cast<typename Rs::targets*>(nullptr));
+                }
                 r.domain[i] = no_state;
                 if (r.source[i] >= 0 && r.target[i] >= 0)
-                    r.domain[i] = transition_domain(tree, r.source[i], r.target[i], r.local[i]);
+                    r.domain[i] = transition_domain(tree, r.source[i], r.target[i], r.local[i], r.more_targets[i]);
                 ++i;
             }(),
             ...);
@@ -2336,6 +2457,8 @@ constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, 
     if (t.is_compound(s)) {
         if (t.initial_target[i] >= 0 && t.initial_target[i] != t.initial[i])
             mark_entry(t, m, s, t.initial_target[i]);  // a deep initial
+        for (int more : t.more_initial[i])
+            if (more >= 0) mark_entry(t, m, s, more);  // initial<A, B>: each
         else if (t.initial[i] >= 0)
             mark_default_entry(t, m, t.initial[i]);
     } else if (t.kinds[i] == kind::parallel) {
@@ -2780,6 +2903,13 @@ struct action_words {
 };
 template <class A>
 struct action_words<state_action<A>> : action_words<A> {};
+template <>
+struct action_words<defer_action> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out("defer");
+    }
+};
 template <class... As>
 struct action_words<action_seq<As...>> {
     template <class Out>
@@ -2813,7 +2943,14 @@ struct row_words<transition_row<S, Trigger, G, A, T>> {
             out(" / ");
             action_words<A>::write(out);
         }
-        if constexpr (target_parts<T>::local) {
+        if constexpr (target_parts<T>::all::size > 1) {
+            out(" = targets(");
+            [&]<class... Targets>(type_list<Targets...>) {
+                bool first = true;
+                ((out(first ? "" : ", "), out(name_of<Targets>), first = false), ...);
+            }(typename target_parts<T>::all{});
+            out(")");
+        } else if constexpr (target_parts<T>::local) {
             out(" = local(");
             out(name_of<typename target_parts<T>::state>);
             out(")");
@@ -3249,9 +3386,12 @@ constexpr int find_initial_problem(topology<N> const& t) {
 
 template <std::size_t R>
 constexpr int find_unknown_state(row_table<R> const& r) {
-    for (std::size_t i = 0; i < R; ++i)
+    for (std::size_t i = 0; i < R; ++i) {
         if (r.source[i] == unknown_state || r.target[i] == unknown_state)
             return static_cast<int>(i);
+        for (int m : r.more_targets[i])
+            if (m == unknown_state) return static_cast<int>(i);
+    }
     return -1;
 }
 
@@ -3309,6 +3449,50 @@ constexpr int find_invalid_deferral(row_table<R> const& r, int any_event_trigger
     return -1;
 }
 
+// Whether the states in `all` (n of them) lie pairwise in different regions of parallel states.
+template <std::size_t N, std::size_t M>
+constexpr bool orthogonal_set(topology<N> const& t, std::array<int, M> const& all, std::size_t n) {
+    for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = a + 1; b < n; ++b)
+            if (all[a] < 0 || all[b] < 0 || t.contains(all[a], all[b]) || t.contains(all[b], all[a]) ||
+                t.kinds[static_cast<std::size_t>(t.lca(all[a], all[b]))] != kind::parallel)
+                return false;
+    return true;
+}
+
+// The first composite with several initial states (bsc::initial<A, B>) one of which does not
+// lie below it, or two of which are not in different regions of a parallel state; -1 if none.
+template <std::size_t N>
+constexpr int find_initial_set_problem(topology<N> const& t) {
+    for (std::size_t s = 1; s < N; ++s) {
+        if (t.kinds[s] != kind::composite || t.more_initial[s][0] == -1) continue;
+        std::array<int, 4> all{t.initial_target[s], -1, -1, -1};
+        std::size_t n = 1;
+        for (int m : t.more_initial[s])
+            if (m != -1) all[n++] = m;
+        for (std::size_t k = 0; k < n; ++k)
+            if (all[k] < 0 || !t.is_proper_ancestor(static_cast<int>(s), all[k])) return static_cast<int>(s);
+        if (!orthogonal_set(t, all, n)) return static_cast<int>(s);
+    }
+    return -1;
+}
+
+// The first row with several targets two of which are not in different regions of a parallel
+// state (one contains the other, or their nearest common ancestor is a composite); -1 if none.
+template <std::size_t N, std::size_t R>
+constexpr int find_targets_not_orthogonal(topology<N> const& t, row_table<R> const& r) {
+    for (std::size_t i = 0; i < R; ++i) {
+        if (!r.several(i)) continue;
+        std::array<int, 1 + row_table<R>::max_more_targets> all{};
+        std::size_t n = 0;
+        all[n++] = r.target[i];
+        for (int m : r.more_targets[i])
+            if (m >= 0) all[n++] = m;
+        if (!orthogonal_set(t, all, n)) return static_cast<int>(i);
+    }
+    return -1;
+}
+
 // The first local row whose target is not a proper descendant of its source, or -1.
 template <std::size_t N, std::size_t R>
 constexpr int find_misplaced_local(topology<N> const& t, row_table<R> const& r) {
@@ -3353,7 +3537,8 @@ template <class Chart>
 constexpr bool structure_valid() {
     using model = chart_model<Chart>;
     return find_duplicate(typename model::tags{}) < 0 && find_unknown_state(model::rows) < 0 &&
-           find_initial_problem(model::tree) < 0 && find_invalid_history(model::tree, model::rows) < 0;
+           find_initial_problem(model::tree) < 0 && find_invalid_history(model::tree, model::rows) < 0 &&
+           find_initial_set_problem(model::tree) < 0;
 }
 
 template <class Chart>
@@ -3388,8 +3573,11 @@ constexpr auto check_structure() {
                     return type_list<error::multiple_initial_states<S>>{};
             } else {
                 constexpr int history_state = find_invalid_history(model::tree, model::rows);
+                constexpr int initial_set = find_initial_set_problem(model::tree);
                 if constexpr (history_state >= 0)
                     return type_list<error::invalid_history_state<typename model::template tag_at<history_state>>>{};
+                else if constexpr (initial_set >= 0)
+                    return type_list<error::initial_states_not_orthogonal<typename model::template tag_at<initial_set>>>{};
                 else
                     return type_list<>{};
             }
@@ -3417,6 +3605,19 @@ constexpr auto check_local_targets() {
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
         return type_list<row_error<Chart, row, error::local_target_outside_source<typename R::source, typename R::target>>>{};
+    } else {
+        return type_list<>{};
+    }
+}
+
+template <class Chart>
+constexpr auto check_several_targets() {
+    using model = chart_model<Chart>;
+    constexpr int row = find_targets_not_orthogonal(model::tree, model::rows);
+    if constexpr (row >= 0) {
+        using R = typename model::template row_at<row>;
+        using named = decltype([]<class... S>(type_list<S...>) { return error::target_states<S...>{}; }(typename R::targets{}));
+        return type_list<row_error<Chart, row, error::targets_not_orthogonal<typename R::source, named>>>{};
     } else {
         return type_list<>{};
     }
@@ -3543,7 +3744,8 @@ constexpr auto check_chart() {
         return check_structure<Chart>();
     else
         // Each check runs, so one build reports every kind of problem it finds.
-        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_initial_actions<Chart>() + check_deferrals<Chart>() +
+        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_several_targets<Chart>() + check_initial_actions<Chart>() +
+               check_deferrals<Chart>() +
                check_event_families<Chart>() +
                check_determinism<Chart>() + check_dead_transitions<Chart>() +
                check_reachability<Chart>() + check_livelock<Chart>() +
@@ -5855,12 +6057,12 @@ private:
             clock_started_ = true;
             clock_ = now;
             for (auto& armed : armed_) armed = now;
-            if constexpr (delays) queue_.start_clock(now);
+            if constexpr (delays_events) queue_.start_clock(now);
         } else if (now < clock_) {
             report.clock_went_backwards = true;
         } else {
             clock_ = now;
-            if constexpr (delays) queue_.set_clock(now);
+            if constexpr (delays_events) queue_.set_clock(now);
         }
         notify<model, Observer>::cycle_begins(observer_.value, clock_);
         update_timers(context_.value, clock_);
@@ -5868,7 +6070,7 @@ private:
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
         // The delayed events due now, as raised events (bsc::raise_after).
-        if constexpr (delays) queue_.release_due(clock_);
+        if constexpr (delays_events) queue_.release_due(clock_);
         outcome const drained = drain_queue(report.transitions > 0);
         commit_outputs(context_.value);
         notify<model, Observer>::cycle_ends(observer_.value);
@@ -6020,7 +6222,7 @@ protected:
     }
 
     // Whether the chart sends delayed events (bsc::raise_after): its queue keeps them.
-    static constexpr bool delays = requires(Queue& q) { q.release_due(duration{}); };
+    static constexpr bool delays_events = requires(Queue& q) { q.release_due(duration{}); };
 
     // ---- deferred events, called by the back ends ------------------------------------------
     static constexpr bool defers = model::has_deferral;
@@ -7017,6 +7219,8 @@ private:
                 run_state_actions<detail::row_kind::initial, S>();
                 if constexpr (tree.kinds[init] == detail::kind::history) {
                     enter_history<init>();
+                } else if constexpr (tree.more_initial[S][0] >= 0) {
+                    enter_toward_all<S, -1 - S>();  // initial<A, B>: one state in each region
                 } else if constexpr (tree.initial_target[S] == init) {
                     set_active_child<S>(tree.ordinal[init]);
                     enter_default<init>();
@@ -7159,8 +7363,68 @@ private:
     template <int Row>
     constexpr void run_entries() {
         constexpr int d = rows.domain[Row];
-        if constexpr (d >= 0)
+        if constexpr (d >= 0 && rows.several(Row))
+            enter_toward_all<d, Row>();
+        else if constexpr (d >= 0)
             enter_toward<d, rows.target[Row]>();
+    }
+
+    // ---- several targets: bsc::targets, bsc::initial<A, B> ------------------------------
+    // A set of targets, by key: a row's (key >= 0), or the initial states of state s
+    // (key -1 - s). Every target set is orthogonal (checks/structure.hpp).
+    static constexpr std::array<int, 4> target_set(int key) {
+        std::array<int, 4> all{-1, -1, -1, -1};
+        if (key >= 0) {
+            all[0] = rows.target[static_cast<std::size_t>(key)];
+            for (std::size_t k = 0; k < 3; ++k) all[k + 1] = rows.more_targets[static_cast<std::size_t>(key)][k];
+        } else {
+            auto const s = static_cast<std::size_t>(-1 - key);
+            all[0] = tree.initial_target[s];
+            for (std::size_t k = 0; k < 3; ++k) all[k + 1] = tree.more_initial[s][k];
+        }
+        return all;
+    }
+    // A target of the set below state s, -1 if none; whether s is one.
+    static constexpr int target_below(int s, int key) {
+        for (int t : target_set(key))
+            if (t >= 0 && tree.contains(s, t)) return t;
+        return -1;
+    }
+    static constexpr bool is_target(int s, int key) {
+        for (int t : target_set(key))
+            if (t == s) return true;
+        return false;
+    }
+    // Enters, below the active state D, the paths to every target of the set: at a parallel
+    // state, each region toward the targets it holds, the others by default.
+    template <int D, int Key>
+    constexpr void enter_toward_all() {
+        if constexpr (tree.kinds[D] == detail::kind::parallel) {
+            this->enter_parallel(D, [&] {
+                for_each_child<D>([&](auto k) {
+                    if constexpr (target_below(decltype(k)::value, Key) >= 0)
+                        enter_path_all<decltype(k)::value, Key>();
+                    else
+                        enter_default<decltype(k)::value>();
+                });
+            });
+        } else {
+            constexpr int c = tree.child_toward(D, target_below(D, Key));
+            if constexpr (tree.kinds[c] == detail::kind::history) {
+                enter_history<c>();
+            } else {
+                set_active_child<D>(tree.ordinal[c]);
+                enter_path_all<c, Key>();
+            }
+        }
+    }
+    template <int C, int Key>
+    constexpr void enter_path_all() {
+        run_entry<C>();
+        if constexpr (is_target(C, Key))
+            enter_content<C>();
+        else
+            enter_toward_all<C, Key>();
     }
 
     // Fires a transition selected at basic state Leaf, which no parallel state contains:
@@ -7603,6 +7867,7 @@ struct state_row {
     // Derived columns.
     state_id initial = no_state;   ///< default child of a composite (of a history state: its default's path)
     state_id initial_target = no_state;  ///< its initial state: `initial`, or a descendant below it (a deep initial)
+    std::array<state_id, 3> more_initial{};  ///< its initial states after the first (`initial<A, B>`); no_state where fewer
     std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
     std::int16_t slot = -1;    ///< the byte of the configuration a composite owns, -1 for others
     state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
@@ -7633,6 +7898,9 @@ struct transition_row {
     /// entry, or for an internal timeout the cycle it last fired in); -1 for the others.
     std::int16_t timeout_slot = -1;
     bool defers = false;  ///< the row defers its event (`/ bsc::defer`): it keeps the event, and has no action
+    /// A transition with several targets (bsc::targets): the others after `to`; no_state where
+    /// there are fewer.
+    std::array<state_id, 3> more_to{};
 };
 
 /// The operation rules of `Chart`: its topology table `states` and transition table
@@ -7731,6 +7999,7 @@ private:
         row.exit = state_action_of<row_kind::exit, S>();
         row.initial = id(tree.initial[i]);
         row.initial_target = id(tree.initial_target[i]);
+        for (std::size_t k = 0; k < row.more_initial.size(); ++k) row.more_initial[k] = id(tree.more_initial[i][k]);
         row.initial_action = state_action_of<row_kind::initial, S>();
         row.ordinal = static_cast<std::uint8_t>(tree.ordinal[i]);
         row.slot = static_cast<std::int16_t>(tree.slot[i]);
@@ -7761,6 +8030,7 @@ private:
             row.delay = &delay_thunk<r>;
         row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
         row.defers = rows.defers[i];
+        for (std::size_t k = 0; k < row.more_to.size(); ++k) row.more_to[k] = id(rows.more_targets[i][k]);
         if (row.defers) row.action = nullptr;
         return row;
     }
@@ -7970,6 +8240,7 @@ private:
     static constexpr std::size_t N = tables_type::state_count;
     static constexpr auto const& states = tables_type::states;
     static constexpr auto const& transitions = tables_type::transitions;
+    using transition_row_type = typename tables_type::transition_row_type;
 
     // ---- the configuration ----------------------------------------------------------------
     std::uint8_t byte(std::int16_t slot) const {
@@ -8044,6 +8315,9 @@ private:
                     if (auto const f = row.initial_action) f(this->chart(), this->context_.value, this->queue_, this->sink());
                     if (states[row.initial].status.kind == state_kind::history) {
                         enter_history(row.initial);
+                    } else if (row.more_initial[0] != no_state) {  // initial<A, B>: one state in each region
+                        activate_all(s, target_set{row.initial_target, row.more_initial[0], row.more_initial[1],
+                                                   row.more_initial[2]});
                     } else if (row.initial_target != row.initial) {
                         activate_path(s, row.initial_target);
                     } else {
@@ -8117,6 +8391,60 @@ private:
             enter_path_node(c, target);
         }
     }
+    // Several targets (bsc::targets, bsc::initial<A, B>): the paths down to each of them, the
+    // regions of a parallel state on the way that hold none entered by default. A set holds up
+    // to four states, no_state where it has fewer.
+    using target_set = std::array<state_id, 4>;
+    static bool holds_target(state_id s, target_set const& targets) {
+        for (state_id t : targets)
+            if (t != no_state && tables_type::contains(s, t)) return true;
+        return false;
+    }
+    static bool is_target(state_id s, target_set const& targets) {
+        for (state_id t : targets)
+            if (t != no_state && s == t) return true;
+        return false;
+    }
+    void activate_all(state_id domain, target_set const& targets) {
+        if (states[domain].status.kind == state_kind::parallel) {
+            this->enter_parallel(domain, [&] {
+                for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
+                    if (holds_target(k, targets))
+                        enter_path_all(k, targets);
+                    else
+                        enter_default(k);
+                }
+            });
+        } else {
+            // The child of `domain` toward the targets it holds (they lie below one child).
+            state_id c = no_state;
+            for (state_id t : targets)
+                if (t != no_state && c == no_state && tables_type::contains(domain, t) && t != domain) c = t;
+            while (states[c].parent != domain) c = states[c].parent;
+            if (states[c].status.kind == state_kind::history) {
+                enter_history(c);
+            } else {
+                if (states[domain].slot >= 0) set_byte(states[domain].slot, states[c].ordinal);
+                enter_path_all(c, targets);
+            }
+        }
+    }
+    void enter_path_all(state_id s, target_set const& targets) {
+        run_entry(s);
+        if (is_target(s, targets))
+            enter_content(s);
+        else
+            activate_all(s, targets);
+    }
+    // Step 5 for one transition: the entries of its target, or of its targets.
+    void enter_targets(transition_row_type const& row) {
+        if (row.to == no_state) return;
+        if (row.more_to[0] != no_state)
+            activate_all(row.domain, target_set{row.to, row.more_to[0], row.more_to[1], row.more_to[2]});
+        else
+            activate_path(row.domain, row.to);
+    }
+
     void enter_path_node(state_id s, state_id target) {
         run_entry(s);
         if (s == target)
@@ -8263,10 +8591,7 @@ private:
         for (std::size_t i = 0; i < fired.size; ++i)
             run_action(static_cast<std::int16_t>(fired.rows[i]), e.as(transitions[fired.rows[i]].event));
         // 5. Activate the states they enter, running entry actions, defaults and history.
-        for (std::size_t i = 0; i < fired.size; ++i) {
-            auto const& row = transitions[fired.rows[i]];
-            if (row.to != no_state) activate_path(row.domain, row.to);
-        }
+        for (std::size_t i = 0; i < fired.size; ++i) enter_targets(transitions[fired.rows[i]]);
         return any;
     }
 
@@ -8310,7 +8635,7 @@ private:
         auto const& row = transitions[static_cast<std::size_t>(t)];
         if (row.to != no_state) deactivate_path(row.domain);
         run_action(t, &no_event);
-        if (row.to != no_state) activate_path(row.domain, row.to);
+        enter_targets(row);
         // An internal timeout, which leaves its state active, counts again from now.
         if constexpr (tables_type::timeout_slots > 0)
             if (row.to == no_state && row.timeout_slot >= 0)

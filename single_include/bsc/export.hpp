@@ -231,6 +231,7 @@ struct state_info {
     int parent = -1;  ///< index in diagram::states; -1 for the root
     std::vector<int> children;
     int initial = -1;  ///< a composite's initial state (a child, or deeper); a history state's default
+    std::vector<int> more_initials;  ///< a composite's initial states after the first (`initial<A, B>`)
     std::vector<std::string> entry;  ///< labels of the entry actions, in declaration order
     std::vector<std::string> exit;   ///< labels of the exit actions
     /// labels of the actions of its initial transition (a composite) or default transition (a
@@ -255,6 +256,15 @@ struct transition_info {
     std::string action;  ///< empty if no action
     bool local = false;  ///< a local transition (bsc::local): its source stays active
     bool defers = false;  ///< a row that defers its event (`/ bsc::defer`)
+    std::vector<int> more_targets;  ///< a transition with several targets (bsc::targets): the others
+
+    /// Every target: none for an internal transition, else `target` and `more_targets`.
+    std::vector<int> targets() const {
+        std::vector<int> all;
+        if (target >= 0) all.push_back(target);
+        all.insert(all.end(), more_targets.begin(), more_targets.end());
+        return all;
+    }
 
     /// "event [guard] / action", with the parts that exist, and "(local)" for a local one.
     std::string label() const {
@@ -387,6 +397,8 @@ diagram model_of(Chart const& chart) {
         info.parent = tree.parent[i] - 1;
         // A composite's initial state (a child, or deeper), a history state's default.
         info.initial = tree.initial_target[i] >= 0 ? tree.initial_target[i] - 1 : -1;
+        for (int const more : tree.more_initial[i])
+            if (more >= 0) info.more_initials.push_back(more - 1);
         for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
             info.children.push_back(c - 1);
         m.states.push_back(std::move(info));
@@ -400,6 +412,8 @@ diagram model_of(Chart const& chart) {
                        ? model::rows.target[static_cast<std::size_t>(t.row)] - 1
                        : -1;
         if (t.target < 0) m.states[static_cast<std::size_t>(t.source)].internal.push_back(static_cast<int>(k));
+        for (int const more : model::rows.more_targets[static_cast<std::size_t>(t.row)])
+            if (more >= 0) t.more_targets.push_back(more - 1);
         // Local in effect: the domain is the source (bsc::local from a composite).
         t.local = t.target >= 0 && model::rows.domain[static_cast<std::size_t>(t.row)] == model::rows.source[static_cast<std::size_t>(t.row)];
     }
@@ -523,6 +537,11 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
             attributes += (attributes.empty() ? "" : ", ") + std::string("label=") + dot_quoted(initial_label(st));
         if (!attributes.empty()) out += " [" + attributes + "]";
         out += ";\n";
+        for (int const more : st.more_initials) {
+            out += pad + "    " + initial + " -> " + dot_node(m, more);
+            if (!m[more].is_leaf()) out += " [lhead=" + dot_cluster(m, more) + "]";
+            out += ";\n";
+        }
     }
     if (st.hist != history::none)
         out += pad + "    " + dot_quoted(st.id + ":history") + " [shape=circle, label=" +
@@ -541,17 +560,18 @@ inline std::string to_dot(diagram const& m) {
     out += "    \":start\" -> " + dot_node(m, 0) + " [lhead=" + dot_cluster(m, 0) + "];\n";
     dot_state(m, 0, 1, false, out);
     for (auto const& t : m.transitions) {
-        if (t.target < 0) continue;  // internal: listed in its state
-        out += "    " + dot_node(m, t.source) + " -> " + dot_node(m, t.target);
-        std::string attributes;
-        auto const add = [&](std::string const& a) { attributes += (attributes.empty() ? "" : ", ") + a; };
-        auto const label = t.label();
-        if (!label.empty()) add("label=" + dot_quoted(label));
-        // Graphviz ignores ltail when the head is inside the tail's cluster, and lhead when
-        // the tail is inside the head's cluster; such an edge starts or ends at the anchor.
-        if (!m[t.source].is_leaf() && !m.contains(t.source, t.target)) add("ltail=" + dot_cluster(m, t.source));
-        if (!m[t.target].is_leaf() && !m.contains(t.target, t.source)) add("lhead=" + dot_cluster(m, t.target));
-        out += (attributes.empty() ? "" : " [" + attributes + "]") + ";\n";
+        for (int const target : t.targets()) {  // none for an internal one: listed in its state
+            out += "    " + dot_node(m, t.source) + " -> " + dot_node(m, target);
+            std::string attributes;
+            auto const add = [&](std::string const& a) { attributes += (attributes.empty() ? "" : ", ") + a; };
+            auto const label = t.label();
+            if (!label.empty()) add("label=" + dot_quoted(label));
+            // Graphviz ignores ltail when the head is inside the tail's cluster, and lhead when
+            // the tail is inside the head's cluster; such an edge starts or ends at the anchor.
+            if (!m[t.source].is_leaf() && !m.contains(t.source, target)) add("ltail=" + dot_cluster(m, t.source));
+            if (!m[target].is_leaf() && !m.contains(target, t.source)) add("lhead=" + dot_cluster(m, target));
+            out += (attributes.empty() ? "" : " [" + attributes + "]") + ";\n";
+        }
     }
     out += "}\n";
     return out;
@@ -626,6 +646,7 @@ inline void mermaid_state(diagram const& m, int s, int level, std::string& out) 
     for (auto const& line : activities) title += "<br/>" + mermaid_text(line);
     out += indent(level) + "state \"" + title + "\" as " + st.id + " {\n";
     if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + with_label(initial_label(st)) + "\n";
+    for (int const more : st.more_initials) out += indent(level + 1) + "[*] --> " + m[more].id + "\n";
     bool first = true;
     for (int const c : st.children) {
         if (st.node_kind == kind::parallel && !first) out += indent(level + 1) + "--\n";
@@ -640,11 +661,12 @@ inline std::string to_mermaid(diagram const& m) {
     out += indent(1) + "[*] --> " + m[0].id + "\n";
     mermaid_state(m, 0, 1, out);
     for (auto const& t : m.transitions) {
-        if (t.target < 0) continue;  // internal: shown in its state
-        out += indent(1) + m[t.source].id + " --> " + m[t.target].id;
-        auto const label = t.label();
-        if (!label.empty()) out += " : " + mermaid_text(label);
-        out += "\n";
+        for (int const target : t.targets()) {  // none for an internal one: shown in its state
+            out += indent(1) + m[t.source].id + " --> " + m[target].id;
+            auto const label = t.label();
+            if (!label.empty()) out += " : " + mermaid_text(label);
+            out += "\n";
+        }
     }
     return out;
 }
@@ -702,6 +724,7 @@ inline void plantuml_state(diagram const& m, int s, int level, std::string& out)
         if (st.initial >= 0) {
             auto const label = initial_label(st);
             out += indent(level + 1) + "[*] --> " + m[st.initial].id + (label.empty() ? "" : " : " + plantuml_text(label)) + "\n";
+            for (int const more : st.more_initials) out += indent(level + 1) + "[*] --> " + m[more].id + "\n";
         }
         bool first = true;
         for (int const c : st.children) {
@@ -724,11 +747,12 @@ inline std::string to_plantuml(diagram const& m) {
     out += "[*] --> " + m[0].id + "\n";
     plantuml_state(m, 0, 0, out);
     for (auto const& t : m.transitions) {
-        if (t.target < 0) continue;  // internal: a description line of its state
-        out += m[t.source].id + " --> " + m[t.target].id;
-        auto const label = t.label();
-        if (!label.empty()) out += " : " + plantuml_text(label);
-        out += "\n";
+        for (int const target : t.targets()) {  // none for an internal one: a line of its state
+            out += m[t.source].id + " --> " + m[target].id;
+            auto const label = t.label();
+            if (!label.empty()) out += " : " + plantuml_text(label);
+            out += "\n";
+        }
     }
     return out + "@enduml\n";
 }
@@ -839,8 +863,11 @@ inline void scxml_transition(diagram const& m, transition_info const& t, int lev
     else if (t.trigger == trigger_kind::event)
         out += " event=\"" + event_descriptor(t.event) + "\"";
     if (!t.guard.empty()) out += " cond=\"" + xml_escaped(t.guard) + "\"";
-    if (t.target >= 0)
-        out += " target=\"" + m[t.target].id + "\"";
+    if (t.target >= 0) {
+        out += " target=\"";
+        for (int const target : t.targets()) out += (target == t.target ? "" : " ") + m[target].id;
+        out += "\"";
+    }
     if (t.target < 0 || t.local) out += " type=\"internal\"";
     if (t.action.empty())
         out += "/>\n";
@@ -882,7 +909,11 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     out += pad + "<" + element + " id=\"" + st.id + "\"";
     // An initial transition with actions is an <initial> element; without, the attribute.
     bool const initial_element = st.initial >= 0 && st.hist == history::none && !st.initial_actions.empty();
-    if (st.initial >= 0 && st.hist == history::none && !initial_element) out += " initial=\"" + m[st.initial].id + "\"";
+    if (st.initial >= 0 && st.hist == history::none && !initial_element) {
+        out += " initial=\"" + m[st.initial].id;
+        for (int const more : st.more_initials) out += " " + m[more].id;
+        out += "\"";
+    }
     bool const empty = st.children.empty() && st.entry.empty() && st.exit.empty() && !has_transitions;
     if (empty) {
         out += "/>\n";
@@ -893,7 +924,9 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     if (st.node_kind == kind::final_state && element == "state")
         out += inner + "<!-- a final state of the chart; <final> may not have transitions -->\n";
     if (initial_element) {
-        out += inner + "<initial>\n" + inner + "    <transition target=\"" + m[st.initial].id + "\">\n";
+        std::string targets = m[st.initial].id;
+        for (int const more : st.more_initials) targets += " " + m[more].id;
+        out += inner + "<initial>\n" + inner + "    <transition target=\"" + targets + "\">\n";
         for (auto const& a : st.initial_actions) out += inner + "        " + scxml_script(a) + "\n";
         out += inner + "    </transition>\n" + inner + "</initial>\n";
     }

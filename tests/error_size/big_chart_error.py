@@ -138,6 +138,17 @@ def edit(kind, tree, rows, extra, body):
         tree[6].append("bsc::shallow_history_state<H, S7_0>")
         rows.append("bsc::state<S5_5> + bsc::event<e9> = bsc::state<H>")
         return ["H"], "invalid history state"
+    if kind == "targets_not_orthogonal":
+        extra.append("struct P; struct R1; struct R2; struct A1; struct A2; struct B1;")
+        tree["top"].append("bsc::parallel<P>(bsc::composite<R1>(bsc::initial<A1>, bsc::state<A2>), "
+                           "bsc::composite<R2>(bsc::initial<B1>))")
+        rows.append("bsc::state<S3_4> + bsc::event<e8> = bsc::targets(bsc::state<A1>, bsc::state<A2>)")
+        rows.append("bsc::state<A1> + bsc::event<e1> = bsc::state<A2>")
+        rows.append("bsc::state<P> + bsc::event<e2> = bsc::state<S3_0>")
+        return ["S3_4", "A1", "A2"], "targets not orthogonal", "S3_4 + e8 = targets(A1, A2)"
+    if kind == "invalid_deferral":
+        rows.append("bsc::state<S5_5> + bsc::event<e9> / bsc::defer = bsc::state<S5_0>")
+        return ["S5_5", "e9"], "invalid deferral", "S5_5 + e9 / defer = S5_0"
     raise SystemExit(f"unknown defect {kind}")
 
 
@@ -146,7 +157,8 @@ DEFECTS = ["unreachable_state", "dead_end_state", "conflicting_transitions", "sh
            "missing_initial_state", "multiple_initial_states", "initial_not_a_child", "eventless_livelock",
            "not_a_row", "guard_signature_not_supported", "action_signature_not_supported", "dead_transition",
            "empty_parallel_state", "dead_timeout", "local_target_outside_source", "event_in_two_families",
-           "initial_action_without_initial_transition", "invalid_history_state"]
+           "initial_action_without_initial_transition", "invalid_history_state", "targets_not_orthogonal",
+           "invalid_deferral"]
 
 # Found by constant evaluation of the chart (timeouts are values), not by a bsc::error type. Its
 # error is the failed evaluation, whose notes show the call stack from make_chart down: Clang
@@ -170,6 +182,8 @@ def source(kinds):
         row = re.sub(r"\[\(.*\)\]", "[guard]", row)
         row = re.sub(r"\[bad_guard\{\}\]", "[guard]", row)
         row = re.sub(r"bsc::local\((\w+)\)", r"local(\1)", row)
+        row = re.sub(r"bsc::targets\((\w+), (\w+)\)", r"targets(\1, \2)", row)
+        row = row.replace("/ bsc::defer", "/ defer")
         row = re.sub(r"/ \[\]\(ctx&\) \{\}", "/ action", row)
         row = row.replace("bsc::on_exit", "on_exit").replace("bsc::on_initial", "on_initial")
         return re.sub(r"/ bad_action\{\}", "/ action", row)

@@ -2,10 +2,12 @@
 // A chart that uses every construct beyond the core formalism (docs/semantics.md, "Beyond the
 // core"): a local transition, an event family, bsc::any_event, done events of a composite and
 // of a parallel state, a final child of the root, an initial transition with an action and a
-// deep target, and a history state with a default action. export_diagrams --all writes it in every
+// deep target, a history state with a default action, several targets, a deferring row and a
+// delayed event. export_diagrams --all writes it in every
 // format, so that the exports.* tests check what the exporters make of these constructs.
 
 #include <bsc/bsc.hpp>
+#include <chrono>
 
 namespace beyond_core {
 struct error {
@@ -38,6 +40,7 @@ struct Setup;
 struct Mount;
 struct Align;
 struct back {};
+struct both {};
 struct data {
     int jobs = 0;
 };
@@ -59,6 +62,9 @@ inline constexpr auto chart = bsc::make_chart<data>(
     bsc::state<Resume> + bsc::on_initial / [](data& d) { ++d.jobs; },
     bsc::state<Align> + bsc::event<next> = bsc::state<Load>, bsc::state<Mount> + bsc::event<next> = bsc::state<Align>,
     bsc::state<Load> + bsc::event<back> = bsc::state<Mount>,
+    bsc::state<Idle> + bsc::event<both> = bsc::targets(bsc::state<LeftOk>, bsc::state<RightOk>),
+    bsc::state<Run> + bsc::event<start> / bsc::defer,
+    bsc::state<Fault> + bsc::on_entry / bsc::raise_after(std::chrono::seconds{5}, quit{}, 1),
     bsc::state<Load> + bsc::event<next> = bsc::state<Run>,
     bsc::state<Run> + bsc::event<next> = bsc::state<Unloaded>,
     bsc::state<Job> + bsc::event<restart> = bsc::local(bsc::state<Load>),

@@ -362,7 +362,7 @@ struct halting {
 };
 
 // ---- beyond the core: a local transition, event families, any_event, done events, an initial
-// action, a history state, deferred and delayed events ------------------------------------------
+// action, a history state, deferred and delayed events, several targets -------------------------
 namespace beyond {
 // A family: a row on fam takes fam_a and fam_b; fam_b is named by no row (the twin dispatches
 // it as one of the fixture's extra events, and an action raises it).
@@ -386,6 +386,18 @@ struct YF;
 struct C;
 struct F;
 struct WH;
+struct D1;
+struct D2;
+struct D2a;
+struct D2b;
+struct D3;
+struct XQ;
+struct XQ1;
+struct XQ2;
+struct XQ1a;
+struct XQ1b;
+struct XQ2a;
+struct XQ2b;
 }  // namespace beyond
 
 struct beyond_core {
@@ -400,7 +412,12 @@ struct beyond_core {
                 bsc::composite<W>(bsc::initial<W1>, bsc::deep_history_state<WH, W2>, state<W1>, state<W2>, bsc::final_state<WF>),
                 bsc::parallel<P>(bsc::composite<R1>(bsc::initial<X1>, state<X1>, bsc::final_state<XF>),
                                  bsc::composite<R2>(bsc::initial<Y1>, state<Y1>, bsc::final_state<YF>)),
-                state<C>, bsc::final_state<F>),
+                state<C>, bsc::final_state<F>,
+                // A deep initial, and one state in each region (initial<A, B>).
+                bsc::composite<D1>(bsc::initial<D2b>, bsc::composite<D2>(bsc::initial<D2a>, state<D2a>, state<D2b>)),
+                bsc::composite<D3>(bsc::initial<XQ1b, XQ2b>,
+                                   bsc::parallel<XQ>(bsc::composite<XQ1>(bsc::initial<XQ1a>, state<XQ1a>, state<XQ1b>),
+                                                     bsc::composite<XQ2>(bsc::initial<XQ2a>, state<XQ2a>, state<XQ2b>)))),
             state<W1> + event<go> = state<W2>, state<W2> + event<go>[a_big] / note<1> = state<WF>,
             state<W> + event<back> / note<2> = bsc::local(state<W1>),
             state<W> + event<bsc::done<W>> / note<3> = state<P>,
@@ -410,6 +427,10 @@ struct beyond_core {
             state<R1> + event<bsc::done<R1>> / note<5>, state<P> + event<bsc::done<P>> / note<4> = state<C>,
             state<P> + event<back> = state<C>,
             state<C> + event<tick> / bsc::defer, state<W1> + event<tick>[a_even] / bsc::defer,
+            state<C> + event<e1>[a_big] = bsc::targets(state<XF>, state<YF>),
+            state<C> + event<back> = state<D1>, state<D2b> + event<go> = state<D2a>, state<D2a> + event<back> = state<D3>,
+            state<D2a> + event<go> = state<C>, state<XQ1b> + event<go> = state<XQ1a>, state<XQ2b> + event<go> = state<XQ2a>,
+            state<D3> + event<back> = state<C>, state<D1> + bsc::on_initial / note<17>, state<XQ2b> + on_entry / note<18>,
             state<W2> + event<pong> / bsc::raise_after(std::chrono::milliseconds{30}, ping{}, 2),
             state<W1> + event<pong> / bsc::cancel_delayed(2),
             state<C> + event<fam_a> / inc_b = state<W>, state<C> + event<fam> / note<6> = state<F>,

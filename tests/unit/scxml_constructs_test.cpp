@@ -611,3 +611,66 @@ TEST_CASE("a delayed event and its cancellation are labelled in the exports") {
     CHECK(mermaid.find("Idle --> Wait : start / raise_after(2s, tick, 1)") != std::string::npos);
     CHECK(mermaid.find("Wait --> Idle : finish / cancel_delayed(1)") != std::string::npos);
 }
+
+// ---- transitions with several targets -----------------------------------------------------------
+
+namespace beyond {
+struct Q3;
+struct QL;
+struct QR;
+struct QM;
+struct QL1;
+struct QL2;
+struct QR1;
+struct QR2;
+struct QM1;
+struct QM2;
+inline constexpr auto targets_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(
+        bsc::initial<Idle>, bsc::state<Idle>,
+        bsc::parallel<Q3>(bsc::composite<QL>(bsc::initial<QL1>, bsc::state<QL1>, bsc::state<QL2>),
+                          bsc::composite<QM>(bsc::initial<QM1>, bsc::state<QM1>, bsc::state<QM2>),
+                          bsc::composite<QR>(bsc::initial<QR1>, bsc::state<QR1>, bsc::state<QR2>))),
+    bsc::state<Idle> + bsc::event<go> = bsc::targets(bsc::state<QL2>, bsc::state<QR2>),
+    bsc::state<QL1> + bsc::event<go> = bsc::state<QL2>, bsc::state<QM1> + bsc::event<go> = bsc::state<QM2>,
+    bsc::state<QR1> + bsc::event<go> = bsc::state<QR2>, bsc::state<Q3> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<Q3> + bsc::on_entry / log("enter Q3"), bsc::state<QL2> + bsc::on_entry / log("enter QL2"),
+    bsc::state<QM1> + bsc::on_entry / log("enter QM1"), bsc::state<QR2> + bsc::on_entry / log("enter QR2"),
+    bsc::state<QL> + bsc::on_entry / log("enter QL"), bsc::state<QM> + bsc::on_entry / log("enter QM"),
+    bsc::state<QR> + bsc::on_entry / log("enter QR"));
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("a transition with several targets enters each, and the regions that hold none by default", Backend,
+                   compiled, table) {
+    machine_t<Backend, decltype(targets_chart)> m{targets_chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "enter Q3 enter QL enter QL2 enter QM enter QM1 enter QR enter QR2");
+    CHECK(m.active_states().joined() == "Root Q3 QL QL2 QM QM1 QR QR2");
+    CHECK(bsc::to_scxml(targets_chart).find("<transition event=\"go\" target=\"QL2 QR2\"/>") != std::string::npos);
+}
+
+namespace beyond {
+struct Outer3;
+inline constexpr auto initial_set_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(
+        bsc::initial<Idle>, bsc::state<Idle>,
+        bsc::composite<Outer3>(
+            bsc::initial<QL2, QR2>,
+            bsc::parallel<Q3>(bsc::composite<QL>(bsc::initial<QL1>, bsc::state<QL1>, bsc::state<QL2>),
+                              bsc::composite<QM>(bsc::initial<QM1>, bsc::state<QM1>, bsc::state<QM2>),
+                              bsc::composite<QR>(bsc::initial<QR1>, bsc::state<QR1>, bsc::state<QR2>)))),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Outer3>, bsc::state<Outer3> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<QL2> + bsc::event<go> = bsc::state<QL1>, bsc::state<QM1> + bsc::event<go> = bsc::state<QM2>,
+    bsc::state<QR2> + bsc::event<go> = bsc::state<QR1>, bsc::state<Outer3> + bsc::on_initial / log("initial Outer3"),
+    bsc::state<QL2> + bsc::on_entry / log("enter QL2"), bsc::state<QM1> + bsc::on_entry / log("enter QM1"),
+    bsc::state<QR2> + bsc::on_entry / log("enter QR2"));
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("an initial transition may name one state in each region (initial<A, B>)", Backend, compiled, table) {
+    machine_t<Backend, decltype(initial_set_chart)> m{initial_set_chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "initial Outer3 enter QL2 enter QM1 enter QR2");
+    CHECK(m.active_states().joined() == "Root Outer3 Q3 QL QL2 QM QM1 QR QR2");
+    CHECK(bsc::to_scxml(initial_set_chart).find("<transition target=\"QL2 QR2\">") != std::string::npos);
+    CHECK(bsc::to_mermaid(initial_set_chart).find("[*] --> QR2") != std::string::npos);
+}

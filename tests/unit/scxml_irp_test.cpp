@@ -1,13 +1,13 @@
 // Translations of W3C SCXML 1.0 Implementation Report Plan (IRP) tests for the constructs
-// beyond the core: done events (372, 416, 417, 570), initial transitions (412, 413 with one
-// target), history states (387, 388, 579, 580), local ("internal") transitions (504, 505, 533)
-// and event descriptors (399, 403a). Each follows the published description of the test:
+// beyond the core: done events (372, 416, 417, 570), initial transitions (412, 413, 576), history states (387, 388, 579, 580), local ("internal") transitions (504, 505, 533),
+// event descriptors (399, 403a) and delayed sends to self (175, 208). Each follows the published description of the test:
 // the same states, the same events in the same order, and the same verdict, which the IRP
 // gives as a final state named pass or fail; here Pass and Fail are final children of the root,
 // and a test passes when the machine halts in Pass. Run on both back ends.
 
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <string>
 
 #include "backends.hpp"
@@ -499,4 +499,90 @@ TEST_CASE_TEMPLATE("IRP 580: a history state is never active", Backend, compiled
         CHECK(m.active_states().joined() == expected);
         CHECK_FALSE(m.template is<irp580::S0H>());
     }
+}
+
+// 175: a delayed send comes after an event raised later without delay: event1 is sent with a
+// delay of 1 s, then event2 at once; event2 must come first. (The IRP test uses the external
+// queue; here the delay is counted by step(now).)
+namespace irp175 {
+struct event1 {};
+struct event2 {};
+struct S0;
+struct S1;
+inline constexpr auto chart = bsc::make_chart<vars>(
+    bsc::composite<Root>(bsc::initial<S0>, bsc::state<S0>, bsc::state<S1>, bsc::final_state<Pass>,
+                         bsc::final_state<Fail>),
+    bsc::state<S0> + bsc::on_entry / (bsc::raise_after(std::chrono::seconds{1}, event1{}), bsc::raise(event2{})),
+    bsc::state<S0> + bsc::event<event2> = bsc::state<S1>, bsc::state<S0> + bsc::event<event1> = bsc::state<Fail>,
+    bsc::state<S1> + bsc::event<event1> = bsc::state<Pass>, bsc::state<S1> + bsc::event<event2> = bsc::state<Fail>);
+}  // namespace irp175
+
+TEST_CASE_TEMPLATE("IRP 175: a delayed event comes after one raised later without delay", Backend, compiled, table) {
+    using namespace std::chrono_literals;
+    machine_t<Backend, decltype(irp175::chart)> m{irp175::chart, vars{}};
+    m.step(0s);
+    CHECK(m.template is<irp175::S1>());
+    m.step(500ms);
+    CHECK(m.template is<irp175::S1>());
+    m.step(1s);
+    expect_pass(m);
+}
+
+// 208: a delayed event cancelled by its id is never delivered; another one is.
+namespace irp208 {
+struct event1 {};
+struct event2 {};
+struct S0;
+inline constexpr auto chart = bsc::make_chart<vars>(
+    bsc::composite<Root>(bsc::initial<S0>, bsc::state<S0>, bsc::final_state<Pass>, bsc::final_state<Fail>),
+    bsc::state<S0> + bsc::on_entry /
+                         (bsc::raise_after(std::chrono::seconds{1}, event1{}, 1),
+                          bsc::raise_after(std::chrono::milliseconds{1500}, event2{}, 2), bsc::cancel_delayed(1)),
+    bsc::state<S0> + bsc::event<event2> = bsc::state<Pass>, bsc::state<S0> + bsc::event<event1> = bsc::state<Fail>);
+}  // namespace irp208
+
+TEST_CASE_TEMPLATE("IRP 208: a cancelled delayed event is not delivered", Backend, compiled, table) {
+    using namespace std::chrono_literals;
+    machine_t<Backend, decltype(irp208::chart)> m{irp208::chart, vars{}};
+    m.step(0s);
+    m.step(1s);
+    CHECK(m.template is<irp208::S0>());
+    m.step(2s);
+    expect_pass(m);
+}
+
+// 576: initial states deep in two regions of a parallel state, neither the regions' defaults,
+// are both entered (SCXML's initial="s11p112 s11p122").
+namespace irp576 {
+struct S1;
+struct S11;
+struct S11P1;
+struct S11P11;
+struct S11P111;
+struct S11P112;
+struct S11P12;
+struct S11P121;
+struct S11P122;
+struct go {};
+inline constexpr auto chart = bsc::make_chart<vars>(
+    bsc::composite<Root>(
+        bsc::initial<S1>,
+        bsc::composite<S1>(
+            bsc::initial<S11P112, S11P122>,
+            bsc::composite<S11>(
+                bsc::initial<S11P1>,
+                bsc::parallel<S11P1>(
+                    bsc::composite<S11P11>(bsc::initial<S11P111>, bsc::state<S11P111>, bsc::state<S11P112>),
+                    bsc::composite<S11P12>(bsc::initial<S11P121>, bsc::state<S11P121>, bsc::state<S11P122>)))),
+        bsc::final_state<Pass>, bsc::final_state<Fail>),
+    bsc::state<S11P112>[([](vars const& v) { return v.var1 == 1; })] = bsc::state<Pass>,
+    bsc::state<S11P122> + bsc::on_entry / bsc::action([](vars& v) { ++v.var1; }),
+    bsc::state<S11P111> + bsc::event<go> = bsc::state<Fail>, bsc::state<S11P121> + bsc::event<go> = bsc::state<Fail>,
+    bsc::state<S11P1> + bsc::event<go> = bsc::state<S11P112>);
+}  // namespace irp576
+
+TEST_CASE_TEMPLATE("IRP 576: initial states in two regions of a parallel state are both entered", Backend, compiled,
+                   table) {
+    machine_t<Backend, decltype(irp576::chart)> m{irp576::chart, vars{}};
+    expect_pass(m);
 }

@@ -47,7 +47,8 @@ template <class Chart>
 constexpr bool structure_valid() {
     using model = chart_model<Chart>;
     return find_duplicate(typename model::tags{}) < 0 && find_unknown_state(model::rows) < 0 &&
-           find_initial_problem(model::tree) < 0 && find_invalid_history(model::tree, model::rows) < 0;
+           find_initial_problem(model::tree) < 0 && find_invalid_history(model::tree, model::rows) < 0 &&
+           find_initial_set_problem(model::tree) < 0;
 }
 
 template <class Chart>
@@ -82,8 +83,11 @@ constexpr auto check_structure() {
                     return type_list<error::multiple_initial_states<S>>{};
             } else {
                 constexpr int history_state = find_invalid_history(model::tree, model::rows);
+                constexpr int initial_set = find_initial_set_problem(model::tree);
                 if constexpr (history_state >= 0)
                     return type_list<error::invalid_history_state<typename model::template tag_at<history_state>>>{};
+                else if constexpr (initial_set >= 0)
+                    return type_list<error::initial_states_not_orthogonal<typename model::template tag_at<initial_set>>>{};
                 else
                     return type_list<>{};
             }
@@ -111,6 +115,19 @@ constexpr auto check_local_targets() {
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
         return type_list<row_error<Chart, row, error::local_target_outside_source<typename R::source, typename R::target>>>{};
+    } else {
+        return type_list<>{};
+    }
+}
+
+template <class Chart>
+constexpr auto check_several_targets() {
+    using model = chart_model<Chart>;
+    constexpr int row = find_targets_not_orthogonal(model::tree, model::rows);
+    if constexpr (row >= 0) {
+        using R = typename model::template row_at<row>;
+        using named = decltype([]<class... S>(type_list<S...>) { return error::target_states<S...>{}; }(typename R::targets{}));
+        return type_list<row_error<Chart, row, error::targets_not_orthogonal<typename R::source, named>>>{};
     } else {
         return type_list<>{};
     }
@@ -237,7 +254,8 @@ constexpr auto check_chart() {
         return check_structure<Chart>();
     else
         // Each check runs, so one build reports every kind of problem it finds.
-        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_initial_actions<Chart>() + check_deferrals<Chart>() +
+        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_several_targets<Chart>() + check_initial_actions<Chart>() +
+               check_deferrals<Chart>() +
                check_event_families<Chart>() +
                check_determinism<Chart>() + check_dead_transitions<Chart>() +
                check_reachability<Chart>() + check_livelock<Chart>() +

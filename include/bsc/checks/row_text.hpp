@@ -96,6 +96,13 @@ struct action_words {
 };
 template <class A>
 struct action_words<state_action<A>> : action_words<A> {};
+template <>
+struct action_words<defer_action> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out("defer");
+    }
+};
 template <class... As>
 struct action_words<action_seq<As...>> {
     template <class Out>
@@ -129,7 +136,14 @@ struct row_words<transition_row<S, Trigger, G, A, T>> {
             out(" / ");
             action_words<A>::write(out);
         }
-        if constexpr (target_parts<T>::local) {
+        if constexpr (target_parts<T>::all::size > 1) {
+            out(" = targets(");
+            [&]<class... Targets>(type_list<Targets...>) {
+                bool first = true;
+                ((out(first ? "" : ", "), out(name_of<Targets>), first = false), ...);
+            }(typename target_parts<T>::all{});
+            out(")");
+        } else if constexpr (target_parts<T>::local) {
             out(" = local(");
             out(name_of<typename target_parts<T>::state>);
             out(")");

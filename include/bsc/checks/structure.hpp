@@ -27,9 +27,12 @@ constexpr int find_initial_problem(topology<N> const& t) {
 
 template <std::size_t R>
 constexpr int find_unknown_state(row_table<R> const& r) {
-    for (std::size_t i = 0; i < R; ++i)
+    for (std::size_t i = 0; i < R; ++i) {
         if (r.source[i] == unknown_state || r.target[i] == unknown_state)
             return static_cast<int>(i);
+        for (int m : r.more_targets[i])
+            if (m == unknown_state) return static_cast<int>(i);
+    }
     return -1;
 }
 
@@ -84,6 +87,50 @@ constexpr int find_invalid_deferral(row_table<R> const& r, int any_event_trigger
     for (std::size_t i = 0; i < R; ++i)
         if (r.defers[i] && (r.trigger[i] < 0 || r.trigger[i] == any_event_trigger || r.target[i] >= 0))
             return static_cast<int>(i);
+    return -1;
+}
+
+// Whether the states in `all` (n of them) lie pairwise in different regions of parallel states.
+template <std::size_t N, std::size_t M>
+constexpr bool orthogonal_set(topology<N> const& t, std::array<int, M> const& all, std::size_t n) {
+    for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = a + 1; b < n; ++b)
+            if (all[a] < 0 || all[b] < 0 || t.contains(all[a], all[b]) || t.contains(all[b], all[a]) ||
+                t.kinds[static_cast<std::size_t>(t.lca(all[a], all[b]))] != kind::parallel)
+                return false;
+    return true;
+}
+
+// The first composite with several initial states (bsc::initial<A, B>) one of which does not
+// lie below it, or two of which are not in different regions of a parallel state; -1 if none.
+template <std::size_t N>
+constexpr int find_initial_set_problem(topology<N> const& t) {
+    for (std::size_t s = 1; s < N; ++s) {
+        if (t.kinds[s] != kind::composite || t.more_initial[s][0] == -1) continue;
+        std::array<int, 4> all{t.initial_target[s], -1, -1, -1};
+        std::size_t n = 1;
+        for (int m : t.more_initial[s])
+            if (m != -1) all[n++] = m;
+        for (std::size_t k = 0; k < n; ++k)
+            if (all[k] < 0 || !t.is_proper_ancestor(static_cast<int>(s), all[k])) return static_cast<int>(s);
+        if (!orthogonal_set(t, all, n)) return static_cast<int>(s);
+    }
+    return -1;
+}
+
+// The first row with several targets two of which are not in different regions of a parallel
+// state (one contains the other, or their nearest common ancestor is a composite); -1 if none.
+template <std::size_t N, std::size_t R>
+constexpr int find_targets_not_orthogonal(topology<N> const& t, row_table<R> const& r) {
+    for (std::size_t i = 0; i < R; ++i) {
+        if (!r.several(i)) continue;
+        std::array<int, 1 + row_table<R>::max_more_targets> all{};
+        std::size_t n = 0;
+        all[n++] = r.target[i];
+        for (int m : r.more_targets[i])
+            if (m >= 0) all[n++] = m;
+        if (!orthogonal_set(t, all, n)) return static_cast<int>(i);
+    }
     return -1;
 }
 

@@ -179,6 +179,8 @@ private:
                 run_state_actions<detail::row_kind::initial, S>();
                 if constexpr (tree.kinds[init] == detail::kind::history) {
                     enter_history<init>();
+                } else if constexpr (tree.more_initial[S][0] >= 0) {
+                    enter_toward_all<S, -1 - S>();  // initial<A, B>: one state in each region
                 } else if constexpr (tree.initial_target[S] == init) {
                     set_active_child<S>(tree.ordinal[init]);
                     enter_default<init>();
@@ -321,8 +323,68 @@ private:
     template <int Row>
     constexpr void run_entries() {
         constexpr int d = rows.domain[Row];
-        if constexpr (d >= 0)
+        if constexpr (d >= 0 && rows.several(Row))
+            enter_toward_all<d, Row>();
+        else if constexpr (d >= 0)
             enter_toward<d, rows.target[Row]>();
+    }
+
+    // ---- several targets: bsc::targets, bsc::initial<A, B> ------------------------------
+    // A set of targets, by key: a row's (key >= 0), or the initial states of state s
+    // (key -1 - s). Every target set is orthogonal (checks/structure.hpp).
+    static constexpr std::array<int, 4> target_set(int key) {
+        std::array<int, 4> all{-1, -1, -1, -1};
+        if (key >= 0) {
+            all[0] = rows.target[static_cast<std::size_t>(key)];
+            for (std::size_t k = 0; k < 3; ++k) all[k + 1] = rows.more_targets[static_cast<std::size_t>(key)][k];
+        } else {
+            auto const s = static_cast<std::size_t>(-1 - key);
+            all[0] = tree.initial_target[s];
+            for (std::size_t k = 0; k < 3; ++k) all[k + 1] = tree.more_initial[s][k];
+        }
+        return all;
+    }
+    // A target of the set below state s, -1 if none; whether s is one.
+    static constexpr int target_below(int s, int key) {
+        for (int t : target_set(key))
+            if (t >= 0 && tree.contains(s, t)) return t;
+        return -1;
+    }
+    static constexpr bool is_target(int s, int key) {
+        for (int t : target_set(key))
+            if (t == s) return true;
+        return false;
+    }
+    // Enters, below the active state D, the paths to every target of the set: at a parallel
+    // state, each region toward the targets it holds, the others by default.
+    template <int D, int Key>
+    constexpr void enter_toward_all() {
+        if constexpr (tree.kinds[D] == detail::kind::parallel) {
+            this->enter_parallel(D, [&] {
+                for_each_child<D>([&](auto k) {
+                    if constexpr (target_below(decltype(k)::value, Key) >= 0)
+                        enter_path_all<decltype(k)::value, Key>();
+                    else
+                        enter_default<decltype(k)::value>();
+                });
+            });
+        } else {
+            constexpr int c = tree.child_toward(D, target_below(D, Key));
+            if constexpr (tree.kinds[c] == detail::kind::history) {
+                enter_history<c>();
+            } else {
+                set_active_child<D>(tree.ordinal[c]);
+                enter_path_all<c, Key>();
+            }
+        }
+    }
+    template <int C, int Key>
+    constexpr void enter_path_all() {
+        run_entry<C>();
+        if constexpr (is_target(C, Key))
+            enter_content<C>();
+        else
+            enter_toward_all<C, Key>();
     }
 
     // Fires a transition selected at basic state Leaf, which no parallel state contains:

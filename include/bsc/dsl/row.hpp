@@ -19,6 +19,8 @@ template <class S>
 struct state_ref;
 template <class S>
 struct local_ref;
+template <class... S>
+struct targets_ref;
 
 /// The trigger of a transition taken without an event, when its guard holds.
 struct eventless_trigger {};
@@ -36,15 +38,34 @@ struct no_target {};
 template <class T>
 struct local_target {};
 // A row's target state, and whether the row is local.
+/// The targets of a transition with several, one in each of orthogonal regions (bsc::targets).
+template <class T, class... More>
+struct several_targets {};
+// A row's target state (its first, where it has several), whether the row is local, and all
+// its targets.
 template <class T>
 struct target_parts {
     using state = T;
     static constexpr bool local = false;
+    using all = type_list<T>;
+};
+template <>
+struct target_parts<no_target> {
+    using state = no_target;
+    static constexpr bool local = false;
+    using all = type_list<>;
 };
 template <class T>
 struct target_parts<local_target<T>> {
     using state = T;
     static constexpr bool local = true;
+    using all = type_list<T>;
+};
+template <class T, class... More>
+struct target_parts<several_targets<T, More...>> {
+    using state = T;
+    static constexpr bool local = false;
+    using all = type_list<T, More...>;
 };
 
 // What marks a row. A base of its own for each row type: rows whose guard, action and trigger
@@ -104,6 +125,8 @@ struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
     using target = typename target_parts<T>::state;
     /// A local transition (`= bsc::local(state<T>)`): its source stays active.
     static constexpr bool local = target_parts<T>::local;
+    /// Every target: none, the one, or several (`= bsc::targets(state<A>, state<B>)`).
+    using targets = typename target_parts<T>::all;
     static constexpr bool guarded = !std::is_same_v<G, no_guard>;
     /// A row that defers its event (`/ bsc::defer`).
     static constexpr bool defers = std::is_same_v<A, defer_action>;
@@ -120,6 +143,11 @@ struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
         requires std::is_same_v<T, no_target>
     constexpr auto operator=(local_ref<T2>) const {
         return transition_row<S, Trigger, G, A, local_target<T2>>{{}, trigger_value, guard, action};
+    }
+    template <class... T2>
+        requires std::is_same_v<T, no_target>
+    constexpr auto operator=(targets_ref<T2...>) const {
+        return transition_row<S, Trigger, G, A, several_targets<T2...>>{{}, trigger_value, guard, action};
     }
     template <class A2>
         requires(std::is_same_v<A, no_action> && std::is_same_v<T, no_target>)

@@ -54,7 +54,15 @@ struct state_ref {
     constexpr auto operator=(local_ref<T>) const {
         return transition_row<S, eventless_trigger, no_guard, no_action, local_target<T>>{};
     }
+    template <class... T>
+    constexpr auto operator=(targets_ref<T...>) const {
+        return transition_row<S, eventless_trigger, no_guard, no_action, several_targets<T...>>{};
+    }
 };
+
+// What bsc::targets returns: the targets of a transition with several.
+template <class... S>
+struct targets_ref {};
 
 // What bsc::local returns: the target of a local transition.
 template <class S>
@@ -79,6 +87,19 @@ inline constexpr detail::state_ref<S> state{};
 /// is an ordinary one, as in SCXML, where only a compound state can keep itself active.
 template <class S>
 constexpr detail::local_ref<S> local(detail::state_ref<S>) {
+    return {};
+}
+
+/// The targets of a transition that enters a chosen state in each of several orthogonal
+/// regions (SCXML's `target="a b"`): `state<Idle> + event<go> = targets(state<A2>, state<B3>)`.
+/// The transition's domain is the nearest composite above its source and all its targets; the
+/// regions of a parallel state on the way that hold no target are entered by default.
+/// Requirements: 2 to 4 targets, each pair in different regions of a parallel state
+/// (bsc::error::targets_not_orthogonal).
+template <class... S>
+constexpr detail::targets_ref<S...> targets(detail::state_ref<S>...) {
+    static_assert(sizeof...(S) >= 2 && sizeof...(S) <= 4,
+                  "bsc::targets takes 2 to 4 states (one transition's targets in orthogonal regions)");
     return {};
 }
 

@@ -28,7 +28,7 @@ struct leaf_node : node_base {
     using children = type_list<>;
 };
 
-template <class S, history H, class Initials, class Children>
+template <class S, history H, class Initials, class Children, class MoreInitials = type_list<>>
 struct composite_node : node_base {
     using tag = S;
     static constexpr kind node_kind = kind::composite;
@@ -36,6 +36,9 @@ struct composite_node : node_base {
     static constexpr bool implicit = false;
     using initials = Initials;
     using children = Children;
+    // The initial states after the first, one in each region of a parallel state below
+    // (`bsc::initial<A, B>`, SCXML's initial="a b").
+    using more_initials = MoreInitials;
 };
 
 template <class S, class Children>
@@ -61,9 +64,10 @@ struct history_node : node_base {
     using children = type_list<>;
 };
 
-template <class S>
+template <class S, class... More>
 struct initial_marker {
     using tag = S;
+    using more = type_list<More...>;
 };
 template <history H>
 struct history_marker {};
@@ -76,8 +80,8 @@ template <class S>
 inline constexpr bool is_state_ref<state_ref<S>> = true;
 template <class A>
 inline constexpr bool is_initial_marker = false;
-template <class S>
-inline constexpr bool is_initial_marker<initial_marker<S>> = true;
+template <class S, class... More>
+inline constexpr bool is_initial_marker<initial_marker<S, More...>> = true;
 template <class A>
 inline constexpr bool is_history_marker = false;
 template <history H>
@@ -138,6 +142,14 @@ constexpr auto subtree_tags() {
     return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
 }
 template <class A>
+constexpr auto more_initials_from() {
+    if constexpr (is_initial_marker<A>)
+        return typename A::more{};
+    else
+        return type_list<>{};
+}
+
+template <class A>
 constexpr auto declared_tag() {
     if constexpr (is_node<A>)
         return subtree_tags<A>();
@@ -173,8 +185,13 @@ namespace bsc {
 /// composite by default enters the path down to it, the other regions of parallel states on
 /// the way by default). If S is declared nowhere among the composite's arguments,
 /// `initial<S>` also declares S as a basic child.
-template <class S>
-inline constexpr detail::initial_marker<S> initial{};
+///
+/// `initial<A, B, ...>` names several, one in each of orthogonal regions below the composite
+/// (SCXML's `initial="a b"`): entering the composite by default enters each, and the regions
+/// that hold none by default. At most 4 (bsc::error::targets_not_orthogonal if two are not in
+/// different regions of a parallel state).
+template <class S, class... More>
+inline constexpr detail::initial_marker<S, More...> initial{};
 
 /// Marks a composite state as remembering its last active child (restored on re-entry).
 inline constexpr detail::history_marker<detail::history::shallow> shallow_history{};
@@ -219,7 +236,9 @@ constexpr auto composite(A...) {
     using declared = decltype((detail::type_list<>{} + ... + detail::declared_tag<A>()));
     using children = typename detail::composite_children<declared, std::index_sequence_for<A...>, A...>::type;
     using initials = decltype((detail::type_list<>{} + ... + detail::initials_from<A>()));
-    return detail::composite_node<S, detail::history_from<A...>(), initials, children>{};
+    using more_initials = decltype((detail::type_list<>{} + ... + detail::more_initials_from<A>()));
+    static_assert(more_initials::size <= 3, "bsc::initial takes at most 4 states");
+    return detail::composite_node<S, detail::history_from<A...>(), initials, children, more_initials>{};
 }
 
 /// A parallel (AND) state: all of its children (its components, or regions) are active while it is.

@@ -80,6 +80,11 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
             attributes += (attributes.empty() ? "" : ", ") + std::string("label=") + dot_quoted(initial_label(st));
         if (!attributes.empty()) out += " [" + attributes + "]";
         out += ";\n";
+        for (int const more : st.more_initials) {
+            out += pad + "    " + initial + " -> " + dot_node(m, more);
+            if (!m[more].is_leaf()) out += " [lhead=" + dot_cluster(m, more) + "]";
+            out += ";\n";
+        }
     }
     if (st.hist != history::none)
         out += pad + "    " + dot_quoted(st.id + ":history") + " [shape=circle, label=" +
@@ -98,17 +103,18 @@ inline std::string to_dot(diagram const& m) {
     out += "    \":start\" -> " + dot_node(m, 0) + " [lhead=" + dot_cluster(m, 0) + "];\n";
     dot_state(m, 0, 1, false, out);
     for (auto const& t : m.transitions) {
-        if (t.target < 0) continue;  // internal: listed in its state
-        out += "    " + dot_node(m, t.source) + " -> " + dot_node(m, t.target);
-        std::string attributes;
-        auto const add = [&](std::string const& a) { attributes += (attributes.empty() ? "" : ", ") + a; };
-        auto const label = t.label();
-        if (!label.empty()) add("label=" + dot_quoted(label));
-        // Graphviz ignores ltail when the head is inside the tail's cluster, and lhead when
-        // the tail is inside the head's cluster; such an edge starts or ends at the anchor.
-        if (!m[t.source].is_leaf() && !m.contains(t.source, t.target)) add("ltail=" + dot_cluster(m, t.source));
-        if (!m[t.target].is_leaf() && !m.contains(t.target, t.source)) add("lhead=" + dot_cluster(m, t.target));
-        out += (attributes.empty() ? "" : " [" + attributes + "]") + ";\n";
+        for (int const target : t.targets()) {  // none for an internal one: listed in its state
+            out += "    " + dot_node(m, t.source) + " -> " + dot_node(m, target);
+            std::string attributes;
+            auto const add = [&](std::string const& a) { attributes += (attributes.empty() ? "" : ", ") + a; };
+            auto const label = t.label();
+            if (!label.empty()) add("label=" + dot_quoted(label));
+            // Graphviz ignores ltail when the head is inside the tail's cluster, and lhead when
+            // the tail is inside the head's cluster; such an edge starts or ends at the anchor.
+            if (!m[t.source].is_leaf() && !m.contains(t.source, target)) add("ltail=" + dot_cluster(m, t.source));
+            if (!m[target].is_leaf() && !m.contains(target, t.source)) add("lhead=" + dot_cluster(m, target));
+            out += (attributes.empty() ? "" : " [" + attributes + "]") + ";\n";
+        }
     }
     out += "}\n";
     return out;

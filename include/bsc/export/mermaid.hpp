@@ -56,6 +56,7 @@ inline void mermaid_state(diagram const& m, int s, int level, std::string& out) 
     for (auto const& line : activities) title += "<br/>" + mermaid_text(line);
     out += indent(level) + "state \"" + title + "\" as " + st.id + " {\n";
     if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + with_label(initial_label(st)) + "\n";
+    for (int const more : st.more_initials) out += indent(level + 1) + "[*] --> " + m[more].id + "\n";
     bool first = true;
     for (int const c : st.children) {
         if (st.node_kind == kind::parallel && !first) out += indent(level + 1) + "--\n";
@@ -70,11 +71,12 @@ inline std::string to_mermaid(diagram const& m) {
     out += indent(1) + "[*] --> " + m[0].id + "\n";
     mermaid_state(m, 0, 1, out);
     for (auto const& t : m.transitions) {
-        if (t.target < 0) continue;  // internal: shown in its state
-        out += indent(1) + m[t.source].id + " --> " + m[t.target].id;
-        auto const label = t.label();
-        if (!label.empty()) out += " : " + mermaid_text(label);
-        out += "\n";
+        for (int const target : t.targets()) {  // none for an internal one: shown in its state
+            out += indent(1) + m[t.source].id + " --> " + m[target].id;
+            auto const label = t.label();
+            if (!label.empty()) out += " : " + mermaid_text(label);
+            out += "\n";
+        }
     }
     return out;
 }

@@ -187,6 +187,7 @@ struct state_info {
     int parent = -1;  ///< index in diagram::states; -1 for the root
     std::vector<int> children;
     int initial = -1;  ///< a composite's initial state (a child, or deeper); a history state's default
+    std::vector<int> more_initials;  ///< a composite's initial states after the first (`initial<A, B>`)
     std::vector<std::string> entry;  ///< labels of the entry actions, in declaration order
     std::vector<std::string> exit;   ///< labels of the exit actions
     /// labels of the actions of its initial transition (a composite) or default transition (a
@@ -211,6 +212,15 @@ struct transition_info {
     std::string action;  ///< empty if no action
     bool local = false;  ///< a local transition (bsc::local): its source stays active
     bool defers = false;  ///< a row that defers its event (`/ bsc::defer`)
+    std::vector<int> more_targets;  ///< a transition with several targets (bsc::targets): the others
+
+    /// Every target: none for an internal transition, else `target` and `more_targets`.
+    std::vector<int> targets() const {
+        std::vector<int> all;
+        if (target >= 0) all.push_back(target);
+        all.insert(all.end(), more_targets.begin(), more_targets.end());
+        return all;
+    }
 
     /// "event [guard] / action", with the parts that exist, and "(local)" for a local one.
     std::string label() const {
@@ -343,6 +353,8 @@ diagram model_of(Chart const& chart) {
         info.parent = tree.parent[i] - 1;
         // A composite's initial state (a child, or deeper), a history state's default.
         info.initial = tree.initial_target[i] >= 0 ? tree.initial_target[i] - 1 : -1;
+        for (int const more : tree.more_initial[i])
+            if (more >= 0) info.more_initials.push_back(more - 1);
         for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
             info.children.push_back(c - 1);
         m.states.push_back(std::move(info));
@@ -356,6 +368,8 @@ diagram model_of(Chart const& chart) {
                        ? model::rows.target[static_cast<std::size_t>(t.row)] - 1
                        : -1;
         if (t.target < 0) m.states[static_cast<std::size_t>(t.source)].internal.push_back(static_cast<int>(k));
+        for (int const more : model::rows.more_targets[static_cast<std::size_t>(t.row)])
+            if (more >= 0) t.more_targets.push_back(more - 1);
         // Local in effect: the domain is the source (bsc::local from a composite).
         t.local = t.target >= 0 && model::rows.domain[static_cast<std::size_t>(t.row)] == model::rows.source[static_cast<std::size_t>(t.row)];
     }

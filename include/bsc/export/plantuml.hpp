@@ -40,6 +40,7 @@ inline void plantuml_state(diagram const& m, int s, int level, std::string& out)
         if (st.initial >= 0) {
             auto const label = initial_label(st);
             out += indent(level + 1) + "[*] --> " + m[st.initial].id + (label.empty() ? "" : " : " + plantuml_text(label)) + "\n";
+            for (int const more : st.more_initials) out += indent(level + 1) + "[*] --> " + m[more].id + "\n";
         }
         bool first = true;
         for (int const c : st.children) {
@@ -62,11 +63,12 @@ inline std::string to_plantuml(diagram const& m) {
     out += "[*] --> " + m[0].id + "\n";
     plantuml_state(m, 0, 0, out);
     for (auto const& t : m.transitions) {
-        if (t.target < 0) continue;  // internal: a description line of its state
-        out += m[t.source].id + " --> " + m[t.target].id;
-        auto const label = t.label();
-        if (!label.empty()) out += " : " + plantuml_text(label);
-        out += "\n";
+        for (int const target : t.targets()) {  // none for an internal one: a line of its state
+            out += m[t.source].id + " --> " + m[target].id;
+            auto const label = t.label();
+            if (!label.empty()) out += " : " + plantuml_text(label);
+            out += "\n";
+        }
     }
     return out + "@enduml\n";
 }

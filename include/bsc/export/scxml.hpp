@@ -93,8 +93,11 @@ inline void scxml_transition(diagram const& m, transition_info const& t, int lev
     else if (t.trigger == trigger_kind::event)
         out += " event=\"" + event_descriptor(t.event) + "\"";
     if (!t.guard.empty()) out += " cond=\"" + xml_escaped(t.guard) + "\"";
-    if (t.target >= 0)
-        out += " target=\"" + m[t.target].id + "\"";
+    if (t.target >= 0) {
+        out += " target=\"";
+        for (int const target : t.targets()) out += (target == t.target ? "" : " ") + m[target].id;
+        out += "\"";
+    }
     if (t.target < 0 || t.local) out += " type=\"internal\"";
     if (t.action.empty())
         out += "/>\n";
@@ -136,7 +139,11 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     out += pad + "<" + element + " id=\"" + st.id + "\"";
     // An initial transition with actions is an <initial> element; without, the attribute.
     bool const initial_element = st.initial >= 0 && st.hist == history::none && !st.initial_actions.empty();
-    if (st.initial >= 0 && st.hist == history::none && !initial_element) out += " initial=\"" + m[st.initial].id + "\"";
+    if (st.initial >= 0 && st.hist == history::none && !initial_element) {
+        out += " initial=\"" + m[st.initial].id;
+        for (int const more : st.more_initials) out += " " + m[more].id;
+        out += "\"";
+    }
     bool const empty = st.children.empty() && st.entry.empty() && st.exit.empty() && !has_transitions;
     if (empty) {
         out += "/>\n";
@@ -147,7 +154,9 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     if (st.node_kind == kind::final_state && element == "state")
         out += inner + "<!-- a final state of the chart; <final> may not have transitions -->\n";
     if (initial_element) {
-        out += inner + "<initial>\n" + inner + "    <transition target=\"" + m[st.initial].id + "\">\n";
+        std::string targets = m[st.initial].id;
+        for (int const more : st.more_initials) targets += " " + m[more].id;
+        out += inner + "<initial>\n" + inner + "    <transition target=\"" + targets + "\">\n";
         for (auto const& a : st.initial_actions) out += inner + "        " + scxml_script(a) + "\n";
         out += inner + "    </transition>\n" + inner + "</initial>\n";
     }

@@ -68,6 +68,7 @@ struct topology {
     std::array<int, N> ordinal{};        // position among siblings
     std::array<int, N> initial{};        // state index of the initial child, or -1
     std::array<int, N> initial_target{};  // the initial state: the initial child, or a deeper descendant
+    std::array<std::array<int, 3>, N> more_initial{};  // initial states after the first (initial<A, B>), else -1
     std::array<int, N> initial_count{};  // number of initial markers
     std::array<int, N> depth{};
     std::array<int, N> end{};   // one past the last descendant: d is below s iff s < d < end[s]
@@ -114,6 +115,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     t.next_sibling[i] = -1;
     t.initial[i] = -1;
     t.initial_target[i] = -1;
+    for (int& m : t.more_initial[i]) m = -1;
     t.initial_count[i] = static_cast<int>(Node::initials::size);
     t.slot[i] = -1;
     if (Node::node_kind == kind::composite)
@@ -153,6 +155,13 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     }(typename Node::children{});
     t.child_count[i] = count;
     t.end[i] = next;
+    // Its initial states after the first, below it (unknown_state if not declared there).
+    if constexpr (requires { typename Node::more_initials; })
+        [&]<class... More>(type_list<More...>) {
+            using tags = typename tags_of<decltype(flatten<Node>())>::type;
+            std::size_t k = 0;
+            ((t.more_initial[i][k++] = index_of<More, tags> > 0 ? index + index_of<More, tags> : unknown_state), ...);
+        }(typename Node::more_initials{});
     // The defaults of its history states, which lie anywhere below Node (-1 if not found).
     if constexpr (Node::node_kind == kind::composite)
         [&]<class... C>(type_list<C...>) {
@@ -183,6 +192,12 @@ struct row_table {
     std::array<int, R> domain{};  // the transition domain (SCXML), no_state if internal
     std::array<bool, R> local{};  // declared local (bsc::local): its domain is its source
     std::array<bool, R> defers{};  // defers its event (/ bsc::defer)
+    // A transition with several targets (bsc::targets): `target` is the first, these the others
+    // (no_state where there are fewer).
+    static constexpr std::size_t max_more_targets = 3;
+    std::array<std::array<int, max_more_targets>, R> more_targets{};
+    // Whether row r has several targets.
+    constexpr bool several(std::size_t r) const { return more_targets[r][0] >= 0; }
     // By event position (there are no more events than rows): the event's nearest family among
     // the chart's events (-1: none, -2: not a chain). All -1 in a chart without families.
     std::array<int, R> event_family{};
@@ -255,17 +270,22 @@ constexpr int state_index() {
     }
 }
 
-template <std::size_t N>
-constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false) {
+template <std::size_t N, std::size_t M = 0>
+constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false,
+                                std::array<int, M> const& more = {}) {
     if (target < 0)
         return no_state;
     // SCXML's type="internal": a compound source that contains the target stays active.
     if (local && t.kinds[static_cast<std::size_t>(source)] == kind::composite && t.is_proper_ancestor(source, target))
         return source;
-    // SCXML: the nearest compound proper ancestor of the source that is a proper ancestor of the target.
-    for (int a = t.parent[static_cast<std::size_t>(source)]; a >= 0; a = t.parent[static_cast<std::size_t>(a)])
-        if (t.is_compound(a) && t.is_proper_ancestor(a, target))
-            return a;
+    // SCXML: the nearest compound proper ancestor of the source that is a proper ancestor of
+    // every target.
+    for (int a = t.parent[static_cast<std::size_t>(source)]; a >= 0; a = t.parent[static_cast<std::size_t>(a)]) {
+        bool above_all = t.is_compound(a) && t.is_proper_ancestor(a, target);
+        for (int m : more)
+            if (m >= 0) above_all = above_all && t.is_proper_ancestor(a, m);
+        if (above_all) return a;
+    }
     return 0;
 }
 
@@ -309,9 +329,17 @@ struct chart_model {
                     if constexpr (!std::is_void_v<E>) r.trigger[i] = index_of<E, events>;
                     if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
                 }
+                for (int& m : r.more_targets[i]) m = no_state;
+                if constexpr (is_transition_row<Rs>) {
+                    if constexpr (Rs::targets::size > 1)
+                        [&]<class First, class... More>(type_list<First, More...>*) {
+                            std::size_t k = 0;
+                            ((r.more_targets[i][k++] = state_index<More, tags>()), ...);
+                        }(static_cast<typename Rs::targets*>(nullptr));
+                }
                 r.domain[i] = no_state;
                 if (r.source[i] >= 0 && r.target[i] >= 0)
-                    r.domain[i] = transition_domain(tree, r.source[i], r.target[i], r.local[i]);
+                    r.domain[i] = transition_domain(tree, r.source[i], r.target[i], r.local[i], r.more_targets[i]);
                 ++i;
             }(),
             ...);

@@ -206,12 +206,12 @@ private:
             clock_started_ = true;
             clock_ = now;
             for (auto& armed : armed_) armed = now;
-            if constexpr (delays) queue_.start_clock(now);
+            if constexpr (delays_events) queue_.start_clock(now);
         } else if (now < clock_) {
             report.clock_went_backwards = true;
         } else {
             clock_ = now;
-            if constexpr (delays) queue_.set_clock(now);
+            if constexpr (delays_events) queue_.set_clock(now);
         }
         notify<model, Observer>::cycle_begins(observer_.value, clock_);
         update_timers(context_.value, clock_);
@@ -219,7 +219,7 @@ private:
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
         // The delayed events due now, as raised events (bsc::raise_after).
-        if constexpr (delays) queue_.release_due(clock_);
+        if constexpr (delays_events) queue_.release_due(clock_);
         outcome const drained = drain_queue(report.transitions > 0);
         commit_outputs(context_.value);
         notify<model, Observer>::cycle_ends(observer_.value);
@@ -371,7 +371,7 @@ protected:
     }
 
     // Whether the chart sends delayed events (bsc::raise_after): its queue keeps them.
-    static constexpr bool delays = requires(Queue& q) { q.release_due(duration{}); };
+    static constexpr bool delays_events = requires(Queue& q) { q.release_due(duration{}); };
 
     // ---- deferred events, called by the back ends ------------------------------------------
     static constexpr bool defers = model::has_deferral;

@@ -132,6 +132,7 @@ private:
     static constexpr std::size_t N = tables_type::state_count;
     static constexpr auto const& states = tables_type::states;
     static constexpr auto const& transitions = tables_type::transitions;
+    using transition_row_type = typename tables_type::transition_row_type;
 
     // ---- the configuration ----------------------------------------------------------------
     std::uint8_t byte(std::int16_t slot) const {
@@ -206,6 +207,9 @@ private:
                     if (auto const f = row.initial_action) f(this->chart(), this->context_.value, this->queue_, this->sink());
                     if (states[row.initial].status.kind == state_kind::history) {
                         enter_history(row.initial);
+                    } else if (row.more_initial[0] != no_state) {  // initial<A, B>: one state in each region
+                        activate_all(s, target_set{row.initial_target, row.more_initial[0], row.more_initial[1],
+                                                   row.more_initial[2]});
                     } else if (row.initial_target != row.initial) {
                         activate_path(s, row.initial_target);
                     } else {
@@ -279,6 +283,60 @@ private:
             enter_path_node(c, target);
         }
     }
+    // Several targets (bsc::targets, bsc::initial<A, B>): the paths down to each of them, the
+    // regions of a parallel state on the way that hold none entered by default. A set holds up
+    // to four states, no_state where it has fewer.
+    using target_set = std::array<state_id, 4>;
+    static bool holds_target(state_id s, target_set const& targets) {
+        for (state_id t : targets)
+            if (t != no_state && tables_type::contains(s, t)) return true;
+        return false;
+    }
+    static bool is_target(state_id s, target_set const& targets) {
+        for (state_id t : targets)
+            if (t != no_state && s == t) return true;
+        return false;
+    }
+    void activate_all(state_id domain, target_set const& targets) {
+        if (states[domain].status.kind == state_kind::parallel) {
+            this->enter_parallel(domain, [&] {
+                for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
+                    if (holds_target(k, targets))
+                        enter_path_all(k, targets);
+                    else
+                        enter_default(k);
+                }
+            });
+        } else {
+            // The child of `domain` toward the targets it holds (they lie below one child).
+            state_id c = no_state;
+            for (state_id t : targets)
+                if (t != no_state && c == no_state && tables_type::contains(domain, t) && t != domain) c = t;
+            while (states[c].parent != domain) c = states[c].parent;
+            if (states[c].status.kind == state_kind::history) {
+                enter_history(c);
+            } else {
+                if (states[domain].slot >= 0) set_byte(states[domain].slot, states[c].ordinal);
+                enter_path_all(c, targets);
+            }
+        }
+    }
+    void enter_path_all(state_id s, target_set const& targets) {
+        run_entry(s);
+        if (is_target(s, targets))
+            enter_content(s);
+        else
+            activate_all(s, targets);
+    }
+    // Step 5 for one transition: the entries of its target, or of its targets.
+    void enter_targets(transition_row_type const& row) {
+        if (row.to == no_state) return;
+        if (row.more_to[0] != no_state)
+            activate_all(row.domain, target_set{row.to, row.more_to[0], row.more_to[1], row.more_to[2]});
+        else
+            activate_path(row.domain, row.to);
+    }
+
     void enter_path_node(state_id s, state_id target) {
         run_entry(s);
         if (s == target)
@@ -425,10 +483,7 @@ private:
         for (std::size_t i = 0; i < fired.size; ++i)
             run_action(static_cast<std::int16_t>(fired.rows[i]), e.as(transitions[fired.rows[i]].event));
         // 5. Activate the states they enter, running entry actions, defaults and history.
-        for (std::size_t i = 0; i < fired.size; ++i) {
-            auto const& row = transitions[fired.rows[i]];
-            if (row.to != no_state) activate_path(row.domain, row.to);
-        }
+        for (std::size_t i = 0; i < fired.size; ++i) enter_targets(transitions[fired.rows[i]]);
         return any;
     }
 
@@ -472,7 +527,7 @@ private:
         auto const& row = transitions[static_cast<std::size_t>(t)];
         if (row.to != no_state) deactivate_path(row.domain);
         run_action(t, &no_event);
-        if (row.to != no_state) activate_path(row.domain, row.to);
+        enter_targets(row);
         // An internal timeout, which leaves its state active, counts again from now.
         if constexpr (tables_type::timeout_slots > 0)
             if (row.to == no_state && row.timeout_slot >= 0)

@@ -80,6 +80,7 @@ struct state_row {
     // Derived columns.
     state_id initial = no_state;   ///< default child of a composite (of a history state: its default's path)
     state_id initial_target = no_state;  ///< its initial state: `initial`, or a descendant below it (a deep initial)
+    std::array<state_id, 3> more_initial{};  ///< its initial states after the first (`initial<A, B>`); no_state where fewer
     std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
     std::int16_t slot = -1;    ///< the byte of the configuration a composite owns, -1 for others
     state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
@@ -110,6 +111,9 @@ struct transition_row {
     /// entry, or for an internal timeout the cycle it last fired in); -1 for the others.
     std::int16_t timeout_slot = -1;
     bool defers = false;  ///< the row defers its event (`/ bsc::defer`): it keeps the event, and has no action
+    /// A transition with several targets (bsc::targets): the others after `to`; no_state where
+    /// there are fewer.
+    std::array<state_id, 3> more_to{};
 };
 
 /// The operation rules of `Chart`: its topology table `states` and transition table
@@ -208,6 +212,7 @@ private:
         row.exit = state_action_of<row_kind::exit, S>();
         row.initial = id(tree.initial[i]);
         row.initial_target = id(tree.initial_target[i]);
+        for (std::size_t k = 0; k < row.more_initial.size(); ++k) row.more_initial[k] = id(tree.more_initial[i][k]);
         row.initial_action = state_action_of<row_kind::initial, S>();
         row.ordinal = static_cast<std::uint8_t>(tree.ordinal[i]);
         row.slot = static_cast<std::int16_t>(tree.slot[i]);
@@ -238,6 +243,7 @@ private:
             row.delay = &delay_thunk<r>;
         row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
         row.defers = rows.defers[i];
+        for (std::size_t k = 0; k < row.more_to.size(); ++k) row.more_to[k] = id(rows.more_targets[i][k]);
         if (row.defers) row.action = nullptr;
         return row;
     }

@@ -1,0 +1,26 @@
+// EXPECT: (bsc::error::at_row<1, bsc::error::targets_not_orthogonal<cf::Idle, .*bsc: targets not orthogonal|bsc: targets not orthogonal.*bsc::error::at_row<1, bsc::error::targets_not_orthogonal<cf::Idle, )
+// A1 and A2 are both in region R1: one transition cannot enter both.
+#include <bsc/bsc.hpp>
+
+namespace cf {
+struct go {};
+struct back {};
+struct Root;
+struct Idle;
+struct P;
+struct R1;
+struct R2;
+struct A1;
+struct A2;
+struct B1;
+struct B2;
+struct ctx {};
+
+inline constexpr auto chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
+                         bsc::parallel<P>(bsc::composite<R1>(bsc::initial<A1>, bsc::state<A1>, bsc::state<A2>),
+                                          bsc::composite<R2>(bsc::initial<B1>, bsc::state<B1>, bsc::state<B2>))),
+    bsc::state<Idle> + bsc::event<go> = bsc::targets(bsc::state<A1>, bsc::state<A2>),
+    bsc::state<A1> + bsc::event<go> = bsc::state<A2>, bsc::state<B1> + bsc::event<go> = bsc::state<B2>,
+    bsc::state<P> + bsc::event<back> = bsc::state<Idle>);
+}  // namespace cf
