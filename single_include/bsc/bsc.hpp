@@ -2457,10 +2457,11 @@ constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, 
     if (t.is_compound(s)) {
         if (t.initial_target[i] >= 0 && t.initial_target[i] != t.initial[i])
             mark_entry(t, m, s, t.initial_target[i]);  // a deep initial
-        for (int more : t.more_initial[i])
-            if (more >= 0) mark_entry(t, m, s, more);  // initial<A, B>: each
         else if (t.initial[i] >= 0)
             mark_default_entry(t, m, t.initial[i]);
+        for (int more : t.more_initial[i]) {  // initial<A, B>: each of the others
+            if (more >= 0) mark_entry(t, m, s, more);
+        }
     } else if (t.kinds[i] == kind::parallel) {
         for (int c = t.first_child[i]; c >= 0; c = t.next_sibling[static_cast<std::size_t>(c)])
             mark_default_entry(t, m, c);
