@@ -1673,9 +1673,33 @@ struct tag_of<state_ref<S>> {
     using type = S;
 };
 
+// The tags of a node and of everything below it.
+template <class Node>
+constexpr auto subtree_tags();
+template <class... C>
+constexpr auto subtree_tags_of(type_list<C...>) {
+    return (type_list<>{} + ... + subtree_tags<C>());
+}
+template <class Node>
+constexpr auto subtree_tags() {
+    return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
+}
+// Whether one of the arguments declares S below itself (S is then a deep initial's target).
+template <class S, class... A>
+constexpr bool declared_below(type_list<A...>) {
+    return ([] {
+        if constexpr (is_node<A>)
+            return index_of<S, decltype(subtree_tags<A>())> >= 0;
+        else
+            return false;
+    }() || ...);
+}
+
 // The child declarations an argument of composite<S>(...) contributes, in document order.
-// An initial<X> declares X only if no argument declares it and no earlier initial<X> did.
-template <class A, bool FirstOfItsKind, class... Declared>
+// An initial<X> declares X only if no argument declares it, as a child or below one (a deep
+// initial), and no earlier initial<X> did. (The tags below are searched only for an initial
+// that is not a child: most charts never pay for it.)
+template <class A, bool FirstOfItsKind, class Args, class... Declared>
 constexpr auto children_from() {
     if constexpr (is_node<A>)
         return type_list<A>{};
@@ -1684,6 +1708,8 @@ constexpr auto children_from() {
     else if constexpr (is_initial_marker<A>) {
         using S = typename tag_of<A>::type;
         if constexpr ((std::is_same_v<S, Declared> || ...) || !FirstOfItsKind)
+            return type_list<>{};
+        else if constexpr (declared_below<S>(Args{}))
             return type_list<>{};
         else
             return type_list<leaf_node<S, kind::basic, true>>{};
@@ -1705,19 +1731,6 @@ constexpr auto initials_from() {
         return type_list<>{};
 }
 
-// The states an argument declares: a node and everything below it, or a basic state. An
-// initial<X> naming one of them declares nothing (X is the initial child, or, lying deeper,
-// the target of a deep initial transition).
-template <class Node>
-constexpr auto subtree_tags();
-template <class... C>
-constexpr auto subtree_tags_of(type_list<C...>) {
-    return (type_list<>{} + ... + subtree_tags<C>());
-}
-template <class Node>
-constexpr auto subtree_tags() {
-    return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
-}
 template <class A>
 constexpr auto more_initials_from() {
     if constexpr (is_initial_marker<A>)
@@ -1728,9 +1741,7 @@ constexpr auto more_initials_from() {
 
 template <class A>
 constexpr auto declared_tag() {
-    if constexpr (is_node<A>)
-        return subtree_tags<A>();
-    else if constexpr (is_state_ref<A>)
+    if constexpr (is_node<A> || is_state_ref<A>)
         return type_list<typename tag_of<A>::type>{};
     else
         return type_list<>{};
@@ -1750,7 +1761,8 @@ template <class Tags, class Seq, class... A>
 struct composite_children;
 template <class... Declared, std::size_t... I, class... A>
 struct composite_children<type_list<Declared...>, std::index_sequence<I...>, A...> {
-    using type = decltype((type_list<>{} + ... + children_from<A, first_of_its_kind<I, A...>(), Declared...>()));
+    using type = decltype((type_list<>{} + ... +
+                           children_from<A, first_of_its_kind<I, A...>(), type_list<A...>, Declared...>()));
 };
 
 }  // namespace bsc::detail
@@ -1829,7 +1841,7 @@ constexpr auto parallel(A...) {
     } else if constexpr (sizeof...(A) == 0) {
         detail::report<error::empty_parallel_state<S>>();
     }
-    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true>()));
+    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true, detail::type_list<>>()));
     return detail::parallel_node<S, children>{};
 }
 
@@ -2005,6 +2017,11 @@ struct topology {
     std::array<int, N> initial{};        // state index of the initial child, or -1
     std::array<int, N> initial_target{};  // the initial state: the initial child, or a deeper descendant
     std::array<std::array<int, 3>, N> more_initial{};  // initial states after the first (initial<A, B>), else -1
+
+    // State s's initial states: its initial state, then the others (initial<A, B>), -1 after.
+    constexpr std::array<int, 4> initial_states(std::size_t s) const {
+        return {initial_target[s], more_initial[s][0], more_initial[s][1], more_initial[s][2]};
+    }
     std::array<int, N> initial_count{};  // number of initial markers
     std::array<int, N> depth{};
     std::array<int, N> end{};   // one past the last descendant: d is below s iff s < d < end[s]
@@ -2134,6 +2151,10 @@ struct row_table {
     std::array<std::array<int, max_more_targets>, R> more_targets{};
     // Whether row r has several targets.
     constexpr bool several(std::size_t r) const { return more_targets[r][0] >= 0; }
+    // Row r's targets: its target, then the others (bsc::targets), no_state after.
+    constexpr std::array<int, 1 + max_more_targets> targets_of(std::size_t r) const {
+        return {target[r], more_targets[r][0], more_targets[r][1], more_targets[r][2]};
+    }
     // By event position (there are no more events than rows): the event's nearest family among
     // the chart's events (-1: none, -2: not a chain). All -1 in a chart without families.
     std::array<int, R> event_family{};
@@ -3467,10 +3488,9 @@ template <std::size_t N>
 constexpr int find_initial_set_problem(topology<N> const& t) {
     for (std::size_t s = 1; s < N; ++s) {
         if (t.kinds[s] != kind::composite || t.more_initial[s][0] == -1) continue;
-        std::array<int, 4> all{t.initial_target[s], -1, -1, -1};
-        std::size_t n = 1;
-        for (int m : t.more_initial[s])
-            if (m != -1) all[n++] = m;
+        auto const all = t.initial_states(s);
+        std::size_t n = 1;  // the first always (-1 if it is not below s); then up to the first -1
+        while (n < all.size() && all[n] != -1) ++n;  // (unknown_state, -2, counts: it is reported)
         for (std::size_t k = 0; k < n; ++k)
             if (all[k] < 0 || !t.is_proper_ancestor(static_cast<int>(s), all[k])) return static_cast<int>(s);
         if (!orthogonal_set(t, all, n)) return static_cast<int>(s);
@@ -3484,11 +3504,9 @@ template <std::size_t N, std::size_t R>
 constexpr int find_targets_not_orthogonal(topology<N> const& t, row_table<R> const& r) {
     for (std::size_t i = 0; i < R; ++i) {
         if (!r.several(i)) continue;
-        std::array<int, 1 + row_table<R>::max_more_targets> all{};
+        auto const all = r.targets_of(i);
         std::size_t n = 0;
-        all[n++] = r.target[i];
-        for (int m : r.more_targets[i])
-            if (m >= 0) all[n++] = m;
+        while (n < all.size() && all[n] >= 0) ++n;
         if (!orthogonal_set(t, all, n)) return static_cast<int>(i);
     }
     return -1;
@@ -7374,16 +7392,7 @@ private:
     // A set of targets, by key: a row's (key >= 0), or the initial states of state s
     // (key -1 - s). Every target set is orthogonal (checks/structure.hpp).
     static constexpr std::array<int, 4> target_set(int key) {
-        std::array<int, 4> all{-1, -1, -1, -1};
-        if (key >= 0) {
-            all[0] = rows.target[static_cast<std::size_t>(key)];
-            for (std::size_t k = 0; k < 3; ++k) all[k + 1] = rows.more_targets[static_cast<std::size_t>(key)][k];
-        } else {
-            auto const s = static_cast<std::size_t>(-1 - key);
-            all[0] = tree.initial_target[s];
-            for (std::size_t k = 0; k < 3; ++k) all[k + 1] = tree.more_initial[s][k];
-        }
-        return all;
+        return key >= 0 ? rows.targets_of(static_cast<std::size_t>(key)) : tree.initial_states(static_cast<std::size_t>(-1 - key));
     }
     // A target of the set below state s, -1 if none; whether s is one.
     static constexpr int target_below(int s, int key) {

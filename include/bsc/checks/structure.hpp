@@ -107,10 +107,9 @@ template <std::size_t N>
 constexpr int find_initial_set_problem(topology<N> const& t) {
     for (std::size_t s = 1; s < N; ++s) {
         if (t.kinds[s] != kind::composite || t.more_initial[s][0] == -1) continue;
-        std::array<int, 4> all{t.initial_target[s], -1, -1, -1};
-        std::size_t n = 1;
-        for (int m : t.more_initial[s])
-            if (m != -1) all[n++] = m;
+        auto const all = t.initial_states(s);
+        std::size_t n = 1;  // the first always (-1 if it is not below s); then up to the first -1
+        while (n < all.size() && all[n] != -1) ++n;  // (unknown_state, -2, counts: it is reported)
         for (std::size_t k = 0; k < n; ++k)
             if (all[k] < 0 || !t.is_proper_ancestor(static_cast<int>(s), all[k])) return static_cast<int>(s);
         if (!orthogonal_set(t, all, n)) return static_cast<int>(s);
@@ -124,11 +123,9 @@ template <std::size_t N, std::size_t R>
 constexpr int find_targets_not_orthogonal(topology<N> const& t, row_table<R> const& r) {
     for (std::size_t i = 0; i < R; ++i) {
         if (!r.several(i)) continue;
-        std::array<int, 1 + row_table<R>::max_more_targets> all{};
+        auto const all = r.targets_of(i);
         std::size_t n = 0;
-        all[n++] = r.target[i];
-        for (int m : r.more_targets[i])
-            if (m >= 0) all[n++] = m;
+        while (n < all.size() && all[n] >= 0) ++n;
         if (!orthogonal_set(t, all, n)) return static_cast<int>(i);
     }
     return -1;

@@ -333,16 +333,7 @@ private:
     // A set of targets, by key: a row's (key >= 0), or the initial states of state s
     // (key -1 - s). Every target set is orthogonal (checks/structure.hpp).
     static constexpr std::array<int, 4> target_set(int key) {
-        std::array<int, 4> all{-1, -1, -1, -1};
-        if (key >= 0) {
-            all[0] = rows.target[static_cast<std::size_t>(key)];
-            for (std::size_t k = 0; k < 3; ++k) all[k + 1] = rows.more_targets[static_cast<std::size_t>(key)][k];
-        } else {
-            auto const s = static_cast<std::size_t>(-1 - key);
-            all[0] = tree.initial_target[s];
-            for (std::size_t k = 0; k < 3; ++k) all[k + 1] = tree.more_initial[s][k];
-        }
-        return all;
+        return key >= 0 ? rows.targets_of(static_cast<std::size_t>(key)) : tree.initial_states(static_cast<std::size_t>(-1 - key));
     }
     // A target of the set below state s, -1 if none; whether s is one.
     static constexpr int target_below(int s, int key) {

@@ -96,9 +96,33 @@ struct tag_of<state_ref<S>> {
     using type = S;
 };
 
+// The tags of a node and of everything below it.
+template <class Node>
+constexpr auto subtree_tags();
+template <class... C>
+constexpr auto subtree_tags_of(type_list<C...>) {
+    return (type_list<>{} + ... + subtree_tags<C>());
+}
+template <class Node>
+constexpr auto subtree_tags() {
+    return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
+}
+// Whether one of the arguments declares S below itself (S is then a deep initial's target).
+template <class S, class... A>
+constexpr bool declared_below(type_list<A...>) {
+    return ([] {
+        if constexpr (is_node<A>)
+            return index_of<S, decltype(subtree_tags<A>())> >= 0;
+        else
+            return false;
+    }() || ...);
+}
+
 // The child declarations an argument of composite<S>(...) contributes, in document order.
-// An initial<X> declares X only if no argument declares it and no earlier initial<X> did.
-template <class A, bool FirstOfItsKind, class... Declared>
+// An initial<X> declares X only if no argument declares it, as a child or below one (a deep
+// initial), and no earlier initial<X> did. (The tags below are searched only for an initial
+// that is not a child: most charts never pay for it.)
+template <class A, bool FirstOfItsKind, class Args, class... Declared>
 constexpr auto children_from() {
     if constexpr (is_node<A>)
         return type_list<A>{};
@@ -107,6 +131,8 @@ constexpr auto children_from() {
     else if constexpr (is_initial_marker<A>) {
         using S = typename tag_of<A>::type;
         if constexpr ((std::is_same_v<S, Declared> || ...) || !FirstOfItsKind)
+            return type_list<>{};
+        else if constexpr (declared_below<S>(Args{}))
             return type_list<>{};
         else
             return type_list<leaf_node<S, kind::basic, true>>{};
@@ -128,19 +154,6 @@ constexpr auto initials_from() {
         return type_list<>{};
 }
 
-// The states an argument declares: a node and everything below it, or a basic state. An
-// initial<X> naming one of them declares nothing (X is the initial child, or, lying deeper,
-// the target of a deep initial transition).
-template <class Node>
-constexpr auto subtree_tags();
-template <class... C>
-constexpr auto subtree_tags_of(type_list<C...>) {
-    return (type_list<>{} + ... + subtree_tags<C>());
-}
-template <class Node>
-constexpr auto subtree_tags() {
-    return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
-}
 template <class A>
 constexpr auto more_initials_from() {
     if constexpr (is_initial_marker<A>)
@@ -151,9 +164,7 @@ constexpr auto more_initials_from() {
 
 template <class A>
 constexpr auto declared_tag() {
-    if constexpr (is_node<A>)
-        return subtree_tags<A>();
-    else if constexpr (is_state_ref<A>)
+    if constexpr (is_node<A> || is_state_ref<A>)
         return type_list<typename tag_of<A>::type>{};
     else
         return type_list<>{};
@@ -173,7 +184,8 @@ template <class Tags, class Seq, class... A>
 struct composite_children;
 template <class... Declared, std::size_t... I, class... A>
 struct composite_children<type_list<Declared...>, std::index_sequence<I...>, A...> {
-    using type = decltype((type_list<>{} + ... + children_from<A, first_of_its_kind<I, A...>(), Declared...>()));
+    using type = decltype((type_list<>{} + ... +
+                           children_from<A, first_of_its_kind<I, A...>(), type_list<A...>, Declared...>()));
 };
 
 }  // namespace bsc::detail
@@ -252,7 +264,7 @@ constexpr auto parallel(A...) {
     } else if constexpr (sizeof...(A) == 0) {
         detail::report<error::empty_parallel_state<S>>();
     }
-    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true>()));
+    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true, detail::type_list<>>()));
     return detail::parallel_node<S, children>{};
 }
 

@@ -69,6 +69,11 @@ struct topology {
     std::array<int, N> initial{};        // state index of the initial child, or -1
     std::array<int, N> initial_target{};  // the initial state: the initial child, or a deeper descendant
     std::array<std::array<int, 3>, N> more_initial{};  // initial states after the first (initial<A, B>), else -1
+
+    // State s's initial states: its initial state, then the others (initial<A, B>), -1 after.
+    constexpr std::array<int, 4> initial_states(std::size_t s) const {
+        return {initial_target[s], more_initial[s][0], more_initial[s][1], more_initial[s][2]};
+    }
     std::array<int, N> initial_count{};  // number of initial markers
     std::array<int, N> depth{};
     std::array<int, N> end{};   // one past the last descendant: d is below s iff s < d < end[s]
@@ -198,6 +203,10 @@ struct row_table {
     std::array<std::array<int, max_more_targets>, R> more_targets{};
     // Whether row r has several targets.
     constexpr bool several(std::size_t r) const { return more_targets[r][0] >= 0; }
+    // Row r's targets: its target, then the others (bsc::targets), no_state after.
+    constexpr std::array<int, 1 + max_more_targets> targets_of(std::size_t r) const {
+        return {target[r], more_targets[r][0], more_targets[r][1], more_targets[r][2]};
+    }
     // By event position (there are no more events than rows): the event's nearest family among
     // the chart's events (-1: none, -2: not a chain). All -1 in a chart without families.
     std::array<int, R> event_family{};
