@@ -1,8 +1,6 @@
 #pragma once
 // bsc::make_chart: a chart is its state tree and its rows, checked when it is declared.
 
-#include <boost/hana/basic_tuple.hpp>
-#include <boost/hana/unpack.hpp>
 #include <array>
 #include <cstddef>
 #include <cstdlib>
@@ -15,6 +13,7 @@
 #include <bsc/error.hpp>
 #include <bsc/checks/checks.hpp>
 #include <bsc/detail/meta.hpp>
+#include <bsc/detail/row_storage.hpp>
 #include <bsc/duration.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/dsl/tree.hpp>
@@ -55,7 +54,7 @@ struct chart {
     using context_type = Context;
     using root_type = Root;
     using row_types = detail::type_list<Rows...>;
-    boost::hana::basic_tuple<Rows...> rows;
+    detail::row_storage<Rows...> rows;
 };
 
 namespace detail {
@@ -154,7 +153,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
                 auto const delays = detail::delays_of(rows...);
                 detail::check_timeout_rows(table, delays);
             }
-            return chart_type{boost::hana::make_basic_tuple(std::move(rows)...)};
+            return chart_type{{{std::move(rows)}...}};
         } else {
             return typename detail::rejected_chart_of<errors>::template type<Context>{};
         }

@@ -8,8 +8,6 @@
 // begin include/bsc/chart.hpp
 // bsc::make_chart: a chart is its state tree and its rows, checked when it is declared.
 
-#include <boost/hana/basic_tuple.hpp>
-#include <boost/hana/unpack.hpp>
 #include <array>
 #include <cstddef>
 #include <cstdlib>
@@ -1893,10 +1891,18 @@ struct event_families;
 template <class... Us>
 struct event_families<type_list<Us...>> {
     static constexpr std::size_t K = sizeof...(Us);
-    // Whether chart event E has a family among the chart's events; any: whether one has.
+    // Whether the chart names bsc::any_event, every other event's family.
+    static constexpr bool names_any_event = (false || ... || __is_same(Us, any_event));
+    // How many chart events E derives from, E itself included if it is one (a class is its own
+    // base). One built-in per pair and nothing else: a chart of K events asks K * K times.
     template <class E>
-    static constexpr bool has_family = (false || ... || (!__is_same(Us, E) && (__is_same(Us, any_event) || __is_base_of(Us, E))));
-    static constexpr bool any = (false || ... || has_family<Us>);
+    static constexpr int chart_bases = (0 + ... + static_cast<int>(__is_base_of(Us, E)));
+    // Whether event E has a family among the chart's events; any: whether a chart event has.
+    template <class E>
+    static constexpr bool has_family =
+        (names_any_event && !__is_same(E, any_event)) ||
+        chart_bases<E> > static_cast<int>(__is_class(E) && index_in<E, Us...>() >= 0);
+    static constexpr bool any = (names_any_event && K > 1) || (false || ... || (chart_bases<Us> > static_cast<int>(__is_class(Us))));
     // family[t][u]: chart event u is a family of chart event t. (Built only where some event
     // has a family: a chart of K events would otherwise hold K * K flags for nothing.)
     static constexpr auto family = [] {
@@ -3251,7 +3257,7 @@ private:
 
 // The queue of a chart none of whose actions can raise (detail::may_raise): it is always
 // empty, and saying so at compile time spares every dispatch the checks for raised events.
-template <class Events>
+// (Not a template: its name is part of the symbols of every action the machine calls.)
 class no_event_queue {
 public:
     template <class E>
@@ -3773,6 +3779,46 @@ constexpr auto check_chart() {
 
 }  // namespace bsc::detail
 // end include/bsc/checks/checks.hpp
+// begin include/bsc/detail/row_storage.hpp
+// The rows of a chart, held as one object: each row in a base of its own, keyed by its
+// position. A row is read with row_at<I>(rows), a function template whose arguments are the
+// position and that row's type alone (deduced from the base), so the symbols the compiler makes
+// for a read do not spell every row of the chart, as a tuple's get<I> would: for a large chart
+// those names, one per row read, were a large part of its compile time. An empty row (a guard
+// and an action that capture nothing) takes no room.
+
+#include <cstddef>
+#include <utility>
+
+namespace bsc::detail {
+
+template <std::size_t I, class Row>
+struct row_slot {
+    [[no_unique_address]] Row row;
+};
+
+template <class Positions, class... Rows>
+struct row_slots;
+template <std::size_t... I, class... Rows>
+struct row_slots<std::index_sequence<I...>, Rows...> : row_slot<I, Rows>... {};
+
+template <class... Rows>
+using row_storage = row_slots<std::index_sequence_for<Rows...>, Rows...>;
+
+/// The row at position I (from 0, in make_chart's order).
+template <std::size_t I, class Row>
+constexpr Row const& row_at(row_slot<I, Row> const& slot) {
+    return slot.row;
+}
+
+/// Calls f with every row, in order.
+template <class F, std::size_t... I, class... Rows>
+constexpr decltype(auto) with_rows(row_slots<std::index_sequence<I...>, Rows...> const& rows, F&& f) {
+    return std::forward<F>(f)(row_at<I>(rows)...);
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/row_storage.hpp
 
 namespace bsc::detail {
 template <class... Rows>
@@ -3810,7 +3856,7 @@ struct chart {
     using context_type = Context;
     using root_type = Root;
     using row_types = detail::type_list<Rows...>;
-    boost::hana::basic_tuple<Rows...> rows;
+    detail::row_storage<Rows...> rows;
 };
 
 namespace detail {
@@ -3909,7 +3955,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
                 auto const delays = detail::delays_of(rows...);
                 detail::check_timeout_rows(table, delays);
             }
-            return chart_type{boost::hana::make_basic_tuple(std::move(rows)...)};
+            return chart_type{{{std::move(rows)}...}};
         } else {
             return typename detail::rejected_chart_of<errors>::template type<Context>{};
         }
@@ -4089,11 +4135,31 @@ struct chart_layout {
         return state;
     }();
 
+    // The rows of each state, in declaration order, all kinds: those of state s are
+    // from_source[from_source_begin[s]] to from_source[from_source_begin[s + 1]] (exclusive).
+    // Built once, so that what is asked per state or per (state, trigger) reads that state's
+    // rows and not all the chart's: the compile time stays linear in the chart.
+    static constexpr auto from_source_begin = [] {
+        std::array<int, static_cast<std::size_t>(N) + 1> begin{};
+        for (int r = 0; r < R; ++r) ++begin[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)]) + 1];
+        for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s) begin[s + 1] += begin[s];
+        return begin;
+    }();
+    static constexpr auto from_source = [] {
+        std::array<int, static_cast<std::size_t>(R)> out{};
+        auto next = from_source_begin;
+        for (int r = 0; r < R; ++r) out[static_cast<std::size_t>(next[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])]++)] = r;
+        return out;
+    }();
+
     static constexpr int count_rows(row_kind k, int state) {
         int n = 0;
-        for (int r = 0; r < R; ++r)
-            n += rows.kinds[static_cast<std::size_t>(r)] == k &&
-                 (state < 0 || rows.source[static_cast<std::size_t>(r)] == state);
+        if (state < 0) {
+            for (int r = 0; r < R; ++r) n += rows.kinds[static_cast<std::size_t>(r)] == k;
+        } else {
+            for (int i = from_source_begin[static_cast<std::size_t>(state)]; i < from_source_begin[static_cast<std::size_t>(state) + 1]; ++i)
+                n += rows.kinds[static_cast<std::size_t>(from_source[static_cast<std::size_t>(i)])] == k;
+        }
         return n;
     }
 
@@ -4103,9 +4169,14 @@ struct chart_layout {
     static constexpr auto rows_of = [] {
         std::array<int, static_cast<std::size_t>(count_rows(K, S))> out{};
         std::size_t n = 0;
-        for (int r = 0; r < R; ++r)
-            if (rows.kinds[static_cast<std::size_t>(r)] == K && (S < 0 || rows.source[static_cast<std::size_t>(r)] == S))
-                out[n++] = r;
+        if constexpr (S < 0) {
+            for (int r = 0; r < R; ++r)
+                if (rows.kinds[static_cast<std::size_t>(r)] == K) out[n++] = r;
+        } else {
+            for (int i = from_source_begin[S]; i < from_source_begin[S + 1]; ++i)
+                if (rows.kinds[static_cast<std::size_t>(from_source[static_cast<std::size_t>(i)])] == K)
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
+        }
         return out;
     }();
     static constexpr auto const& transition_rows = rows_of<row_kind::transition, -1>;
@@ -4222,18 +4293,35 @@ struct plan : chart_layout<Model> {
     using layout::components;
     using layout::has_parallel;
     using layout::conflict;
+    using layout::from_source;
+    using layout::from_source_begin;
+
+    static constexpr int transition_count(int trigger) {
+        int n = 0;
+        for (int r = 0; r < R; ++r) n += is_transition_on(r, trigger) ? 1 : 0;
+        return n;
+    }
+
+    // The transitions on a trigger, in declaration order; the selection buffer stores positions
+    // here. The one scan of all rows per trigger: what follows reads this list.
+    template <int Trigger>
+    static constexpr auto transitions = [] {
+        std::array<int, static_cast<std::size_t>(transition_count(Trigger))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < R; ++r)
+            if (is_transition_on(r, Trigger))
+                out[n++] = r;
+        return out;
+    }();
 
     // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a descendant.
     template <int Trigger>
     static constexpr std::array<bool, static_cast<std::size_t>(N)> relevant = [] {
         std::array<bool, static_cast<std::size_t>(N)> rel{};
-        for (int r = 0; r < R; ++r) {
-            if (!is_transition_on(r, Trigger))
-                continue;
+        for (int const r : transitions<Trigger>) {
             int const src = rows.source[static_cast<std::size_t>(r)];
-            for (int s = 0; s < N; ++s)
-                if (tree.contains(src, s) || tree.contains(s, src))
-                    rel[static_cast<std::size_t>(s)] = true;
+            for (int a = src; a >= 0; a = tree.parent[static_cast<std::size_t>(a)]) rel[static_cast<std::size_t>(a)] = true;
+            for (int d = src; d < tree.end[static_cast<std::size_t>(src)]; ++d) rel[static_cast<std::size_t>(d)] = true;
         }
         return rel;
     }();
@@ -4263,9 +4351,8 @@ struct plan : chart_layout<Model> {
     static constexpr int candidate_count(int leaf, int trigger) {
         int n = 0;
         for (int a = leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
-            for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, trigger) && rows.source[static_cast<std::size_t>(r)] == a)
-                    ++n;
+            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                n += is_transition_on(from_source[static_cast<std::size_t>(i)], trigger) ? 1 : 0;
         return n;
     }
 
@@ -4274,17 +4361,17 @@ struct plan : chart_layout<Model> {
         std::array<int, static_cast<std::size_t>(candidate_count(Leaf, Trigger))> out{};
         std::size_t n = 0;
         for (int a = Leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
-            for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, Trigger) && rows.source[static_cast<std::size_t>(r)] == a)
-                    out[n++] = r;
+            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                if (is_transition_on(from_source[static_cast<std::size_t>(i)], Trigger))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
         return out;
     }();
 
     static constexpr int component_candidate_count(int frontier, int component) {
         int n = 0;
         for (int a = frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
-            for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, any_condition) && rows.source[static_cast<std::size_t>(r)] == a) ++n;
+            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                n += is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition) ? 1 : 0;
             if (a == component) break;
         }
         return n;
@@ -4294,28 +4381,11 @@ struct plan : chart_layout<Model> {
         std::array<int, static_cast<std::size_t>(component_candidate_count(Frontier, Component))> out{};
         std::size_t n = 0;
         for (int a = Frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
-            for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, any_condition) && rows.source[static_cast<std::size_t>(r)] == a)
-                    out[n++] = r;
+            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                if (is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
             if (a == Component) break;
         }
-        return out;
-    }();
-
-    static constexpr int transition_count(int trigger) {
-        int n = 0;
-        for (int r = 0; r < R; ++r) n += is_transition_on(r, trigger) ? 1 : 0;
-        return n;
-    }
-
-    // The transitions on a trigger, in declaration order; the selection buffer stores positions here.
-    template <int Trigger>
-    static constexpr auto transitions = [] {
-        std::array<int, static_cast<std::size_t>(transition_count(Trigger))> out{};
-        std::size_t n = 0;
-        for (int r = 0; r < R; ++r)
-            if (is_transition_on(r, Trigger))
-                out[n++] = r;
         return out;
     }();
 
@@ -4351,19 +4421,20 @@ struct plan : chart_layout<Model> {
         return out;
     }();
 
-    static constexpr int component_row_count(int trigger, int component) {
+    template <int Trigger>
+    static constexpr int component_row_count(int component) {
         int n = 0;
-        for (int r = 0; r < R; ++r)
-            n += is_transition_on(r, trigger) && component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == component;
+        for (int const r : transitions<Trigger>)
+            n += component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == component;
         return n;
     }
     // The transitions on a trigger whose source lies in component C, in declaration order.
     template <int Trigger, int C>
     static constexpr auto component_rows = [] {
-        std::array<int, static_cast<std::size_t>(component_row_count(Trigger, C))> out{};
+        std::array<int, static_cast<std::size_t>(component_row_count<Trigger>(C))> out{};
         std::size_t n = 0;
-        for (int r = 0; r < R; ++r)
-            if (is_transition_on(r, Trigger) && component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == C)
+        for (int const r : transitions<Trigger>)
+            if (component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == C)
                 out[n++] = r;
         return out;
     }();
@@ -4385,18 +4456,19 @@ struct plan : chart_layout<Model> {
     template <int Trigger>
     static constexpr bool region_local = [] {
         if (!has_parallel) return false;  // nothing to resolve: every transition fires where selected
-        for (int r = 0; r < R; ++r) {
-            if (!is_transition_on(r, Trigger)) continue;
+        constexpr auto const& on_trigger = transitions<Trigger>;
+        for (std::size_t i = 0; i < on_trigger.size(); ++i) {
+            int const r = on_trigger[i];
             int const src = rows.source[static_cast<std::size_t>(r)];
-            for (int s = 0; s < N; ++s)
-                if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel && tree.contains(src, s))
-                    return false;
-            if (component_row_count(Trigger, component_of[static_cast<std::size_t>(src)]) > 254) return false;
-            for (int r2 = r + 1; r2 < R; ++r2)
-                if (is_transition_on(r2, Trigger) &&
-                    component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r2)])] != component_of[static_cast<std::size_t>(src)] &&
+            for (int s = src; s < tree.end[static_cast<std::size_t>(src)]; ++s)
+                if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel) return false;
+            if (component_row_count<Trigger>(component_of[static_cast<std::size_t>(src)]) > 254) return false;
+            for (std::size_t j = i + 1; j < on_trigger.size(); ++j) {
+                int const r2 = on_trigger[j];
+                if (component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r2)])] != component_of[static_cast<std::size_t>(src)] &&
                     conflict(r, r2))
                     return false;
+            }
         }
         return true;
     }();
@@ -4409,8 +4481,7 @@ struct plan : chart_layout<Model> {
     template <int Trigger>
     static constexpr bool fires_at_selection = [] {
         if (!region_local<Trigger>) return false;
-        for (int r = 0; r < R; ++r) {
-            if (!is_transition_on(r, Trigger)) continue;
+        for (int const r : transitions<Trigger>) {
             if (rows.guarded[static_cast<std::size_t>(r)]) return false;
             int const d = rows.domain[static_cast<std::size_t>(r)];
             if (d < 0) continue;  // targetless: exits and enters nothing
@@ -4424,17 +4495,18 @@ struct plan : chart_layout<Model> {
     }();
 
     // The components in which a transition on the trigger can be selected under a parallel state.
-    static constexpr int selecting_component_count(int trigger) {
+    template <int Trigger>
+    static constexpr int selecting_component_count() {
         int n = 0;
-        for (std::size_t c = 1; c < components.size(); ++c) n += component_row_count(trigger, static_cast<int>(c)) > 0;
+        for (std::size_t c = 1; c < components.size(); ++c) n += component_row_count<Trigger>(static_cast<int>(c)) > 0;
         return n;
     }
     template <int Trigger>
     static constexpr auto selecting_components = [] {
-        std::array<int, static_cast<std::size_t>(selecting_component_count(Trigger))> out{};
+        std::array<int, static_cast<std::size_t>(selecting_component_count<Trigger>())> out{};
         std::size_t n = 0;
         for (std::size_t c = 1; c < components.size(); ++c)
-            if (component_row_count(Trigger, static_cast<int>(c)) > 0) out[n++] = static_cast<int>(c);
+            if (component_row_count<Trigger>(static_cast<int>(c)) > 0) out[n++] = static_cast<int>(c);
         return out;
     }();
 };
@@ -4530,7 +4602,6 @@ concept observes_cycle_ends = requires(O& o) {
 //   template <int S> bool is_active() const;     whether state S is active
 
 #include <array>
-#include <boost/hana/at.hpp>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -6383,7 +6454,7 @@ protected:
 
     template <int Row>
     constexpr auto const& row() const {
-        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart().rows);
+        return row_at<static_cast<std::size_t>(Row)>(chart().rows);
     }
 
     // Whether state s is active, read from the bytes; outermost first, so one pass suffices.
@@ -6976,7 +7047,7 @@ using queue_for = std::conditional_t<
                            chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0 ||
                            completion<chart_model<std::remove_cv_t<Chart>>>::raises,
                        event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
-                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>>;
+                       no_event_queue>>;
 }  // namespace bsc::detail
 // end include/bsc/runtime/queue_for.hpp
 // begin include/bsc/runtime/rejected.hpp
@@ -7813,7 +7884,6 @@ private:
 // chart model; bsc::table::machine interprets it.
 
 #include <array>
-#include <boost/hana/at.hpp>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -7943,7 +8013,7 @@ private:
         auto const report = [&](std::exception_ptr error) { failures.report(failures.machine, std::move(error)); };
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             (bsc::detail::run_block(
-                 [&] { boost::hana::at_c<static_cast<std::size_t>(actions[I])>(chart.rows).action(context, raise); },
+                 [&] { bsc::detail::row_at<static_cast<std::size_t>(actions[I])>(chart.rows).action(context, raise); },
                  report),
              ...);
         }(std::make_index_sequence<actions.size()>{});
@@ -7951,19 +8021,19 @@ private:
 
     template <int Row>
     static bool guard_thunk(chart_type const& chart, context_type const& context, void const* event) {
-        return static_cast<bool>(boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows)
+        return static_cast<bool>(bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows)
                                      .guard(context, *static_cast<event_type_of<Row> const*>(event)));
     }
 
     template <int Row>
     static void action_thunk(chart_type const& chart, context_type& context, void const* event, raise_type& raise) {
-        boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows)
+        bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows)
             .action(context, *static_cast<event_type_of<Row> const*>(event), raise);
     }
 
     template <int Row>
     static duration delay_thunk(chart_type const& chart) {
-        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay;
+        return bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay;
     }
 
     template <row_kind K, int S>
@@ -8171,7 +8241,7 @@ private:
 
     template <int Row>
     static void transition(Observer& o, Chart const& chart, void const* event) {
-        notify::template transition<Row>(o, boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows),
+        notify::template transition<Row>(o, bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows),
                                          *static_cast<event_type<Row> const*>(event));
     }
 

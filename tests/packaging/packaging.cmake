@@ -3,7 +3,7 @@
 #                                 finds it with find_package(bsc CONFIG REQUIRED)
 #   packaging.add_subdirectory    a project adds bsc's source directory; bsc adds no tests of its own
 #   packaging.fetch_content       a project fetches an archive of bsc with FetchContent (file:// URL)
-#   packaging.single_header       programs built with only single_include/ and Boost on the path,
+#   packaging.single_header       programs built with only single_include/ on the path,
 #                                 one for each of bsc.hpp, verify.hpp and export.hpp
 #   packaging.headers_self_contained
 #                                 every header under include/bsc compiles on its own

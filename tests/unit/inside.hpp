@@ -8,7 +8,6 @@
 #include <type_traits>
 #include <utility>
 
-#include <boost/hana/unpack.hpp>
 
 #include <bsc/bsc.hpp>
 #include <bsc/compiled/plan.hpp>
@@ -113,7 +112,7 @@ constexpr auto faulty_row(Row const& row) {
 
 template <class Injector, class Chart>
 constexpr auto with_faults(Chart const& chart) {
-    return boost::hana::unpack(chart.rows, [](auto const&... rows) {
+    return bsc::detail::with_rows(chart.rows, [](auto const&... rows) {
         return bsc::make_chart<typename Chart::context_type>(typename Chart::root_type{},
                                                              faulty_row<Injector>(rows)...);
     });

@@ -21,18 +21,35 @@ struct plan : chart_layout<Model> {
     using layout::components;
     using layout::has_parallel;
     using layout::conflict;
+    using layout::from_source;
+    using layout::from_source_begin;
+
+    static constexpr int transition_count(int trigger) {
+        int n = 0;
+        for (int r = 0; r < R; ++r) n += is_transition_on(r, trigger) ? 1 : 0;
+        return n;
+    }
+
+    // The transitions on a trigger, in declaration order; the selection buffer stores positions
+    // here. The one scan of all rows per trigger: what follows reads this list.
+    template <int Trigger>
+    static constexpr auto transitions = [] {
+        std::array<int, static_cast<std::size_t>(transition_count(Trigger))> out{};
+        std::size_t n = 0;
+        for (int r = 0; r < R; ++r)
+            if (is_transition_on(r, Trigger))
+                out[n++] = r;
+        return out;
+    }();
 
     // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a descendant.
     template <int Trigger>
     static constexpr std::array<bool, static_cast<std::size_t>(N)> relevant = [] {
         std::array<bool, static_cast<std::size_t>(N)> rel{};
-        for (int r = 0; r < R; ++r) {
-            if (!is_transition_on(r, Trigger))
-                continue;
+        for (int const r : transitions<Trigger>) {
             int const src = rows.source[static_cast<std::size_t>(r)];
-            for (int s = 0; s < N; ++s)
-                if (tree.contains(src, s) || tree.contains(s, src))
-                    rel[static_cast<std::size_t>(s)] = true;
+            for (int a = src; a >= 0; a = tree.parent[static_cast<std::size_t>(a)]) rel[static_cast<std::size_t>(a)] = true;
+            for (int d = src; d < tree.end[static_cast<std::size_t>(src)]; ++d) rel[static_cast<std::size_t>(d)] = true;
         }
         return rel;
     }();
@@ -62,9 +79,8 @@ struct plan : chart_layout<Model> {
     static constexpr int candidate_count(int leaf, int trigger) {
         int n = 0;
         for (int a = leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
-            for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, trigger) && rows.source[static_cast<std::size_t>(r)] == a)
-                    ++n;
+            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                n += is_transition_on(from_source[static_cast<std::size_t>(i)], trigger) ? 1 : 0;
         return n;
     }
 
@@ -73,17 +89,17 @@ struct plan : chart_layout<Model> {
         std::array<int, static_cast<std::size_t>(candidate_count(Leaf, Trigger))> out{};
         std::size_t n = 0;
         for (int a = Leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
-            for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, Trigger) && rows.source[static_cast<std::size_t>(r)] == a)
-                    out[n++] = r;
+            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                if (is_transition_on(from_source[static_cast<std::size_t>(i)], Trigger))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
         return out;
     }();
 
     static constexpr int component_candidate_count(int frontier, int component) {
         int n = 0;
         for (int a = frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
-            for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, any_condition) && rows.source[static_cast<std::size_t>(r)] == a) ++n;
+            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                n += is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition) ? 1 : 0;
             if (a == component) break;
         }
         return n;
@@ -93,28 +109,11 @@ struct plan : chart_layout<Model> {
         std::array<int, static_cast<std::size_t>(component_candidate_count(Frontier, Component))> out{};
         std::size_t n = 0;
         for (int a = Frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
-            for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, any_condition) && rows.source[static_cast<std::size_t>(r)] == a)
-                    out[n++] = r;
+            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                if (is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
             if (a == Component) break;
         }
-        return out;
-    }();
-
-    static constexpr int transition_count(int trigger) {
-        int n = 0;
-        for (int r = 0; r < R; ++r) n += is_transition_on(r, trigger) ? 1 : 0;
-        return n;
-    }
-
-    // The transitions on a trigger, in declaration order; the selection buffer stores positions here.
-    template <int Trigger>
-    static constexpr auto transitions = [] {
-        std::array<int, static_cast<std::size_t>(transition_count(Trigger))> out{};
-        std::size_t n = 0;
-        for (int r = 0; r < R; ++r)
-            if (is_transition_on(r, Trigger))
-                out[n++] = r;
         return out;
     }();
 
@@ -150,19 +149,20 @@ struct plan : chart_layout<Model> {
         return out;
     }();
 
-    static constexpr int component_row_count(int trigger, int component) {
+    template <int Trigger>
+    static constexpr int component_row_count(int component) {
         int n = 0;
-        for (int r = 0; r < R; ++r)
-            n += is_transition_on(r, trigger) && component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == component;
+        for (int const r : transitions<Trigger>)
+            n += component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == component;
         return n;
     }
     // The transitions on a trigger whose source lies in component C, in declaration order.
     template <int Trigger, int C>
     static constexpr auto component_rows = [] {
-        std::array<int, static_cast<std::size_t>(component_row_count(Trigger, C))> out{};
+        std::array<int, static_cast<std::size_t>(component_row_count<Trigger>(C))> out{};
         std::size_t n = 0;
-        for (int r = 0; r < R; ++r)
-            if (is_transition_on(r, Trigger) && component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == C)
+        for (int const r : transitions<Trigger>)
+            if (component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == C)
                 out[n++] = r;
         return out;
     }();
@@ -184,18 +184,19 @@ struct plan : chart_layout<Model> {
     template <int Trigger>
     static constexpr bool region_local = [] {
         if (!has_parallel) return false;  // nothing to resolve: every transition fires where selected
-        for (int r = 0; r < R; ++r) {
-            if (!is_transition_on(r, Trigger)) continue;
+        constexpr auto const& on_trigger = transitions<Trigger>;
+        for (std::size_t i = 0; i < on_trigger.size(); ++i) {
+            int const r = on_trigger[i];
             int const src = rows.source[static_cast<std::size_t>(r)];
-            for (int s = 0; s < N; ++s)
-                if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel && tree.contains(src, s))
-                    return false;
-            if (component_row_count(Trigger, component_of[static_cast<std::size_t>(src)]) > 254) return false;
-            for (int r2 = r + 1; r2 < R; ++r2)
-                if (is_transition_on(r2, Trigger) &&
-                    component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r2)])] != component_of[static_cast<std::size_t>(src)] &&
+            for (int s = src; s < tree.end[static_cast<std::size_t>(src)]; ++s)
+                if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel) return false;
+            if (component_row_count<Trigger>(component_of[static_cast<std::size_t>(src)]) > 254) return false;
+            for (std::size_t j = i + 1; j < on_trigger.size(); ++j) {
+                int const r2 = on_trigger[j];
+                if (component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r2)])] != component_of[static_cast<std::size_t>(src)] &&
                     conflict(r, r2))
                     return false;
+            }
         }
         return true;
     }();
@@ -208,8 +209,7 @@ struct plan : chart_layout<Model> {
     template <int Trigger>
     static constexpr bool fires_at_selection = [] {
         if (!region_local<Trigger>) return false;
-        for (int r = 0; r < R; ++r) {
-            if (!is_transition_on(r, Trigger)) continue;
+        for (int const r : transitions<Trigger>) {
             if (rows.guarded[static_cast<std::size_t>(r)]) return false;
             int const d = rows.domain[static_cast<std::size_t>(r)];
             if (d < 0) continue;  // targetless: exits and enters nothing
@@ -223,17 +223,18 @@ struct plan : chart_layout<Model> {
     }();
 
     // The components in which a transition on the trigger can be selected under a parallel state.
-    static constexpr int selecting_component_count(int trigger) {
+    template <int Trigger>
+    static constexpr int selecting_component_count() {
         int n = 0;
-        for (std::size_t c = 1; c < components.size(); ++c) n += component_row_count(trigger, static_cast<int>(c)) > 0;
+        for (std::size_t c = 1; c < components.size(); ++c) n += component_row_count<Trigger>(static_cast<int>(c)) > 0;
         return n;
     }
     template <int Trigger>
     static constexpr auto selecting_components = [] {
-        std::array<int, static_cast<std::size_t>(selecting_component_count(Trigger))> out{};
+        std::array<int, static_cast<std::size_t>(selecting_component_count<Trigger>())> out{};
         std::size_t n = 0;
         for (std::size_t c = 1; c < components.size(); ++c)
-            if (component_row_count(Trigger, static_cast<int>(c)) > 0) out[n++] = static_cast<int>(c);
+            if (component_row_count<Trigger>(static_cast<int>(c)) > 0) out[n++] = static_cast<int>(c);
         return out;
     }();
 };

@@ -16,10 +16,8 @@
 #include <utility>
 #include <vector>
 
-#include <boost/hana/at.hpp>
-#include <boost/hana/basic_tuple.hpp>
-
 #include <bsc/detail/delay_label.hpp>
+#include <bsc/detail/row_storage.hpp>
 #include <bsc/dsl/delayed.hpp>
 #include <bsc/model/chart_model.hpp>
 #include <bsc/detail/type_name.hpp>
@@ -360,7 +358,7 @@ diagram model_of(Chart const& chart) {
         m.states.push_back(std::move(info));
     }
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (add_row(m, boost::hana::at_c<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), ...);
+        (add_row(m, detail::row_at<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), ...);
     }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
     for (std::size_t k = 0; k < m.transitions.size(); ++k) {
         auto& t = m.transitions[k];

@@ -46,10 +46,18 @@ struct event_families;
 template <class... Us>
 struct event_families<type_list<Us...>> {
     static constexpr std::size_t K = sizeof...(Us);
-    // Whether chart event E has a family among the chart's events; any: whether one has.
+    // Whether the chart names bsc::any_event, every other event's family.
+    static constexpr bool names_any_event = (false || ... || __is_same(Us, any_event));
+    // How many chart events E derives from, E itself included if it is one (a class is its own
+    // base). One built-in per pair and nothing else: a chart of K events asks K * K times.
     template <class E>
-    static constexpr bool has_family = (false || ... || (!__is_same(Us, E) && (__is_same(Us, any_event) || __is_base_of(Us, E))));
-    static constexpr bool any = (false || ... || has_family<Us>);
+    static constexpr int chart_bases = (0 + ... + static_cast<int>(__is_base_of(Us, E)));
+    // Whether event E has a family among the chart's events; any: whether a chart event has.
+    template <class E>
+    static constexpr bool has_family =
+        (names_any_event && !__is_same(E, any_event)) ||
+        chart_bases<E> > static_cast<int>(__is_class(E) && index_in<E, Us...>() >= 0);
+    static constexpr bool any = (names_any_event && K > 1) || (false || ... || (chart_bases<Us> > static_cast<int>(__is_class(Us))));
     // family[t][u]: chart event u is a family of chart event t. (Built only where some event
     // has a family: a chart of K events would otherwise hold K * K flags for nothing.)
     static constexpr auto family = [] {

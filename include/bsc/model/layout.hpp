@@ -118,11 +118,31 @@ struct chart_layout {
         return state;
     }();
 
+    // The rows of each state, in declaration order, all kinds: those of state s are
+    // from_source[from_source_begin[s]] to from_source[from_source_begin[s + 1]] (exclusive).
+    // Built once, so that what is asked per state or per (state, trigger) reads that state's
+    // rows and not all the chart's: the compile time stays linear in the chart.
+    static constexpr auto from_source_begin = [] {
+        std::array<int, static_cast<std::size_t>(N) + 1> begin{};
+        for (int r = 0; r < R; ++r) ++begin[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)]) + 1];
+        for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s) begin[s + 1] += begin[s];
+        return begin;
+    }();
+    static constexpr auto from_source = [] {
+        std::array<int, static_cast<std::size_t>(R)> out{};
+        auto next = from_source_begin;
+        for (int r = 0; r < R; ++r) out[static_cast<std::size_t>(next[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])]++)] = r;
+        return out;
+    }();
+
     static constexpr int count_rows(row_kind k, int state) {
         int n = 0;
-        for (int r = 0; r < R; ++r)
-            n += rows.kinds[static_cast<std::size_t>(r)] == k &&
-                 (state < 0 || rows.source[static_cast<std::size_t>(r)] == state);
+        if (state < 0) {
+            for (int r = 0; r < R; ++r) n += rows.kinds[static_cast<std::size_t>(r)] == k;
+        } else {
+            for (int i = from_source_begin[static_cast<std::size_t>(state)]; i < from_source_begin[static_cast<std::size_t>(state) + 1]; ++i)
+                n += rows.kinds[static_cast<std::size_t>(from_source[static_cast<std::size_t>(i)])] == k;
+        }
         return n;
     }
 
@@ -132,9 +152,14 @@ struct chart_layout {
     static constexpr auto rows_of = [] {
         std::array<int, static_cast<std::size_t>(count_rows(K, S))> out{};
         std::size_t n = 0;
-        for (int r = 0; r < R; ++r)
-            if (rows.kinds[static_cast<std::size_t>(r)] == K && (S < 0 || rows.source[static_cast<std::size_t>(r)] == S))
-                out[n++] = r;
+        if constexpr (S < 0) {
+            for (int r = 0; r < R; ++r)
+                if (rows.kinds[static_cast<std::size_t>(r)] == K) out[n++] = r;
+        } else {
+            for (int i = from_source_begin[S]; i < from_source_begin[S + 1]; ++i)
+                if (rows.kinds[static_cast<std::size_t>(from_source[static_cast<std::size_t>(i)])] == K)
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
+        }
         return out;
     }();
     static constexpr auto const& transition_rows = rows_of<row_kind::transition, -1>;

@@ -14,7 +14,6 @@
 //   template <int S> bool is_active() const;     whether state S is active
 
 #include <array>
-#include <boost/hana/at.hpp>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -24,6 +23,7 @@
 #include <bsc/action_failed.hpp>
 #include <bsc/configuration.hpp>
 #include <bsc/detail/access.hpp>
+#include <bsc/detail/row_storage.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/duration.hpp>
 #include <bsc/error.hpp>
@@ -513,7 +513,7 @@ protected:
 
     template <int Row>
     constexpr auto const& row() const {
-        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart().rows);
+        return row_at<static_cast<std::size_t>(Row)>(chart().rows);
     }
 
     // Whether state s is active, read from the bytes; outermost first, so one pass suffices.

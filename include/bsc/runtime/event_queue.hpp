@@ -123,7 +123,7 @@ private:
 
 // The queue of a chart none of whose actions can raise (detail::may_raise): it is always
 // empty, and saying so at compile time spares every dispatch the checks for raised events.
-template <class Events>
+// (Not a template: its name is part of the symbols of every action the machine calls.)
 class no_event_queue {
 public:
     template <class E>

@@ -51,5 +51,5 @@ using queue_for = std::conditional_t<
                            chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0 ||
                            completion<chart_model<std::remove_cv_t<Chart>>>::raises,
                        event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
-                       no_event_queue<typename chart_model<std::remove_cv_t<Chart>>::events>>>;
+                       no_event_queue>>;
 }  // namespace bsc::detail

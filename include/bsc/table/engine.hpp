@@ -53,7 +53,7 @@ private:
 
     template <int Row>
     static void transition(Observer& o, Chart const& chart, void const* event) {
-        notify::template transition<Row>(o, boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows),
+        notify::template transition<Row>(o, bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows),
                                          *static_cast<event_type<Row> const*>(event));
     }
 

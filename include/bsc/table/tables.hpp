@@ -8,7 +8,6 @@
 // chart model; bsc::table::machine interprets it.
 
 #include <array>
-#include <boost/hana/at.hpp>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -17,6 +16,7 @@
 
 #include <bsc/chart.hpp>
 #include <bsc/detail/meta.hpp>
+#include <bsc/detail/row_storage.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/model/layout.hpp>
@@ -146,7 +146,7 @@ private:
         auto const report = [&](std::exception_ptr error) { failures.report(failures.machine, std::move(error)); };
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             (bsc::detail::run_block(
-                 [&] { boost::hana::at_c<static_cast<std::size_t>(actions[I])>(chart.rows).action(context, raise); },
+                 [&] { bsc::detail::row_at<static_cast<std::size_t>(actions[I])>(chart.rows).action(context, raise); },
                  report),
              ...);
         }(std::make_index_sequence<actions.size()>{});
@@ -154,19 +154,19 @@ private:
 
     template <int Row>
     static bool guard_thunk(chart_type const& chart, context_type const& context, void const* event) {
-        return static_cast<bool>(boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows)
+        return static_cast<bool>(bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows)
                                      .guard(context, *static_cast<event_type_of<Row> const*>(event)));
     }
 
     template <int Row>
     static void action_thunk(chart_type const& chart, context_type& context, void const* event, raise_type& raise) {
-        boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows)
+        bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows)
             .action(context, *static_cast<event_type_of<Row> const*>(event), raise);
     }
 
     template <int Row>
     static duration delay_thunk(chart_type const& chart) {
-        return boost::hana::at_c<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay;
+        return bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows).trigger_value.delay;
     }
 
     template <row_kind K, int S>
