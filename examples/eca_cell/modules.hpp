@@ -175,7 +175,7 @@ inline constexpr auto chart = bsc::make_chart<no_data>(
     bsc::composite<Button>(bsc::initial<Released>, bsc::state<Pressed>),
     bsc::state<Released> + bsc::event<set_pressed> = bsc::state<Pressed>,
     bsc::state<Pressed> + bsc::event<set_released> = bsc::state<Released>);
-using module = bsc::machine<decltype(chart)>;
+using module = bsc::machine<bsc::chart_ref<chart>>;
 }  // namespace button
 
 namespace robot {
@@ -188,7 +188,7 @@ inline constexpr auto chart = bsc::make_chart<no_data>(
     bsc::composite<Robot>(bsc::initial<Idle>, bsc::state<Busy>),
     bsc::state<Idle> + bsc::event<set_busy> = bsc::state<Busy>,
     bsc::state<Busy> + bsc::event<set_idle> = bsc::state<Idle>);
-using module = bsc::machine<decltype(chart)>;
+using module = bsc::machine<bsc::chart_ref<chart>>;
 }  // namespace robot
 
 // ---- Main's vocabulary: queries, updates, outputs ------------------------------------------
@@ -304,7 +304,7 @@ inline constexpr auto main_rules =
 inline constexpr auto main_chart = make_main<main_connections>(main_tree(), main_rules);
 
 /// The ECA MFSM controller of Figure 5: Main, and through its context the Peripheral modules.
-using controller = bsc::machine<decltype(main_chart)>;
+using controller = bsc::machine<bsc::chart_ref<main_chart>>;
 
 /// One scan: Main processes the input event e to completion, the Peripheral modules process
 /// the updating events it sends them as it goes, and `env.sent` lists the output events of

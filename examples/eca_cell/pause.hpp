@@ -68,7 +68,7 @@ inline constexpr auto chart = bsc::make_chart<no_data>(
     bsc::composite<Pause>(bsc::initial<Running>, bsc::state<Paused>),
     bsc::state<Running> + bsc::event<set_paused> = bsc::state<Paused>,
     bsc::state<Paused> + bsc::event<set_running> = bsc::state<Running>);
-using module = bsc::machine<decltype(chart)>;
+using module = bsc::machine<bsc::chart_ref<chart>>;
 }  // namespace pause
 
 inline constexpr std::string_view pause_query = "Pause?";
@@ -160,6 +160,6 @@ inline constexpr auto extended_main_chart = make_main<extended_connections>(
     extended_rules);
 
 /// The controller of Figure 7b: the extended Main with Button, Robot and Pause.
-using extended_controller = bsc::machine<decltype(extended_main_chart)>;
+using extended_controller = bsc::machine<bsc::chart_ref<extended_main_chart>>;
 
 }  // namespace eca

@@ -275,7 +275,7 @@ constexpr auto make_controller(G4 guard4, G13 guard13) {
 inline constexpr auto chart = make_controller(g4, g13);
 
 /// The controller: the chart running over its data model area.
-using machine = bsc::machine<decltype(chart), bsc::scan_policy>;
+using machine = bsc::machine<bsc::chart_ref<chart>, bsc::scan_policy>;
 
 // ---- The controller's interface to the plant ---------------------------------------------------
 

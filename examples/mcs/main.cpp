@@ -24,7 +24,7 @@
 namespace {
 
 // The example's machine: the MCS chart with a logger, which writes only when given a stream.
-using machine = bsc::machine<decltype(mcs::chart), bsc::default_policy, bsc::logger>;
+using machine = bsc::machine<bsc::chart_ref<mcs::chart>, bsc::default_policy, bsc::logger>;
 using events = bsc::event_set<decltype(mcs::chart)>;
 
 // The transitions the logger has recorded, which the scripted run checks against its pushes.

@@ -316,6 +316,6 @@ inline constexpr auto mode_rows = bsc::rows(
 inline constexpr auto chart = bsc::make_chart<panel>(tree, show_rows, figure13(cond), estop_rows, mode_rows);
 
 /// The supervisor: the chart running over a panel.
-using machine = bsc::machine<decltype(chart)>;
+using machine = bsc::machine<bsc::chart_ref<chart>>;
 
 }  // namespace mcs

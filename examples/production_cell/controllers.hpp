@@ -491,12 +491,12 @@ inline constexpr auto deposit_belt_chart = bsc::make_chart<deposit_belt_ctl>(
     })] = bsc::state<DpClear>,
     bsc::state<DpRun> + bsc::after(deposit_run_out_time) = bsc::state<DpIdle>);
 
-using feed_belt_actor = bsc::machine<decltype(feed_belt_chart)>;
-using table_actor = bsc::machine<decltype(table_chart)>;
-using robot_actor = bsc::machine<decltype(robot_chart)>;
+using feed_belt_actor = bsc::machine<bsc::chart_ref<feed_belt_chart>>;
+using table_actor = bsc::machine<bsc::chart_ref<table_chart>>;
+using robot_actor = bsc::machine<bsc::chart_ref<robot_chart>>;
 template <bool WaitsForArm1>
-using press_actor_variant = bsc::machine<decltype(press_chart_variant<WaitsForArm1>)>;
+using press_actor_variant = bsc::machine<bsc::chart_ref<press_chart_variant<WaitsForArm1>>>;
 using press_actor = press_actor_variant<true>;
-using deposit_belt_actor = bsc::machine<decltype(deposit_belt_chart)>;
+using deposit_belt_actor = bsc::machine<bsc::chart_ref<deposit_belt_chart>>;
 
 }  // namespace pcell

@@ -415,10 +415,10 @@ inline constexpr auto env_deposit_belt_chart = bsc::make_chart<deposit_belt_io>(
          bsc::state<DbReady>[([](deposit_belt_io const& c) { return bool(c.from_arm2.get()); })] /
              [](deposit_belt_io& c) { c.slots[0] = c.from_arm2.get(); }));
 
-using feed_belt_plant = bsc::machine<decltype(env_feed_belt_chart)>;
-using table_plant = bsc::machine<decltype(env_table_chart)>;
-using robot_plant = bsc::machine<decltype(env_robot_chart)>;
-using press_plant = bsc::machine<decltype(env_press_chart)>;
-using deposit_belt_plant = bsc::machine<decltype(env_deposit_belt_chart)>;
+using feed_belt_plant = bsc::machine<bsc::chart_ref<env_feed_belt_chart>>;
+using table_plant = bsc::machine<bsc::chart_ref<env_table_chart>>;
+using robot_plant = bsc::machine<bsc::chart_ref<env_robot_chart>>;
+using press_plant = bsc::machine<bsc::chart_ref<env_press_chart>>;
+using deposit_belt_plant = bsc::machine<bsc::chart_ref<env_deposit_belt_chart>>;
 
 }  // namespace pcell

@@ -52,7 +52,7 @@ inline constexpr auto supervisor_chart = bsc::make_chart<supervisor_io>(
         }) = bsc::state<SvPut>,
     bsc::state<SvPut> / bsc::named<"put=none">([](supervisor_io& c) { c.put.set(brick{}); }) = bsc::state<SvWait>);
 
-using supervisor_actor = bsc::machine<decltype(supervisor_chart)>;
+using supervisor_actor = bsc::machine<bsc::chart_ref<supervisor_chart>>;
 
 /// The cell's eleven actors: the supervisor, the five controllers, the five plant models.
 struct supervised_actors {

@@ -58,44 +58,40 @@ struct chart {
 };
 
 namespace detail {
-// Deliberately not constexpr (as bsc_after_negative_delay): in a constexpr chart, reaching it is
-// the compile error, and its name says what is wrong; a chart built at run time throws.
-[[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(std::size_t row,
-                                                                                         std::size_t fires_first) {
-#if defined(__cpp_exceptions)
-    throw std::invalid_argument(
-        "bsc::make_chart: the timeout row at position " + std::to_string(row) +
-        " can never fire: the unguarded timeout row at position " + std::to_string(fires_first) +
-        " leaves the same state with a shorter (or equal, and earlier) delay, always first");
-#else
-    (void)row;
-    (void)fires_first;
-    std::abort();
-#endif
-}
-// The frame the compiler shows with its arguments (Clang prints their values): the positions of
-// the dead row and of the row that always fires first, counted from 1 among make_chart's rows
-// (as bsc::error::at_row counts them).
-// (The test keeps GCC from rejecting a constexpr function that can never be constant.)
-constexpr void timeout_row_never_fires(std::size_t row, std::size_t fires_first) {
-    if (row != fires_first) bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(row, fires_first);
-}
-
 // The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
 // a timeout row of S behind an unguarded timeout row of S with a target and a shorter delay, or
 // an equal one declared earlier, which always fires first and leaves S, so the clock of the
 // other starts again before it is due. The delays are copied out of the rows first, so that the
 // frames of a failure carry an array of numbers and not the chart's type.
+// Returns the positions (from 1) of the first dead row found and of the row that fires before
+// it; {0, 0} if there is none.
+struct dead_timeout {
+    std::size_t row = 0;
+    std::size_t fires_first = 0;
+};
 template <std::size_t Count>
-constexpr void check_timeout_rows(row_table<Count> const& r, std::array<duration, Count> const& delay) {
+constexpr dead_timeout find_dead_timeout(row_table<Count> const& r, std::array<duration, Count> const& delay) {
     auto const timeout = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.trigger[i] <= -2; };
     for (std::size_t i = 0; i < Count; ++i) {
         if (!timeout(i) || r.guarded[i] || r.target[i] < 0) continue;
         for (std::size_t j = 0; j < Count; ++j)
             if (j != i && timeout(j) && r.source[j] == r.source[i] &&
                 (delay[i] < delay[j] || (delay[i] == delay[j] && i < j)))
-                timeout_row_never_fires(j + 1, i + 1);
+                return {j + 1, i + 1};
     }
+    return {};
+}
+
+// Marks the dead row's parameter (timeout_trigger's destructor reports it).
+template <class... Rows>
+constexpr void mark_dead_timeout(dead_timeout const& dead, Rows&... rows) {
+    std::size_t position = 0;
+    auto const mark = [&](auto& row) {
+        ++position;
+        if constexpr (is_timeout_row<std::remove_cvref_t<decltype(row)>>)
+            if (position == dead.row) row.trigger_value.delay = timeout_trigger::dead_mark(dead.row, dead.fires_first);
+    };
+    (mark(rows), ...);
 }
 
 template <class... Rows>
@@ -143,15 +139,21 @@ constexpr auto make_chart(Root root, Rows... rows) {
                                       error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>>{};
     } else {
         // The chart, or, when its checks find errors, the rejected_chart whose destruction
-        // reports them. Checked here and not in a helper: a dead timeout is a failure of
-        // constant evaluation, whose notes print every frame with its arguments.
+        // reports them.
         using chart_type = chart<Context, Root, Rows...>;
         using errors = decltype(detail::check_chart<chart_type>());
         if constexpr (errors::size == 0) {
-            if constexpr (sizeof...(Rows) > 0) {
-                auto const& table = detail::chart_model<chart_type>::rows;
-                auto const delays = detail::delays_of(rows...);
-                detail::check_timeout_rows(table, delays);
+            if constexpr ((detail::is_timeout_row<Rows> || ...)) {
+                auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::rows, detail::delays_of(rows...));
+                if (dead.row != 0) {
+                    if (!std::is_constant_evaluated())
+                        detail::bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(dead.row, dead.fires_first);
+                    // In a constant expression, the error comes from the marked parameter's
+                    // destruction, after this returns (detail::timeout_trigger).
+                    chart_type built{{{std::move(rows)}...}};
+                    detail::mark_dead_timeout(dead, rows...);
+                    return built;
+                }
             }
             return chart_type{{{std::move(rows)}...}};
         } else {

@@ -3,8 +3,10 @@
 // and entry/exit rows `state<S> + on_entry / action`.
 
 #include <chrono>
+#include <cstddef>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <utility>
 
@@ -28,9 +30,50 @@ template <class E>
 struct event_trigger {
     using event = E;
 };
+// Deliberately not constexpr (as bsc_after_negative_delay below): in a constexpr chart, reaching
+// it is the compile error, and its name says what is wrong; a chart built at run time throws.
+[[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(std::size_t row,
+                                                                                         std::size_t fires_first) {
+#if defined(__cpp_exceptions)
+    throw std::invalid_argument(
+        "bsc::make_chart: the timeout row at position " + std::to_string(row) +
+        " can never fire: the unguarded timeout row at position " + std::to_string(fires_first) +
+        " leaves the same state with a shorter (or equal, and earlier) delay, always first");
+#else
+    (void)row;
+    (void)fires_first;
+    std::abort();
+#endif
+}
+// The frame the compiler shows with its arguments (Clang prints their values): the positions of
+// the dead row and of the row that always fires first, counted from 1 among make_chart's rows
+// (as bsc::error::at_row counts them).
+// (The test keeps GCC from rejecting a constexpr function that can never be constant.)
+constexpr void timeout_row_never_fires(std::size_t row, std::size_t fires_first) {
+    if (row != fires_first) bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(row, fires_first);
+}
+
 /// The trigger of a state-scoped timeout: the source has been active for `delay`.
 struct timeout_trigger {
     duration delay;
+
+    // How make_chart reports a timeout row that can never fire (chart.hpp): a delay is never
+    // negative (bsc::after refuses one), so make_chart writes the positions of the dead row and
+    // of the row that fires first, as a negative delay, into its own copy of the dead row, the
+    // parameter, once the chart is built. The parameter is destroyed after make_chart returns,
+    // in the declaration of the chart, and this is the compile error: its context is the row's
+    // type, where a failure inside make_chart would print make_chart's, which spells the chart.
+    static constexpr long long dead_mark_base = 1LL << 24;
+    static constexpr duration dead_mark(std::size_t row, std::size_t fires_first) {
+        return duration{-1 - static_cast<long long>(row) * dead_mark_base - static_cast<long long>(fires_first)};
+    }
+    constexpr ~timeout_trigger() {
+        if (std::is_constant_evaluated() && delay < duration::zero()) {
+            long long const mark = -1 - static_cast<long long>(delay.count());
+            timeout_row_never_fires(static_cast<std::size_t>(mark / dead_mark_base),
+                                    static_cast<std::size_t>(mark % dead_mark_base));
+        }
+    }
 };
 /// The target of an internal transition: no exit, no entry.
 struct no_target {};
