@@ -4,8 +4,10 @@
     perf_gate.py instructions --compiler CXX [--record]
     perf_gate.py compile-time --compiler CXX [--record]
 
-instructions: builds each dispatch workload of bench/ (flat, mcs, deep, wide; flat with its
-actions declared noexcept; flat, deep and wide with noexcept actions and bsc::lean_policy: bsc
+instructions: builds each dispatch workload of bench/ (flat, mcs, deep, wide, and the peers'
+workloads ported: sml_simple, sml_composite, sml_complex, fsmb_large, fsmb_deep; flat with its
+actions declared noexcept; flat, deep, wide and the ports with noexcept actions and
+bsc::lean_policy: bsc
 and the hand-written switch, -O2, no sanitizers), counts with callgrind the instructions per event of
 `bench_<workload>_insns IMPL N` minus `... IMPL 0`, divided by N, and fails if bsc's count of a
 workload exceeds the baseline by more than 0.5 % (plus 0.1 instruction for rounding). Callgrind
@@ -45,6 +47,10 @@ WORKLOADS = [("flat", "flat", []), ("flat_noexcept", "flat", ["-DBENCH_NOEXCEPT_
              ("mcs", "mcs", []), ("deep", "deep", []),
              ("deep_lean", "deep", ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"]), ("wide", "wide", []),
              ("wide_lean", "wide", ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"])]
+# The peers' own workloads, ported (Boost.SML's benchmark/ charts, fsm-benchmark's Large and
+# Deep), as users write them and lean.
+for _port in ["sml_simple", "sml_composite", "sml_complex", "fsmb_large", "fsmb_deep"]:
+    WORKLOADS += [(_port, _port, []), (_port + "_lean", _port, ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"])]
 IMPLEMENTATIONS = ["bsc_compiled", "hand_written"]
 EVENTS = 20000
 INSTRUCTION_MARGIN = 0.005

@@ -1011,6 +1011,58 @@ constexpr bool may_raise(state_action<A> const*) {
         return std::is_invocable_v<A const&, Ctx&, Raise&>;
 }
 
+// The callable of bsc::raise(e): a type of its own, so that the machine knows which event such an
+// action raises (detail::raised_by) and its queue holds only the events that can be raised.
+template <class E>
+struct raise_fn {
+    E event;
+    template <class Ctx, class Ev, class Queue>
+    constexpr void operator()(Ctx&, Ev const&, Queue& queue) const noexcept(noexcept(queue(event))) {
+        queue(event);
+    }
+};
+
+// What an action can raise: a type_list of the event types, or raises_anything for an action
+// that is handed the raise argument and may raise whatever it likes.
+struct raises_anything {};
+template <class... Lists>
+struct join_raised {
+    using type = type_list<>;
+};
+template <class... Es, class... Lists>
+struct join_raised<type_list<Es...>, Lists...> {
+    using rest = typename join_raised<Lists...>::type;
+    template <class Rest>
+    struct with {
+        using type = raises_anything;
+    };
+    template <class... Rs>
+    struct with<type_list<Rs...>> {
+        using type = type_list<Es..., Rs...>;
+    };
+    using type = typename with<rest>::type;
+};
+template <class... Lists>
+struct join_raised<raises_anything, Lists...> {
+    using type = raises_anything;
+};
+
+template <class Ctx, class E, class Raise, class A>
+auto raised_by(A const*) -> std::conditional_t<may_raise<Ctx, E, Raise>(static_cast<A const*>(nullptr)), raises_anything,
+                                               type_list<>>;
+template <class Ctx, class E, class Raise, class Ev>
+auto raised_by(action_fn<raise_fn<Ev>> const*) -> type_list<Ev>;
+template <class Ctx, class E, class Raise, class... As>
+auto raised_by(action_seq<As...> const*) ->
+    typename join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>::type;
+template <class Ctx, class E, class Raise, class A>
+auto raised_by(state_action<A> const*) {
+    if constexpr (bsc_action<A>)
+        return decltype(raised_by<Ctx, state_change, Raise>(static_cast<A const*>(nullptr))){};
+    else
+        return std::conditional_t<std::is_invocable_v<A const&, Ctx&, Raise&>, raises_anything, type_list<>>{};
+}
+
 }  // namespace bsc::detail
 
 namespace bsc {
@@ -1040,7 +1092,7 @@ inline constexpr detail::defer_action defer{};
 /// the current step, before dispatch returns.
 template <class E>
 constexpr auto raise(E e) {
-    return action([e](auto&, auto const&, auto& queue) noexcept(noexcept(queue(e))) { queue(e); });
+    return action(detail::raise_fn<E>{std::move(e)});
 }
 
 }  // namespace bsc
@@ -7075,6 +7127,40 @@ constexpr bool chart_sends_delayed() {
         return (sends_delayed<std::remove_cv_t<decltype(Rows::action)>> || ...);
     }(typename Model::row_types{});
 }
+// The events the queue of a machine of the chart holds: those its actions raise, where each
+// action says which (bsc::raise), the done events and bsc::action_failed the chart takes (the
+// machine raises those), in the chart's order; all the chart's events if an action may raise
+// anything or raises an event the chart does not name (the queue then stores it as its family).
+// Fewer events, fewer alternatives for the code that runs queued events to instantiate.
+template <class Model, class Policy>
+struct queued_events {
+    using context = typename Model::chart_context;
+    using full_queue = event_queue<Policy::queue_capacity, typename Model::events>;
+    using raised = typename decltype([]<class... Rows>(type_list<Rows...>) {
+        return std::type_identity<typename join_raised<decltype(raised_by<context, row_event_t<Rows>, full_queue>(
+            static_cast<decltype(Rows::action) const*>(nullptr)))...>::type>{};
+    }(typename Model::row_types{}))::type;
+
+    template <class E>
+    static constexpr bool machine_raises = is_done_event<E> || __is_same(E, action_failed);
+    template <class List>
+    struct chosen {
+        using type = typename Model::events;
+    };
+    template <class... Raised>
+    struct chosen<type_list<Raised...>> {
+        template <class E>
+        static constexpr bool kept = machine_raises<E> || index_in<E, Raised...>() >= 0;
+        using type = std::conditional_t<
+            (... && (index_of<Raised, typename Model::events> >= 0)),
+            decltype([]<class... Es>(type_list<Es...>) {
+                return (type_list<>{} + ... + std::conditional_t<kept<Es>, type_list<Es>, type_list<>>{});
+            }(typename Model::events{})),
+            typename Model::events>;
+    };
+    using type = typename chosen<raised>::type;
+};
+
 template <class Policy, bool Sends>
 inline constexpr std::size_t delayed_capacity_of = 0;
 template <class Policy>
@@ -7091,7 +7177,7 @@ using queue_for = std::conditional_t<
     std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
                            chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0 ||
                            completion<chart_model<std::remove_cv_t<Chart>>>::raises,
-                       event_queue<Policy::queue_capacity, typename chart_model<std::remove_cv_t<Chart>>::events>,
+                       event_queue<Policy::queue_capacity, typename queued_events<Model, Policy>::type>,
                        no_event_queue>>;
 }  // namespace bsc::detail
 // end include/bsc/runtime/queue_for.hpp

@@ -7,6 +7,7 @@
 
 #include <bsc/bsc.hpp>
 #include <bsc/table/engine.hpp>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -228,4 +229,52 @@ TEST_CASE_TEMPLATE("a machine under bsc::lean_policy behaves as one under the de
     }
     CHECK(lean.context().n > 0);
     CHECK(lean.dispatch(fp::back{}, bsc::allow_unhandled) == bsc::outcome::ignored);
+}
+
+namespace fp {
+// A large event the chart takes but never raises, and a small one its actions raise: with
+// bsc::raise, the queue holds the small one only; with an action that may raise anything, every
+// event of the chart.
+struct large {
+    std::array<char, 512> payload{};
+};
+struct small {
+    int n = 0;
+};
+inline constexpr auto raises_small = bsc::make_chart<count>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+    bsc::state<A> + bsc::event<large> / bsc::raise(small{5}) = bsc::state<B>,
+    bsc::state<B> + bsc::event<small> / [](count& c, small const& s) noexcept { c.n += s.n; } = bsc::state<C>,
+    bsc::state<C> + bsc::on_exit / bsc::raise(small{1}),
+    bsc::state<C> + bsc::event<go> = bsc::state<A>);
+inline constexpr auto raises_anything = bsc::make_chart<count>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+    bsc::state<A> + bsc::event<large> / [](count&, large const&, auto& raise) noexcept { (void)raise(small{5}); } =
+        bsc::state<B>,
+    bsc::state<B> + bsc::event<small> / [](count& c, small const& s) noexcept { c.n += s.n; } = bsc::state<C>,
+    bsc::state<C> + bsc::on_exit / bsc::raise(small{1}),
+    bsc::state<C> + bsc::event<go> = bsc::state<A>);
+}  // namespace fp
+
+TEST_CASE_TEMPLATE("the queue of a chart that raises with bsc::raise holds only the events it raises", Backend,
+                   bsc_test::compiled, bsc_test::table) {
+    using narrow = bsc_test::machine_t<Backend, decltype(fp::raises_small)>;
+    using wide = bsc_test::machine_t<Backend, decltype(fp::raises_anything)>;
+    // Eight queued events of at most 8 bytes each, against eight of the 512-byte event.
+    CHECK(sizeof(narrow) < sizeof(fp::large));
+    CHECK(sizeof(wide) > 8 * sizeof(fp::large));
+    // And both run alike: large raises small{5} (B to C, +5); go leaves C, whose exit raises
+    // small{1}, which A ignores.
+    narrow n{fp::raises_small};
+    wide w{fp::raises_anything};
+    CHECK(n.dispatch(fp::large{}) == bsc::outcome::consumed);
+    CHECK(w.dispatch(fp::large{}) == bsc::outcome::consumed);
+    CHECK((n.template is<fp::C>() && w.template is<fp::C>()));
+    CHECK(n.context().n == 5);
+    CHECK(w.context().n == 5);
+    CHECK(n.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(w.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK((n.template is<fp::A>() && w.template is<fp::A>()));
+    CHECK(n.context().n == 5);
+    CHECK(w.context().n == 5);
 }

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include <bsc/detail/invoke.hpp>
+#include <bsc/detail/meta.hpp>
 
 namespace bsc::detail {
 
@@ -131,6 +132,58 @@ constexpr bool may_raise(state_action<A> const*) {
         return std::is_invocable_v<A const&, Ctx&, Raise&>;
 }
 
+// The callable of bsc::raise(e): a type of its own, so that the machine knows which event such an
+// action raises (detail::raised_by) and its queue holds only the events that can be raised.
+template <class E>
+struct raise_fn {
+    E event;
+    template <class Ctx, class Ev, class Queue>
+    constexpr void operator()(Ctx&, Ev const&, Queue& queue) const noexcept(noexcept(queue(event))) {
+        queue(event);
+    }
+};
+
+// What an action can raise: a type_list of the event types, or raises_anything for an action
+// that is handed the raise argument and may raise whatever it likes.
+struct raises_anything {};
+template <class... Lists>
+struct join_raised {
+    using type = type_list<>;
+};
+template <class... Es, class... Lists>
+struct join_raised<type_list<Es...>, Lists...> {
+    using rest = typename join_raised<Lists...>::type;
+    template <class Rest>
+    struct with {
+        using type = raises_anything;
+    };
+    template <class... Rs>
+    struct with<type_list<Rs...>> {
+        using type = type_list<Es..., Rs...>;
+    };
+    using type = typename with<rest>::type;
+};
+template <class... Lists>
+struct join_raised<raises_anything, Lists...> {
+    using type = raises_anything;
+};
+
+template <class Ctx, class E, class Raise, class A>
+auto raised_by(A const*) -> std::conditional_t<may_raise<Ctx, E, Raise>(static_cast<A const*>(nullptr)), raises_anything,
+                                               type_list<>>;
+template <class Ctx, class E, class Raise, class Ev>
+auto raised_by(action_fn<raise_fn<Ev>> const*) -> type_list<Ev>;
+template <class Ctx, class E, class Raise, class... As>
+auto raised_by(action_seq<As...> const*) ->
+    typename join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>::type;
+template <class Ctx, class E, class Raise, class A>
+auto raised_by(state_action<A> const*) {
+    if constexpr (bsc_action<A>)
+        return decltype(raised_by<Ctx, state_change, Raise>(static_cast<A const*>(nullptr))){};
+    else
+        return std::conditional_t<std::is_invocable_v<A const&, Ctx&, Raise&>, raises_anything, type_list<>>{};
+}
+
 }  // namespace bsc::detail
 
 namespace bsc {
@@ -160,7 +213,7 @@ inline constexpr detail::defer_action defer{};
 /// the current step, before dispatch returns.
 template <class E>
 constexpr auto raise(E e) {
-    return action([e](auto&, auto const&, auto& queue) noexcept(noexcept(queue(e))) { queue(e); });
+    return action(detail::raise_fn<E>{std::move(e)});
 }
 
 }  // namespace bsc
