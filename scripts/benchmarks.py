@@ -50,7 +50,8 @@ OUT = BUILD / "benchmark-results"
 DOC = ROOT / "docs" / "benchmarks.md"
 PLOTS = ROOT / "docs" / "benchmarks"
 
-WORKLOADS = ["mcs", "flat", "deep", "wide"]
+# The last five are the peers' own workloads, ported (hand-written and bsc only).
+WORKLOADS = ["mcs", "flat", "deep", "wide", "sml_simple", "sml_composite", "sml_complex", "fsmb_large", "fsmb_deep"]
 ALL_WORKLOADS = WORKLOADS + ["cell"]
 IMPLS = ["hand_written", "hand_minimal", "bsc_compiled", "bsc_table", "boost_msm", "boost_statechart"]
 IMPL_LABEL = {
@@ -500,6 +501,11 @@ def write_report(times, insns, compile_times, conditions, timings_at, compile_at
         "| deep | 8 levels of nesting, one event per level whose transitions are declared at that level, entry actions | `bench/deep/` |",
         "| wide | 8 parallel regions of 3 states, 3 events broadcast to every region, 48 transitions | `bench/wide/` |",
         "| cell | one execution cycle (`step`) of the manufacturing cell controller vs a hand-written scan loop | `bench/manufacturing_cell_bench.cpp` |",
+        "| sml_simple | Boost.SML's benchmark simple CD player, ported: 5 states, 6 events, 12 transitions with empty actions; its 11-event loop, every event handled | `bench/sml_simple/` |",
+        "| sml_composite | Boost.SML's benchmark composite CD player, ported: Playing a composite of 3 songs; its loop of 4,011 events, twice | `bench/sml_composite/` |",
+        "| sml_complex | Boost.SML's benchmark complex chart, ported: a ring of 50 states and 50 events, guards that hold, empty actions; each event sent with probability 1/2, most ignored | `bench/sml_complex/` |",
+        "| fsmb_large | fsm-benchmark's Large, ported: 25 states, each exit action raising an event the next state takes with an internal transition | `bench/fsmb_large/` |",
+        "| fsmb_deep | fsm-benchmark's Deep, ported: 3 levels of 3 composites, final states and completion transitions (`bsc::done`), exit actions on the 27 basic states | `bench/fsmb_deep/` |",
         "",
         "`hand_minimal` (flat, deep) is the shortest code for that particular chart, exploiting its",
         "regularity so that no switch on the event is needed; it is shown for context and is not the",
