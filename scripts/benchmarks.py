@@ -426,8 +426,12 @@ def plots(times, compile_times):
     except ImportError:
         return None
     PLOTS.mkdir(parents=True, exist_ok=True)
-    fig, axes = plt.subplots(1, len(ALL_WORKLOADS), figsize=(4 * len(ALL_WORKLOADS), 4))
-    for ax, w in zip(axes, ALL_WORKLOADS):
+    columns = 5  # two rows of five: ten workloads in one row would be too small to read
+    rows = (len(ALL_WORKLOADS) + columns - 1) // columns
+    fig, axes = plt.subplots(rows, columns, figsize=(4 * columns, 4 * rows), squeeze=False)
+    for ax in axes.flat[len(ALL_WORKLOADS):]:
+        ax.set_visible(False)
+    for ax, w in zip(axes.flat, ALL_WORKLOADS):
         t = times.get(w, {})
         names = [i for i in IMPLS if i in t]
         ax.bar(range(len(names)), [t[i]["ns"] for i in names])
