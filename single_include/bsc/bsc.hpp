@@ -4068,16 +4068,29 @@ constexpr auto make_chart(Root root, Rows... rows) {
 // compiler generates for `bsc::machine<decltype(chart)>` carries that spelling in its symbol
 // name, and for large charts building those names dominates compile time (it grows faster
 // than the chart). `bsc::machine<bsc::chart_ref<chart>>` is the same machine, with the same
-// behaviour and size, whose symbols name the variable instead:
+// behaviour, whose symbols name the variable instead:
 //
 //   inline constexpr auto chart = bsc::make_chart<io>(...);
 //   using controller = bsc::machine<bsc::chart_ref<chart>>;
 //   controller m{chart};
 //
+// Since the type names the variable, a machine of it stores no copy of the chart: every such
+// machine reads `chart` itself (a constant), so what the rows hold, delays, captured values,
+// raised events, is folded into the code, and the machine is smaller by the chart's size.
+//
 // Requirements: `Chart` is a chart (from bsc::make_chart) declared as a constexpr variable
-// with static storage duration (namespace scope, or a static data member).
+// with static storage duration (namespace scope, or a static data member). A chart_ref is made
+// from `Chart` itself, or default-constructed; made from any other chart, even an equal one,
+// it does not compile (bsc::detail::bsc_chart_ref_made_from_another_chart), since the machine
+// would silently run `Chart` instead.
 
 #include <type_traits>
+
+namespace bsc::detail {
+// Deliberately not constexpr: reaching it in the constant evaluation of chart_ref's constructor
+// is the compile error, and its name says what is wrong.
+inline void bsc_chart_ref_made_from_another_chart() {}
+}  // namespace bsc::detail
 
 namespace bsc {
 
@@ -4085,11 +4098,21 @@ template <auto const& Chart>
 struct chart_ref : std::remove_cvref_t<decltype(Chart)> {
     using chart_type = std::remove_cvref_t<decltype(Chart)>;
     constexpr chart_ref() : chart_type(Chart) {}
-    // Implicit, so that a machine of chart_ref<chart> is constructed from `chart` itself.
-    constexpr chart_ref(chart_type const& other) : chart_type(other) {}  // NOLINT(google-explicit-constructor)
+    // Implicit, so that a machine of chart_ref<chart> is constructed from `chart` itself; an
+    // immediate function, so that it can check that it is `chart` indeed.
+    consteval chart_ref(chart_type const& other) : chart_type(other) {  // NOLINT(google-explicit-constructor)
+        if (&other != &Chart) detail::bsc_chart_ref_made_from_another_chart();
+    }
 };
 
 }  // namespace bsc
+
+namespace bsc::detail {
+template <class T>
+inline constexpr bool is_chart_ref = false;
+template <auto const& Chart>
+inline constexpr bool is_chart_ref<chart_ref<Chart>> = true;
+}  // namespace bsc::detail
 // end include/bsc/chart_ref.hpp
 // begin include/bsc/compiled/machine.hpp
 // bsc::machine: the compiled back end. For an event type, dispatch is a nest of switches on
@@ -6126,16 +6149,20 @@ constexpr bool chart_may_throw() {
 #endif
 }
 
-// Whether a chart holds no data at all: each row is empty (its trigger, guard and action
-// carry no value: no delay, no captures) and can be made again from nothing. A machine of
-// such a chart stores no copy of it; it calls the rows of stateless_chart instead.
+// Whether every machine of a chart can share one constant instance of it instead of storing a
+// copy: a chart that holds no data at all (each row is empty: its trigger, guard and action
+// carry no value, no delay, no captures, and can be made again from nothing), or a
+// bsc::chart_ref, which names the constexpr variable that holds the chart. A machine of such a
+// chart calls the rows of shared_chart, whose values (delays, captures) are then constants the
+// compiler folds into the code.
 template <class Chart, class Rows = typename Chart::row_types>
-inline constexpr bool is_stateless_chart = false;
+inline constexpr bool is_shared_chart = false;
 template <class Chart, class... Rows>
-inline constexpr bool is_stateless_chart<Chart, type_list<Rows...>> =
-    ((std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>) && ...) && std::is_default_constructible_v<Chart>;
+inline constexpr bool is_shared_chart<Chart, type_list<Rows...>> =
+    is_chart_ref<Chart> ||
+    (((std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>) && ...) && std::is_default_constructible_v<Chart>);
 template <class Chart>
-inline constexpr Chart stateless_chart{};
+inline constexpr Chart shared_chart{};
 
 // The entry times of a chart without timeouts: none, and unlike std::array<duration, 0>, no
 // byte. (No index is ever valid; operator[] exists for code that loops over zero slots.)
@@ -6385,10 +6412,10 @@ protected:
     constexpr driver(Chart const& chart, context_type context, Observer observer)
         : chart_(stored_chart(chart)), observer_{std::move(observer)}, context_{std::move(context)} {}
 
-    // The chart: the machine's copy, or, for a stateless chart, the one every machine shares.
+    // The chart: the machine's copy, or, for a shared chart (is_shared_chart), the one every machine shares.
     constexpr chart_type const& chart() const {
-        if constexpr (is_stateless_chart<chart_type>)
-            return stateless_chart<chart_type>;
+        if constexpr (is_shared_chart<chart_type>)
+            return shared_chart<chart_type>;
         else
             return chart_;
     }
@@ -6882,9 +6909,9 @@ private:
 
 protected:
     struct no_chart {};
-    using stored_chart_type = std::conditional_t<is_stateless_chart<chart_type>, no_chart, chart_type>;
+    using stored_chart_type = std::conditional_t<is_shared_chart<chart_type>, no_chart, chart_type>;
     static constexpr stored_chart_type stored_chart(chart_type const& chart) {
-        if constexpr (is_stateless_chart<chart_type>)
+        if constexpr (is_shared_chart<chart_type>)
             return (void)chart, no_chart{};
         else
             return chart;

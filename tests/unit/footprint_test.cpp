@@ -278,3 +278,31 @@ TEST_CASE_TEMPLATE("the queue of a chart that raises with bsc::raise holds only 
     CHECK(n.context().n == 5);
     CHECK(w.context().n == 5);
 }
+
+TEST_CASE_TEMPLATE("a machine of bsc::chart_ref stores no copy of its chart, and reads the chart's values", Backend,
+                   bsc_test::compiled, bsc_test::table) {
+    using scan_timed = bsc_test::machine_t<Backend, decltype(fp::timed), bsc::scan_policy>;
+    using scan_timed_ref = bsc_test::machine_t<Backend, bsc::chart_ref<fp::timed>, bsc::scan_policy>;
+    using capturing = bsc_test::machine_t<Backend, decltype(fp::capturing)>;
+    using capturing_ref = bsc_test::machine_t<Backend, bsc::chart_ref<fp::capturing>>;
+    // The delay and the captured value are the chart's: the machines of chart_ref do without.
+    CHECK(sizeof(scan_timed_ref) + sizeof(decltype(fp::timed)) <= sizeof(scan_timed));
+    CHECK(sizeof(capturing_ref) + sizeof(decltype(fp::capturing)) <= sizeof(capturing));
+    // And they run the chart's values: A leaves after 5 ms, go adds the captured 7.
+    scan_timed t{fp::timed};
+    scan_timed_ref r{fp::timed};
+    t.step(0ms);
+    r.step(0ms);
+    t.step(4ms);
+    r.step(4ms);
+    CHECK((t.template is<fp::A>() && r.template is<fp::A>()));
+    t.step(5ms);
+    r.step(5ms);
+    CHECK((t.template is<fp::B>() && r.template is<fp::B>()));
+    capturing c{fp::capturing};
+    capturing_ref cr{fp::capturing};
+    CHECK(c.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(cr.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(c.context().n == fp::step_size);
+    CHECK(cr.context().n == fp::step_size);
+}

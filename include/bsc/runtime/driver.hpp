@@ -21,6 +21,7 @@
 #include <utility>
 
 #include <bsc/action_failed.hpp>
+#include <bsc/chart_ref.hpp>
 #include <bsc/configuration.hpp>
 #include <bsc/detail/access.hpp>
 #include <bsc/detail/row_storage.hpp>
@@ -88,16 +89,20 @@ constexpr bool chart_may_throw() {
 #endif
 }
 
-// Whether a chart holds no data at all: each row is empty (its trigger, guard and action
-// carry no value: no delay, no captures) and can be made again from nothing. A machine of
-// such a chart stores no copy of it; it calls the rows of stateless_chart instead.
+// Whether every machine of a chart can share one constant instance of it instead of storing a
+// copy: a chart that holds no data at all (each row is empty: its trigger, guard and action
+// carry no value, no delay, no captures, and can be made again from nothing), or a
+// bsc::chart_ref, which names the constexpr variable that holds the chart. A machine of such a
+// chart calls the rows of shared_chart, whose values (delays, captures) are then constants the
+// compiler folds into the code.
 template <class Chart, class Rows = typename Chart::row_types>
-inline constexpr bool is_stateless_chart = false;
+inline constexpr bool is_shared_chart = false;
 template <class Chart, class... Rows>
-inline constexpr bool is_stateless_chart<Chart, type_list<Rows...>> =
-    ((std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>) && ...) && std::is_default_constructible_v<Chart>;
+inline constexpr bool is_shared_chart<Chart, type_list<Rows...>> =
+    is_chart_ref<Chart> ||
+    (((std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>) && ...) && std::is_default_constructible_v<Chart>);
 template <class Chart>
-inline constexpr Chart stateless_chart{};
+inline constexpr Chart shared_chart{};
 
 // The entry times of a chart without timeouts: none, and unlike std::array<duration, 0>, no
 // byte. (No index is ever valid; operator[] exists for code that loops over zero slots.)
@@ -347,10 +352,10 @@ protected:
     constexpr driver(Chart const& chart, context_type context, Observer observer)
         : chart_(stored_chart(chart)), observer_{std::move(observer)}, context_{std::move(context)} {}
 
-    // The chart: the machine's copy, or, for a stateless chart, the one every machine shares.
+    // The chart: the machine's copy, or, for a shared chart (is_shared_chart), the one every machine shares.
     constexpr chart_type const& chart() const {
-        if constexpr (is_stateless_chart<chart_type>)
-            return stateless_chart<chart_type>;
+        if constexpr (is_shared_chart<chart_type>)
+            return shared_chart<chart_type>;
         else
             return chart_;
     }
@@ -844,9 +849,9 @@ private:
 
 protected:
     struct no_chart {};
-    using stored_chart_type = std::conditional_t<is_stateless_chart<chart_type>, no_chart, chart_type>;
+    using stored_chart_type = std::conditional_t<is_shared_chart<chart_type>, no_chart, chart_type>;
     static constexpr stored_chart_type stored_chart(chart_type const& chart) {
-        if constexpr (is_stateless_chart<chart_type>)
+        if constexpr (is_shared_chart<chart_type>)
             return (void)chart, no_chart{};
         else
             return chart;
