@@ -12,7 +12,7 @@
 
 The SVGs are not compared: they depend on the version of Graphviz.
 --exporter PATH uses an export_diagrams already built instead of compiling one with $CXX
-(default c++), which needs the Boost headers where the compiler finds them.
+(default c++).
 """
 
 import argparse

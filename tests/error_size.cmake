@@ -14,7 +14,7 @@ foreach(defect IN ITEMS
     multiple_initial_states initial_not_a_child eventless_livelock not_a_row guard_signature_not_supported
     action_signature_not_supported dead_transition empty_parallel_state dead_timeout
     local_target_outside_source event_in_two_families initial_action_without_initial_transition
-    invalid_history_state targets_not_orthogonal invalid_deferral)
+    invalid_history_state targets_not_orthogonal initial_states_not_orthogonal invalid_deferral)
   bsc_add_error_size_test(${defect} ${defect})
 endforeach()
 bsc_add_error_size_test(several "dead_end_state+conflicting_transitions+eventless_livelock")

@@ -2,6 +2,7 @@
 // compiled back end; the completions are bsc::done events of the composites.
 
 #include <bsc/bsc.hpp>
+#include <type_traits>
 
 #include "../bsc_variant.hpp"
 #include "fsmb_deep_workload.hpp"
@@ -41,26 +42,20 @@ constexpr auto level0() {
                                    bsc::final_state<done0<X>>);
 }
 
-// The rows of basic state xyz: its event, and its exit action.
+// The rows of basic state xyz: its event (to the next basic state, or the final state after the
+// last), and its exit action.
 template <int X, int Y, int Z>
 constexpr auto leaf_rows() {
-    constexpr int k = 9 * X + 3 * Y + Z;
-    if constexpr (Z < 2)
-        return bsc::rows(bsc::state<lvl2<X, Y, Z>> + bsc::event<event<k>> = bsc::state<lvl2<X, Y, Z + 1>>,
-                         bsc::state<lvl2<X, Y, Z>> + bsc::on_exit / leave<X, Y, Z>);
-    else
-        return bsc::rows(bsc::state<lvl2<X, Y, Z>> + bsc::event<event<k>> = bsc::state<done1<X, Y>>,
-                         bsc::state<lvl2<X, Y, Z>> + bsc::on_exit / leave<X, Y, Z>);
+    using next = std::conditional_t<(Z < 2), lvl2<X, Y, Z + 1>, done1<X, Y>>;
+    return bsc::rows(bsc::state<lvl2<X, Y, Z>> + bsc::event<event<9 * X + 3 * Y + Z>> = bsc::state<next>,
+                     bsc::state<lvl2<X, Y, Z>> + bsc::on_exit / leave<X, Y, Z>);
 }
-// The completion of lvl1_xy.
+// The completion of lvl1_xy (to the next, or the final state after the last), and its children's rows.
 template <int X, int Y>
 constexpr auto level1_rows() {
-    if constexpr (Y < 2)
-        return bsc::rows(bsc::state<lvl1<X, Y>> + bsc::event<bsc::done<lvl1<X, Y>>> = bsc::state<lvl1<X, Y + 1>>,
-                         leaf_rows<X, Y, 0>(), leaf_rows<X, Y, 1>(), leaf_rows<X, Y, 2>());
-    else
-        return bsc::rows(bsc::state<lvl1<X, Y>> + bsc::event<bsc::done<lvl1<X, Y>>> = bsc::state<done0<X>>,
-                         leaf_rows<X, Y, 0>(), leaf_rows<X, Y, 1>(), leaf_rows<X, Y, 2>());
+    using next = std::conditional_t<(Y < 2), lvl1<X, Y + 1>, done0<X>>;
+    return bsc::rows(bsc::state<lvl1<X, Y>> + bsc::event<bsc::done<lvl1<X, Y>>> = bsc::state<next>,
+                     leaf_rows<X, Y, 0>(), leaf_rows<X, Y, 1>(), leaf_rows<X, Y, 2>());
 }
 template <int X>
 constexpr auto level0_rows() {
@@ -83,7 +78,7 @@ public:
         std::size_t leaf = 0;
         [&]<int... K>(std::integer_sequence<int, K...>) {
             ((m_.is<deep::lvl2<K / 9, K / 3 % 3, K % 3>>() ? (void)(leaf = K) : (void)0), ...);
-        }(std::make_integer_sequence<int, 27>{});
+        }(std::make_integer_sequence<int, static_cast<int>(fsmb_deep_bench::workload::leaves)>{});
         return {leaf, m_.context().counter};
     }
 

@@ -33,17 +33,15 @@ inline constexpr auto grow = [](context& c, auto const& e) noexcept(BENCH_NOEXCE
 };
 inline constexpr auto halve = [](context& c, ievent const& e) noexcept(BENCH_NOEXCEPT_ACTIONS) { c.counter /= e.two; };
 
-template <std::size_t... K>
-constexpr auto make_chart(std::index_sequence<K...>) {
+template <std::size_t... Others, std::size_t... K>
+constexpr auto make_chart(std::index_sequence<Others...>, std::index_sequence<K...>) {
     return bsc::make_chart<context>(
-        bsc::composite<Large>(bsc::initial<state<0>>, bsc::state<state<K + 1>>...),
+        bsc::composite<Large>(bsc::initial<state<0>>, bsc::state<state<Others + 1>>...),
         (bsc::state<state<K>> + bsc::event<sevent<K>>[two_positive] / grow = bsc::state<state<(K + 1) % N>>)...,
-        bsc::state<state<N - 1>> + bsc::event<sevent<N - 1>>[two_positive] / grow = bsc::state<state<0>>,
-        (bsc::state<state<K>> + bsc::event<ievent> / halve)..., bsc::state<state<N - 1>> + bsc::event<ievent> / halve,
-        (bsc::state<state<K>> + bsc::on_exit / bsc::raise(ievent{}))...,
-        bsc::state<state<N - 1>> + bsc::on_exit / bsc::raise(ievent{}));
+        (bsc::state<state<K>> + bsc::event<ievent> / halve)...,
+        (bsc::state<state<K>> + bsc::on_exit / bsc::raise(ievent{}))...);
 }
-inline constexpr auto chart = make_chart(std::make_index_sequence<N - 1>{});
+inline constexpr auto chart = make_chart(std::make_index_sequence<N - 1>{}, std::make_index_sequence<N>{});
 }  // namespace large
 
 class large_machine {

@@ -21,13 +21,12 @@ struct none {};
 inline constexpr auto holds = []() noexcept(BENCH_NOEXCEPT_ACTIONS) { return true; };
 inline constexpr auto nothing = []() noexcept(BENCH_NOEXCEPT_ACTIONS) {};
 
-template <std::size_t... K>
-constexpr auto make_chart(std::index_sequence<K...>) {
-    return bsc::make_chart<none>(bsc::composite<Ring>(bsc::initial<S<0>>, bsc::state<S<K + 1>>...),
-                                 (bsc::state<S<K>> + bsc::event<E<K>>[holds] / nothing = bsc::state<S<(K + 1) % N>>)...,
-                                 bsc::state<S<N - 1>> + bsc::event<E<N - 1>>[holds] / nothing = bsc::state<S<0>>);
+template <std::size_t... Others, std::size_t... K>
+constexpr auto make_chart(std::index_sequence<Others...>, std::index_sequence<K...>) {
+    return bsc::make_chart<none>(bsc::composite<Ring>(bsc::initial<S<0>>, bsc::state<S<Others + 1>>...),
+                                 (bsc::state<S<K>> + bsc::event<E<K>>[holds] / nothing = bsc::state<S<(K + 1) % N>>)...);
 }
-inline constexpr auto chart = make_chart(std::make_index_sequence<N - 1>{});
+inline constexpr auto chart = make_chart(std::make_index_sequence<N - 1>{}, std::make_index_sequence<N>{});
 }  // namespace ring
 
 class ring_machine {

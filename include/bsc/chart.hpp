@@ -3,9 +3,6 @@
 
 #include <array>
 #include <cstddef>
-#include <cstdlib>
-#include <stdexcept>
-#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -61,9 +58,8 @@ namespace detail {
 // The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
 // a timeout row of S behind an unguarded timeout row of S with a target and a shorter delay, or
 // an equal one declared earlier, which always fires first and leaves S, so the clock of the
-// other starts again before it is due. The delays are copied out of the rows first, so that the
-// frames of a failure carry an array of numbers and not the chart's type.
-// Returns the positions (from 1) of the first dead row found and of the row that fires before
+// other starts again before it is due. (make_chart reports it through the dead row's copy:
+// dsl/row.hpp, timeout_trigger.) Returns the positions (from 1) of the first dead row found and of the row that fires before
 // it; {0, 0} if there is none.
 struct dead_timeout {
     std::size_t row = 0;

@@ -12,8 +12,9 @@
 //   controller m{chart};
 //
 // Since the type names the variable, a machine of it stores no copy of the chart: every such
-// machine reads `chart` itself (a constant), so what the rows hold, delays, captured values,
-// raised events, is folded into the code, and the machine is smaller by the chart's size.
+// machine reads one constant copy of `chart` (detail::shared_chart), so what the rows hold,
+// delays, captured values, raised events, is folded into the code, and the machine is smaller
+// by the chart's size.
 //
 // Requirements: `Chart` is a chart (from bsc::make_chart) declared as a constexpr variable
 // with static storage duration (namespace scope, or a static data member). A chart_ref is made

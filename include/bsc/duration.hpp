@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <limits>
 
 namespace bsc {
 
@@ -22,6 +23,16 @@ constexpr bool has_elapsed(duration since, duration now, duration delay) {
     if (now < since) return false;
     auto const passed = static_cast<std::uint64_t>(now.count()) - static_cast<std::uint64_t>(since.count());
     return passed >= static_cast<std::uint64_t>(delay.count());
+}
+
+// t + shift, saturated at duration::min() and duration::max(): a far-off time must not overflow.
+constexpr duration shifted(duration t, duration shift) {
+    auto const a = t.count();
+    auto const b = shift.count();
+    using limits = std::numeric_limits<duration::rep>;
+    if (b > 0 && a > limits::max() - b) return duration::max();
+    if (b < 0 && a < limits::min() - b) return duration::min();
+    return duration{a + b};
 }
 
 // `now - since` (since <= now), saturated at duration::max().

@@ -241,8 +241,7 @@ constexpr std::size_t size_of() {
     if constexpr (not_retained<T>) {
         return 0;
     } else if constexpr (is_machine<T>) {
-        if constexpr (chart_model<typename T::chart_type>::has_deferral ||
-                      chart_sends_delayed<chart_model<typename T::chart_type>>())
+        if constexpr (keeps_pending_events<chart_model<typename T::chart_type>>())
             detail::report<error::pending_events_not_encoded<typename T::chart_type>>();
         return machine_size<T>();
     } else if constexpr (is_channel<T>) {
@@ -392,16 +391,6 @@ struct pass {
     std::optional<duration> resume{};
     duration shift{};  // added to every time the enclosing machine keeps
 };
-
-// t + shift, saturated: a far-off saved time must not overflow.
-constexpr duration shifted(duration t, duration shift) {
-    auto const a = t.count();
-    auto const b = shift.count();
-    using limits = std::numeric_limits<duration::rep>;
-    if (b > 0 && a > limits::max() - b) return duration::max();
-    if (b < 0 && a < limits::min() - b) return duration::min();
-    return duration{a + b};
-}
 
 // to - from, saturated.
 constexpr duration difference(duration to, duration from) {

@@ -10,9 +10,6 @@
 
 #include <array>
 #include <cstddef>
-#include <cstdlib>
-#include <stdexcept>
-#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -753,6 +750,7 @@ inline constexpr std::string_view name_of = detail::unqualified(qualified_name<T
 
 #include <chrono>
 #include <cstdint>
+#include <limits>
 
 namespace bsc {
 
@@ -770,6 +768,16 @@ constexpr bool has_elapsed(duration since, duration now, duration delay) {
     if (now < since) return false;
     auto const passed = static_cast<std::uint64_t>(now.count()) - static_cast<std::uint64_t>(since.count());
     return passed >= static_cast<std::uint64_t>(delay.count());
+}
+
+// t + shift, saturated at duration::min() and duration::max(): a far-off time must not overflow.
+constexpr duration shifted(duration t, duration shift) {
+    auto const a = t.count();
+    auto const b = shift.count();
+    using limits = std::numeric_limits<duration::rep>;
+    if (b > 0 && a > limits::max() - b) return duration::max();
+    if (b < 0 && a < limits::min() - b) return duration::min();
+    return duration{a + b};
 }
 
 // `now - since` (since <= now), saturated at duration::max().
@@ -1023,29 +1031,22 @@ struct raise_fn {
 };
 
 // What an action can raise: a type_list of the event types, or raises_anything for an action
-// that is handed the raise argument and may raise whatever it likes.
+// that is handed the raise argument and may raise whatever it likes. Joined with type_list's
+// operator+ (detail/meta.hpp) as a flat fold, raises_anything absorbing the rest.
 struct raises_anything {};
+template <class... Es>
+constexpr raises_anything operator+(type_list<Es...>, raises_anything) {
+    return {};
+}
+template <class... Es>
+constexpr raises_anything operator+(raises_anything, type_list<Es...>) {
+    return {};
+}
+constexpr raises_anything operator+(raises_anything, raises_anything) {
+    return {};
+}
 template <class... Lists>
-struct join_raised {
-    using type = type_list<>;
-};
-template <class... Es, class... Lists>
-struct join_raised<type_list<Es...>, Lists...> {
-    using rest = typename join_raised<Lists...>::type;
-    template <class Rest>
-    struct with {
-        using type = raises_anything;
-    };
-    template <class... Rs>
-    struct with<type_list<Rs...>> {
-        using type = type_list<Es..., Rs...>;
-    };
-    using type = typename with<rest>::type;
-};
-template <class... Lists>
-struct join_raised<raises_anything, Lists...> {
-    using type = raises_anything;
-};
+using join_raised = decltype((type_list<>{} + ... + Lists{}));
 
 template <class Ctx, class E, class Raise, class A>
 auto raised_by(A const*) -> std::conditional_t<may_raise<Ctx, E, Raise>(static_cast<A const*>(nullptr)), raises_anything,
@@ -1053,8 +1054,7 @@ auto raised_by(A const*) -> std::conditional_t<may_raise<Ctx, E, Raise>(static_c
 template <class Ctx, class E, class Raise, class Ev>
 auto raised_by(action_fn<raise_fn<Ev>> const*) -> type_list<Ev>;
 template <class Ctx, class E, class Raise, class... As>
-auto raised_by(action_seq<As...> const*) ->
-    typename join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>::type;
+auto raised_by(action_seq<As...> const*) -> join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>;
 template <class Ctx, class E, class Raise, class A>
 auto raised_by(state_action<A> const*) {
     if constexpr (bsc_action<A>)
@@ -1870,8 +1870,8 @@ namespace bsc {
 ///
 /// `initial<A, B, ...>` names several, one in each of orthogonal regions below the composite
 /// (SCXML's `initial="a b"`): entering the composite by default enters each, and the regions
-/// that hold none by default. At most 4 (bsc::error::targets_not_orthogonal if two are not in
-/// different regions of a parallel state).
+/// that hold none by default. At most 4 (bsc::error::initial_states_not_orthogonal if two are not
+/// in different regions of a parallel state).
 template <class S, class... More>
 inline constexpr detail::initial_marker<S, More...> initial{};
 
@@ -1992,11 +1992,10 @@ struct event_families<type_list<Us...>> {
     // base). One built-in per pair and nothing else: a chart of K events asks K * K times.
     template <class E>
     static constexpr int chart_bases = (0 + ... + static_cast<int>(__is_base_of(Us, E)));
-    // Whether event E has a family among the chart's events; any: whether a chart event has.
+    // Whether event E, which the chart does not name (trigger_of asks only then), has a family
+    // among the chart's events; any: whether a chart event has.
     template <class E>
-    static constexpr bool has_family =
-        (names_any_event && !__is_same(E, any_event)) ||
-        chart_bases<E> > static_cast<int>(__is_class(E) && index_in<E, Us...>() >= 0);
+    static constexpr bool has_family = (names_any_event && !__is_same(E, any_event)) || chart_bases<E> > 0;
     static constexpr bool any = (names_any_event && K > 1) || (false || ... || (chart_bases<Us> > static_cast<int>(__is_class(Us))));
     // family[t][u]: chart event u is a family of chart event t. (Built only where some event
     // has a family: a chart of K events would otherwise hold K * K flags for nothing.)
@@ -2210,7 +2209,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     t.child_count[i] = count;
     t.end[i] = next;
     // Its initial states after the first, below it (unknown_state if not declared there).
-    if constexpr (requires { typename Node::more_initials; })
+    if constexpr (requires { requires Node::more_initials::size > 0; })
         [&]<class... More>(type_list<More...>) {
             using tags = typename tags_of<decltype(flatten<Node>())>::type;
             std::size_t k = 0;
@@ -3350,7 +3349,7 @@ private:
     bool overflowed_ = false;
 };
 
-// The queue of a chart none of whose actions can raise (detail::may_raise): it is always
+// The queue of a chart none of whose actions can raise (detail::raised_by_chart): it is always
 // empty, and saying so at compile time spares every dispatch the checks for raised events.
 // (Not a template: its name is part of the symbols of every action the machine calls.)
 class no_event_queue {
@@ -3958,9 +3957,8 @@ namespace detail {
 // The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
 // a timeout row of S behind an unguarded timeout row of S with a target and a shorter delay, or
 // an equal one declared earlier, which always fires first and leaves S, so the clock of the
-// other starts again before it is due. The delays are copied out of the rows first, so that the
-// frames of a failure carry an array of numbers and not the chart's type.
-// Returns the positions (from 1) of the first dead row found and of the row that fires before
+// other starts again before it is due. (make_chart reports it through the dead row's copy:
+// dsl/row.hpp, timeout_trigger.) Returns the positions (from 1) of the first dead row found and of the row that fires before
 // it; {0, 0} if there is none.
 struct dead_timeout {
     std::size_t row = 0;
@@ -4075,8 +4073,9 @@ constexpr auto make_chart(Root root, Rows... rows) {
 //   controller m{chart};
 //
 // Since the type names the variable, a machine of it stores no copy of the chart: every such
-// machine reads `chart` itself (a constant), so what the rows hold, delays, captured values,
-// raised events, is folded into the code, and the machine is smaller by the chart's size.
+// machine reads one constant copy of `chart` (detail::shared_chart), so what the rows hold,
+// delays, captured values, raised events, is folded into the code, and the machine is smaller
+// by the chart's size.
 //
 // Requirements: `Chart` is a chart (from bsc::make_chart) declared as a constexpr variable
 // with static storage duration (namespace scope, or a static data member). A chart_ref is made
@@ -6950,7 +6949,8 @@ protected:
 // end include/bsc/runtime/driver.hpp
 // begin include/bsc/runtime/queue_for.hpp
 // The internal event queue a machine of a chart needs: none if no action of the chart can raise
-// an event (detail::may_raise) and the chart takes neither bsc::action_failed nor a done event.
+// an event (detail::raised_by_chart) and the chart takes neither bsc::action_failed nor a done
+// event; otherwise one that holds only the events that can be raised (detail::queued_events).
 
 #include <type_traits>
 
@@ -7064,7 +7064,7 @@ public:
             for (auto& s : slots_)
                 if (!s.pending) {
                     s.pending = true;
-                    s.due = delay > duration::max() - clock_ ? duration::max() : clock_ + delay;
+                    s.due = shifted(clock_, delay);
                     s.order = sent_++;
                     s.id = id;
                     s.event = value_type{std::in_place_type<F>, event_as<F>(e)};
@@ -7082,20 +7082,13 @@ public:
             if (s.pending && s.id == id) s.pending = false;
     }
 
-    /// The number of events pending.
-    constexpr std::size_t pending() const {
-        std::size_t n = 0;
-        for (auto const& s : slots_) n += s.pending ? 1 : 0;
-        return n;
-    }
-
     // ---- for the machine -----------------------------------------------------------------------
     constexpr void set_clock(duration now) { clock_ = now; }
     // The machine's clock started at `now` (its first cycle): what was scheduled before counts
     // from there, as the timeouts armed before it do.
     constexpr void start_clock(duration now) {
         for (auto& s : slots_)
-            if (s.pending) s.due = s.due > duration::max() - now ? duration::max() : s.due + now;
+            if (s.pending) s.due = shifted(s.due, now);
         clock_ = now;
     }
     // Moves the events due at `now` into the queue of raised events, earliest first, and among
@@ -7135,16 +7128,20 @@ private:
 // end include/bsc/runtime/delayed_events.hpp
 
 namespace bsc::detail {
-// Whether any action of the chart can raise an event; if none can, the machine has no queue.
+// What the actions of the chart raise (detail::raised_by, one pass over the rows): type_list<>
+// if none can raise (the machine then has no queue for them), raises_anything if one may raise
+// whatever it likes, else the events the bsc::raise actions name.
+// (A class, not an alias template: GCC 12 rejects the lambda in an alias template.)
 template <class Model, class Policy>
-constexpr bool chart_may_raise() {
-    using context = typename Model::chart_context;
-    using raise = event_queue<Policy::queue_capacity, typename Model::events>;
-    return []<class... Rows>(type_list<Rows...>) {
-        // (Entry and exit rows see no event; may_raise ignores it for them.)
-        return (may_raise<context, row_event_t<Rows>, raise>(static_cast<decltype(Rows::action) const*>(nullptr)) || ...);
-    }(typename Model::row_types{});
-}
+struct raised_by_chart {
+    using type = typename decltype([]<class... Rows>(type_list<Rows...>) {
+        using context = typename Model::chart_context;
+        using raise = event_queue<Policy::queue_capacity, typename Model::events>;
+        // (Entry and exit rows see no event; raised_by ignores it for them.)
+        return std::type_identity<join_raised<decltype(raised_by<context, row_event_t<Rows>, raise>(
+            static_cast<decltype(Rows::action) const*>(nullptr)))...>>{};
+    }(typename Model::row_types{}))::type;
+};
 
 // Whether an action of the chart sends or cancels delayed events (bsc::raise_after): then its
 // queue keeps slots for them.
@@ -7154,39 +7151,44 @@ constexpr bool chart_sends_delayed() {
         return (sends_delayed<std::remove_cv_t<decltype(Rows::action)>> || ...);
     }(typename Model::row_types{});
 }
-// The events the queue of a machine of the chart holds: those its actions raise, where each
-// action says which (bsc::raise), the done events and bsc::action_failed the chart takes (the
-// machine raises those), in the chart's order; all the chart's events if an action may raise
-// anything or raises an event the chart does not name (the queue then stores it as its family).
-// Fewer events, fewer alternatives for the code that runs queued events to instantiate.
-template <class Model, class Policy>
-struct queued_events {
-    using context = typename Model::chart_context;
-    using full_queue = event_queue<Policy::queue_capacity, typename Model::events>;
-    using raised = typename decltype([]<class... Rows>(type_list<Rows...>) {
-        return std::type_identity<typename join_raised<decltype(raised_by<context, row_event_t<Rows>, full_queue>(
-            static_cast<decltype(Rows::action) const*>(nullptr)))...>::type>{};
-    }(typename Model::row_types{}))::type;
 
-    template <class E>
-    static constexpr bool machine_raises = is_done_event<E> || __is_same(E, action_failed);
-    template <class List>
-    struct chosen {
-        using type = typename Model::events;
-    };
-    template <class... Raised>
-    struct chosen<type_list<Raised...>> {
-        template <class E>
-        static constexpr bool kept = machine_raises<E> || index_in<E, Raised...>() >= 0;
-        using type = std::conditional_t<
-            (... && (index_of<Raised, typename Model::events> >= 0)),
-            decltype([]<class... Es>(type_list<Es...>) {
-                return (type_list<>{} + ... + std::conditional_t<kept<Es>, type_list<Es>, type_list<>>{});
-            }(typename Model::events{})),
-            typename Model::events>;
-    };
-    using type = typename chosen<raised>::type;
+// The events the queue holds: those the actions raise, where each action says which
+// (bsc::raise), and the done events and bsc::action_failed the chart takes (the machine raises
+// those), in the chart's order; all the chart's events if an action may raise anything or
+// raises an event the chart does not name (the queue then stores it as its family). Fewer
+// events, fewer alternatives for the code that runs queued events to instantiate.
+template <class Model, class Raised>
+struct queued_events {
+    using type = typename Model::events;
 };
+template <class Model, class... Raised>
+struct queued_events<Model, type_list<Raised...>> {
+    template <class E>
+    static constexpr bool kept = is_done_event<E> || __is_same(E, action_failed) || index_in<E, Raised...>() >= 0;
+    using type = std::conditional_t<(... && (index_of<Raised, typename Model::events> >= 0)),
+                                    decltype([]<class... Es>(type_list<Es...>) {
+                                        return (type_list<>{} + ... +
+                                                std::conditional_t<kept<Es>, type_list<Es>, type_list<>>{});
+                                    }(typename Model::events{})),
+                                    typename Model::events>;
+};
+
+// The queue of raised events, worked out only for a chart that has one.
+template <bool Needed, class Model, class Policy, class Raised>
+struct raise_queue {
+    using type = no_event_queue;
+};
+template <class Model, class Policy, class Raised>
+struct raise_queue<true, Model, Policy, Raised> {
+    using type = event_queue<Policy::queue_capacity, typename queued_events<Model, Raised>::type>;
+};
+
+// Whether a machine of the chart can keep events from one dispatch to a later one (deferred or
+// delayed events), which neither the explorer's codec nor bsc::save encode.
+template <class Model>
+constexpr bool keeps_pending_events() {
+    return Model::has_deferral || chart_sends_delayed<Model>();
+}
 
 template <class Policy, bool Sends>
 inline constexpr std::size_t delayed_capacity_of = 0;
@@ -7194,18 +7196,16 @@ template <class Policy>
 inline constexpr std::size_t delayed_capacity_of<Policy, true> = Policy::delayed_capacity;
 
 // The queue of a machine of the chart (either back end): with slots for delayed events if an
-// action sends them; a bounded queue of the chart's events if an action can raise, or the chart
-// takes bsc::action_failed or a bsc::done event (which the machine raises); otherwise none, and
-// no test for raised events after a microstep.
+// action sends them; a bounded queue of the events the chart raises if an action can raise, or
+// the chart takes bsc::action_failed or a bsc::done event (which the machine raises); otherwise
+// none, and no test for raised events after a microstep.
 template <class Chart, class Policy, class Model = chart_model<std::remove_cv_t<Chart>>,
-          bool Delays = chart_sends_delayed<Model>()>
+          bool Delays = chart_sends_delayed<Model>(), class Raised = typename raised_by_chart<Model, Policy>::type>
 using queue_for = std::conditional_t<
     Delays, delaying_queue<Policy::queue_capacity, delayed_capacity_of<Policy, Delays>, typename Model::events>,
-    std::conditional_t<chart_may_raise<chart_model<std::remove_cv_t<Chart>>, Policy>() ||
-                           chart_model<std::remove_cv_t<Chart>>::template trigger_of<action_failed> >= 0 ||
-                           completion<chart_model<std::remove_cv_t<Chart>>>::raises,
-                       event_queue<Policy::queue_capacity, typename queued_events<Model, Policy>::type>,
-                       no_event_queue>>;
+    typename raise_queue<!std::is_same_v<Raised, type_list<>> || Model::template trigger_of<action_failed> >= 0 ||
+                             completion<Model>::raises,
+                         Model, Policy, Raised>::type>;
 }  // namespace bsc::detail
 // end include/bsc/runtime/queue_for.hpp
 // begin include/bsc/runtime/rejected.hpp
@@ -8260,8 +8260,11 @@ private:
         row.to = id(rows.target[i]);
         if constexpr (rows.guarded[i])
             row.guard = &guard_thunk<r>;
+        // (A deferring row keeps its event and runs nothing: no action either.)
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(std::declval<R const&>().action)>,
-                                      bsc::detail::no_action>)
+                                      bsc::detail::no_action> &&
+                      !std::is_same_v<std::remove_cvref_t<decltype(std::declval<R const&>().action)>,
+                                      bsc::detail::defer_action>)
             row.action = &action_thunk<r>;
         row.domain = id(rows.domain[i]);
         if constexpr (bsc::detail::is_timeout_row<R>)
@@ -8269,7 +8272,6 @@ private:
         row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
         row.defers = rows.defers[i];
         for (std::size_t k = 0; k < row.more_to.size(); ++k) row.more_to[k] = id(rows.more_targets[i][k]);
-        if (row.defers) row.action = nullptr;
         return row;
     }
 

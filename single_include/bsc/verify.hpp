@@ -175,8 +175,7 @@ constexpr std::size_t encoded_bits() {
     if constexpr (verify::unexplored<T>) {
         return 0;
     } else if constexpr (is_machine<T>) {
-        if constexpr (chart_model<typename T::chart_type>::has_deferral ||
-                      chart_sends_delayed<chart_model<typename T::chart_type>>())
+        if constexpr (keeps_pending_events<chart_model<typename T::chart_type>>())
             detail::report<error::pending_events_not_encoded<typename T::chart_type>>();
         std::size_t config = 0;
         for (unsigned b : slot_bits<T>()) config += b;

@@ -7,6 +7,9 @@
 #                                 one for each of bsc.hpp, verify.hpp and export.hpp
 #   packaging.headers_self_contained
 #                                 every header under include/bsc compiles on its own
+#   packaging.standard_library_only
+#                                 the headers include the standard library and bsc only
+#                                 (and <mosquitto.h> for bsc::mqtt)
 # Each consumer is configured and built by a cmake subprocess with this build's compiler,
 # generator and build type (tests/packaging/run_consumer.cmake).
 foreach(method IN ITEMS find_package add_subdirectory fetch_content single_header)
@@ -47,3 +50,9 @@ bsc_set_warnings(bsc_headers_self_contained)
 add_test(NAME packaging.headers_self_contained
   COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --target bsc_headers_self_contained)
 set_tests_properties(packaging.headers_self_contained PROPERTIES LABELS packaging)
+
+# The library depends on the standard library alone (libmosquitto for bsc::mqtt).
+add_test(NAME packaging.standard_library_only
+  COMMAND ${CMAKE_COMMAND} -DBSC_SOURCE_DIR=${PROJECT_SOURCE_DIR}
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/packaging/standard_library_only.cmake)
+set_tests_properties(packaging.standard_library_only PROPERTIES LABELS packaging)

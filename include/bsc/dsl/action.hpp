@@ -144,29 +144,22 @@ struct raise_fn {
 };
 
 // What an action can raise: a type_list of the event types, or raises_anything for an action
-// that is handed the raise argument and may raise whatever it likes.
+// that is handed the raise argument and may raise whatever it likes. Joined with type_list's
+// operator+ (detail/meta.hpp) as a flat fold, raises_anything absorbing the rest.
 struct raises_anything {};
+template <class... Es>
+constexpr raises_anything operator+(type_list<Es...>, raises_anything) {
+    return {};
+}
+template <class... Es>
+constexpr raises_anything operator+(raises_anything, type_list<Es...>) {
+    return {};
+}
+constexpr raises_anything operator+(raises_anything, raises_anything) {
+    return {};
+}
 template <class... Lists>
-struct join_raised {
-    using type = type_list<>;
-};
-template <class... Es, class... Lists>
-struct join_raised<type_list<Es...>, Lists...> {
-    using rest = typename join_raised<Lists...>::type;
-    template <class Rest>
-    struct with {
-        using type = raises_anything;
-    };
-    template <class... Rs>
-    struct with<type_list<Rs...>> {
-        using type = type_list<Es..., Rs...>;
-    };
-    using type = typename with<rest>::type;
-};
-template <class... Lists>
-struct join_raised<raises_anything, Lists...> {
-    using type = raises_anything;
-};
+using join_raised = decltype((type_list<>{} + ... + Lists{}));
 
 template <class Ctx, class E, class Raise, class A>
 auto raised_by(A const*) -> std::conditional_t<may_raise<Ctx, E, Raise>(static_cast<A const*>(nullptr)), raises_anything,
@@ -174,8 +167,7 @@ auto raised_by(A const*) -> std::conditional_t<may_raise<Ctx, E, Raise>(static_c
 template <class Ctx, class E, class Raise, class Ev>
 auto raised_by(action_fn<raise_fn<Ev>> const*) -> type_list<Ev>;
 template <class Ctx, class E, class Raise, class... As>
-auto raised_by(action_seq<As...> const*) ->
-    typename join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>::type;
+auto raised_by(action_seq<As...> const*) -> join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>;
 template <class Ctx, class E, class Raise, class A>
 auto raised_by(state_action<A> const*) {
     if constexpr (bsc_action<A>)

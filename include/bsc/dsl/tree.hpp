@@ -200,8 +200,8 @@ namespace bsc {
 ///
 /// `initial<A, B, ...>` names several, one in each of orthogonal regions below the composite
 /// (SCXML's `initial="a b"`): entering the composite by default enters each, and the regions
-/// that hold none by default. At most 4 (bsc::error::targets_not_orthogonal if two are not in
-/// different regions of a parallel state).
+/// that hold none by default. At most 4 (bsc::error::initial_states_not_orthogonal if two are not
+/// in different regions of a parallel state).
 template <class S, class... More>
 inline constexpr detail::initial_marker<S, More...> initial{};
 

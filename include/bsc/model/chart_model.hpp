@@ -161,7 +161,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     t.child_count[i] = count;
     t.end[i] = next;
     // Its initial states after the first, below it (unknown_state if not declared there).
-    if constexpr (requires { typename Node::more_initials; })
+    if constexpr (requires { requires Node::more_initials::size > 0; })
         [&]<class... More>(type_list<More...>) {
             using tags = typename tags_of<decltype(flatten<Node>())>::type;
             std::size_t k = 0;

@@ -52,11 +52,10 @@ struct event_families<type_list<Us...>> {
     // base). One built-in per pair and nothing else: a chart of K events asks K * K times.
     template <class E>
     static constexpr int chart_bases = (0 + ... + static_cast<int>(__is_base_of(Us, E)));
-    // Whether event E has a family among the chart's events; any: whether a chart event has.
+    // Whether event E, which the chart does not name (trigger_of asks only then), has a family
+    // among the chart's events; any: whether a chart event has.
     template <class E>
-    static constexpr bool has_family =
-        (names_any_event && !__is_same(E, any_event)) ||
-        chart_bases<E> > static_cast<int>(__is_class(E) && index_in<E, Us...>() >= 0);
+    static constexpr bool has_family = (names_any_event && !__is_same(E, any_event)) || chart_bases<E> > 0;
     static constexpr bool any = (names_any_event && K > 1) || (false || ... || (chart_bases<Us> > static_cast<int>(__is_class(Us))));
     // family[t][u]: chart event u is a family of chart event t. (Built only where some event
     // has a family: a chart of K events would otherwise hold K * K flags for nothing.)

@@ -41,7 +41,7 @@ public:
             for (auto& s : slots_)
                 if (!s.pending) {
                     s.pending = true;
-                    s.due = delay > duration::max() - clock_ ? duration::max() : clock_ + delay;
+                    s.due = shifted(clock_, delay);
                     s.order = sent_++;
                     s.id = id;
                     s.event = value_type{std::in_place_type<F>, event_as<F>(e)};
@@ -59,20 +59,13 @@ public:
             if (s.pending && s.id == id) s.pending = false;
     }
 
-    /// The number of events pending.
-    constexpr std::size_t pending() const {
-        std::size_t n = 0;
-        for (auto const& s : slots_) n += s.pending ? 1 : 0;
-        return n;
-    }
-
     // ---- for the machine -----------------------------------------------------------------------
     constexpr void set_clock(duration now) { clock_ = now; }
     // The machine's clock started at `now` (its first cycle): what was scheduled before counts
     // from there, as the timeouts armed before it do.
     constexpr void start_clock(duration now) {
         for (auto& s : slots_)
-            if (s.pending) s.due = s.due > duration::max() - now ? duration::max() : s.due + now;
+            if (s.pending) s.due = shifted(s.due, now);
         clock_ = now;
     }
     // Moves the events due at `now` into the queue of raised events, earliest first, and among

@@ -121,7 +121,7 @@ private:
     bool overflowed_ = false;
 };
 
-// The queue of a chart none of whose actions can raise (detail::may_raise): it is always
+// The queue of a chart none of whose actions can raise (detail::raised_by_chart): it is always
 // empty, and saying so at compile time spares every dispatch the checks for raised events.
 // (Not a template: its name is part of the symbols of every action the machine calls.)
 class no_event_queue {

@@ -235,8 +235,11 @@ private:
         row.to = id(rows.target[i]);
         if constexpr (rows.guarded[i])
             row.guard = &guard_thunk<r>;
+        // (A deferring row keeps its event and runs nothing: no action either.)
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(std::declval<R const&>().action)>,
-                                      bsc::detail::no_action>)
+                                      bsc::detail::no_action> &&
+                      !std::is_same_v<std::remove_cvref_t<decltype(std::declval<R const&>().action)>,
+                                      bsc::detail::defer_action>)
             row.action = &action_thunk<r>;
         row.domain = id(rows.domain[i]);
         if constexpr (bsc::detail::is_timeout_row<R>)
@@ -244,7 +247,6 @@ private:
         row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
         row.defers = rows.defers[i];
         for (std::size_t k = 0; k < row.more_to.size(); ++k) row.more_to[k] = id(rows.more_targets[i][k]);
-        if (row.defers) row.action = nullptr;
         return row;
     }
 

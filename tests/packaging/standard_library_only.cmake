@@ -1,0 +1,23 @@
+# packaging.standard_library_only: the library's headers (include/ and single_include/) include
+# only the standard library, bsc's own headers and, for bsc::mqtt alone, <mosquitto.h>. The
+# single-header consumer cannot show it: the system's headers (Boost among them) are on every
+# compiler's default path. Run with -DBSC_SOURCE_DIR=... -P standard_library_only.cmake.
+file(GLOB_RECURSE headers ${BSC_SOURCE_DIR}/include/*.hpp ${BSC_SOURCE_DIR}/single_include/*.hpp)
+set(offending)
+foreach(header IN LISTS headers)
+  file(STRINGS ${header} includes REGEX "^[ \t]*#[ \t]*include[ \t]*<")
+  foreach(line IN LISTS includes)
+    string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*<([^>]+)>.*" "\\1" name "${line}")
+    # Standard headers have no extension and no directory (c++ headers) or are C headers in <c...>.
+    if(name MATCHES "^bsc/" OR name STREQUAL "mosquitto.h" OR NOT name MATCHES "[./]")
+      continue()
+    endif()
+    list(APPEND offending "${header}: #include <${name}>")
+  endforeach()
+endforeach()
+if(offending)
+  list(JOIN offending "\n" text)
+  message(FATAL_ERROR "headers that include more than the standard library:\n${text}")
+endif()
+list(LENGTH headers count)
+message(STATUS "${count} headers include the standard library and bsc only")
