@@ -3241,11 +3241,56 @@ inline constexpr allow_unhandled_t allow_unhandled{};
 
 namespace bsc::detail {
 
+// What every bounded queue keeps: its slots (Slots, first, where a machine's members of large
+// alignment go), where the oldest event is, how many there are, and whether a raise found the
+// queue full.
+template <std::size_t Capacity, class Slots>
+class ring {
+public:
+    constexpr bool empty() const { return size_ == 0; }
+    constexpr std::size_t size() const { return size_; }
+    static constexpr std::size_t capacity() { return Capacity; }
+    constexpr bool overflowed() const { return overflowed_; }
+    constexpr void clear_overflow() { overflowed_ = false; }
+    constexpr void clear() { head_ = size_ = 0; }
+
+protected:
+    // True, and the overflow marked, if the queue is full: the raise then stores nothing.
+    constexpr bool refuse_when_full() {
+        if (size_ == Capacity) {
+            overflowed_ = true;
+            return true;
+        }
+        return false;
+    }
+    // The slot after the newest event; added() counts the event once it is stored there.
+    constexpr std::size_t back() const { return (head_ + size_) % Capacity; }
+    constexpr void added() { ++size_; }
+    // The slot of the oldest event; drop_front() takes it out once it is read. (A queue whose
+    // slots hold nothing only counts: removed().)
+    constexpr std::size_t front() const { return head_; }
+    constexpr void drop_front() {
+        head_ = (head_ + 1) % Capacity;
+        removed();
+    }
+    constexpr void removed() { --size_; }
+
+    [[no_unique_address]] Slots items_{};
+
+private:
+    std::size_t head_ = 0;
+    std::size_t size_ = 0;
+    bool overflowed_ = false;
+};
+
 template <std::size_t Capacity, class Events>
 class event_queue;
 
 template <std::size_t Capacity, class... Es>
-class event_queue<Capacity, type_list<Es...>> {
+class event_queue<Capacity, type_list<Es...>>
+    : public ring<Capacity, std::array<std::variant<std::monostate, Es...>, Capacity>> {
+    using ring<Capacity, std::array<std::variant<std::monostate, Es...>, Capacity>>::items_;
+
 public:
     using value_type = std::variant<std::monostate, Es...>;
 
@@ -3269,19 +3314,11 @@ public:
         }
     }
 
-    constexpr bool empty() const { return size_ == 0; }
-    constexpr std::size_t size() const { return size_; }
-    static constexpr std::size_t capacity() { return Capacity; }
-    constexpr bool overflowed() const { return overflowed_; }
-    constexpr void clear_overflow() { overflowed_ = false; }
-    constexpr void clear() { head_ = size_ = 0; }
-
     // Removes the oldest event and calls f with it.
     template <class F>
     constexpr void pop(F&& f) {
-        value_type item = std::move(items_[head_]);
-        head_ = (head_ + 1) % Capacity;
-        --size_;
+        value_type item = std::move(items_[this->front()]);
+        this->drop_front();
         visit_index<static_cast<int>(sizeof...(Es))>(static_cast<int>(item.index()) - 1,
                                                      [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
     }
@@ -3289,12 +3326,9 @@ public:
 protected:
     // Queues an item already held as the queue's variant (a delayed event coming due).
     constexpr bool push_item(value_type const& item) {
-        if (size_ == Capacity) {
-            overflowed_ = true;
-            return false;
-        }
-        items_[(head_ + size_) % Capacity] = item;
-        ++size_;
+        if (this->refuse_when_full()) return false;
+        items_[this->back()] = item;
+        this->added();
         return true;
     }
     // The chart's event an event E is queued as: E itself, or its nearest family (-1: none).
@@ -3306,25 +3340,72 @@ protected:
 private:
     template <class E>
     constexpr bool push(E const& e) {
-        if (size_ == Capacity) {
-            overflowed_ = true;
-            return false;
-        }
-        auto& slot = items_[(head_ + size_) % Capacity];
+        if (this->refuse_when_full()) return false;
+        auto& slot = items_[this->back()];
         // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
         // 14 cannot emplace into a variant in a constant expression, so that assigns.
         if (std::is_constant_evaluated())
             slot = value_type{std::in_place_type<E>, e};
         else
             slot.template emplace<E>(e);
-        ++size_;
+        this->added();  // (after the copy, which may throw)
         return true;
     }
+};
 
-    std::array<value_type, Capacity> items_{};
-    std::size_t head_ = 0;
-    std::size_t size_ = 0;
-    bool overflowed_ = false;
+// The slots of a single_event_queue: the events, or for an empty event none.
+template <std::size_t Capacity, class E>
+struct single_event_slots {
+    std::array<E, Capacity> value{};
+};
+template <std::size_t Capacity, class E>
+    requires std::is_empty_v<E>
+struct single_event_slots<Capacity, E> {};
+
+// The queue of a chart that raises one event type only, a trivially copyable one (queue_for.hpp
+// picks it): the events themselves, without a variant's index to store, load and switch on;
+// for an empty event, not even the events, only their count (a raise is then an increment, as
+// a hand-written flag would be).
+template <std::size_t Capacity, class E>
+class single_event_queue : public ring<Capacity, single_event_slots<Capacity, E>> {
+    static_assert(Capacity > 0 && std::is_trivially_copyable_v<E> && std::is_default_constructible_v<E>);
+    static constexpr bool stores_events = !std::is_empty_v<E>;
+    using ring<Capacity, single_event_slots<Capacity, E>>::items_;
+
+public:
+    /// Raises e, as event_queue does: E itself, or an event of E's family queued as E.
+    template <class R>
+    constexpr bool operator()(R const& e) noexcept(std::is_nothrow_copy_constructible_v<R>) {
+        if constexpr (__is_same(R, E)) {
+            return push(e);
+        } else if constexpr (event_families<type_list<E>>::template trigger_of<R>() == 0) {
+            return push(event_as<E>(e));
+        } else {
+            detail::report<error::raised_event_not_in_chart<R>>();
+            return false;
+        }
+    }
+
+    // Removes the oldest event and calls f with it.
+    template <class F>
+    constexpr void pop(F&& f) {
+        if constexpr (stores_events) {
+            E const item = items_.value[this->front()];
+            this->drop_front();
+            f(item);
+        } else {
+            this->removed();
+            f(E{});
+        }
+    }
+
+private:
+    constexpr bool push(E const& e) {
+        if (this->refuse_when_full()) return false;
+        if constexpr (stores_events) items_.value[this->back()] = e;
+        this->added();
+        return true;
+    }
 };
 
 // A chart whose queue capacity is zero raises nothing: every raise is an overflow.
@@ -4944,6 +5025,24 @@ private:
 
 }  // namespace bsc::detail
 // end include/bsc/detail/access.hpp
+// begin include/bsc/detail/assume.hpp
+// Tells the optimiser a fact the code keeps but cannot show it (a machine's status byte has no
+// failure bit set between runs), so that it drops the tests the fact settles. The fact must
+// hold: where it does not, the behaviour is undefined. GCC follows what it is told through
+// later tests; Clang drops it where paths join (driver.hpp says what it does there instead).
+
+namespace bsc::detail {
+
+[[gnu::always_inline]] constexpr void assume(bool holds) {
+#if defined(__clang__)
+    __builtin_assume(holds);
+#else
+    if (!holds) __builtin_unreachable();
+#endif
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/assume.hpp
 // begin include/bsc/event_set.hpp
 // bsc::event_set<Chart>: the events of a chart, named and numbered at compile time, so that a
 // program can dispatch an event it received as text (an operator panel, a command line) or as a
@@ -6559,7 +6658,7 @@ protected:
         if constexpr (Policy::refuse_reentry) status_ = static_cast<run_status>(bits(status_) | running_bit);
     }
     // The outcome of the last run as kept (outcome::ignored if the policy keeps none).
-    constexpr outcome kept_outcome() const { return static_cast<outcome>(bits(status_) & ~running_bit); }
+    constexpr outcome kept_outcome() const { return static_cast<outcome>(bits(status_) & ~(running_bit | failed_bit)); }
 
     // Runs a guard (true if it holds) or a block of an action: what either throws goes to fail().
     template <class Guard>
@@ -6660,21 +6759,29 @@ private:
         }
     }
     void keep_failure(std::exception_ptr error) noexcept {
-        if constexpr (may_throw)
+        if constexpr (may_throw) {
             failure_.keep(std::move(error));
-        else
+            status_ = static_cast<run_status>(bits(status_) | failed_bit);
+        } else {
             (void)error;
+        }
     }
 
     // The end of a run, the machine consistent and its outputs committed: records the outcome
     // (which ends the run), and then rethrows a failure no transition took, or reports it as
     // outcome::failed.
     constexpr outcome end_run(outcome result) {
+        // (A test of the status byte, not of failure_: where every guard and action of the run
+        // is inlined and cannot throw, the compiler sees that nothing set the bit, and the test
+        // is gone; see start_without_failure.)
         if constexpr (may_throw)
-            if (failure_) return failed_run(result);
+            if ((bits(status_) & failed_bit) != 0) [[unlikely]]
+                return failed_run(result);
         return record(result);  // where nothing can throw nothing can have failed: no test
     }
     outcome failed_run(outcome result) {
+        // (Cleared here too: a policy that keeps no outcome has record() write nothing.)
+        status_ = static_cast<run_status>(bits(status_) & ~failed_bit);
         if constexpr (Policy::rethrow_failures) {
             record(result);
             std::rethrow_exception(failure_.take());
@@ -6682,6 +6789,24 @@ private:
             reported_.reset();
             reported_.keep(failure_.take());
             return record(outcome::failed);
+        }
+    }
+
+    // A dispatch starts with failed_bit clear: every end of a run clears it (record,
+    // end_run_by_exception) and only a run sets it, inside the running mark, which a dispatch
+    // has just found clear. Said to the compiler, so that where every guard and action of the
+    // run is inlined and cannot throw it sees that nothing set the bit, and end_run's test is
+    // gone. GCC takes it as a range it may assume (it follows a range through the bit tests);
+    // Clang, which drops an assumption at the first join of paths, as a store of the cleared
+    // byte, which merges with the running mark or the recorded outcome. (Only where the running
+    // mark is kept: a policy without it never reads the byte at the start.)
+    constexpr void start_without_failure() {
+        if constexpr (may_throw && Policy::refuse_reentry) {
+#if defined(__clang__)
+            status_ = static_cast<run_status>(bits(status_) & ~failed_bit);
+#else
+            detail::assume(bits(status_) < failed_bit);
+#endif
         }
     }
 
@@ -6710,7 +6835,10 @@ private:
 #endif
     }
     constexpr void end_run_by_exception() {
-        status_ = static_cast<run_status>(bits(status_) & ~running_bit);
+        // A failure the run kept goes with it: the exception that ended the run is what the
+        // caller sees.
+        if constexpr (may_throw) failure_.reset();
+        status_ = static_cast<run_status>(bits(status_) & ~(running_bit | failed_bit));
         if constexpr (completion::parallel_count > 0) entering_ = {};  // the run is over, whatever it was entering
     }
 
@@ -6718,6 +6846,7 @@ private:
     constexpr outcome process(E const& e) {
         if (running())
             return outcome::reentrant;
+        start_without_failure();
         if (halted())
             return record(outcome::halted);
         if (!Backend::marks_running_lazily || !std::is_same_v<Observer, no_observer>) mark_running();
@@ -6935,11 +7064,13 @@ protected:
     [[no_unique_address]] std::conditional_t<
         defers, event_queue<deferred_capacity_of<Policy, defers>, typename model::events>, no_deferral> deferred_;
     [[no_unique_address]] std::conditional_t<defers, deferral_state, no_deferral> deferral_;
-    // The outcome of the last run (low bits) and the mark of a run under way (running_bit). An
+    // The outcome of the last run (low bits), the mark of a run under way (running_bit) and
+    // whether the run under way has kept a failure (failed_bit: failure_ holds it). An
     // enumeration and not a std::uint8_t: a store through an unsigned char may alias any object,
     // so the compiler would reload the context after every mark.
     enum class run_status : std::uint8_t {};
     static constexpr std::uint8_t running_bit = 0x80;
+    static constexpr std::uint8_t failed_bit = 0x40;
     static constexpr std::uint8_t bits(run_status s) { return static_cast<std::uint8_t>(s); }
     run_status status_ = static_cast<run_status>(outcome::ignored);
     bool clock_started_ = false;  // a cycle has run: clock_ is the caller's time
@@ -7173,6 +7304,18 @@ struct queued_events<Model, type_list<Raised...>> {
                                     typename Model::events>;
 };
 
+// The queue of the events Events: a single_event_queue for one trivially copyable event type,
+// an event_queue otherwise.
+template <std::size_t Capacity, class Events>
+struct queue_of {
+    using type = event_queue<Capacity, Events>;
+};
+template <std::size_t Capacity, class E>
+    requires(Capacity > 0 && std::is_trivially_copyable_v<E> && std::is_default_constructible_v<E>)
+struct queue_of<Capacity, type_list<E>> {
+    using type = single_event_queue<Capacity, E>;
+};
+
 // The queue of raised events, worked out only for a chart that has one.
 template <bool Needed, class Model, class Policy, class Raised>
 struct raise_queue {
@@ -7180,7 +7323,7 @@ struct raise_queue {
 };
 template <class Model, class Policy, class Raised>
 struct raise_queue<true, Model, Policy, Raised> {
-    using type = event_queue<Policy::queue_capacity, typename queued_events<Model, Raised>::type>;
+    using type = typename queue_of<Policy::queue_capacity, typename queued_events<Model, Raised>::type>::type;
 };
 
 // Whether a machine of the chart can keep events from one dispatch to a later one (deferred or
@@ -7356,10 +7499,11 @@ private:
     // ---- the configuration -----------------------------------------------------------------
     template <int S>
     constexpr int active_child() const {
-        if constexpr (tree.slot[S] >= 0)
+        if constexpr (tree.slot[S] >= 0) {
             return config_.active[static_cast<std::size_t>(tree.slot[S])];
-        else
+        } else {
             return 0;  // the top has one child
+        }
     }
     template <int S>
     constexpr void set_active_child(int ordinal) {
@@ -7437,9 +7581,18 @@ private:
     constexpr bool with_relevant_active_child(F&& f) const {
         constexpr auto const& children = plan::template relevant_children<Trigger, S>;
         int const active = active_child<S>();
+        // Where every child is relevant, the last needs no test: the byte always names a child.
+        // The compiler then builds a jump table without a range check, and where the children
+        // all do the same (a reaction every state of a flat chart has) finds nothing to test.
+        // (Not below four children: GCC then turns three tests into a lookup of the next byte,
+        // which an unconditional last arm prevents.)
+        constexpr std::size_t n = children.size();
+        constexpr bool every_child = n >= 4 && static_cast<int>(n) == tree.child_count[S];
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return ((active == tree.ordinal[children[I]] ? (f(detail::int_c<children[I]>{}), true) : false) || ...);
-        }(std::make_index_sequence<children.size()>{});
+            return ((active == tree.ordinal[children[I]] || (every_child && I + 1 == n) ? (f(detail::int_c<children[I]>{}), true)
+                                                                                          : false) ||
+                    ...);
+        }(std::make_index_sequence<n>{});
     }
 
     template <int S, class F>

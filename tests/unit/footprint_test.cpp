@@ -306,3 +306,67 @@ TEST_CASE_TEMPLATE("a machine of bsc::chart_ref stores no copy of its chart, and
     CHECK(c.context().n == fp::step_size);
     CHECK(cr.context().n == fp::step_size);
 }
+
+namespace fp {
+// Every raising action is a bsc::raise of one event type, which carries a value: the queue keeps
+// the values, without an index. (A leaves with three raises, in declaration order.)
+struct tick {
+    int value = 0;
+};
+struct burst {};
+struct log {
+    std::array<int, 32> seen{};
+    int count = 0;
+};
+inline constexpr auto raises_ticks = bsc::make_chart<log>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), bsc::state<A> + bsc::on_exit / bsc::raise(tick{1}),
+    bsc::state<A> + bsc::on_exit / bsc::raise(tick{2}), bsc::state<A> + bsc::on_exit / bsc::raise(tick{3}),
+    bsc::state<A> + bsc::event<burst> = bsc::state<B>,
+    bsc::state<B> + bsc::event<tick> /
+                        [](log& l, tick const& t) noexcept { l.seen[static_cast<std::size_t>(l.count++ % 32)] = t.value; },
+    bsc::state<B> + bsc::event<go> = bsc::state<A>);
+// One empty event: the queue keeps how many, nothing else. A leaves with 8 raises, which fit;
+// C with 9, one too many.
+template <class S, std::size_t... I>
+constexpr auto pings(std::index_sequence<I...>) {
+    return bsc::rows(((void)I, bsc::state<S> + bsc::on_exit / bsc::raise(back{}))...);
+}
+inline constexpr auto raises_pings = bsc::make_chart<count>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>), pings<A>(std::make_index_sequence<8>{}),
+    pings<C>(std::make_index_sequence<9>{}), bsc::state<A> + bsc::event<burst> = bsc::state<B>,
+    bsc::state<C> + bsc::event<burst> = bsc::state<B>,
+    bsc::state<B> + bsc::event<back> / [](count& c) noexcept { c.n += 100; },
+    bsc::state<B> + bsc::event<go> = bsc::state<C>);
+}  // namespace fp
+
+TEST_CASE_TEMPLATE("a chart that raises one event type keeps the events in order, without an index, or only their count",
+                   Backend, bsc_test::compiled, bsc_test::table) {
+    using tick_queue = bsc::detail::queue_for<decltype(fp::raises_ticks), bsc::default_policy>;
+    using ping_queue = bsc::detail::queue_for<decltype(fp::raises_pings), bsc::default_policy>;
+    static_assert(std::is_same_v<tick_queue, bsc::detail::single_event_queue<8, fp::tick>>);
+    static_assert(std::is_same_v<ping_queue, bsc::detail::single_event_queue<8, fp::back>>);
+    // Eight ints and the ring's two counters and flag; for the empty event, only those.
+    static_assert(sizeof(tick_queue) ==
+                  fp::padded(8 * sizeof(int) + 2 * sizeof(std::size_t) + 1, alignof(std::size_t)));
+    static_assert(sizeof(ping_queue) == fp::padded(2 * sizeof(std::size_t) + 1, alignof(std::size_t)));
+
+    // The values come out in the order raised, across the ring's end (3 per round, 8 slots).
+    bsc_test::machine_t<Backend, decltype(fp::raises_ticks)> t{fp::raises_ticks};
+    for (int round = 0; round < 5; ++round) {
+        CHECK(t.dispatch(fp::burst{}) == bsc::outcome::consumed);
+        CHECK(t.dispatch(fp::go{}) == bsc::outcome::consumed);
+    }
+    REQUIRE(t.context().count == 15);
+    for (std::size_t k = 0; k < 15; ++k) CHECK(t.context().seen[k] == static_cast<int>(k % 3) + 1);
+
+    // Eight pings fit; the ninth is an overflow, reported, and the eight are still processed.
+    bsc_test::machine_t<Backend, decltype(fp::raises_pings)> p{fp::raises_pings};
+    CHECK(p.dispatch(fp::burst{}) == bsc::outcome::consumed);
+    CHECK(p.context().n == 800);
+    CHECK(p.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(p.dispatch(fp::burst{}) == bsc::outcome::queue_overflow);
+    CHECK(p.context().n == 1600);
+    // The overflow ended with the run that had it.
+    CHECK(p.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(p.dispatch(fp::back{}) == bsc::outcome::ignored);
+}

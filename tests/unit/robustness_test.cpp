@@ -462,6 +462,60 @@ TEST_CASE_TEMPLATE("under a policy that does not rethrow, the failure is an outc
 }
 
 namespace rob {
+struct observer_error {};
+// Throws from on_entry of Outer while `armed`: after the action's failure, before the run ends.
+struct entry_thrower {
+    bool armed = false;
+    template <class S>
+    void on_entry(bsc::state_tag<S>) {
+        if (armed && std::is_same_v<S, Outer>) throw observer_error{};
+    }
+};
+}  // namespace rob
+
+TEST_CASE_TEMPLATE("a failure kept by a run that an exception ends goes with that run", Backend, compiled, table) {
+    bsc_test::machine_t<Backend, decltype(rob::unhandled), rob::reporting, rob::entry_thrower> m{rob::unhandled};
+    m.context().throw_in_action = true;
+    m.observer().armed = true;
+    // The action's failure is kept, then the observer's exception ends the run: that is what escapes.
+    CHECK_THROWS_AS(m.dispatch(rob::go{}), rob::observer_error);
+    m.context().throw_in_action = false;
+    m.observer().armed = false;
+    // Nothing of the ended run is reported by the next one, nor by any after it.
+    CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);
+    CHECK(m.last_failure() == nullptr);
+    CHECK(m.dispatch(rob::go{}) == bsc::outcome::consumed);
+    CHECK(m.last_outcome() == bsc::outcome::consumed);
+}
+
+TEST_CASE_TEMPLATE("a dispatch whose actions cannot fail reports no failure after one that did", Backend, compiled,
+                   table) {
+    // The status byte keeps whether the run under way has failed: it must not leak into the next run.
+    bsc_test::machine_t<Backend, decltype(rob::unhandled), rob::reporting> m{rob::unhandled};
+    m.context().throw_in_action = true;
+    CHECK(m.dispatch(rob::go{}) == bsc::outcome::failed);
+    m.context().throw_in_action = false;
+    CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);  // Outer to Idle: no action, no guard
+    CHECK(m.last_outcome() == bsc::outcome::consumed);
+    CHECK(m.dispatch(rob::poke{}) == bsc::outcome::ignored);  // nothing runs at all
+    CHECK(m.last_outcome() == bsc::outcome::ignored);
+    CHECK(m.last_failure() == nullptr);
+}
+
+TEST_CASE_TEMPLATE("under bsc::lean_policy a failure is rethrown once, and the next dispatch runs clean", Backend,
+                   compiled, table) {
+    // lean_policy keeps no outcome: the failure's mark is cleared all the same.
+    bsc_test::machine_t<Backend, decltype(rob::unhandled), bsc::lean_policy> m{rob::unhandled};
+    m.context().throw_in_action = true;
+    CHECK_THROWS_AS(m.dispatch(rob::go{}), rob::boom);
+    m.context().throw_in_action = false;
+    CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);
+    CHECK(m.dispatch(rob::poke{}) == bsc::outcome::ignored);
+    CHECK(m.dispatch(rob::go{}) == bsc::outcome::consumed);
+    CHECK(m.template is<rob::Inner>());
+}
+
+namespace rob {
 struct Start;
 struct start_ctx {
     bool fail = true;

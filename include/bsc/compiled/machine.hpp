@@ -68,10 +68,11 @@ private:
     // ---- the configuration -----------------------------------------------------------------
     template <int S>
     constexpr int active_child() const {
-        if constexpr (tree.slot[S] >= 0)
+        if constexpr (tree.slot[S] >= 0) {
             return config_.active[static_cast<std::size_t>(tree.slot[S])];
-        else
+        } else {
             return 0;  // the top has one child
+        }
     }
     template <int S>
     constexpr void set_active_child(int ordinal) {
@@ -149,9 +150,18 @@ private:
     constexpr bool with_relevant_active_child(F&& f) const {
         constexpr auto const& children = plan::template relevant_children<Trigger, S>;
         int const active = active_child<S>();
+        // Where every child is relevant, the last needs no test: the byte always names a child.
+        // The compiler then builds a jump table without a range check, and where the children
+        // all do the same (a reaction every state of a flat chart has) finds nothing to test.
+        // (Not below four children: GCC then turns three tests into a lookup of the next byte,
+        // which an unconditional last arm prevents.)
+        constexpr std::size_t n = children.size();
+        constexpr bool every_child = n >= 4 && static_cast<int>(n) == tree.child_count[S];
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return ((active == tree.ordinal[children[I]] ? (f(detail::int_c<children[I]>{}), true) : false) || ...);
-        }(std::make_index_sequence<children.size()>{});
+            return ((active == tree.ordinal[children[I]] || (every_child && I + 1 == n) ? (f(detail::int_c<children[I]>{}), true)
+                                                                                          : false) ||
+                    ...);
+        }(std::make_index_sequence<n>{});
     }
 
     template <int S, class F>

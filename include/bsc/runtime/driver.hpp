@@ -24,6 +24,7 @@
 #include <bsc/chart_ref.hpp>
 #include <bsc/configuration.hpp>
 #include <bsc/detail/access.hpp>
+#include <bsc/detail/assume.hpp>
 #include <bsc/detail/row_storage.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/duration.hpp>
@@ -500,7 +501,7 @@ protected:
         if constexpr (Policy::refuse_reentry) status_ = static_cast<run_status>(bits(status_) | running_bit);
     }
     // The outcome of the last run as kept (outcome::ignored if the policy keeps none).
-    constexpr outcome kept_outcome() const { return static_cast<outcome>(bits(status_) & ~running_bit); }
+    constexpr outcome kept_outcome() const { return static_cast<outcome>(bits(status_) & ~(running_bit | failed_bit)); }
 
     // Runs a guard (true if it holds) or a block of an action: what either throws goes to fail().
     template <class Guard>
@@ -601,21 +602,29 @@ private:
         }
     }
     void keep_failure(std::exception_ptr error) noexcept {
-        if constexpr (may_throw)
+        if constexpr (may_throw) {
             failure_.keep(std::move(error));
-        else
+            status_ = static_cast<run_status>(bits(status_) | failed_bit);
+        } else {
             (void)error;
+        }
     }
 
     // The end of a run, the machine consistent and its outputs committed: records the outcome
     // (which ends the run), and then rethrows a failure no transition took, or reports it as
     // outcome::failed.
     constexpr outcome end_run(outcome result) {
+        // (A test of the status byte, not of failure_: where every guard and action of the run
+        // is inlined and cannot throw, the compiler sees that nothing set the bit, and the test
+        // is gone; see start_without_failure.)
         if constexpr (may_throw)
-            if (failure_) return failed_run(result);
+            if ((bits(status_) & failed_bit) != 0) [[unlikely]]
+                return failed_run(result);
         return record(result);  // where nothing can throw nothing can have failed: no test
     }
     outcome failed_run(outcome result) {
+        // (Cleared here too: a policy that keeps no outcome has record() write nothing.)
+        status_ = static_cast<run_status>(bits(status_) & ~failed_bit);
         if constexpr (Policy::rethrow_failures) {
             record(result);
             std::rethrow_exception(failure_.take());
@@ -623,6 +632,24 @@ private:
             reported_.reset();
             reported_.keep(failure_.take());
             return record(outcome::failed);
+        }
+    }
+
+    // A dispatch starts with failed_bit clear: every end of a run clears it (record,
+    // end_run_by_exception) and only a run sets it, inside the running mark, which a dispatch
+    // has just found clear. Said to the compiler, so that where every guard and action of the
+    // run is inlined and cannot throw it sees that nothing set the bit, and end_run's test is
+    // gone. GCC takes it as a range it may assume (it follows a range through the bit tests);
+    // Clang, which drops an assumption at the first join of paths, as a store of the cleared
+    // byte, which merges with the running mark or the recorded outcome. (Only where the running
+    // mark is kept: a policy without it never reads the byte at the start.)
+    constexpr void start_without_failure() {
+        if constexpr (may_throw && Policy::refuse_reentry) {
+#if defined(__clang__)
+            status_ = static_cast<run_status>(bits(status_) & ~failed_bit);
+#else
+            detail::assume(bits(status_) < failed_bit);
+#endif
         }
     }
 
@@ -651,7 +678,10 @@ private:
 #endif
     }
     constexpr void end_run_by_exception() {
-        status_ = static_cast<run_status>(bits(status_) & ~running_bit);
+        // A failure the run kept goes with it: the exception that ended the run is what the
+        // caller sees.
+        if constexpr (may_throw) failure_.reset();
+        status_ = static_cast<run_status>(bits(status_) & ~(running_bit | failed_bit));
         if constexpr (completion::parallel_count > 0) entering_ = {};  // the run is over, whatever it was entering
     }
 
@@ -659,6 +689,7 @@ private:
     constexpr outcome process(E const& e) {
         if (running())
             return outcome::reentrant;
+        start_without_failure();
         if (halted())
             return record(outcome::halted);
         if (!Backend::marks_running_lazily || !std::is_same_v<Observer, no_observer>) mark_running();
@@ -876,11 +907,13 @@ protected:
     [[no_unique_address]] std::conditional_t<
         defers, event_queue<deferred_capacity_of<Policy, defers>, typename model::events>, no_deferral> deferred_;
     [[no_unique_address]] std::conditional_t<defers, deferral_state, no_deferral> deferral_;
-    // The outcome of the last run (low bits) and the mark of a run under way (running_bit). An
+    // The outcome of the last run (low bits), the mark of a run under way (running_bit) and
+    // whether the run under way has kept a failure (failed_bit: failure_ holds it). An
     // enumeration and not a std::uint8_t: a store through an unsigned char may alias any object,
     // so the compiler would reload the context after every mark.
     enum class run_status : std::uint8_t {};
     static constexpr std::uint8_t running_bit = 0x80;
+    static constexpr std::uint8_t failed_bit = 0x40;
     static constexpr std::uint8_t bits(run_status s) { return static_cast<std::uint8_t>(s); }
     run_status status_ = static_cast<run_status>(outcome::ignored);
     bool clock_started_ = false;  // a cycle has run: clock_ is the caller's time

@@ -13,11 +13,56 @@
 
 namespace bsc::detail {
 
+// What every bounded queue keeps: its slots (Slots, first, where a machine's members of large
+// alignment go), where the oldest event is, how many there are, and whether a raise found the
+// queue full.
+template <std::size_t Capacity, class Slots>
+class ring {
+public:
+    constexpr bool empty() const { return size_ == 0; }
+    constexpr std::size_t size() const { return size_; }
+    static constexpr std::size_t capacity() { return Capacity; }
+    constexpr bool overflowed() const { return overflowed_; }
+    constexpr void clear_overflow() { overflowed_ = false; }
+    constexpr void clear() { head_ = size_ = 0; }
+
+protected:
+    // True, and the overflow marked, if the queue is full: the raise then stores nothing.
+    constexpr bool refuse_when_full() {
+        if (size_ == Capacity) {
+            overflowed_ = true;
+            return true;
+        }
+        return false;
+    }
+    // The slot after the newest event; added() counts the event once it is stored there.
+    constexpr std::size_t back() const { return (head_ + size_) % Capacity; }
+    constexpr void added() { ++size_; }
+    // The slot of the oldest event; drop_front() takes it out once it is read. (A queue whose
+    // slots hold nothing only counts: removed().)
+    constexpr std::size_t front() const { return head_; }
+    constexpr void drop_front() {
+        head_ = (head_ + 1) % Capacity;
+        removed();
+    }
+    constexpr void removed() { --size_; }
+
+    [[no_unique_address]] Slots items_{};
+
+private:
+    std::size_t head_ = 0;
+    std::size_t size_ = 0;
+    bool overflowed_ = false;
+};
+
 template <std::size_t Capacity, class Events>
 class event_queue;
 
 template <std::size_t Capacity, class... Es>
-class event_queue<Capacity, type_list<Es...>> {
+class event_queue<Capacity, type_list<Es...>>
+    : public ring<Capacity, std::array<std::variant<std::monostate, Es...>, Capacity>> {
+    using ring<Capacity, std::array<std::variant<std::monostate, Es...>, Capacity>>::items_;
+
 public:
     using value_type = std::variant<std::monostate, Es...>;
 
@@ -41,19 +86,11 @@ public:
         }
     }
 
-    constexpr bool empty() const { return size_ == 0; }
-    constexpr std::size_t size() const { return size_; }
-    static constexpr std::size_t capacity() { return Capacity; }
-    constexpr bool overflowed() const { return overflowed_; }
-    constexpr void clear_overflow() { overflowed_ = false; }
-    constexpr void clear() { head_ = size_ = 0; }
-
     // Removes the oldest event and calls f with it.
     template <class F>
     constexpr void pop(F&& f) {
-        value_type item = std::move(items_[head_]);
-        head_ = (head_ + 1) % Capacity;
-        --size_;
+        value_type item = std::move(items_[this->front()]);
+        this->drop_front();
         visit_index<static_cast<int>(sizeof...(Es))>(static_cast<int>(item.index()) - 1,
                                                      [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
     }
@@ -61,12 +98,9 @@ public:
 protected:
     // Queues an item already held as the queue's variant (a delayed event coming due).
     constexpr bool push_item(value_type const& item) {
-        if (size_ == Capacity) {
-            overflowed_ = true;
-            return false;
-        }
-        items_[(head_ + size_) % Capacity] = item;
-        ++size_;
+        if (this->refuse_when_full()) return false;
+        items_[this->back()] = item;
+        this->added();
         return true;
     }
     // The chart's event an event E is queued as: E itself, or its nearest family (-1: none).
@@ -78,25 +112,72 @@ protected:
 private:
     template <class E>
     constexpr bool push(E const& e) {
-        if (size_ == Capacity) {
-            overflowed_ = true;
-            return false;
-        }
-        auto& slot = items_[(head_ + size_) % Capacity];
+        if (this->refuse_when_full()) return false;
+        auto& slot = items_[this->back()];
         // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
         // 14 cannot emplace into a variant in a constant expression, so that assigns.
         if (std::is_constant_evaluated())
             slot = value_type{std::in_place_type<E>, e};
         else
             slot.template emplace<E>(e);
-        ++size_;
+        this->added();  // (after the copy, which may throw)
         return true;
     }
+};
 
-    std::array<value_type, Capacity> items_{};
-    std::size_t head_ = 0;
-    std::size_t size_ = 0;
-    bool overflowed_ = false;
+// The slots of a single_event_queue: the events, or for an empty event none.
+template <std::size_t Capacity, class E>
+struct single_event_slots {
+    std::array<E, Capacity> value{};
+};
+template <std::size_t Capacity, class E>
+    requires std::is_empty_v<E>
+struct single_event_slots<Capacity, E> {};
+
+// The queue of a chart that raises one event type only, a trivially copyable one (queue_for.hpp
+// picks it): the events themselves, without a variant's index to store, load and switch on;
+// for an empty event, not even the events, only their count (a raise is then an increment, as
+// a hand-written flag would be).
+template <std::size_t Capacity, class E>
+class single_event_queue : public ring<Capacity, single_event_slots<Capacity, E>> {
+    static_assert(Capacity > 0 && std::is_trivially_copyable_v<E> && std::is_default_constructible_v<E>);
+    static constexpr bool stores_events = !std::is_empty_v<E>;
+    using ring<Capacity, single_event_slots<Capacity, E>>::items_;
+
+public:
+    /// Raises e, as event_queue does: E itself, or an event of E's family queued as E.
+    template <class R>
+    constexpr bool operator()(R const& e) noexcept(std::is_nothrow_copy_constructible_v<R>) {
+        if constexpr (__is_same(R, E)) {
+            return push(e);
+        } else if constexpr (event_families<type_list<E>>::template trigger_of<R>() == 0) {
+            return push(event_as<E>(e));
+        } else {
+            detail::report<error::raised_event_not_in_chart<R>>();
+            return false;
+        }
+    }
+
+    // Removes the oldest event and calls f with it.
+    template <class F>
+    constexpr void pop(F&& f) {
+        if constexpr (stores_events) {
+            E const item = items_.value[this->front()];
+            this->drop_front();
+            f(item);
+        } else {
+            this->removed();
+            f(E{});
+        }
+    }
+
+private:
+    constexpr bool push(E const& e) {
+        if (this->refuse_when_full()) return false;
+        if constexpr (stores_events) items_.value[this->back()] = e;
+        this->added();
+        return true;
+    }
 };
 
 // A chart whose queue capacity is zero raises nothing: every raise is an overflow.

@@ -61,6 +61,18 @@ struct queued_events<Model, type_list<Raised...>> {
                                     typename Model::events>;
 };
 
+// The queue of the events Events: a single_event_queue for one trivially copyable event type,
+// an event_queue otherwise.
+template <std::size_t Capacity, class Events>
+struct queue_of {
+    using type = event_queue<Capacity, Events>;
+};
+template <std::size_t Capacity, class E>
+    requires(Capacity > 0 && std::is_trivially_copyable_v<E> && std::is_default_constructible_v<E>)
+struct queue_of<Capacity, type_list<E>> {
+    using type = single_event_queue<Capacity, E>;
+};
+
 // The queue of raised events, worked out only for a chart that has one.
 template <bool Needed, class Model, class Policy, class Raised>
 struct raise_queue {
@@ -68,7 +80,7 @@ struct raise_queue {
 };
 template <class Model, class Policy, class Raised>
 struct raise_queue<true, Model, Policy, Raised> {
-    using type = event_queue<Policy::queue_capacity, typename queued_events<Model, Raised>::type>;
+    using type = typename queue_of<Policy::queue_capacity, typename queued_events<Model, Raised>::type>::type;
 };
 
 // Whether a machine of the chart can keep events from one dispatch to a later one (deferred or
