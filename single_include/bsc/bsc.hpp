@@ -3362,8 +3362,8 @@ template <std::size_t Capacity, class E>
     requires std::is_empty_v<E>
 struct single_event_slots<Capacity, E> {};
 
-// The queue of a chart that raises one event type only, a trivially copyable one (queue_for.hpp
-// picks it): the events themselves, without a variant's index to store, load and switch on;
+// The queue of a chart that raises one event type only, a trivially copyable one whose default
+// construction is a constant expression (queue_for.hpp picks it): the events themselves, without a variant's index to store, load and switch on;
 // for an empty event, not even the events, only their count (a raise is then an increment, as
 // a hand-written flag would be).
 template <std::size_t Capacity, class E>
@@ -6786,10 +6786,15 @@ private:
             record(result);
             std::rethrow_exception(failure_.take());
         } else {
-            reported_.reset();
-            reported_.keep(failure_.take());
+            report_failure(failure_.take());
             return record(outcome::failed);
         }
+    }
+    // (noexcept, as fail(): keeping a failure allocates, and running out of memory there ends
+    // the program rather than leave the machine marked running for good.)
+    void report_failure(std::exception_ptr error) noexcept {
+        reported_.reset();
+        reported_.keep(std::move(error));
     }
 
     // A dispatch starts with failed_bit clear: every end of a run clears it (record,
@@ -6799,7 +6804,9 @@ private:
     // gone. GCC takes it as a range it may assume (it follows a range through the bit tests);
     // Clang, which drops an assumption at the first join of paths, as a store of the cleared
     // byte, which merges with the running mark or the recorded outcome. (Only where the running
-    // mark is kept: a policy without it never reads the byte at the start.)
+    // mark is kept: a policy without it never reads the byte at the start.) A machine assigned
+    // to from inside its own run loses its running mark mid-run and breaks this, as it breaks
+    // run to completion: docs/semantics.md, "Reentrancy", says not to.
     constexpr void start_without_failure() {
         if constexpr (may_throw && Policy::refuse_reentry) {
 #if defined(__clang__)
@@ -7304,14 +7311,21 @@ struct queued_events<Model, type_list<Raised...>> {
                                     typename Model::events>;
 };
 
-// The queue of the events Events: a single_event_queue for one trivially copyable event type,
-// an event_queue otherwise.
+// Whether E{} is a constant expression: a single_event_queue default-constructs its slots, and
+// an empty event at each pop, where an event_queue constructs nothing but the events raised. An
+// event whose default constructor is not constexpr would then keep a machine out of constant
+// expressions, or run code of its own where none ran before.
+template <class E>
+concept constant_default = requires { typename std::bool_constant<(static_cast<void>(E{}), true)>; };
+
+// The queue of the events Events: a single_event_queue for one trivially copyable event type
+// whose default construction is a constant, an event_queue otherwise.
 template <std::size_t Capacity, class Events>
 struct queue_of {
     using type = event_queue<Capacity, Events>;
 };
 template <std::size_t Capacity, class E>
-    requires(Capacity > 0 && std::is_trivially_copyable_v<E> && std::is_default_constructible_v<E>)
+    requires(Capacity > 0 && std::is_trivially_copyable_v<E> && constant_default<E>)
 struct queue_of<Capacity, type_list<E>> {
     using type = single_event_queue<Capacity, E>;
 };

@@ -337,7 +337,34 @@ inline constexpr auto raises_pings = bsc::make_chart<count>(
     bsc::state<C> + bsc::event<burst> = bsc::state<B>,
     bsc::state<B> + bsc::event<back> / [](count& c) noexcept { c.n += 100; },
     bsc::state<B> + bsc::event<go> = bsc::state<C>);
+// An event whose default constructor is not constexpr: the single-event queue would construct
+// its slots with it, so the chart gets the general queue, and its machine still runs in a
+// constant expression.
+struct late {
+    int value;
+    late() {}  // NOLINT: the point is a default constructor that is not constexpr
+    constexpr explicit late(int v) : value(v) {}
+};
+inline constexpr auto raises_late = bsc::make_chart<count>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), bsc::state<A> + bsc::on_exit / bsc::raise(late{3}),
+    bsc::state<A> + bsc::event<go> = bsc::state<B>,
+    bsc::state<B> + bsc::event<late> / [](count& c, late const& l) noexcept { c.n += l.value; },
+    bsc::state<B> + bsc::event<go> = bsc::state<A>);
+constexpr int late_total() {
+    bsc::machine<bsc::chart_ref<raises_late>> m{raises_late};
+    (void)m.dispatch(go{});
+    (void)m.dispatch(go{});
+    (void)m.dispatch(go{});
+    return m.context().n;
+}
 }  // namespace fp
+
+TEST_CASE("an event whose default construction is not a constant keeps the general queue, usable in constant expressions") {
+    static_assert(!std::is_same_v<bsc::detail::queue_for<decltype(fp::raises_late), bsc::default_policy>,
+                                  bsc::detail::single_event_queue<8, fp::late>>);
+    static_assert(fp::late_total() == 6);
+    CHECK(fp::late_total() == 6);
+}
 
 TEST_CASE_TEMPLATE("a chart that raises one event type keeps the events in order, without an index, or only their count",
                    Backend, bsc_test::compiled, bsc_test::table) {

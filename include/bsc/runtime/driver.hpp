@@ -629,10 +629,15 @@ private:
             record(result);
             std::rethrow_exception(failure_.take());
         } else {
-            reported_.reset();
-            reported_.keep(failure_.take());
+            report_failure(failure_.take());
             return record(outcome::failed);
         }
+    }
+    // (noexcept, as fail(): keeping a failure allocates, and running out of memory there ends
+    // the program rather than leave the machine marked running for good.)
+    void report_failure(std::exception_ptr error) noexcept {
+        reported_.reset();
+        reported_.keep(std::move(error));
     }
 
     // A dispatch starts with failed_bit clear: every end of a run clears it (record,
@@ -642,7 +647,9 @@ private:
     // gone. GCC takes it as a range it may assume (it follows a range through the bit tests);
     // Clang, which drops an assumption at the first join of paths, as a store of the cleared
     // byte, which merges with the running mark or the recorded outcome. (Only where the running
-    // mark is kept: a policy without it never reads the byte at the start.)
+    // mark is kept: a policy without it never reads the byte at the start.) A machine assigned
+    // to from inside its own run loses its running mark mid-run and breaks this, as it breaks
+    // run to completion: docs/semantics.md, "Reentrancy", says not to.
     constexpr void start_without_failure() {
         if constexpr (may_throw && Policy::refuse_reentry) {
 #if defined(__clang__)

@@ -134,8 +134,8 @@ template <std::size_t Capacity, class E>
     requires std::is_empty_v<E>
 struct single_event_slots<Capacity, E> {};
 
-// The queue of a chart that raises one event type only, a trivially copyable one (queue_for.hpp
-// picks it): the events themselves, without a variant's index to store, load and switch on;
+// The queue of a chart that raises one event type only, a trivially copyable one whose default
+// construction is a constant expression (queue_for.hpp picks it): the events themselves, without a variant's index to store, load and switch on;
 // for an empty event, not even the events, only their count (a raise is then an increment, as
 // a hand-written flag would be).
 template <std::size_t Capacity, class E>

@@ -61,14 +61,21 @@ struct queued_events<Model, type_list<Raised...>> {
                                     typename Model::events>;
 };
 
-// The queue of the events Events: a single_event_queue for one trivially copyable event type,
-// an event_queue otherwise.
+// Whether E{} is a constant expression: a single_event_queue default-constructs its slots, and
+// an empty event at each pop, where an event_queue constructs nothing but the events raised. An
+// event whose default constructor is not constexpr would then keep a machine out of constant
+// expressions, or run code of its own where none ran before.
+template <class E>
+concept constant_default = requires { typename std::bool_constant<(static_cast<void>(E{}), true)>; };
+
+// The queue of the events Events: a single_event_queue for one trivially copyable event type
+// whose default construction is a constant, an event_queue otherwise.
 template <std::size_t Capacity, class Events>
 struct queue_of {
     using type = event_queue<Capacity, Events>;
 };
 template <std::size_t Capacity, class E>
-    requires(Capacity > 0 && std::is_trivially_copyable_v<E> && std::is_default_constructible_v<E>)
+    requires(Capacity > 0 && std::is_trivially_copyable_v<E> && constant_default<E>)
 struct queue_of<Capacity, type_list<E>> {
     using type = single_event_queue<Capacity, E>;
 };
