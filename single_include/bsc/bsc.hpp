@@ -1007,16 +1007,9 @@ template <class Ctx, class E, class Raise, class F>
 constexpr bool may_raise(action_fn<F> const*) {
     return std::is_invocable_v<F const&, Ctx&, E const&, Raise&>;
 }
-template <class Ctx, class E, class Raise, class... As>
-constexpr bool may_raise(action_seq<As...> const*) {
-    return (may_raise<Ctx, E, Raise>(static_cast<As const*>(nullptr)) || ...);
-}
 template <class Ctx, class E, class Raise, class A>
-constexpr bool may_raise(state_action<A> const*) {
-    if constexpr (bsc_action<A>)
-        return may_raise<Ctx, state_change, Raise>(static_cast<A const*>(nullptr));
-    else
-        return std::is_invocable_v<A const&, Ctx&, Raise&>;
+constexpr bool may_raise(state_action<A> const*) {  // a plain callable of an entry or exit row
+    return std::is_invocable_v<A const&, Ctx&, Raise&>;
 }
 
 // The callable of bsc::raise(e): a type of its own, so that the machine knows which event such an
@@ -1048,6 +1041,8 @@ constexpr raises_anything operator+(raises_anything, raises_anything) {
 template <class... Lists>
 using join_raised = decltype((type_list<>{} + ... + Lists{}));
 
+// (A sequence, and an entry or exit action wrapping one of bsc's, are looked into; any other
+// action raises anything if may_raise says it can raise at all.)
 template <class Ctx, class E, class Raise, class A>
 auto raised_by(A const*) -> std::conditional_t<may_raise<Ctx, E, Raise>(static_cast<A const*>(nullptr)), raises_anything,
                                                type_list<>>;
@@ -1056,12 +1051,8 @@ auto raised_by(action_fn<raise_fn<Ev>> const*) -> type_list<Ev>;
 template <class Ctx, class E, class Raise, class... As>
 auto raised_by(action_seq<As...> const*) -> join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>;
 template <class Ctx, class E, class Raise, class A>
-auto raised_by(state_action<A> const*) {
-    if constexpr (bsc_action<A>)
-        return decltype(raised_by<Ctx, state_change, Raise>(static_cast<A const*>(nullptr))){};
-    else
-        return std::conditional_t<std::is_invocable_v<A const&, Ctx&, Raise&>, raises_anything, type_list<>>{};
-}
+    requires bsc_action<A>
+auto raised_by(state_action<A> const*) -> decltype(raised_by<Ctx, state_change, Raise>(static_cast<A const*>(nullptr)));
 
 }  // namespace bsc::detail
 
@@ -3283,6 +3274,29 @@ private:
     bool overflowed_ = false;
 };
 
+// The position among Events of the event an event E is queued as: E itself, or its nearest
+// family (model/event_families.hpp): the rows that take it see no more of it than that. -1: none.
+template <class E, class... Es>
+constexpr int queued_index(type_list<Es...>) {
+    if constexpr (index_in<E, Es...>() >= 0)
+        return index_in<E, Es...>();
+    else
+        return event_families<type_list<Es...>>::template trigger_of<E>();
+}
+
+// Raises e into a queue of Events: push(f) with the event e is queued as, or, for an event the
+// chart does not name, the error that says so (and false).
+template <class Events, class E, class Push>
+constexpr bool raise_into(E const& e, Push&& push) {
+    constexpr int as = queued_index<E>(Events{});
+    if constexpr (as < 0) {
+        detail::report<error::raised_event_not_in_chart<E>>();
+        return false;
+    } else {
+        return push(event_as<at<static_cast<std::size_t>(as), Events>>(e));
+    }
+}
+
 template <std::size_t Capacity, class Events>
 class event_queue;
 
@@ -3299,19 +3313,7 @@ public:
     /// the rows that take it see no more of it than that.
     template <class E>
     constexpr bool operator()(E const& e) noexcept(std::is_nothrow_copy_constructible_v<E>) {
-        constexpr int own = index_in<E, Es...>();
-        if constexpr (own >= 0) {
-            return push<E>(e);
-        } else {
-            constexpr int family = event_families<type_list<Es...>>::template trigger_of<E>();
-            if constexpr (family < 0) {
-                detail::report<error::raised_event_not_in_chart<E>>();
-                return false;
-            } else {
-                using F = at<static_cast<std::size_t>(family), type_list<Es...>>;
-                return push<F>(event_as<F>(e));
-            }
-        }
+        return raise_into<type_list<Es...>>(e, [this]<class F>(F const& f) { return this->template push<F>(f); });
     }
 
     // Removes the oldest event and calls f with it.
@@ -3331,11 +3333,6 @@ protected:
         this->added();
         return true;
     }
-    // The chart's event an event E is queued as: E itself, or its nearest family (-1: none).
-    template <class E>
-    static constexpr int queued_as = index_in<E, Es...>() >= 0
-                                         ? index_in<E, Es...>()
-                                         : event_families<type_list<Es...>>::template trigger_of<E>();
 
 private:
     template <class E>
@@ -3363,12 +3360,12 @@ template <std::size_t Capacity, class E>
 struct single_event_slots<Capacity, E> {};
 
 // The queue of a chart that raises one event type only, a trivially copyable one whose default
-// construction is a constant expression (queue_for.hpp picks it): the events themselves, without a variant's index to store, load and switch on;
-// for an empty event, not even the events, only their count (a raise is then an increment, as
-// a hand-written flag would be).
+// construction is a constant expression (queue_for.hpp picks it): the events themselves,
+// without a variant's index to store, load and switch on; for an empty event, not even the
+// events, only their count (a raise is then an increment, as a hand-written flag would be).
 template <std::size_t Capacity, class E>
 class single_event_queue : public ring<Capacity, single_event_slots<Capacity, E>> {
-    static_assert(Capacity > 0 && std::is_trivially_copyable_v<E> && std::is_default_constructible_v<E>);
+    static_assert(Capacity > 0 && std::is_trivially_copyable_v<E>);
     static constexpr bool stores_events = !std::is_empty_v<E>;
     using ring<Capacity, single_event_slots<Capacity, E>>::items_;
 
@@ -3376,14 +3373,7 @@ public:
     /// Raises e, as event_queue does: E itself, or an event of E's family queued as E.
     template <class R>
     constexpr bool operator()(R const& e) noexcept(std::is_nothrow_copy_constructible_v<R>) {
-        if constexpr (__is_same(R, E)) {
-            return push(e);
-        } else if constexpr (event_families<type_list<E>>::template trigger_of<R>() == 0) {
-            return push(event_as<E>(e));
-        } else {
-            detail::report<error::raised_event_not_in_chart<R>>();
-            return false;
-        }
+        return raise_into<type_list<E>>(e, [this](E const& f) { return this->push(f); });
     }
 
     // Removes the oldest event and calls f with it.
@@ -7193,7 +7183,7 @@ public:
     /// False, and an overflow reported at the end of the run, if every slot is taken.
     template <class E>
     constexpr bool schedule(duration delay, E const& e, int id) noexcept(std::is_nothrow_copy_constructible_v<E>) {
-        constexpr int as = base::template queued_as<E>;
+        constexpr int as = queued_index<E>(type_list<Es...>{});
         if constexpr (as < 0) {
             detail::report<error::raised_event_not_in_chart<E>>();
             return false;

@@ -120,16 +120,9 @@ template <class Ctx, class E, class Raise, class F>
 constexpr bool may_raise(action_fn<F> const*) {
     return std::is_invocable_v<F const&, Ctx&, E const&, Raise&>;
 }
-template <class Ctx, class E, class Raise, class... As>
-constexpr bool may_raise(action_seq<As...> const*) {
-    return (may_raise<Ctx, E, Raise>(static_cast<As const*>(nullptr)) || ...);
-}
 template <class Ctx, class E, class Raise, class A>
-constexpr bool may_raise(state_action<A> const*) {
-    if constexpr (bsc_action<A>)
-        return may_raise<Ctx, state_change, Raise>(static_cast<A const*>(nullptr));
-    else
-        return std::is_invocable_v<A const&, Ctx&, Raise&>;
+constexpr bool may_raise(state_action<A> const*) {  // a plain callable of an entry or exit row
+    return std::is_invocable_v<A const&, Ctx&, Raise&>;
 }
 
 // The callable of bsc::raise(e): a type of its own, so that the machine knows which event such an
@@ -161,6 +154,8 @@ constexpr raises_anything operator+(raises_anything, raises_anything) {
 template <class... Lists>
 using join_raised = decltype((type_list<>{} + ... + Lists{}));
 
+// (A sequence, and an entry or exit action wrapping one of bsc's, are looked into; any other
+// action raises anything if may_raise says it can raise at all.)
 template <class Ctx, class E, class Raise, class A>
 auto raised_by(A const*) -> std::conditional_t<may_raise<Ctx, E, Raise>(static_cast<A const*>(nullptr)), raises_anything,
                                                type_list<>>;
@@ -169,12 +164,8 @@ auto raised_by(action_fn<raise_fn<Ev>> const*) -> type_list<Ev>;
 template <class Ctx, class E, class Raise, class... As>
 auto raised_by(action_seq<As...> const*) -> join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>;
 template <class Ctx, class E, class Raise, class A>
-auto raised_by(state_action<A> const*) {
-    if constexpr (bsc_action<A>)
-        return decltype(raised_by<Ctx, state_change, Raise>(static_cast<A const*>(nullptr))){};
-    else
-        return std::conditional_t<std::is_invocable_v<A const&, Ctx&, Raise&>, raises_anything, type_list<>>{};
-}
+    requires bsc_action<A>
+auto raised_by(state_action<A> const*) -> decltype(raised_by<Ctx, state_change, Raise>(static_cast<A const*>(nullptr)));
 
 }  // namespace bsc::detail
 

@@ -32,7 +32,7 @@ public:
     /// False, and an overflow reported at the end of the run, if every slot is taken.
     template <class E>
     constexpr bool schedule(duration delay, E const& e, int id) noexcept(std::is_nothrow_copy_constructible_v<E>) {
-        constexpr int as = base::template queued_as<E>;
+        constexpr int as = queued_index<E>(type_list<Es...>{});
         if constexpr (as < 0) {
             detail::report<error::raised_event_not_in_chart<E>>();
             return false;

@@ -55,6 +55,29 @@ private:
     bool overflowed_ = false;
 };
 
+// The position among Events of the event an event E is queued as: E itself, or its nearest
+// family (model/event_families.hpp): the rows that take it see no more of it than that. -1: none.
+template <class E, class... Es>
+constexpr int queued_index(type_list<Es...>) {
+    if constexpr (index_in<E, Es...>() >= 0)
+        return index_in<E, Es...>();
+    else
+        return event_families<type_list<Es...>>::template trigger_of<E>();
+}
+
+// Raises e into a queue of Events: push(f) with the event e is queued as, or, for an event the
+// chart does not name, the error that says so (and false).
+template <class Events, class E, class Push>
+constexpr bool raise_into(E const& e, Push&& push) {
+    constexpr int as = queued_index<E>(Events{});
+    if constexpr (as < 0) {
+        detail::report<error::raised_event_not_in_chart<E>>();
+        return false;
+    } else {
+        return push(event_as<at<static_cast<std::size_t>(as), Events>>(e));
+    }
+}
+
 template <std::size_t Capacity, class Events>
 class event_queue;
 
@@ -71,19 +94,7 @@ public:
     /// the rows that take it see no more of it than that.
     template <class E>
     constexpr bool operator()(E const& e) noexcept(std::is_nothrow_copy_constructible_v<E>) {
-        constexpr int own = index_in<E, Es...>();
-        if constexpr (own >= 0) {
-            return push<E>(e);
-        } else {
-            constexpr int family = event_families<type_list<Es...>>::template trigger_of<E>();
-            if constexpr (family < 0) {
-                detail::report<error::raised_event_not_in_chart<E>>();
-                return false;
-            } else {
-                using F = at<static_cast<std::size_t>(family), type_list<Es...>>;
-                return push<F>(event_as<F>(e));
-            }
-        }
+        return raise_into<type_list<Es...>>(e, [this]<class F>(F const& f) { return this->template push<F>(f); });
     }
 
     // Removes the oldest event and calls f with it.
@@ -103,11 +114,6 @@ protected:
         this->added();
         return true;
     }
-    // The chart's event an event E is queued as: E itself, or its nearest family (-1: none).
-    template <class E>
-    static constexpr int queued_as = index_in<E, Es...>() >= 0
-                                         ? index_in<E, Es...>()
-                                         : event_families<type_list<Es...>>::template trigger_of<E>();
 
 private:
     template <class E>
@@ -135,12 +141,12 @@ template <std::size_t Capacity, class E>
 struct single_event_slots<Capacity, E> {};
 
 // The queue of a chart that raises one event type only, a trivially copyable one whose default
-// construction is a constant expression (queue_for.hpp picks it): the events themselves, without a variant's index to store, load and switch on;
-// for an empty event, not even the events, only their count (a raise is then an increment, as
-// a hand-written flag would be).
+// construction is a constant expression (queue_for.hpp picks it): the events themselves,
+// without a variant's index to store, load and switch on; for an empty event, not even the
+// events, only their count (a raise is then an increment, as a hand-written flag would be).
 template <std::size_t Capacity, class E>
 class single_event_queue : public ring<Capacity, single_event_slots<Capacity, E>> {
-    static_assert(Capacity > 0 && std::is_trivially_copyable_v<E> && std::is_default_constructible_v<E>);
+    static_assert(Capacity > 0 && std::is_trivially_copyable_v<E>);
     static constexpr bool stores_events = !std::is_empty_v<E>;
     using ring<Capacity, single_event_slots<Capacity, E>>::items_;
 
@@ -148,14 +154,7 @@ public:
     /// Raises e, as event_queue does: E itself, or an event of E's family queued as E.
     template <class R>
     constexpr bool operator()(R const& e) noexcept(std::is_nothrow_copy_constructible_v<R>) {
-        if constexpr (__is_same(R, E)) {
-            return push(e);
-        } else if constexpr (event_families<type_list<E>>::template trigger_of<R>() == 0) {
-            return push(event_as<E>(e));
-        } else {
-            detail::report<error::raised_event_not_in_chart<R>>();
-            return false;
-        }
+        return raise_into<type_list<E>>(e, [this](E const& f) { return this->push(f); });
     }
 
     // Removes the oldest event and calls f with it.
