@@ -46,8 +46,7 @@ template <class Events>
 struct sendable_events;
 template <class... Events>
 struct sendable_events<type_list<Events...>> {
-    using type = decltype((type_list<>{} + ... +
-                           std::conditional_t<std::is_same_v<Events, action_failed>, type_list<>, type_list<Events>>{}));
+    using type = concat_t<std::conditional_t<std::is_same_v<Events, action_failed>, type_list<>, type_list<Events>>...>;
 };
 
 template <class Events>

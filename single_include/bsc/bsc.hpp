@@ -70,12 +70,37 @@ struct type_id {
     using type = T;
 };
 
+// (size is an enumerator, not a static data member: a member variable makes a symbol, which
+// the compiler names by spelling the list, for every list instantiated; the folds that build
+// lists instantiate one per prefix, so that for a large chart those names grew quadratically.)
 template <class... Ts>
 struct type_list {
-    static constexpr std::size_t size = sizeof...(Ts);
+    enum : std::size_t { size = sizeof...(Ts) };
 };
 
-// Concatenation, written as a fold: (type_list<>{} + ... + lists{}).
+// Concatenation of many lists: concat_t<Lists...>. A class, which makes no symbol: a function
+// of the lists (as operator+ below, folded) is a symbol per step of the fold, named by
+// spelling the list so far, and for a large chart building those names took quadratic time.
+template <class... Lists>
+struct concat {
+    using type = type_list<>;
+};
+template <class... As>
+struct concat<type_list<As...>> {
+    using type = type_list<As...>;
+};
+template <class... As, class... Bs, class... Rest>
+struct concat<type_list<As...>, type_list<Bs...>, Rest...> {
+    using type = typename concat<type_list<As..., Bs...>, Rest...>::type;
+};
+template <class... As, class... Bs, class... Cs, class... Ds, class... Rest>
+struct concat<type_list<As...>, type_list<Bs...>, type_list<Cs...>, type_list<Ds...>, Rest...> {
+    using type = typename concat<type_list<As..., Bs..., Cs..., Ds...>, Rest...>::type;
+};
+template <class... Lists>
+using concat_t = typename concat<Lists...>::type;
+
+// Concatenation of two lists, for folds over a few (detail::join_raised).
 template <class... As, class... Bs>
 constexpr type_list<As..., Bs...> operator+(type_list<As...>, type_list<Bs...>) {
     return {};
@@ -1762,21 +1787,25 @@ template <class Node>
 constexpr auto subtree_tags();
 template <class... C>
 constexpr auto subtree_tags_of(type_list<C...>) {
-    return (type_list<>{} + ... + subtree_tags<C>());
+    return concat_t<decltype(subtree_tags<C>())...>{};
 }
 template <class Node>
 constexpr auto subtree_tags() {
     return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
 }
-// Whether one of the arguments declares S below itself (S is then a deep initial's target).
+// Whether argument A declares S below itself; whether one of the arguments does (S is then a
+// deep initial's target). (A function of one argument, not a lambda inside declared_below,
+// whose symbol would spell every argument.)
+template <class S, class A>
+constexpr bool declares_below() {
+    if constexpr (is_node<A>)
+        return index_of<S, decltype(subtree_tags<A>())> >= 0;
+    else
+        return false;
+}
 template <class S, class... A>
 constexpr bool declared_below(type_list<A...>) {
-    return ([] {
-        if constexpr (is_node<A>)
-            return index_of<S, decltype(subtree_tags<A>())> >= 0;
-        else
-            return false;
-    }() || ...);
+    return (declares_below<S, A>() || ...);
 }
 
 // The child declarations an argument of composite<S>(...) contributes, in document order.
@@ -1784,20 +1813,22 @@ constexpr bool declared_below(type_list<A...>) {
 // initial), and no earlier initial<X> did. (The tags below are searched only for an initial
 // that is not a child: most charts never pay for it.)
 template <class A, bool FirstOfItsKind, class Args, class... Declared>
+constexpr auto children_from_initial() {
+    using S = typename tag_of<A>::type;
+    if constexpr ((std::is_same_v<S, Declared> || ...) || !FirstOfItsKind)
+        return type_list<>{};
+    else if constexpr (declared_below<S>(Args{}))
+        return type_list<>{};
+    else
+        return type_list<leaf_node<S, kind::basic, true>>{};
+}
+template <class A>
 constexpr auto children_from() {
     if constexpr (is_node<A>)
         return type_list<A>{};
     else if constexpr (is_state_ref<A>)
         return type_list<leaf_node<typename A::tag, kind::basic>>{};
-    else if constexpr (is_initial_marker<A>) {
-        using S = typename tag_of<A>::type;
-        if constexpr ((std::is_same_v<S, Declared> || ...) || !FirstOfItsKind)
-            return type_list<>{};
-        else if constexpr (declared_below<S>(Args{}))
-            return type_list<>{};
-        else
-            return type_list<leaf_node<S, kind::basic, true>>{};
-    } else
+    else
         return type_list<>{};
 }
 
@@ -1841,12 +1872,24 @@ constexpr history history_from() {
     return h;
 }
 
+// The children argument I (A) contributes. Only an initial<X> needs the other arguments; the
+// choice is a class, which makes no symbol, so that an ordinary argument's functions do not
+// spell every argument in their names (building those names was a quadratic part of a large
+// chart's compile time).
+template <class A, std::size_t I, class Args, class Declared, bool = is_initial_marker<A>>
+struct children_of_argument {
+    using type = decltype(children_from<A>());
+};
+template <class A, std::size_t I, class... Args, class... Declared>
+struct children_of_argument<A, I, type_list<Args...>, type_list<Declared...>, true> {
+    using type = decltype(children_from_initial<A, first_of_its_kind<I, Args...>(), type_list<Args...>, Declared...>());
+};
+
 template <class Tags, class Seq, class... A>
 struct composite_children;
 template <class... Declared, std::size_t... I, class... A>
 struct composite_children<type_list<Declared...>, std::index_sequence<I...>, A...> {
-    using type = decltype((type_list<>{} + ... +
-                           children_from<A, first_of_its_kind<I, A...>(), type_list<A...>, Declared...>()));
+    using type = concat_t<typename children_of_argument<A, I, type_list<A...>, type_list<Declared...>>::type...>;
 };
 
 }  // namespace bsc::detail
@@ -1906,10 +1949,10 @@ constexpr auto composite(A...) {
     } else if constexpr (history_markers > 1) {
         detail::report<error::conflicting_history_markers<S>>();
     }
-    using declared = decltype((detail::type_list<>{} + ... + detail::declared_tag<A>()));
+    using declared = detail::concat_t<decltype(detail::declared_tag<A>())...>;
     using children = typename detail::composite_children<declared, std::index_sequence_for<A...>, A...>::type;
-    using initials = decltype((detail::type_list<>{} + ... + detail::initials_from<A>()));
-    using more_initials = decltype((detail::type_list<>{} + ... + detail::more_initials_from<A>()));
+    using initials = detail::concat_t<decltype(detail::initials_from<A>())...>;
+    using more_initials = detail::concat_t<decltype(detail::more_initials_from<A>())...>;
     static_assert(more_initials::size <= 3, "bsc::initial takes at most 4 states");
     return detail::composite_node<S, detail::history_from<A...>(), initials, children, more_initials>{};
 }
@@ -1925,7 +1968,7 @@ constexpr auto parallel(A...) {
     } else if constexpr (sizeof...(A) == 0) {
         detail::report<error::empty_parallel_state<S>>();
     }
-    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true, detail::type_list<>>()));
+    using children = detail::concat_t<decltype(detail::children_from<A>())...>;
     return detail::parallel_node<S, children>{};
 }
 
@@ -2072,7 +2115,7 @@ template <class Node>
 constexpr auto flatten();
 template <class... C>
 constexpr auto flatten_all(type_list<C...>) {
-    return (type_list<>{} + ... + flatten<C>());
+    return concat_t<decltype(flatten<C>())...>{};
 }
 template <class Node>
 constexpr auto flatten() {
@@ -2146,6 +2189,26 @@ struct topology {
     }
 };
 
+// Whether one of a node's children is a history state.
+template <class... C>
+constexpr bool has_history_child(type_list<C...>) {
+    return ((C::node_kind == kind::history) || ...);
+}
+
+// Links the next child of node i into the sibling chain.
+template <std::size_t N>
+constexpr void link_child(topology<N>& t, std::size_t i, int& previous, int child) {
+    if (previous < 0)
+        t.first_child[i] = child;
+    else
+        t.next_sibling[static_cast<std::size_t>(previous)] = child;
+    previous = child;
+}
+
+// (The walk over a node's children is a fold over plain calls, with no lambda per child: a
+// lambda's symbol spells its enclosing function's arguments, here the node with all its
+// children, and building those names for every child of a large composite was a quadratic part
+// of a chart's compile time.)
 template <class Node, std::size_t N>
 constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, int depth) {
     t.kinds[static_cast<std::size_t>(index)] = Node::node_kind;
@@ -2168,17 +2231,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     int count = 0;
     int previous = -1;
     [&]<class... C>(type_list<C...>) {
-        (
-            [&] {
-                int const child = next;
-                if (previous < 0)
-                    t.first_child[i] = child;
-                else
-                    t.next_sibling[static_cast<std::size_t>(previous)] = child;
-                previous = child;
-                next = fill_topology<C>(t, child, index, count++, depth + 1);
-            }(),
-            ...);
+        ((link_child(t, i, previous, next), next = fill_topology<C>(t, next, index, count++, depth + 1)), ...);
         if constexpr (Node::initials::size == 1) {
             using initial_tag = at<0, typename Node::initials>;
             constexpr int pos = index_in<initial_tag, typename C::tag...>();
@@ -2207,7 +2260,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
             ((t.more_initial[i][k++] = index_of<More, tags> > 0 ? index + index_of<More, tags> : unknown_state), ...);
         }(typename Node::more_initials{});
     // The defaults of its history states, which lie anywhere below Node (-1 if not found).
-    if constexpr (Node::node_kind == kind::composite)
+    if constexpr (Node::node_kind == kind::composite && has_history_child(typename Node::children{}))
         [&]<class... C>(type_list<C...>) {
             (
                 [&] {
@@ -2296,16 +2349,15 @@ struct event_list<type_list<Rows...>> {
     using with_repeats = type_list<typename trigger_event<Rows>::type...>;
     template <std::size_t... I>
     static auto first_occurrences(std::index_sequence<I...>)
-        -> decltype((type_list<>{} + ... +
-                     std::conditional_t<index_of<typename trigger_event<Rows>::type, with_repeats> == static_cast<int>(I),
-                                        type_list<typename trigger_event<Rows>::type>, type_list<>>{}));
+        -> concat_t<std::conditional_t<index_of<typename trigger_event<Rows>::type, with_repeats> == static_cast<int>(I),
+                                       type_list<typename trigger_event<Rows>::type>, type_list<>>...>;
     using all = decltype(first_occurrences(std::index_sequence_for<Rows...>{}));
 };
 template <class List>
 struct drop_void;
 template <class... Es>
 struct drop_void<type_list<Es...>> {
-    using type = decltype((type_list<>{} + ... + std::conditional_t<std::is_void_v<Es>, type_list<>, type_list<Es>>{}));
+    using type = concat_t<std::conditional_t<std::is_void_v<Es>, type_list<>, type_list<Es>>...>;
 };
 
 template <class Tag, class Tags>
@@ -3475,7 +3527,7 @@ struct bad_action<action_fn<F>, Ctx, E, Raise> {
 };
 template <class... As, class Ctx, class E, class Raise>
 struct bad_action<action_seq<As...>, Ctx, E, Raise> {
-    using type = decltype((type_list<>{} + ... + typename bad_action<As, Ctx, E, Raise>::type{}));
+    using type = concat_t<typename bad_action<As, Ctx, E, Raise>::type...>;
 };
 template <class A, class Ctx, class Raise>
 struct bad_state_action {
@@ -5077,8 +5129,7 @@ template <class Events>
 struct sendable_events;
 template <class... Events>
 struct sendable_events<type_list<Events...>> {
-    using type = decltype((type_list<>{} + ... +
-                           std::conditional_t<std::is_same_v<Events, action_failed>, type_list<>, type_list<Events>>{}));
+    using type = concat_t<std::conditional_t<std::is_same_v<Events, action_failed>, type_list<>, type_list<Events>>...>;
 };
 
 template <class Events>
@@ -6095,23 +6146,6 @@ constexpr void run_block(Block&& block, OnFailure&& on_failure) {
 #endif
 }
 
-// Evaluates a guard; a guard that throws does not hold (SCXML: a condition that raises an
-// error is false), and its failure goes to on_failure.
-template <class Guard, class OnFailure>
-constexpr bool test_guard(Guard&& guard, OnFailure&& on_failure) {
-#if defined(__cpp_exceptions)
-    try {
-        return guard();
-    } catch (...) {
-        on_failure(std::current_exception());
-        return false;
-    }
-#else
-    (void)on_failure;
-    return guard();
-#endif
-}
-
 }  // namespace bsc::detail
 // end include/bsc/runtime/failures.hpp
 // begin include/bsc/runtime/notify.hpp
@@ -6650,14 +6684,36 @@ protected:
     // The outcome of the last run as kept (outcome::ignored if the policy keeps none).
     constexpr outcome kept_outcome() const { return static_cast<outcome>(bits(status_) & ~(running_bit | failed_bit)); }
 
-    // Runs a guard (true if it holds) or a block of an action: what either throws goes to fail().
-    template <class Guard>
-    constexpr bool test(Guard&& guard) {
-        return test_guard(guard, [this](std::exception_ptr error) { fail(std::move(error)); });
+    // Evaluates guard(args...) (true if it holds) or calls action(args...): what either throws
+    // goes to fail(), and a guard that throws does not hold (SCXML: a condition that raises an
+    // error is false). The callable and its arguments come separately, not as a lambda around
+    // the call, and the try blocks are written out, not handed a handler as the table engine's
+    // run_block is: two functions less to instantiate for every guard and action of the chart
+    // (three: the arguments are forwarded with a cast, not with std::forward).
+    template <class Guard, class... Args>
+    constexpr bool test(Guard const& guard, Args&&... args) {
+#if defined(__cpp_exceptions)
+        try {
+            return static_cast<bool>(guard(static_cast<Args&&>(args)...));
+        } catch (...) {
+            fail(std::current_exception());
+            return false;
+        }
+#else
+        return static_cast<bool>(guard(static_cast<Args&&>(args)...));
+#endif
     }
-    template <class Block>
-    constexpr void run(Block&& block) {
-        run_block(block, [this](std::exception_ptr error) { fail(std::move(error)); });
+    template <class Action, class... Args>
+    constexpr void run(Action const& action, Args&&... args) {
+#if defined(__cpp_exceptions)
+        try {
+            action(static_cast<Args&&>(args)...);
+        } catch (...) {
+            fail(std::current_exception());
+        }
+#else
+        action(static_cast<Args&&>(args)...);
+#endif
     }
     // The same, for code that knows the machine only by address (the table engine's thunks).
     failure_sink sink() {
@@ -6690,19 +6746,16 @@ private:
     constexpr Backend& backend() { return static_cast<Backend&>(*this); }
     constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
 
-    // One microstep on an event (not on the eventless pseudo-event): where the chart defers,
-    // the event is kept if only deferring rows took it.
+    // One microstep on an event (not on the eventless pseudo-event) where the chart defers:
+    // the event is kept if only deferring rows took it. (Elsewhere the callers go straight to
+    // the back end's microstep, without a function between to instantiate per event.)
     template <int Trigger, class E>
-    constexpr bool event_microstep(E const& e) {
-        if constexpr (defers) {
-            deferral_.requested = false;
-            deferral_.other_fired = false;
-            bool const fired = backend().template microstep<Trigger>(e);
-            if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
-            return fired;
-        } else {
-            return backend().template microstep<Trigger>(e);
-        }
+    constexpr bool deferring_microstep(E const& e) {
+        deferral_.requested = false;
+        deferral_.other_fired = false;
+        bool const fired = backend().template microstep<Trigger>(e);
+        if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
+        return fired;
     }
 
     // Processes one deferred event again, if a round of retries is under way, or if a
@@ -6725,7 +6778,12 @@ private:
 
     template <class E>
     constexpr void microstep_on(E const& e) {
-        bool const fired = event_microstep<model::template trigger_of<E>>(e);
+        constexpr int trigger = model::template trigger_of<E>;
+        bool fired = false;
+        if constexpr (defers)
+            fired = deferring_microstep<trigger>(e);
+        else
+            fired = backend().template microstep<trigger>(e);
         if constexpr (std::is_same_v<E, action_failed>)
             if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
     }
@@ -6847,29 +6905,28 @@ private:
         if (halted())
             return record(outcome::halted);
         if (!Backend::marks_running_lazily || !std::is_same_v<Observer, no_observer>) mark_running();
-        // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined.)
+        // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined,
+        // and a function for the body would be one more to instantiate per event type.)
         outcome settled = outcome::ignored;
 #if defined(__cpp_exceptions)
         try {
-            settled = dispatch_to_end<Trigger>(e);
+#endif
+            if constexpr (!std::is_same_v<Observer, no_observer>) notify<model, Observer>::dispatching(observer_.value, e);
+            latch_inputs(context_.value);
+            bool fired = false;
+            if constexpr (defers)
+                fired = deferring_microstep<Trigger>(e);
+            else
+                fired = backend().template microstep<Trigger>(e);
+            settled = finish(fired);
+            commit_outputs(context_.value);
+#if defined(__cpp_exceptions)
         } catch (...) {
             end_run_by_exception();
             throw;
         }
-#else
-        settled = dispatch_to_end<Trigger>(e);
 #endif
         return end_run(settled);
-    }
-
-    // The body of a dispatch (process), between its checks and its end.
-    template <int Trigger, class E>
-    constexpr outcome dispatch_to_end(E const& e) {
-        notify<model, Observer>::dispatching(observer_.value, e);
-        latch_inputs(context_.value);
-        outcome const settled = finish(event_microstep<Trigger>(e));
-        commit_outputs(context_.value);
-        return settled;
     }
 
     // The components' turns in a cycle: a component takes its turn if it was active when the
@@ -7295,8 +7352,7 @@ struct queued_events<Model, type_list<Raised...>> {
     static constexpr bool kept = is_done_event<E> || __is_same(E, action_failed) || index_in<E, Raised...>() >= 0;
     using type = std::conditional_t<(... && (index_of<Raised, typename Model::events> >= 0)),
                                     decltype([]<class... Es>(type_list<Es...>) {
-                                        return (type_list<>{} + ... +
-                                                std::conditional_t<kept<Es>, type_list<Es>, type_list<>>{});
+                                        return concat_t<std::conditional_t<kept<Es>, type_list<Es>, type_list<>>...>{};
                                     }(typename Model::events{})),
                                     typename Model::events>;
 };
@@ -7489,6 +7545,8 @@ class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, P
     using base::armed_;
     using base::observer_;
     using notify = detail::notify<model, Observer>;
+    // Without an observer no hook is called: the calls are not even instantiated.
+    static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
 
 public:
     using typename base::context_type;
@@ -7529,7 +7587,9 @@ private:
 
     template <int Row>
     constexpr auto const& row() const {
-        return base::template row<Row>();
+        // (The base holding the row, named directly: row_at would be one more function per row.)
+        using slot = detail::row_slot<static_cast<std::size_t>(Row), typename model::template row_at<Row>>;
+        return static_cast<slot const&>(this->chart().rows).row;
     }
     // The event e as row Row sees it: its own event type, a family of it, or bsc::any_event.
     // (Where E is the row's own event, e is passed as it is: most rows of most charts, and no
@@ -7546,29 +7606,46 @@ private:
     constexpr void exit_all() { exit_below<0>(); }
 
     // ---- entry and exit ----------------------------------------------------------------
+    // Whether entering (exiting) state s does anything: entry (exit) actions, the observer's
+    // hook, and on entry a final state's record or the arming of its timeouts. Most states of
+    // most charts do nothing, and are then not called at all: each call instantiates a function
+    // per state and per path, which is most of what a chart costs to compile.
+    static constexpr bool acts_on_entry(int s) {
+        return observed || plan::count_rows(detail::row_kind::entry, s) > 0 ||
+               tree.kinds[static_cast<std::size_t>(s)] == detail::kind::final_state ||
+               plan::timeout_slot_count[static_cast<std::size_t>(s)] > 0;
+    }
+    static constexpr bool acts_on_exit(int s) { return observed || plan::count_rows(detail::row_kind::exit, s) > 0; }
+    // Whether exiting the path from x up to, not including, d does anything.
+    static constexpr bool acts_on_exit_up(int x, int d) {
+        for (; x != d; x = tree.parent[static_cast<std::size_t>(x)])
+            if (acts_on_exit(x)) return true;
+        return false;
+    }
+
     // The entry (or exit) actions of state S, in declaration order.
     template <detail::row_kind K, int S>
     constexpr void run_state_actions() {
         constexpr auto const& actions = plan::template rows_of<K, S>;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (this->run([&] { row<actions[I]>().action(context_.value, queue_); }), ...);
+            (this->run(row<actions[I]>().action, context_.value, queue_), ...);
         }(std::make_index_sequence<actions.size()>{});
     }
 
     template <int S>
     constexpr void run_entry() {
-        run_state_actions<detail::row_kind::entry, S>();
+        if constexpr (plan::count_rows(detail::row_kind::entry, S) > 0) run_state_actions<detail::row_kind::entry, S>();
         if constexpr (tree.kinds[S] == detail::kind::final_state) this->entered_final(S);
         // Its timeouts count from its entry, at the time of the last cycle.
         constexpr int first_slot = plan::timeout_slot[S];
         for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = clock_;
-        notify::template entered<S>(observer_.value);
+        if constexpr (observed) notify::template entered<S>(observer_.value);
     }
 
     template <int S>
     constexpr void run_exit() {
-        run_state_actions<detail::row_kind::exit, S>();
-        notify::template exited<S>(observer_.value);
+        if constexpr (plan::count_rows(detail::row_kind::exit, S) > 0) run_state_actions<detail::row_kind::exit, S>();
+        if constexpr (observed) notify::template exited<S>(observer_.value);
     }
 
     template <int S, class F>
@@ -7609,8 +7686,14 @@ private:
     // Enters S and its default (or history) completion.
     template <int S>
     constexpr void enter_default() {
-        run_entry<S>();
-        enter_content<S>();
+        if constexpr (acts_on_entry(S)) run_entry<S>();
+        if constexpr (has_content(S)) enter_content<S>();
+    }
+
+    // Whether entering S goes on below it (a basic or final state has nothing more to enter).
+    static constexpr bool has_content(int s) {
+        return tree.kinds[static_cast<std::size_t>(s)] == detail::kind::composite ||
+               tree.kinds[static_cast<std::size_t>(s)] == detail::kind::parallel;
     }
 
     template <int S>
@@ -7628,7 +7711,7 @@ private:
                     enter_toward_all<S, -1 - S>();  // initial<A, B>: one state in each region
                 } else if constexpr (tree.initial_target[S] == init) {
                     set_active_child<S>(tree.ordinal[init]);
-                    enter_default<init>();
+                    if constexpr (acts_on_entry(init) || has_content(init)) enter_default<init>();
                 } else {
                     enter_toward<S, tree.initial_target[S]>();
                 }
@@ -7666,7 +7749,7 @@ private:
     // Deep history: re-enters S and the sub-configuration its bytes remember.
     template <int S>
     constexpr void enter_restore() {
-        run_entry<S>();
+        if constexpr (acts_on_entry(S)) run_entry<S>();
         constexpr auto k = tree.kinds[S];
         if constexpr (k == detail::kind::composite)
             with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
@@ -7692,16 +7775,17 @@ private:
             enter_history<c>();  // D, its composite, has been entered: now its history
         } else {
             set_active_child<D>(tree.ordinal[c]);
-            enter_path_node<c, Target>();
+            if constexpr (c != Target || acts_on_entry(c) || has_content(c)) enter_path_node<c, Target>();
         }
     }
     template <int C, int Target>
     constexpr void enter_path_node() {
-        run_entry<C>();
-        if constexpr (C == Target)
-            enter_content<C>();
-        else
+        if constexpr (acts_on_entry(C)) run_entry<C>();
+        if constexpr (C == Target) {
+            if constexpr (has_content(C)) enter_content<C>();
+        } else {
             enter_toward<C, Target>();
+        }
     }
 
     // Exits the active descendants of S, innermost first, in reverse document order.
@@ -7709,25 +7793,28 @@ private:
     constexpr void exit_below() {
         constexpr auto k = tree.kinds[S];
         if constexpr (k == detail::kind::composite || k == detail::kind::top) {
-            with_active_child<S>([&](auto c) {
-                exit_below<decltype(c)::value>();
-                run_exit<decltype(c)::value>();
-            });
+            with_active_child<S>([&](auto c) { exit_subtree<decltype(c)::value>(); });
         } else if constexpr (k == detail::kind::parallel) {
             constexpr auto const& children = plan::template children<S>;
             [&]<std::size_t... I>(std::index_sequence<I...>) {
-                ((exit_below<children[children.size() - 1 - I]>(), run_exit<children[children.size() - 1 - I]>()), ...);
+                (exit_subtree<children[children.size() - 1 - I]>(), ...);
             }
             (std::make_index_sequence<children.size()>{});
         }
+    }
+    // Exits the active descendants of S, then S.
+    template <int S>
+    constexpr void exit_subtree() {
+        if constexpr (has_content(S)) exit_below<S>();
+        if constexpr (acts_on_exit(S)) run_exit<S>();
     }
 
     // Exits the known path from basic state X up to, not including, D.
     template <int X, int D>
     constexpr void exit_up() {
         if constexpr (X != D) {
-            run_exit<X>();
-            exit_up<tree.parent[X], D>();
+            if constexpr (acts_on_exit(X)) run_exit<X>();
+            if constexpr (acts_on_exit_up(tree.parent[X], D)) exit_up<tree.parent[X], D>();
         }
     }
 
@@ -7737,9 +7824,9 @@ private:
         if constexpr (rows.guarded[Row]) {
             if constexpr (!plan::has_parallel) this->mark_running();
             if constexpr (sees_itself<Row, E>)
-                return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, e)); });
+                return this->test(row<Row>().guard, std::as_const(context_.value), e);
             else
-                return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, seen_by<Row>(e))); });
+                return this->test(row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e));
         } else {
             return true;
         }
@@ -7747,21 +7834,21 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, event_microstep)
-            notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
+        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, deferring_microstep)
+            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
             this->deferral_selected();
             return;
         } else if constexpr (base::defers) {
             this->transition_fired(rows.domain[Row] >= 0);
         }
         if constexpr (sees_itself<Row, E>) {
-            notify::template transition<Row>(observer_.value, row<Row>(), e);
+            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), e);
             if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-                this->run([&] { row<Row>().action(context_.value, e, queue_); });
+                this->run(row<Row>().action, context_.value, e, queue_);
         } else {
-            notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
+            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
             if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-                this->run([&] { row<Row>().action(context_.value, seen_by<Row>(e), queue_); });
+                this->run(row<Row>().action, context_.value, seen_by<Row>(e), queue_);
         }
     }
 
@@ -7816,11 +7903,12 @@ private:
     }
     template <int C, int Key>
     constexpr void enter_path_all() {
-        run_entry<C>();
-        if constexpr (is_target(C, Key))
-            enter_content<C>();
-        else
+        if constexpr (acts_on_entry(C)) run_entry<C>();
+        if constexpr (is_target(C, Key)) {
+            if constexpr (has_content(C)) enter_content<C>();
+        } else {
             enter_toward_all<C, Key>();
+        }
     }
 
     // Fires a transition selected at basic state Leaf, which no parallel state contains:
@@ -7829,7 +7917,7 @@ private:
     constexpr void fire_from(E const& e) {
         if constexpr (!plan::has_parallel) this->mark_running();  // else microstep has marked
         constexpr int d = rows.domain[Row];
-        if constexpr (d >= 0)
+        if constexpr (d >= 0 && acts_on_exit_up(Leaf, d))
             exit_up<Leaf, d>();
         run_action<Row>(e);
         run_entries<Row>();
@@ -7858,8 +7946,9 @@ private:
 
     template <int Leaf, int Trigger, int Row, class E, class Sel>
     constexpr bool try_row(E const& e, Sel& sel) {
-        if (!guard_holds<Row>(e))
-            return false;
+        if constexpr (rows.guarded[Row])
+            if (!guard_holds<Row>(e))
+                return false;
         if constexpr (!tree.under_parallel(Leaf) || fires_at_selection<Trigger>)
             fire_from<Leaf, Row>(e);
         else if constexpr (plan::template region_local<Trigger>)
@@ -7869,6 +7958,7 @@ private:
         return true;
     }
 
+    // The candidates of basic state Leaf on the trigger, in order, until one is taken.
     template <int Leaf, int Trigger, class E, class Sel>
     constexpr bool try_leaf(E const& e, Sel& sel) {
         constexpr auto const& candidates = plan::template candidates<Leaf, Trigger>;
@@ -7878,17 +7968,27 @@ private:
     }
 
     // Walks the active configuration below S, visiting only states relevant to the trigger.
+    // (A single candidate, or a single relevant child, the common cases, is reached without
+    // the helper that expands several: a function less to instantiate for each.)
     template <int S, int Trigger, class E, class Sel>
     constexpr bool select(E const& e, Sel& sel) {
         constexpr auto k = tree.kinds[S];
         if constexpr (!plan::template relevant<Trigger>[S]) {
             return false;
         } else if constexpr (k == detail::kind::basic || k == detail::kind::final_state) {
-            return try_leaf<S, Trigger>(e, sel);
+            constexpr auto const& candidates = plan::template candidates<S, Trigger>;
+            if constexpr (candidates.size() == 1)
+                return try_row<S, Trigger, candidates[0]>(e, sel);
+            else
+                return try_leaf<S, Trigger>(e, sel);
         } else if constexpr (k == detail::kind::parallel) {
             bool any = false;
             for_each_child<S>([&](auto c) { any = select<decltype(c)::value, Trigger>(e, sel) || any; });
             return any;
+        } else if constexpr (constexpr auto const& children = plan::template relevant_children<Trigger, S>;
+                             children.size() == 1) {
+            if (active_child<S>() != tree.ordinal[children[0]]) return false;
+            return select<children[0], Trigger>(e, sel);
         } else {
             bool any = false;
             with_relevant_active_child<Trigger, S>([&](auto c) { any = select<decltype(c)::value, Trigger>(e, sel); });
@@ -7971,7 +8071,8 @@ private:
             if constexpr (plan::has_parallel) this->mark_running();
             using sel_type = selection_for<Trigger>;
             sel_type sel;
-            bool const any = select<0, Trigger>(e, sel);
+            // From the root: the top above it has no byte and no transitions.
+            bool const any = select<root, Trigger>(e, sel);
             if constexpr (std::is_same_v<sel_type, component_selection>) {
                 if (any)
                     fire_components<Trigger>(e, sel);
@@ -8872,7 +8973,7 @@ private:
 
     bool guard_holds(std::int16_t t, void const* e) {
         auto const g = transitions[static_cast<std::size_t>(t)].guard;
-        return g == nullptr || this->test([&] { return g(this->chart(), this->context_.value, e); });
+        return g == nullptr || this->test(g, this->chart(), this->context_.value, e);
     }
 
     // The event a microstep processes, as the thunks of a transition receive it. Without
@@ -8930,14 +9031,14 @@ private:
         if constexpr (observed)
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_.value, this->chart(), e);
         if constexpr (base::defers) {
-            if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's event_microstep)
+            if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's deferring_microstep)
                 this->deferral_selected();
                 return;
             }
             this->transition_fired(transitions[static_cast<std::size_t>(t)].to != no_state);
         }
         if (auto const action = transitions[static_cast<std::size_t>(t)].action)
-            this->run([&] { action(this->chart(), this->context_.value, e, this->queue_); });
+            this->run(action, this->chart(), this->context_.value, e, this->queue_);
     }
 
     template <int Trigger, class E>

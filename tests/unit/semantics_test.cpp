@@ -61,6 +61,47 @@ TEST_CASE_TEMPLATE("a transition exits innermost first, runs its action, then en
 }
 
 namespace sem {
+struct B3;
+}  // namespace sem
+
+TEST_CASE_TEMPLATE("states with nothing to do on entry or exit are passed over, and the others on the path run in order", Backend, compiled, table) {
+    // Quiet and acting states alternate on every path, so that a state passed over in the
+    // middle of a path neither stops the path nor loses its byte.
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>,
+                             bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A2>)),
+                             bsc::composite<B>(bsc::initial<B1>, bsc::composite<B1>(bsc::initial<B2>), bsc::state<B3>)),
+        bsc::state<A2> + bsc::event<go> / log("action") = bsc::state<B2>,
+        bsc::state<B2> + bsc::event<back> = bsc::state<A>,
+        bsc::state<B> + bsc::event<tick> = bsc::state<B3>,
+        bsc::state<B3> + bsc::event<ping> = bsc::state<B1>,
+        bsc::state<A> + bsc::on_exit / log("exit A"), bsc::state<A2> + bsc::on_exit / log("exit A2"),
+        bsc::state<B1> + bsc::on_entry / log("enter B1"), bsc::state<B3> + bsc::on_entry / log("enter B3"));
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
+    CHECK(m.active_states().joined() == "Root A A1 A2");
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "exit A2 exit A action enter B1");
+    CHECK(m.active_states().joined() == "Root B B1 B2");
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);  // nothing on the way out or in
+    CHECK(m.context().log == "exit A2 exit A action enter B1");
+    CHECK(m.active_states().joined() == "Root A A1 A2");
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.dispatch(tick{}) == bsc::outcome::consumed);  // B2 and B1 exit quietly
+    CHECK(m.context().log == "exit A2 exit A action enter B1 exit A2 exit A action enter B1 enter B3");
+    CHECK(m.active_states().joined() == "Root B B3");
+    CHECK(m.dispatch(ping{}) == bsc::outcome::consumed);  // B1's default child, entered quietly
+    CHECK(m.active_states().joined() == "Root B B1 B2");
+
+    // An observer sees every state, quiet or not.
+    std::string trace;
+    machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> observed{chart, ctx{}, trace_observer{&trace}};
+    CHECK(trace == "+Root +A +A1 +A2");
+    trace.clear();
+    CHECK(observed.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(trace == "-A2 -A1 -A A2>B2 +B +B1 +B2");
+}
+
+namespace sem {
 struct C;
 struct C1;
 struct C2;

@@ -51,7 +51,7 @@ struct bad_action<action_fn<F>, Ctx, E, Raise> {
 };
 template <class... As, class Ctx, class E, class Raise>
 struct bad_action<action_seq<As...>, Ctx, E, Raise> {
-    using type = decltype((type_list<>{} + ... + typename bad_action<As, Ctx, E, Raise>::type{}));
+    using type = concat_t<typename bad_action<As, Ctx, E, Raise>::type...>;
 };
 template <class A, class Ctx, class Raise>
 struct bad_state_action {

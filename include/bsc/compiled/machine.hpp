@@ -54,6 +54,8 @@ class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, P
     using base::armed_;
     using base::observer_;
     using notify = detail::notify<model, Observer>;
+    // Without an observer no hook is called: the calls are not even instantiated.
+    static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
 
 public:
     using typename base::context_type;
@@ -94,7 +96,9 @@ private:
 
     template <int Row>
     constexpr auto const& row() const {
-        return base::template row<Row>();
+        // (The base holding the row, named directly: row_at would be one more function per row.)
+        using slot = detail::row_slot<static_cast<std::size_t>(Row), typename model::template row_at<Row>>;
+        return static_cast<slot const&>(this->chart().rows).row;
     }
     // The event e as row Row sees it: its own event type, a family of it, or bsc::any_event.
     // (Where E is the row's own event, e is passed as it is: most rows of most charts, and no
@@ -111,29 +115,46 @@ private:
     constexpr void exit_all() { exit_below<0>(); }
 
     // ---- entry and exit ----------------------------------------------------------------
+    // Whether entering (exiting) state s does anything: entry (exit) actions, the observer's
+    // hook, and on entry a final state's record or the arming of its timeouts. Most states of
+    // most charts do nothing, and are then not called at all: each call instantiates a function
+    // per state and per path, which is most of what a chart costs to compile.
+    static constexpr bool acts_on_entry(int s) {
+        return observed || plan::count_rows(detail::row_kind::entry, s) > 0 ||
+               tree.kinds[static_cast<std::size_t>(s)] == detail::kind::final_state ||
+               plan::timeout_slot_count[static_cast<std::size_t>(s)] > 0;
+    }
+    static constexpr bool acts_on_exit(int s) { return observed || plan::count_rows(detail::row_kind::exit, s) > 0; }
+    // Whether exiting the path from x up to, not including, d does anything.
+    static constexpr bool acts_on_exit_up(int x, int d) {
+        for (; x != d; x = tree.parent[static_cast<std::size_t>(x)])
+            if (acts_on_exit(x)) return true;
+        return false;
+    }
+
     // The entry (or exit) actions of state S, in declaration order.
     template <detail::row_kind K, int S>
     constexpr void run_state_actions() {
         constexpr auto const& actions = plan::template rows_of<K, S>;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (this->run([&] { row<actions[I]>().action(context_.value, queue_); }), ...);
+            (this->run(row<actions[I]>().action, context_.value, queue_), ...);
         }(std::make_index_sequence<actions.size()>{});
     }
 
     template <int S>
     constexpr void run_entry() {
-        run_state_actions<detail::row_kind::entry, S>();
+        if constexpr (plan::count_rows(detail::row_kind::entry, S) > 0) run_state_actions<detail::row_kind::entry, S>();
         if constexpr (tree.kinds[S] == detail::kind::final_state) this->entered_final(S);
         // Its timeouts count from its entry, at the time of the last cycle.
         constexpr int first_slot = plan::timeout_slot[S];
         for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = clock_;
-        notify::template entered<S>(observer_.value);
+        if constexpr (observed) notify::template entered<S>(observer_.value);
     }
 
     template <int S>
     constexpr void run_exit() {
-        run_state_actions<detail::row_kind::exit, S>();
-        notify::template exited<S>(observer_.value);
+        if constexpr (plan::count_rows(detail::row_kind::exit, S) > 0) run_state_actions<detail::row_kind::exit, S>();
+        if constexpr (observed) notify::template exited<S>(observer_.value);
     }
 
     template <int S, class F>
@@ -174,8 +195,14 @@ private:
     // Enters S and its default (or history) completion.
     template <int S>
     constexpr void enter_default() {
-        run_entry<S>();
-        enter_content<S>();
+        if constexpr (acts_on_entry(S)) run_entry<S>();
+        if constexpr (has_content(S)) enter_content<S>();
+    }
+
+    // Whether entering S goes on below it (a basic or final state has nothing more to enter).
+    static constexpr bool has_content(int s) {
+        return tree.kinds[static_cast<std::size_t>(s)] == detail::kind::composite ||
+               tree.kinds[static_cast<std::size_t>(s)] == detail::kind::parallel;
     }
 
     template <int S>
@@ -193,7 +220,7 @@ private:
                     enter_toward_all<S, -1 - S>();  // initial<A, B>: one state in each region
                 } else if constexpr (tree.initial_target[S] == init) {
                     set_active_child<S>(tree.ordinal[init]);
-                    enter_default<init>();
+                    if constexpr (acts_on_entry(init) || has_content(init)) enter_default<init>();
                 } else {
                     enter_toward<S, tree.initial_target[S]>();
                 }
@@ -231,7 +258,7 @@ private:
     // Deep history: re-enters S and the sub-configuration its bytes remember.
     template <int S>
     constexpr void enter_restore() {
-        run_entry<S>();
+        if constexpr (acts_on_entry(S)) run_entry<S>();
         constexpr auto k = tree.kinds[S];
         if constexpr (k == detail::kind::composite)
             with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
@@ -257,16 +284,17 @@ private:
             enter_history<c>();  // D, its composite, has been entered: now its history
         } else {
             set_active_child<D>(tree.ordinal[c]);
-            enter_path_node<c, Target>();
+            if constexpr (c != Target || acts_on_entry(c) || has_content(c)) enter_path_node<c, Target>();
         }
     }
     template <int C, int Target>
     constexpr void enter_path_node() {
-        run_entry<C>();
-        if constexpr (C == Target)
-            enter_content<C>();
-        else
+        if constexpr (acts_on_entry(C)) run_entry<C>();
+        if constexpr (C == Target) {
+            if constexpr (has_content(C)) enter_content<C>();
+        } else {
             enter_toward<C, Target>();
+        }
     }
 
     // Exits the active descendants of S, innermost first, in reverse document order.
@@ -274,25 +302,28 @@ private:
     constexpr void exit_below() {
         constexpr auto k = tree.kinds[S];
         if constexpr (k == detail::kind::composite || k == detail::kind::top) {
-            with_active_child<S>([&](auto c) {
-                exit_below<decltype(c)::value>();
-                run_exit<decltype(c)::value>();
-            });
+            with_active_child<S>([&](auto c) { exit_subtree<decltype(c)::value>(); });
         } else if constexpr (k == detail::kind::parallel) {
             constexpr auto const& children = plan::template children<S>;
             [&]<std::size_t... I>(std::index_sequence<I...>) {
-                ((exit_below<children[children.size() - 1 - I]>(), run_exit<children[children.size() - 1 - I]>()), ...);
+                (exit_subtree<children[children.size() - 1 - I]>(), ...);
             }
             (std::make_index_sequence<children.size()>{});
         }
+    }
+    // Exits the active descendants of S, then S.
+    template <int S>
+    constexpr void exit_subtree() {
+        if constexpr (has_content(S)) exit_below<S>();
+        if constexpr (acts_on_exit(S)) run_exit<S>();
     }
 
     // Exits the known path from basic state X up to, not including, D.
     template <int X, int D>
     constexpr void exit_up() {
         if constexpr (X != D) {
-            run_exit<X>();
-            exit_up<tree.parent[X], D>();
+            if constexpr (acts_on_exit(X)) run_exit<X>();
+            if constexpr (acts_on_exit_up(tree.parent[X], D)) exit_up<tree.parent[X], D>();
         }
     }
 
@@ -302,9 +333,9 @@ private:
         if constexpr (rows.guarded[Row]) {
             if constexpr (!plan::has_parallel) this->mark_running();
             if constexpr (sees_itself<Row, E>)
-                return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, e)); });
+                return this->test(row<Row>().guard, std::as_const(context_.value), e);
             else
-                return this->test([&] { return static_cast<bool>(row<Row>().guard(context_.value, seen_by<Row>(e))); });
+                return this->test(row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e));
         } else {
             return true;
         }
@@ -312,21 +343,21 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, event_microstep)
-            notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
+        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, deferring_microstep)
+            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
             this->deferral_selected();
             return;
         } else if constexpr (base::defers) {
             this->transition_fired(rows.domain[Row] >= 0);
         }
         if constexpr (sees_itself<Row, E>) {
-            notify::template transition<Row>(observer_.value, row<Row>(), e);
+            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), e);
             if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-                this->run([&] { row<Row>().action(context_.value, e, queue_); });
+                this->run(row<Row>().action, context_.value, e, queue_);
         } else {
-            notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
+            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
             if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-                this->run([&] { row<Row>().action(context_.value, seen_by<Row>(e), queue_); });
+                this->run(row<Row>().action, context_.value, seen_by<Row>(e), queue_);
         }
     }
 
@@ -381,11 +412,12 @@ private:
     }
     template <int C, int Key>
     constexpr void enter_path_all() {
-        run_entry<C>();
-        if constexpr (is_target(C, Key))
-            enter_content<C>();
-        else
+        if constexpr (acts_on_entry(C)) run_entry<C>();
+        if constexpr (is_target(C, Key)) {
+            if constexpr (has_content(C)) enter_content<C>();
+        } else {
             enter_toward_all<C, Key>();
+        }
     }
 
     // Fires a transition selected at basic state Leaf, which no parallel state contains:
@@ -394,7 +426,7 @@ private:
     constexpr void fire_from(E const& e) {
         if constexpr (!plan::has_parallel) this->mark_running();  // else microstep has marked
         constexpr int d = rows.domain[Row];
-        if constexpr (d >= 0)
+        if constexpr (d >= 0 && acts_on_exit_up(Leaf, d))
             exit_up<Leaf, d>();
         run_action<Row>(e);
         run_entries<Row>();
@@ -423,8 +455,9 @@ private:
 
     template <int Leaf, int Trigger, int Row, class E, class Sel>
     constexpr bool try_row(E const& e, Sel& sel) {
-        if (!guard_holds<Row>(e))
-            return false;
+        if constexpr (rows.guarded[Row])
+            if (!guard_holds<Row>(e))
+                return false;
         if constexpr (!tree.under_parallel(Leaf) || fires_at_selection<Trigger>)
             fire_from<Leaf, Row>(e);
         else if constexpr (plan::template region_local<Trigger>)
@@ -434,6 +467,7 @@ private:
         return true;
     }
 
+    // The candidates of basic state Leaf on the trigger, in order, until one is taken.
     template <int Leaf, int Trigger, class E, class Sel>
     constexpr bool try_leaf(E const& e, Sel& sel) {
         constexpr auto const& candidates = plan::template candidates<Leaf, Trigger>;
@@ -443,17 +477,27 @@ private:
     }
 
     // Walks the active configuration below S, visiting only states relevant to the trigger.
+    // (A single candidate, or a single relevant child, the common cases, is reached without
+    // the helper that expands several: a function less to instantiate for each.)
     template <int S, int Trigger, class E, class Sel>
     constexpr bool select(E const& e, Sel& sel) {
         constexpr auto k = tree.kinds[S];
         if constexpr (!plan::template relevant<Trigger>[S]) {
             return false;
         } else if constexpr (k == detail::kind::basic || k == detail::kind::final_state) {
-            return try_leaf<S, Trigger>(e, sel);
+            constexpr auto const& candidates = plan::template candidates<S, Trigger>;
+            if constexpr (candidates.size() == 1)
+                return try_row<S, Trigger, candidates[0]>(e, sel);
+            else
+                return try_leaf<S, Trigger>(e, sel);
         } else if constexpr (k == detail::kind::parallel) {
             bool any = false;
             for_each_child<S>([&](auto c) { any = select<decltype(c)::value, Trigger>(e, sel) || any; });
             return any;
+        } else if constexpr (constexpr auto const& children = plan::template relevant_children<Trigger, S>;
+                             children.size() == 1) {
+            if (active_child<S>() != tree.ordinal[children[0]]) return false;
+            return select<children[0], Trigger>(e, sel);
         } else {
             bool any = false;
             with_relevant_active_child<Trigger, S>([&](auto c) { any = select<decltype(c)::value, Trigger>(e, sel); });
@@ -536,7 +580,8 @@ private:
             if constexpr (plan::has_parallel) this->mark_running();
             using sel_type = selection_for<Trigger>;
             sel_type sel;
-            bool const any = select<0, Trigger>(e, sel);
+            // From the root: the top above it has no byte and no transitions.
+            bool const any = select<root, Trigger>(e, sel);
             if constexpr (std::is_same_v<sel_type, component_selection>) {
                 if (any)
                     fire_components<Trigger>(e, sel);

@@ -16,12 +16,37 @@ struct type_id {
     using type = T;
 };
 
+// (size is an enumerator, not a static data member: a member variable makes a symbol, which
+// the compiler names by spelling the list, for every list instantiated; the folds that build
+// lists instantiate one per prefix, so that for a large chart those names grew quadratically.)
 template <class... Ts>
 struct type_list {
-    static constexpr std::size_t size = sizeof...(Ts);
+    enum : std::size_t { size = sizeof...(Ts) };
 };
 
-// Concatenation, written as a fold: (type_list<>{} + ... + lists{}).
+// Concatenation of many lists: concat_t<Lists...>. A class, which makes no symbol: a function
+// of the lists (as operator+ below, folded) is a symbol per step of the fold, named by
+// spelling the list so far, and for a large chart building those names took quadratic time.
+template <class... Lists>
+struct concat {
+    using type = type_list<>;
+};
+template <class... As>
+struct concat<type_list<As...>> {
+    using type = type_list<As...>;
+};
+template <class... As, class... Bs, class... Rest>
+struct concat<type_list<As...>, type_list<Bs...>, Rest...> {
+    using type = typename concat<type_list<As..., Bs...>, Rest...>::type;
+};
+template <class... As, class... Bs, class... Cs, class... Ds, class... Rest>
+struct concat<type_list<As...>, type_list<Bs...>, type_list<Cs...>, type_list<Ds...>, Rest...> {
+    using type = typename concat<type_list<As..., Bs..., Cs..., Ds...>, Rest...>::type;
+};
+template <class... Lists>
+using concat_t = typename concat<Lists...>::type;
+
+// Concatenation of two lists, for folds over a few (detail::join_raised).
 template <class... As, class... Bs>
 constexpr type_list<As..., Bs...> operator+(type_list<As...>, type_list<Bs...>) {
     return {};

@@ -101,21 +101,25 @@ template <class Node>
 constexpr auto subtree_tags();
 template <class... C>
 constexpr auto subtree_tags_of(type_list<C...>) {
-    return (type_list<>{} + ... + subtree_tags<C>());
+    return concat_t<decltype(subtree_tags<C>())...>{};
 }
 template <class Node>
 constexpr auto subtree_tags() {
     return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
 }
-// Whether one of the arguments declares S below itself (S is then a deep initial's target).
+// Whether argument A declares S below itself; whether one of the arguments does (S is then a
+// deep initial's target). (A function of one argument, not a lambda inside declared_below,
+// whose symbol would spell every argument.)
+template <class S, class A>
+constexpr bool declares_below() {
+    if constexpr (is_node<A>)
+        return index_of<S, decltype(subtree_tags<A>())> >= 0;
+    else
+        return false;
+}
 template <class S, class... A>
 constexpr bool declared_below(type_list<A...>) {
-    return ([] {
-        if constexpr (is_node<A>)
-            return index_of<S, decltype(subtree_tags<A>())> >= 0;
-        else
-            return false;
-    }() || ...);
+    return (declares_below<S, A>() || ...);
 }
 
 // The child declarations an argument of composite<S>(...) contributes, in document order.
@@ -123,20 +127,22 @@ constexpr bool declared_below(type_list<A...>) {
 // initial), and no earlier initial<X> did. (The tags below are searched only for an initial
 // that is not a child: most charts never pay for it.)
 template <class A, bool FirstOfItsKind, class Args, class... Declared>
+constexpr auto children_from_initial() {
+    using S = typename tag_of<A>::type;
+    if constexpr ((std::is_same_v<S, Declared> || ...) || !FirstOfItsKind)
+        return type_list<>{};
+    else if constexpr (declared_below<S>(Args{}))
+        return type_list<>{};
+    else
+        return type_list<leaf_node<S, kind::basic, true>>{};
+}
+template <class A>
 constexpr auto children_from() {
     if constexpr (is_node<A>)
         return type_list<A>{};
     else if constexpr (is_state_ref<A>)
         return type_list<leaf_node<typename A::tag, kind::basic>>{};
-    else if constexpr (is_initial_marker<A>) {
-        using S = typename tag_of<A>::type;
-        if constexpr ((std::is_same_v<S, Declared> || ...) || !FirstOfItsKind)
-            return type_list<>{};
-        else if constexpr (declared_below<S>(Args{}))
-            return type_list<>{};
-        else
-            return type_list<leaf_node<S, kind::basic, true>>{};
-    } else
+    else
         return type_list<>{};
 }
 
@@ -180,12 +186,24 @@ constexpr history history_from() {
     return h;
 }
 
+// The children argument I (A) contributes. Only an initial<X> needs the other arguments; the
+// choice is a class, which makes no symbol, so that an ordinary argument's functions do not
+// spell every argument in their names (building those names was a quadratic part of a large
+// chart's compile time).
+template <class A, std::size_t I, class Args, class Declared, bool = is_initial_marker<A>>
+struct children_of_argument {
+    using type = decltype(children_from<A>());
+};
+template <class A, std::size_t I, class... Args, class... Declared>
+struct children_of_argument<A, I, type_list<Args...>, type_list<Declared...>, true> {
+    using type = decltype(children_from_initial<A, first_of_its_kind<I, Args...>(), type_list<Args...>, Declared...>());
+};
+
 template <class Tags, class Seq, class... A>
 struct composite_children;
 template <class... Declared, std::size_t... I, class... A>
 struct composite_children<type_list<Declared...>, std::index_sequence<I...>, A...> {
-    using type = decltype((type_list<>{} + ... +
-                           children_from<A, first_of_its_kind<I, A...>(), type_list<A...>, Declared...>()));
+    using type = concat_t<typename children_of_argument<A, I, type_list<A...>, type_list<Declared...>>::type...>;
 };
 
 }  // namespace bsc::detail
@@ -245,10 +263,10 @@ constexpr auto composite(A...) {
     } else if constexpr (history_markers > 1) {
         detail::report<error::conflicting_history_markers<S>>();
     }
-    using declared = decltype((detail::type_list<>{} + ... + detail::declared_tag<A>()));
+    using declared = detail::concat_t<decltype(detail::declared_tag<A>())...>;
     using children = typename detail::composite_children<declared, std::index_sequence_for<A...>, A...>::type;
-    using initials = decltype((detail::type_list<>{} + ... + detail::initials_from<A>()));
-    using more_initials = decltype((detail::type_list<>{} + ... + detail::more_initials_from<A>()));
+    using initials = detail::concat_t<decltype(detail::initials_from<A>())...>;
+    using more_initials = detail::concat_t<decltype(detail::more_initials_from<A>())...>;
     static_assert(more_initials::size <= 3, "bsc::initial takes at most 4 states");
     return detail::composite_node<S, detail::history_from<A...>(), initials, children, more_initials>{};
 }
@@ -264,7 +282,7 @@ constexpr auto parallel(A...) {
     } else if constexpr (sizeof...(A) == 0) {
         detail::report<error::empty_parallel_state<S>>();
     }
-    using children = decltype((detail::type_list<>{} + ... + detail::children_from<A, true, detail::type_list<>>()));
+    using children = detail::concat_t<decltype(detail::children_from<A>())...>;
     return detail::parallel_node<S, children>{};
 }
 

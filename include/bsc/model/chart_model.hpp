@@ -33,7 +33,7 @@ template <class Node>
 constexpr auto flatten();
 template <class... C>
 constexpr auto flatten_all(type_list<C...>) {
-    return (type_list<>{} + ... + flatten<C>());
+    return concat_t<decltype(flatten<C>())...>{};
 }
 template <class Node>
 constexpr auto flatten() {
@@ -107,6 +107,26 @@ struct topology {
     }
 };
 
+// Whether one of a node's children is a history state.
+template <class... C>
+constexpr bool has_history_child(type_list<C...>) {
+    return ((C::node_kind == kind::history) || ...);
+}
+
+// Links the next child of node i into the sibling chain.
+template <std::size_t N>
+constexpr void link_child(topology<N>& t, std::size_t i, int& previous, int child) {
+    if (previous < 0)
+        t.first_child[i] = child;
+    else
+        t.next_sibling[static_cast<std::size_t>(previous)] = child;
+    previous = child;
+}
+
+// (The walk over a node's children is a fold over plain calls, with no lambda per child: a
+// lambda's symbol spells its enclosing function's arguments, here the node with all its
+// children, and building those names for every child of a large composite was a quadratic part
+// of a chart's compile time.)
 template <class Node, std::size_t N>
 constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, int depth) {
     t.kinds[static_cast<std::size_t>(index)] = Node::node_kind;
@@ -129,17 +149,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     int count = 0;
     int previous = -1;
     [&]<class... C>(type_list<C...>) {
-        (
-            [&] {
-                int const child = next;
-                if (previous < 0)
-                    t.first_child[i] = child;
-                else
-                    t.next_sibling[static_cast<std::size_t>(previous)] = child;
-                previous = child;
-                next = fill_topology<C>(t, child, index, count++, depth + 1);
-            }(),
-            ...);
+        ((link_child(t, i, previous, next), next = fill_topology<C>(t, next, index, count++, depth + 1)), ...);
         if constexpr (Node::initials::size == 1) {
             using initial_tag = at<0, typename Node::initials>;
             constexpr int pos = index_in<initial_tag, typename C::tag...>();
@@ -168,7 +178,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
             ((t.more_initial[i][k++] = index_of<More, tags> > 0 ? index + index_of<More, tags> : unknown_state), ...);
         }(typename Node::more_initials{});
     // The defaults of its history states, which lie anywhere below Node (-1 if not found).
-    if constexpr (Node::node_kind == kind::composite)
+    if constexpr (Node::node_kind == kind::composite && has_history_child(typename Node::children{}))
         [&]<class... C>(type_list<C...>) {
             (
                 [&] {
@@ -257,16 +267,15 @@ struct event_list<type_list<Rows...>> {
     using with_repeats = type_list<typename trigger_event<Rows>::type...>;
     template <std::size_t... I>
     static auto first_occurrences(std::index_sequence<I...>)
-        -> decltype((type_list<>{} + ... +
-                     std::conditional_t<index_of<typename trigger_event<Rows>::type, with_repeats> == static_cast<int>(I),
-                                        type_list<typename trigger_event<Rows>::type>, type_list<>>{}));
+        -> concat_t<std::conditional_t<index_of<typename trigger_event<Rows>::type, with_repeats> == static_cast<int>(I),
+                                       type_list<typename trigger_event<Rows>::type>, type_list<>>...>;
     using all = decltype(first_occurrences(std::index_sequence_for<Rows...>{}));
 };
 template <class List>
 struct drop_void;
 template <class... Es>
 struct drop_void<type_list<Es...>> {
-    using type = decltype((type_list<>{} + ... + std::conditional_t<std::is_void_v<Es>, type_list<>, type_list<Es>>{}));
+    using type = concat_t<std::conditional_t<std::is_void_v<Es>, type_list<>, type_list<Es>>...>;
 };
 
 template <class Tag, class Tags>

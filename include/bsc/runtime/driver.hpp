@@ -503,14 +503,36 @@ protected:
     // The outcome of the last run as kept (outcome::ignored if the policy keeps none).
     constexpr outcome kept_outcome() const { return static_cast<outcome>(bits(status_) & ~(running_bit | failed_bit)); }
 
-    // Runs a guard (true if it holds) or a block of an action: what either throws goes to fail().
-    template <class Guard>
-    constexpr bool test(Guard&& guard) {
-        return test_guard(guard, [this](std::exception_ptr error) { fail(std::move(error)); });
+    // Evaluates guard(args...) (true if it holds) or calls action(args...): what either throws
+    // goes to fail(), and a guard that throws does not hold (SCXML: a condition that raises an
+    // error is false). The callable and its arguments come separately, not as a lambda around
+    // the call, and the try blocks are written out, not handed a handler as the table engine's
+    // run_block is: two functions less to instantiate for every guard and action of the chart
+    // (three: the arguments are forwarded with a cast, not with std::forward).
+    template <class Guard, class... Args>
+    constexpr bool test(Guard const& guard, Args&&... args) {
+#if defined(__cpp_exceptions)
+        try {
+            return static_cast<bool>(guard(static_cast<Args&&>(args)...));
+        } catch (...) {
+            fail(std::current_exception());
+            return false;
+        }
+#else
+        return static_cast<bool>(guard(static_cast<Args&&>(args)...));
+#endif
     }
-    template <class Block>
-    constexpr void run(Block&& block) {
-        run_block(block, [this](std::exception_ptr error) { fail(std::move(error)); });
+    template <class Action, class... Args>
+    constexpr void run(Action const& action, Args&&... args) {
+#if defined(__cpp_exceptions)
+        try {
+            action(static_cast<Args&&>(args)...);
+        } catch (...) {
+            fail(std::current_exception());
+        }
+#else
+        action(static_cast<Args&&>(args)...);
+#endif
     }
     // The same, for code that knows the machine only by address (the table engine's thunks).
     failure_sink sink() {
@@ -543,19 +565,16 @@ private:
     constexpr Backend& backend() { return static_cast<Backend&>(*this); }
     constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
 
-    // One microstep on an event (not on the eventless pseudo-event): where the chart defers,
-    // the event is kept if only deferring rows took it.
+    // One microstep on an event (not on the eventless pseudo-event) where the chart defers:
+    // the event is kept if only deferring rows took it. (Elsewhere the callers go straight to
+    // the back end's microstep, without a function between to instantiate per event.)
     template <int Trigger, class E>
-    constexpr bool event_microstep(E const& e) {
-        if constexpr (defers) {
-            deferral_.requested = false;
-            deferral_.other_fired = false;
-            bool const fired = backend().template microstep<Trigger>(e);
-            if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
-            return fired;
-        } else {
-            return backend().template microstep<Trigger>(e);
-        }
+    constexpr bool deferring_microstep(E const& e) {
+        deferral_.requested = false;
+        deferral_.other_fired = false;
+        bool const fired = backend().template microstep<Trigger>(e);
+        if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
+        return fired;
     }
 
     // Processes one deferred event again, if a round of retries is under way, or if a
@@ -578,7 +597,12 @@ private:
 
     template <class E>
     constexpr void microstep_on(E const& e) {
-        bool const fired = event_microstep<model::template trigger_of<E>>(e);
+        constexpr int trigger = model::template trigger_of<E>;
+        bool fired = false;
+        if constexpr (defers)
+            fired = deferring_microstep<trigger>(e);
+        else
+            fired = backend().template microstep<trigger>(e);
         if constexpr (std::is_same_v<E, action_failed>)
             if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
     }
@@ -700,29 +724,28 @@ private:
         if (halted())
             return record(outcome::halted);
         if (!Backend::marks_running_lazily || !std::is_same_v<Observer, no_observer>) mark_running();
-        // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined.)
+        // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined,
+        // and a function for the body would be one more to instantiate per event type.)
         outcome settled = outcome::ignored;
 #if defined(__cpp_exceptions)
         try {
-            settled = dispatch_to_end<Trigger>(e);
+#endif
+            if constexpr (!std::is_same_v<Observer, no_observer>) notify<model, Observer>::dispatching(observer_.value, e);
+            latch_inputs(context_.value);
+            bool fired = false;
+            if constexpr (defers)
+                fired = deferring_microstep<Trigger>(e);
+            else
+                fired = backend().template microstep<Trigger>(e);
+            settled = finish(fired);
+            commit_outputs(context_.value);
+#if defined(__cpp_exceptions)
         } catch (...) {
             end_run_by_exception();
             throw;
         }
-#else
-        settled = dispatch_to_end<Trigger>(e);
 #endif
         return end_run(settled);
-    }
-
-    // The body of a dispatch (process), between its checks and its end.
-    template <int Trigger, class E>
-    constexpr outcome dispatch_to_end(E const& e) {
-        notify<model, Observer>::dispatching(observer_.value, e);
-        latch_inputs(context_.value);
-        outcome const settled = finish(event_microstep<Trigger>(e));
-        commit_outputs(context_.value);
-        return settled;
     }
 
     // The components' turns in a cycle: a component takes its turn if it was active when the

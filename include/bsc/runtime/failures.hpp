@@ -72,21 +72,4 @@ constexpr void run_block(Block&& block, OnFailure&& on_failure) {
 #endif
 }
 
-// Evaluates a guard; a guard that throws does not hold (SCXML: a condition that raises an
-// error is false), and its failure goes to on_failure.
-template <class Guard, class OnFailure>
-constexpr bool test_guard(Guard&& guard, OnFailure&& on_failure) {
-#if defined(__cpp_exceptions)
-    try {
-        return guard();
-    } catch (...) {
-        on_failure(std::current_exception());
-        return false;
-    }
-#else
-    (void)on_failure;
-    return guard();
-#endif
-}
-
 }  // namespace bsc::detail

@@ -55,8 +55,7 @@ struct queued_events<Model, type_list<Raised...>> {
     static constexpr bool kept = is_done_event<E> || __is_same(E, action_failed) || index_in<E, Raised...>() >= 0;
     using type = std::conditional_t<(... && (index_of<Raised, typename Model::events> >= 0)),
                                     decltype([]<class... Es>(type_list<Es...>) {
-                                        return (type_list<>{} + ... +
-                                                std::conditional_t<kept<Es>, type_list<Es>, type_list<>>{});
+                                        return concat_t<std::conditional_t<kept<Es>, type_list<Es>, type_list<>>...>{};
                                     }(typename Model::events{})),
                                     typename Model::events>;
 };

@@ -367,7 +367,7 @@ private:
 
     bool guard_holds(std::int16_t t, void const* e) {
         auto const g = transitions[static_cast<std::size_t>(t)].guard;
-        return g == nullptr || this->test([&] { return g(this->chart(), this->context_.value, e); });
+        return g == nullptr || this->test(g, this->chart(), this->context_.value, e);
     }
 
     // The event a microstep processes, as the thunks of a transition receive it. Without
@@ -425,14 +425,14 @@ private:
         if constexpr (observed)
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_.value, this->chart(), e);
         if constexpr (base::defers) {
-            if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's event_microstep)
+            if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's deferring_microstep)
                 this->deferral_selected();
                 return;
             }
             this->transition_fired(transitions[static_cast<std::size_t>(t)].to != no_state);
         }
         if (auto const action = transitions[static_cast<std::size_t>(t)].action)
-            this->run([&] { action(this->chart(), this->context_.value, e, this->queue_); });
+            this->run(action, this->chart(), this->context_.value, e, this->queue_);
     }
 
     template <int Trigger, class E>
