@@ -65,11 +65,6 @@ namespace bsc::detail {
 template <class...>
 inline constexpr bool dependent_false = false;
 
-template <class T>
-struct type_id {
-    using type = T;
-};
-
 // (size is an enumerator, not a static data member: a member variable makes a symbol, which
 // the compiler names by spelling the list, for every list instantiated; the folds that build
 // lists instantiate one per prefix, so that for a large chart those names grew quadratically.)
@@ -78,11 +73,13 @@ struct type_list {
     enum : std::size_t { size = sizeof...(Ts) };
 };
 
-// Concatenation of many lists: concat_t<Lists...>. A class, which makes no symbol: a function
-// of the lists (as operator+ below, folded) is a symbol per step of the fold, named by
+// Concatenation of lists: concat_t<Lists...>. A class, which makes no symbol: a function of
+// the lists (an operator+ folded over them, say) is a symbol per step of the fold, named by
 // spelling the list so far, and for a large chart building those names took quadratic time.
 template <class... Lists>
-struct concat {
+struct concat;
+template <>
+struct concat<> {
     using type = type_list<>;
 };
 template <class... As>
@@ -99,24 +96,6 @@ struct concat<type_list<As...>, type_list<Bs...>, type_list<Cs...>, type_list<Ds
 };
 template <class... Lists>
 using concat_t = typename concat<Lists...>::type;
-
-// Concatenation of two lists, for folds over a few (detail::join_raised).
-template <class... As, class... Bs>
-constexpr type_list<As..., Bs...> operator+(type_list<As...>, type_list<Bs...>) {
-    return {};
-}
-
-// Append-if-absent, written as a fold: (type_list<>{} | ... | type_id<T>{}).
-template <class... Ts, class U>
-constexpr auto operator|(type_list<Ts...>, type_id<U>) {
-    if constexpr ((std::is_same_v<Ts, U> || ...))
-        return type_list<Ts...>{};
-    else
-        return type_list<Ts..., U>{};
-}
-
-template <class... Ts>
-using unique_list = decltype((type_list<>{} | ... | type_id<Ts>{}));
 
 // O(1) access by position after one O(n) instantiation per list.
 template <std::size_t I, class T>
@@ -1049,22 +1028,19 @@ struct raise_fn {
 };
 
 // What an action can raise: a type_list of the event types, or raises_anything for an action
-// that is handed the raise argument and may raise whatever it likes. Joined with type_list's
-// operator+ (detail/meta.hpp) as a flat fold, raises_anything absorbing the rest.
+// that is handed the raise argument and may raise whatever it likes. Joined by join_raised,
+// raises_anything absorbing the rest.
 struct raises_anything {};
-template <class... Es>
-constexpr raises_anything operator+(type_list<Es...>, raises_anything) {
-    return {};
-}
-template <class... Es>
-constexpr raises_anything operator+(raises_anything, type_list<Es...>) {
-    return {};
-}
-constexpr raises_anything operator+(raises_anything, raises_anything) {
-    return {};
-}
+template <bool Anything, class... Lists>
+struct join_raised_of {
+    using type = raises_anything;
+};
 template <class... Lists>
-using join_raised = decltype((type_list<>{} + ... + Lists{}));
+struct join_raised_of<false, Lists...> {
+    using type = concat_t<Lists...>;
+};
+template <class... Lists>
+using join_raised = typename join_raised_of<(std::is_same_v<Lists, raises_anything> || ...), Lists...>::type;
 
 // (A sequence, and an entry or exit action wrapping one of bsc's, are looked into; any other
 // action raises anything if may_raise says it can raise at all.)
@@ -1791,7 +1767,7 @@ constexpr auto subtree_tags_of(type_list<C...>) {
 }
 template <class Node>
 constexpr auto subtree_tags() {
-    return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
+    return concat_t<type_list<typename Node::tag>, decltype(subtree_tags_of(typename Node::children{}))>{};
 }
 // Whether argument A declares S below itself; whether one of the arguments does (S is then a
 // deep initial's target). (A function of one argument, not a lambda inside declared_below,
@@ -2119,7 +2095,7 @@ constexpr auto flatten_all(type_list<C...>) {
 }
 template <class Node>
 constexpr auto flatten() {
-    return type_list<Node>{} + flatten_all(typename Node::children{});
+    return concat_t<type_list<Node>, decltype(flatten_all(typename Node::children{}))>{};
 }
 
 template <class List>
@@ -3509,11 +3485,11 @@ template <class G, class Ctx, class E>
 struct bad_guard<not_guard<G>, Ctx, E> : bad_guard<G, Ctx, E> {};
 template <class L, class R, class Ctx, class E>
 struct bad_guard<and_guard<L, R>, Ctx, E> {
-    using type = decltype(typename bad_guard<L, Ctx, E>::type{} + typename bad_guard<R, Ctx, E>::type{});
+    using type = concat_t<typename bad_guard<L, Ctx, E>::type, typename bad_guard<R, Ctx, E>::type>;
 };
 template <class L, class R, class Ctx, class E>
 struct bad_guard<or_guard<L, R>, Ctx, E> {
-    using type = decltype(typename bad_guard<L, Ctx, E>::type{} + typename bad_guard<R, Ctx, E>::type{});
+    using type = concat_t<typename bad_guard<L, Ctx, E>::type, typename bad_guard<R, Ctx, E>::type>;
 };
 
 // The same for actions; Raise is the queue a machine of the default policy hands them.
@@ -3986,12 +3962,12 @@ constexpr auto check_chart() {
         return check_structure<Chart>();
     else
         // Each check runs, so one build reports every kind of problem it finds.
-        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_several_targets<Chart>() + check_initial_actions<Chart>() +
-               check_deferrals<Chart>() +
-               check_event_families<Chart>() +
-               check_determinism<Chart>() + check_dead_transitions<Chart>() +
-               check_reachability<Chart>() + check_livelock<Chart>() +
-               check_signatures<Chart>();
+        return concat_t<decltype(check_orthogonality<Chart>()), decltype(check_local_targets<Chart>()),
+                        decltype(check_several_targets<Chart>()), decltype(check_initial_actions<Chart>()),
+                        decltype(check_deferrals<Chart>()), decltype(check_event_families<Chart>()),
+                        decltype(check_determinism<Chart>()), decltype(check_dead_transitions<Chart>()),
+                        decltype(check_reachability<Chart>()), decltype(check_livelock<Chart>()),
+                        decltype(check_signatures<Chart>())>{};
 }
 
 }  // namespace bsc::detail
@@ -6350,6 +6326,9 @@ protected:
     static constexpr auto const& rows = model::rows;
     static constexpr int root = layout::root;
     static constexpr auto state_count = static_cast<std::size_t>(model::N);
+    // Whether the machine has an observer. Without one no hook is called, and the back ends do
+    // not even instantiate the calls.
+    static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
 
 public:
     using chart_type = std::remove_cv_t<Chart>;
@@ -6720,9 +6699,12 @@ protected:
         return {this, [](void* machine, std::exception_ptr error) { static_cast<driver*>(machine)->fail(std::move(error)); }};
     }
 
+    // Row Row of the chart. (Read from the base that holds it, named directly: row_at would
+    // be one more function to instantiate per row.)
     template <int Row>
     constexpr auto const& row() const {
-        return row_at<static_cast<std::size_t>(Row)>(chart().rows);
+        using slot = row_slot<static_cast<std::size_t>(Row), typename model::template row_at<Row>>;
+        return static_cast<slot const&>(chart().rows).row;
     }
 
     // Whether state s is active, read from the bytes; outermost first, so one pass suffices.
@@ -6904,14 +6886,14 @@ private:
         start_without_failure();
         if (halted())
             return record(outcome::halted);
-        if (!Backend::marks_running_lazily || !std::is_same_v<Observer, no_observer>) mark_running();
+        if (!Backend::marks_running_lazily || observed) mark_running();
         // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined,
         // and a function for the body would be one more to instantiate per event type.)
         outcome settled = outcome::ignored;
 #if defined(__cpp_exceptions)
         try {
 #endif
-            if constexpr (!std::is_same_v<Observer, no_observer>) notify<model, Observer>::dispatching(observer_.value, e);
+            if constexpr (observed) notify<model, Observer>::dispatching(observer_.value, e);
             latch_inputs(context_.value);
             bool fired = false;
             if constexpr (defers)
@@ -7545,8 +7527,7 @@ class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, P
     using base::armed_;
     using base::observer_;
     using notify = detail::notify<model, Observer>;
-    // Without an observer no hook is called: the calls are not even instantiated.
-    static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
+    using base::observed;
 
 public:
     using typename base::context_type;
@@ -7585,12 +7566,6 @@ private:
         }
     }
 
-    template <int Row>
-    constexpr auto const& row() const {
-        // (The base holding the row, named directly: row_at would be one more function per row.)
-        using slot = detail::row_slot<static_cast<std::size_t>(Row), typename model::template row_at<Row>>;
-        return static_cast<slot const&>(this->chart().rows).row;
-    }
     // The event e as row Row sees it: its own event type, a family of it, or bsc::any_event.
     // (Where E is the row's own event, e is passed as it is: most rows of most charts, and no
     // conversion to instantiate.)
@@ -7628,7 +7603,7 @@ private:
     constexpr void run_state_actions() {
         constexpr auto const& actions = plan::template rows_of<K, S>;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (this->run(row<actions[I]>().action, context_.value, queue_), ...);
+            (this->run(this->template row<actions[I]>().action, context_.value, queue_), ...);
         }(std::make_index_sequence<actions.size()>{});
     }
 
@@ -7690,11 +7665,13 @@ private:
         if constexpr (has_content(S)) enter_content<S>();
     }
 
-    // Whether entering S goes on below it (a basic or final state has nothing more to enter).
+    // Whether entering S goes on below it (a basic or final state has nothing more to enter);
+    // whether entering S by default does anything at all.
     static constexpr bool has_content(int s) {
         return tree.kinds[static_cast<std::size_t>(s)] == detail::kind::composite ||
                tree.kinds[static_cast<std::size_t>(s)] == detail::kind::parallel;
     }
+    static constexpr bool acts_on_default_entry(int s) { return acts_on_entry(s) || has_content(s); }
 
     template <int S>
     constexpr void enter_content() {
@@ -7711,7 +7688,7 @@ private:
                     enter_toward_all<S, -1 - S>();  // initial<A, B>: one state in each region
                 } else if constexpr (tree.initial_target[S] == init) {
                     set_active_child<S>(tree.ordinal[init]);
-                    if constexpr (acts_on_entry(init) || has_content(init)) enter_default<init>();
+                    if constexpr (acts_on_default_entry(init)) enter_default<init>();
                 } else {
                     enter_toward<S, tree.initial_target[S]>();
                 }
@@ -7775,7 +7752,7 @@ private:
             enter_history<c>();  // D, its composite, has been entered: now its history
         } else {
             set_active_child<D>(tree.ordinal[c]);
-            if constexpr (c != Target || acts_on_entry(c) || has_content(c)) enter_path_node<c, Target>();
+            if constexpr (c != Target || acts_on_default_entry(c)) enter_path_node<c, Target>();
         }
     }
     template <int C, int Target>
@@ -7819,36 +7796,35 @@ private:
     }
 
     // ---- transitions -------------------------------------------------------------------
+    // Whether the guard of row Row holds. (Called for guarded rows only: an unguarded row holds,
+    // and a call would instantiate a function for nothing.)
     template <int Row, class E>
     constexpr bool guard_holds(E const& e) {
-        if constexpr (rows.guarded[Row]) {
-            if constexpr (!plan::has_parallel) this->mark_running();
-            if constexpr (sees_itself<Row, E>)
-                return this->test(row<Row>().guard, std::as_const(context_.value), e);
-            else
-                return this->test(row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e));
-        } else {
-            return true;
-        }
+        static_assert(rows.guarded[Row]);
+        if constexpr (!plan::has_parallel) this->mark_running();
+        if constexpr (sees_itself<Row, E>)
+            return this->test(this->template row<Row>().guard, std::as_const(context_.value), e);
+        else
+            return this->test(this->template row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e));
     }
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
         if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, deferring_microstep)
-            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
+            if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), seen_by<Row>(e));
             this->deferral_selected();
             return;
         } else if constexpr (base::defers) {
             this->transition_fired(rows.domain[Row] >= 0);
         }
         if constexpr (sees_itself<Row, E>) {
-            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), e);
-            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-                this->run(row<Row>().action, context_.value, e, queue_);
+            if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), e);
+            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(this->template row<Row>().action)>, detail::no_action>)
+                this->run(this->template row<Row>().action, context_.value, e, queue_);
         } else {
-            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
-            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-                this->run(row<Row>().action, context_.value, seen_by<Row>(e), queue_);
+            if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), seen_by<Row>(e));
+            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(this->template row<Row>().action)>, detail::no_action>)
+                this->run(this->template row<Row>().action, context_.value, seen_by<Row>(e), queue_);
         }
     }
 
@@ -7937,7 +7913,7 @@ private:
     // when no observer could see the order of exits and entries change.
     template <int Trigger>
     static constexpr bool fires_at_selection =
-        plan::template fires_at_selection<Trigger> && std::is_same_v<Observer, no_observer>;
+        plan::template fires_at_selection<Trigger> && !observed;
 
     template <int Trigger>
     using selection_for = std::conditional_t<
@@ -8089,10 +8065,13 @@ private:
     constexpr bool condition_holds() {
         if constexpr (rows.trigger[Row] <= detail::timeout_trigger_id(0)) {
             constexpr auto slot = static_cast<std::size_t>(plan::row_timeout_slot[Row]);
-            if (!detail::has_elapsed(armed_[slot], clock_, row<Row>().trigger_value.delay))
+            if (!detail::has_elapsed(armed_[slot], clock_, this->template row<Row>().trigger_value.delay))
                 return false;
         }
-        return guard_holds<Row>(eventless{});
+        if constexpr (rows.guarded[Row])
+            return guard_holds<Row>(eventless{});
+        else
+            return true;
     }
 
     template <int Row>
@@ -8720,7 +8699,7 @@ class machine : public bsc::detail::driver<machine<Chart, Policy, Observer>, Cha
     friend base;
     static constexpr bool marks_running_lazily = false;  // a dispatch is marked running throughout
     using hooks = observer_hooks<Chart, Policy, Observer>;
-    static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
+    using base::observed;
 
 public:
     using typename base::context_type;

@@ -254,12 +254,12 @@ constexpr auto check_chart() {
         return check_structure<Chart>();
     else
         // Each check runs, so one build reports every kind of problem it finds.
-        return check_orthogonality<Chart>() + check_local_targets<Chart>() + check_several_targets<Chart>() + check_initial_actions<Chart>() +
-               check_deferrals<Chart>() +
-               check_event_families<Chart>() +
-               check_determinism<Chart>() + check_dead_transitions<Chart>() +
-               check_reachability<Chart>() + check_livelock<Chart>() +
-               check_signatures<Chart>();
+        return concat_t<decltype(check_orthogonality<Chart>()), decltype(check_local_targets<Chart>()),
+                        decltype(check_several_targets<Chart>()), decltype(check_initial_actions<Chart>()),
+                        decltype(check_deferrals<Chart>()), decltype(check_event_families<Chart>()),
+                        decltype(check_determinism<Chart>()), decltype(check_dead_transitions<Chart>()),
+                        decltype(check_reachability<Chart>()), decltype(check_livelock<Chart>()),
+                        decltype(check_signatures<Chart>())>{};
 }
 
 }  // namespace bsc::detail

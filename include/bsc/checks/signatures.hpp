@@ -33,11 +33,11 @@ template <class G, class Ctx, class E>
 struct bad_guard<not_guard<G>, Ctx, E> : bad_guard<G, Ctx, E> {};
 template <class L, class R, class Ctx, class E>
 struct bad_guard<and_guard<L, R>, Ctx, E> {
-    using type = decltype(typename bad_guard<L, Ctx, E>::type{} + typename bad_guard<R, Ctx, E>::type{});
+    using type = concat_t<typename bad_guard<L, Ctx, E>::type, typename bad_guard<R, Ctx, E>::type>;
 };
 template <class L, class R, class Ctx, class E>
 struct bad_guard<or_guard<L, R>, Ctx, E> {
-    using type = decltype(typename bad_guard<L, Ctx, E>::type{} + typename bad_guard<R, Ctx, E>::type{});
+    using type = concat_t<typename bad_guard<L, Ctx, E>::type, typename bad_guard<R, Ctx, E>::type>;
 };
 
 // The same for actions; Raise is the queue a machine of the default policy hands them.

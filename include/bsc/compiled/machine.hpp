@@ -54,8 +54,7 @@ class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, P
     using base::armed_;
     using base::observer_;
     using notify = detail::notify<model, Observer>;
-    // Without an observer no hook is called: the calls are not even instantiated.
-    static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
+    using base::observed;
 
 public:
     using typename base::context_type;
@@ -94,12 +93,6 @@ private:
         }
     }
 
-    template <int Row>
-    constexpr auto const& row() const {
-        // (The base holding the row, named directly: row_at would be one more function per row.)
-        using slot = detail::row_slot<static_cast<std::size_t>(Row), typename model::template row_at<Row>>;
-        return static_cast<slot const&>(this->chart().rows).row;
-    }
     // The event e as row Row sees it: its own event type, a family of it, or bsc::any_event.
     // (Where E is the row's own event, e is passed as it is: most rows of most charts, and no
     // conversion to instantiate.)
@@ -137,7 +130,7 @@ private:
     constexpr void run_state_actions() {
         constexpr auto const& actions = plan::template rows_of<K, S>;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (this->run(row<actions[I]>().action, context_.value, queue_), ...);
+            (this->run(this->template row<actions[I]>().action, context_.value, queue_), ...);
         }(std::make_index_sequence<actions.size()>{});
     }
 
@@ -199,11 +192,13 @@ private:
         if constexpr (has_content(S)) enter_content<S>();
     }
 
-    // Whether entering S goes on below it (a basic or final state has nothing more to enter).
+    // Whether entering S goes on below it (a basic or final state has nothing more to enter);
+    // whether entering S by default does anything at all.
     static constexpr bool has_content(int s) {
         return tree.kinds[static_cast<std::size_t>(s)] == detail::kind::composite ||
                tree.kinds[static_cast<std::size_t>(s)] == detail::kind::parallel;
     }
+    static constexpr bool acts_on_default_entry(int s) { return acts_on_entry(s) || has_content(s); }
 
     template <int S>
     constexpr void enter_content() {
@@ -220,7 +215,7 @@ private:
                     enter_toward_all<S, -1 - S>();  // initial<A, B>: one state in each region
                 } else if constexpr (tree.initial_target[S] == init) {
                     set_active_child<S>(tree.ordinal[init]);
-                    if constexpr (acts_on_entry(init) || has_content(init)) enter_default<init>();
+                    if constexpr (acts_on_default_entry(init)) enter_default<init>();
                 } else {
                     enter_toward<S, tree.initial_target[S]>();
                 }
@@ -284,7 +279,7 @@ private:
             enter_history<c>();  // D, its composite, has been entered: now its history
         } else {
             set_active_child<D>(tree.ordinal[c]);
-            if constexpr (c != Target || acts_on_entry(c) || has_content(c)) enter_path_node<c, Target>();
+            if constexpr (c != Target || acts_on_default_entry(c)) enter_path_node<c, Target>();
         }
     }
     template <int C, int Target>
@@ -328,36 +323,35 @@ private:
     }
 
     // ---- transitions -------------------------------------------------------------------
+    // Whether the guard of row Row holds. (Called for guarded rows only: an unguarded row holds,
+    // and a call would instantiate a function for nothing.)
     template <int Row, class E>
     constexpr bool guard_holds(E const& e) {
-        if constexpr (rows.guarded[Row]) {
-            if constexpr (!plan::has_parallel) this->mark_running();
-            if constexpr (sees_itself<Row, E>)
-                return this->test(row<Row>().guard, std::as_const(context_.value), e);
-            else
-                return this->test(row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e));
-        } else {
-            return true;
-        }
+        static_assert(rows.guarded[Row]);
+        if constexpr (!plan::has_parallel) this->mark_running();
+        if constexpr (sees_itself<Row, E>)
+            return this->test(this->template row<Row>().guard, std::as_const(context_.value), e);
+        else
+            return this->test(this->template row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e));
     }
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
         if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, deferring_microstep)
-            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
+            if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), seen_by<Row>(e));
             this->deferral_selected();
             return;
         } else if constexpr (base::defers) {
             this->transition_fired(rows.domain[Row] >= 0);
         }
         if constexpr (sees_itself<Row, E>) {
-            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), e);
-            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-                this->run(row<Row>().action, context_.value, e, queue_);
+            if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), e);
+            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(this->template row<Row>().action)>, detail::no_action>)
+                this->run(this->template row<Row>().action, context_.value, e, queue_);
         } else {
-            if constexpr (observed) notify::template transition<Row>(observer_.value, row<Row>(), seen_by<Row>(e));
-            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row<Row>().action)>, detail::no_action>)
-                this->run(row<Row>().action, context_.value, seen_by<Row>(e), queue_);
+            if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), seen_by<Row>(e));
+            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(this->template row<Row>().action)>, detail::no_action>)
+                this->run(this->template row<Row>().action, context_.value, seen_by<Row>(e), queue_);
         }
     }
 
@@ -446,7 +440,7 @@ private:
     // when no observer could see the order of exits and entries change.
     template <int Trigger>
     static constexpr bool fires_at_selection =
-        plan::template fires_at_selection<Trigger> && std::is_same_v<Observer, no_observer>;
+        plan::template fires_at_selection<Trigger> && !observed;
 
     template <int Trigger>
     using selection_for = std::conditional_t<
@@ -598,10 +592,13 @@ private:
     constexpr bool condition_holds() {
         if constexpr (rows.trigger[Row] <= detail::timeout_trigger_id(0)) {
             constexpr auto slot = static_cast<std::size_t>(plan::row_timeout_slot[Row]);
-            if (!detail::has_elapsed(armed_[slot], clock_, row<Row>().trigger_value.delay))
+            if (!detail::has_elapsed(armed_[slot], clock_, this->template row<Row>().trigger_value.delay))
                 return false;
         }
-        return guard_holds<Row>(eventless{});
+        if constexpr (rows.guarded[Row])
+            return guard_holds<Row>(eventless{});
+        else
+            return true;
     }
 
     template <int Row>

@@ -11,11 +11,6 @@ namespace bsc::detail {
 template <class...>
 inline constexpr bool dependent_false = false;
 
-template <class T>
-struct type_id {
-    using type = T;
-};
-
 // (size is an enumerator, not a static data member: a member variable makes a symbol, which
 // the compiler names by spelling the list, for every list instantiated; the folds that build
 // lists instantiate one per prefix, so that for a large chart those names grew quadratically.)
@@ -24,11 +19,13 @@ struct type_list {
     enum : std::size_t { size = sizeof...(Ts) };
 };
 
-// Concatenation of many lists: concat_t<Lists...>. A class, which makes no symbol: a function
-// of the lists (as operator+ below, folded) is a symbol per step of the fold, named by
+// Concatenation of lists: concat_t<Lists...>. A class, which makes no symbol: a function of
+// the lists (an operator+ folded over them, say) is a symbol per step of the fold, named by
 // spelling the list so far, and for a large chart building those names took quadratic time.
 template <class... Lists>
-struct concat {
+struct concat;
+template <>
+struct concat<> {
     using type = type_list<>;
 };
 template <class... As>
@@ -45,24 +42,6 @@ struct concat<type_list<As...>, type_list<Bs...>, type_list<Cs...>, type_list<Ds
 };
 template <class... Lists>
 using concat_t = typename concat<Lists...>::type;
-
-// Concatenation of two lists, for folds over a few (detail::join_raised).
-template <class... As, class... Bs>
-constexpr type_list<As..., Bs...> operator+(type_list<As...>, type_list<Bs...>) {
-    return {};
-}
-
-// Append-if-absent, written as a fold: (type_list<>{} | ... | type_id<T>{}).
-template <class... Ts, class U>
-constexpr auto operator|(type_list<Ts...>, type_id<U>) {
-    if constexpr ((std::is_same_v<Ts, U> || ...))
-        return type_list<Ts...>{};
-    else
-        return type_list<Ts..., U>{};
-}
-
-template <class... Ts>
-using unique_list = decltype((type_list<>{} | ... | type_id<Ts>{}));
 
 // O(1) access by position after one O(n) instantiation per list.
 template <std::size_t I, class T>

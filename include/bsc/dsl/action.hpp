@@ -137,22 +137,19 @@ struct raise_fn {
 };
 
 // What an action can raise: a type_list of the event types, or raises_anything for an action
-// that is handed the raise argument and may raise whatever it likes. Joined with type_list's
-// operator+ (detail/meta.hpp) as a flat fold, raises_anything absorbing the rest.
+// that is handed the raise argument and may raise whatever it likes. Joined by join_raised,
+// raises_anything absorbing the rest.
 struct raises_anything {};
-template <class... Es>
-constexpr raises_anything operator+(type_list<Es...>, raises_anything) {
-    return {};
-}
-template <class... Es>
-constexpr raises_anything operator+(raises_anything, type_list<Es...>) {
-    return {};
-}
-constexpr raises_anything operator+(raises_anything, raises_anything) {
-    return {};
-}
+template <bool Anything, class... Lists>
+struct join_raised_of {
+    using type = raises_anything;
+};
 template <class... Lists>
-using join_raised = decltype((type_list<>{} + ... + Lists{}));
+struct join_raised_of<false, Lists...> {
+    using type = concat_t<Lists...>;
+};
+template <class... Lists>
+using join_raised = typename join_raised_of<(std::is_same_v<Lists, raises_anything> || ...), Lists...>::type;
 
 // (A sequence, and an entry or exit action wrapping one of bsc's, are looked into; any other
 // action raises anything if may_raise says it can raise at all.)

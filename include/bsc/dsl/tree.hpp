@@ -105,7 +105,7 @@ constexpr auto subtree_tags_of(type_list<C...>) {
 }
 template <class Node>
 constexpr auto subtree_tags() {
-    return type_list<typename Node::tag>{} + subtree_tags_of(typename Node::children{});
+    return concat_t<type_list<typename Node::tag>, decltype(subtree_tags_of(typename Node::children{}))>{};
 }
 // Whether argument A declares S below itself; whether one of the arguments does (S is then a
 // deep initial's target). (A function of one argument, not a lambda inside declared_below,

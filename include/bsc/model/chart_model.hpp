@@ -37,7 +37,7 @@ constexpr auto flatten_all(type_list<C...>) {
 }
 template <class Node>
 constexpr auto flatten() {
-    return type_list<Node>{} + flatten_all(typename Node::children{});
+    return concat_t<type_list<Node>, decltype(flatten_all(typename Node::children{}))>{};
 }
 
 template <class List>

@@ -169,6 +169,9 @@ protected:
     static constexpr auto const& rows = model::rows;
     static constexpr int root = layout::root;
     static constexpr auto state_count = static_cast<std::size_t>(model::N);
+    // Whether the machine has an observer. Without one no hook is called, and the back ends do
+    // not even instantiate the calls.
+    static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
 
 public:
     using chart_type = std::remove_cv_t<Chart>;
@@ -539,9 +542,12 @@ protected:
         return {this, [](void* machine, std::exception_ptr error) { static_cast<driver*>(machine)->fail(std::move(error)); }};
     }
 
+    // Row Row of the chart. (Read from the base that holds it, named directly: row_at would
+    // be one more function to instantiate per row.)
     template <int Row>
     constexpr auto const& row() const {
-        return row_at<static_cast<std::size_t>(Row)>(chart().rows);
+        using slot = row_slot<static_cast<std::size_t>(Row), typename model::template row_at<Row>>;
+        return static_cast<slot const&>(chart().rows).row;
     }
 
     // Whether state s is active, read from the bytes; outermost first, so one pass suffices.
@@ -723,14 +729,14 @@ private:
         start_without_failure();
         if (halted())
             return record(outcome::halted);
-        if (!Backend::marks_running_lazily || !std::is_same_v<Observer, no_observer>) mark_running();
+        if (!Backend::marks_running_lazily || observed) mark_running();
         // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined,
         // and a function for the body would be one more to instantiate per event type.)
         outcome settled = outcome::ignored;
 #if defined(__cpp_exceptions)
         try {
 #endif
-            if constexpr (!std::is_same_v<Observer, no_observer>) notify<model, Observer>::dispatching(observer_.value, e);
+            if constexpr (observed) notify<model, Observer>::dispatching(observer_.value, e);
             latch_inputs(context_.value);
             bool fired = false;
             if constexpr (defers)

@@ -114,7 +114,7 @@ class machine : public bsc::detail::driver<machine<Chart, Policy, Observer>, Cha
     friend base;
     static constexpr bool marks_running_lazily = false;  // a dispatch is marked running throughout
     using hooks = observer_hooks<Chart, Policy, Observer>;
-    static constexpr bool observed = !std::is_same_v<Observer, no_observer>;
+    using base::observed;
 
 public:
     using typename base::context_type;
