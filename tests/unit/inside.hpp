@@ -38,6 +38,8 @@ template <class... Ts>
 using type_list = bsc::detail::type_list<Ts...>;
 template <std::size_t I, class List>
 using at = bsc::detail::at<I, List>;
+template <class... Lists>
+using concat_t = bsc::detail::concat_t<Lists...>;
 using kind = bsc::detail::kind;
 using history = bsc::detail::history;
 using row_kind = bsc::detail::row_kind;
