@@ -130,7 +130,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
     } else if constexpr (!detail::is_compound_root<Root>()) {
         return detail::rejected_chart<Context, error::root_must_be_composite<Root>>{};
     } else if constexpr (!(detail::is_row<Rows> && ...)) {
-        constexpr int bad = detail::index_in<std::false_type, std::bool_constant<detail::is_row<Rows>>...>();
+        constexpr int bad = detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_row<Rows>>...>>::value;
         return detail::rejected_chart<Context,
                                       error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>>{};
     } else {

@@ -3,9 +3,10 @@
 // to step(now) by the caller, so simulations and tests are deterministic. The caller's time
 // may start anywhere (negative times included): a machine's clock starts at its first cycle.
 
-#include <chrono>
 #include <cstdint>
 #include <limits>
+
+#include <bsc/detail/chrono.hpp>
 
 namespace bsc {
 

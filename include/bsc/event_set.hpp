@@ -107,7 +107,7 @@ public:
     /// The number of event E (bsc::error::not_an_event_of_the_chart if E is none of `events`).
     template <class E>
     static constexpr std::size_t number_of = [] {
-        constexpr int n = detail::index_of<E, sendable>;
+        constexpr int n = detail::position_in<E, sendable>::value;
         if constexpr (n < 0) detail::report<error::not_an_event_of_the_chart<E>>();
         return static_cast<std::size_t>(n < 0 ? 0 : n);
     }();

@@ -52,8 +52,8 @@
 #define BSC_SINGLE_INCLUDE_BSC_DETAIL_DELAY_LABEL_HPP
 // A duration as short exact text, for the exports' timeout labels and the logger's times.
 
-#include <chrono>
 #include <string>
+
 
 namespace bsc::detail {
 

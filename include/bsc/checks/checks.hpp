@@ -136,7 +136,7 @@ constexpr auto check_several_targets() {
 template <class Chart>
 constexpr auto check_deferrals() {
     using model = chart_model<Chart>;
-    constexpr int row = find_invalid_deferral(model::rows, index_of<any_event, typename model::events>);
+    constexpr int row = find_invalid_deferral(model::rows, position_in<any_event, typename model::events>::value);
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
         return type_list<row_error<Chart, row, error::invalid_deferral<typename R::source, typename trigger_type<R>::type>>>{};

@@ -10,7 +10,7 @@ namespace bsc::detail {
 // The second declaration of a state declared twice, or -1.
 template <class... Tags>
 constexpr int find_duplicate(type_list<Tags...>) {
-    constexpr int first[] = {index_in<Tags, Tags...>()..., 0};
+    constexpr int first[] = {position_in<Tags, type_list<Tags...>>::value..., 0};
     for (int i = 0; i < static_cast<int>(sizeof...(Tags)); ++i)
         if (first[i] != i)
             return i;

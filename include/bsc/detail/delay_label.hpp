@@ -1,8 +1,9 @@
 #pragma once
 // A duration as short exact text, for the exports' timeout labels and the logger's times.
 
-#include <chrono>
 #include <string>
+
+#include <bsc/detail/chrono.hpp>
 
 namespace bsc::detail {
 

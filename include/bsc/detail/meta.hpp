@@ -3,6 +3,7 @@
 // Everything heavier than this is done by constexpr functions over arrays.
 
 #include <cstddef>
+#include <initializer_list>
 #include <type_traits>
 #include <utility>
 
@@ -56,11 +57,10 @@ template <std::size_t I, class T>
 indexed<I, T> select_indexed(indexed<I, T>);
 
 // The position of T among the bases of an indexer, found by overload resolution: no
-// instantiation per element, so n lookups in a list of n cost O(n), not O(n^2).
+// instantiation per element, so n lookups in a list of n cost O(n), not O(n^2). Declared only:
+// it is called in decltype, and answers with the type of its result.
 template <class T, std::size_t I>
-constexpr std::size_t position_by_type(indexed<I, T> const*) {
-    return I;
-}
+std::integral_constant<int, static_cast<int>(I)> position_by_type(indexed<I, T> const*);
 
 template <class List>
 struct indexer_of;
@@ -69,31 +69,31 @@ struct indexer_of<type_list<Ts...>> {
     using type = indexer<std::index_sequence_for<Ts...>, Ts...>;
 };
 
-// Position of the first T in List, or -1. Instantiated with the list as one type, so that n
-// lookups in a list of n do not each spell out the n elements.
-template <class T, class List>
-constexpr int index_of_impl() {
-    using index = typename indexer_of<List>::type;
-    if constexpr (requires { position_by_type<T>(static_cast<index const*>(nullptr)); }) {
-        return static_cast<int>(position_by_type<T>(static_cast<index const*>(nullptr)));
-    } else {  // absent, or present more than once (the base is ambiguous): scan
-        return []<class... Ts>(type_list<Ts...>) {
-            constexpr bool same[] = {std::is_same_v<T, Ts>..., false};
-            for (std::size_t i = 0; i < sizeof...(Ts); ++i)
-                if (same[i])
-                    return static_cast<int>(i);
-            return -1;
-        }(List{});
+// The position of the first true among the flags, or -1.
+constexpr int first_true(std::initializer_list<bool> flags) {
+    int i = 0;
+    for (bool flag : flags) {
+        if (flag) return i;
+        ++i;
     }
+    return -1;
 }
-template <class T, class List>
-inline constexpr int index_of = index_of_impl<T, List>();
 
-// Position of the first T in Ts..., or -1.
+// Position of the first T in List, or -1: position_in<T, List>::value. A class, not a function
+// or a variable: those are symbols, which the compiler names by spelling the list, once per
+// lookup, and n lookups in a list of n made names of quadratic total length.
+template <class T, class List>
+struct scan_for;
 template <class T, class... Ts>
-constexpr int index_in() {
-    return index_of<T, type_list<Ts...>>;
-}
+struct scan_for<T, type_list<Ts...>> {
+    enum : int { value = first_true({__is_same(T, Ts)...}) };
+};
+template <class T, class List, class = void>
+struct position_in : scan_for<T, List> {};  // absent, or present twice (the base is ambiguous)
+template <class T, class List>
+struct position_in<T, List,
+                   std::void_t<decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr)))>>
+    : decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr))) {};
 
 template <std::size_t I, class List>
 struct at_impl;

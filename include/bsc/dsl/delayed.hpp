@@ -3,10 +3,10 @@
 // machine's pending events (runtime/delayed_events.hpp) through the raise argument that every
 // action receives; a chart that uses them gets a queue with slots for them (runtime/queue_for.hpp).
 
-#include <chrono>
 #include <type_traits>
 #include <utility>
 
+#include <bsc/detail/chrono.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/duration.hpp>

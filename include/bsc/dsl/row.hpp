@@ -2,7 +2,6 @@
 // The chart's second table: transition rows `source + trigger [guard] / action = target`,
 // and entry/exit rows `state<S> + on_entry / action`.
 
-#include <chrono>
 #include <cstddef>
 #include <cstdlib>
 #include <stdexcept>
@@ -11,6 +10,7 @@
 #include <utility>
 
 #include <bsc/duration.hpp>
+#include <bsc/detail/chrono.hpp>
 #include <bsc/error.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>

@@ -113,7 +113,7 @@ constexpr auto subtree_tags() {
 template <class S, class A>
 constexpr bool declares_below() {
     if constexpr (is_node<A>)
-        return index_of<S, decltype(subtree_tags<A>())> >= 0;
+        return position_in<S, decltype(subtree_tags<A>())>::value >= 0;
     else
         return false;
 }
@@ -149,7 +149,7 @@ constexpr auto children_from() {
 template <std::size_t I, class... A>
 constexpr bool first_of_its_kind() {
     using list = type_list<A...>;
-    return index_of<at<I, list>, list> == static_cast<int>(I);
+    return position_in<at<I, list>, list>::value == static_cast<int>(I);
 }
 
 template <class A>
@@ -256,9 +256,8 @@ constexpr auto composite(A...) {
     constexpr int history_markers = (0 + ... + int{detail::is_history_marker<A>});
     if constexpr (!all_valid) {
         constexpr int bad =
-            detail::index_in<std::false_type,
-                             std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
-                                                detail::is_initial_marker<A> || detail::is_history_marker<A>>...>();
+            detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
+                                                detail::is_initial_marker<A> || detail::is_history_marker<A>>...>>::value;
         detail::report<error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
     } else if constexpr (history_markers > 1) {
         detail::report<error::conflicting_history_markers<S>>();
@@ -277,7 +276,7 @@ constexpr auto parallel(A...) {
     constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A>)&&...);
     if constexpr (!all_valid) {
         constexpr int bad =
-            detail::index_in<std::false_type, std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>();
+            detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>>::value;
         detail::report<error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
     } else if constexpr (sizeof...(A) == 0) {
         detail::report<error::empty_parallel_state<S>>();

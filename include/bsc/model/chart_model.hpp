@@ -152,7 +152,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
         ((link_child(t, i, previous, next), next = fill_topology<C>(t, next, index, count++, depth + 1)), ...);
         if constexpr (Node::initials::size == 1) {
             using initial_tag = at<0, typename Node::initials>;
-            constexpr int pos = index_in<initial_tag, typename C::tag...>();
+            constexpr int pos = position_in<initial_tag, type_list<typename C::tag...>>::value;
             if constexpr (pos >= 0) {
                 int c = t.first_child[i];
                 for (int k = 0; k < pos; ++k) c = t.next_sibling[static_cast<std::size_t>(c)];
@@ -160,7 +160,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
                 t.initial_target[i] = c;
             } else {
                 // A deep initial: a descendant further down, numbered in document order below Node.
-                constexpr int offset = index_of<initial_tag, typename tags_of<decltype(flatten<Node>())>::type>;
+                constexpr int offset = position_in<initial_tag, typename tags_of<decltype(flatten<Node>())>::type>::value;
                 if (offset > 0) {
                     t.initial_target[i] = index + offset;
                     t.initial[i] = t.child_toward(index, index + offset);
@@ -175,7 +175,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
         [&]<class... More>(type_list<More...>) {
             using tags = typename tags_of<decltype(flatten<Node>())>::type;
             std::size_t k = 0;
-            ((t.more_initial[i][k++] = index_of<More, tags> > 0 ? index + index_of<More, tags> : unknown_state), ...);
+            ((t.more_initial[i][k++] = position_in<More, tags>::value > 0 ? index + position_in<More, tags>::value : unknown_state), ...);
         }(typename Node::more_initials{});
     // The defaults of its history states, which lie anywhere below Node (-1 if not found).
     if constexpr (Node::node_kind == kind::composite && has_history_child(typename Node::children{}))
@@ -184,8 +184,8 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
                 [&] {
                     if constexpr (C::node_kind == kind::history) {
                         using tags = typename tags_of<decltype(flatten<Node>())>::type;
-                        constexpr int h = index_of<typename C::tag, tags>;
-                        constexpr int offset = index_of<typename C::default_state, tags>;
+                        constexpr int h = position_in<typename C::tag, tags>::value;
+                        constexpr int offset = position_in<typename C::default_state, tags>::value;
                         if (offset > 0 && index + offset != index + h) {
                             t.initial_target[static_cast<std::size_t>(index + h)] = index + offset;
                             t.initial[static_cast<std::size_t>(index + h)] = t.child_toward(index, index + offset);
@@ -267,7 +267,7 @@ struct event_list<type_list<Rows...>> {
     using with_repeats = type_list<typename trigger_event<Rows>::type...>;
     template <std::size_t... I>
     static auto first_occurrences(std::index_sequence<I...>)
-        -> concat_t<std::conditional_t<index_of<typename trigger_event<Rows>::type, with_repeats> == static_cast<int>(I),
+        -> concat_t<std::conditional_t<position_in<typename trigger_event<Rows>::type, with_repeats>::value == static_cast<int>(I),
                                        type_list<typename trigger_event<Rows>::type>, type_list<>>...>;
     using all = decltype(first_occurrences(std::index_sequence_for<Rows...>{}));
 };
@@ -283,7 +283,7 @@ constexpr int state_index() {
     if constexpr (std::is_same_v<Tag, no_target>)
         return no_state;
     else {
-        constexpr int i = index_of<Tag, Tags>;
+        constexpr int i = position_in<Tag, Tags>::value;
         return i < 0 ? unknown_state : i;
     }
 }
@@ -344,7 +344,7 @@ struct chart_model {
                     r.local[i] = Rs::local;
                     r.defers[i] = Rs::defers;
                     using E = typename trigger_event<Rs>::type;
-                    if constexpr (!std::is_void_v<E>) r.trigger[i] = index_of<E, events>;
+                    if constexpr (!std::is_void_v<E>) r.trigger[i] = position_in<E, events>::value;
                     if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
                 }
                 for (int& m : r.more_targets[i]) m = no_state;
@@ -369,7 +369,7 @@ struct chart_model {
     template <int I>
     using row_at = at<static_cast<std::size_t>(I), row_types>;
     template <class S>
-    static constexpr int index_of_state = index_of<S, tags>;
+    static constexpr int index_of_state = position_in<S, tags>::value;
     // Whether some event of the chart has a family (a base class among the chart's events, or
     // bsc::any_event): only then can an event take rows of another type.
     static constexpr bool has_families = event_families<events>::any;

@@ -95,7 +95,7 @@ struct event_families<type_list<Us...>> {
     // (-1: none; -2: its families are not a chain).
     template <class E>
     static constexpr int trigger_of() {
-        constexpr int own = index_in<E, Us...>();
+        constexpr int own = position_in<E, type_list<Us...>>::value;
         if constexpr (own >= 0)
             return own;
         else if constexpr (!has_family<E>)

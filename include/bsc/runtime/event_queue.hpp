@@ -59,8 +59,8 @@ private:
 // family (model/event_families.hpp): the rows that take it see no more of it than that. -1: none.
 template <class E, class... Es>
 constexpr int queued_index(type_list<Es...>) {
-    if constexpr (index_in<E, Es...>() >= 0)
-        return index_in<E, Es...>();
+    if constexpr (position_in<E, type_list<Es...>>::value >= 0)
+        return position_in<E, type_list<Es...>>::value;
     else
         return event_families<type_list<Es...>>::template trigger_of<E>();
 }

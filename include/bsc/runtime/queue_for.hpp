@@ -52,8 +52,8 @@ struct queued_events {
 template <class Model, class... Raised>
 struct queued_events<Model, type_list<Raised...>> {
     template <class E>
-    static constexpr bool kept = is_done_event<E> || __is_same(E, action_failed) || index_in<E, Raised...>() >= 0;
-    using type = std::conditional_t<(... && (index_of<Raised, typename Model::events> >= 0)),
+    static constexpr bool kept = is_done_event<E> || __is_same(E, action_failed) || position_in<E, type_list<Raised...>>::value >= 0;
+    using type = std::conditional_t<(... && (position_in<Raised, typename Model::events>::value >= 0)),
                                     decltype([]<class... Es>(type_list<Es...>) {
                                         return concat_t<std::conditional_t<kept<Es>, type_list<Es>, type_list<>>...>{};
                                     }(typename Model::events{})),
