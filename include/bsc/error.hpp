@@ -248,6 +248,16 @@ struct last_outcome_not_kept {
     }
 };
 
+template <class Policy>
+struct clock_not_kept {
+    constexpr ~clock_not_kept() {
+        static_assert(detail::dependent_false<clock_not_kept>,
+                      "bsc: this machine keeps no clock: its policy has keep_clock = false and its chart has no "
+                      "timeout, timer or delayed event, so nothing it does depends on time; keep the time of the "
+                      "last step() yourself, or use a policy with keep_clock = true (bsc::default_policy)");
+    }
+};
+
 template <class First, class Second>
 struct duplicate_event_name {
     constexpr ~duplicate_event_name() {

@@ -52,6 +52,11 @@ struct default_policy {
     /// true: the machine keeps each run's outcome for last_outcome(). false: it keeps nothing
     /// (dispatch and step still return it); last_outcome() and last_failure() do not compile.
     static constexpr bool keep_last_outcome = true;
+    /// true: every machine keeps the time of its last cycle, for now() and for
+    /// step_report::clock_went_backwards. false: only a machine whose chart needs time keeps it
+    /// (a timeout row, a bsc::timer in the context, a delayed event); in the others now() does
+    /// not compile, clock_went_backwards stays false, and the machine is 8 bytes smaller.
+    static constexpr bool keep_clock = true;
 };
 
 /// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],
@@ -62,14 +67,16 @@ struct scan_policy : default_policy {
     static constexpr bool settle_eventless = false;
 };
 
-/// The policy of a dispatch with nothing but the chart's own work: no test for a reentrant
-/// call and no record of the last outcome (docs/benchmarks.md, analysis section 8: on a flat
-/// chart with noexcept actions, a dispatch is then as short as a hand-written switch). For
-/// code whose guards, actions and observer never call the machine back, and that reads each
-/// outcome from dispatch's return value.
+/// The policy of a machine with nothing but the chart's own work: no test for a reentrant
+/// call, no record of the last outcome, and no clock unless the chart needs time
+/// (docs/benchmarks.md, analysis section 8: on a flat chart with noexcept actions, a dispatch
+/// is then as short as a hand-written switch, and the machine is its configuration and its
+/// context). For code whose guards, actions and observer never call the machine back, that
+/// reads each outcome from dispatch's return value, and that keeps its own time.
 struct lean_policy : default_policy {
     static constexpr bool refuse_reentry = false;
     static constexpr bool keep_last_outcome = false;
+    static constexpr bool keep_clock = false;
 };
 
 /// What one BSC execution cycle (`step(now)`) did, on either back end.

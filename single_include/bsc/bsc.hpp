@@ -406,6 +406,16 @@ struct last_outcome_not_kept {
     }
 };
 
+template <class Policy>
+struct clock_not_kept {
+    constexpr ~clock_not_kept() {
+        static_assert(detail::dependent_false<clock_not_kept>,
+                      "bsc: this machine keeps no clock: its policy has keep_clock = false and its chart has no "
+                      "timeout, timer or delayed event, so nothing it does depends on time; keep the time of the "
+                      "last step() yourself, or use a policy with keep_clock = true (bsc::default_policy)");
+    }
+};
+
 template <class First, class Second>
 struct duplicate_event_name {
     constexpr ~duplicate_event_name() {
@@ -3223,6 +3233,11 @@ struct default_policy {
     /// true: the machine keeps each run's outcome for last_outcome(). false: it keeps nothing
     /// (dispatch and step still return it); last_outcome() and last_failure() do not compile.
     static constexpr bool keep_last_outcome = true;
+    /// true: every machine keeps the time of its last cycle, for now() and for
+    /// step_report::clock_went_backwards. false: only a machine whose chart needs time keeps it
+    /// (a timeout row, a bsc::timer in the context, a delayed event); in the others now() does
+    /// not compile, clock_went_backwards stays false, and the machine is 8 bytes smaller.
+    static constexpr bool keep_clock = true;
 };
 
 /// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],
@@ -3233,14 +3248,16 @@ struct scan_policy : default_policy {
     static constexpr bool settle_eventless = false;
 };
 
-/// The policy of a dispatch with nothing but the chart's own work: no test for a reentrant
-/// call and no record of the last outcome (docs/benchmarks.md, analysis section 8: on a flat
-/// chart with noexcept actions, a dispatch is then as short as a hand-written switch). For
-/// code whose guards, actions and observer never call the machine back, and that reads each
-/// outcome from dispatch's return value.
+/// The policy of a machine with nothing but the chart's own work: no test for a reentrant
+/// call, no record of the last outcome, and no clock unless the chart needs time
+/// (docs/benchmarks.md, analysis section 8: on a flat chart with noexcept actions, a dispatch
+/// is then as short as a hand-written switch, and the machine is its configuration and its
+/// context). For code whose guards, actions and observer never call the machine back, that
+/// reads each outcome from dispatch's return value, and that keeps its own time.
 struct lean_policy : default_policy {
     static constexpr bool refuse_reentry = false;
     static constexpr bool keep_last_outcome = false;
+    static constexpr bool keep_clock = false;
 };
 
 /// What one BSC execution cycle (`step(now)`) did, on either back end.
@@ -4976,20 +4993,29 @@ struct access {
     static constexpr auto& configuration(M& m) {
         return driver_of(m).config_;
     }
+    // The machine's clock (zero for a machine that keeps none: nothing it does depends on time).
     template <class M>
-    static constexpr auto clock(M const& m) {
-        return driver_of(m).clock_;
+    static constexpr duration clock(M const& m) {
+        return driver_of(m).cycle_time();
     }
-    // Whether a cycle has run (the clock is the caller's time).
+    // Whether a cycle has run (the clock is the caller's time); false without a clock.
     template <class M>
     static constexpr bool clock_started(M const& m) {
-        return driver_of(m).clock_started_;
+        if constexpr (std::remove_cvref_t<decltype(driver_of(m))>::keeps_clock)
+            return driver_of(m).clock_started_;
+        else
+            return false;
     }
     // Sets a machine's clock as if a cycle had run at `now` (or, started = false, as if none had).
+    // A machine without a clock has nothing to set.
     template <class M>
     static constexpr void set_clock(M& m, duration now, bool started = true) {
-        driver_of(m).clock_ = now;
-        driver_of(m).clock_started_ = started;
+        if constexpr (std::remove_cvref_t<decltype(driver_of(m))>::keeps_clock) {
+            driver_of(m).clock_ = now;
+            driver_of(m).clock_started_ = started;
+        } else {
+            (void)m, (void)now, (void)started;
+        }
     }
     // Inside a dispatch, a cycle or the construction: the machine's data is in flux.
     template <class M>
@@ -6328,6 +6354,11 @@ struct no_failure_slot {
     static std::exception_ptr get() { return nullptr; }
 };
 
+// The clock and its started flag of a machine that keeps no clock (driver::keeps_clock): two
+// types, so that both members take no room.
+struct no_clock {};
+struct no_clock_start {};
+
 template <class Backend, class Chart, class Policy, class Observer, class Queue>
 class driver : public machine_base {
 protected:
@@ -6377,26 +6408,29 @@ public:
 private:
     // The cycle of step(now), which has marked the machine running; returns its outcome.
     constexpr outcome cycle(duration now, step_report& report) {
-        if (!clock_started_) {
-            // The clock starts at the first cycle, wherever the caller's time starts; what was
-            // armed before it (at construction, by a dispatch) counts from this cycle too.
-            clock_started_ = true;
-            clock_ = now;
-            for (auto& armed : armed_) armed = now;
-            if constexpr (delays_events) queue_.start_clock(now);
-        } else if (now < clock_) {
-            report.clock_went_backwards = true;
-        } else {
-            clock_ = now;
-            if constexpr (delays_events) queue_.set_clock(now);
+        if constexpr (keeps_clock) {
+            if (!clock_started_) {
+                // The clock starts at the first cycle, wherever the caller's time starts; what was
+                // armed before it (at construction, by a dispatch) counts from this cycle too.
+                clock_started_ = true;
+                clock_ = now;
+                for (auto& armed : armed_) armed = now;
+                if constexpr (delays_events) queue_.start_clock(now);
+            } else if (now < clock_) {
+                report.clock_went_backwards = true;  // the cycle runs at the clock's time
+            } else {
+                clock_ = now;
+                if constexpr (delays_events) queue_.set_clock(now);
+            }
+            now = clock_;
         }
-        notify<model, Observer>::cycle_begins(observer_.value, clock_);
-        update_timers(context_.value, clock_);
+        notify<model, Observer>::cycle_begins(observer_.value, now);
+        update_timers(context_.value, now);
         latch_inputs(context_.value);
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
         // The delayed events due now, as raised events (bsc::raise_after).
-        if constexpr (delays_events) queue_.release_due(clock_);
+        if constexpr (delays_events) queue_.release_due(now);
         outcome const drained = drain_queue(report.transitions > 0);
         commit_outputs(context_.value);
         notify<model, Observer>::cycle_ends(observer_.value);
@@ -6404,8 +6438,13 @@ private:
     }
 
 public:
-    /// The time of the last cycle (the machine's clock; zero before the first cycle).
-    constexpr duration now() const { return clock_; }
+    /// The time of the last cycle (the machine's clock; zero before the first cycle). A machine
+    /// keeps a clock when its chart has timeouts, timers or delayed events, or when its policy
+    /// says keep_clock (bsc::default_policy does; bsc::lean_policy does not).
+    constexpr duration now() const {
+        if constexpr (!keeps_clock) detail::report<error::clock_not_kept<Policy>>();
+        return cycle_time();
+    }
 
     /// Processes e to completion: the transitions it enables, then eventless transitions and
     /// raised events until none remain. Fails to compile if no transition handles E.
@@ -6549,6 +6588,20 @@ protected:
 
     // Whether the chart sends delayed events (bsc::raise_after): its queue keeps them.
     static constexpr bool delays_events = requires(Queue& q) { q.release_due(duration{}); };
+    // Whether the machine keeps the time of its last cycle. Timeouts count from it (their entry
+    // times are the clock's), and timers and delayed events run on it, so that a caller's time
+    // that goes backwards does not reach them; without any of these, only now() and the report
+    // of a clock that went backwards read it, and a policy may leave it out (keep_clock).
+    static constexpr bool keeps_clock =
+        Policy::keep_clock || layout::timeout_slots > 0 || has_timers<context_type> || delays_events;
+
+    // The time of the last cycle: the clock, or zero for a machine that keeps none.
+    constexpr duration cycle_time() const {
+        if constexpr (keeps_clock)
+            return clock_;
+        else
+            return duration{};
+    }
 
     // ---- deferred events, called by the back ends ------------------------------------------
     static constexpr bool defers = model::has_deferral;
@@ -7095,7 +7148,7 @@ protected:
     // that a small machine has no padding inside.
     [[no_unique_address]] stored_chart_type chart_;
     [[no_unique_address]] Queue queue_{};
-    duration clock_{};
+    [[no_unique_address]] std::conditional_t<keeps_clock, duration, no_clock> clock_{};
     [[no_unique_address]] timeout_slots<static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
     // Whether a guard or action of the chart can throw (detail::chart_may_throw).
     static constexpr bool may_throw = chart_may_throw<model, Queue>();
@@ -7120,7 +7173,8 @@ protected:
     static constexpr std::uint8_t failed_bit = 0x40;
     static constexpr std::uint8_t bits(run_status s) { return static_cast<std::uint8_t>(s); }
     run_status status_ = static_cast<run_status>(outcome::ignored);
-    bool clock_started_ = false;  // a cycle has run: clock_ is the caller's time
+    // A cycle has run: clock_ is the caller's time.
+    [[no_unique_address]] std::conditional_t<keeps_clock, bool, no_clock_start> clock_started_{};
 };
 
 }  // namespace bsc::detail
@@ -7533,7 +7587,6 @@ class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, P
     using base::context_;
     using base::config_;
     using base::queue_;
-    using base::clock_;
     using base::armed_;
     using base::observer_;
     using notify = detail::notify<model, Observer>;
@@ -7623,7 +7676,7 @@ private:
         if constexpr (tree.kinds[S] == detail::kind::final_state) this->entered_final(S);
         // Its timeouts count from its entry, at the time of the last cycle.
         constexpr int first_slot = plan::timeout_slot[S];
-        for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = clock_;
+        for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = this->cycle_time();
         if constexpr (observed) notify::template entered<S>(observer_.value);
     }
 
@@ -8075,7 +8128,7 @@ private:
     constexpr bool condition_holds() {
         if constexpr (rows.trigger[Row] <= detail::timeout_trigger_id(0)) {
             constexpr auto slot = static_cast<std::size_t>(plan::row_timeout_slot[Row]);
-            if (!detail::has_elapsed(armed_[slot], clock_, this->template row<Row>().trigger_value.delay))
+            if (!detail::has_elapsed(armed_[slot], this->cycle_time(), this->template row<Row>().trigger_value.delay))
                 return false;
         }
         if constexpr (rows.guarded[Row])
@@ -8093,7 +8146,7 @@ private:
         run_entries<Row>();
         // An internal timeout, which leaves its state active, counts again from now.
         if constexpr (d < 0 && plan::row_timeout_slot[Row] >= 0)
-            armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = clock_;
+            armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = this->cycle_time();
     }
 
     template <int Frontier, int Component>
@@ -8772,7 +8825,7 @@ private:
         // A state's timeouts count from its entry, at the time of the last cycle.
         if constexpr (tables_type::timeout_slots > 0)
             for (std::int16_t k = 0; k < states[s].timeout_slots; ++k)
-                this->armed_[static_cast<std::size_t>(states[s].timeout_slot + k)] = this->clock_;
+                this->armed_[static_cast<std::size_t>(states[s].timeout_slot + k)] = this->cycle_time();
         if constexpr (observed)
             if (auto const h = hooks::on_entry[s]) h(this->observer_.value);
     }
@@ -9111,7 +9164,7 @@ private:
         auto const& row = transitions[static_cast<std::size_t>(t)];
         if constexpr (tables_type::timeout_slots > 0)
             if (row.event == timeout_id &&
-                !bsc::detail::has_elapsed(this->armed_[static_cast<std::size_t>(row.timeout_slot)], this->clock_,
+                !bsc::detail::has_elapsed(this->armed_[static_cast<std::size_t>(row.timeout_slot)], this->cycle_time(),
                                           row.delay(this->chart())))
                 return false;
         return guard_holds(t, &no_event);
@@ -9126,7 +9179,7 @@ private:
         // An internal timeout, which leaves its state active, counts again from now.
         if constexpr (tables_type::timeout_slots > 0)
             if (row.to == no_state && row.timeout_slot >= 0)
-                this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->clock_;
+                this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->cycle_time();
     }
 
     // The event that eventless and timeout transitions receive.

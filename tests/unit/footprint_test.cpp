@@ -232,6 +232,80 @@ TEST_CASE_TEMPLATE("a machine under bsc::lean_policy behaves as one under the de
 }
 
 namespace fp {
+// A flat chart whose actions are empty (as in Boost.SML's benchmark charts; declared noexcept,
+// or the machine keeps the record of a failure, as `loud` above), and a context with a timer: a
+// machine keeps a clock for the timer even where its policy keeps none.
+inline constexpr auto nothing = []() noexcept {};
+inline constexpr auto empty_actions =
+    bsc::make_chart<none>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+                          bsc::state<A> + bsc::event<go> / nothing = bsc::state<B>,
+                          bsc::state<B> + bsc::event<go> / nothing = bsc::state<C>,
+                          bsc::state<C> + bsc::event<back> / nothing = bsc::state<A>);
+struct timing {
+    bsc::timer wait{3ms};
+};
+inline constexpr auto timer_chart = bsc::make_chart<timing>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+    bsc::state<A> + bsc::event<go> / [](timing& t) { t.wait.start(); } = bsc::state<B>,
+    bsc::state<B>[([](timing const& t) { return t.wait.tm(); })] = bsc::state<C>,
+    bsc::state<C> + bsc::event<back> = bsc::state<A>);
+}  // namespace fp
+
+TEST_CASE_TEMPLATE("under bsc::lean_policy a machine of a chart that needs no time keeps no clock", Backend,
+                   bsc_test::compiled, bsc_test::table) {
+    using lean = bsc_test::machine_t<Backend, decltype(fp::empty_actions), bsc::lean_policy>;
+    using kept = bsc_test::machine_t<Backend, decltype(fp::empty_actions)>;
+    // The configuration (a byte) and the status byte: neither chart, context, clock nor queue.
+    CHECK(sizeof(lean) == 2);
+    // The default policy keeps the clock (8 bytes) and its started flag.
+    CHECK(sizeof(kept) == fp::padded(sizeof(bsc::duration) + 3, alignof(bsc::duration)));
+    static_assert(!bsc::lean_policy::keep_clock && bsc::default_policy::keep_clock);
+
+    // Nothing it does depends on time: it behaves as the machine with a clock, whatever the
+    // caller's time does, and cannot tell that time went backwards.
+    lean m{fp::empty_actions};
+    kept k{fp::empty_actions};
+    for (int i : {5, 9, 2, 2, 11, 0}) {
+        CHECK(m.dispatch(fp::go{}) == k.dispatch(fp::go{}));
+        auto const mine = m.step(bsc::duration{i});
+        auto const theirs = k.step(bsc::duration{i});
+        CHECK(mine.status == theirs.status);
+        CHECK_FALSE(mine.clock_went_backwards);
+        CHECK(m.template is<fp::A>() == k.template is<fp::A>());
+        CHECK(m.template is<fp::C>() == k.template is<fp::C>());
+    }
+    CHECK(k.now() == bsc::duration{11});  // the clock that was kept never went back
+}
+
+TEST_CASE_TEMPLATE("under bsc::lean_policy a machine keeps the clock its timeouts or timers run on", Backend,
+                   bsc_test::compiled, bsc_test::table) {
+    using timed = bsc_test::machine_t<Backend, decltype(fp::timed), bsc::lean_policy>;
+    using timer = bsc_test::machine_t<Backend, decltype(fp::timer_chart), bsc::lean_policy>;
+    CHECK(sizeof(timed) == sizeof(bsc_test::machine_t<Backend, decltype(fp::timed)>));
+    CHECK(sizeof(timer) >= sizeof(fp::timing) + sizeof(bsc::duration));
+
+    // A timeout counts from the clock, which does not follow the caller's time back.
+    timed t{fp::timed};
+    CHECK(t.step(10ms).status == bsc::outcome::ignored);
+    CHECK(t.step(4ms).clock_went_backwards);
+    CHECK(t.now() == 10ms);
+    CHECK(t.step(14ms).status == bsc::outcome::ignored);  // 4 ms after entry
+    CHECK(t.template is<fp::A>());
+    CHECK(t.step(15ms).status == bsc::outcome::consumed);
+    CHECK(t.template is<fp::B>());
+
+    // A timer started in a dispatch times from the next cycle, on the clock.
+    timer m{fp::timer_chart};
+    CHECK(m.dispatch(fp::go{}) == bsc::outcome::consumed);
+    CHECK(m.step(20ms).status == bsc::outcome::ignored);
+    CHECK(m.step(1ms).clock_went_backwards);  // runs at 20 ms
+    CHECK(m.step(22ms).status == bsc::outcome::ignored);
+    CHECK(m.template is<fp::B>());
+    CHECK(m.step(23ms).status == bsc::outcome::consumed);
+    CHECK(m.template is<fp::C>());
+}
+
+namespace fp {
 // A large event the chart takes but never raises, and a small one its actions raise: with
 // bsc::raise, the queue holds the small one only; with an action that may raise anything, every
 // event of the chart.

@@ -50,7 +50,6 @@ class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, P
     using base::context_;
     using base::config_;
     using base::queue_;
-    using base::clock_;
     using base::armed_;
     using base::observer_;
     using notify = detail::notify<model, Observer>;
@@ -140,7 +139,7 @@ private:
         if constexpr (tree.kinds[S] == detail::kind::final_state) this->entered_final(S);
         // Its timeouts count from its entry, at the time of the last cycle.
         constexpr int first_slot = plan::timeout_slot[S];
-        for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = clock_;
+        for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = this->cycle_time();
         if constexpr (observed) notify::template entered<S>(observer_.value);
     }
 
@@ -592,7 +591,7 @@ private:
     constexpr bool condition_holds() {
         if constexpr (rows.trigger[Row] <= detail::timeout_trigger_id(0)) {
             constexpr auto slot = static_cast<std::size_t>(plan::row_timeout_slot[Row]);
-            if (!detail::has_elapsed(armed_[slot], clock_, this->template row<Row>().trigger_value.delay))
+            if (!detail::has_elapsed(armed_[slot], this->cycle_time(), this->template row<Row>().trigger_value.delay))
                 return false;
         }
         if constexpr (rows.guarded[Row])
@@ -610,7 +609,7 @@ private:
         run_entries<Row>();
         // An internal timeout, which leaves its state active, counts again from now.
         if constexpr (d < 0 && plan::row_timeout_slot[Row] >= 0)
-            armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = clock_;
+            armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = this->cycle_time();
     }
 
     template <int Frontier, int Component>

@@ -53,20 +53,29 @@ struct access {
     static constexpr auto& configuration(M& m) {
         return driver_of(m).config_;
     }
+    // The machine's clock (zero for a machine that keeps none: nothing it does depends on time).
     template <class M>
-    static constexpr auto clock(M const& m) {
-        return driver_of(m).clock_;
+    static constexpr duration clock(M const& m) {
+        return driver_of(m).cycle_time();
     }
-    // Whether a cycle has run (the clock is the caller's time).
+    // Whether a cycle has run (the clock is the caller's time); false without a clock.
     template <class M>
     static constexpr bool clock_started(M const& m) {
-        return driver_of(m).clock_started_;
+        if constexpr (std::remove_cvref_t<decltype(driver_of(m))>::keeps_clock)
+            return driver_of(m).clock_started_;
+        else
+            return false;
     }
     // Sets a machine's clock as if a cycle had run at `now` (or, started = false, as if none had).
+    // A machine without a clock has nothing to set.
     template <class M>
     static constexpr void set_clock(M& m, duration now, bool started = true) {
-        driver_of(m).clock_ = now;
-        driver_of(m).clock_started_ = started;
+        if constexpr (std::remove_cvref_t<decltype(driver_of(m))>::keeps_clock) {
+            driver_of(m).clock_ = now;
+            driver_of(m).clock_started_ = started;
+        } else {
+            (void)m, (void)now, (void)started;
+        }
     }
     // Inside a dispatch, a cycle or the construction: the machine's data is in flux.
     template <class M>

@@ -160,6 +160,11 @@ struct no_failure_slot {
     static std::exception_ptr get() { return nullptr; }
 };
 
+// The clock and its started flag of a machine that keeps no clock (driver::keeps_clock): two
+// types, so that both members take no room.
+struct no_clock {};
+struct no_clock_start {};
+
 template <class Backend, class Chart, class Policy, class Observer, class Queue>
 class driver : public machine_base {
 protected:
@@ -209,26 +214,29 @@ public:
 private:
     // The cycle of step(now), which has marked the machine running; returns its outcome.
     constexpr outcome cycle(duration now, step_report& report) {
-        if (!clock_started_) {
-            // The clock starts at the first cycle, wherever the caller's time starts; what was
-            // armed before it (at construction, by a dispatch) counts from this cycle too.
-            clock_started_ = true;
-            clock_ = now;
-            for (auto& armed : armed_) armed = now;
-            if constexpr (delays_events) queue_.start_clock(now);
-        } else if (now < clock_) {
-            report.clock_went_backwards = true;
-        } else {
-            clock_ = now;
-            if constexpr (delays_events) queue_.set_clock(now);
+        if constexpr (keeps_clock) {
+            if (!clock_started_) {
+                // The clock starts at the first cycle, wherever the caller's time starts; what was
+                // armed before it (at construction, by a dispatch) counts from this cycle too.
+                clock_started_ = true;
+                clock_ = now;
+                for (auto& armed : armed_) armed = now;
+                if constexpr (delays_events) queue_.start_clock(now);
+            } else if (now < clock_) {
+                report.clock_went_backwards = true;  // the cycle runs at the clock's time
+            } else {
+                clock_ = now;
+                if constexpr (delays_events) queue_.set_clock(now);
+            }
+            now = clock_;
         }
-        notify<model, Observer>::cycle_begins(observer_.value, clock_);
-        update_timers(context_.value, clock_);
+        notify<model, Observer>::cycle_begins(observer_.value, now);
+        update_timers(context_.value, now);
         latch_inputs(context_.value);
         if constexpr (layout::has_trigger(any_condition))
             report.transitions = run_components();
         // The delayed events due now, as raised events (bsc::raise_after).
-        if constexpr (delays_events) queue_.release_due(clock_);
+        if constexpr (delays_events) queue_.release_due(now);
         outcome const drained = drain_queue(report.transitions > 0);
         commit_outputs(context_.value);
         notify<model, Observer>::cycle_ends(observer_.value);
@@ -236,8 +244,13 @@ private:
     }
 
 public:
-    /// The time of the last cycle (the machine's clock; zero before the first cycle).
-    constexpr duration now() const { return clock_; }
+    /// The time of the last cycle (the machine's clock; zero before the first cycle). A machine
+    /// keeps a clock when its chart has timeouts, timers or delayed events, or when its policy
+    /// says keep_clock (bsc::default_policy does; bsc::lean_policy does not).
+    constexpr duration now() const {
+        if constexpr (!keeps_clock) detail::report<error::clock_not_kept<Policy>>();
+        return cycle_time();
+    }
 
     /// Processes e to completion: the transitions it enables, then eventless transitions and
     /// raised events until none remain. Fails to compile if no transition handles E.
@@ -381,6 +394,20 @@ protected:
 
     // Whether the chart sends delayed events (bsc::raise_after): its queue keeps them.
     static constexpr bool delays_events = requires(Queue& q) { q.release_due(duration{}); };
+    // Whether the machine keeps the time of its last cycle. Timeouts count from it (their entry
+    // times are the clock's), and timers and delayed events run on it, so that a caller's time
+    // that goes backwards does not reach them; without any of these, only now() and the report
+    // of a clock that went backwards read it, and a policy may leave it out (keep_clock).
+    static constexpr bool keeps_clock =
+        Policy::keep_clock || layout::timeout_slots > 0 || has_timers<context_type> || delays_events;
+
+    // The time of the last cycle: the clock, or zero for a machine that keeps none.
+    constexpr duration cycle_time() const {
+        if constexpr (keeps_clock)
+            return clock_;
+        else
+            return duration{};
+    }
 
     // ---- deferred events, called by the back ends ------------------------------------------
     static constexpr bool defers = model::has_deferral;
@@ -927,7 +954,7 @@ protected:
     // that a small machine has no padding inside.
     [[no_unique_address]] stored_chart_type chart_;
     [[no_unique_address]] Queue queue_{};
-    duration clock_{};
+    [[no_unique_address]] std::conditional_t<keeps_clock, duration, no_clock> clock_{};
     [[no_unique_address]] timeout_slots<static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
     // Whether a guard or action of the chart can throw (detail::chart_may_throw).
     static constexpr bool may_throw = chart_may_throw<model, Queue>();
@@ -952,7 +979,8 @@ protected:
     static constexpr std::uint8_t failed_bit = 0x40;
     static constexpr std::uint8_t bits(run_status s) { return static_cast<std::uint8_t>(s); }
     run_status status_ = static_cast<run_status>(outcome::ignored);
-    bool clock_started_ = false;  // a cycle has run: clock_ is the caller's time
+    // A cycle has run: clock_ is the caller's time.
+    [[no_unique_address]] std::conditional_t<keeps_clock, bool, no_clock_start> clock_started_{};
 };
 
 }  // namespace bsc::detail

@@ -177,7 +177,7 @@ private:
         // A state's timeouts count from its entry, at the time of the last cycle.
         if constexpr (tables_type::timeout_slots > 0)
             for (std::int16_t k = 0; k < states[s].timeout_slots; ++k)
-                this->armed_[static_cast<std::size_t>(states[s].timeout_slot + k)] = this->clock_;
+                this->armed_[static_cast<std::size_t>(states[s].timeout_slot + k)] = this->cycle_time();
         if constexpr (observed)
             if (auto const h = hooks::on_entry[s]) h(this->observer_.value);
     }
@@ -516,7 +516,7 @@ private:
         auto const& row = transitions[static_cast<std::size_t>(t)];
         if constexpr (tables_type::timeout_slots > 0)
             if (row.event == timeout_id &&
-                !bsc::detail::has_elapsed(this->armed_[static_cast<std::size_t>(row.timeout_slot)], this->clock_,
+                !bsc::detail::has_elapsed(this->armed_[static_cast<std::size_t>(row.timeout_slot)], this->cycle_time(),
                                           row.delay(this->chart())))
                 return false;
         return guard_holds(t, &no_event);
@@ -531,7 +531,7 @@ private:
         // An internal timeout, which leaves its state active, counts again from now.
         if constexpr (tables_type::timeout_slots > 0)
             if (row.to == no_state && row.timeout_slot >= 0)
-                this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->clock_;
+                this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->cycle_time();
     }
 
     // The event that eventless and timeout transitions receive.
