@@ -1014,6 +1014,19 @@ struct state_action {
     }
 };
 
+// What the chart's analysis hands an action as its raise argument, to learn whether it takes one
+// (may_raise below) and whether it can be called at all (checks/signatures.hpp): callable with
+// any event, as a machine's queue is with the chart's events (an event the chart does not take
+// is reported where the machine calls the action: bsc::error::raised_event_not_in_chart). Not a
+// machine's queue, whose type spells every event of the chart and holds a std::variant of
+// them: each question would instantiate it and make a symbol named after it.
+struct raise_stand_in {
+    template <class E>
+    constexpr bool operator()(E const&) noexcept {
+        return true;
+    }
+};
+
 // Whether an action can raise an event, i.e. whether it is ever handed the raise argument
 // (an action that does not accept it is called without it). A chart none of whose actions
 // can raise needs no event queue. Unknown action types are assumed to raise.
@@ -2357,15 +2370,16 @@ struct drop_void<type_list<Es...>> {
     using type = concat_t<std::conditional_t<std::is_void_v<Es>, type_list<>, type_list<Es>>...>;
 };
 
+// The index of state Tag among Tags: no_state for no target, unknown_state if not there. A
+// class, not a function: a function's symbol would spell the chart's states, once per row.
 template <class Tag, class Tags>
-constexpr int state_index() {
-    if constexpr (std::is_same_v<Tag, no_target>)
-        return no_state;
-    else {
-        constexpr int i = position_in<Tag, Tags>::value;
-        return i < 0 ? unknown_state : i;
-    }
-}
+struct state_index {
+    enum : int { value = position_in<Tag, Tags>::value < 0 ? unknown_state : position_in<Tag, Tags>::value };
+};
+template <class Tags>
+struct state_index<no_target, Tags> {
+    enum : int { value = no_state };
+};
 
 template <std::size_t N, std::size_t M = 0>
 constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false,
@@ -2413,12 +2427,12 @@ struct chart_model {
         (
             [&] {
                 r.kinds[i] = kind_of_row<Rs>();
-                r.source[i] = state_index<typename Rs::source, tags>();
+                r.source[i] = state_index<typename Rs::source, tags>::value;
                 r.target[i] = no_state;
                 r.trigger[i] = eventless_id;
                 r.guarded[i] = false;
                 if constexpr (is_transition_row<Rs>) {
-                    r.target[i] = state_index<typename Rs::target, tags>();
+                    r.target[i] = state_index<typename Rs::target, tags>::value;
                     r.guarded[i] = Rs::guarded;
                     r.local[i] = Rs::local;
                     r.defers[i] = Rs::defers;
@@ -2431,7 +2445,7 @@ struct chart_model {
                     if constexpr (Rs::targets::size > 1)
                         [&]<class First, class... More>(type_list<First, More...>*) {
                             std::size_t k = 0;
-                            ((r.more_targets[i][k++] = state_index<More, tags>()), ...);
+                            ((r.more_targets[i][k++] = state_index<More, tags>::value), ...);
                         }(static_cast<typename Rs::targets*>(nullptr));
                 }
                 r.domain[i] = no_state;
@@ -3179,324 +3193,6 @@ constexpr auto row_text() {
 
 #include <type_traits>
 
-// begin include/bsc/outcome.hpp
-// What dispatch reports, and the limits a machine runs under.
-
-#include <cstddef>
-#include <cstdint>
-
-namespace bsc {
-
-/// The result of dispatching one event (run to completion, internal events included).
-enum class outcome : std::uint8_t {
-    consumed,        ///< at least one transition fired for the dispatched event
-    ignored,         ///< no transition was enabled; the event was discarded (SCXML semantics)
-    queue_overflow,  ///< an action raised an event while the internal queue was full; that event was dropped
-    livelock,        ///< the eventless-step or internal-event limit was reached; the rest was abandoned
-    halted,          ///< the machine had reached a final child of its root; nothing was processed
-    reentrant,       ///< called from inside one of the machine's own guards or actions: refused, nothing changed
-    failed,          ///< a guard or action threw and no transition took the bsc::action_failed event (the
-                     ///< policy's rethrow_failures is false; last_failure() holds the exception)
-    unknown_event,   ///< dispatch_by_name or dispatch_by_number named no event of the chart: nothing was
-                     ///< processed (bsc::event_set<Chart>::unknown(name) says why)
-};
-
-/// The limits of a machine. Derive from it and override a member to change one:
-/// `struct my_limits : bsc::default_policy { static constexpr std::size_t queue_capacity = 32; };`
-struct default_policy {
-    /// Events an action may raise before the queue is drained; one more is an overflow.
-    static constexpr std::size_t queue_capacity = 8;
-    /// Events a machine keeps deferred (`/ bsc::defer`) at once; one more is an overflow. Read
-    /// only for a chart with a deferring row.
-    static constexpr std::size_t deferred_capacity = 8;
-    /// Events sent with bsc::raise_after pending at once; one more is an overflow. Read only for
-    /// a chart whose actions send delayed events.
-    static constexpr std::size_t delayed_capacity = 8;
-    /// Eventless transitions taken in a row before dispatch reports a livelock.
-    static constexpr std::size_t max_eventless_steps = 64;
-    /// Internal events processed within one dispatch before it reports a livelock.
-    static constexpr std::size_t max_internal_events = 256;
-    /// true (SCXML): construction and dispatch take eventless transitions until none is
-    /// enabled. false (BSC scan): eventless transitions are taken only by step(), at most one
-    /// per component per cycle.
-    static constexpr bool settle_eventless = true;
-    /// What happens to an exception from a guard or action that no transition takes as a
-    /// bsc::action_failed event: true, dispatch() or step() rethrows it once the machine is
-    /// consistent (and the constructor, for an entry action); false, they return
-    /// outcome::failed and last_failure() holds it.
-    static constexpr bool rethrow_failures = true;
-    /// true: a dispatch or step called from inside the machine's own guards, actions or
-    /// observer hooks is refused (outcome::reentrant). false: the caller promises that none
-    /// is; the machine does not test for it, and one would run nested inside the run under
-    /// way, against run to completion.
-    static constexpr bool refuse_reentry = true;
-    /// true: the machine keeps each run's outcome for last_outcome(). false: it keeps nothing
-    /// (dispatch and step still return it); last_outcome() and last_failure() do not compile.
-    static constexpr bool keep_last_outcome = true;
-    /// true: every machine keeps the time of its last cycle, for now() and for
-    /// step_report::clock_went_backwards. false: only a machine whose chart needs time keeps it
-    /// (a timeout row, a bsc::timer in the context, a delayed event); in the others now() does
-    /// not compile, clock_went_backwards stays false, and the machine is 8 bytes smaller.
-    static constexpr bool keep_clock = true;
-};
-
-/// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],
-/// docs/references.md): eventless transitions are condition-driven and run only in step(), so a
-/// chart whose components keep reacting to each other (a PLC scan loop) neither livelocks at
-/// construction nor in dispatch.
-struct scan_policy : default_policy {
-    static constexpr bool settle_eventless = false;
-};
-
-/// The policy of a machine with nothing but the chart's own work: no test for a reentrant
-/// call, no record of the last outcome, and no clock unless the chart needs time
-/// (docs/benchmarks.md, analysis section 8: on a flat chart with noexcept actions, a dispatch
-/// is then as short as a hand-written switch, and the machine is its configuration and its
-/// context). For code whose guards, actions and observer never call the machine back, that
-/// reads each outcome from dispatch's return value, and that keeps its own time.
-struct lean_policy : default_policy {
-    static constexpr bool refuse_reentry = false;
-    static constexpr bool keep_last_outcome = false;
-    static constexpr bool keep_clock = false;
-};
-
-/// What one BSC execution cycle (`step(now)`) did, on either back end.
-struct step_report {
-    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
-    int transitions = 0;                ///< condition-driven transitions fired by the components
-    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
-};
-
-/// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
-/// handles is then allowed (and ignored) instead of failing to compile.
-struct allow_unhandled_t {
-    explicit allow_unhandled_t() = default;
-};
-inline constexpr allow_unhandled_t allow_unhandled{};
-
-}  // namespace bsc
-// end include/bsc/outcome.hpp
-// begin include/bsc/runtime/event_queue.hpp
-// The bounded internal event queue: a ring buffer of the chart's event types. No heap;
-// a push onto a full queue is refused and remembered, never written out of bounds.
-
-#include <array>
-#include <cstddef>
-#include <type_traits>
-#include <variant>
-
-
-namespace bsc::detail {
-
-// What every bounded queue keeps: its slots (Slots, first, where a machine's members of large
-// alignment go), where the oldest event is, how many there are, and whether a raise found the
-// queue full.
-template <std::size_t Capacity, class Slots>
-class ring {
-public:
-    constexpr bool empty() const { return size_ == 0; }
-    constexpr std::size_t size() const { return size_; }
-    static constexpr std::size_t capacity() { return Capacity; }
-    constexpr bool overflowed() const { return overflowed_; }
-    constexpr void clear_overflow() { overflowed_ = false; }
-    constexpr void clear() { head_ = size_ = 0; }
-
-protected:
-    // True, and the overflow marked, if the queue is full: the raise then stores nothing.
-    constexpr bool refuse_when_full() {
-        if (size_ == Capacity) {
-            overflowed_ = true;
-            return true;
-        }
-        return false;
-    }
-    // The slot after the newest event; added() counts the event once it is stored there.
-    constexpr std::size_t back() const { return (head_ + size_) % Capacity; }
-    constexpr void added() { ++size_; }
-    // The slot of the oldest event; drop_front() takes it out once it is read. (A queue whose
-    // slots hold nothing only counts: removed().)
-    constexpr std::size_t front() const { return head_; }
-    constexpr void drop_front() {
-        head_ = (head_ + 1) % Capacity;
-        removed();
-    }
-    constexpr void removed() { --size_; }
-
-    [[no_unique_address]] Slots items_{};
-
-private:
-    std::size_t head_ = 0;
-    std::size_t size_ = 0;
-    bool overflowed_ = false;
-};
-
-// The position among Events of the event an event E is queued as: E itself, or its nearest
-// family (model/event_families.hpp): the rows that take it see no more of it than that. -1: none.
-template <class E, class... Es>
-constexpr int queued_index(type_list<Es...>) {
-    if constexpr (position_in<E, type_list<Es...>>::value >= 0)
-        return position_in<E, type_list<Es...>>::value;
-    else
-        return event_families<type_list<Es...>>::template trigger_of<E>();
-}
-
-// Raises e into a queue of Events: push(f) with the event e is queued as, or, for an event the
-// chart does not name, the error that says so (and false).
-template <class Events, class E, class Push>
-constexpr bool raise_into(E const& e, Push&& push) {
-    constexpr int as = queued_index<E>(Events{});
-    if constexpr (as < 0) {
-        detail::report<error::raised_event_not_in_chart<E>>();
-        return false;
-    } else {
-        return push(event_as<at<static_cast<std::size_t>(as), Events>>(e));
-    }
-}
-
-template <std::size_t Capacity, class Events>
-class event_queue;
-
-template <std::size_t Capacity, class... Es>
-class event_queue<Capacity, type_list<Es...>>
-    : public ring<Capacity, std::array<std::variant<std::monostate, Es...>, Capacity>> {
-    using ring<Capacity, std::array<std::variant<std::monostate, Es...>, Capacity>>::items_;
-
-public:
-    using value_type = std::variant<std::monostate, Es...>;
-
-    /// Raises e: queues it for processing after the current step. False if the queue is full.
-    /// An event the chart does not name is queued as its nearest family (model/event_families.hpp):
-    /// the rows that take it see no more of it than that.
-    template <class E>
-    constexpr bool operator()(E const& e) noexcept(std::is_nothrow_copy_constructible_v<E>) {
-        return raise_into<type_list<Es...>>(e, [this]<class F>(F const& f) { return this->template push<F>(f); });
-    }
-
-    // Removes the oldest event and calls f with it.
-    template <class F>
-    constexpr void pop(F&& f) {
-        value_type item = std::move(items_[this->front()]);
-        this->drop_front();
-        visit_index<static_cast<int>(sizeof...(Es))>(static_cast<int>(item.index()) - 1,
-                                                     [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
-    }
-
-protected:
-    // Queues an item already held as the queue's variant (a delayed event coming due).
-    constexpr bool push_item(value_type const& item) {
-        if (this->refuse_when_full()) return false;
-        items_[this->back()] = item;
-        this->added();
-        return true;
-    }
-
-private:
-    template <class E>
-    constexpr bool push(E const& e) {
-        if (this->refuse_when_full()) return false;
-        auto& slot = items_[this->back()];
-        // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
-        // 14 cannot emplace into a variant in a constant expression, so that assigns.
-        if (std::is_constant_evaluated())
-            slot = value_type{std::in_place_type<E>, e};
-        else
-            slot.template emplace<E>(e);
-        this->added();  // (after the copy, which may throw)
-        return true;
-    }
-};
-
-// The slots of a single_event_queue: the events, or for an empty event none.
-template <std::size_t Capacity, class E>
-struct single_event_slots {
-    std::array<E, Capacity> value{};
-};
-template <std::size_t Capacity, class E>
-    requires std::is_empty_v<E>
-struct single_event_slots<Capacity, E> {};
-
-// The queue of a chart that raises one event type only, a trivially copyable one whose default
-// construction is a constant expression (queue_for.hpp picks it): the events themselves,
-// without a variant's index to store, load and switch on; for an empty event, not even the
-// events, only their count (a raise is then an increment, as a hand-written flag would be).
-template <std::size_t Capacity, class E>
-class single_event_queue : public ring<Capacity, single_event_slots<Capacity, E>> {
-    static_assert(Capacity > 0 && std::is_trivially_copyable_v<E>);
-    static constexpr bool stores_events = !std::is_empty_v<E>;
-    using ring<Capacity, single_event_slots<Capacity, E>>::items_;
-
-public:
-    /// Raises e, as event_queue does: E itself, or an event of E's family queued as E.
-    template <class R>
-    constexpr bool operator()(R const& e) noexcept(std::is_nothrow_copy_constructible_v<R>) {
-        return raise_into<type_list<E>>(e, [this](E const& f) { return this->push(f); });
-    }
-
-    // Removes the oldest event and calls f with it.
-    template <class F>
-    constexpr void pop(F&& f) {
-        if constexpr (stores_events) {
-            E const item = items_.value[this->front()];
-            this->drop_front();
-            f(item);
-        } else {
-            this->removed();
-            f(E{});
-        }
-    }
-
-private:
-    constexpr bool push(E const& e) {
-        if (this->refuse_when_full()) return false;
-        if constexpr (stores_events) items_.value[this->back()] = e;
-        this->added();
-        return true;
-    }
-};
-
-// A chart whose queue capacity is zero raises nothing: every raise is an overflow.
-template <class... Es>
-class event_queue<0, type_list<Es...>> {
-public:
-    template <class E>
-    constexpr bool operator()(E const&) noexcept {
-        overflowed_ = true;
-        return false;
-    }
-    constexpr bool empty() const { return true; }
-    constexpr std::size_t size() const { return 0; }
-    static constexpr std::size_t capacity() { return 0; }
-    constexpr bool overflowed() const { return overflowed_; }
-    constexpr void clear_overflow() { overflowed_ = false; }
-    constexpr void clear() {}
-    template <class F>
-    constexpr void pop(F&&) {}
-
-private:
-    bool overflowed_ = false;
-};
-
-// The queue of a chart none of whose actions can raise (detail::raised_by_chart): it is always
-// empty, and saying so at compile time spares every dispatch the checks for raised events.
-// (Not a template: its name is part of the symbols of every action the machine calls.)
-class no_event_queue {
-public:
-    template <class E>
-    constexpr bool operator()(E const&) noexcept {  // never called: no action takes the raise argument
-        return false;
-    }
-    static constexpr bool empty() { return true; }
-    static constexpr std::size_t size() { return 0; }
-    static constexpr std::size_t capacity() { return 0; }
-    static constexpr bool overflowed() { return false; }
-    constexpr void clear_overflow() {}
-    constexpr void clear() {}
-    template <class F>
-    constexpr void pop(F&&) {}
-};
-
-}  // namespace bsc::detail
-// end include/bsc/runtime/event_queue.hpp
 
 namespace bsc::detail {
 
@@ -3520,7 +3216,8 @@ struct bad_guard<or_guard<L, R>, Ctx, E> {
     using type = concat_t<typename bad_guard<L, Ctx, E>::type, typename bad_guard<R, Ctx, E>::type>;
 };
 
-// The same for actions; Raise is the queue a machine of the default policy hands them.
+// The same for actions; Raise is what the checks hand them as the raise argument
+// (raise_stand_in, dsl/action.hpp).
 template <class A, class Ctx, class E, class Raise>
 struct bad_action {
     using type = type_list<>;
@@ -3590,20 +3287,16 @@ constexpr auto signature_errors(Row const*) {
 
 // The position of the first row of a chart whose guard or action cannot be called (-1: none),
 // and that row's error.
-template <class Ctx, class Events>
-using signature_raise = event_queue<default_policy::queue_capacity, Events>;
-template <class Ctx, class Events, class... Rows>
+template <class Ctx, class... Rows>
 constexpr int first_signature_error(type_list<Rows...>) {
     constexpr bool bad[] = {
-        (decltype(signature_errors<Ctx, signature_raise<Ctx, Events>>(static_cast<Rows const*>(nullptr)))::size > 0)...,
-        false};
+        (decltype(signature_errors<Ctx, raise_stand_in>(static_cast<Rows const*>(nullptr)))::size > 0)..., false};
     for (std::size_t i = 0; i < sizeof...(Rows); ++i)
         if (bad[i]) return static_cast<int>(i);
     return -1;
 }
-template <class Ctx, class Events, class Row>
-using signature_error =
-    at<0, decltype(signature_errors<Ctx, signature_raise<Ctx, Events>>(static_cast<Row const*>(nullptr)))>;
+template <class Ctx, class Row>
+using signature_error = at<0, decltype(signature_errors<Ctx, raise_stand_in>(static_cast<Row const*>(nullptr)))>;
 
 }  // namespace bsc::detail
 // end include/bsc/checks/signatures.hpp
@@ -3975,10 +3668,9 @@ template <class Chart>
 constexpr auto check_signatures() {
     using model = chart_model<Chart>;
     using context = typename Chart::context_type;
-    constexpr int row = first_signature_error<context, typename model::events>(typename Chart::row_types{});
+    constexpr int row = first_signature_error<context>(typename Chart::row_types{});
     if constexpr (row >= 0)
-        return type_list<row_error<
-            Chart, row, signature_error<context, typename model::events, typename model::template row_at<row>>>>{};
+        return type_list<row_error<Chart, row, signature_error<context, typename model::template row_at<row>>>>{};
     else
         return type_list<>{};
 }
@@ -4542,56 +4234,109 @@ struct plan : chart_layout<Model> {
     using layout::from_source;
     using layout::from_source_begin;
 
+    // The transitions on each event, in declaration order, for a chart without event families
+    // (where a row takes the events of its trigger only): those on event position t are
+    // on_event[on_event_begin[t]] to on_event[on_event_begin[t + 1]] (exclusive). Built once,
+    // so that each trigger's list is read, not found by a scan of every row.
+    static constexpr int event_count = static_cast<int>(Model::events::size);
+    static constexpr auto on_event_begin = [] {
+        std::array<int, static_cast<std::size_t>(event_count) + 1> begin{};
+        for (int r = 0; r < R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == row_kind::transition && rows.trigger[static_cast<std::size_t>(r)] >= 0)
+                ++begin[static_cast<std::size_t>(rows.trigger[static_cast<std::size_t>(r)]) + 1];
+        for (std::size_t t = 0; t < static_cast<std::size_t>(event_count); ++t) begin[t + 1] += begin[t];
+        return begin;
+    }();
+    static constexpr auto on_event = [] {
+        std::array<int, static_cast<std::size_t>(on_event_begin[static_cast<std::size_t>(event_count)])> out{};
+        auto next = on_event_begin;
+        for (int r = 0; r < R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == row_kind::transition && rows.trigger[static_cast<std::size_t>(r)] >= 0)
+                out[static_cast<std::size_t>(next[static_cast<std::size_t>(rows.trigger[static_cast<std::size_t>(r)])]++)] = r;
+        return out;
+    }();
+    static constexpr bool indexed_by_event(int trigger) { return !Model::has_families && trigger >= 0; }
+
     static constexpr int transition_count(int trigger) {
+        if (indexed_by_event(trigger))
+            return on_event_begin[static_cast<std::size_t>(trigger) + 1] - on_event_begin[static_cast<std::size_t>(trigger)];
         int n = 0;
         for (int r = 0; r < R; ++r) n += is_transition_on(r, trigger) ? 1 : 0;
         return n;
     }
 
     // The transitions on a trigger, in declaration order; the selection buffer stores positions
-    // here. The one scan of all rows per trigger: what follows reads this list.
+    // here. What follows reads this list.
     template <int Trigger>
     static constexpr auto transitions = [] {
         std::array<int, static_cast<std::size_t>(transition_count(Trigger))> out{};
         std::size_t n = 0;
-        for (int r = 0; r < R; ++r)
-            if (is_transition_on(r, Trigger))
-                out[n++] = r;
+        if constexpr (indexed_by_event(Trigger)) {
+            for (int i = on_event_begin[static_cast<std::size_t>(Trigger)]; i < on_event_begin[static_cast<std::size_t>(Trigger) + 1]; ++i)
+                out[n++] = on_event[static_cast<std::size_t>(i)];
+        } else {
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, Trigger))
+                    out[n++] = r;
+        }
         return out;
     }();
 
-    // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a descendant.
+    // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a
+    // descendant. (Asked of the states a dispatch walks through, each asking reads the trigger's
+    // transitions: no array of every state per trigger, which made the compile time quadratic.)
     template <int Trigger>
-    static constexpr std::array<bool, static_cast<std::size_t>(N)> relevant = [] {
-        std::array<bool, static_cast<std::size_t>(N)> rel{};
+    static constexpr bool relevant(int s) {
         for (int const r : transitions<Trigger>) {
             int const src = rows.source[static_cast<std::size_t>(r)];
-            for (int a = src; a >= 0; a = tree.parent[static_cast<std::size_t>(a)]) rel[static_cast<std::size_t>(a)] = true;
-            for (int d = src; d < tree.end[static_cast<std::size_t>(src)]; ++d) rel[static_cast<std::size_t>(d)] = true;
+            if (tree.contains(src, s) || tree.contains(s, src)) return true;
         }
-        return rel;
-    }();
+        return false;
+    }
+
+    // The children of composite s toward the sources of the trigger's transitions below it,
+    // in document order, each once; or `every`, if a source is s or above it (every child is
+    // then relevant).
+    template <int Trigger>
+    struct children_found {
+        std::array<int, transitions<Trigger>.size()> child{};
+        std::size_t count = 0;
+        bool every = false;
+    };
+    template <int Trigger>
+    static constexpr children_found<Trigger> children_toward_sources(int s) {
+        children_found<Trigger> found{};
+        for (int const r : transitions<Trigger>) {
+            int const src = rows.source[static_cast<std::size_t>(r)];
+            if (tree.contains(src, s)) {
+                found.every = true;
+                return found;
+            }
+            if (!tree.contains(s, src)) continue;
+            int const c = tree.child_toward(s, src);
+            bool seen = false;
+            for (std::size_t j = 0; j < found.count && !seen; ++j) seen = found.child[j] == c;
+            if (seen) continue;
+            std::size_t i = found.count++;  // insertion in document order
+            for (; i > 0 && found.child[i - 1] > c; --i) found.child[i] = found.child[i - 1];
+            found.child[i] = c;
+        }
+        return found;
+    }
 
     // The children of composite S that are relevant to the trigger, in document order: the
     // only ones dispatch on the trigger compares S's byte with, so each trigger instantiates
     // code along its own paths only (linear in the transitions, not in states x triggers).
     template <int Trigger, int S>
     static constexpr auto relevant_children = [] {
-        constexpr auto& rel = relevant<Trigger>;
-        constexpr int count = [] {
-            int n = 0;
-            for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
-                 c = tree.next_sibling[static_cast<std::size_t>(c)])
-                n += rel[static_cast<std::size_t>(c)];
-            return n;
-        }();
-        std::array<int, static_cast<std::size_t>(count)> out{};
-        std::size_t n = 0;
-        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
-             c = tree.next_sibling[static_cast<std::size_t>(c)])
-            if (rel[static_cast<std::size_t>(c)])
-                out[n++] = c;
-        return out;
+        constexpr auto found = children_toward_sources<Trigger>(S);
+        if constexpr (found.every) {
+            return layout::template children<S>;
+        } else {
+            std::array<int, found.count> out{};
+            for (std::size_t i = 0; i < found.count; ++i) out[i] = found.child[i];
+            return out;
+        }
     }();
 
     static constexpr int candidate_count(int leaf, int trigger) {
@@ -4832,6 +4577,103 @@ concept observes_cycle_ends = requires(O& o) {
 
 }  // namespace bsc
 // end include/bsc/observer.hpp
+// begin include/bsc/outcome.hpp
+// What dispatch reports, and the limits a machine runs under.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace bsc {
+
+/// The result of dispatching one event (run to completion, internal events included).
+enum class outcome : std::uint8_t {
+    consumed,        ///< at least one transition fired for the dispatched event
+    ignored,         ///< no transition was enabled; the event was discarded (SCXML semantics)
+    queue_overflow,  ///< an action raised an event while the internal queue was full; that event was dropped
+    livelock,        ///< the eventless-step or internal-event limit was reached; the rest was abandoned
+    halted,          ///< the machine had reached a final child of its root; nothing was processed
+    reentrant,       ///< called from inside one of the machine's own guards or actions: refused, nothing changed
+    failed,          ///< a guard or action threw and no transition took the bsc::action_failed event (the
+                     ///< policy's rethrow_failures is false; last_failure() holds the exception)
+    unknown_event,   ///< dispatch_by_name or dispatch_by_number named no event of the chart: nothing was
+                     ///< processed (bsc::event_set<Chart>::unknown(name) says why)
+};
+
+/// The limits of a machine. Derive from it and override a member to change one:
+/// `struct my_limits : bsc::default_policy { static constexpr std::size_t queue_capacity = 32; };`
+struct default_policy {
+    /// Events an action may raise before the queue is drained; one more is an overflow.
+    static constexpr std::size_t queue_capacity = 8;
+    /// Events a machine keeps deferred (`/ bsc::defer`) at once; one more is an overflow. Read
+    /// only for a chart with a deferring row.
+    static constexpr std::size_t deferred_capacity = 8;
+    /// Events sent with bsc::raise_after pending at once; one more is an overflow. Read only for
+    /// a chart whose actions send delayed events.
+    static constexpr std::size_t delayed_capacity = 8;
+    /// Eventless transitions taken in a row before dispatch reports a livelock.
+    static constexpr std::size_t max_eventless_steps = 64;
+    /// Internal events processed within one dispatch before it reports a livelock.
+    static constexpr std::size_t max_internal_events = 256;
+    /// true (SCXML): construction and dispatch take eventless transitions until none is
+    /// enabled. false (BSC scan): eventless transitions are taken only by step(), at most one
+    /// per component per cycle.
+    static constexpr bool settle_eventless = true;
+    /// What happens to an exception from a guard or action that no transition takes as a
+    /// bsc::action_failed event: true, dispatch() or step() rethrows it once the machine is
+    /// consistent (and the constructor, for an entry action); false, they return
+    /// outcome::failed and last_failure() holds it.
+    static constexpr bool rethrow_failures = true;
+    /// true: a dispatch or step called from inside the machine's own guards, actions or
+    /// observer hooks is refused (outcome::reentrant). false: the caller promises that none
+    /// is; the machine does not test for it, and one would run nested inside the run under
+    /// way, against run to completion.
+    static constexpr bool refuse_reentry = true;
+    /// true: the machine keeps each run's outcome for last_outcome(). false: it keeps nothing
+    /// (dispatch and step still return it); last_outcome() and last_failure() do not compile.
+    static constexpr bool keep_last_outcome = true;
+    /// true: every machine keeps the time of its last cycle, for now() and for
+    /// step_report::clock_went_backwards. false: only a machine whose chart needs time keeps it
+    /// (a timeout row, a bsc::timer in the context, a delayed event); in the others now() does
+    /// not compile, clock_went_backwards stays false, and the machine is 8 bytes smaller.
+    static constexpr bool keep_clock = true;
+};
+
+/// The limits of a machine driven by BSC execution cycles (the Basic Statechart paper [BSC],
+/// docs/references.md): eventless transitions are condition-driven and run only in step(), so a
+/// chart whose components keep reacting to each other (a PLC scan loop) neither livelocks at
+/// construction nor in dispatch.
+struct scan_policy : default_policy {
+    static constexpr bool settle_eventless = false;
+};
+
+/// The policy of a machine with nothing but the chart's own work: no test for a reentrant
+/// call, no record of the last outcome, and no clock unless the chart needs time
+/// (docs/benchmarks.md, analysis section 8: on a flat chart with noexcept actions, a dispatch
+/// is then as short as a hand-written switch, and the machine is its configuration and its
+/// context). For code whose guards, actions and observer never call the machine back, that
+/// reads each outcome from dispatch's return value, and that keeps its own time.
+struct lean_policy : default_policy {
+    static constexpr bool refuse_reentry = false;
+    static constexpr bool keep_last_outcome = false;
+    static constexpr bool keep_clock = false;
+};
+
+/// What one BSC execution cycle (`step(now)`) did, on either back end.
+struct step_report {
+    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
+    int transitions = 0;                ///< condition-driven transitions fired by the components
+    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
+};
+
+/// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
+/// handles is then allowed (and ignored) instead of failing to compile.
+struct allow_unhandled_t {
+    explicit allow_unhandled_t() = default;
+};
+inline constexpr allow_unhandled_t allow_unhandled{};
+
+}  // namespace bsc
+// end include/bsc/outcome.hpp
 // begin include/bsc/runtime/driver.hpp
 // What both back ends share: the public interface of a machine and everything that does not
 // depend on how a transition is selected and fired. The driver owns the machine's data (chart,
@@ -6085,6 +5927,227 @@ constexpr void update_timers(Ctx& ctx, duration now) {
 
 }  // namespace bsc::detail
 // end include/bsc/runtime/context_data.hpp
+// begin include/bsc/runtime/event_queue.hpp
+// The bounded internal event queue: a ring buffer of the chart's event types. No heap;
+// a push onto a full queue is refused and remembered, never written out of bounds.
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <variant>
+
+
+namespace bsc::detail {
+
+// What every bounded queue keeps: its slots (Slots, first, where a machine's members of large
+// alignment go), where the oldest event is, how many there are, and whether a raise found the
+// queue full.
+template <std::size_t Capacity, class Slots>
+class ring {
+public:
+    constexpr bool empty() const { return size_ == 0; }
+    constexpr std::size_t size() const { return size_; }
+    static constexpr std::size_t capacity() { return Capacity; }
+    constexpr bool overflowed() const { return overflowed_; }
+    constexpr void clear_overflow() { overflowed_ = false; }
+    constexpr void clear() { head_ = size_ = 0; }
+
+protected:
+    // True, and the overflow marked, if the queue is full: the raise then stores nothing.
+    constexpr bool refuse_when_full() {
+        if (size_ == Capacity) {
+            overflowed_ = true;
+            return true;
+        }
+        return false;
+    }
+    // The slot after the newest event; added() counts the event once it is stored there.
+    constexpr std::size_t back() const { return (head_ + size_) % Capacity; }
+    constexpr void added() { ++size_; }
+    // The slot of the oldest event; drop_front() takes it out once it is read. (A queue whose
+    // slots hold nothing only counts: removed().)
+    constexpr std::size_t front() const { return head_; }
+    constexpr void drop_front() {
+        head_ = (head_ + 1) % Capacity;
+        removed();
+    }
+    constexpr void removed() { --size_; }
+
+    [[no_unique_address]] Slots items_{};
+
+private:
+    std::size_t head_ = 0;
+    std::size_t size_ = 0;
+    bool overflowed_ = false;
+};
+
+// The position among Events of the event an event E is queued as: E itself, or its nearest
+// family (model/event_families.hpp): the rows that take it see no more of it than that. -1: none.
+template <class E, class... Es>
+constexpr int queued_index(type_list<Es...>) {
+    if constexpr (position_in<E, type_list<Es...>>::value >= 0)
+        return position_in<E, type_list<Es...>>::value;
+    else
+        return event_families<type_list<Es...>>::template trigger_of<E>();
+}
+
+// Raises e into a queue of Events: push(f) with the event e is queued as, or, for an event the
+// chart does not name, the error that says so (and false).
+template <class Events, class E, class Push>
+constexpr bool raise_into(E const& e, Push&& push) {
+    constexpr int as = queued_index<E>(Events{});
+    if constexpr (as < 0) {
+        detail::report<error::raised_event_not_in_chart<E>>();
+        return false;
+    } else {
+        return push(event_as<at<static_cast<std::size_t>(as), Events>>(e));
+    }
+}
+
+template <std::size_t Capacity, class Events>
+class event_queue;
+
+template <std::size_t Capacity, class... Es>
+class event_queue<Capacity, type_list<Es...>>
+    : public ring<Capacity, std::array<std::variant<std::monostate, Es...>, Capacity>> {
+    using ring<Capacity, std::array<std::variant<std::monostate, Es...>, Capacity>>::items_;
+
+public:
+    using value_type = std::variant<std::monostate, Es...>;
+
+    /// Raises e: queues it for processing after the current step. False if the queue is full.
+    /// An event the chart does not name is queued as its nearest family (model/event_families.hpp):
+    /// the rows that take it see no more of it than that.
+    template <class E>
+    constexpr bool operator()(E const& e) noexcept(std::is_nothrow_copy_constructible_v<E>) {
+        return raise_into<type_list<Es...>>(e, [this]<class F>(F const& f) { return this->template push<F>(f); });
+    }
+
+    // Removes the oldest event and calls f with it.
+    template <class F>
+    constexpr void pop(F&& f) {
+        value_type item = std::move(items_[this->front()]);
+        this->drop_front();
+        visit_index<static_cast<int>(sizeof...(Es))>(static_cast<int>(item.index()) - 1,
+                                                     [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
+    }
+
+protected:
+    // Queues an item already held as the queue's variant (a delayed event coming due).
+    constexpr bool push_item(value_type const& item) {
+        if (this->refuse_when_full()) return false;
+        items_[this->back()] = item;
+        this->added();
+        return true;
+    }
+
+private:
+    template <class E>
+    constexpr bool push(E const& e) {
+        if (this->refuse_when_full()) return false;
+        auto& slot = items_[this->back()];
+        // Emplacing spares GCC a false -Wmaybe-uninitialized on a temporary variant; Clang
+        // 14 cannot emplace into a variant in a constant expression, so that assigns.
+        if (std::is_constant_evaluated())
+            slot = value_type{std::in_place_type<E>, e};
+        else
+            slot.template emplace<E>(e);
+        this->added();  // (after the copy, which may throw)
+        return true;
+    }
+};
+
+// The slots of a single_event_queue: the events, or for an empty event none.
+template <std::size_t Capacity, class E>
+struct single_event_slots {
+    std::array<E, Capacity> value{};
+};
+template <std::size_t Capacity, class E>
+    requires std::is_empty_v<E>
+struct single_event_slots<Capacity, E> {};
+
+// The queue of a chart that raises one event type only, a trivially copyable one whose default
+// construction is a constant expression (queue_for.hpp picks it): the events themselves,
+// without a variant's index to store, load and switch on; for an empty event, not even the
+// events, only their count (a raise is then an increment, as a hand-written flag would be).
+template <std::size_t Capacity, class E>
+class single_event_queue : public ring<Capacity, single_event_slots<Capacity, E>> {
+    static_assert(Capacity > 0 && std::is_trivially_copyable_v<E>);
+    static constexpr bool stores_events = !std::is_empty_v<E>;
+    using ring<Capacity, single_event_slots<Capacity, E>>::items_;
+
+public:
+    /// Raises e, as event_queue does: E itself, or an event of E's family queued as E.
+    template <class R>
+    constexpr bool operator()(R const& e) noexcept(std::is_nothrow_copy_constructible_v<R>) {
+        return raise_into<type_list<E>>(e, [this](E const& f) { return this->push(f); });
+    }
+
+    // Removes the oldest event and calls f with it.
+    template <class F>
+    constexpr void pop(F&& f) {
+        if constexpr (stores_events) {
+            E const item = items_.value[this->front()];
+            this->drop_front();
+            f(item);
+        } else {
+            this->removed();
+            f(E{});
+        }
+    }
+
+private:
+    constexpr bool push(E const& e) {
+        if (this->refuse_when_full()) return false;
+        if constexpr (stores_events) items_.value[this->back()] = e;
+        this->added();
+        return true;
+    }
+};
+
+// A chart whose queue capacity is zero raises nothing: every raise is an overflow.
+template <class... Es>
+class event_queue<0, type_list<Es...>> {
+public:
+    template <class E>
+    constexpr bool operator()(E const&) noexcept {
+        overflowed_ = true;
+        return false;
+    }
+    constexpr bool empty() const { return true; }
+    constexpr std::size_t size() const { return 0; }
+    static constexpr std::size_t capacity() { return 0; }
+    constexpr bool overflowed() const { return overflowed_; }
+    constexpr void clear_overflow() { overflowed_ = false; }
+    constexpr void clear() {}
+    template <class F>
+    constexpr void pop(F&&) {}
+
+private:
+    bool overflowed_ = false;
+};
+
+// The queue of a chart none of whose actions can raise (detail::raised_by_chart): it is always
+// empty, and saying so at compile time spares every dispatch the checks for raised events.
+// (Not a template: its name is part of the symbols of every action the machine calls.)
+class no_event_queue {
+public:
+    template <class E>
+    constexpr bool operator()(E const&) noexcept {  // never called: no action takes the raise argument
+        return false;
+    }
+    static constexpr bool empty() { return true; }
+    static constexpr std::size_t size() { return 0; }
+    static constexpr std::size_t capacity() { return 0; }
+    static constexpr bool overflowed() { return false; }
+    constexpr void clear_overflow() {}
+    constexpr void clear() {}
+    template <class F>
+    constexpr void pop(F&&) {}
+};
+
+}  // namespace bsc::detail
+// end include/bsc/runtime/event_queue.hpp
 // begin include/bsc/runtime/failures.hpp
 // How a machine catches what its guards and actions throw. Each call of a guard or an action is
 // one block: if it throws, the rest of it is skipped and the failure goes to the machine
@@ -7363,13 +7426,12 @@ namespace bsc::detail {
 // if none can raise (the machine then has no queue for them), raises_anything if one may raise
 // whatever it likes, else the events the bsc::raise actions name.
 // (A class, not an alias template: GCC 12 rejects the lambda in an alias template.)
-template <class Model, class Policy>
+template <class Model>
 struct raised_by_chart {
     using type = typename decltype([]<class... Rows>(type_list<Rows...>) {
         using context = typename Model::chart_context;
-        using raise = event_queue<Policy::queue_capacity, typename Model::events>;
         // (Entry and exit rows see no event; raised_by ignores it for them.)
-        return std::type_identity<join_raised<decltype(raised_by<context, row_event_t<Rows>, raise>(
+        return std::type_identity<join_raised<decltype(raised_by<context, row_event_t<Rows>, raise_stand_in>(
             static_cast<decltype(Rows::action) const*>(nullptr)))...>>{};
     }(typename Model::row_types{}))::type;
 };
@@ -7449,7 +7511,7 @@ inline constexpr std::size_t delayed_capacity_of<Policy, true> = Policy::delayed
 // the chart takes bsc::action_failed or a bsc::done event (which the machine raises); otherwise
 // none, and no test for raised events after a microstep.
 template <class Chart, class Policy, class Model = chart_model<std::remove_cv_t<Chart>>,
-          bool Delays = chart_sends_delayed<Model>(), class Raised = typename raised_by_chart<Model, Policy>::type>
+          bool Delays = chart_sends_delayed<Model>(), class Raised = typename raised_by_chart<Model>::type>
 using queue_for = std::conditional_t<
     Delays, delaying_queue<Policy::queue_capacity, delayed_capacity_of<Policy, Delays>, typename Model::events>,
     typename raise_queue<!std::is_same_v<Raised, type_list<>> || Model::template trigger_of<action_failed> >= 0 ||
@@ -8012,7 +8074,7 @@ private:
     template <int S, int Trigger, class E, class Sel>
     constexpr bool select(E const& e, Sel& sel) {
         constexpr auto k = tree.kinds[S];
-        if constexpr (!plan::template relevant<Trigger>[S]) {
+        if constexpr (!plan::template relevant<Trigger>(S)) {
             return false;
         } else if constexpr (k == detail::kind::basic || k == detail::kind::final_state) {
             constexpr auto const& candidates = plan::template candidates<S, Trigger>;
@@ -8166,7 +8228,7 @@ private:
     template <int S, int Component>
     constexpr bool component_walk() {
         constexpr auto k = tree.kinds[S];
-        if constexpr (!plan::template relevant<detail::any_condition>[S]) {
+        if constexpr (!plan::template relevant<detail::any_condition>(S)) {
             return false;
         } else if constexpr (k == detail::kind::composite) {
             // An irrelevant child has no condition-driven transition on it or above it.

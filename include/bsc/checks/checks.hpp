@@ -239,10 +239,9 @@ template <class Chart>
 constexpr auto check_signatures() {
     using model = chart_model<Chart>;
     using context = typename Chart::context_type;
-    constexpr int row = first_signature_error<context, typename model::events>(typename Chart::row_types{});
+    constexpr int row = first_signature_error<context>(typename Chart::row_types{});
     if constexpr (row >= 0)
-        return type_list<row_error<
-            Chart, row, signature_error<context, typename model::events, typename model::template row_at<row>>>>{};
+        return type_list<row_error<Chart, row, signature_error<context, typename model::template row_at<row>>>>{};
     else
         return type_list<>{};
 }

@@ -15,8 +15,6 @@
 #include <bsc/dsl/guard.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/error.hpp>
-#include <bsc/outcome.hpp>
-#include <bsc/runtime/event_queue.hpp>
 
 namespace bsc::detail {
 
@@ -40,7 +38,8 @@ struct bad_guard<or_guard<L, R>, Ctx, E> {
     using type = concat_t<typename bad_guard<L, Ctx, E>::type, typename bad_guard<R, Ctx, E>::type>;
 };
 
-// The same for actions; Raise is the queue a machine of the default policy hands them.
+// The same for actions; Raise is what the checks hand them as the raise argument
+// (raise_stand_in, dsl/action.hpp).
 template <class A, class Ctx, class E, class Raise>
 struct bad_action {
     using type = type_list<>;
@@ -110,19 +109,15 @@ constexpr auto signature_errors(Row const*) {
 
 // The position of the first row of a chart whose guard or action cannot be called (-1: none),
 // and that row's error.
-template <class Ctx, class Events>
-using signature_raise = event_queue<default_policy::queue_capacity, Events>;
-template <class Ctx, class Events, class... Rows>
+template <class Ctx, class... Rows>
 constexpr int first_signature_error(type_list<Rows...>) {
     constexpr bool bad[] = {
-        (decltype(signature_errors<Ctx, signature_raise<Ctx, Events>>(static_cast<Rows const*>(nullptr)))::size > 0)...,
-        false};
+        (decltype(signature_errors<Ctx, raise_stand_in>(static_cast<Rows const*>(nullptr)))::size > 0)..., false};
     for (std::size_t i = 0; i < sizeof...(Rows); ++i)
         if (bad[i]) return static_cast<int>(i);
     return -1;
 }
-template <class Ctx, class Events, class Row>
-using signature_error =
-    at<0, decltype(signature_errors<Ctx, signature_raise<Ctx, Events>>(static_cast<Row const*>(nullptr)))>;
+template <class Ctx, class Row>
+using signature_error = at<0, decltype(signature_errors<Ctx, raise_stand_in>(static_cast<Row const*>(nullptr)))>;
 
 }  // namespace bsc::detail

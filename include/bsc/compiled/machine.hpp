@@ -475,7 +475,7 @@ private:
     template <int S, int Trigger, class E, class Sel>
     constexpr bool select(E const& e, Sel& sel) {
         constexpr auto k = tree.kinds[S];
-        if constexpr (!plan::template relevant<Trigger>[S]) {
+        if constexpr (!plan::template relevant<Trigger>(S)) {
             return false;
         } else if constexpr (k == detail::kind::basic || k == detail::kind::final_state) {
             constexpr auto const& candidates = plan::template candidates<S, Trigger>;
@@ -629,7 +629,7 @@ private:
     template <int S, int Component>
     constexpr bool component_walk() {
         constexpr auto k = tree.kinds[S];
-        if constexpr (!plan::template relevant<detail::any_condition>[S]) {
+        if constexpr (!plan::template relevant<detail::any_condition>(S)) {
             return false;
         } else if constexpr (k == detail::kind::composite) {
             // An irrelevant child has no condition-driven transition on it or above it.

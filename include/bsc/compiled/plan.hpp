@@ -24,56 +24,109 @@ struct plan : chart_layout<Model> {
     using layout::from_source;
     using layout::from_source_begin;
 
+    // The transitions on each event, in declaration order, for a chart without event families
+    // (where a row takes the events of its trigger only): those on event position t are
+    // on_event[on_event_begin[t]] to on_event[on_event_begin[t + 1]] (exclusive). Built once,
+    // so that each trigger's list is read, not found by a scan of every row.
+    static constexpr int event_count = static_cast<int>(Model::events::size);
+    static constexpr auto on_event_begin = [] {
+        std::array<int, static_cast<std::size_t>(event_count) + 1> begin{};
+        for (int r = 0; r < R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == row_kind::transition && rows.trigger[static_cast<std::size_t>(r)] >= 0)
+                ++begin[static_cast<std::size_t>(rows.trigger[static_cast<std::size_t>(r)]) + 1];
+        for (std::size_t t = 0; t < static_cast<std::size_t>(event_count); ++t) begin[t + 1] += begin[t];
+        return begin;
+    }();
+    static constexpr auto on_event = [] {
+        std::array<int, static_cast<std::size_t>(on_event_begin[static_cast<std::size_t>(event_count)])> out{};
+        auto next = on_event_begin;
+        for (int r = 0; r < R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == row_kind::transition && rows.trigger[static_cast<std::size_t>(r)] >= 0)
+                out[static_cast<std::size_t>(next[static_cast<std::size_t>(rows.trigger[static_cast<std::size_t>(r)])]++)] = r;
+        return out;
+    }();
+    static constexpr bool indexed_by_event(int trigger) { return !Model::has_families && trigger >= 0; }
+
     static constexpr int transition_count(int trigger) {
+        if (indexed_by_event(trigger))
+            return on_event_begin[static_cast<std::size_t>(trigger) + 1] - on_event_begin[static_cast<std::size_t>(trigger)];
         int n = 0;
         for (int r = 0; r < R; ++r) n += is_transition_on(r, trigger) ? 1 : 0;
         return n;
     }
 
     // The transitions on a trigger, in declaration order; the selection buffer stores positions
-    // here. The one scan of all rows per trigger: what follows reads this list.
+    // here. What follows reads this list.
     template <int Trigger>
     static constexpr auto transitions = [] {
         std::array<int, static_cast<std::size_t>(transition_count(Trigger))> out{};
         std::size_t n = 0;
-        for (int r = 0; r < R; ++r)
-            if (is_transition_on(r, Trigger))
-                out[n++] = r;
+        if constexpr (indexed_by_event(Trigger)) {
+            for (int i = on_event_begin[static_cast<std::size_t>(Trigger)]; i < on_event_begin[static_cast<std::size_t>(Trigger) + 1]; ++i)
+                out[n++] = on_event[static_cast<std::size_t>(i)];
+        } else {
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, Trigger))
+                    out[n++] = r;
+        }
         return out;
     }();
 
-    // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a descendant.
+    // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a
+    // descendant. (Asked of the states a dispatch walks through, each asking reads the trigger's
+    // transitions: no array of every state per trigger, which made the compile time quadratic.)
     template <int Trigger>
-    static constexpr std::array<bool, static_cast<std::size_t>(N)> relevant = [] {
-        std::array<bool, static_cast<std::size_t>(N)> rel{};
+    static constexpr bool relevant(int s) {
         for (int const r : transitions<Trigger>) {
             int const src = rows.source[static_cast<std::size_t>(r)];
-            for (int a = src; a >= 0; a = tree.parent[static_cast<std::size_t>(a)]) rel[static_cast<std::size_t>(a)] = true;
-            for (int d = src; d < tree.end[static_cast<std::size_t>(src)]; ++d) rel[static_cast<std::size_t>(d)] = true;
+            if (tree.contains(src, s) || tree.contains(s, src)) return true;
         }
-        return rel;
-    }();
+        return false;
+    }
+
+    // The children of composite s toward the sources of the trigger's transitions below it,
+    // in document order, each once; or `every`, if a source is s or above it (every child is
+    // then relevant).
+    template <int Trigger>
+    struct children_found {
+        std::array<int, transitions<Trigger>.size()> child{};
+        std::size_t count = 0;
+        bool every = false;
+    };
+    template <int Trigger>
+    static constexpr children_found<Trigger> children_toward_sources(int s) {
+        children_found<Trigger> found{};
+        for (int const r : transitions<Trigger>) {
+            int const src = rows.source[static_cast<std::size_t>(r)];
+            if (tree.contains(src, s)) {
+                found.every = true;
+                return found;
+            }
+            if (!tree.contains(s, src)) continue;
+            int const c = tree.child_toward(s, src);
+            bool seen = false;
+            for (std::size_t j = 0; j < found.count && !seen; ++j) seen = found.child[j] == c;
+            if (seen) continue;
+            std::size_t i = found.count++;  // insertion in document order
+            for (; i > 0 && found.child[i - 1] > c; --i) found.child[i] = found.child[i - 1];
+            found.child[i] = c;
+        }
+        return found;
+    }
 
     // The children of composite S that are relevant to the trigger, in document order: the
     // only ones dispatch on the trigger compares S's byte with, so each trigger instantiates
     // code along its own paths only (linear in the transitions, not in states x triggers).
     template <int Trigger, int S>
     static constexpr auto relevant_children = [] {
-        constexpr auto& rel = relevant<Trigger>;
-        constexpr int count = [] {
-            int n = 0;
-            for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
-                 c = tree.next_sibling[static_cast<std::size_t>(c)])
-                n += rel[static_cast<std::size_t>(c)];
-            return n;
-        }();
-        std::array<int, static_cast<std::size_t>(count)> out{};
-        std::size_t n = 0;
-        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
-             c = tree.next_sibling[static_cast<std::size_t>(c)])
-            if (rel[static_cast<std::size_t>(c)])
-                out[n++] = c;
-        return out;
+        constexpr auto found = children_toward_sources<Trigger>(S);
+        if constexpr (found.every) {
+            return layout::template children<S>;
+        } else {
+            std::array<int, found.count> out{};
+            for (std::size_t i = 0; i < found.count; ++i) out[i] = found.child[i];
+            return out;
+        }
     }();
 
     static constexpr int candidate_count(int leaf, int trigger) {

@@ -101,6 +101,19 @@ struct state_action {
     }
 };
 
+// What the chart's analysis hands an action as its raise argument, to learn whether it takes one
+// (may_raise below) and whether it can be called at all (checks/signatures.hpp): callable with
+// any event, as a machine's queue is with the chart's events (an event the chart does not take
+// is reported where the machine calls the action: bsc::error::raised_event_not_in_chart). Not a
+// machine's queue, whose type spells every event of the chart and holds a std::variant of
+// them: each question would instantiate it and make a symbol named after it.
+struct raise_stand_in {
+    template <class E>
+    constexpr bool operator()(E const&) noexcept {
+        return true;
+    }
+};
+
 // Whether an action can raise an event, i.e. whether it is ever handed the raise argument
 // (an action that does not accept it is called without it). A chart none of whose actions
 // can raise needs no event queue. Unknown action types are assumed to raise.

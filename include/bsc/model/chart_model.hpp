@@ -278,15 +278,16 @@ struct drop_void<type_list<Es...>> {
     using type = concat_t<std::conditional_t<std::is_void_v<Es>, type_list<>, type_list<Es>>...>;
 };
 
+// The index of state Tag among Tags: no_state for no target, unknown_state if not there. A
+// class, not a function: a function's symbol would spell the chart's states, once per row.
 template <class Tag, class Tags>
-constexpr int state_index() {
-    if constexpr (std::is_same_v<Tag, no_target>)
-        return no_state;
-    else {
-        constexpr int i = position_in<Tag, Tags>::value;
-        return i < 0 ? unknown_state : i;
-    }
-}
+struct state_index {
+    enum : int { value = position_in<Tag, Tags>::value < 0 ? unknown_state : position_in<Tag, Tags>::value };
+};
+template <class Tags>
+struct state_index<no_target, Tags> {
+    enum : int { value = no_state };
+};
 
 template <std::size_t N, std::size_t M = 0>
 constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false,
@@ -334,12 +335,12 @@ struct chart_model {
         (
             [&] {
                 r.kinds[i] = kind_of_row<Rs>();
-                r.source[i] = state_index<typename Rs::source, tags>();
+                r.source[i] = state_index<typename Rs::source, tags>::value;
                 r.target[i] = no_state;
                 r.trigger[i] = eventless_id;
                 r.guarded[i] = false;
                 if constexpr (is_transition_row<Rs>) {
-                    r.target[i] = state_index<typename Rs::target, tags>();
+                    r.target[i] = state_index<typename Rs::target, tags>::value;
                     r.guarded[i] = Rs::guarded;
                     r.local[i] = Rs::local;
                     r.defers[i] = Rs::defers;
@@ -352,7 +353,7 @@ struct chart_model {
                     if constexpr (Rs::targets::size > 1)
                         [&]<class First, class... More>(type_list<First, More...>*) {
                             std::size_t k = 0;
-                            ((r.more_targets[i][k++] = state_index<More, tags>()), ...);
+                            ((r.more_targets[i][k++] = state_index<More, tags>::value), ...);
                         }(static_cast<typename Rs::targets*>(nullptr));
                 }
                 r.domain[i] = no_state;

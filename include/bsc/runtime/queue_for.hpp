@@ -20,13 +20,12 @@ namespace bsc::detail {
 // if none can raise (the machine then has no queue for them), raises_anything if one may raise
 // whatever it likes, else the events the bsc::raise actions name.
 // (A class, not an alias template: GCC 12 rejects the lambda in an alias template.)
-template <class Model, class Policy>
+template <class Model>
 struct raised_by_chart {
     using type = typename decltype([]<class... Rows>(type_list<Rows...>) {
         using context = typename Model::chart_context;
-        using raise = event_queue<Policy::queue_capacity, typename Model::events>;
         // (Entry and exit rows see no event; raised_by ignores it for them.)
-        return std::type_identity<join_raised<decltype(raised_by<context, row_event_t<Rows>, raise>(
+        return std::type_identity<join_raised<decltype(raised_by<context, row_event_t<Rows>, raise_stand_in>(
             static_cast<decltype(Rows::action) const*>(nullptr)))...>>{};
     }(typename Model::row_types{}))::type;
 };
@@ -106,7 +105,7 @@ inline constexpr std::size_t delayed_capacity_of<Policy, true> = Policy::delayed
 // the chart takes bsc::action_failed or a bsc::done event (which the machine raises); otherwise
 // none, and no test for raised events after a microstep.
 template <class Chart, class Policy, class Model = chart_model<std::remove_cv_t<Chart>>,
-          bool Delays = chart_sends_delayed<Model>(), class Raised = typename raised_by_chart<Model, Policy>::type>
+          bool Delays = chart_sends_delayed<Model>(), class Raised = typename raised_by_chart<Model>::type>
 using queue_for = std::conditional_t<
     Delays, delaying_queue<Policy::queue_capacity, delayed_capacity_of<Policy, Delays>, typename Model::events>,
     typename raise_queue<!std::is_same_v<Raised, type_list<>> || Model::template trigger_of<action_failed> >= 0 ||
