@@ -39,7 +39,8 @@ struct no_observer {};
 /// where `state`, `source` and `target` are bsc::state_tag<S> (target: state_tag<bsc::internal>
 /// for an internal transition) and `event` is the event: bsc::eventless for an eventless row,
 /// bsc::timeout_elapsed{delay} for a timeout row. A hook the observer lacks costs nothing.
-/// The time of a dispatch is the machine's clock, now(): the time of the last cycle.
+/// The time of a dispatch is the machine's clock, now(): the time of the last cycle (a machine
+/// that keeps no clock, policy keep_clock, has none: its on_cycle gets the caller's time).
 namespace detail {
 template <class O, class Tag>
 concept observes_entry = requires(O& o) {

@@ -55,7 +55,8 @@ struct default_policy {
     /// true: every machine keeps the time of its last cycle, for now() and for
     /// step_report::clock_went_backwards. false: only a machine whose chart needs time keeps it
     /// (a timeout row, a bsc::timer in the context, a delayed event); in the others now() does
-    /// not compile, clock_went_backwards stays false, and the machine is 8 bytes smaller.
+    /// not compile, clock_went_backwards stays false, and the machine is smaller by the clock
+    /// and its flag (8 bytes and 1, with their padding). bsc::vcd_recorder reads now().
     static constexpr bool keep_clock = true;
 };
 

@@ -5,6 +5,8 @@
 // 0.03 s for the part bsc uses, which libstdc++ keeps in <bits/chrono.h>. Other standard
 // libraries get <chrono> itself.
 
+#include <version>  // defines __GLIBCXX__ where the library is libstdc++
+
 #if defined(__GLIBCXX__) && __has_include(<bits/chrono.h>)
 #include <bits/chrono.h>
 #else

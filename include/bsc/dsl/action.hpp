@@ -2,12 +2,14 @@
 // Actions: what a transition, an entry or an exit does to the context.
 // Wrap a callable with bsc::action to sequence it with the comma operator: / (a, b, c).
 
+#include <cstddef>
 #include <tuple>
 #include <type_traits>
 #include <utility>
 
 #include <bsc/detail/invoke.hpp>
 #include <bsc/detail/meta.hpp>
+#include <bsc/outcome.hpp>
 
 namespace bsc::detail {
 
@@ -107,11 +109,19 @@ struct state_action {
 // is reported where the machine calls the action: bsc::error::raised_event_not_in_chart). Not a
 // machine's queue, whose type spells every event of the chart and holds a std::variant of
 // them: each question would instantiate it and make a symbol named after it.
+// (It answers what a machine's queue answers besides the call, as an empty queue of the
+// default capacity would, so that an action that asks is judged as before.)
 struct raise_stand_in {
     template <class E>
     constexpr bool operator()(E const&) noexcept {
         return true;
     }
+    constexpr bool empty() const noexcept { return true; }
+    constexpr std::size_t size() const noexcept { return 0; }
+    static constexpr std::size_t capacity() noexcept { return default_policy::queue_capacity; }
+    constexpr bool overflowed() const noexcept { return false; }
+    constexpr void clear_overflow() noexcept {}
+    constexpr void clear() noexcept {}
 };
 
 // Whether an action can raise an event, i.e. whether it is ever handed the raise argument
