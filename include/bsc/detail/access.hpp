@@ -61,21 +61,12 @@ struct access {
     // Whether a cycle has run (the clock is the caller's time); false without a clock.
     template <class M>
     static constexpr bool clock_started(M const& m) {
-        if constexpr (std::remove_cvref_t<decltype(driver_of(m))>::keeps_clock)
-            return driver_of(m).clock_started_;
-        else
-            return false;
+        return driver_of(m).clock_started();
     }
     // Sets a machine's clock as if a cycle had run at `now` (or, started = false, as if none had).
-    // A machine without a clock has nothing to set.
     template <class M>
     static constexpr void set_clock(M& m, duration now, bool started = true) {
-        if constexpr (std::remove_cvref_t<decltype(driver_of(m))>::keeps_clock) {
-            driver_of(m).clock_ = now;
-            driver_of(m).clock_started_ = started;
-        } else {
-            (void)m, (void)now, (void)started;
-        }
+        driver_of(m).set_clock(now, started);
     }
     // Inside a dispatch, a cycle or the construction: the machine's data is in flux.
     template <class M>

@@ -408,6 +408,21 @@ protected:
         else
             return duration{};
     }
+    // Whether a cycle has run (the clock is the caller's time); false without a clock.
+    constexpr bool clock_started() const {
+        if constexpr (keeps_clock)
+            return clock_started_;
+        else
+            return false;
+    }
+    // Sets the clock as if a cycle had run at `now` (started = false: as if none had). A machine
+    // without a clock has nothing to set.
+    constexpr void set_clock([[maybe_unused]] duration now, [[maybe_unused]] bool started) {
+        if constexpr (keeps_clock) {
+            clock_ = now;
+            clock_started_ = started;
+        }
+    }
 
     // ---- deferred events, called by the back ends ------------------------------------------
     static constexpr bool defers = model::has_deferral;
