@@ -46,8 +46,9 @@ struct default_policy {
     static constexpr bool rethrow_failures = true;
     /// true: a dispatch or step called from inside the machine's own guards, actions or
     /// observer hooks is refused (outcome::reentrant). false: the caller promises that none
-    /// is; the machine does not test for it, and one would run nested inside the run under
-    /// way, against run to completion.
+    /// is; the machine does not test for it, and one that is called is undefined behaviour (a
+    /// run starts from an empty queue, which the optimiser is told; builds without NDEBUG
+    /// check it with an assertion).
     static constexpr bool refuse_reentry = true;
     /// true: the machine keeps each run's outcome for last_outcome(). false: it keeps nothing
     /// (dispatch and step still return it); last_outcome() and last_failure() do not compile.

@@ -972,8 +972,9 @@ struct default_policy {
     static constexpr bool rethrow_failures = true;
     /// true: a dispatch or step called from inside the machine's own guards, actions or
     /// observer hooks is refused (outcome::reentrant). false: the caller promises that none
-    /// is; the machine does not test for it, and one would run nested inside the run under
-    /// way, against run to completion.
+    /// is; the machine does not test for it, and one that is called is undefined behaviour (a
+    /// run starts from an empty queue, which the optimiser is told; builds without NDEBUG
+    /// check it with an assertion).
     static constexpr bool refuse_reentry = true;
     /// true: the machine keeps each run's outcome for last_outcome(). false: it keeps nothing
     /// (dispatch and step still return it); last_outcome() and last_failure() do not compile.
@@ -4928,14 +4929,21 @@ private:
 // end include/bsc/detail/access.hpp
 // begin include/bsc/detail/assume.hpp
 // Tells the optimiser a fact the code keeps but cannot show it (a machine's status byte has no
-// failure bit set between runs), so that it drops the tests the fact settles. The fact must
-// hold: where it does not, the behaviour is undefined. GCC follows what it is told through
-// later tests; Clang drops it where paths join (driver.hpp says what it does there instead).
+// failure bit set between runs; its queue is empty between runs), so that it drops the tests
+// the fact settles. The fact must hold: where it does not, the behaviour is undefined. GCC
+// follows what it is told through later tests; Clang drops it where paths join (driver.hpp says
+// what it does there instead). A build without NDEBUG tests the fact instead, and stops the
+// program where it does not hold.
+
+#include <cassert>
 
 namespace bsc::detail {
 
 [[gnu::always_inline]] constexpr void assume(bool holds) {
-#if defined(__clang__)
+#if !defined(NDEBUG)
+    assert(holds && "bsc: a machine's invariant is broken: it was called back from inside its own run under a "
+                    "policy that does not refuse it, or copied, assigned to or destroyed there");
+#elif defined(__clang__)
     __builtin_assume(holds);
 #else
     if (!holds) __builtin_unreachable();
@@ -5956,6 +5964,20 @@ public:
     constexpr void clear_overflow() { overflowed_ = false; }
     constexpr void clear() { head_ = size_ = 0; }
 
+    // Between runs a machine's queue is empty, rewound and without overflow: every run ends so
+    // (runtime/driver.hpp: settled, abandon, end_run_by_exception). Said to the optimiser at
+    // the start of a dispatch, so that it places the events a dispatch raises at known slots
+    // and drops the tests of a queue it sees nothing raised into: a raise then costs about a
+    // store, its processing a load (docs/benchmarks.md, analysis section 13). A hidden friend,
+    // not a member: the queue is the raise argument of every action, which should not be
+    // handed a promise it can break.
+    friend constexpr void assume_idle(ring const& q) {
+        detail::assume(q.size_ == 0 && q.head_ == 0 && !q.overflowed_);
+    }
+    // Puts the oldest event back at the first slot; only for an empty queue (at the end of a
+    // run), where it costs one store and no test.
+    friend constexpr void rewind_empty(ring& q) { q.head_ = 0; }
+
 protected:
     // True, and the overflow marked, if the queue is full: the raise then stores nothing.
     constexpr bool refuse_when_full() {
@@ -6467,6 +6489,7 @@ public:
             report.status = record(outcome::halted);
             return report;
         }
+        assume_idle_queue();
         mark_running();
         report.status = end_run(run_to_end([&] { return cycle(now, report); }));
         return report;
@@ -6745,7 +6768,10 @@ protected:
     // (SCXML's exitInterpreter).
     constexpr void halt_if_final() {
         if constexpr (layout::can_halt)
-            if (halted()) backend().exit_all();
+            if (halted()) {
+                backend().exit_all();
+                queue_.clear();
+            }
     }
 
 private:
@@ -6993,6 +7019,14 @@ private:
         }
     }
 
+    // A run starts with the queue idle (event_queue.hpp, assume_idle): said to the optimiser.
+    // It holds unless the machine is called back from inside its own run under a policy that
+    // does not refuse it, or copied, assigned to or destroyed there (docs/semantics.md,
+    // "Reentrancy"); builds without NDEBUG check it instead.
+    constexpr void assume_idle_queue() const {
+        if constexpr (requires { assume_idle(queue_); }) assume_idle(queue_);
+    }
+
     // The outcome of a dispatch that ran no guard, action or observer: recorded, and returned.
     constexpr outcome record(outcome result) {
         if constexpr (Policy::keep_last_outcome || Policy::refuse_reentry) status_ = static_cast<run_status>(result);
@@ -7021,6 +7055,8 @@ private:
         // A failure the run kept goes with it: the exception that ended the run is what the
         // caller sees.
         if constexpr (may_throw) failure_.reset();
+        queue_.clear();  // and what it had raised: nothing leaks into the next run
+        queue_.clear_overflow();
         status_ = static_cast<run_status>(bits(status_) & ~(running_bit | failed_bit));
         if constexpr (completion::parallel_count > 0) entering_ = {};  // the run is over, whatever it was entering
     }
@@ -7032,6 +7068,7 @@ private:
         start_without_failure();
         if (halted())
             return record(outcome::halted);
+        assume_idle_queue();
         if (!Backend::marks_running_lazily || observed) mark_running();
         // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined,
         // and a function for the body would be one more to instantiate per event type.)
@@ -7138,8 +7175,12 @@ private:
         return settled(consumed);
     }
 
+    // The end of every run that settles. The queue is empty here, but for a machine that has
+    // halted (halt_if_final drops what it holds): it is rewound to its first slot, for
+    // assume_idle_queue.
     constexpr outcome settled(bool consumed) {
         halt_if_final();
+        if constexpr (requires { rewind_empty(queue_); }) rewind_empty(queue_);
         if constexpr (defers) {
             if (deferred_.overflowed()) {
                 deferred_.clear_overflow();

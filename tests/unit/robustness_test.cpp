@@ -533,3 +533,56 @@ TEST_CASE_TEMPLATE("an entry action that throws during construction: the constru
     machine m{rob::failing_start, rob::start_ctx{false}};
     CHECK(m.template is<rob::Start>());
 }
+
+namespace rob {
+struct ping {};
+struct Armed; struct Other; struct Hit;
+// go raises ping on the way to Armed; an observer may end that run by throwing on entering Armed,
+// before the machine processes ping. Other takes ping too: a ping left over from that run would
+// show as Hit after the next dispatch.
+struct raising_ctx {};
+inline constexpr auto raising = bsc::make_chart<raising_ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Armed>, bsc::state<Other>, bsc::state<Hit>),
+    bsc::state<Idle> + bsc::event<go> / bsc::raise(ping{}) = bsc::state<Armed>,
+    bsc::state<Armed> + bsc::event<ping> = bsc::state<Hit>, bsc::state<Armed> + bsc::event<poke> = bsc::state<Other>,
+    bsc::state<Other> + bsc::event<ping> = bsc::state<Hit>, bsc::state<Hit> + bsc::event<go> = bsc::state<Idle>);
+struct armed_thrower {
+    bool armed = false;
+    template <class S>
+    void on_entry(bsc::state_tag<S>) {
+        if (armed && std::is_same_v<S, Armed>) throw observer_error{};
+    }
+};
+}  // namespace rob
+
+TEST_CASE_TEMPLATE("events raised by a run that an exception ends never reach a later run", Backend, compiled, table) {
+    auto check = [](auto& m) {
+        m.observer().armed = true;
+        CHECK_THROWS_AS(m.dispatch(rob::go{}), rob::observer_error);
+        m.observer().armed = false;
+        CHECK(m.template is<rob::Armed>());  // the microstep completed; its raised ping went with the run
+        CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);
+        CHECK(m.template is<rob::Other>());
+        // The machine goes on raising and processing as before, many times round its queue.
+        for (int round = 0; round < 20; ++round) {
+            m.observer().armed = round % 3 == 0;
+            if (m.template is<rob::Other>()) {
+                CHECK(m.dispatch(rob::ping{}) == bsc::outcome::consumed);
+                CHECK(m.dispatch(rob::go{}) == bsc::outcome::consumed);
+            }
+            REQUIRE(m.template is<rob::Idle>());
+            if (m.observer().armed) {
+                CHECK_THROWS_AS(m.dispatch(rob::go{}), rob::observer_error);
+                CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);
+            } else {
+                CHECK(m.dispatch(rob::go{}) == bsc::outcome::consumed);  // Armed, then its ping: Hit
+                CHECK(m.template is<rob::Hit>());
+                CHECK(m.dispatch(rob::go{}) == bsc::outcome::consumed);
+            }
+        }
+    };
+    bsc_test::machine_t<Backend, decltype(rob::raising), bsc::default_policy, rob::armed_thrower> m{rob::raising};
+    check(m);
+    bsc_test::machine_t<Backend, decltype(rob::raising), bsc::lean_policy, rob::armed_thrower> lean{rob::raising};
+    check(lean);
+}

@@ -206,6 +206,7 @@ public:
             report.status = record(outcome::halted);
             return report;
         }
+        assume_idle_queue();
         mark_running();
         report.status = end_run(run_to_end([&] { return cycle(now, report); }));
         return report;
@@ -484,7 +485,10 @@ protected:
     // (SCXML's exitInterpreter).
     constexpr void halt_if_final() {
         if constexpr (layout::can_halt)
-            if (halted()) backend().exit_all();
+            if (halted()) {
+                backend().exit_all();
+                queue_.clear();
+            }
     }
 
 private:
@@ -732,6 +736,14 @@ private:
         }
     }
 
+    // A run starts with the queue idle (event_queue.hpp, assume_idle): said to the optimiser.
+    // It holds unless the machine is called back from inside its own run under a policy that
+    // does not refuse it, or copied, assigned to or destroyed there (docs/semantics.md,
+    // "Reentrancy"); builds without NDEBUG check it instead.
+    constexpr void assume_idle_queue() const {
+        if constexpr (requires { assume_idle(queue_); }) assume_idle(queue_);
+    }
+
     // The outcome of a dispatch that ran no guard, action or observer: recorded, and returned.
     constexpr outcome record(outcome result) {
         if constexpr (Policy::keep_last_outcome || Policy::refuse_reentry) status_ = static_cast<run_status>(result);
@@ -760,6 +772,8 @@ private:
         // A failure the run kept goes with it: the exception that ended the run is what the
         // caller sees.
         if constexpr (may_throw) failure_.reset();
+        queue_.clear();  // and what it had raised: nothing leaks into the next run
+        queue_.clear_overflow();
         status_ = static_cast<run_status>(bits(status_) & ~(running_bit | failed_bit));
         if constexpr (completion::parallel_count > 0) entering_ = {};  // the run is over, whatever it was entering
     }
@@ -771,6 +785,7 @@ private:
         start_without_failure();
         if (halted())
             return record(outcome::halted);
+        assume_idle_queue();
         if (!Backend::marks_running_lazily || observed) mark_running();
         // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined,
         // and a function for the body would be one more to instantiate per event type.)
@@ -877,8 +892,12 @@ private:
         return settled(consumed);
     }
 
+    // The end of every run that settles. The queue is empty here, but for a machine that has
+    // halted (halt_if_final drops what it holds): it is rewound to its first slot, for
+    // assume_idle_queue.
     constexpr outcome settled(bool consumed) {
         halt_if_final();
+        if constexpr (requires { rewind_empty(queue_); }) rewind_empty(queue_);
         if constexpr (defers) {
             if (deferred_.overflowed()) {
                 deferred_.clear_overflow();
