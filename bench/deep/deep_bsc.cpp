@@ -1,8 +1,14 @@
 // Workload deep, bsc: the chart of deep/deep_workload.hpp, generated with templates, run by
 // the compiled back end (bsc::machine) and the table-driven back end (bsc::table::machine).
+//
+// Built twice, each a translation unit of its own so that their compile times are measured apart
+// (docs/benchmarks.md): as itself, the compiled back end; included by deep_bsc_table.cpp with
+// BENCH_BSC_TABLE defined, the table-driven back end.
 
 #include <bsc/bsc.hpp>
+#if defined(BENCH_BSC_TABLE)
 #include <bsc/table/engine.hpp>
+#endif
 
 #include "../bsc_variant.hpp"
 #include "deep_workload.hpp"
@@ -66,9 +72,14 @@ private:
 };
 
 using compiled = bsc::machine<decltype(chart), bench::bsc_policy>;
+#if defined(BENCH_BSC_TABLE)
 using table = decltype(bsc::table::machine{chart});
+#endif
 
 }  // namespace
 
-BENCH_IMPL(deep_bench::workload, "bsc_compiled", deep_machine<compiled>);
+#if defined(BENCH_BSC_TABLE)
 BENCH_IMPL(deep_bench::workload, "bsc_table", deep_machine<table>);
+#else
+BENCH_IMPL(deep_bench::workload, "bsc_compiled", deep_machine<compiled>);
+#endif

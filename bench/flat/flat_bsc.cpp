@@ -1,7 +1,14 @@
 // Workload flat, bsc: the compiled back end (bsc::machine) and the table-driven back end
 // (bsc::table::machine) on the generated chart of flat/flat_chart_bsc.hpp.
+//
+// Built twice, each a translation unit of its own so that their compile times are measured apart
+// (docs/benchmarks.md): as itself, the compiled back end; included by flat_bsc_table.cpp with
+// BENCH_BSC_TABLE defined, the table-driven back end.
 
+#include <bsc/bsc.hpp>
+#if defined(BENCH_BSC_TABLE)
 #include <bsc/table/engine.hpp>
+#endif
 
 #include "flat_chart_bsc.hpp"
 #include "flat_workload.hpp"
@@ -34,9 +41,14 @@ private:
 };
 
 using compiled = bsc::machine<chart_type, bench::bsc_policy>;  // bench/bsc_variant.hpp
+#if defined(BENCH_BSC_TABLE)
 using table = decltype(bsc::table::machine{chart});
+#endif
 
 }  // namespace
 
-BENCH_IMPL(flat_bench::workload, "bsc_compiled", flat_machine<compiled>);
+#if defined(BENCH_BSC_TABLE)
 BENCH_IMPL(flat_bench::workload, "bsc_table", flat_machine<table>);
+#else
+BENCH_IMPL(flat_bench::workload, "bsc_compiled", flat_machine<compiled>);
+#endif

@@ -1,7 +1,14 @@
 // Workload mcs, bsc: the chart of examples/mcs/mcs.hpp run by the compiled back end
 // (bsc::machine) and by the table-driven back end (bsc::table::machine).
+//
+// Built twice, each a translation unit of its own so that their compile times are measured apart
+// (docs/benchmarks.md): as itself, the compiled back end; included by mcs_bsc_table.cpp with
+// BENCH_BSC_TABLE defined, the table-driven back end.
 
+#include <bsc/bsc.hpp>
+#if defined(BENCH_BSC_TABLE)
 #include <bsc/table/engine.hpp>
+#endif
 
 #include "../../examples/mcs/mcs.hpp"
 #include "mcs_workload.hpp"
@@ -51,9 +58,14 @@ private:
 };
 
 using compiled = bsc::machine<decltype(mcs::chart)>;
+#if defined(BENCH_BSC_TABLE)
 using table = decltype(bsc::table::machine{mcs::chart});
+#endif
 
 }  // namespace
 
-BENCH_IMPL(mcs_bench::workload, "bsc_compiled", supervisor<compiled>);
+#if defined(BENCH_BSC_TABLE)
 BENCH_IMPL(mcs_bench::workload, "bsc_table", supervisor<table>);
+#else
+BENCH_IMPL(mcs_bench::workload, "bsc_compiled", supervisor<compiled>);
+#endif

@@ -3,7 +3,6 @@
 
 #include <array>
 #include <cstddef>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -16,21 +15,64 @@
 #include <bsc/dsl/tree.hpp>
 
 namespace bsc::detail {
+// Rows grouped by bsc::rows, held as a chart holds its rows (detail/row_storage.hpp).
 template <class... Rows>
 struct row_group {
-    std::tuple<Rows...> rows;
+    row_storage<Rows...> rows;
 };
 template <class A>
 inline constexpr bool is_row_group = false;
 template <class... Rows>
 inline constexpr bool is_row_group<row_group<Rows...>> = true;
 
+// How many rows an argument of bsc::rows or make_chart brings: a row one, a group its own.
 template <class A>
-constexpr auto row_tuple(A a) {
-    if constexpr (is_row_group<A>)
-        return a.rows;
+inline constexpr std::size_t rows_in = 1;
+template <class... Rows>
+inline constexpr std::size_t rows_in<row_group<Rows...>> = sizeof...(Rows);
+
+// Where each row of the flattened list comes from: its argument, and its position there.
+template <class... A>
+struct flat_positions {
+    static constexpr std::size_t size = (rows_in<A> + ... + 0);
+    struct from {
+        std::size_t argument = 0;
+        std::size_t position = 0;
+    };
+    static constexpr std::array<from, size> of = [] {
+        std::array<from, size> out{};
+        std::size_t j = 0, k = 0;
+        for (std::size_t n : {rows_in<A>...}) {
+            for (std::size_t i = 0; i < n; ++i) out[j++] = {k, i};
+            ++k;
+        }
+        return out;
+    }();
+};
+
+// Row J of the flattened arguments, moved from where it is: the argument itself, or a row of
+// the group it is.
+template <std::size_t Argument, std::size_t Position, class Arguments>
+constexpr auto&& flat_row(Arguments& arguments) {
+    auto&& a = take_row<Argument>(arguments);
+    if constexpr (is_row_group<std::remove_cvref_t<decltype(a)>>)
+        return take_row<Position>(a.rows);
     else
-        return std::tuple<A>{std::move(a)};
+        return static_cast<std::remove_cvref_t<decltype(a)>&&>(a);
+}
+
+// The rows and groups of rows A..., as one group. (Not std::tuple_cat and std::apply: their
+// instantiations, a recursion over the tuples and a noexcept test of a call with every row,
+// were most of what a chart of many groups cost to declare.)
+template <class... A>
+constexpr auto flatten_rows(A... a) {
+    using positions = flat_positions<A...>;
+    row_storage<A...> arguments{{static_cast<A&&>(a)}...};
+    return [&]<std::size_t... J>(std::index_sequence<J...>) {
+        return row_group<std::remove_cvref_t<
+            decltype(flat_row<positions::of[J].argument, positions::of[J].position>(arguments))>...>{
+            {{flat_row<positions::of[J].argument, positions::of[J].position>(arguments)}...}};
+    }(std::make_index_sequence<positions::size>{});
 }
 
 template <class Root>
@@ -118,15 +160,16 @@ struct rejected_chart_of<type_list<Errors...>> {
 /// `bsc::make_chart<C>(tree, base_rules, pause_rules, row3)`. Groups may nest.
 template <class... Rows>
 constexpr auto rows(Rows... rows) {
-    return std::apply([](auto... r) { return detail::row_group<decltype(r)...>{{std::move(r)...}}; },
-                      std::tuple_cat(detail::row_tuple(std::move(rows))...));
+    return detail::flatten_rows(std::move(rows)...);
 }
 
 template <class Context, class Root, class... Rows>
 constexpr auto make_chart(Root root, Rows... rows) {
     if constexpr ((detail::is_row_group<Rows> || ...)) {
-        return std::apply([&](auto... r) { return make_chart<Context>(root, std::move(r)...); },
-                          std::tuple_cat(detail::row_tuple(std::move(rows))...));
+        auto group = detail::flatten_rows(std::move(rows)...);
+        return [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return make_chart<Context>(std::move(root), detail::take_row<I>(group.rows)...);
+        }(std::make_index_sequence<detail::rows_in<decltype(group)>>{});
     } else if constexpr (!detail::is_compound_root<Root>()) {
         return detail::rejected_chart<Context, error::root_must_be_composite<Root>>{};
     } else if constexpr (!(detail::is_row<Rows> && ...)) {

@@ -30,6 +30,12 @@ constexpr Row const& row_at(row_slot<I, Row> const& slot) {
     return slot.row;
 }
 
+/// The row at position I, to move from (the row's type deduced from the base, as row_at's).
+template <std::size_t I, class Row>
+constexpr Row&& take_row(row_slot<I, Row>& slot) {
+    return static_cast<Row&&>(slot.row);
+}
+
 /// Calls f with every row, in order.
 template <class F, std::size_t... I, class... Rows>
 constexpr decltype(auto) with_rows(row_slots<std::index_sequence<I...>, Rows...> const& rows, F&& f) {
