@@ -372,6 +372,30 @@ TEST_CASE_TEMPLATE("groups of rows (bsc::rows) are flattened into the chart, so 
     CHECK(b.template is<A>());
 }
 
+TEST_CASE_TEMPLATE("rows keep their declaration order through groups and nested groups: the first enabled wins",
+                   Backend, compiled, table) {
+    struct number {
+        int n;
+    };
+    // Three rows of A on number, each in a group of a different depth; for n = 3 all three hold,
+    // for n = 2 the last two, for n = 1 the last one.
+    static constexpr auto chart = bsc::make_chart<ctx>(
+        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+        bsc::rows(bsc::state<A> + bsc::event<number>[([](ctx const&, number const& e) { return e.n >= 3; })] /
+                      [](ctx& c) { c.value = c.value * 10 + 3; }),
+        bsc::state<A> + bsc::event<number>[([](ctx const&, number const& e) { return e.n >= 2; })] /
+            [](ctx& c) { c.value = c.value * 10 + 2; },
+        bsc::rows(bsc::rows(bsc::state<A> + bsc::event<number>[([](ctx const&, number const& e) { return e.n >= 1; })] /
+                                [](ctx& c) { c.value = c.value * 10 + 1; }),
+                  bsc::state<A> + bsc::event<back> = bsc::state<B>),
+        bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    machine_t<Backend, decltype(chart)> m{chart, ctx{}};
+    for (int n : {3, 1, 2, 3, 2, 1}) CHECK(m.dispatch(number{n}) == bsc::outcome::consumed);
+    CHECK(m.context().value == 312321);
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
+    CHECK(m.template is<B>());
+}
+
 TEST_CASE_TEMPLATE("eventless transitions run after each microstep until none is enabled, and at construction", Backend, compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>, bsc::state<D>),
