@@ -463,18 +463,20 @@ TEST_CASE_TEMPLATE("under a policy that does not rethrow, the failure is an outc
 
 namespace rob {
 struct observer_error {};
-// Throws from on_entry of Outer while `armed`: after the action's failure, before the run ends.
+// Throws from on_entry of Target while `armed`: for Outer, after the action's failure, before
+// the run ends.
+template <class Target>
 struct entry_thrower {
     bool armed = false;
     template <class S>
     void on_entry(bsc::state_tag<S>) {
-        if (armed && std::is_same_v<S, Outer>) throw observer_error{};
+        if (armed && std::is_same_v<S, Target>) throw observer_error{};
     }
 };
 }  // namespace rob
 
 TEST_CASE_TEMPLATE("a failure kept by a run that an exception ends goes with that run", Backend, compiled, table) {
-    bsc_test::machine_t<Backend, decltype(rob::unhandled), rob::reporting, rob::entry_thrower> m{rob::unhandled};
+    bsc_test::machine_t<Backend, decltype(rob::unhandled), rob::reporting, rob::entry_thrower<rob::Outer>> m{rob::unhandled};
     m.context().throw_in_action = true;
     m.observer().armed = true;
     // The action's failure is kept, then the observer's exception ends the run: that is what escapes.
@@ -546,13 +548,6 @@ inline constexpr auto raising = bsc::make_chart<raising_ctx>(
     bsc::state<Idle> + bsc::event<go> / bsc::raise(ping{}) = bsc::state<Armed>,
     bsc::state<Armed> + bsc::event<ping> = bsc::state<Hit>, bsc::state<Armed> + bsc::event<poke> = bsc::state<Other>,
     bsc::state<Other> + bsc::event<ping> = bsc::state<Hit>, bsc::state<Hit> + bsc::event<go> = bsc::state<Idle>);
-struct armed_thrower {
-    bool armed = false;
-    template <class S>
-    void on_entry(bsc::state_tag<S>) {
-        if (armed && std::is_same_v<S, Armed>) throw observer_error{};
-    }
-};
 }  // namespace rob
 
 TEST_CASE_TEMPLATE("events raised by a run that an exception ends never reach a later run", Backend, compiled, table) {
@@ -581,8 +576,8 @@ TEST_CASE_TEMPLATE("events raised by a run that an exception ends never reach a 
             }
         }
     };
-    bsc_test::machine_t<Backend, decltype(rob::raising), bsc::default_policy, rob::armed_thrower> m{rob::raising};
+    bsc_test::machine_t<Backend, decltype(rob::raising), bsc::default_policy, rob::entry_thrower<rob::Armed>> m{rob::raising};
     check(m);
-    bsc_test::machine_t<Backend, decltype(rob::raising), bsc::lean_policy, rob::armed_thrower> lean{rob::raising};
+    bsc_test::machine_t<Backend, decltype(rob::raising), bsc::lean_policy, rob::entry_thrower<rob::Armed>> lean{rob::raising};
     check(lean);
 }
