@@ -14,6 +14,12 @@
 //       --benchmark_report_aggregates_only=true        (one command line)
 //
 // `per_cycle` is the time of one execution cycle (inputs written, one step, outputs read).
+//
+// Built with BENCH_CELL_INSNS defined (target bench_manufacturing_cell_insns), the same file is
+// the driver of the instruction counts, as bench/insns_main.cpp is for the other workloads:
+// `bench_manufacturing_cell_insns IMPLEMENTATION CYCLES` runs CYCLES cycles of the recording
+// (from a fresh controller each time round) with bsc_compiled or hand_written;
+// scripts/benchmarks.py counts them with callgrind, with CYCLES and with none.
 
 #include <benchmark/benchmark.h>
 
@@ -21,6 +27,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <string_view>
 #include <vector>
 
 #include "../examples/manufacturing_cell/controller.hpp"
@@ -277,6 +284,35 @@ std::vector<recorded_cycle> const& recording() {
     return rec;
 }
 
+// One replay of `cycles` cycles of the recording by each controller, from its starting state,
+// starting again whenever the recording ends (time must not run backwards within a run).
+unsigned replay_bsc(std::vector<recorded_cycle> const& rec, cell::machine const& start, std::size_t cycles) {
+    cell::machine m = start;
+    unsigned acc = 0;
+    for (std::size_t i = 0; i < cycles; ++i) {
+        if (i % rec.size() == 0) m = start;
+        recorded_cycle const& c = rec[i % rec.size()];
+        cell::write_inputs(m.context(), c.in);
+        m.step(c.time);
+        acc += pack(cell::read_outputs(m.context()));
+    }
+    return acc;
+}
+
+unsigned replay_scan(std::vector<recorded_cycle> const& rec, scan::controller const& start, std::size_t cycles) {
+    scan::controller c = start;
+    unsigned acc = 0;
+    for (std::size_t i = 0; i < cycles; ++i) {
+        if (i % rec.size() == 0) c = start;
+        recorded_cycle const& r = rec[i % rec.size()];
+        c.pending = r.in;
+        c.scan(r.time);
+        acc += pack(c.out);
+    }
+    return acc;
+}
+
+#if !defined(BENCH_CELL_INSNS)
 void report(benchmark::State& state, std::size_t cycles) {
     auto const total = static_cast<double>(cycles) * static_cast<double>(state.iterations());
     state.SetItemsProcessed(static_cast<std::int64_t>(total));
@@ -290,36 +326,41 @@ void report(benchmark::State& state, std::size_t cycles) {
 void bm_bsc_step(benchmark::State& state) {
     auto const& rec = recording();
     cell::machine const start{cell::chart};
-    for (auto _ : state) {
-        cell::machine m = start;
-        unsigned acc = 0;
-        for (recorded_cycle const& c : rec) {
-            cell::write_inputs(m.context(), c.in);
-            m.step(c.time);
-            acc += pack(cell::read_outputs(m.context()));
-        }
-        benchmark::DoNotOptimize(acc);
-    }
+    for (auto _ : state) benchmark::DoNotOptimize(replay_bsc(rec, start, rec.size()));
     report(state, rec.size());
 }
 
 void bm_hand_written_scan(benchmark::State& state) {
     auto const& rec = recording();
     scan::controller const start = scan::like(cell::machine{cell::chart});
-    for (auto _ : state) {
-        scan::controller c = start;
-        unsigned acc = 0;
-        for (recorded_cycle const& r : rec) {
-            c.pending = r.in;
-            c.scan(r.time);
-            acc += pack(c.out);
-        }
-        benchmark::DoNotOptimize(acc);
-    }
+    for (auto _ : state) benchmark::DoNotOptimize(replay_scan(rec, start, rec.size()));
     report(state, rec.size());
 }
 
+#endif
+
 }  // namespace
 
+#if defined(BENCH_CELL_INSNS)
+int main(int argc, char** argv) {
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: %s IMPLEMENTATION CYCLES\n  bsc_compiled\n  hand_written\n", argv[0]);
+        return 2;
+    }
+    std::string_view const impl = argv[1];
+    std::size_t const cycles = std::strtoull(argv[2], nullptr, 10);
+    auto const& rec = recording();
+    unsigned acc = 0;
+    if (impl == "bsc_compiled")
+        acc = replay_bsc(rec, cell::machine{cell::chart}, cycles);
+    else if (impl == "hand_written")
+        acc = replay_scan(rec, scan::like(cell::machine{cell::chart}), cycles);
+    else
+        return std::fprintf(stderr, "%s: no implementation %s\n", argv[0], argv[1]), 2;
+    std::printf("cell %s %zu %x\n", argv[1], cycles, acc);
+    return 0;
+}
+#else
 BENCHMARK(bm_bsc_step);
 BENCHMARK(bm_hand_written_scan);
+#endif

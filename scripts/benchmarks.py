@@ -11,7 +11,8 @@ Steps, each logged with the exact command it runs:
    existing bench_manufacturing_cell) with --benchmark_format=json --benchmark_repetitions=5
    --benchmark_report_aggregates_only=true, and takes the median CPU time per event;
 3. counts instructions per event with callgrind: bench_<workload>_insns IMPLEMENTATION N, run
-   with N events and with none, the difference divided by N;
+   with N events and with none, the difference divided by N (for the cell, per cycle:
+   bench_manufacturing_cell_insns);
 4. measures the compile time and peak memory (/usr/bin/time -f '%e %M') of `g++ -O2 -c` on
    generated translation units holding a flat chart of 25, 50, 100 and 200 states, with bsc and
    with Boost.MSM (bench/compile_time/*.cpp.in), and on each workload's translation units
@@ -201,7 +202,7 @@ def implementations_of(exe):
 
 
 def instructions(workload):
-    exe = BUILD / "bench" / f"bench_{workload}_insns"
+    exe = BUILD / "bench" / ("bench_manufacturing_cell_insns" if workload == "cell" else f"bench_{workload}_insns")
     result = {}
     for impl in implementations_of(exe):
         with_events = callgrind_total([exe, impl, CALLGRIND_EVENTS])
@@ -591,7 +592,9 @@ def write_report(times, insns, compile_times, unit_compile, conditions, timings_
         "Median over 5 repetitions of the CPU time of one replay divided by the number of events",
         "(`cv`: coefficient of variation of the 5 repetitions). Instructions per event: callgrind,",
         f"`bench_<workload>_insns IMPL {CALLGRIND_EVENTS}` minus `bench_<workload>_insns IMPL 0`, divided by "
-        f"{CALLGRIND_EVENTS} (includes the replay loop and the switch from event number to event type).",
+        f"{CALLGRIND_EVENTS} (includes the replay loop and the switch from event number to event type);",
+        f"for `cell`, per cycle: `bench_manufacturing_cell_insns IMPL {CALLGRIND_EVENTS}` minus `... IMPL 0`, the",
+        "recorded cycles replayed from a fresh controller each time round (inputs written, one cycle, outputs read).",
         "Below each workload's table, the compile time and peak memory of each implementation's",
         "translation unit, measured as the flat charts' below (`/usr/bin/time`, `g++ -O2 -DNDEBUG -c`,",
         "Boost.MSM's as C++17, the others as C++20), during the compile-time run; every unit includes",
@@ -680,7 +683,7 @@ def main():
         m = re.search(r"## Commands\n.*?```\n(.*?)```", DOC.read_text(), re.S)
         previous["commands"] = m.group(1).splitlines() if m else []
 
-    targets = ["bench_manufacturing_cell"]
+    targets = ["bench_manufacturing_cell", "bench_manufacturing_cell_insns"]
     for w in WORKLOADS:
         targets += [f"bench_{w}", f"bench_{w}_insns"]
     build(targets)
@@ -697,7 +700,7 @@ def main():
             data, cond = run_benchmark(exe, w, [], args.max_wait)
             times[w] = parse_timings(w, data)
             conditions[exe.name] = cond
-        insns = {w: instructions(w) for w in WORKLOADS}
+        insns = {w: instructions(w) for w in ALL_WORKLOADS}
         timings_at = f"{started} to {datetime.datetime.utcnow().strftime('%Y-%m-%d %H:%M')}"
 
     compile_times = {k: {int(n): v for n, v in d.items() if n.isdigit()} | {x: d[x] for x in d if not x.isdigit()}

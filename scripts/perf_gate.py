@@ -8,7 +8,8 @@ instructions: builds each dispatch workload of bench/ (flat, mcs, deep, wide, an
 workloads ported: sml_simple, sml_composite, sml_complex, fsmb_large, fsmb_deep; flat with its
 actions declared noexcept; flat, deep, wide and the ports with noexcept actions and
 bsc::lean_policy: bsc
-and the hand-written switch, -O2, no sanitizers), counts with callgrind the instructions per event of
+and the hand-written switch, -O2, no sanitizers; and the manufacturing cell's execution cycle,
+bench_manufacturing_cell_insns, per cycle), counts with callgrind the instructions per event of
 `bench_<workload>_insns IMPL N` minus `... IMPL 0`, divided by N, and fails if bsc's count of a
 workload exceeds the baseline by more than 0.5 % (plus 0.1 instruction for rounding). Callgrind
 counts are deterministic for a given compiler and library, so the margin is small; a change that
@@ -51,6 +52,9 @@ WORKLOADS = [("flat", "flat", []), ("flat_noexcept", "flat", ["-DBENCH_NOEXCEPT_
 # Deep), as users write them and lean.
 for _port in ["sml_simple", "sml_composite", "sml_complex", "fsmb_large", "fsmb_deep"]:
     WORKLOADS += [(_port, _port, []), (_port + "_lean", _port, ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"])]
+# The manufacturing cell's execution cycle (bench/manufacturing_cell_bench.cpp, built as its own
+# driver of instruction counts): instructions per cycle rather than per event.
+WORKLOADS += [("cell", None, [])]
 IMPLEMENTATIONS = ["bsc_compiled", "hand_written"]
 EVENTS = 20000
 INSTRUCTION_MARGIN = 0.005
@@ -92,15 +96,19 @@ def callgrind_total(cmd, work):
 def measure_instructions(cxx, work):
     counts = {}
     for w, directory, extra in WORKLOADS:
-        objects = []
-        for impl in ("bsc", "hand"):
-            obj = work / f"{w}_{impl}.o"
-            compile_object(cxx, ROOT / "bench" / directory / f"{directory}_{impl}.cpp", obj, extra)
-            objects.append(str(obj))
         exe = work / f"{w}_insns"
-        subprocess.run([cxx, *flags(), f'-DBENCH_WORKLOAD_HEADER="{directory}/{directory}_workload.hpp"',
-                        f"-DBENCH_WORKLOAD={directory}_bench::workload", str(ROOT / "bench" / "insns_main.cpp"),
-                        *objects, "-lbenchmark", "-lpthread", "-o", str(exe)], check=True)
+        if directory is None:  # the cell
+            subprocess.run([cxx, *flags(), "-DBENCH_CELL_INSNS=1", str(ROOT / "bench" / "manufacturing_cell_bench.cpp"),
+                            "-lbenchmark", "-lpthread", "-o", str(exe)], check=True)
+        else:
+            objects = []
+            for impl in ("bsc", "hand"):
+                obj = work / f"{w}_{impl}.o"
+                compile_object(cxx, ROOT / "bench" / directory / f"{directory}_{impl}.cpp", obj, extra)
+                objects.append(str(obj))
+            subprocess.run([cxx, *flags(), f'-DBENCH_WORKLOAD_HEADER="{directory}/{directory}_workload.hpp"',
+                            f"-DBENCH_WORKLOAD={directory}_bench::workload", str(ROOT / "bench" / "insns_main.cpp"),
+                            *objects, "-lbenchmark", "-lpthread", "-o", str(exe)], check=True)
         counts[w] = {}
         for impl in IMPLEMENTATIONS:
             with_events = callgrind_total([exe, impl, EVENTS], work)
