@@ -5900,18 +5900,10 @@ constexpr auto tie_fields(T& t) {
     }
 }
 
-// Calls f(field) for each field of an aggregate, in declaration order. (Always inlined, with
-// no lambda between: the tuple holds a reference to every field, and a copy of it made where
-// the visit is not inlined, as Clang left the machine's visit of a context for its timers,
-// cost more than the visit.)
-template <class Fields, class F, std::size_t... I>
-[[gnu::always_inline]] constexpr void visit_fields(Fields const& fields, F& f, std::index_sequence<I...>) {
-    (f(std::get<I>(fields)), ...);
-}
+// Calls f(field) for each field of an aggregate, in declaration order.
 template <class T, class F>
-[[gnu::always_inline]] constexpr void for_each_field(T& t, F&& f) {
-    auto const fields = tie_fields(t);
-    visit_fields(fields, f, std::make_index_sequence<std::tuple_size_v<std::remove_const_t<decltype(fields)>>>{});
+constexpr void for_each_field(T& t, F&& f) {
+    std::apply([&](auto&... field) { (f(field), ...); }, tie_fields(t));
 }
 
 }  // namespace bsc::detail
@@ -5957,11 +5949,9 @@ constexpr bool holds_points() {
         return false;
 }
 
-// Calls f(point) for each point of the kind in t, in declaration order, depth first. (Always
-// inlined, as detail::for_each_field: out of line, the visit builds a reference to every field
-// of the context for the few that hold points.)
+// Calls f(point) for each point of the kind in t, in declaration order, depth first.
 template <class Points, class T, class F>
-[[gnu::always_inline]] constexpr void for_each_point(T& t, F const& f) {
+constexpr void for_each_point(T& t, F const& f) {
     if constexpr (Points::template is_point<T>) {
         f(t);
     } else if constexpr (!holds_points<Points, T>()) {

@@ -54,11 +54,9 @@ constexpr bool holds_points() {
         return false;
 }
 
-// Calls f(point) for each point of the kind in t, in declaration order, depth first. (Always
-// inlined, as detail::for_each_field: out of line, the visit builds a reference to every field
-// of the context for the few that hold points.)
+// Calls f(point) for each point of the kind in t, in declaration order, depth first.
 template <class Points, class T, class F>
-[[gnu::always_inline]] constexpr void for_each_point(T& t, F const& f) {
+constexpr void for_each_point(T& t, F const& f) {
     if constexpr (Points::template is_point<T>) {
         f(t);
     } else if constexpr (!holds_points<Points, T>()) {
