@@ -3,7 +3,8 @@
 //
 // Built twice, each a translation unit of its own so that their compile times are measured apart
 // (docs/benchmarks.md): as itself, the compiled back end; included by flat_bsc_table.cpp with
-// BENCH_BSC_TABLE defined, the table-driven back end.
+// BENCH_BSC_TABLE defined, the table-driven back end. The compiled machine names its chart with
+// bsc::chart_ref, as docs/api.md recommends.
 
 #include <bsc/bsc.hpp>
 #if defined(BENCH_BSC_TABLE)
@@ -17,7 +18,6 @@ namespace {
 
 constexpr std::size_t N = flat_bench::workload::states;
 constexpr auto const& chart = flat_bsc::chart<N>;
-using chart_type = decltype(flat_bsc::chart<N>);
 
 template <class Machine>
 class flat_machine {
@@ -40,7 +40,7 @@ private:
     Machine m_{chart};
 };
 
-using compiled = bsc::machine<chart_type, bench::bsc_policy>;  // bench/bsc_variant.hpp
+using compiled = bsc::machine<bsc::chart_ref<flat_bsc::chart<N>>, bench::bsc_policy>;  // bench/bsc_variant.hpp
 #if defined(BENCH_BSC_TABLE)
 using table = decltype(bsc::table::machine{chart});
 #endif
