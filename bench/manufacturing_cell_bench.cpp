@@ -284,32 +284,34 @@ std::vector<recorded_cycle> const& recording() {
     return rec;
 }
 
-// One replay of `cycles` cycles of the recording by each controller, from its starting state,
-// starting again whenever the recording ends (time must not run backwards within a run).
-unsigned replay_bsc(std::vector<recorded_cycle> const& rec, cell::machine const& start, std::size_t cycles) {
-    cell::machine m = start;
+// One replay of `cycles` cycles of the recording by a controller, from its starting state,
+// starting again whenever the recording ends (time must not run backwards within a run):
+// `cycle(controller, recorded)` runs one cycle and returns the outputs it published, packed.
+template <class Controller, class Cycle>
+unsigned replay(std::vector<recorded_cycle> const& rec, Controller const& start, std::size_t cycles, Cycle cycle) {
+    Controller c = start;
     unsigned acc = 0;
     for (std::size_t i = 0; i < cycles; ++i) {
-        if (i % rec.size() == 0) m = start;
-        recorded_cycle const& c = rec[i % rec.size()];
-        cell::write_inputs(m.context(), c.in);
-        m.step(c.time);
-        acc += pack(cell::read_outputs(m.context()));
+        if (i % rec.size() == 0) c = start;
+        acc += cycle(c, rec[i % rec.size()]);
     }
     return acc;
 }
 
+unsigned replay_bsc(std::vector<recorded_cycle> const& rec, cell::machine const& start, std::size_t cycles) {
+    return replay(rec, start, cycles, [](cell::machine& m, recorded_cycle const& r) {
+        cell::write_inputs(m.context(), r.in);
+        m.step(r.time);
+        return pack(cell::read_outputs(m.context()));
+    });
+}
+
 unsigned replay_scan(std::vector<recorded_cycle> const& rec, scan::controller const& start, std::size_t cycles) {
-    scan::controller c = start;
-    unsigned acc = 0;
-    for (std::size_t i = 0; i < cycles; ++i) {
-        if (i % rec.size() == 0) c = start;
-        recorded_cycle const& r = rec[i % rec.size()];
+    return replay(rec, start, cycles, [](scan::controller& c, recorded_cycle const& r) {
         c.pending = r.in;
         c.scan(r.time);
-        acc += pack(c.out);
-    }
-    return acc;
+        return pack(c.out);
+    });
 }
 
 #if !defined(BENCH_CELL_INSNS)
