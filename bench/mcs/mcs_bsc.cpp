@@ -58,7 +58,7 @@ private:
     Machine m_{mcs::chart};
 };
 
-using compiled = bsc::machine<bsc::chart_ref<mcs::chart>>;  // as docs/api.md recommends
+using compiled = bsc::machine<bsc::chart_ref<mcs::chart>>;
 #if defined(BENCH_BSC_TABLE)
 using table = decltype(bsc::table::machine{mcs::chart});
 #endif
