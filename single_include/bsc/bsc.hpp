@@ -5971,6 +5971,9 @@ constexpr bool holds_points() {
 
 // Calls f(point) for each point of the kind in t, in declaration order, depth first.
 template <class Points, class T, class F>
+#if defined(__clang__)
+[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
+#endif
 constexpr void for_each_point(T& t, F const& f) {
     if constexpr (Points::template is_point<T>) {
         f(t);
@@ -6569,7 +6572,7 @@ private:
     // Out of line, so that step stays small enough to be inlined where it is called: GCC 12,
     // inlining the cycle into step instead, returns the report from a call, assembled in
     // memory by narrow stores and read back by wider loads, which stall (the manufacturing
-    // cell's cycle took a fifth longer; docs/benchmarks.md, analysis section 15).
+    // cell's cycle took about a fifth longer; docs/benchmarks.md, analysis section 15).
     [[gnu::noinline]] constexpr outcome cycle(duration now, step_report& report) {
         if constexpr (keeps_clock) {
             if (!clock_started_) {
@@ -7170,16 +7173,17 @@ private:
     // The components' turns in a cycle: a component takes its turn if it was active when the
     // cycle began and still is (an earlier component may have left it); one entered during
     // the cycle waits for the next. Returns the number of transitions fired.
-    constexpr int run_components() {
+    constexpr int run_components() { return run_components(std::make_index_sequence<layout::components.size()>{}); }
+    // (A function of its own and not a lambda: the flags and the count are then its locals, in
+    // registers, not captures that every component's stores might overwrite, reloaded after each.)
+    template <std::size_t... I>
+    constexpr int run_components(std::index_sequence<I...>) {
         constexpr auto const& components = layout::components;
-        std::array<bool, components.size()> active_at_start{};
+        bool const active_at_start[] = {backend().template is_active<components[I]>()...};
         int fired = 0;
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            ((active_at_start[I] = backend().template is_active<components[I]>()), ...);
-            ((fired += active_at_start[I] && backend().template is_active<components[I]>() &&
-                       backend().template component_step<components[I]>()),
-             ...);
-        }(std::make_index_sequence<components.size()>{});
+        ((fired += active_at_start[I] && backend().template is_active<components[I]>() &&
+                   backend().template component_step<components[I]>()),
+         ...);
         return fired;
     }
 

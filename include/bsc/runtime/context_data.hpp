@@ -56,6 +56,9 @@ constexpr bool holds_points() {
 
 // Calls f(point) for each point of the kind in t, in declaration order, depth first.
 template <class Points, class T, class F>
+#if defined(__clang__)
+[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
+#endif
 constexpr void for_each_point(T& t, F const& f) {
     if constexpr (Points::template is_point<T>) {
         f(t);

@@ -217,7 +217,7 @@ private:
     // Out of line, so that step stays small enough to be inlined where it is called: GCC 12,
     // inlining the cycle into step instead, returns the report from a call, assembled in
     // memory by narrow stores and read back by wider loads, which stall (the manufacturing
-    // cell's cycle took a fifth longer; docs/benchmarks.md, analysis section 15).
+    // cell's cycle took about a fifth longer; docs/benchmarks.md, analysis section 15).
     [[gnu::noinline]] constexpr outcome cycle(duration now, step_report& report) {
         if constexpr (keeps_clock) {
             if (!clock_started_) {
@@ -818,16 +818,17 @@ private:
     // The components' turns in a cycle: a component takes its turn if it was active when the
     // cycle began and still is (an earlier component may have left it); one entered during
     // the cycle waits for the next. Returns the number of transitions fired.
-    constexpr int run_components() {
+    constexpr int run_components() { return run_components(std::make_index_sequence<layout::components.size()>{}); }
+    // (A function of its own and not a lambda: the flags and the count are then its locals, in
+    // registers, not captures that every component's stores might overwrite, reloaded after each.)
+    template <std::size_t... I>
+    constexpr int run_components(std::index_sequence<I...>) {
         constexpr auto const& components = layout::components;
-        std::array<bool, components.size()> active_at_start{};
+        bool const active_at_start[] = {backend().template is_active<components[I]>()...};
         int fired = 0;
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            ((active_at_start[I] = backend().template is_active<components[I]>()), ...);
-            ((fired += active_at_start[I] && backend().template is_active<components[I]>() &&
-                       backend().template component_step<components[I]>()),
-             ...);
-        }(std::make_index_sequence<components.size()>{});
+        ((fired += active_at_start[I] && backend().template is_active<components[I]>() &&
+                   backend().template component_step<components[I]>()),
+         ...);
         return fired;
     }
 
