@@ -274,6 +274,53 @@ TEST_CASE_TEMPLATE("components entered during a cycle first run in the next cycl
     CHECK(m.template is<W>());
 }
 
+
+TEST_CASE_TEMPLATE("a component that an earlier component leaves during a cycle loses its turn", Backend, compiled, table) {
+    struct data {
+        bool leave = false;
+        bool go = false;
+        int region_fired = 0;
+    };
+    struct Q;
+    struct R1;
+    struct R2;
+    struct X;
+    struct Y;
+    struct Z;
+    struct W;
+    // The root's component takes its turn first; R1's comes after.
+    static constexpr auto chart = bsc::make_chart<data>(
+        bsc::composite<cyc::Root>(bsc::initial<Q>,
+                                  bsc::parallel<Q>(bsc::composite<R1>(bsc::initial<Y>, bsc::state<W>),
+                                                   bsc::composite<R2>(bsc::initial<Z>)),
+                                  bsc::state<X>),
+        bsc::state<Q>[([](data const& d) { return d.leave; })] = bsc::state<X>,
+        bsc::state<Y>[([](data const& d) { return d.go; })] / [](data& d) { ++d.region_fired; } = bsc::state<W>,
+        bsc::state<X> + bsc::event<cyc::kick> = bsc::state<Q>);
+    machine_t<Backend, decltype(chart)> m{chart, data{}};
+    REQUIRE(m.template is<Y>());
+
+    // R1 was active when the cycle began and its transition is enabled, but the root's
+    // component has left Q when R1's turn comes.
+    m.context().leave = true;
+    m.context().go = true;
+    auto const left = m.step(0ms);
+    CHECK(left.transitions == 1);
+    CHECK(m.template is<X>());
+    CHECK(m.context().region_fired == 0);
+
+    // The twin: Q stays, and R1 takes its turn.
+    m.context().leave = false;
+    m.context().go = false;
+    m.dispatch(cyc::kick{});
+    REQUIRE(m.template is<Y>());
+    m.context().go = true;
+    auto const stayed = m.step(1ms);
+    CHECK(stayed.transitions == 1);
+    CHECK(m.template is<W>());
+    CHECK(m.context().region_fired == 1);
+}
+
 TEST_CASE_TEMPLATE("events raised in a cycle are processed at its end, before the outputs are committed", Backend, compiled, table) {
     struct ping {};
     struct io {
