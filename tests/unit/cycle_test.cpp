@@ -247,17 +247,22 @@ TEST_CASE("an inout channel is read as latched and written for the next cycle") 
     CHECK(ch.get() == 6);
 }
 
+namespace cyc::turns {
+// The states of the charts that test which components take their turn in a cycle.
+struct Q;
+struct R1;
+struct R2;
+struct X;
+struct Y;
+struct Z;
+struct W;
+}  // namespace cyc::turns
+
 TEST_CASE_TEMPLATE("components entered during a cycle first run in the next cycle", Backend, compiled, table) {
     struct data {
         bool in = false;
     };
-    struct Q;
-    struct R1;
-    struct R2;
-    struct X;
-    struct Y;
-    struct Z;
-    struct W;
+    using namespace cyc::turns;
     static constexpr auto chart = bsc::make_chart<data>(
         bsc::composite<cyc::Root>(bsc::initial<X>,
                                   bsc::parallel<Q>(bsc::composite<R1>(bsc::initial<Y>, bsc::state<W>),
@@ -274,20 +279,13 @@ TEST_CASE_TEMPLATE("components entered during a cycle first run in the next cycl
     CHECK(m.template is<W>());
 }
 
-
 TEST_CASE_TEMPLATE("a component that an earlier component leaves during a cycle loses its turn", Backend, compiled, table) {
     struct data {
         bool leave = false;
         bool go = false;
         int region_fired = 0;
     };
-    struct Q;
-    struct R1;
-    struct R2;
-    struct X;
-    struct Y;
-    struct Z;
-    struct W;
+    using namespace cyc::turns;
     // The root's component takes its turn first; R1's comes after.
     static constexpr auto chart = bsc::make_chart<data>(
         bsc::composite<cyc::Root>(bsc::initial<Q>,
