@@ -6570,8 +6570,8 @@ private:
     // The cycle of step(now), which has marked the machine running; returns its outcome.
     // Out of line, so that step stays small enough to be inlined where it is called: GCC 12,
     // inlining the cycle into step instead, returns the report from a call, assembled in
-    // memory by narrow stores and read back by wider loads, which stall (the manufacturing
-    // cell's cycle took about a fifth longer; docs/benchmarks.md, analysis section 15).
+    // memory by narrow stores and read back by wider loads, which stall (docs/benchmarks.md,
+    // analysis section 15).
     [[gnu::noinline]] constexpr outcome cycle(duration now, step_report& report) {
         if constexpr (keeps_clock) {
             if (!clock_started_) {
