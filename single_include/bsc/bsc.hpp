@@ -7157,7 +7157,7 @@ private:
             if constexpr (defers)
                 fired = deferring_microstep<Trigger>(e);
             else
-                fired = backend().template microstep<Trigger>(e);
+                fired = backend().template dispatch_microstep<Trigger>(e);
             settled = finish(fired);
             commit_outputs(context_.value);
 #if defined(__cpp_exceptions)
@@ -8300,6 +8300,35 @@ private:
     // lambdas, which cost more than the walk).
     template <int Trigger, class E>
     [[gnu::flatten]] constexpr bool microstep(E const& e) {
+        return microstep_body<Trigger>(e);
+    }
+    // The microstep of a dispatched event. Where the dispatch has nothing to do after it but
+    // record its outcome (no parallel states, nothing raised, no eventless transition or
+    // deferral to settle, and a policy that records), it is flattened in line: the dispatch
+    // then records the outcome where the transition ends and calls nothing (the call cost a
+    // frame, and a mark of the running machine that the record overwrites). Elsewhere it is
+    // called: a dispatch that records nothing ends in a jump to it, and one that settles, or
+    // a microstep of several regions, grows more in line than the call costs (measured:
+    // docs/benchmarks.md, analysis section 16).
+    static constexpr bool microstep_in_dispatch =
+        !plan::has_parallel && (Policy::refuse_reentry || Policy::keep_last_outcome) &&
+        std::is_same_v<detail::queue_for<Chart, Policy>, detail::no_event_queue> &&
+        !plan::has_trigger(detail::eventless_id) && !base::defers;
+    template <int Trigger, class E>
+    constexpr bool dispatch_microstep(E const& e) {
+        if constexpr (microstep_in_dispatch)
+            return microstep_in_line<Trigger>(e);
+        else
+            return microstep<Trigger>(e);
+    }
+    // (Flattened before it is put in line: GCC does not flatten what an always-inline function
+    // brings into a flattened one, hence microstep's own body, not this.)
+    template <int Trigger, class E>
+    [[gnu::flatten, gnu::always_inline]] constexpr bool microstep_in_line(E const& e) {
+        return microstep_body<Trigger>(e);
+    }
+    template <int Trigger, class E>
+    constexpr bool microstep_body(E const& e) {
         if constexpr (!plan::has_trigger(Trigger)) {
             return false;
         } else {
@@ -9281,6 +9310,12 @@ private:
             this->run(action, this->chart(), this->context_.value, e, this->queue_);
     }
 
+    // The microstep of a dispatched event: the same as any other here (the compiled back end
+    // puts it in line in the dispatch).
+    template <int Trigger, class E>
+    bool dispatch_microstep(E const& e) {
+        return microstep<Trigger>(e);
+    }
     template <int Trigger, class E>
     bool microstep(E const& e) {
         if constexpr (Trigger >= 0 && base::model::has_families)

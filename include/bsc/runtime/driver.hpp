@@ -803,7 +803,7 @@ private:
             if constexpr (defers)
                 fired = deferring_microstep<Trigger>(e);
             else
-                fired = backend().template microstep<Trigger>(e);
+                fired = backend().template dispatch_microstep<Trigger>(e);
             settled = finish(fired);
             commit_outputs(context_.value);
 #if defined(__cpp_exceptions)

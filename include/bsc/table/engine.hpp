@@ -435,6 +435,12 @@ private:
             this->run(action, this->chart(), this->context_.value, e, this->queue_);
     }
 
+    // The microstep of a dispatched event: the same as any other here (the compiled back end
+    // puts it in line in the dispatch).
+    template <int Trigger, class E>
+    bool dispatch_microstep(E const& e) {
+        return microstep<Trigger>(e);
+    }
     template <int Trigger, class E>
     bool microstep(E const& e) {
         if constexpr (Trigger >= 0 && base::model::has_families)
