@@ -4663,6 +4663,19 @@ struct plan : chart_layout<Model> {
 
 }  // namespace bsc::detail
 // end include/bsc/compiled/plan.hpp
+// begin include/bsc/detail/walk_inline.hpp
+// BSC_DETAIL_WALK_INLINE: on the functions of the compiled back end's walk of the configuration,
+// which a flattened microstep is made of. GCC's `flatten` inlines every call below the
+// microstep, so there it adds nothing; Clang's inlines only the calls written in the
+// microstep's own body, so under Clang the walk's functions are always inlined themselves
+// (docs/benchmarks.md, analysis section 16).
+
+#if defined(__clang__)
+#define BSC_DETAIL_WALK_INLINE __attribute__((always_inline))
+#else
+#define BSC_DETAIL_WALK_INLINE
+#endif
+// end include/bsc/detail/walk_inline.hpp
 // begin include/bsc/observer.hpp
 // Observer hooks: entry, exit and transition notifications for traces and tests. An
 // observer implements any subset of the hooks; a machine without one pays nothing.
@@ -7895,7 +7908,7 @@ private:
     // Calls f(child) for the active child of composite S if it is one of the children the
     // trigger makes relevant; returns false (without calling f) otherwise.
     template <int Trigger, int S, class F>
-    constexpr bool with_relevant_active_child(F&& f) const {
+    BSC_DETAIL_WALK_INLINE constexpr bool with_relevant_active_child(F&& f) const {
         constexpr auto const& children = plan::template relevant_children<Trigger, S>;
         int const active = active_child<S>();
         // Where every child is relevant, the last needs no test: the byte always names a child.
@@ -7905,7 +7918,7 @@ private:
         // which an unconditional last arm prevents.)
         constexpr std::size_t n = children.size();
         constexpr bool every_child = n >= 4 && static_cast<int>(n) == tree.child_count[S];
-        return [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return [&]<std::size_t... I>(std::index_sequence<I...>) BSC_DETAIL_WALK_INLINE {
             return ((active == tree.ordinal[children[I]] || (every_child && I + 1 == n) ? (f(detail::int_c<children[I]>{}), true)
                                                                                           : false) ||
                     ...);
@@ -8182,7 +8195,7 @@ private:
         std::conditional_t<plan::template region_local<Trigger>, component_selection, selection>>;
 
     template <int Leaf, int Trigger, int Row, class E, class Sel>
-    constexpr bool try_row(E const& e, Sel& sel) {
+    BSC_DETAIL_WALK_INLINE constexpr bool try_row(E const& e, Sel& sel) {
         if constexpr (rows.guarded[Row])
             if (!guard_holds<Row>(e))
                 return false;
@@ -8197,9 +8210,9 @@ private:
 
     // The candidates of basic state Leaf on the trigger, in order, until one is taken.
     template <int Leaf, int Trigger, class E, class Sel>
-    constexpr bool try_leaf(E const& e, Sel& sel) {
+    BSC_DETAIL_WALK_INLINE constexpr bool try_leaf(E const& e, Sel& sel) {
         constexpr auto const& candidates = plan::template candidates<Leaf, Trigger>;
-        return [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return [&]<std::size_t... I>(std::index_sequence<I...>) BSC_DETAIL_WALK_INLINE {
             return (try_row<Leaf, Trigger, candidates[I]>(e, sel) || ...);
         }(std::make_index_sequence<candidates.size()>{});
     }
@@ -8208,7 +8221,7 @@ private:
     // (A single candidate, or a single relevant child, the common cases, is reached without
     // the helper that expands several: a function less to instantiate for each.)
     template <int S, int Trigger, class E, class Sel>
-    constexpr bool select(E const& e, Sel& sel) {
+    BSC_DETAIL_WALK_INLINE constexpr bool select(E const& e, Sel& sel) {
         constexpr auto k = tree.kinds[S];
         if constexpr (!plan::template relevant<Trigger>(S)) {
             return false;
@@ -8228,7 +8241,8 @@ private:
             return select<children[0], Trigger>(e, sel);
         } else {
             bool any = false;
-            with_relevant_active_child<Trigger, S>([&](auto c) { any = select<decltype(c)::value, Trigger>(e, sel); });
+            with_relevant_active_child<Trigger, S>(
+                [&](auto c) BSC_DETAIL_WALK_INLINE { any = select<decltype(c)::value, Trigger>(e, sel); });
             return any;
         }
     }
@@ -8315,7 +8329,7 @@ private:
         std::is_same_v<detail::queue_for<Chart, Policy>, detail::no_event_queue> &&
         !plan::has_trigger(detail::eventless_id) && !base::defers;
     template <int Trigger, class E>
-    constexpr bool dispatch_microstep(E const& e) {
+    BSC_DETAIL_WALK_INLINE constexpr bool dispatch_microstep(E const& e) {
         if constexpr (microstep_in_dispatch)
             return microstep_in_line<Trigger>(e);
         else
