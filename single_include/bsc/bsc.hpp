@@ -4453,6 +4453,17 @@ struct plan : chart_layout<Model> {
         return false;
     }
 
+    // No transition on the trigger leaves a state strictly below s: every state below s takes
+    // it by the rows of s and its ancestors only.
+    template <int Trigger>
+    static constexpr bool no_source_below(int s) {
+        for (int const r : transitions<Trigger>) {
+            int const src = rows.source[static_cast<std::size_t>(r)];
+            if (src != s && tree.contains(s, src)) return false;
+        }
+        return true;
+    }
+
     // The children of composite s toward the sources of the trigger's transitions below it,
     // in document order, each once; or `every`, if a source is s or above it (every child is
     // then relevant).
@@ -8161,8 +8172,9 @@ private:
         }
     }
 
-    // Fires a transition selected at basic state Leaf, which no parallel state contains:
-    // the exit path is known, so exits, action and entries are straight-line code.
+    // Fires a transition selected at basic state Leaf (or at a composite where the walk ends),
+    // which no parallel state contains: the exit path is known, so exits, action and entries
+    // are straight-line code.
     template <int Leaf, int Row, class E>
     constexpr void fire_from(E const& e) {
         if constexpr (!plan::has_parallel) this->mark_running();  // else microstep has marked
@@ -8208,13 +8220,31 @@ private:
         return true;
     }
 
-    // The candidates of basic state Leaf on the trigger, in order, until one is taken.
+    // The candidates of basic state Leaf on the trigger, in order, until one is taken. (Leaf may
+    // be a composite where the walk ends: walk_ends_at.)
     template <int Leaf, int Trigger, class E, class Sel>
     BSC_DETAIL_WALK_INLINE constexpr bool try_leaf(E const& e, Sel& sel) {
         constexpr auto const& candidates = plan::template candidates<Leaf, Trigger>;
         return [&]<std::size_t... I>(std::index_sequence<I...>) BSC_DETAIL_WALK_INLINE {
             return (try_row<Leaf, Trigger, candidates[I]>(e, sel) || ...);
         }(std::make_index_sequence<candidates.size()>{});
+    }
+
+    // Whether the states strictly below composite s can be left without a word: none is
+    // parallel and none acts on exit.
+    static constexpr bool quiet_below(int s) {
+        for (int x = s + 1; tree.contains(s, x); ++x)
+            if (tree.kinds[static_cast<std::size_t>(x)] == detail::kind::parallel || acts_on_exit(x)) return false;
+        return true;
+    }
+    // Whether the walk for the trigger ends at composite s, as at a basic state: no state below
+    // s takes the trigger by a row of its own, and leaving them does nothing, so which of them
+    // is active does not matter (s's candidates are every basic state's below it, and firing
+    // from s exits what acts). A dispatch then reads none of the bytes below s.
+    template <int Trigger>
+    static constexpr bool walk_ends_at(int s) {
+        return tree.kinds[static_cast<std::size_t>(s)] == detail::kind::composite && !tree.under_parallel(s) &&
+               plan::template no_source_below<Trigger>(s) && quiet_below(s);
     }
 
     // Walks the active configuration below S, visiting only states relevant to the trigger.
@@ -8225,7 +8255,7 @@ private:
         constexpr auto k = tree.kinds[S];
         if constexpr (!plan::template relevant<Trigger>(S)) {
             return false;
-        } else if constexpr (k == detail::kind::basic || k == detail::kind::final_state) {
+        } else if constexpr (k == detail::kind::basic || k == detail::kind::final_state || walk_ends_at<Trigger>(S)) {
             constexpr auto const& candidates = plan::template candidates<S, Trigger>;
             if constexpr (candidates.size() == 1)
                 return try_row<S, Trigger, candidates[0]>(e, sel);

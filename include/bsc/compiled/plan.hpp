@@ -84,6 +84,17 @@ struct plan : chart_layout<Model> {
         return false;
     }
 
+    // No transition on the trigger leaves a state strictly below s: every state below s takes
+    // it by the rows of s and its ancestors only.
+    template <int Trigger>
+    static constexpr bool no_source_below(int s) {
+        for (int const r : transitions<Trigger>) {
+            int const src = rows.source[static_cast<std::size_t>(r)];
+            if (src != s && tree.contains(s, src)) return false;
+        }
+        return true;
+    }
+
     // The children of composite s toward the sources of the trigger's transitions below it,
     // in document order, each once; or `every`, if a source is s or above it (every child is
     // then relevant).
