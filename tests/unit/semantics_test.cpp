@@ -101,6 +101,40 @@ TEST_CASE_TEMPLATE("states with nothing to do on entry or exit are passed over, 
     CHECK(trace == "-A2 -A1 -A A2>B2 +B +B1 +B2");
 }
 
+TEST_CASE_TEMPLATE("a composite's transition exits its active descendants, innermost first, whichever of them is active",
+                   Backend, compiled, table) {
+    // The two charts differ by one exit action two levels below the source: without it, the
+    // compiled back end does not look below the source at all (docs/design.md, "Dispatch").
+    static constexpr auto common = bsc::rows(bsc::state<A2> + bsc::event<tick> = bsc::state<B3>,
+                                             bsc::state<B3> + bsc::event<tick> = bsc::state<A2>,
+                                             bsc::state<A> + bsc::event<go> / log("go") = bsc::state<B>,
+                                             bsc::state<B> + bsc::event<back> = bsc::state<A>,
+                                             bsc::state<A> + bsc::on_exit / log("exit A"));
+    static constexpr auto tree = bsc::composite<Root>(
+        bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A2>, bsc::state<B3>)),
+        bsc::state<B>);
+    static constexpr auto quiet = bsc::make_chart<ctx>(tree, common);
+    static constexpr auto acting = bsc::make_chart<ctx>(tree, common, bsc::state<B3> + bsc::on_exit / log("exit B3"));
+
+    machine_t<Backend, decltype(quiet)> q{quiet, ctx{}};
+    CHECK(q.dispatch(tick{}) == bsc::outcome::consumed);
+    CHECK(q.active_states().joined() == "Root A A1 B3");
+    CHECK(q.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(q.context().log == "exit A go");
+    CHECK(q.active_states().joined() == "Root B");
+    CHECK(q.dispatch(back{}) == bsc::outcome::consumed);
+    CHECK(q.active_states().joined() == "Root A A1 A2");
+
+    machine_t<Backend, decltype(acting)> a{acting, ctx{}};
+    CHECK(a.dispatch(tick{}) == bsc::outcome::consumed);
+    CHECK(a.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(a.context().log == "exit B3 exit A go");
+    CHECK(a.dispatch(back{}) == bsc::outcome::consumed);
+    CHECK(a.dispatch(go{}) == bsc::outcome::consumed);  // from A2, which has nothing to do on exit
+    CHECK(a.context().log == "exit B3 exit A go exit A go");
+    CHECK(a.active_states().joined() == "Root B");
+}
+
 namespace sem {
 struct C;
 struct C1;
