@@ -9,7 +9,7 @@
 #include "../examples/production_cell/cell.hpp"
 
 template <>
-inline constexpr bool bsc::verify::unexplored<mcs::display> = true;
+inline constexpr bool bsc::transient<mcs::display> = true;
 
 namespace {
 template <class Model>

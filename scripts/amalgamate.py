@@ -6,7 +6,8 @@ include/ is inlined in place, depth-first and only the first time it is seen;
 all other includes are kept as they are. The opt-in parts, the explorer (include/bsc/verify.hpp), the diagram exports
 (include/bsc/export.hpp), the logger (include/bsc/logger.hpp), the retentive state
 (include/bsc/retain.hpp), the VCD recorder (include/bsc/vcd.hpp) and the distributed
-systems (include/bsc/net.hpp, and include/bsc/mqtt.hpp over MQTT), become files of
+systems (include/bsc/net.hpp, and include/bsc/mqtt.hpp over MQTT) and the Boost.Hana adapter
+(include/bsc/adapt/hana.hpp, as hana.hpp), become files of
 their own that include the first and add only what it lacks; a part whose entry
 includes another part's entry includes that part's single header instead of a copy of
 it (net.hpp includes retain.hpp, mqtt.hpp includes net.hpp); a header two of them
@@ -31,6 +32,7 @@ RETAIN_ENTRY = INCLUDE_DIR / "bsc" / "retain.hpp"
 VCD_ENTRY = INCLUDE_DIR / "bsc" / "vcd.hpp"
 NET_ENTRY = INCLUDE_DIR / "bsc" / "net.hpp"
 MQTT_ENTRY = INCLUDE_DIR / "bsc" / "mqtt.hpp"
+HANA_ENTRY = INCLUDE_DIR / "bsc" / "adapt" / "hana.hpp"
 DEFAULT_OUTPUT = ROOT / "single_include" / "bsc" / "bsc.hpp"
 COMMAND = "python3 scripts/amalgamate.py"
 
@@ -72,6 +74,14 @@ RETAIN_HEADER = f"""\
 #pragma once
 // bsc::save and bsc::restore - retentive state, single-header distribution (needs bsc.hpp beside it).
 // Generated from include/bsc/retain.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+HANA_HEADER = f"""\
+#pragma once
+// bsc::fields for Boost.Hana Structs, single-header distribution (needs bsc.hpp beside it, and Boost).
+// Generated from include/bsc/adapt/hana.hpp by `{COMMAND}`.
 // Do not edit: change the headers under include/ and regenerate.
 #include "bsc.hpp"
 """
@@ -159,7 +169,7 @@ def inline(path: Path, seen: set[Path], out: list[str], guarded: set[Path] = fro
 PARTS = [(VERIFY_ENTRY, VERIFY_HEADER, "verify.hpp"), (EXPORT_ENTRY, EXPORT_HEADER, "export.hpp"),
          (LOGGER_ENTRY, LOGGER_HEADER, "logger.hpp"), (RETAIN_ENTRY, RETAIN_HEADER, "retain.hpp"),
          (VCD_ENTRY, VCD_HEADER, "vcd.hpp"), (NET_ENTRY, NET_HEADER, "net.hpp"),
-         (MQTT_ENTRY, MQTT_HEADER, "mqtt.hpp")]
+         (MQTT_ENTRY, MQTT_HEADER, "mqtt.hpp"), (HANA_ENTRY, HANA_HEADER, "hana.hpp")]
 
 
 def amalgamate() -> list[tuple[str, str]]:

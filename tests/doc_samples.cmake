@@ -39,9 +39,17 @@
 
 set(bsc_doc_samples_script ${CMAKE_CURRENT_SOURCE_DIR}/doc_samples/doc_samples.py)
 
+# A sample that includes <bsc/adapt/hana.hpp> links bsc::hana, and is left out where Boost is not.
 function(bsc_doc_sample_program name source)
+  file(STRINGS ${source} hana REGEX "^#include <bsc/adapt/hana\\.hpp>")
+  if(hana AND NOT TARGET bsc::hana)
+    return()
+  endif()
   add_executable(${name} ${source})
   target_link_libraries(${name} PRIVATE bsc::bsc)
+  if(hana)
+    target_link_libraries(${name} PRIVATE bsc::hana)
+  endif()
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/examples)
   bsc_set_warnings(${name})
   add_test(NAME doc.${name} COMMAND ${name})

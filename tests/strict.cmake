@@ -10,6 +10,9 @@ file(GLOB_RECURSE bsc_strict_headers CONFIGURE_DEPENDS RELATIVE ${PROJECT_SOURCE
 if(NOT TARGET bsc::mqtt)  # they include <mosquitto.h>
   list(REMOVE_ITEM bsc_strict_headers bsc/mqtt.hpp bsc/net/mosquitto_transport.hpp)
 endif()
+if(NOT TARGET bsc::hana)  # it includes Boost.Hana
+  list(REMOVE_ITEM bsc_strict_headers bsc/adapt/hana.hpp)
+endif()
 list(SORT bsc_strict_headers)
 set(bsc_strict_includes "")
 foreach(header IN LISTS bsc_strict_headers)
@@ -34,6 +37,9 @@ set_source_files_properties(strict/no_exceptions.cpp PROPERTIES COMPILE_OPTIONS 
 target_link_libraries(bsc_strict_warnings PRIVATE bsc::bsc)
 if(TARGET bsc::mqtt)
   target_link_libraries(bsc_strict_warnings PRIVATE bsc::mqtt)
+endif()
+if(TARGET bsc::hana)
+  target_link_libraries(bsc_strict_warnings PRIVATE bsc::hana)
 endif()
 target_include_directories(bsc_strict_warnings PRIVATE ${PROJECT_SOURCE_DIR}/examples)
 target_compile_options(bsc_strict_warnings PRIVATE ${BSC_STRICT_WARNING_FLAGS})

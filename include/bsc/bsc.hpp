@@ -16,7 +16,9 @@
 #include <bsc/dsl/tree.hpp>
 #include <bsc/duration.hpp>
 #include <bsc/error.hpp>
+#include <bsc/fields.hpp>
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/system.hpp>
 #include <bsc/table/engine.hpp>
+#include <bsc/transient.hpp>

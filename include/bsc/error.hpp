@@ -116,15 +116,17 @@ struct targets_not_orthogonal {
     }
 };
 
-template <class Chart>
+template <class Chart, class Event>
 struct pending_events_not_encoded {
     constexpr ~pending_events_not_encoded() {
         static_assert(detail::dependent_false<pending_events_not_encoded>,
-                      "bsc: the explorer (bsc::verify) and bsc::save / bsc::restore encode a machine by its "
-                      "configuration, context and timeouts, not by the events it keeps pending (deferred by / "
-                      "bsc::defer, or sent by bsc::raise_after), so a machine of this chart with events waiting "
-                      "would be taken for one without; explore or save a chart that neither defers nor delays "
-                      "events");
+                      "bsc: a machine of this Chart keeps events from one call to the next (deferred by / "
+                      "bsc::defer, or sent by bsc::raise_after), and the explorer (bsc::verify), bsc::save / "
+                      "bsc::restore and bsc::net encode them with the rest of its state; this Event cannot be "
+                      "encoded: each of its members (at any depth) must be bool, an integer, an enum with a "
+                      "fixed underlying type, float, double, a std::chrono::duration, or a std::array or struct "
+                      "of them (a std::string cannot); change the event, or leave the chart's machine out of "
+                      "what is saved and explored");
     }
 };
 
@@ -392,9 +394,9 @@ template <class Type>
 struct context_not_an_aggregate {
     constexpr ~context_not_an_aggregate() {
         static_assert(detail::dependent_false<context_not_an_aggregate>,
-                      "bsc: the machine looks for channels and timers in the context and in its members: this "
-                      "one must be an aggregate (a struct with public members, no constructors, no virtual "
-                      "functions, no base classes)");
+                      "bsc: the members of this type of the context cannot be found: it is not an aggregate (it has "
+                      "private members, constructors or virtual functions); adapt it with Boost.Hana "
+                      "(<bsc/adapt/hana.hpp>, BOOST_HANA_DEFINE_STRUCT) or specialise bsc::fields<Type>");
     }
 };
 
@@ -403,7 +405,66 @@ struct too_many_fields {
     constexpr ~too_many_fields() {
         static_assert(detail::dependent_false<too_many_fields>,
                       "bsc: this struct of the context has more than 128 fields; group some of them into nested "
-                      "structs or std::arrays (channels and timers are found at any depth)");
+                      "structs or std::arrays (channels and timers are found at any depth), or adapt it with "
+                      "Boost.Hana (<bsc/adapt/hana.hpp>) or bsc::fields<Type>");
+    }
+};
+
+template <class Type>
+struct context_type_has_base_class {
+    constexpr ~context_type_has_base_class() {
+        static_assert(detail::dependent_false<context_type_has_base_class>,
+                      "bsc: this struct of the context has a base class, whose members bsc cannot find by "
+                      "itself; adapt it with Boost.Hana (<bsc/adapt/hana.hpp>) or specialise bsc::fields<Type> "
+                      "to list every member, the base's included, or hold the base as a member");
+    }
+};
+
+template <class Type>
+struct context_type_has_c_array {
+    constexpr ~context_type_has_c_array() {
+        static_assert(detail::dependent_false<context_type_has_c_array>,
+                      "bsc: this struct of the context has a C array member (T name[N]), which bsc cannot walk; "
+                      "make it a std::array<T, N>, or adapt the struct with Boost.Hana (<bsc/adapt/hana.hpp>) or "
+                      "bsc::fields<Type>");
+    }
+};
+
+template <class Type>
+struct hana_adapter_not_included {
+    constexpr ~hana_adapter_not_included() {
+        static_assert(detail::dependent_false<hana_adapter_not_included>,
+                      "bsc: this Type of the context is adapted with BOOST_HANA_DEFINE_STRUCT, but bsc does not "
+                      "see its members: #include <bsc/adapt/hana.hpp> before the machine is declared");
+    }
+};
+
+/// The position of a member among its owner's, in declaration order from 0.
+template <std::size_t Index>
+struct member_number {};
+
+template <class Owner, class Member, class Type>
+struct state_out_of_reach {
+    constexpr ~state_out_of_reach() {
+        static_assert(detail::dependent_false<state_out_of_reach>,
+                      "bsc: member Member of Owner (the context, or a struct in it) has a Type that may hold a "
+                      "channel, a timer or a machine where bsc cannot reach it (inside std::optional, "
+                      "std::variant, a container, a union, behind a pointer), so the machine would neither drive "
+                      "it nor save, explore or record it; hold it directly, in a std::array or in a struct, or "
+                      "say that it is not part of the machine's state: declare the member "
+                      "bsc::transient_member<Type>, or specialise bsc::transient<Type> as true");
+    }
+};
+
+template <class Type>
+struct member_not_explorable {
+    constexpr ~member_not_explorable() {
+        static_assert(detail::dependent_false<member_not_explorable>,
+                      "bsc: the explorer (bsc::verify) encodes scalars, enums, channels, timers, machines and "
+                      "std::arrays and structs of them, and copies other members byte for byte when they are "
+                      "trivially copyable; this Type is neither: make it one, or leave it out of the explored "
+                      "state by specialising bsc::transient<Type> as true or declaring the member "
+                      "bsc::transient_member<Type>");
     }
 };
 
@@ -415,9 +476,10 @@ struct member_not_retainable {
         static_assert(detail::dependent_false<member_not_retainable>,
                       "bsc: bsc::save and bsc::restore store bool, integers of up to 64 bits, enums with a fixed "
                       "underlying type, float, double, std::chrono::duration, channels, timers, machines, and "
-                      "std::arrays and aggregates of them, none of whose members is const or a reference; the Type "
-                      "in this error is none of those: make it one, or leave it out by specialising "
-                      "bsc::not_retained<Type> as true (a restored machine then keeps its own value of it)");
+                      "std::arrays and structs of them, none of whose members is const or a reference; the Type "
+                      "in this error is none of those: make it one, or leave it out of the machine's state by "
+                      "specialising bsc::transient<Type> as true or declaring the member "
+                      "bsc::transient_member<Type> (a restored machine then keeps its own value of it)");
     }
 };
 

@@ -18,7 +18,8 @@
 //                    `elapsed` in ns) and every plain variable of type bool (wire), signed
 //                    integer (integer), unsigned integer or enum (reg) or floating point (real);
 //                    aggregates as scopes, std::array elements as name_0, name_1, ...
-//                    Members of other types (strings, pointers, containers) are not recorded.
+//                    Members of other types (strings, handles) are not recorded, nor transient
+//                    members (bsc::transient).
 // Names keep their spelling but for whitespace, which becomes '_'. Numbers are written the same
 // whatever the stream's locale. The recorder's destruction writes the last sample's time.
 //
@@ -40,11 +41,10 @@
 #include <bsc/data/channel.hpp>
 #include <bsc/data/timer.hpp>
 #include <bsc/detail/access.hpp>
-#include <bsc/detail/member_names.hpp>
+#include <bsc/detail/members.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/duration.hpp>
 #include <bsc/model/chart_model.hpp>
-#include <bsc/runtime/context_data.hpp>
 
 namespace bsc::detail::vcd {
 
@@ -84,7 +84,7 @@ value scalar_value(T v) {
 }
 
 template <class T>
-constexpr var_kind kind_of() {
+constexpr var_kind var_kind_of() {
     if constexpr (std::is_same_v<T, bool>)
         return var_kind::wire;
     else if constexpr (std::is_floating_point_v<T>)
@@ -105,55 +105,46 @@ constexpr unsigned width_of() {
         return 8 * sizeof(T);
 }
 
-// What the recorder shows: a channel of a scalar type, a timer, a plain scalar variable. The
-// context is searched for them as the machine searches it for channels (context_data.hpp).
+// What the recorder shows: a channel of a scalar type, a timer, a plain scalar variable, found
+// by the member layer (detail/members.hpp) as the machine finds its channels.
 template <class T>
-constexpr bool is_recorded_channel() {
+constexpr bool is_recorded() {
     if constexpr (is_channel<T>)
         return is_scalar_variable<channel_value<T>>;
     else
-        return false;
-}
-struct recorded_points {
-    template <class T>
-    static constexpr bool is_point = is_recorded_channel<T>() || is_timer<T> || is_scalar_variable<T>;
-};
-template <class T>
-constexpr bool recorded() {
-    return holds_points<recorded_points, T>();
+        return is_timer<T> || is_scalar_variable<T>;
 }
 
 // Walks a context's recorded members, calling the visitor's scope(name), upscope() and
-// var(kind, width, name, value), in declaration order.
-template <class T, class Visitor>
-void visit_member(T const& member, std::string_view name, Visitor& v) {
-    if constexpr (!recorded<T>()) {
-        return;
-    } else if constexpr (is_channel<T>) {
-        using V = channel_value<T>;
-        v.var(kind_of<V>(), width_of<V>(), name, scalar_value(member.get()));
-    } else if constexpr (is_timer<T>) {
-        v.scope(name);
-        v.var(var_kind::wire, 1, "running", scalar_value(member.running()));
-        v.var(var_kind::wire, 1, "expired", scalar_value(member.expired()));
-        v.var(var_kind::integer, 64, "elapsed", scalar_value(static_cast<std::int64_t>(member.elapsed().count())));
-        v.upscope();
-    } else if constexpr (is_scalar_variable<T>) {
-        v.var(kind_of<T>(), width_of<T>(), name, scalar_value(member));
-    } else if constexpr (is_std_array<T>) {
-        std::size_t i = 0;
-        for (auto const& element : member) {
-            std::string const element_name = std::string{name} + "_" + std::to_string(i++);
-            visit_member(element, std::string_view{element_name}, v);
-        }
-    } else {
-        v.scope(name);
-        auto const& names = member_names<T>;
-        std::size_t i = 0;
-        for_each_field(member, [&](auto const& field) { visit_member(field, names[i++], v); });
-        v.upscope();
+// var(kind, width, name, value), in declaration order: a struct is a scope, a timer a scope of
+// three variables, an array's elements are name_0, name_1, ...
+template <class Visitor>
+struct recorded_members {
+    static constexpr bool named = true;
+    template <class T>
+    static constexpr bool visits = is_recorded<T>();
+    Visitor& v;
+    std::string element_name(std::string_view name, std::size_t i) const {
+        return std::string{name} + "_" + std::to_string(i);
     }
-}
+    void enter(std::string_view name) { v.scope(name); }
+    void leave() { v.upscope(); }
+    template <class T>
+    void leaf(T const& member, std::string_view name) {
+        if constexpr (is_channel<T>) {
+            using V = channel_value<T>;
+            v.var(var_kind_of<V>(), width_of<V>(), name, scalar_value(member.get()));
+        } else if constexpr (is_timer<T>) {
+            v.scope(name);
+            v.var(var_kind::wire, 1, "running", scalar_value(member.running()));
+            v.var(var_kind::wire, 1, "expired", scalar_value(member.expired()));
+            v.var(var_kind::integer, 64, "elapsed", scalar_value(static_cast<std::int64_t>(member.elapsed().count())));
+            v.upscope();
+        } else {
+            v.var(var_kind_of<T>(), width_of<T>(), name, scalar_value(member));
+        }
+    }
+};
 
 // Identifiers of variables: the printable characters '!' to '~' but for '#' and '$' (legal,
 // but they start a time and a keyword, which trips simple readers), in base 92.
@@ -335,14 +326,10 @@ private:
             v.var(detail::vcd::var_kind::wire, 1, state_names[s], detail::vcd::scalar_value(bool{active[s]}));
         v.upscope();
         v.upscope();
-        using context_type = typename Machine::context_type;
-        if constexpr (detail::vcd::recorded<context_type>()) {
-            auto const& ctx = machine_.context();
-            v.scope("data");
-            auto const& names = detail::member_names<context_type>;
-            std::size_t i = 0;
-            detail::for_each_field(ctx, [&](auto const& field) { detail::vcd::visit_member(field, names[i++], v); });
-            v.upscope();
+        using recorded = detail::vcd::recorded_members<Visitor>;
+        if constexpr (detail::reaches<recorded, typename Machine::context_type>()) {
+            recorded data{v};
+            detail::walk(machine_.context(), data, std::string_view{"data"});
         }
     }
 

@@ -273,15 +273,17 @@ struct targets_not_orthogonal {
     }
 };
 
-template <class Chart>
+template <class Chart, class Event>
 struct pending_events_not_encoded {
     constexpr ~pending_events_not_encoded() {
         static_assert(detail::dependent_false<pending_events_not_encoded>,
-                      "bsc: the explorer (bsc::verify) and bsc::save / bsc::restore encode a machine by its "
-                      "configuration, context and timeouts, not by the events it keeps pending (deferred by / "
-                      "bsc::defer, or sent by bsc::raise_after), so a machine of this chart with events waiting "
-                      "would be taken for one without; explore or save a chart that neither defers nor delays "
-                      "events");
+                      "bsc: a machine of this Chart keeps events from one call to the next (deferred by / "
+                      "bsc::defer, or sent by bsc::raise_after), and the explorer (bsc::verify), bsc::save / "
+                      "bsc::restore and bsc::net encode them with the rest of its state; this Event cannot be "
+                      "encoded: each of its members (at any depth) must be bool, an integer, an enum with a "
+                      "fixed underlying type, float, double, a std::chrono::duration, or a std::array or struct "
+                      "of them (a std::string cannot); change the event, or leave the chart's machine out of "
+                      "what is saved and explored");
     }
 };
 
@@ -549,9 +551,9 @@ template <class Type>
 struct context_not_an_aggregate {
     constexpr ~context_not_an_aggregate() {
         static_assert(detail::dependent_false<context_not_an_aggregate>,
-                      "bsc: the machine looks for channels and timers in the context and in its members: this "
-                      "one must be an aggregate (a struct with public members, no constructors, no virtual "
-                      "functions, no base classes)");
+                      "bsc: the members of this type of the context cannot be found: it is not an aggregate (it has "
+                      "private members, constructors or virtual functions); adapt it with Boost.Hana "
+                      "(<bsc/adapt/hana.hpp>, BOOST_HANA_DEFINE_STRUCT) or specialise bsc::fields<Type>");
     }
 };
 
@@ -560,7 +562,66 @@ struct too_many_fields {
     constexpr ~too_many_fields() {
         static_assert(detail::dependent_false<too_many_fields>,
                       "bsc: this struct of the context has more than 128 fields; group some of them into nested "
-                      "structs or std::arrays (channels and timers are found at any depth)");
+                      "structs or std::arrays (channels and timers are found at any depth), or adapt it with "
+                      "Boost.Hana (<bsc/adapt/hana.hpp>) or bsc::fields<Type>");
+    }
+};
+
+template <class Type>
+struct context_type_has_base_class {
+    constexpr ~context_type_has_base_class() {
+        static_assert(detail::dependent_false<context_type_has_base_class>,
+                      "bsc: this struct of the context has a base class, whose members bsc cannot find by "
+                      "itself; adapt it with Boost.Hana (<bsc/adapt/hana.hpp>) or specialise bsc::fields<Type> "
+                      "to list every member, the base's included, or hold the base as a member");
+    }
+};
+
+template <class Type>
+struct context_type_has_c_array {
+    constexpr ~context_type_has_c_array() {
+        static_assert(detail::dependent_false<context_type_has_c_array>,
+                      "bsc: this struct of the context has a C array member (T name[N]), which bsc cannot walk; "
+                      "make it a std::array<T, N>, or adapt the struct with Boost.Hana (<bsc/adapt/hana.hpp>) or "
+                      "bsc::fields<Type>");
+    }
+};
+
+template <class Type>
+struct hana_adapter_not_included {
+    constexpr ~hana_adapter_not_included() {
+        static_assert(detail::dependent_false<hana_adapter_not_included>,
+                      "bsc: this Type of the context is adapted with BOOST_HANA_DEFINE_STRUCT, but bsc does not "
+                      "see its members: #include <bsc/adapt/hana.hpp> before the machine is declared");
+    }
+};
+
+/// The position of a member among its owner's, in declaration order from 0.
+template <std::size_t Index>
+struct member_number {};
+
+template <class Owner, class Member, class Type>
+struct state_out_of_reach {
+    constexpr ~state_out_of_reach() {
+        static_assert(detail::dependent_false<state_out_of_reach>,
+                      "bsc: member Member of Owner (the context, or a struct in it) has a Type that may hold a "
+                      "channel, a timer or a machine where bsc cannot reach it (inside std::optional, "
+                      "std::variant, a container, a union, behind a pointer), so the machine would neither drive "
+                      "it nor save, explore or record it; hold it directly, in a std::array or in a struct, or "
+                      "say that it is not part of the machine's state: declare the member "
+                      "bsc::transient_member<Type>, or specialise bsc::transient<Type> as true");
+    }
+};
+
+template <class Type>
+struct member_not_explorable {
+    constexpr ~member_not_explorable() {
+        static_assert(detail::dependent_false<member_not_explorable>,
+                      "bsc: the explorer (bsc::verify) encodes scalars, enums, channels, timers, machines and "
+                      "std::arrays and structs of them, and copies other members byte for byte when they are "
+                      "trivially copyable; this Type is neither: make it one, or leave it out of the explored "
+                      "state by specialising bsc::transient<Type> as true or declaring the member "
+                      "bsc::transient_member<Type>");
     }
 };
 
@@ -572,9 +633,10 @@ struct member_not_retainable {
         static_assert(detail::dependent_false<member_not_retainable>,
                       "bsc: bsc::save and bsc::restore store bool, integers of up to 64 bits, enums with a fixed "
                       "underlying type, float, double, std::chrono::duration, channels, timers, machines, and "
-                      "std::arrays and aggregates of them, none of whose members is const or a reference; the Type "
-                      "in this error is none of those: make it one, or leave it out by specialising "
-                      "bsc::not_retained<Type> as true (a restored machine then keeps its own value of it)");
+                      "std::arrays and structs of them, none of whose members is const or a reference; the Type "
+                      "in this error is none of those: make it one, or leave it out of the machine's state by "
+                      "specialising bsc::transient<Type> as true or declaring the member "
+                      "bsc::transient_member<Type> (a restored machine then keeps its own value of it)");
     }
 };
 
@@ -4966,6 +5028,26 @@ struct access {
     static constexpr auto& queue(M& m) {
         return driver_of(m).queue_;
     }
+    // The events a chart that defers keeps (an event_queue, or no_deferral for one that does not).
+    template <class M>
+    static constexpr auto& deferred(M& m) {
+        return driver_of(m).deferred_;
+    }
+    // Whether a transition changed the configuration since the deferred events were last retried.
+    template <class M>
+    static constexpr bool deferral_pending_retry(M const& m) {
+        if constexpr (std::remove_cvref_t<decltype(driver_of(m))>::defers)
+            return driver_of(m).deferral_.changed;
+        else
+            return false;
+    }
+    template <class M>
+    static constexpr void set_deferral_pending_retry(M& m, bool changed) {
+        if constexpr (std::remove_cvref_t<decltype(driver_of(m))>::defers) {
+            driver_of(m).deferral_.changed = changed;
+            driver_of(m).deferral_.retry = 0;
+        }
+    }
     template <class M>
     static constexpr auto longest_timeout(M const& m) {
         return driver_of(m).longest_timeout();
@@ -5025,6 +5107,20 @@ namespace bsc::detail {
 
 }  // namespace bsc::detail
 // end include/bsc/detail/assume.hpp
+// begin include/bsc/detail/machine_base.hpp
+// What every machine derives from, whatever its back end (an empty base: it costs nothing), so
+// that the member layer (detail/members.hpp) knows a machine held in a context.
+
+#include <type_traits>
+
+namespace bsc::detail {
+
+struct machine_base {};
+template <class T>
+inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
+
+}  // namespace bsc::detail
+// end include/bsc/detail/machine_base.hpp
 // begin include/bsc/event_set.hpp
 // bsc::event_set<Chart>: the events of a chart, named and numbered at compile time, so that a
 // program can dispatch an event it received as text (an operator panel, a command line) or as a
@@ -5246,13 +5342,11 @@ struct entering_flags<0> {};
 // end include/bsc/model/completion.hpp
 // begin include/bsc/runtime/context_data.hpp
 // The machine's view of a context's data model: it latches input channels, commits output
-// channels and updates timers, wherever they are in the context: as its members, or inside
-// members that are aggregates or std::arrays, at any depth. Members that hold none cost
+// channels and updates timers, wherever they are in the context (detail/members.hpp walks it:
+// members, aggregates, std::arrays, types described by bsc::fields, at any depth; transient
+// members too, since their channels and timers still run). Members that hold none cost
 // nothing, and a context with none is not visited at all.
 
-#include <array>
-#include <cstddef>
-#include <tuple>
 #include <type_traits>
 
 // begin include/bsc/data/channel.hpp
@@ -5428,6 +5522,31 @@ private:
 
 }  // namespace bsc
 // end include/bsc/data/timer.hpp
+// begin include/bsc/detail/members.hpp
+// The member layer: the one description of what a context holds. Every part of bsc that walks a
+// machine's data goes through it: the machine itself (channels' latch and commit, timers'
+// update), retentive state, the explorer's codec, the waveform and the network's values.
+//
+// One rule says what a type is (member_kind): a machine, a channel, a timer, a scalar (bool,
+// integer, enum, float, std::chrono::duration), a std::array (walked element by element), a
+// record (an aggregate, or a type bsc::fields<T> describes: walked member by member, at any
+// depth), something opaque (a string, a handle: a leaf bsc does not look into), or something
+// unwalkable: a type that may hold a channel, timer or machine where bsc cannot reach it (inside
+// std::optional, std::variant, a container, a union, behind a pointer; an aggregate with a base
+// class or a C array). An unwalkable member is a compile error that names its owner and itself,
+// never a silent skip. One trait, bsc::transient<T>, says what is not part of the state.
+//
+// One walk (walk) visits values, one fold (fold_type) computes over types; consumers supply
+// visitors and never classify a type themselves.
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
 // begin include/bsc/detail/fields.hpp
 // Field access for plain aggregates, without macros or reflection: the number of fields is
 // the largest N for which T{any, ..., any} (N times) compiles (any converts to a value or, for a
@@ -5852,13 +5971,27 @@ constexpr decltype(auto) apply_to_n_fields(T& t, F&& f) {
 
 namespace bsc::detail {
 
+// What a probe's conversion returns: the probes are only used in unevaluated contexts, but a
+// member's constructor template that takes one (std::optional's) has its body instantiated, and
+// an operator without a definition would then be "used but never defined".
+template <class T>
+inline T* never_read = nullptr;
+
 // Converts to any member type: a value (preferred: the probe is an rvalue) or, for a member that
 // is a reference, an lvalue of the referenced type.
 struct any_field {
     template <class T>
-    constexpr operator T() &&;  // only used in unevaluated contexts
+        requires(!std::is_same_v<T, any_field> && std::is_move_constructible_v<T>)
+    constexpr operator T() && {
+        return static_cast<T&&>(*never_read<T>);
+    }
     template <class T>
-    constexpr operator T&() const&;
+        requires(!std::is_same_v<T, any_field> && !std::is_move_constructible_v<T>)
+    constexpr operator T() &&;  // (a member that cannot be moved has no constructor template to instantiate it)
+    template <class T>
+    constexpr operator T&() const& {
+        return *never_read<T>;
+    }
 };
 // Converts to values only: it cannot initialise a reference member.
 struct any_value_field {
@@ -5871,14 +6004,23 @@ constexpr bool brace_constructible(std::index_sequence<I...>) {
     return requires { T{(void(I), Probe{})...}; };
 }
 
+// Converts to lvalues only: a member such as std::optional<T>, whose constructor template also
+// takes any_field (as a T), is then initialised by its copy constructor alone.
+struct any_lvalue_field {
+    template <class T>
+    constexpr operator T&() const {
+        return *never_read<T>;
+    }
+};
+
 // The members initialised one by one: exact for an aggregate that is default-constructible (any
 // shorter list of initialisers is valid too).
-template <class T, std::size_t N = 0>
+template <class T, class Probe, std::size_t N = 0>
 constexpr std::size_t leading_field_count() {
     if constexpr (N > max_fields)
         return N;
-    else if constexpr (brace_constructible<T, any_field>(std::make_index_sequence<N + 1>{}))
-        return leading_field_count<T, N + 1>();
+    else if constexpr (brace_constructible<T, Probe>(std::make_index_sequence<N + 1>{}))
+        return leading_field_count<T, Probe, N + 1>();
     else
         return N;
 }
@@ -5886,22 +6028,36 @@ constexpr std::size_t leading_field_count() {
 // The largest count in [From, To] that initialises every member: an aggregate with a reference
 // member and no default initialiser for it cannot be initialised by a shorter list, so the count
 // is searched up to its size (each member takes at least a byte).
-template <class T, std::size_t From, std::size_t To>
+template <class T, class Probe, std::size_t From, std::size_t To>
 constexpr std::size_t largest_field_count(std::size_t found) {
     if constexpr (From > To)
         return found;
     else
-        return largest_field_count<T, From + 1, To>(
-            brace_constructible<T, any_field>(std::make_index_sequence<From>{}) ? From : found);
+        return largest_field_count<T, Probe, From + 1, To>(
+            brace_constructible<T, Probe>(std::make_index_sequence<From>{}) ? From : found);
 }
 
-template <class T>
-constexpr std::size_t field_count() {
-    constexpr std::size_t leading = leading_field_count<T>();
+template <class T, class Probe>
+constexpr std::size_t field_count_by() {
+    constexpr std::size_t leading = leading_field_count<T, Probe>();
     if constexpr (leading > max_fields || std::is_default_constructible_v<T>)
         return leading;
     else
-        return largest_field_count<T, leading + 1, (sizeof(T) < max_fields ? sizeof(T) : max_fields)>(leading);
+        return largest_field_count<T, Probe, leading + 1, (sizeof(T) < max_fields ? sizeof(T) : max_fields)>(leading);
+}
+
+// The count by either probe, whichever initialises more: the value probe for members that cannot
+// be copied (std::unique_ptr, std::atomic), the lvalue probe for members whose constructor
+// templates make the value probe ambiguous (std::optional, std::any).
+template <class T>
+constexpr std::size_t field_count() {
+    constexpr std::size_t by_value = field_count_by<T, any_field>();
+    if constexpr (by_value > max_fields)
+        return by_value;
+    else {
+        constexpr std::size_t by_lvalue = field_count_by<T, any_lvalue_field>();
+        return by_value > by_lvalue ? by_value : by_lvalue;
+    }
 }
 
 /// Whether an aggregate has a member that is a non-const lvalue reference (a const one binds a
@@ -5951,6 +6107,172 @@ constexpr void for_each_field(T& t, F&& f) {
 
 }  // namespace bsc::detail
 // end include/bsc/detail/fields.hpp
+// begin include/bsc/detail/member_names.hpp
+// The names of an aggregate's members as its definition spells them, at compile time, without
+// macros: the address of a member of an object that is declared but never defined is a constant
+// that may be a template argument, and both supported compilers spell that argument in
+// __PRETTY_FUNCTION__ ending with the member's name (GCC 12: "{(& object<T>.T::speed)}",
+// Clang 14: "{&object.speed}"). Used by the opt-in parts that show or store a context by name
+// (the VCD recorder, the retentive state's layout fingerprint); nothing else pays for it.
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+#include <tuple>
+#include <utility>
+
+
+namespace bsc::detail {
+
+// Holds the address as a class-type template argument: Clang 14 accepts a pointer to a
+// subobject there, but not as a template argument of pointer type.
+template <class T>
+struct member_address {
+    T const* address;
+};
+
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wundefined-var-template"
+#pragma clang diagnostic ignored "-Wundefined-internal"
+#endif
+// Never defined: only its members' addresses are taken, in constant expressions. T is wrapped so
+// that a T without linkage (in an anonymous namespace, or local to a function) may be named: the
+// wrapper's linkage is the variable's, and Clang refuses an undefined variable of a type without.
+template <class T>
+struct declared_object {
+    T value;
+};
+template <class T>
+extern declared_object<T> const declared_only;
+
+template <auto Address>
+constexpr char const* spelled_address() {
+    return __PRETTY_FUNCTION__;
+}
+
+// Identifiers may hold letters beyond ASCII, spelled in UTF-8: every byte of those is >= 0x80.
+constexpr bool is_identifier_char(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           static_cast<unsigned char>(c) >= 0x80;
+}
+
+// The last identifier of a signature: the member's name, before the closing brackets.
+constexpr std::string_view last_identifier(std::string_view s) {
+    std::size_t end = s.size();
+    while (end > 0 && !is_identifier_char(s[end - 1])) --end;
+    std::size_t begin = end;
+    while (begin > 0 && is_identifier_char(s[begin - 1])) --begin;
+    return s.substr(begin, end - begin);
+}
+
+template <class T, std::size_t I>
+constexpr std::string_view member_name_of() {
+    constexpr auto& member = std::get<I>(tie_fields(declared_only<T>.value));
+    using member_type = std::remove_cvref_t<decltype(member)>;
+    return last_identifier(spelled_address<member_address<member_type>{&member}>());
+}
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+
+/// The names of T's members, in declaration order. Requirements: T is an aggregate that
+/// detail::tie_fields supports.
+template <class T>
+inline constexpr auto member_names = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<std::string_view, sizeof...(I)>{member_name_of<T, I>()...};
+}(std::make_index_sequence<std::tuple_size_v<decltype(tie_fields(std::declval<T&>()))>>{});
+
+template <class Class, class Member>
+Class class_of_member(Member Class::*);
+
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wundefined-var-template"
+#pragma clang diagnostic ignored "-Wundefined-internal"
+#endif
+/// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
+/// `&axis::speed`. Found by comparing addresses: GCC 12 does not accept the address that `.*`
+/// yields as a template argument, so the member's index among the aggregate's is looked up.
+template <auto Member>
+constexpr std::string_view member_name() {
+    using Class = decltype(class_of_member(Member));
+    constexpr std::size_t index = []<std::size_t... I>(std::index_sequence<I...>) {
+        auto const& object = declared_only<Class>.value;
+        void const* const target = &(object.*Member);
+        auto const fields = tie_fields(object);
+        std::size_t found = sizeof...(I);
+        ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
+        return found;
+    }(std::make_index_sequence<member_names<Class>.size()>{});
+    static_assert(index < member_names<Class>.size(), "the pointer designates no member of the aggregate");
+    return member_names<Class>[index];
+}
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+
+}  // namespace bsc::detail
+// end include/bsc/detail/member_names.hpp
+// begin include/bsc/fields.hpp
+// bsc::fields<T>: what the members of a context type are, for a type that is not a plain
+// aggregate (a class with private members, constructors or base classes, or more than 128
+// members). Every part of bsc that walks a machine's state uses it: channels' latch and commit,
+// timers' update, retentive state, the explorer, the waveform and the network. Aggregates need
+// nothing: their members are found without it. <bsc/adapt/hana.hpp> specialises it for every
+// type adapted with Boost.Hana.
+
+namespace bsc {
+
+/// Specialise for a type whose members bsc cannot find by itself:
+///
+///     template <> struct bsc::fields<axis> {
+///         static constexpr std::array<std::string_view, 2> names{"speed", "limit"};
+///         template <class Self, class F>   // Self: axis or axis const
+///         static constexpr decltype(auto) apply(Self& self, F&& f) { return f(self.speed_, self.limit_); }
+///     };
+///
+/// Requirements: `names` holds one name per member, in the order in which `apply` passes them
+/// to `f`, each as an lvalue of the object. Members left out are not part of the machine's state
+/// (neither saved, explored nor recorded) and their channels and timers are not driven.
+template <class T>
+struct fields {};
+
+}  // namespace bsc
+// end include/bsc/fields.hpp
+// begin include/bsc/transient.hpp
+// bsc::transient<T> and bsc::transient_member<T>: data a context holds that is not part of the
+// machine's state (a log, a display buffer, statistics, a handle): not saved by bsc::save, not
+// explored, not recorded in waveforms, not sent over the network. Channels and timers inside a
+// transient member are still driven by the machine.
+
+namespace bsc {
+
+/// Specialise as true for a member type that is never part of the state.
+template <class T>
+inline constexpr bool transient = false;
+
+/// One member left out of the state, whatever its type: `bsc::transient_member<int> scans;`.
+/// Reads and writes as the T it holds (`++ctx.scans.value`, or through its conversions).
+template <class T>
+struct transient_member {
+    T value{};
+
+    constexpr operator T&() & { return value; }                // NOLINT(google-explicit-constructor)
+    constexpr operator T const&() const& { return value; }    // NOLINT(google-explicit-constructor)
+    constexpr transient_member& operator=(T const& v) {
+        value = v;
+        return *this;
+    }
+    constexpr T* operator->() { return &value; }
+    constexpr T const* operator->() const { return &value; }
+};
+
+template <class T>
+inline constexpr bool transient<transient_member<T>> = true;
+
+}  // namespace bsc
+// end include/bsc/transient.hpp
 
 namespace bsc::detail {
 
@@ -5962,74 +6284,493 @@ inline constexpr bool is_std_array<std::array<T, N>> = true;
 template <class T>
 inline constexpr bool is_timer = std::is_base_of_v<timer_base, T>;
 
-// A member the machine looks into: an aggregate class that is neither a channel, a timer nor
-// a std::array (which is visited element by element).
 template <class T>
-inline constexpr bool is_visited_aggregate =
-    std::is_class_v<T> && std::is_aggregate_v<T> && !is_channel<T> && !is_timer<T> && !is_std_array<T>;
+inline constexpr bool is_chrono_duration = false;
+template <class Rep, class Period>
+inline constexpr bool is_chrono_duration<std::chrono::duration<Rep, Period>> = true;
 
-struct channel_points {
-    template <class T>
-    static constexpr bool is_point = is_channel<T>;
-};
-struct timer_points {
-    template <class T>
-    static constexpr bool is_point = is_timer<T>;
+// An enum whose every value of the underlying type is a value of the enum: a scoped enum, or one
+// declared with `: type` (only those can be list-initialised from an integer).
+template <class T>
+inline constexpr bool has_fixed_underlying_type = requires { T{std::underlying_type_t<T>{}}; };
+
+/// A type that bsc::fields<T> describes.
+template <class T>
+concept described_by_fields = requires { bsc::fields<T>::names; };
+
+/// A type adapted by BOOST_HANA_DEFINE_STRUCT (its nested accessors), told apart without Boost.
+template <class T>
+concept adapted_by_hana = requires { typename T::hana_accessors_impl; };
+
+enum class member_kind : std::uint8_t {
+    machine, channel, timer,                                                  // the machine's own
+    boolean, signed_integer, unsigned_integer, enumeration, floating, time,  // scalars
+    array, record,                                                            // walked into
+    opaque,                                                                   // a leaf bsc does not look into
+    unwalkable,                                                               // may hide state: an error
 };
 
-// Whether T holds a point of the kind (a channel, a timer) at any depth.
-template <class Points, class T>
-constexpr bool holds_points() {
-    if constexpr (Points::template is_point<T>)
-        return true;
-    else if constexpr (is_std_array<T>)
-        return holds_points<Points, typename T::value_type>();
-    else if constexpr (is_visited_aggregate<T>)
-        return []<class... Fields>(std::tuple<Fields&...>*) {
-            return (holds_points<Points, std::remove_cv_t<Fields>>() || ...);
-        }(static_cast<decltype(tie_fields(std::declval<T&>()))*>(nullptr));
-    else
-        return false;
+// ---- aggregates bsc cannot walk ----------------------------------------------------------------
+
+// Converts only to a base class of T: T{only_base<T>{}} compiles when T's first element is a base.
+template <class T>
+struct only_base {
+    template <class U>
+        requires(std::is_base_of_v<U, T> && !std::is_same_v<U, T>)
+    constexpr operator U() const;  // only used in unevaluated contexts
+};
+
+template <class T, std::size_t... I>
+constexpr bool braced_constructible(std::index_sequence<I...>) {
+    return requires { T{{(void(I), any_field{})}...}; };
 }
-
-// Calls f(point) for each point of the kind in t, in declaration order, depth first.
-template <class Points, class T, class F>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
-#endif
-constexpr void for_each_point(T& t, F const& f) {
-    if constexpr (Points::template is_point<T>) {
-        f(t);
-    } else if constexpr (!holds_points<Points, T>()) {
-        return;
-    } else if constexpr (is_std_array<T>) {
-        for (auto& element : t) for_each_point<Points>(element, f);
+template <class T, std::size_t... I, std::size_t... J>
+constexpr bool braced_then_flat_constructible(std::index_sequence<I...>, std::index_sequence<J...>) {
+    return requires { T{{(void(I), any_field{})}..., (void(J), any_field{})...}; };
+}
+// The elements that accept a braced initialiser, one each: a C array takes one, where the flat
+// count (field_count) takes one per element of the array.
+template <class T, std::size_t N = 0>
+constexpr std::size_t braced_element_count() {
+    if constexpr (!braced_constructible<T>(std::make_index_sequence<N + 1>{}))
+        return N;
+    else
+        return braced_element_count<T, N + 1>();
+}
+// Whether an aggregate holds a C array: fewer elements by braced initialisers than by flat ones,
+// and the flat ones cannot finish what the braced ones began (a member that refuses a braced
+// initialiser, such as a std::atomic or a reference, stops the braced count too, but the flat
+// initialisers then initialise it and the rest).
+template <class T>
+constexpr bool has_c_array() {
+    constexpr std::size_t flat = field_count<T>();
+    if constexpr (flat > max_fields || braced_constructible<T>(std::make_index_sequence<flat>{})) {
+        return false;
     } else {
-        for_each_field(t, [&](auto& field) { for_each_point<Points>(field, f); });
+        constexpr std::size_t braced = braced_element_count<T>();
+        return braced < flat && !braced_then_flat_constructible<T>(std::make_index_sequence<braced>{},
+                                                                   std::make_index_sequence<flat - braced>{});
     }
 }
 
+enum class aggregate_problem : std::uint8_t { none, base_class, c_array, too_many_members };
+
+template <class T>
+constexpr aggregate_problem problem_of_aggregate() {
+    if constexpr (requires { T{only_base<T>{}}; })
+        return aggregate_problem::base_class;
+    else if constexpr (field_count<T>() > max_fields)
+        return aggregate_problem::too_many_members;
+    else if constexpr (has_c_array<T>())
+        return aggregate_problem::c_array;
+    else
+        return aggregate_problem::none;
+}
+
+template <class T>
+constexpr member_kind kind_of();
+
+// Whether T is, or may hold, a channel, a timer or a machine: what a type bsc cannot look into
+// must not hide. Only complete types are asked (a pointer to an incomplete type hides nothing).
+template <class T>
+constexpr bool may_hold_state();
+
+template <class T>
+struct hides_in_arguments : std::false_type {};
+template <template <class...> class Template, class... Arguments>
+struct hides_in_arguments<Template<Arguments...>> : std::bool_constant<(may_hold_state<Arguments>() || ...)> {};
+
+template <class T>
+constexpr bool may_hide_state() {
+    if constexpr (std::is_pointer_v<T>)
+        return may_hold_state<std::remove_cv_t<std::remove_pointer_t<T>>>();
+    else if constexpr (std::is_union_v<T>)
+        return true;  // bsc cannot see which member is alive
+    else if constexpr (std::is_array_v<T>)
+        return may_hold_state<std::remove_cv_t<std::remove_all_extents_t<T>>>();
+    else
+        return hides_in_arguments<T>::value;
+}
+
+// ---- the rule ------------------------------------------------------------------------------------
+
+/// What T is to bsc (T without const or volatile).
+template <class T>
+constexpr member_kind kind_of() {
+    if constexpr (is_machine<T>)
+        return member_kind::machine;
+    else if constexpr (is_channel<T>)
+        return member_kind::channel;
+    else if constexpr (is_timer<T>)
+        return member_kind::timer;
+    else if constexpr (std::is_same_v<T, bool>)
+        return member_kind::boolean;
+    else if constexpr (std::is_integral_v<T> && sizeof(T) <= 8)
+        return std::is_signed_v<T> ? member_kind::signed_integer : member_kind::unsigned_integer;
+    else if constexpr (std::is_enum_v<T>)
+        return member_kind::enumeration;
+    else if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
+        return member_kind::floating;
+    else if constexpr (is_chrono_duration<T>)
+        return member_kind::time;
+    else if constexpr (is_std_array<T>)
+        return member_kind::array;
+    else if constexpr (described_by_fields<T>)
+        return member_kind::record;
+    else if constexpr (adapted_by_hana<T>)
+        return member_kind::unwalkable;  // <bsc/adapt/hana.hpp> is not included
+    else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_union_v<T>)
+        return problem_of_aggregate<T>() == aggregate_problem::none ? member_kind::record : member_kind::unwalkable;
+    else if constexpr (may_hide_state<T>())
+        return member_kind::unwalkable;
+    else
+        return member_kind::opaque;
+}
+
+template <class T>
+constexpr bool is_transient = bsc::transient<T>;
+
+// ---- records -------------------------------------------------------------------------------------
+
+// f(members...) for a record's members, each an lvalue (const for a const record).
+template <class T, class F>
+#if defined(__clang__)
+[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
+#endif
+constexpr decltype(auto) apply_members(T& t, F&& f) {
+    using type = std::remove_const_t<T>;
+    if constexpr (described_by_fields<type>)
+        return bsc::fields<type>::apply(t, static_cast<F&&>(f));
+    else
+        return apply_to_n_fields<field_count<type>()>(t, static_cast<F&&>(f));
+}
+
+struct list_member_types {
+    template <class... Members>
+    type_list<Members...> operator()(Members&...) const {
+        return {};
+    }
+};
+/// The types of a record's members, const where the member is, in order.
+template <class T>
+using member_types = decltype(apply_members(std::declval<T&>(), list_member_types{}));
+
+template <class T>
+inline constexpr std::size_t member_count = []<class... M>(type_list<M...>) { return sizeof...(M); }(member_types<T>{});
+
+template <class T>
+constexpr bool may_hold_state() {
+    if constexpr (!requires { sizeof(T); }) {
+        return false;
+    } else {
+        constexpr member_kind k = kind_of<T>();
+        if constexpr (k == member_kind::machine || k == member_kind::channel || k == member_kind::timer)
+            return true;
+        else if constexpr (k == member_kind::unwalkable)
+            // An aggregate bsc cannot walk is reported where it is a member; held by a template
+            // (a std::vector of them) it is not taken to hide anything.
+            return !(std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_union_v<T>);
+        else if constexpr (k == member_kind::array)
+            return may_hold_state<typename T::value_type>();
+        else if constexpr (k == member_kind::record)
+            return []<class... M>(type_list<M...>) {
+                return (may_hold_state<std::remove_cv_t<M>>() || ...);
+            }(member_types<T>{});
+        else
+            return false;
+    }
+}
+
+// ---- the errors ------------------------------------------------------------------------------------
+
+template <class T>
+constexpr void report_unwalkable_aggregate() {
+    constexpr aggregate_problem p = problem_of_aggregate<T>();
+    if constexpr (p == aggregate_problem::base_class)
+        detail::report<error::context_type_has_base_class<T>>();
+    else if constexpr (p == aggregate_problem::c_array)
+        detail::report<error::context_type_has_c_array<T>>();
+    else if constexpr (p == aggregate_problem::too_many_members)
+        detail::report<error::too_many_fields<T>>();
+}
+
+// Reports what makes T unwalkable: an aggregate bsc cannot walk by its own problem; any other
+// type (optional, variant, a container, a union, a pointer) as member I of its Owner.
+template <class Owner, std::size_t I, class T>
+constexpr void report_unwalkable() {
+    if constexpr (adapted_by_hana<T> && !described_by_fields<T>)
+        detail::report<error::hana_adapter_not_included<T>>();
+    else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_union_v<T> && !described_by_fields<T>)
+        report_unwalkable_aggregate<T>();
+    else
+        detail::report<error::state_out_of_reach<Owner, error::member_number<I>, T>>();
+}
+
+// ---- the walk of values ------------------------------------------------------------------------------
+
+// What a visitor of walk() may declare:
+//   static constexpr bool all = true;          walk transient members too (the machine's own
+//                                              walk: their channels and timers are driven)
+//   template <class T> static constexpr bool visits;   the leaves it wants; subtrees holding none
+//                                              are not walked (default: every leaf)
+//   void leaf(T& value, Name const& name)      each leaf (machine, channel, timer, scalar, opaque)
+//   and, for names: static constexpr bool named = true; enter(name), leave() around a record's
+//   members, and element_name(name, i) for an array's elements.
+struct no_name {};
+
+template <class V>
+constexpr bool walks_all() {
+    if constexpr (requires { V::all; })
+        return V::all;
+    else
+        return false;
+}
+template <class V>
+constexpr bool wants_names() {
+    if constexpr (requires { V::named; })
+        return V::named;
+    else
+        return false;
+}
+template <class V, class T>
+constexpr bool visits_leaf() {
+    if constexpr (requires { V::template visits<T>; })
+        return V::template visits<T>;
+    else
+        return true;
+}
+
+/// Whether a walk with V would reach any leaf of T (so that a walk of a context with none of the
+/// leaves V wants costs nothing, not even a call).
+template <class V, class T>
+constexpr bool reaches() {
+    using U = std::remove_cv_t<T>;
+    if constexpr (is_transient<U> && !walks_all<V>()) {
+        return false;
+    } else {
+        constexpr member_kind k = kind_of<U>();
+        if constexpr (k == member_kind::unwalkable)
+            return false;  // reported where its owner is walked
+        else if constexpr (k == member_kind::array)
+            return reaches<V, typename U::value_type>();
+        else if constexpr (k == member_kind::record)
+            return []<class... M>(type_list<M...>) { return (reaches<V, M>() || ...); }(member_types<U>{});
+        else
+            return visits_leaf<V, U>();
+    }
+}
+
+// Reports every unwalkable member of T, at any depth, once per type: each walk and fold calls it
+// for its root, so that nothing bsc cannot reach is skipped in silence. Transient members and
+// what they hold are the user's word that they need not be walked.
+template <class T>
+constexpr bool check_reachable();
+
+template <class Owner, std::size_t I, class M>
+constexpr bool check_member() {
+    using U = std::remove_cv_t<M>;
+    if constexpr (!is_transient<U> && kind_of<U>() == member_kind::unwalkable) {
+        report_unwalkable<Owner, I, U>();
+        return false;
+    } else {
+        return check_reachable<M>();
+    }
+}
+
+template <class T>
+constexpr bool check_reachable() {
+    using U = std::remove_cv_t<T>;
+    constexpr member_kind k = kind_of<U>();
+    if constexpr (is_transient<U>) {
+        return true;
+    } else if constexpr (k == member_kind::array) {
+        return check_reachable<typename U::value_type>();
+    } else if constexpr (k == member_kind::record) {
+        return []<class... M, std::size_t... I>(type_list<M...>, std::index_sequence<I...>) {
+            return ((check_member<U, I, M>() ? 0 : 1) + ... + 0) == 0;
+        }(member_types<U>{}, std::make_index_sequence<member_count<U>>{});
+    } else if constexpr (k == member_kind::unwalkable) {
+        report_unwalkable<void, 0, U>();  // the root itself
+        return false;
+    } else {
+        return true;
+    }
+}
+template <class T>
+inline constexpr bool reachable = check_reachable<T>();
+
+/// The names of a record's members, in order.
+template <class T>
+constexpr auto const& names_of() {
+    if constexpr (described_by_fields<T>)
+        return bsc::fields<T>::names;
+    else
+        return member_names<T>;
+}
+
+template <class V, class T, class Name>
+#if defined(__clang__)
+[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
+#endif
+constexpr void walk_into(T& value, V& v, Name const& name) {
+    using U = std::remove_cv_t<T>;
+    using visitor = std::remove_const_t<V>;
+    constexpr member_kind k = kind_of<U>();
+    if constexpr (!reaches<visitor, U>()) {
+        (void)value, (void)v, (void)name;
+    } else if constexpr (k == member_kind::array) {
+        std::size_t i = 0;
+        for (auto& element : value) {
+            if constexpr (wants_names<visitor>())
+                walk_into(element, v, v.element_name(name, i++));
+            else
+                walk_into(element, v, name);
+        }
+    } else if constexpr (k == member_kind::record) {
+        if constexpr (wants_names<visitor>()) {
+            v.enter(name);
+            std::size_t i = 0;
+            apply_members(value, [&](auto&... member) { (walk_into(member, v, names_of<U>()[i++]), ...); });
+            v.leave();
+        } else {
+            apply_members(value, [&](auto&... member) { (walk_into(member, v, name), ...); });
+        }
+    } else {
+        v.leaf(value, name);
+    }
+}
+
+/// Walks `value` with visitor v, depth first, in declaration order: v.leaf(member, name) for
+/// each leaf it visits. Every member bsc cannot reach is a compile error.
+template <class V, class T, class Name = no_name>
+#if defined(__clang__)
+[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
+#endif
+constexpr void walk(T& value, V& v, Name const& name = {}) {
+    static_assert(reachable<T> || true);  // instantiates the check (its errors are the report)
+    walk_into(value, v, name);
+}
+
+// ---- the fold over types -------------------------------------------------------------------------------
+
+// What a folder of fold_type declares: `using result = ...;` and
+//   template <class T> result leaf() const          a leaf (T may be const)
+//   template <class T> result array(result element) const
+//   template <class T, class... M> result record(std::array<result, n> const& members) const
+// Transient types are leaves too (folders that skip them test is_transient).
+template <class F, class T>
+constexpr typename F::result fold_type(F const& f) {
+    using U = std::remove_cv_t<T>;
+    constexpr member_kind k = kind_of<U>();
+    if constexpr (is_transient<U>) {
+        return f.template leaf<T>();
+    } else if constexpr (k == member_kind::array) {
+        return f.template array<U>(fold_type<F, typename U::value_type>(f));
+    } else if constexpr (k == member_kind::record) {
+        return []<class... M>(F const& folder, type_list<M...>) {
+            return folder.template record<U>(
+                std::array<typename F::result, sizeof...(M)>{fold_type<F, M>(folder)...});
+        }(f, member_types<U>{});
+    } else {
+        return f.template leaf<T>();  // (an unwalkable T is reported by check_reachable)
+    }
+}
+
+// A fold that adds up what each leaf takes (bytes, bits): a transient leaf nothing, an array its
+// elements', a record its members'. Derived supplies share<T, K>() for a leaf of type T (const
+// where the member is) and kind K.
+template <class Derived>
+struct summing_fold {
+    using result = std::size_t;
+    template <class T>
+    constexpr std::size_t leaf() const {
+        using U = std::remove_cv_t<T>;
+        if constexpr (is_transient<U>)
+            return 0;
+        else
+            return static_cast<Derived const&>(*this).template share<T, kind_of<U>()>();
+    }
+    template <class T>
+    constexpr std::size_t array(std::size_t element) const {
+        return std::tuple_size_v<T> * element;
+    }
+    template <class T, std::size_t N>
+    constexpr std::size_t record(std::array<std::size_t, N> const& members) const {
+        std::size_t total = 0;
+        for (std::size_t m : members) total += m;
+        return total;
+    }
+};
+
+/// fold_type from the root of a walk: every member bsc cannot reach is a compile error.
+template <class F, class T>
+constexpr typename F::result fold(F const& f) {
+    static_assert(reachable<T> || true);
+    return fold_type<F, T>(f);
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/members.hpp
+
+namespace bsc::detail {
+
+// Calls act(point) for each channel (Channels) or each timer of a context, transient members'
+// included.
+template <bool Channels, class Act>
+struct point_visitor {
+    static constexpr bool all = true;
+    template <class T>
+    static constexpr bool visits = Channels ? is_channel<T> : is_timer<T>;
+    Act act;
+    template <class Point>
+    constexpr void leaf(Point& point, no_name) const {
+        act(point);
+    }
+};
+
+struct latch_act {
+    template <class Channel>
+    constexpr void operator()(Channel& c) const {
+        access::latch(c);
+    }
+};
+struct commit_act {
+    template <class Channel>
+    constexpr void operator()(Channel& c) const {
+        access::commit(c);
+    }
+};
+struct update_act {
+    duration now;
+    template <class Timer>
+    constexpr void operator()(Timer& t) const {
+        access::update(t, now);
+    }
+};
+using latch_visitor = point_visitor<true, latch_act>;
+using update_visitor = point_visitor<false, update_act>;
+
 template <class Ctx>
-inline constexpr bool has_channels = holds_points<channel_points, Ctx>();
+inline constexpr bool has_channels = reaches<latch_visitor, Ctx>();
 template <class Ctx>
-inline constexpr bool has_timers = holds_points<timer_points, Ctx>();
+inline constexpr bool has_timers = reaches<update_visitor, Ctx>();
 
 template <class Ctx>
 constexpr void latch_inputs(Ctx& ctx) {
-    if constexpr (has_channels<Ctx>)
-        for_each_point<channel_points>(ctx, [](auto& channel) { access::latch(channel); });
+    latch_visitor const v{};
+    walk(ctx, v);
 }
 
 template <class Ctx>
 constexpr void commit_outputs(Ctx& ctx) {
-    if constexpr (has_channels<Ctx>)
-        for_each_point<channel_points>(ctx, [](auto& channel) { access::commit(channel); });
+    point_visitor<true, commit_act> const v{};
+    walk(ctx, v);
 }
 
 template <class Ctx>
 constexpr void update_timers(Ctx& ctx, duration now) {
-    if constexpr (has_timers<Ctx>)
-        for_each_point<timer_points>(ctx, [now](auto& timer) { access::update(timer, now); });
+    update_visitor const v{{now}};
+    walk(ctx, v);
 }
 
 }  // namespace bsc::detail
@@ -6153,8 +6894,14 @@ public:
                                                      [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
     }
 
-protected:
-    // Queues an item already held as the queue's variant (a delayed event coming due).
+    // ---- what the queue holds between runs: for the retentive state and the explorer -------
+    // Calls f(item) for each event held, oldest first.
+    template <class F>
+    constexpr void for_each_held(F&& f) const {
+        for (std::size_t i = 0; i < this->size(); ++i) f(items_[(this->front() + i) % Capacity]);
+    }
+    // Queues an item already held as the queue's variant (a delayed event coming due, an event
+    // restored).
     constexpr bool push_item(value_type const& item) {
         if (this->refuse_when_full()) return false;
         items_[this->back()] = item;
@@ -6431,11 +7178,6 @@ struct observer_argument<Context, Observer> {
 };
 template <class... Arguments>
 using observer_argument_t = typename observer_argument<Arguments...>::type;
-
-// What every machine derives from, whatever its back end (an empty base: it costs nothing).
-struct machine_base {};
-template <class T>
-inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
 
 // The decoder of dispatch_by_name when none is given: builds no event (each is default-constructed).
 struct no_decoder {};
@@ -7558,6 +8300,40 @@ public:
             (void)this->push_item(next->event);
         }
     }
+    // ---- what the queue holds between runs: for the retentive state and the explorer -------
+    // The time of the machine's last cycle, as the queue knows it.
+    constexpr duration clock() const { return clock_; }
+    // Calls f(due, id, item) for each pending event, in the order they were sent.
+    template <class F>
+    constexpr void for_each_scheduled(F&& f) const {
+        std::uint32_t after = 0;
+        bool first = true;
+        for (;;) {
+            slot const* next = nullptr;
+            for (auto const& s : slots_)
+                if (s.pending && (first || s.order > after) && (next == nullptr || s.order < next->order)) next = &s;
+            if (next == nullptr) return;
+            f(next->due, next->id, next->event);
+            after = next->order;
+            first = false;
+        }
+    }
+    // Forgets every pending event and the count of events sent.
+    constexpr void clear_scheduled() {
+        for (auto& s : slots_) s.pending = false;
+        sent_ = 0;
+    }
+    // Keeps an event due at `due`, as the last one sent. False if every slot is taken.
+    constexpr bool put_scheduled(duration due, int id, value_type const& item) {
+        for (auto& s : slots_)
+            if (!s.pending) {
+                s = slot{true, due, sent_++, id, item};
+                return true;
+            }
+        return false;
+    }
+    static constexpr std::size_t slot_count() { return Slots; }
+
     constexpr bool overflowed() const { return base::overflowed() || delayed_overflow_; }
     constexpr void clear_overflow() {
         base::clear_overflow();

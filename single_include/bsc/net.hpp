@@ -223,116 +223,6 @@ private:
 #include <utility>
 #include <vector>
 
-// begin include/bsc/detail/member_names.hpp
-#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_NAMES_HPP
-#define BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_NAMES_HPP
-// The names of an aggregate's members as its definition spells them, at compile time, without
-// macros: the address of a member of an object that is declared but never defined is a constant
-// that may be a template argument, and both supported compilers spell that argument in
-// __PRETTY_FUNCTION__ ending with the member's name (GCC 12: "{(& object<T>.T::speed)}",
-// Clang 14: "{&object.speed}"). Used by the opt-in parts that show or store a context by name
-// (the VCD recorder, the retentive state's layout fingerprint); nothing else pays for it.
-
-#include <array>
-#include <cstddef>
-#include <string_view>
-#include <tuple>
-#include <utility>
-
-
-namespace bsc::detail {
-
-// Holds the address as a class-type template argument: Clang 14 accepts a pointer to a
-// subobject there, but not as a template argument of pointer type.
-template <class T>
-struct member_address {
-    T const* address;
-};
-
-#if defined(__clang__)
-#pragma clang diagnostic push
-#pragma clang diagnostic ignored "-Wundefined-var-template"
-#pragma clang diagnostic ignored "-Wundefined-internal"
-#endif
-// Never defined: only its members' addresses are taken, in constant expressions. T is wrapped so
-// that a T without linkage (in an anonymous namespace, or local to a function) may be named: the
-// wrapper's linkage is the variable's, and Clang refuses an undefined variable of a type without.
-template <class T>
-struct declared_object {
-    T value;
-};
-template <class T>
-extern declared_object<T> const declared_only;
-
-template <auto Address>
-constexpr char const* spelled_address() {
-    return __PRETTY_FUNCTION__;
-}
-
-// Identifiers may hold letters beyond ASCII, spelled in UTF-8: every byte of those is >= 0x80.
-constexpr bool is_identifier_char(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-           static_cast<unsigned char>(c) >= 0x80;
-}
-
-// The last identifier of a signature: the member's name, before the closing brackets.
-constexpr std::string_view last_identifier(std::string_view s) {
-    std::size_t end = s.size();
-    while (end > 0 && !is_identifier_char(s[end - 1])) --end;
-    std::size_t begin = end;
-    while (begin > 0 && is_identifier_char(s[begin - 1])) --begin;
-    return s.substr(begin, end - begin);
-}
-
-template <class T, std::size_t I>
-constexpr std::string_view member_name_of() {
-    constexpr auto& member = std::get<I>(tie_fields(declared_only<T>.value));
-    using member_type = std::remove_cvref_t<decltype(member)>;
-    return last_identifier(spelled_address<member_address<member_type>{&member}>());
-}
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
-
-/// The names of T's members, in declaration order. Requirements: T is an aggregate that
-/// detail::tie_fields supports.
-template <class T>
-inline constexpr auto member_names = []<std::size_t... I>(std::index_sequence<I...>) {
-    return std::array<std::string_view, sizeof...(I)>{member_name_of<T, I>()...};
-}(std::make_index_sequence<std::tuple_size_v<decltype(tie_fields(std::declval<T&>()))>>{});
-
-template <class Class, class Member>
-Class class_of_member(Member Class::*);
-
-#if defined(__clang__)
-#pragma clang diagnostic push
-#pragma clang diagnostic ignored "-Wundefined-var-template"
-#pragma clang diagnostic ignored "-Wundefined-internal"
-#endif
-/// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
-/// `&axis::speed`. Found by comparing addresses: GCC 12 does not accept the address that `.*`
-/// yields as a template argument, so the member's index among the aggregate's is looked up.
-template <auto Member>
-constexpr std::string_view member_name() {
-    using Class = decltype(class_of_member(Member));
-    constexpr std::size_t index = []<std::size_t... I>(std::index_sequence<I...>) {
-        auto const& object = declared_only<Class>.value;
-        void const* const target = &(object.*Member);
-        auto const fields = tie_fields(object);
-        std::size_t found = sizeof...(I);
-        ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
-        return found;
-    }(std::make_index_sequence<member_names<Class>.size()>{});
-    static_assert(index < member_names<Class>.size(), "the pointer designates no member of the aggregate");
-    return member_names<Class>[index];
-}
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
-
-}  // namespace bsc::detail
-#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_NAMES_HPP
-// end include/bsc/detail/member_names.hpp
 // begin include/bsc/net/wire.hpp
 #ifndef BSC_SINGLE_INCLUDE_BSC_NET_WIRE_HPP
 #define BSC_SINGLE_INCLUDE_BSC_NET_WIRE_HPP
@@ -342,10 +232,10 @@ constexpr std::string_view member_name() {
 //   offset  size     field
 //        0  3 bytes  "bsc"
 //        3  1 byte   kind: 'V' a channel's value, 'P' an actor's progress, 'W' a node's will
-//        4  1 byte   format version (1)
+//        4  1 byte   format version (2: the fingerprints of version 1 described types otherwise)
 //        5  8 bytes  the step the message is about (two's complement, little-endian)
 //       13  8 bytes  fingerprint: of the publishing actor's chart, and for a value also of the
-//                    channel's name and value type (detail::retain's fingerprints)
+//                    channel's name and value type (detail/state_bytes.hpp's fingerprints)
 //       21           body: a value as bsc::save writes it (fixed size per type); for a will, one
 //                    byte per actor of the node (its place in the system's order)
 //
@@ -359,11 +249,729 @@ constexpr std::string_view member_name() {
 #include <span>
 #include <vector>
 
-#include "retain.hpp"
+// begin include/bsc/detail/bytes.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_BYTES_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_BYTES_HPP
+// Bytes that leave the program: little-endian numbers written and read at a position, the FNV-1a
+// fingerprint of what they mean, and the CRC-32 that guards them. Shared by retentive state
+// (bsc/retain.hpp) and the messages of bsc::net (net/wire.hpp).
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace bsc::detail {
+
+// FNV-1a, 64 bits: fingerprints of a chart and a layout, computed at compile time.
+struct fingerprint {
+    std::uint64_t value = 14695981039346656037ull;
+    constexpr void add(std::uint64_t v) {
+        for (int i = 0; i < 8; ++i, v >>= 8) value = (value ^ (v & 0xffu)) * 1099511628211ull;
+    }
+    constexpr void add(std::string_view s) {
+        add(s.size());
+        for (char c : s) value = (value ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    }
+};
+
+// CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320), bit by bit: states are small.
+constexpr std::uint32_t crc32(std::byte const* data, std::size_t n) {
+    std::uint32_t crc = 0xffffffffu;
+    for (std::size_t i = 0; i < n; ++i) {
+        crc ^= static_cast<std::uint32_t>(data[i]);
+        for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+// A little-endian number of `bytes` (at most 8) bytes.
+inline std::uint64_t read_le(std::byte const* p, std::size_t bytes) {
+    std::uint64_t v = 0;
+    for (std::size_t i = 0; i < bytes; ++i) v |= static_cast<std::uint64_t>(p[i]) << (8 * i);
+    return v;
+}
+
+class byte_writer {
+public:
+    explicit byte_writer(std::byte* out) : out_(out) {}
+    void put(std::uint64_t v, std::size_t bytes) {
+        for (std::size_t i = 0; i < bytes; ++i, v >>= 8) out_[pos_++] = static_cast<std::byte>(v & 0xffu);
+    }
+    std::size_t position() const { return pos_; }
+
+private:
+    std::byte* out_;
+    std::size_t pos_ = 0;
+};
+
+// Reads what byte_writer wrote, within [begin, end); the first value out of range (or past the
+// end) is remembered with its position, and reading goes on with zeros.
+class byte_reader {
+public:
+    enum class fault : std::uint8_t { none, truncated, invalid_value, machine_running };
+
+    byte_reader(std::byte const* in, std::size_t begin, std::size_t end) : in_(in), pos_(begin), end_(end) {}
+    std::uint64_t get(std::size_t bytes) {
+        if (pos_ + bytes > end_) {
+            refuse(fault::truncated, end_);
+            return 0;
+        }
+        std::uint64_t const v = read_le(in_ + pos_, bytes);
+        pos_ += bytes;
+        return v;
+    }
+    // A value that must be below `limit`.
+    std::uint64_t get_below(std::size_t bytes, std::uint64_t limit) {
+        std::size_t const at = pos_;
+        std::uint64_t const v = get(bytes);
+        if (v >= limit) refuse(fault::invalid_value, at);
+        return v < limit ? v : 0;
+    }
+    void refuse(fault f, std::size_t at) {
+        if (fault_ == fault::none) {
+            fault_ = f;
+            at_ = at;
+        }
+    }
+    fault failure() const { return fault_; }
+    std::size_t failed_at() const { return at_; }
+    std::size_t position() const { return pos_; }
+
+private:
+    std::byte const* in_;
+    std::size_t pos_;
+    std::size_t end_;
+    fault fault_ = fault::none;
+    std::size_t at_ = 0;
+};
+
+}  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_BYTES_HPP
+// end include/bsc/detail/bytes.hpp
+// begin include/bsc/detail/state_bytes.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_STATE_BYTES_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_STATE_BYTES_HPP
+// A machine's state as bytes, and the values of its context: what bsc::save writes and
+// bsc::restore reads (bsc/retain.hpp), and the values bsc::net sends (net/wire.hpp). Walked by
+// the member layer (detail/members.hpp), so that every kind of member is encoded in one place:
+//
+//   a machine   one byte per composite (its active or remembered child: the configuration and
+//               the history), the clock (8), whether a cycle has run (1), each timeout's start
+//               (8 each), the last outcome (1); for a chart that defers: whether the deferred
+//               events wait for a retry (1), their number (2) and each of them (an event slot);
+//               for a chart that sends delayed events: the queue's clock (8), the number pending
+//               (2) and each of them in the order sent: due time (8), id (4), event slot; then
+//               the context
+//   an event    slot: the event's place among the chart's events plus one (0: none) in 1 byte
+//               (2 above 255 events), then its members, padded to the largest event's size
+//   a channel   its pending and its current value
+//   a timer     limit, start, elapsed time (8 each), phase (1), expired (1)
+//   a scalar    bool 1 byte; integers, enums, float, double, durations in their size
+//   std::array, aggregate, bsc::fields type: the elements or members in order
+// All numbers little-endian. Transient members (bsc::transient) take no bytes.
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <type_traits>
+#include <variant>
+
+
+namespace bsc::detail {
+
+inline constexpr std::size_t outcome_count = static_cast<std::size_t>(outcome::unknown_event) + 1;
+
+template <class Machine>
+using machine_model = chart_model<typename Machine::chart_type>;
+
+// ---- what a member is to the bytes -----------------------------------------------------------------
+
+// Whether a leaf has a fixed encoding (else the retentive state refuses it).
+template <class T>
+constexpr bool encodable_leaf() {
+    using U = std::remove_cv_t<T>;
+    constexpr member_kind k = kind_of<U>();
+    if constexpr (is_transient<U>)
+        return true;
+    else if constexpr (std::is_const_v<T>)
+        return false;  // cannot be restored
+    else if constexpr (k == member_kind::enumeration)
+        return has_fixed_underlying_type<U>;
+    else if constexpr (k == member_kind::time)
+        return kind_of<typename U::rep>() != member_kind::opaque;
+    else
+        return k != member_kind::opaque && k != member_kind::unwalkable;
+}
+
+// Whether every leaf of T has one, and none is a reference (what lies behind one is not the
+// machine's); no error is reported (the pending events' check names the event).
+struct encodable_folder {
+    using result = bool;
+    template <class T>
+    constexpr bool leaf() const {
+        if constexpr (kind_of<std::remove_cv_t<T>>() == member_kind::channel)
+            return encodable_leaf<T>() && fold_type<encodable_folder, channel_value<std::remove_cv_t<T>>>(*this);
+        else
+            return encodable_leaf<T>();
+    }
+    template <class T>
+    constexpr bool array(bool element) const {
+        return element;
+    }
+    template <class T, std::size_t N>
+    constexpr bool record(std::array<bool, N> const& members) const {
+        if constexpr (!described_by_fields<T>)
+            if (has_reference_field<T>) return false;
+        return std::all_of(members.begin(), members.end(), [](bool b) { return b; });
+    }
+};
+template <class T>
+inline constexpr bool encodable = fold_type<encodable_folder, T>(encodable_folder{});
+
+template <class Machine>
+constexpr std::size_t machine_size();
+
+// The bytes of a value of T; a member that has none is reported (member_not_retainable).
+struct size_folder : summing_fold<size_folder> {
+    template <class T, member_kind k>
+    constexpr std::size_t share() const {
+        using U = std::remove_cv_t<T>;
+        if constexpr (!encodable_leaf<T>()) {
+            detail::report<error::member_not_retainable<T>>();
+            return 0;
+        } else if constexpr (k == member_kind::machine) {
+            return machine_size<U>();
+        } else if constexpr (k == member_kind::channel) {
+            return 2 * fold<size_folder, channel_value<U>>(*this);
+        } else if constexpr (k == member_kind::timer) {
+            return 3 * 8 + 2;
+        } else if constexpr (k == member_kind::boolean) {
+            return 1;
+        } else if constexpr (k == member_kind::time) {
+            return sizeof(typename U::rep);
+        } else {
+            return sizeof(U);
+        }
+    }
+    template <class T, std::size_t N>
+    constexpr std::size_t record(std::array<std::size_t, N> const& members) const {
+        if constexpr (!described_by_fields<T>)
+            if constexpr (has_reference_field<T>) detail::report<error::member_not_retainable<T>>();
+        return summing_fold<size_folder>::record<T>(members);
+    }
+};
+template <class T>
+constexpr std::size_t size_of() {
+    return fold<size_folder, T>(size_folder{});
+}
+
+// ---- the pending events of a machine -----------------------------------------------------------------
+
+// The events that can wait in a machine between calls: every event of the chart but
+// bsc::action_failed (which carries an exception, and which no row defers or delays).
+template <class Chart, class E>
+constexpr bool pending_event_encodable() {
+    if constexpr (std::is_same_v<E, action_failed> || encodable<E>)
+        return true;
+    else
+        return detail::report<error::pending_events_not_encoded<Chart, E>>();
+}
+template <class Chart, class... Es>
+constexpr bool pending_events_encodable(type_list<Es...>) {
+    return ((pending_event_encodable<Chart, Es>() ? 0 : 1) + ... + 0) == 0;
+}
+
+template <class Events>
+struct event_slot;
+template <class... Es>
+struct event_slot<type_list<Es...>> {
+    static constexpr std::size_t index_bytes = sizeof...(Es) + 1 <= 256 ? 1 : 2;
+    template <class E>
+    static constexpr std::size_t payload_of() {
+        if constexpr (std::is_same_v<E, action_failed> || !encodable<E>)
+            return 0;  // (the second reported by pending_events_encodable)
+        else
+            return size_of<E>();
+    }
+    static constexpr std::size_t payload = std::max({std::size_t{0}, payload_of<Es>()...});
+    static constexpr std::size_t size = index_bytes + payload;
+};
+
+template <class Machine>
+struct pending_layout {
+    using model = machine_model<Machine>;
+    using slot = event_slot<typename model::events>;
+    static constexpr bool defers = model::has_deferral;
+    static constexpr bool delays = chart_sends_delayed<model>();
+    static constexpr bool check() {
+        if constexpr (defers || delays)
+            return pending_events_encodable<typename Machine::chart_type>(typename model::events{});
+        else
+            return true;
+    }
+    static constexpr bool checked = check();
+    static constexpr std::size_t deferred_capacity = [] {
+        if constexpr (defers)
+            return std::remove_cvref_t<decltype(access::deferred(std::declval<Machine&>()))>::capacity();
+        else
+            return std::size_t{0};
+    }();
+    static constexpr std::size_t delayed_capacity = [] {
+        if constexpr (delays)
+            return std::remove_cvref_t<decltype(access::queue(std::declval<Machine&>()))>::slot_count();
+        else
+            return std::size_t{0};
+    }();
+    static constexpr std::size_t size = [] {
+        if constexpr (defers || delays)
+            return (defers ? 1 + 2 + deferred_capacity * slot::size : 0) +
+                   (delays ? 8 + 2 + delayed_capacity * (8 + 4 + slot::size) : 0);
+        else
+            return std::size_t{0};
+    }();
+};
+
+template <class Machine>
+constexpr std::size_t machine_size() {
+    using layout = chart_layout<machine_model<Machine>>;
+    static_assert(pending_layout<Machine>::checked || true);
+    return static_cast<std::size_t>(machine_model<Machine>::tree.slots) + 8 + 1 +
+           8 * static_cast<std::size_t>(layout::timeout_slots) + 1 + pending_layout<Machine>::size +
+           size_of<typename Machine::context_type>();
+}
+
+// ---- fingerprints --------------------------------------------------------------------------------
+
+// What the saved bytes of a machine mean: its states and where its timeouts are.
+template <class Machine>
+constexpr std::uint64_t chart_fingerprint() {
+    using model = machine_model<Machine>;
+    using layout = chart_layout<model>;
+    constexpr auto const& names = state_names_of<model>;
+    fingerprint f;
+    f.add(static_cast<std::uint64_t>(model::N));
+    for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s) {
+        f.add(names[s]);
+        f.add(static_cast<std::uint64_t>(model::tree.kinds[s]));
+        f.add(static_cast<std::uint64_t>(model::tree.hist[s]));
+        f.add(static_cast<std::uint64_t>(model::tree.parent[s] + 1));
+    }
+    f.add(static_cast<std::uint64_t>(layout::timeout_slots));
+    if constexpr (layout::timeout_slots > 0)
+        for (int s : layout::timeout_slot_state) f.add(static_cast<std::uint64_t>(s));
+    return f.value;
+}
+
+// The same, with each timeout row's place among the rows, its target and its delay (a value of
+// the chart, not of its type): a timeout row added, removed, moved or given another delay changes
+// the meaning of the start times the bytes hold.
+template <class Machine>
+std::uint64_t chart_fingerprint(Machine const& m) {
+    using model = machine_model<Machine>;
+    using layout = chart_layout<model>;
+    fingerprint f{chart_fingerprint<Machine>()};
+    auto const delays = access::row_delays(m);
+    for (std::size_t row = 0; row < delays.size(); ++row) {
+        if (!layout::is_timeout_row(static_cast<int>(row))) continue;
+        f.add(row);
+        f.add(static_cast<std::uint64_t>(model::rows.target[row] + 2));
+        f.add(static_cast<std::uint64_t>(delays[row].count()));
+    }
+    return f.value;
+}
+
+template <class Machine>
+constexpr std::uint64_t layout_fingerprint();
+
+// A type's description: its kind, size and, for composites, their parts (members by name).
+struct describe_folder {
+    using result = std::uint64_t;
+    template <class T>
+    constexpr std::uint64_t leaf() const {
+        using U = std::remove_cv_t<T>;
+        constexpr member_kind k = kind_of<U>();
+        fingerprint f;
+        if constexpr (is_transient<U>) {
+            f.add("transient");
+        } else {
+            f.add(static_cast<std::uint64_t>(k));
+            if constexpr (k == member_kind::machine) {
+                f.add(chart_fingerprint<U>());
+                f.add(layout_fingerprint<U>());
+            } else if constexpr (k == member_kind::channel) {
+                using V = channel_value<U>;
+                f.add(std::is_same_v<U, input<V>> ? 1u : std::is_same_v<U, output<V>> ? 2u : 3u);
+                f.add(fold<describe_folder, V>(*this));
+            } else if constexpr (k == member_kind::enumeration) {
+                f.add(name_of<U>);
+                f.add(sizeof(U));
+                f.add(std::is_signed_v<std::underlying_type_t<U>> ? 1 : 0);
+            } else if constexpr (k == member_kind::time) {
+                f.add(static_cast<std::uint64_t>(U::period::num));
+                f.add(static_cast<std::uint64_t>(U::period::den));
+                f.add(fold<describe_folder, typename U::rep>(*this));
+            } else if constexpr (k != member_kind::timer) {
+                f.add(sizeof(U));
+            }
+        }
+        return f.value;
+    }
+    template <class T>
+    constexpr std::uint64_t array(std::uint64_t element) const {
+        fingerprint f;
+        f.add(static_cast<std::uint64_t>(member_kind::array));
+        f.add(std::tuple_size_v<T>);
+        f.add(element);
+        return f.value;
+    }
+    template <class T, std::size_t N>
+    constexpr std::uint64_t record(std::array<std::uint64_t, N> const& members) const {
+        fingerprint f;
+        f.add(static_cast<std::uint64_t>(member_kind::record));
+        f.add(N);
+        for (std::size_t i = 0; i < N; ++i) {
+            // (A struct with a reference member is refused by size_of: its names are not constants.)
+            if constexpr (described_by_fields<T> || !has_reference_field<T>) f.add(names_of<T>()[i]);
+            f.add(members[i]);
+        }
+        return f.value;
+    }
+};
+
+template <class T>
+constexpr std::uint64_t describe() {
+    return fold<describe_folder, T>(describe_folder{});
+}
+
+template <class Machine>
+constexpr std::uint64_t layout_fingerprint() {
+    fingerprint f;
+    f.add(describe<typename Machine::context_type>());
+    using pending = pending_layout<Machine>;
+    if constexpr (pending::defers || pending::delays) {
+        f.add(pending::deferred_capacity);
+        f.add(pending::delayed_capacity);
+        [&]<class... Es>(type_list<Es...>) {
+            ((f.add(name_of<Es>), f.add(std::is_same_v<Es, action_failed> ? 0 : describe<Es>())), ...);
+        }(typename machine_model<Machine>::events{});
+    }
+    return f.value;
+}
+
+// ---- writing -----------------------------------------------------------------------------------------
+
+template <class Machine>
+void put_machine(byte_writer& w, Machine const& m);
+
+struct put_visitor {
+    byte_writer& w;
+    template <class T>
+    void leaf(T const& value, no_name) {
+        using U = std::remove_cv_t<T>;
+        constexpr member_kind k = kind_of<U>();
+        if constexpr (k == member_kind::machine) {
+            put_machine(w, value);
+        } else if constexpr (k == member_kind::channel) {
+            walk(value.pending(), *this);
+            walk(value.get(), *this);
+        } else if constexpr (k == member_kind::timer) {
+            w.put(static_cast<std::uint64_t>(value.limit().count()), 8);
+            w.put(static_cast<std::uint64_t>(access::timer_started(value).count()), 8);
+            w.put(static_cast<std::uint64_t>(value.elapsed().count()), 8);
+            w.put(access::timer_phase(value), 1);
+            w.put(value.expired() ? 1 : 0, 1);
+        } else if constexpr (k == member_kind::boolean) {
+            w.put(value ? 1 : 0, 1);
+        } else if constexpr (k == member_kind::enumeration) {
+            using R = std::underlying_type_t<U>;
+            w.put(static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<R>>(static_cast<R>(value))), sizeof(U));
+        } else if constexpr (k == member_kind::signed_integer || k == member_kind::unsigned_integer) {
+            w.put(static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<U>>(value)), sizeof(U));
+        } else if constexpr (std::is_same_v<U, float>) {
+            w.put(std::bit_cast<std::uint32_t>(value), 4);
+        } else if constexpr (std::is_same_v<U, double>) {
+            w.put(std::bit_cast<std::uint64_t>(value), 8);
+        } else if constexpr (k == member_kind::time) {
+            leaf(value.count(), no_name{});
+        }
+        // (opaque and unwalkable members are refused by size_of before anything is written)
+    }
+};
+
+template <class T>
+void put(byte_writer& w, T const& value) {
+    put_visitor v{w};
+    walk(value, v);
+}
+
+// An event slot: the event's place plus one, its members, zeros up to the slot's size.
+template <class Events, class Item>
+void put_event(byte_writer& w, Item const& item) {
+    using slot = event_slot<Events>;
+    std::size_t const end = w.position() + slot::size;
+    w.put(item.index(), slot::index_bytes);
+    std::visit(
+        [&]<class E>(E const& e) {
+            if constexpr (!std::is_same_v<E, std::monostate> && !std::is_same_v<E, action_failed>) put(w, e);
+        },
+        item);
+    while (w.position() < end) w.put(0, 1);
+}
+
+template <class Machine>
+void put_pending(byte_writer& w, Machine const& m) {
+    using pending = pending_layout<Machine>;
+    using events = typename machine_model<Machine>::events;
+    auto& machine = const_cast<Machine&>(m);  // access reads through non-const references too
+    if constexpr (pending::defers) {
+        auto const& deferred = access::deferred(machine);
+        w.put(access::deferral_pending_retry(m) ? 1 : 0, 1);
+        w.put(deferred.size(), 2);
+        deferred.for_each_held([&](auto const& item) { put_event<events>(w, item); });
+        for (std::size_t i = deferred.size(); i < pending::deferred_capacity; ++i)
+            for (std::size_t b = 0; b < pending::slot::size; ++b) w.put(0, 1);
+    }
+    if constexpr (pending::delays) {
+        auto const& queue = access::queue(machine);
+        w.put(static_cast<std::uint64_t>(queue.clock().count()), 8);
+        std::size_t count = 0;
+        queue.for_each_scheduled([&](duration, int, auto const&) { ++count; });
+        w.put(count, 2);
+        queue.for_each_scheduled([&](duration due, int id, auto const& item) {
+            w.put(static_cast<std::uint64_t>(due.count()), 8);
+            w.put(static_cast<std::uint32_t>(id), 4);
+            put_event<events>(w, item);
+        });
+        for (std::size_t i = count; i < pending::delayed_capacity; ++i)
+            for (std::size_t b = 0; b < 8 + 4 + pending::slot::size; ++b) w.put(0, 1);
+    }
+}
+
+template <class Machine>
+void put_machine(byte_writer& w, Machine const& m) {
+    auto& machine = const_cast<Machine&>(m);  // access reads through non-const references too
+    for (auto byte : access::configuration(machine).active) w.put(byte, 1);
+    w.put(static_cast<std::uint64_t>(access::clock(m).count()), 8);
+    w.put(access::clock_started(m) ? 1 : 0, 1);
+    for (duration armed : access::armed(machine)) w.put(static_cast<std::uint64_t>(armed.count()), 8);
+    w.put(static_cast<std::uint64_t>(access::last_outcome(m)), 1);
+    put_pending(w, m);
+    put(w, m.context());
+}
+
+// ---- reading -------------------------------------------------------------------------------------------
+
+// What a reading pass does with the values: only check them, or also store them, each machine's
+// clock continuing at `resume` if given.
+struct pass {
+    bool apply = false;
+    std::optional<duration> resume{};
+    duration shift{};  // added to every time the enclosing machine keeps
+};
+
+// to - from, saturated.
+constexpr duration difference(duration to, duration from) {
+    duration::rep d{};
+    if (__builtin_sub_overflow(to.count(), from.count(), &d)) return from.count() < 0 ? duration::max() : duration::min();
+    return duration{d};
+}
+
+template <class Machine>
+void get_machine(byte_reader& r, Machine& m, pass const& p);
+
+struct get_visitor {
+    byte_reader& r;
+    pass const& p;
+    template <class T>
+    void leaf(T& target, no_name) {
+        using U = std::remove_cv_t<T>;
+        constexpr member_kind k = kind_of<U>();
+        if constexpr (k == member_kind::machine) {
+            get_machine(r, target, p);
+        } else if constexpr (k == member_kind::channel) {
+            using V = channel_value<U>;
+            // Read into copies, then store both through the channel's own cycle boundary.
+            V pending = target.pending();
+            V current = target.get();
+            pass const into_copies{true, p.resume, p.shift};
+            get_visitor copies{r, into_copies};
+            walk(pending, copies);
+            walk(current, copies);
+            if (!p.apply) return;
+            target.set(current);
+            access::latch(target);
+            access::commit(target);
+            target.set(pending);
+        } else if constexpr (k == member_kind::timer) {
+            std::size_t const at = r.position();
+            auto const limit = duration{static_cast<duration::rep>(r.get(8))};
+            auto const started = duration{static_cast<duration::rep>(r.get(8))};
+            auto const elapsed = duration{static_cast<duration::rep>(r.get(8))};
+            auto const phase = static_cast<std::uint8_t>(r.get_below(1, 3));
+            bool const expired = r.get_below(1, 2) != 0;
+            // Only what a timer can come to: a limit and an elapsed time not below zero, the flag
+            // only while timing (phase 2), no elapsed time while idle or pending.
+            constexpr std::uint8_t timing = 2;
+            if (limit < duration::zero() || elapsed < duration::zero() || (expired && phase != timing) ||
+                (phase != timing && elapsed != duration::zero()))
+                r.refuse(byte_reader::fault::invalid_value, at);
+            if (!p.apply) return;
+            access::set_timer_limit(target, limit);
+            access::set_timer(target, phase, expired, shifted(started, p.shift), elapsed);
+        } else if constexpr (k == member_kind::boolean) {
+            bool const v = r.get_below(1, 2) != 0;
+            if (p.apply) target = v;
+        } else if constexpr (k == member_kind::enumeration) {
+            using R = std::underlying_type_t<U>;
+            auto const v = static_cast<R>(static_cast<std::make_unsigned_t<R>>(r.get(sizeof(U))));
+            if (p.apply) target = static_cast<U>(v);
+        } else if constexpr (k == member_kind::signed_integer || k == member_kind::unsigned_integer) {
+            // Unsigned to signed is modular (C++20): every saved value comes back exactly.
+            auto const v = static_cast<U>(static_cast<std::make_unsigned_t<U>>(r.get(sizeof(U))));
+            if (p.apply) target = v;
+        } else if constexpr (std::is_same_v<U, float>) {
+            auto const v = std::bit_cast<float>(static_cast<std::uint32_t>(r.get(4)));
+            if (p.apply) target = v;
+        } else if constexpr (std::is_same_v<U, double>) {
+            auto const v = std::bit_cast<double>(r.get(8));
+            if (p.apply) target = v;
+        } else if constexpr (k == member_kind::time) {
+            typename U::rep v{};
+            pass const into_copy{true, {}, {}};
+            get_visitor copy{r, into_copy};
+            copy.leaf(v, no_name{});
+            if (p.apply) target = U{v};
+        }
+    }
+};
+
+template <class T>
+void get(byte_reader& r, T& target, pass const& p) {
+    get_visitor v{r, p};
+    walk(target, v);
+}
+
+// Reads an event slot; the event, or std::monostate for an empty slot. A place past the chart's
+// events, or one of an event that never waits (bsc::action_failed), is refused.
+template <class Events, class Item>
+Item get_event(byte_reader& r) {
+    using slot = event_slot<Events>;
+    std::size_t const end = r.position() + slot::size;
+    std::size_t const at = r.position();
+    auto const index = static_cast<std::size_t>(r.get_below(slot::index_bytes, std::variant_size_v<Item>));
+    Item item{};
+    visit_index<static_cast<int>(std::variant_size_v<Item>)>(static_cast<int>(index), [&](auto i) {
+        using E = std::variant_alternative_t<decltype(i)::value, Item>;
+        if constexpr (std::is_same_v<E, action_failed>) {
+            r.refuse(byte_reader::fault::invalid_value, at);
+        } else if constexpr (!std::is_same_v<E, std::monostate>) {
+            if constexpr (std::is_default_constructible_v<E>) {
+                E e{};
+                get(r, e, pass{true, {}, {}});
+                item.template emplace<decltype(i)::value>(e);
+            } else {
+                r.refuse(byte_reader::fault::invalid_value, at);
+            }
+        }
+    });
+    while (r.position() < end) (void)r.get(1);
+    return item;
+}
+
+template <class Machine>
+void get_pending(byte_reader& r, Machine& m, pass const& p, duration shift) {
+    using pending = pending_layout<Machine>;
+    using events = typename machine_model<Machine>::events;
+    if constexpr (pending::defers) {
+        auto& deferred = access::deferred(m);
+        using item_type = typename std::remove_cvref_t<decltype(deferred)>::value_type;
+        bool const retry = r.get_below(1, 2) != 0;
+        std::size_t const at = r.position();
+        auto const count = static_cast<std::size_t>(r.get_below(2, pending::deferred_capacity + 1));
+        std::array<item_type, pending::deferred_capacity> items{};
+        for (std::size_t i = 0; i < pending::deferred_capacity; ++i) {
+            items[i] = get_event<events, item_type>(r);
+            if ((i < count) == (items[i].index() == 0)) r.refuse(byte_reader::fault::invalid_value, at);
+        }
+        if (p.apply) {
+            deferred.clear();
+            deferred.clear_overflow();
+            for (std::size_t i = 0; i < count; ++i) (void)deferred.push_item(items[i]);
+            access::set_deferral_pending_retry(m, retry);
+        }
+    }
+    if constexpr (pending::delays) {
+        auto& queue = access::queue(m);
+        using item_type = typename std::remove_cvref_t<decltype(queue)>::value_type;
+        auto const clock = duration{static_cast<duration::rep>(r.get(8))};
+        std::size_t const at = r.position();
+        auto const count = static_cast<std::size_t>(r.get_below(2, pending::delayed_capacity + 1));
+        struct scheduled {
+            duration due;
+            int id;
+            item_type item;
+        };
+        std::array<scheduled, pending::delayed_capacity> items{};
+        for (std::size_t i = 0; i < pending::delayed_capacity; ++i) {
+            items[i].due = duration{static_cast<duration::rep>(r.get(8))};
+            items[i].id = static_cast<int>(static_cast<std::uint32_t>(r.get(4)));
+            items[i].item = get_event<events, item_type>(r);
+            if ((i < count) == (items[i].item.index() == 0)) r.refuse(byte_reader::fault::invalid_value, at);
+        }
+        if (p.apply) {
+            queue.clear_scheduled();
+            queue.set_clock(shifted(clock, shift));
+            for (std::size_t i = 0; i < count; ++i)
+                (void)queue.put_scheduled(shifted(items[i].due, shift), items[i].id, items[i].item);
+        }
+    }
+}
+
+template <class Machine>
+void get_machine(byte_reader& r, Machine& m, pass const& p) {
+    using model = machine_model<Machine>;
+    constexpr auto& tree = model::tree;
+    // The children of the composite that owns each configuration byte.
+    constexpr auto children_by_slot = [] {
+        std::array<int, static_cast<std::size_t>(tree.slots)> children{};
+        for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s)
+            if (tree.slot[s] >= 0) children[static_cast<std::size_t>(tree.slot[s])] = tree.child_count[s];
+        return children;
+    }();
+    if (access::running(m)) r.refuse(byte_reader::fault::machine_running, r.position());  // one held in the context
+    auto config = access::configuration(m);
+    for (std::size_t k = 0; k < children_by_slot.size(); ++k)
+        config.active[k] = static_cast<std::uint8_t>(r.get_below(1, static_cast<std::uint64_t>(children_by_slot[k])));
+    auto const clock = duration{static_cast<duration::rep>(r.get(8))};
+    bool const started = r.get_below(1, 2) != 0;
+    auto armed = access::armed(m);
+    for (auto& a : armed) a = duration{static_cast<duration::rep>(r.get(8))};
+    auto const last = static_cast<outcome>(r.get_below(1, outcome_count));
+    // resume_at: this machine's clock continues at the given time, and what it keeps moves with
+    // it. A machine whose clock has not started keeps no time of the caller's: nothing moves.
+    pass const own{p.apply, p.resume, started && p.resume ? difference(*p.resume, clock) : duration{}};
+    get_pending(r, m, p, own.shift);
+    get(r, m.context(), own);
+    if (!p.apply) return;
+    access::configuration(m) = config;
+    access::set_clock(m, shifted(clock, own.shift), started);
+    for (std::size_t i = 0; i < armed.size(); ++i) access::armed(m)[i] = shifted(armed[i], own.shift);
+    access::set_last_outcome(m, last);
+    access::forget_failure(m);  // the exception of a last outcome `failed` is not saved
+    access::queue(m).clear();     // raised events: none between runs
+    access::queue(m).clear_overflow();
+}
+
+}  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_STATE_BYTES_HPP
+// end include/bsc/detail/state_bytes.hpp
 
 namespace bsc::net::wire {
 
-inline constexpr std::uint8_t format_version = 1;
+inline constexpr std::uint8_t format_version = 2;
 inline constexpr std::size_t header_size = 21;
 
 enum class kind : std::uint8_t { value = 'V', progress = 'P', will = 'W' };
@@ -374,7 +982,7 @@ struct header {
     std::uint64_t fingerprint = 0;
 };
 
-inline void put_header(detail::retain::writer& w, kind what, std::int64_t step, std::uint64_t fingerprint) {
+inline void put_header(detail::byte_writer& w, kind what, std::int64_t step, std::uint64_t fingerprint) {
     w.put('b', 1);
     w.put('s', 1);
     w.put('c', 1);
@@ -392,17 +1000,17 @@ inline std::optional<header> read_header(std::span<std::byte const> bytes) {
     auto const what = static_cast<kind>(p[3]);
     if (what != kind::value && what != kind::progress && what != kind::will) return std::nullopt;
     if (static_cast<std::uint8_t>(p[4]) != format_version) return std::nullopt;
-    return header{what, static_cast<std::int64_t>(detail::retain::read_le(p + 5, 8)),
-                  detail::retain::read_le(p + 13, 8)};
+    return header{what, static_cast<std::int64_t>(detail::read_le(p + 5, 8)),
+                  detail::read_le(p + 13, 8)};
 }
 
 /// The fingerprint of actor `Machine`'s output channel `Channel`: its chart, its name, its value's type.
 template <class Machine, auto Channel>
 constexpr std::uint64_t value_fingerprint() {
     using channel = std::remove_cvref_t<decltype(std::declval<typename Machine::context_type&>().*Channel)>;
-    detail::retain::fingerprint f{detail::retain::chart_fingerprint<Machine>()};
+    detail::fingerprint f{detail::chart_fingerprint<Machine>()};
     f.add(detail::member_name<Channel>());
-    detail::retain::describe<detail::channel_value<channel>>(f);
+    f.add(detail::describe<detail::channel_value<channel>>());
     return f.value;
 }
 
@@ -410,7 +1018,7 @@ constexpr std::uint64_t value_fingerprint() {
 inline std::vector<std::byte> encode(kind what, std::int64_t step, std::uint64_t fingerprint,
                                      std::span<std::uint8_t const> actors = {}) {
     std::vector<std::byte> out(header_size + actors.size());
-    detail::retain::writer w{out.data()};
+    detail::byte_writer w{out.data()};
     put_header(w, what, step, fingerprint);
     for (auto a : actors) w.put(a, 1);
     return out;
@@ -419,10 +1027,10 @@ inline std::vector<std::byte> encode(kind what, std::int64_t step, std::uint64_t
 /// A value message.
 template <class T>
 std::vector<std::byte> encode_value(std::int64_t step, std::uint64_t fingerprint, T const& value) {
-    std::vector<std::byte> out(header_size + detail::retain::size_of<T>());
-    detail::retain::writer w{out.data()};
+    std::vector<std::byte> out(header_size + detail::size_of<T>());
+    detail::byte_writer w{out.data()};
     put_header(w, kind::value, step, fingerprint);
-    detail::retain::put(w, value);
+    detail::put(w, value);
     return out;
 }
 
@@ -430,11 +1038,11 @@ std::vector<std::byte> encode_value(std::int64_t step, std::uint64_t fingerprint
 /// its values is wrong.
 template <class T>
 bool decode_value(std::span<std::byte const> bytes, T& out) {
-    if (bytes.size() != header_size + detail::retain::size_of<T>()) return false;
-    detail::retain::reader check{bytes.data(), header_size, bytes.size()};
+    if (bytes.size() != header_size + detail::size_of<T>()) return false;
+    detail::byte_reader check{bytes.data(), header_size, bytes.size()};
     T value = out;
-    detail::retain::get(check, value, detail::retain::pass{true, std::nullopt, {}});
-    if (check.result().error != restore_error::none) return false;
+    detail::get(check, value, detail::pass{true, std::nullopt, {}});
+    if (check.failure() != detail::byte_reader::fault::none) return false;
     out = value;
     return true;
 }
@@ -442,6 +1050,7 @@ bool decode_value(std::span<std::byte const> bytes, T& out) {
 }  // namespace bsc::net::wire
 #endif  // BSC_SINGLE_INCLUDE_BSC_NET_WIRE_HPP
 // end include/bsc/net/wire.hpp
+#include "retain.hpp"
 
 namespace bsc::net {
 
@@ -699,10 +1308,10 @@ private:
     }
 
     static constexpr std::uint64_t system_fingerprint() {
-        bsc::detail::retain::fingerprint f;
+        bsc::detail::fingerprint f;
         [&]<std::size_t... A>(std::index_sequence<A...>) {
             ((f.add(plan::names[A]),
-              f.add(bsc::detail::retain::chart_fingerprint<typename plan::template machine_at<A>>())),
+              f.add(bsc::detail::chart_fingerprint<typename plan::template machine_at<A>>())),
              ...);
         }(std::make_index_sequence<N>{});
         // The wiring too: the same charts linked otherwise are another system.
@@ -717,7 +1326,7 @@ private:
 
     template <std::size_t A>
     static constexpr std::uint64_t actor_fingerprint() {
-        return bsc::detail::retain::chart_fingerprint<typename plan::template machine_at<A>>();
+        return bsc::detail::chart_fingerprint<typename plan::template machine_at<A>>();
     }
     static constexpr std::array<std::uint64_t, N> actor_fingerprints = []<std::size_t... A>(std::index_sequence<A...>) {
         return std::array<std::uint64_t, N>{actor_fingerprint<A>()...};
@@ -781,8 +1390,8 @@ private:
         auto const* bytes = reinterpret_cast<std::byte const*>(raw.data());
         // "bscN", the step, a CRC-32 of the step: bsc::save's own checksum covers the rest.
         bool const whole = raw.size() >= state_header && std::equal(raw.begin(), raw.begin() + 4, "bscN") &&
-                           bsc::detail::retain::read_le(bytes + 12, 4) == bsc::detail::retain::crc32(bytes + 4, 8);
-        auto const step = whole ? static_cast<std::int64_t>(bsc::detail::retain::read_le(bytes + 4, 8)) : 0;
+                           bsc::detail::read_le(bytes + 12, 4) == bsc::detail::crc32(bytes + 4, 8);
+        auto const step = whole ? static_cast<std::int64_t>(bsc::detail::read_le(bytes + 4, 8)) : 0;
         if (!whole || step < -1 || step > max_step)
             throw std::runtime_error("bsc::net::node: " + file.string() + " is not a saved state of a node's actor");
         std::span<std::byte const> const saved{bytes + state_header, raw.size() - state_header};
@@ -800,10 +1409,10 @@ private:
     void save_actor(std::size_t a) {
         if (options_.state_dir.empty()) return;
         std::vector<std::byte> bytes(state_header);
-        bsc::detail::retain::writer w{bytes.data()};
+        bsc::detail::byte_writer w{bytes.data()};
         for (char c : {'b', 's', 'c', 'N'}) w.put(static_cast<unsigned char>(c), 1);
         w.put(static_cast<std::uint64_t>(peers_[a].completed), 8);
-        w.put(bsc::detail::retain::crc32(bytes.data() + 4, 8), 4);
+        w.put(bsc::detail::crc32(bytes.data() + 4, 8), 4);
         for_actor(a, [&](auto A) {
             auto const saved = bsc::save(system_.actors.*plan::template step_at<A>);
             bytes.insert(bytes.end(), saved.begin(), saved.end());

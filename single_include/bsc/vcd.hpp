@@ -23,7 +23,8 @@
 //                    `elapsed` in ns) and every plain variable of type bool (wire), signed
 //                    integer (integer), unsigned integer or enum (reg) or floating point (real);
 //                    aggregates as scopes, std::array elements as name_0, name_1, ...
-//                    Members of other types (strings, pointers, containers) are not recorded.
+//                    Members of other types (strings, handles) are not recorded, nor transient
+//                    members (bsc::transient).
 // Names keep their spelling but for whitespace, which becomes '_'. Numbers are written the same
 // whatever the stream's locale. The recorder's destruction writes the last sample's time.
 //
@@ -42,116 +43,6 @@
 #include <utility>
 #include <vector>
 
-// begin include/bsc/detail/member_names.hpp
-#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_NAMES_HPP
-#define BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_NAMES_HPP
-// The names of an aggregate's members as its definition spells them, at compile time, without
-// macros: the address of a member of an object that is declared but never defined is a constant
-// that may be a template argument, and both supported compilers spell that argument in
-// __PRETTY_FUNCTION__ ending with the member's name (GCC 12: "{(& object<T>.T::speed)}",
-// Clang 14: "{&object.speed}"). Used by the opt-in parts that show or store a context by name
-// (the VCD recorder, the retentive state's layout fingerprint); nothing else pays for it.
-
-#include <array>
-#include <cstddef>
-#include <string_view>
-#include <tuple>
-#include <utility>
-
-
-namespace bsc::detail {
-
-// Holds the address as a class-type template argument: Clang 14 accepts a pointer to a
-// subobject there, but not as a template argument of pointer type.
-template <class T>
-struct member_address {
-    T const* address;
-};
-
-#if defined(__clang__)
-#pragma clang diagnostic push
-#pragma clang diagnostic ignored "-Wundefined-var-template"
-#pragma clang diagnostic ignored "-Wundefined-internal"
-#endif
-// Never defined: only its members' addresses are taken, in constant expressions. T is wrapped so
-// that a T without linkage (in an anonymous namespace, or local to a function) may be named: the
-// wrapper's linkage is the variable's, and Clang refuses an undefined variable of a type without.
-template <class T>
-struct declared_object {
-    T value;
-};
-template <class T>
-extern declared_object<T> const declared_only;
-
-template <auto Address>
-constexpr char const* spelled_address() {
-    return __PRETTY_FUNCTION__;
-}
-
-// Identifiers may hold letters beyond ASCII, spelled in UTF-8: every byte of those is >= 0x80.
-constexpr bool is_identifier_char(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-           static_cast<unsigned char>(c) >= 0x80;
-}
-
-// The last identifier of a signature: the member's name, before the closing brackets.
-constexpr std::string_view last_identifier(std::string_view s) {
-    std::size_t end = s.size();
-    while (end > 0 && !is_identifier_char(s[end - 1])) --end;
-    std::size_t begin = end;
-    while (begin > 0 && is_identifier_char(s[begin - 1])) --begin;
-    return s.substr(begin, end - begin);
-}
-
-template <class T, std::size_t I>
-constexpr std::string_view member_name_of() {
-    constexpr auto& member = std::get<I>(tie_fields(declared_only<T>.value));
-    using member_type = std::remove_cvref_t<decltype(member)>;
-    return last_identifier(spelled_address<member_address<member_type>{&member}>());
-}
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
-
-/// The names of T's members, in declaration order. Requirements: T is an aggregate that
-/// detail::tie_fields supports.
-template <class T>
-inline constexpr auto member_names = []<std::size_t... I>(std::index_sequence<I...>) {
-    return std::array<std::string_view, sizeof...(I)>{member_name_of<T, I>()...};
-}(std::make_index_sequence<std::tuple_size_v<decltype(tie_fields(std::declval<T&>()))>>{});
-
-template <class Class, class Member>
-Class class_of_member(Member Class::*);
-
-#if defined(__clang__)
-#pragma clang diagnostic push
-#pragma clang diagnostic ignored "-Wundefined-var-template"
-#pragma clang diagnostic ignored "-Wundefined-internal"
-#endif
-/// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
-/// `&axis::speed`. Found by comparing addresses: GCC 12 does not accept the address that `.*`
-/// yields as a template argument, so the member's index among the aggregate's is looked up.
-template <auto Member>
-constexpr std::string_view member_name() {
-    using Class = decltype(class_of_member(Member));
-    constexpr std::size_t index = []<std::size_t... I>(std::index_sequence<I...>) {
-        auto const& object = declared_only<Class>.value;
-        void const* const target = &(object.*Member);
-        auto const fields = tie_fields(object);
-        std::size_t found = sizeof...(I);
-        ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
-        return found;
-    }(std::make_index_sequence<member_names<Class>.size()>{});
-    static_assert(index < member_names<Class>.size(), "the pointer designates no member of the aggregate");
-    return member_names<Class>[index];
-}
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
-
-}  // namespace bsc::detail
-#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_NAMES_HPP
-// end include/bsc/detail/member_names.hpp
 
 namespace bsc::detail::vcd {
 
@@ -191,7 +82,7 @@ value scalar_value(T v) {
 }
 
 template <class T>
-constexpr var_kind kind_of() {
+constexpr var_kind var_kind_of() {
     if constexpr (std::is_same_v<T, bool>)
         return var_kind::wire;
     else if constexpr (std::is_floating_point_v<T>)
@@ -212,55 +103,46 @@ constexpr unsigned width_of() {
         return 8 * sizeof(T);
 }
 
-// What the recorder shows: a channel of a scalar type, a timer, a plain scalar variable. The
-// context is searched for them as the machine searches it for channels (context_data.hpp).
+// What the recorder shows: a channel of a scalar type, a timer, a plain scalar variable, found
+// by the member layer (detail/members.hpp) as the machine finds its channels.
 template <class T>
-constexpr bool is_recorded_channel() {
+constexpr bool is_recorded() {
     if constexpr (is_channel<T>)
         return is_scalar_variable<channel_value<T>>;
     else
-        return false;
-}
-struct recorded_points {
-    template <class T>
-    static constexpr bool is_point = is_recorded_channel<T>() || is_timer<T> || is_scalar_variable<T>;
-};
-template <class T>
-constexpr bool recorded() {
-    return holds_points<recorded_points, T>();
+        return is_timer<T> || is_scalar_variable<T>;
 }
 
 // Walks a context's recorded members, calling the visitor's scope(name), upscope() and
-// var(kind, width, name, value), in declaration order.
-template <class T, class Visitor>
-void visit_member(T const& member, std::string_view name, Visitor& v) {
-    if constexpr (!recorded<T>()) {
-        return;
-    } else if constexpr (is_channel<T>) {
-        using V = channel_value<T>;
-        v.var(kind_of<V>(), width_of<V>(), name, scalar_value(member.get()));
-    } else if constexpr (is_timer<T>) {
-        v.scope(name);
-        v.var(var_kind::wire, 1, "running", scalar_value(member.running()));
-        v.var(var_kind::wire, 1, "expired", scalar_value(member.expired()));
-        v.var(var_kind::integer, 64, "elapsed", scalar_value(static_cast<std::int64_t>(member.elapsed().count())));
-        v.upscope();
-    } else if constexpr (is_scalar_variable<T>) {
-        v.var(kind_of<T>(), width_of<T>(), name, scalar_value(member));
-    } else if constexpr (is_std_array<T>) {
-        std::size_t i = 0;
-        for (auto const& element : member) {
-            std::string const element_name = std::string{name} + "_" + std::to_string(i++);
-            visit_member(element, std::string_view{element_name}, v);
-        }
-    } else {
-        v.scope(name);
-        auto const& names = member_names<T>;
-        std::size_t i = 0;
-        for_each_field(member, [&](auto const& field) { visit_member(field, names[i++], v); });
-        v.upscope();
+// var(kind, width, name, value), in declaration order: a struct is a scope, a timer a scope of
+// three variables, an array's elements are name_0, name_1, ...
+template <class Visitor>
+struct recorded_members {
+    static constexpr bool named = true;
+    template <class T>
+    static constexpr bool visits = is_recorded<T>();
+    Visitor& v;
+    std::string element_name(std::string_view name, std::size_t i) const {
+        return std::string{name} + "_" + std::to_string(i);
     }
-}
+    void enter(std::string_view name) { v.scope(name); }
+    void leave() { v.upscope(); }
+    template <class T>
+    void leaf(T const& member, std::string_view name) {
+        if constexpr (is_channel<T>) {
+            using V = channel_value<T>;
+            v.var(var_kind_of<V>(), width_of<V>(), name, scalar_value(member.get()));
+        } else if constexpr (is_timer<T>) {
+            v.scope(name);
+            v.var(var_kind::wire, 1, "running", scalar_value(member.running()));
+            v.var(var_kind::wire, 1, "expired", scalar_value(member.expired()));
+            v.var(var_kind::integer, 64, "elapsed", scalar_value(static_cast<std::int64_t>(member.elapsed().count())));
+            v.upscope();
+        } else {
+            v.var(var_kind_of<T>(), width_of<T>(), name, scalar_value(member));
+        }
+    }
+};
 
 // Identifiers of variables: the printable characters '!' to '~' but for '#' and '$' (legal,
 // but they start a time and a keyword, which trips simple readers), in base 92.
@@ -442,14 +324,10 @@ private:
             v.var(detail::vcd::var_kind::wire, 1, state_names[s], detail::vcd::scalar_value(bool{active[s]}));
         v.upscope();
         v.upscope();
-        using context_type = typename Machine::context_type;
-        if constexpr (detail::vcd::recorded<context_type>()) {
-            auto const& ctx = machine_.context();
-            v.scope("data");
-            auto const& names = detail::member_names<context_type>;
-            std::size_t i = 0;
-            detail::for_each_field(ctx, [&](auto const& field) { detail::vcd::visit_member(field, names[i++], v); });
-            v.upscope();
+        using recorded = detail::vcd::recorded_members<Visitor>;
+        if constexpr (detail::reaches<recorded, typename Machine::context_type>()) {
+            recorded data{v};
+            detail::walk(machine_.context(), data, std::string_view{"data"});
         }
     }
 

@@ -9,10 +9,12 @@
 // strings and vectors, which the machines themselves never need.
 
 // begin include/bsc/verify/codec.hpp
-// Fixed-size byte encodings of explored states: a machine's configuration bytes, its context
-// member by member (no hand-written code for plain aggregates), and time made relative to the
-// machine's clock and counted in cycles, capped where more time changes nothing. Two states
-// with equal encodings behave the same.
+// Fixed-size bit encodings of explored states, walked by the member layer (detail/members.hpp):
+// a machine's configuration bytes, its timeouts, the events it keeps pending (deferred, and
+// delayed with their ids and due times), its context member by member; time made relative to
+// the machine's clock and counted in cycles, capped where more time changes nothing. Two states
+// with equal encodings behave the same. Transient members (bsc::transient) are not encoded:
+// decoded states keep the initial value of such members.
 
 #include <algorithm>
 #include <array>
@@ -23,25 +25,751 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
-#include <tuple>
+#include <string_view>
 #include <type_traits>
 #include <utility>
+#include <variant>
+#include <vector>
 
+// begin include/bsc/detail/key_field.hpp
+// A named part of an explored state's key: where the explorer's codec put a member of a context
+// (at any depth), a machine's configuration, timeouts or pending events. What the explorer reports
+// when a bound stops it: which parts took the most values.
 
-namespace bsc::verify {
-/// Specialize as true for a context member type that does not influence behaviour (a log, a
-/// display, statistics): the explorer neither stores nor compares it, so it cannot split or
-/// multiply states. Decoded states keep the initial value of such members.
-template <class T>
-inline constexpr bool unexplored = false;
-}  // namespace bsc::verify
+#include <cstddef>
+#include <string>
 
 namespace bsc::detail {
 
-template <class T>
-constexpr bool is_aggregate_class() {
-    return std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_base_of_v<bsc::detail::channel_base, T>;
+struct encoded_field {
+    std::string name;
+    std::size_t first_bit = 0;
+    std::size_t bits = 0;
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/key_field.hpp
+// begin include/bsc/detail/state_bytes.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_STATE_BYTES_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_STATE_BYTES_HPP
+// A machine's state as bytes, and the values of its context: what bsc::save writes and
+// bsc::restore reads (bsc/retain.hpp), and the values bsc::net sends (net/wire.hpp). Walked by
+// the member layer (detail/members.hpp), so that every kind of member is encoded in one place:
+//
+//   a machine   one byte per composite (its active or remembered child: the configuration and
+//               the history), the clock (8), whether a cycle has run (1), each timeout's start
+//               (8 each), the last outcome (1); for a chart that defers: whether the deferred
+//               events wait for a retry (1), their number (2) and each of them (an event slot);
+//               for a chart that sends delayed events: the queue's clock (8), the number pending
+//               (2) and each of them in the order sent: due time (8), id (4), event slot; then
+//               the context
+//   an event    slot: the event's place among the chart's events plus one (0: none) in 1 byte
+//               (2 above 255 events), then its members, padded to the largest event's size
+//   a channel   its pending and its current value
+//   a timer     limit, start, elapsed time (8 each), phase (1), expired (1)
+//   a scalar    bool 1 byte; integers, enums, float, double, durations in their size
+//   std::array, aggregate, bsc::fields type: the elements or members in order
+// All numbers little-endian. Transient members (bsc::transient) take no bytes.
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <type_traits>
+#include <variant>
+
+// begin include/bsc/detail/bytes.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_BYTES_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_BYTES_HPP
+// Bytes that leave the program: little-endian numbers written and read at a position, the FNV-1a
+// fingerprint of what they mean, and the CRC-32 that guards them. Shared by retentive state
+// (bsc/retain.hpp) and the messages of bsc::net (net/wire.hpp).
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace bsc::detail {
+
+// FNV-1a, 64 bits: fingerprints of a chart and a layout, computed at compile time.
+struct fingerprint {
+    std::uint64_t value = 14695981039346656037ull;
+    constexpr void add(std::uint64_t v) {
+        for (int i = 0; i < 8; ++i, v >>= 8) value = (value ^ (v & 0xffu)) * 1099511628211ull;
+    }
+    constexpr void add(std::string_view s) {
+        add(s.size());
+        for (char c : s) value = (value ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    }
+};
+
+// CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320), bit by bit: states are small.
+constexpr std::uint32_t crc32(std::byte const* data, std::size_t n) {
+    std::uint32_t crc = 0xffffffffu;
+    for (std::size_t i = 0; i < n; ++i) {
+        crc ^= static_cast<std::uint32_t>(data[i]);
+        for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
 }
+
+// A little-endian number of `bytes` (at most 8) bytes.
+inline std::uint64_t read_le(std::byte const* p, std::size_t bytes) {
+    std::uint64_t v = 0;
+    for (std::size_t i = 0; i < bytes; ++i) v |= static_cast<std::uint64_t>(p[i]) << (8 * i);
+    return v;
+}
+
+class byte_writer {
+public:
+    explicit byte_writer(std::byte* out) : out_(out) {}
+    void put(std::uint64_t v, std::size_t bytes) {
+        for (std::size_t i = 0; i < bytes; ++i, v >>= 8) out_[pos_++] = static_cast<std::byte>(v & 0xffu);
+    }
+    std::size_t position() const { return pos_; }
+
+private:
+    std::byte* out_;
+    std::size_t pos_ = 0;
+};
+
+// Reads what byte_writer wrote, within [begin, end); the first value out of range (or past the
+// end) is remembered with its position, and reading goes on with zeros.
+class byte_reader {
+public:
+    enum class fault : std::uint8_t { none, truncated, invalid_value, machine_running };
+
+    byte_reader(std::byte const* in, std::size_t begin, std::size_t end) : in_(in), pos_(begin), end_(end) {}
+    std::uint64_t get(std::size_t bytes) {
+        if (pos_ + bytes > end_) {
+            refuse(fault::truncated, end_);
+            return 0;
+        }
+        std::uint64_t const v = read_le(in_ + pos_, bytes);
+        pos_ += bytes;
+        return v;
+    }
+    // A value that must be below `limit`.
+    std::uint64_t get_below(std::size_t bytes, std::uint64_t limit) {
+        std::size_t const at = pos_;
+        std::uint64_t const v = get(bytes);
+        if (v >= limit) refuse(fault::invalid_value, at);
+        return v < limit ? v : 0;
+    }
+    void refuse(fault f, std::size_t at) {
+        if (fault_ == fault::none) {
+            fault_ = f;
+            at_ = at;
+        }
+    }
+    fault failure() const { return fault_; }
+    std::size_t failed_at() const { return at_; }
+    std::size_t position() const { return pos_; }
+
+private:
+    std::byte const* in_;
+    std::size_t pos_;
+    std::size_t end_;
+    fault fault_ = fault::none;
+    std::size_t at_ = 0;
+};
+
+}  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_BYTES_HPP
+// end include/bsc/detail/bytes.hpp
+
+namespace bsc::detail {
+
+inline constexpr std::size_t outcome_count = static_cast<std::size_t>(outcome::unknown_event) + 1;
+
+template <class Machine>
+using machine_model = chart_model<typename Machine::chart_type>;
+
+// ---- what a member is to the bytes -----------------------------------------------------------------
+
+// Whether a leaf has a fixed encoding (else the retentive state refuses it).
+template <class T>
+constexpr bool encodable_leaf() {
+    using U = std::remove_cv_t<T>;
+    constexpr member_kind k = kind_of<U>();
+    if constexpr (is_transient<U>)
+        return true;
+    else if constexpr (std::is_const_v<T>)
+        return false;  // cannot be restored
+    else if constexpr (k == member_kind::enumeration)
+        return has_fixed_underlying_type<U>;
+    else if constexpr (k == member_kind::time)
+        return kind_of<typename U::rep>() != member_kind::opaque;
+    else
+        return k != member_kind::opaque && k != member_kind::unwalkable;
+}
+
+// Whether every leaf of T has one, and none is a reference (what lies behind one is not the
+// machine's); no error is reported (the pending events' check names the event).
+struct encodable_folder {
+    using result = bool;
+    template <class T>
+    constexpr bool leaf() const {
+        if constexpr (kind_of<std::remove_cv_t<T>>() == member_kind::channel)
+            return encodable_leaf<T>() && fold_type<encodable_folder, channel_value<std::remove_cv_t<T>>>(*this);
+        else
+            return encodable_leaf<T>();
+    }
+    template <class T>
+    constexpr bool array(bool element) const {
+        return element;
+    }
+    template <class T, std::size_t N>
+    constexpr bool record(std::array<bool, N> const& members) const {
+        if constexpr (!described_by_fields<T>)
+            if (has_reference_field<T>) return false;
+        return std::all_of(members.begin(), members.end(), [](bool b) { return b; });
+    }
+};
+template <class T>
+inline constexpr bool encodable = fold_type<encodable_folder, T>(encodable_folder{});
+
+template <class Machine>
+constexpr std::size_t machine_size();
+
+// The bytes of a value of T; a member that has none is reported (member_not_retainable).
+struct size_folder : summing_fold<size_folder> {
+    template <class T, member_kind k>
+    constexpr std::size_t share() const {
+        using U = std::remove_cv_t<T>;
+        if constexpr (!encodable_leaf<T>()) {
+            detail::report<error::member_not_retainable<T>>();
+            return 0;
+        } else if constexpr (k == member_kind::machine) {
+            return machine_size<U>();
+        } else if constexpr (k == member_kind::channel) {
+            return 2 * fold<size_folder, channel_value<U>>(*this);
+        } else if constexpr (k == member_kind::timer) {
+            return 3 * 8 + 2;
+        } else if constexpr (k == member_kind::boolean) {
+            return 1;
+        } else if constexpr (k == member_kind::time) {
+            return sizeof(typename U::rep);
+        } else {
+            return sizeof(U);
+        }
+    }
+    template <class T, std::size_t N>
+    constexpr std::size_t record(std::array<std::size_t, N> const& members) const {
+        if constexpr (!described_by_fields<T>)
+            if constexpr (has_reference_field<T>) detail::report<error::member_not_retainable<T>>();
+        return summing_fold<size_folder>::record<T>(members);
+    }
+};
+template <class T>
+constexpr std::size_t size_of() {
+    return fold<size_folder, T>(size_folder{});
+}
+
+// ---- the pending events of a machine -----------------------------------------------------------------
+
+// The events that can wait in a machine between calls: every event of the chart but
+// bsc::action_failed (which carries an exception, and which no row defers or delays).
+template <class Chart, class E>
+constexpr bool pending_event_encodable() {
+    if constexpr (std::is_same_v<E, action_failed> || encodable<E>)
+        return true;
+    else
+        return detail::report<error::pending_events_not_encoded<Chart, E>>();
+}
+template <class Chart, class... Es>
+constexpr bool pending_events_encodable(type_list<Es...>) {
+    return ((pending_event_encodable<Chart, Es>() ? 0 : 1) + ... + 0) == 0;
+}
+
+template <class Events>
+struct event_slot;
+template <class... Es>
+struct event_slot<type_list<Es...>> {
+    static constexpr std::size_t index_bytes = sizeof...(Es) + 1 <= 256 ? 1 : 2;
+    template <class E>
+    static constexpr std::size_t payload_of() {
+        if constexpr (std::is_same_v<E, action_failed> || !encodable<E>)
+            return 0;  // (the second reported by pending_events_encodable)
+        else
+            return size_of<E>();
+    }
+    static constexpr std::size_t payload = std::max({std::size_t{0}, payload_of<Es>()...});
+    static constexpr std::size_t size = index_bytes + payload;
+};
+
+template <class Machine>
+struct pending_layout {
+    using model = machine_model<Machine>;
+    using slot = event_slot<typename model::events>;
+    static constexpr bool defers = model::has_deferral;
+    static constexpr bool delays = chart_sends_delayed<model>();
+    static constexpr bool check() {
+        if constexpr (defers || delays)
+            return pending_events_encodable<typename Machine::chart_type>(typename model::events{});
+        else
+            return true;
+    }
+    static constexpr bool checked = check();
+    static constexpr std::size_t deferred_capacity = [] {
+        if constexpr (defers)
+            return std::remove_cvref_t<decltype(access::deferred(std::declval<Machine&>()))>::capacity();
+        else
+            return std::size_t{0};
+    }();
+    static constexpr std::size_t delayed_capacity = [] {
+        if constexpr (delays)
+            return std::remove_cvref_t<decltype(access::queue(std::declval<Machine&>()))>::slot_count();
+        else
+            return std::size_t{0};
+    }();
+    static constexpr std::size_t size = [] {
+        if constexpr (defers || delays)
+            return (defers ? 1 + 2 + deferred_capacity * slot::size : 0) +
+                   (delays ? 8 + 2 + delayed_capacity * (8 + 4 + slot::size) : 0);
+        else
+            return std::size_t{0};
+    }();
+};
+
+template <class Machine>
+constexpr std::size_t machine_size() {
+    using layout = chart_layout<machine_model<Machine>>;
+    static_assert(pending_layout<Machine>::checked || true);
+    return static_cast<std::size_t>(machine_model<Machine>::tree.slots) + 8 + 1 +
+           8 * static_cast<std::size_t>(layout::timeout_slots) + 1 + pending_layout<Machine>::size +
+           size_of<typename Machine::context_type>();
+}
+
+// ---- fingerprints --------------------------------------------------------------------------------
+
+// What the saved bytes of a machine mean: its states and where its timeouts are.
+template <class Machine>
+constexpr std::uint64_t chart_fingerprint() {
+    using model = machine_model<Machine>;
+    using layout = chart_layout<model>;
+    constexpr auto const& names = state_names_of<model>;
+    fingerprint f;
+    f.add(static_cast<std::uint64_t>(model::N));
+    for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s) {
+        f.add(names[s]);
+        f.add(static_cast<std::uint64_t>(model::tree.kinds[s]));
+        f.add(static_cast<std::uint64_t>(model::tree.hist[s]));
+        f.add(static_cast<std::uint64_t>(model::tree.parent[s] + 1));
+    }
+    f.add(static_cast<std::uint64_t>(layout::timeout_slots));
+    if constexpr (layout::timeout_slots > 0)
+        for (int s : layout::timeout_slot_state) f.add(static_cast<std::uint64_t>(s));
+    return f.value;
+}
+
+// The same, with each timeout row's place among the rows, its target and its delay (a value of
+// the chart, not of its type): a timeout row added, removed, moved or given another delay changes
+// the meaning of the start times the bytes hold.
+template <class Machine>
+std::uint64_t chart_fingerprint(Machine const& m) {
+    using model = machine_model<Machine>;
+    using layout = chart_layout<model>;
+    fingerprint f{chart_fingerprint<Machine>()};
+    auto const delays = access::row_delays(m);
+    for (std::size_t row = 0; row < delays.size(); ++row) {
+        if (!layout::is_timeout_row(static_cast<int>(row))) continue;
+        f.add(row);
+        f.add(static_cast<std::uint64_t>(model::rows.target[row] + 2));
+        f.add(static_cast<std::uint64_t>(delays[row].count()));
+    }
+    return f.value;
+}
+
+template <class Machine>
+constexpr std::uint64_t layout_fingerprint();
+
+// A type's description: its kind, size and, for composites, their parts (members by name).
+struct describe_folder {
+    using result = std::uint64_t;
+    template <class T>
+    constexpr std::uint64_t leaf() const {
+        using U = std::remove_cv_t<T>;
+        constexpr member_kind k = kind_of<U>();
+        fingerprint f;
+        if constexpr (is_transient<U>) {
+            f.add("transient");
+        } else {
+            f.add(static_cast<std::uint64_t>(k));
+            if constexpr (k == member_kind::machine) {
+                f.add(chart_fingerprint<U>());
+                f.add(layout_fingerprint<U>());
+            } else if constexpr (k == member_kind::channel) {
+                using V = channel_value<U>;
+                f.add(std::is_same_v<U, input<V>> ? 1u : std::is_same_v<U, output<V>> ? 2u : 3u);
+                f.add(fold<describe_folder, V>(*this));
+            } else if constexpr (k == member_kind::enumeration) {
+                f.add(name_of<U>);
+                f.add(sizeof(U));
+                f.add(std::is_signed_v<std::underlying_type_t<U>> ? 1 : 0);
+            } else if constexpr (k == member_kind::time) {
+                f.add(static_cast<std::uint64_t>(U::period::num));
+                f.add(static_cast<std::uint64_t>(U::period::den));
+                f.add(fold<describe_folder, typename U::rep>(*this));
+            } else if constexpr (k != member_kind::timer) {
+                f.add(sizeof(U));
+            }
+        }
+        return f.value;
+    }
+    template <class T>
+    constexpr std::uint64_t array(std::uint64_t element) const {
+        fingerprint f;
+        f.add(static_cast<std::uint64_t>(member_kind::array));
+        f.add(std::tuple_size_v<T>);
+        f.add(element);
+        return f.value;
+    }
+    template <class T, std::size_t N>
+    constexpr std::uint64_t record(std::array<std::uint64_t, N> const& members) const {
+        fingerprint f;
+        f.add(static_cast<std::uint64_t>(member_kind::record));
+        f.add(N);
+        for (std::size_t i = 0; i < N; ++i) {
+            // (A struct with a reference member is refused by size_of: its names are not constants.)
+            if constexpr (described_by_fields<T> || !has_reference_field<T>) f.add(names_of<T>()[i]);
+            f.add(members[i]);
+        }
+        return f.value;
+    }
+};
+
+template <class T>
+constexpr std::uint64_t describe() {
+    return fold<describe_folder, T>(describe_folder{});
+}
+
+template <class Machine>
+constexpr std::uint64_t layout_fingerprint() {
+    fingerprint f;
+    f.add(describe<typename Machine::context_type>());
+    using pending = pending_layout<Machine>;
+    if constexpr (pending::defers || pending::delays) {
+        f.add(pending::deferred_capacity);
+        f.add(pending::delayed_capacity);
+        [&]<class... Es>(type_list<Es...>) {
+            ((f.add(name_of<Es>), f.add(std::is_same_v<Es, action_failed> ? 0 : describe<Es>())), ...);
+        }(typename machine_model<Machine>::events{});
+    }
+    return f.value;
+}
+
+// ---- writing -----------------------------------------------------------------------------------------
+
+template <class Machine>
+void put_machine(byte_writer& w, Machine const& m);
+
+struct put_visitor {
+    byte_writer& w;
+    template <class T>
+    void leaf(T const& value, no_name) {
+        using U = std::remove_cv_t<T>;
+        constexpr member_kind k = kind_of<U>();
+        if constexpr (k == member_kind::machine) {
+            put_machine(w, value);
+        } else if constexpr (k == member_kind::channel) {
+            walk(value.pending(), *this);
+            walk(value.get(), *this);
+        } else if constexpr (k == member_kind::timer) {
+            w.put(static_cast<std::uint64_t>(value.limit().count()), 8);
+            w.put(static_cast<std::uint64_t>(access::timer_started(value).count()), 8);
+            w.put(static_cast<std::uint64_t>(value.elapsed().count()), 8);
+            w.put(access::timer_phase(value), 1);
+            w.put(value.expired() ? 1 : 0, 1);
+        } else if constexpr (k == member_kind::boolean) {
+            w.put(value ? 1 : 0, 1);
+        } else if constexpr (k == member_kind::enumeration) {
+            using R = std::underlying_type_t<U>;
+            w.put(static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<R>>(static_cast<R>(value))), sizeof(U));
+        } else if constexpr (k == member_kind::signed_integer || k == member_kind::unsigned_integer) {
+            w.put(static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<U>>(value)), sizeof(U));
+        } else if constexpr (std::is_same_v<U, float>) {
+            w.put(std::bit_cast<std::uint32_t>(value), 4);
+        } else if constexpr (std::is_same_v<U, double>) {
+            w.put(std::bit_cast<std::uint64_t>(value), 8);
+        } else if constexpr (k == member_kind::time) {
+            leaf(value.count(), no_name{});
+        }
+        // (opaque and unwalkable members are refused by size_of before anything is written)
+    }
+};
+
+template <class T>
+void put(byte_writer& w, T const& value) {
+    put_visitor v{w};
+    walk(value, v);
+}
+
+// An event slot: the event's place plus one, its members, zeros up to the slot's size.
+template <class Events, class Item>
+void put_event(byte_writer& w, Item const& item) {
+    using slot = event_slot<Events>;
+    std::size_t const end = w.position() + slot::size;
+    w.put(item.index(), slot::index_bytes);
+    std::visit(
+        [&]<class E>(E const& e) {
+            if constexpr (!std::is_same_v<E, std::monostate> && !std::is_same_v<E, action_failed>) put(w, e);
+        },
+        item);
+    while (w.position() < end) w.put(0, 1);
+}
+
+template <class Machine>
+void put_pending(byte_writer& w, Machine const& m) {
+    using pending = pending_layout<Machine>;
+    using events = typename machine_model<Machine>::events;
+    auto& machine = const_cast<Machine&>(m);  // access reads through non-const references too
+    if constexpr (pending::defers) {
+        auto const& deferred = access::deferred(machine);
+        w.put(access::deferral_pending_retry(m) ? 1 : 0, 1);
+        w.put(deferred.size(), 2);
+        deferred.for_each_held([&](auto const& item) { put_event<events>(w, item); });
+        for (std::size_t i = deferred.size(); i < pending::deferred_capacity; ++i)
+            for (std::size_t b = 0; b < pending::slot::size; ++b) w.put(0, 1);
+    }
+    if constexpr (pending::delays) {
+        auto const& queue = access::queue(machine);
+        w.put(static_cast<std::uint64_t>(queue.clock().count()), 8);
+        std::size_t count = 0;
+        queue.for_each_scheduled([&](duration, int, auto const&) { ++count; });
+        w.put(count, 2);
+        queue.for_each_scheduled([&](duration due, int id, auto const& item) {
+            w.put(static_cast<std::uint64_t>(due.count()), 8);
+            w.put(static_cast<std::uint32_t>(id), 4);
+            put_event<events>(w, item);
+        });
+        for (std::size_t i = count; i < pending::delayed_capacity; ++i)
+            for (std::size_t b = 0; b < 8 + 4 + pending::slot::size; ++b) w.put(0, 1);
+    }
+}
+
+template <class Machine>
+void put_machine(byte_writer& w, Machine const& m) {
+    auto& machine = const_cast<Machine&>(m);  // access reads through non-const references too
+    for (auto byte : access::configuration(machine).active) w.put(byte, 1);
+    w.put(static_cast<std::uint64_t>(access::clock(m).count()), 8);
+    w.put(access::clock_started(m) ? 1 : 0, 1);
+    for (duration armed : access::armed(machine)) w.put(static_cast<std::uint64_t>(armed.count()), 8);
+    w.put(static_cast<std::uint64_t>(access::last_outcome(m)), 1);
+    put_pending(w, m);
+    put(w, m.context());
+}
+
+// ---- reading -------------------------------------------------------------------------------------------
+
+// What a reading pass does with the values: only check them, or also store them, each machine's
+// clock continuing at `resume` if given.
+struct pass {
+    bool apply = false;
+    std::optional<duration> resume{};
+    duration shift{};  // added to every time the enclosing machine keeps
+};
+
+// to - from, saturated.
+constexpr duration difference(duration to, duration from) {
+    duration::rep d{};
+    if (__builtin_sub_overflow(to.count(), from.count(), &d)) return from.count() < 0 ? duration::max() : duration::min();
+    return duration{d};
+}
+
+template <class Machine>
+void get_machine(byte_reader& r, Machine& m, pass const& p);
+
+struct get_visitor {
+    byte_reader& r;
+    pass const& p;
+    template <class T>
+    void leaf(T& target, no_name) {
+        using U = std::remove_cv_t<T>;
+        constexpr member_kind k = kind_of<U>();
+        if constexpr (k == member_kind::machine) {
+            get_machine(r, target, p);
+        } else if constexpr (k == member_kind::channel) {
+            using V = channel_value<U>;
+            // Read into copies, then store both through the channel's own cycle boundary.
+            V pending = target.pending();
+            V current = target.get();
+            pass const into_copies{true, p.resume, p.shift};
+            get_visitor copies{r, into_copies};
+            walk(pending, copies);
+            walk(current, copies);
+            if (!p.apply) return;
+            target.set(current);
+            access::latch(target);
+            access::commit(target);
+            target.set(pending);
+        } else if constexpr (k == member_kind::timer) {
+            std::size_t const at = r.position();
+            auto const limit = duration{static_cast<duration::rep>(r.get(8))};
+            auto const started = duration{static_cast<duration::rep>(r.get(8))};
+            auto const elapsed = duration{static_cast<duration::rep>(r.get(8))};
+            auto const phase = static_cast<std::uint8_t>(r.get_below(1, 3));
+            bool const expired = r.get_below(1, 2) != 0;
+            // Only what a timer can come to: a limit and an elapsed time not below zero, the flag
+            // only while timing (phase 2), no elapsed time while idle or pending.
+            constexpr std::uint8_t timing = 2;
+            if (limit < duration::zero() || elapsed < duration::zero() || (expired && phase != timing) ||
+                (phase != timing && elapsed != duration::zero()))
+                r.refuse(byte_reader::fault::invalid_value, at);
+            if (!p.apply) return;
+            access::set_timer_limit(target, limit);
+            access::set_timer(target, phase, expired, shifted(started, p.shift), elapsed);
+        } else if constexpr (k == member_kind::boolean) {
+            bool const v = r.get_below(1, 2) != 0;
+            if (p.apply) target = v;
+        } else if constexpr (k == member_kind::enumeration) {
+            using R = std::underlying_type_t<U>;
+            auto const v = static_cast<R>(static_cast<std::make_unsigned_t<R>>(r.get(sizeof(U))));
+            if (p.apply) target = static_cast<U>(v);
+        } else if constexpr (k == member_kind::signed_integer || k == member_kind::unsigned_integer) {
+            // Unsigned to signed is modular (C++20): every saved value comes back exactly.
+            auto const v = static_cast<U>(static_cast<std::make_unsigned_t<U>>(r.get(sizeof(U))));
+            if (p.apply) target = v;
+        } else if constexpr (std::is_same_v<U, float>) {
+            auto const v = std::bit_cast<float>(static_cast<std::uint32_t>(r.get(4)));
+            if (p.apply) target = v;
+        } else if constexpr (std::is_same_v<U, double>) {
+            auto const v = std::bit_cast<double>(r.get(8));
+            if (p.apply) target = v;
+        } else if constexpr (k == member_kind::time) {
+            typename U::rep v{};
+            pass const into_copy{true, {}, {}};
+            get_visitor copy{r, into_copy};
+            copy.leaf(v, no_name{});
+            if (p.apply) target = U{v};
+        }
+    }
+};
+
+template <class T>
+void get(byte_reader& r, T& target, pass const& p) {
+    get_visitor v{r, p};
+    walk(target, v);
+}
+
+// Reads an event slot; the event, or std::monostate for an empty slot. A place past the chart's
+// events, or one of an event that never waits (bsc::action_failed), is refused.
+template <class Events, class Item>
+Item get_event(byte_reader& r) {
+    using slot = event_slot<Events>;
+    std::size_t const end = r.position() + slot::size;
+    std::size_t const at = r.position();
+    auto const index = static_cast<std::size_t>(r.get_below(slot::index_bytes, std::variant_size_v<Item>));
+    Item item{};
+    visit_index<static_cast<int>(std::variant_size_v<Item>)>(static_cast<int>(index), [&](auto i) {
+        using E = std::variant_alternative_t<decltype(i)::value, Item>;
+        if constexpr (std::is_same_v<E, action_failed>) {
+            r.refuse(byte_reader::fault::invalid_value, at);
+        } else if constexpr (!std::is_same_v<E, std::monostate>) {
+            if constexpr (std::is_default_constructible_v<E>) {
+                E e{};
+                get(r, e, pass{true, {}, {}});
+                item.template emplace<decltype(i)::value>(e);
+            } else {
+                r.refuse(byte_reader::fault::invalid_value, at);
+            }
+        }
+    });
+    while (r.position() < end) (void)r.get(1);
+    return item;
+}
+
+template <class Machine>
+void get_pending(byte_reader& r, Machine& m, pass const& p, duration shift) {
+    using pending = pending_layout<Machine>;
+    using events = typename machine_model<Machine>::events;
+    if constexpr (pending::defers) {
+        auto& deferred = access::deferred(m);
+        using item_type = typename std::remove_cvref_t<decltype(deferred)>::value_type;
+        bool const retry = r.get_below(1, 2) != 0;
+        std::size_t const at = r.position();
+        auto const count = static_cast<std::size_t>(r.get_below(2, pending::deferred_capacity + 1));
+        std::array<item_type, pending::deferred_capacity> items{};
+        for (std::size_t i = 0; i < pending::deferred_capacity; ++i) {
+            items[i] = get_event<events, item_type>(r);
+            if ((i < count) == (items[i].index() == 0)) r.refuse(byte_reader::fault::invalid_value, at);
+        }
+        if (p.apply) {
+            deferred.clear();
+            deferred.clear_overflow();
+            for (std::size_t i = 0; i < count; ++i) (void)deferred.push_item(items[i]);
+            access::set_deferral_pending_retry(m, retry);
+        }
+    }
+    if constexpr (pending::delays) {
+        auto& queue = access::queue(m);
+        using item_type = typename std::remove_cvref_t<decltype(queue)>::value_type;
+        auto const clock = duration{static_cast<duration::rep>(r.get(8))};
+        std::size_t const at = r.position();
+        auto const count = static_cast<std::size_t>(r.get_below(2, pending::delayed_capacity + 1));
+        struct scheduled {
+            duration due;
+            int id;
+            item_type item;
+        };
+        std::array<scheduled, pending::delayed_capacity> items{};
+        for (std::size_t i = 0; i < pending::delayed_capacity; ++i) {
+            items[i].due = duration{static_cast<duration::rep>(r.get(8))};
+            items[i].id = static_cast<int>(static_cast<std::uint32_t>(r.get(4)));
+            items[i].item = get_event<events, item_type>(r);
+            if ((i < count) == (items[i].item.index() == 0)) r.refuse(byte_reader::fault::invalid_value, at);
+        }
+        if (p.apply) {
+            queue.clear_scheduled();
+            queue.set_clock(shifted(clock, shift));
+            for (std::size_t i = 0; i < count; ++i)
+                (void)queue.put_scheduled(shifted(items[i].due, shift), items[i].id, items[i].item);
+        }
+    }
+}
+
+template <class Machine>
+void get_machine(byte_reader& r, Machine& m, pass const& p) {
+    using model = machine_model<Machine>;
+    constexpr auto& tree = model::tree;
+    // The children of the composite that owns each configuration byte.
+    constexpr auto children_by_slot = [] {
+        std::array<int, static_cast<std::size_t>(tree.slots)> children{};
+        for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s)
+            if (tree.slot[s] >= 0) children[static_cast<std::size_t>(tree.slot[s])] = tree.child_count[s];
+        return children;
+    }();
+    if (access::running(m)) r.refuse(byte_reader::fault::machine_running, r.position());  // one held in the context
+    auto config = access::configuration(m);
+    for (std::size_t k = 0; k < children_by_slot.size(); ++k)
+        config.active[k] = static_cast<std::uint8_t>(r.get_below(1, static_cast<std::uint64_t>(children_by_slot[k])));
+    auto const clock = duration{static_cast<duration::rep>(r.get(8))};
+    bool const started = r.get_below(1, 2) != 0;
+    auto armed = access::armed(m);
+    for (auto& a : armed) a = duration{static_cast<duration::rep>(r.get(8))};
+    auto const last = static_cast<outcome>(r.get_below(1, outcome_count));
+    // resume_at: this machine's clock continues at the given time, and what it keeps moves with
+    // it. A machine whose clock has not started keeps no time of the caller's: nothing moves.
+    pass const own{p.apply, p.resume, started && p.resume ? difference(*p.resume, clock) : duration{}};
+    get_pending(r, m, p, own.shift);
+    get(r, m.context(), own);
+    if (!p.apply) return;
+    access::configuration(m) = config;
+    access::set_clock(m, shifted(clock, own.shift), started);
+    for (std::size_t i = 0; i < armed.size(); ++i) access::armed(m)[i] = shifted(armed[i], own.shift);
+    access::set_last_outcome(m, last);
+    access::forget_failure(m);  // the exception of a last outcome `failed` is not saved
+    access::queue(m).clear();     // raised events: none between runs
+    access::queue(m).clear_overflow();
+}
+
+}  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_STATE_BYTES_HPP
+// end include/bsc/detail/state_bytes.hpp
+
+namespace bsc::detail {
 
 // Periods since a timer or timeout started are kept in this many bits. The count is capped
 // one period past the longest delay that can still matter, so it never wraps: a model whose
@@ -159,53 +887,80 @@ constexpr auto slot_bits() {
     return bits;
 }
 
-template <class T>
-constexpr std::size_t encoded_bits();
+// The bits of a value of T (a member the explorer cannot encode is reported).
+template <class Machine>
+constexpr std::size_t machine_bits();
 
-template <class Tuple>
-struct fields_bits;
-template <class... F>
-struct fields_bits<std::tuple<F&...>> {
-    static constexpr std::size_t value = (std::size_t{0} + ... + encoded_bits<std::remove_cv_t<F>>());
+struct bits_folder : summing_fold<bits_folder> {
+    template <class T, member_kind k>
+    constexpr std::size_t share() const {
+        using U = std::remove_cv_t<T>;
+        if constexpr (k == member_kind::machine) {
+            return machine_bits<U>();
+        } else if constexpr (k == member_kind::timer) {
+            return 2 + 1 + cycle_bits;  // phase, expired, periods since timing began
+        } else if constexpr (k == member_kind::boolean) {
+            return 1;
+        } else if constexpr (k == member_kind::channel) {
+            return 2 * fold<bits_folder, channel_value<U>>(*this);  // pending and current values
+        } else if constexpr (k == member_kind::unwalkable) {
+            return 0;  // reported by the member layer
+        } else if constexpr (k == member_kind::opaque && !std::is_trivially_copyable_v<U>) {
+            detail::report<error::member_not_explorable<U>>();
+            return 0;
+        } else {
+            return 8 * sizeof(U);
+        }
+    }
 };
-
 
 template <class T>
 constexpr std::size_t encoded_bits() {
-    if constexpr (verify::unexplored<T>) {
-        return 0;
-    } else if constexpr (is_machine<T>) {
-        if constexpr (keeps_pending_events<chart_model<typename T::chart_type>>())
-            detail::report<error::pending_events_not_encoded<typename T::chart_type>>();
-        std::size_t config = 0;
-        for (unsigned b : slot_bits<T>()) config += b;
-        constexpr std::size_t timeouts = std::remove_cvref_t<decltype(access::armed(std::declval<T&>()))>{}.size();
-        return config + encoded_bits<typename T::context_type>() + cycle_bits * timeouts;
-    } else if constexpr (std::is_same_v<T, timer>) {
-        return 2 + 1 + cycle_bits;  // phase, expired, periods since timing began
-    } else if constexpr (std::is_same_v<T, bool>) {
-        return 1;
-    } else if constexpr (is_channel<T>) {
-        return 2 * encoded_bits<channel_value<T>>();  // pending and current values
-    } else if constexpr (is_aggregate_class<T>()) {
-        return fields_bits<decltype(bsc::detail::tie_fields(std::declval<T&>()))>::value;
-    } else {
-        static_assert(std::is_trivially_copyable_v<T>,
-                      "bsc: the explorer encodes scalars, enums, channels, timers, machines and aggregates of "
-                      "them; this member type is none of those");
-        return 8 * sizeof(T);
+    return fold<bits_folder, T>(bits_folder{});
+}
+
+// The bits of an event slot: the event's place plus one (0: none), then the largest event's.
+template <class Events>
+struct event_bits;
+template <class... Es>
+struct event_bits<type_list<Es...>> {
+    static constexpr unsigned index = bits_for(static_cast<int>(sizeof...(Es)) + 1);
+    template <class E>
+    static constexpr std::size_t payload_of() {
+        if constexpr (std::is_same_v<E, action_failed> || !encodable<E>)
+            return 0;
+        else
+            return encoded_bits<E>();
     }
+    static constexpr std::size_t payload = std::max({std::size_t{0}, payload_of<Es>()...});
+    static constexpr std::size_t size = index + payload;
+};
+
+template <class Machine>
+constexpr std::size_t pending_bits() {
+    using pending = pending_layout<Machine>;
+    using slot = event_bits<typename machine_model<Machine>::events>;
+    std::size_t bits = 0;
+    if constexpr (pending::defers)
+        bits += 1 + bits_for(static_cast<int>(pending::deferred_capacity) + 1) + pending::deferred_capacity * slot::size;
+    if constexpr (pending::delays)
+        bits += bits_for(static_cast<int>(pending::delayed_capacity) + 1) + pending::delayed_capacity * (64 + 32 + slot::size);
+    return bits;
+}
+
+template <class Machine>
+constexpr std::size_t machine_bits() {
+    static_assert(pending_layout<Machine>::checked || true);
+    std::size_t config = 0;
+    for (unsigned b : slot_bits<Machine>()) config += b;
+    constexpr std::size_t timeouts = std::remove_cvref_t<decltype(access::armed(std::declval<Machine&>()))>{}.size();
+    return config + cycle_bits * timeouts + pending_bits<Machine>() + encoded_bits<typename Machine::context_type>();
 }
 
 template <class T>
 constexpr std::size_t encoded_size() {
     return (encoded_bits<T>() + 7) / 8;
 }
-
-template <class T>
-void encode(T const& value, bit_writer& out, time_frame frame);
-template <class T>
-void decode(T& value, bit_reader& in, time_frame frame);
 
 template <class V>
 void encode_value(V const& v, bit_writer& out) {
@@ -225,57 +980,237 @@ V decode_value(bit_reader& in) {
     }
 }
 
-template <class T>
-void encode(T const& value, bit_writer& out, time_frame frame) {
-    if constexpr (verify::unexplored<T>) {
+// Writes a state's bits. With a list of fields, also records where each named leaf lies (names
+// joined by '.', array elements as name[i]).
+struct encode_visitor {
+    bit_writer& out;
+    time_frame frame;
+    std::vector<encoded_field>* fields = nullptr;
+    std::string path{};
+    std::vector<std::size_t> scopes{};
+
+    static constexpr bool named = true;
+    std::string element_name(std::string_view name, std::size_t i) const {
+        return std::string{name} + "[" + std::to_string(i) + "]";
+    }
+    void enter(std::string_view name) {
+        scopes.push_back(path.size());
+        if (!name.empty()) path += (path.empty() ? "" : ".") + std::string{name};
+    }
+    void leave() {
+        path.resize(scopes.back());
+        scopes.pop_back();
+    }
+    std::string full(std::string_view name) const {
+        if (path.empty()) return std::string{name};
+        return name.empty() ? path : path + "." + std::string{name};
+    }
+    void record(std::string_view name, std::size_t first) {
+        if (fields != nullptr && out.bits() > first) fields->push_back({full(name), first, out.bits() - first});
+    }
+
+    template <class T, class Name>
+    void leaf(T const& value, Name const& name);
+};
+
+template <class Machine>
+void encode_machine(Machine const& value, encode_visitor& v);
+
+template <class T, class Name>
+void encode_visitor::leaf(T const& value, Name const& name) {
+    using U = std::remove_cv_t<T>;
+    constexpr member_kind k = kind_of<U>();
+    std::size_t const first = out.bits();
+    if constexpr (k == member_kind::machine) {
+        enter(name);
+        encode_machine(value, *this);
+        leave();
         return;
-    } else if constexpr (is_machine<T>) {
-        auto& m = const_cast<T&>(value);
-        auto const cfg = access::canonical_configuration(m);
-        constexpr auto bits = slot_bits<T>();
-        for (std::size_t k = 0; k < bits.size(); ++k) out.put(cfg.active[k], bits[k]);
-        time_frame const own{access::clock(m), frame.period};
-        encode(m.context(), out, own);
-        auto const& armed = access::armed(m);
-        for (std::size_t i = 0; i < armed.size(); ++i)
-            out.put(access::timeout_armed(m, i)
-                        ? own.cycles(armed[i], access::longest_timeout(m))
-                        : 0,
-                    cycle_bits);
-    } else if constexpr (std::is_same_v<T, timer>) {
+    } else if constexpr (k == member_kind::timer) {
         out.put(access::timer_phase(value), 2);
         out.put(value.expired() ? 1u : 0u, 1);
         bool const timing = access::timer_phase(value) == 2;  // running, expired or not
         out.put(timing ? frame.cycles(access::timer_started(value), value.limit()) : 0, cycle_bits);
-    } else if constexpr (is_channel<T>) {
-        encode(value.pending(), out, frame);  // a channel of an aggregate: member by member too
-        encode(value.get(), out, frame);
-    } else if constexpr (is_aggregate_class<T>()) {
-        bsc::detail::for_each_field(value, [&](auto const& field) { encode(field, out, frame); });
+    } else if constexpr (k == member_kind::channel) {
+        encode_visitor quiet{out, frame};  // a channel of an aggregate: member by member too
+        walk(value.pending(), quiet, std::string_view{});
+        walk(value.get(), quiet, std::string_view{});
     } else {
         encode_value(value, out);
+    }
+    record(name, first);
+}
+
+template <class T>
+void encode(T const& value, bit_writer& out, time_frame frame, std::vector<encoded_field>* fields = nullptr) {
+    encode_visitor v{out, frame, fields};
+    walk(value, v, std::string_view{});
+}
+
+template <class Events, class Item>
+void encode_event(Item const& item, bit_writer& out, time_frame frame) {
+    using slot = event_bits<Events>;
+    std::size_t const end = out.bits() + slot::size;
+    out.put(item.index(), slot::index);
+    std::visit(
+        [&]<class E>(E const& e) {
+            if constexpr (!std::is_same_v<E, std::monostate> && !std::is_same_v<E, action_failed>) encode(e, out, frame);
+        },
+        item);
+    while (out.bits() < end) out.put(0, static_cast<unsigned>(std::min<std::size_t>(end - out.bits(), 32)));
+}
+
+inline void skip_bits(bit_writer& out, std::size_t n) {
+    while (n > 0) {
+        unsigned const k = static_cast<unsigned>(std::min<std::size_t>(n, 32));
+        out.put(0, k);
+        n -= k;
+    }
+}
+inline void skip_bits(bit_reader& in, std::size_t n) {
+    while (n > 0) {
+        unsigned const k = static_cast<unsigned>(std::min<std::size_t>(n, 32));
+        (void)in.get(k);
+        n -= k;
+    }
+}
+
+template <class Machine>
+void encode_pending(Machine const& value, bit_writer& out, time_frame own) {
+    using pending = pending_layout<Machine>;
+    using events = typename machine_model<Machine>::events;
+    using slot = event_bits<events>;
+    auto& m = const_cast<Machine&>(value);
+    if constexpr (pending::defers) {
+        auto const& deferred = access::deferred(m);
+        out.put(access::deferral_pending_retry(m) ? 1u : 0u, 1);
+        out.put(deferred.size(), bits_for(static_cast<int>(pending::deferred_capacity) + 1));
+        deferred.for_each_held([&](auto const& item) { encode_event<events>(item, out, own); });
+        skip_bits(out, (pending::deferred_capacity - deferred.size()) * slot::size);
+    }
+    if constexpr (pending::delays) {
+        auto const& queue = access::queue(m);
+        std::size_t count = 0;
+        queue.for_each_scheduled([&](duration, int, auto const&) { ++count; });
+        out.put(count, bits_for(static_cast<int>(pending::delayed_capacity) + 1));
+        queue.for_each_scheduled([&](duration due, int id, auto const& item) {
+            auto const left = static_cast<std::uint64_t>((due - own.clock).count());  // the time left
+            out.put(left & 0xffffffffu, 32);
+            out.put(left >> 32, 32);
+            out.put(static_cast<std::uint32_t>(id), 32);
+            encode_event<events>(item, out, own);
+        });
+        skip_bits(out, (pending::delayed_capacity - count) * (64 + 32 + slot::size));
+    }
+}
+
+template <class Machine>
+void encode_machine(Machine const& value, encode_visitor& v) {
+    auto& m = const_cast<Machine&>(value);
+    bit_writer& out = v.out;
+    std::size_t first = out.bits();
+    auto const cfg = access::canonical_configuration(m);
+    constexpr auto bits = slot_bits<Machine>();
+    for (std::size_t k = 0; k < bits.size(); ++k) out.put(cfg.active[k], bits[k]);
+    v.record("configuration", first);
+    time_frame const own{access::clock(m), v.frame.period};
+    first = out.bits();
+    auto const& armed = access::armed(m);
+    for (std::size_t i = 0; i < armed.size(); ++i)
+        out.put(access::timeout_armed(m, i) ? own.cycles(armed[i], access::longest_timeout(m)) : 0, cycle_bits);
+    v.record("timeouts", first);
+    first = out.bits();
+    encode_pending(value, out, own);
+    v.record("pending events", first);
+    encode_visitor inner{out, own, v.fields, v.path};
+    walk(value.context(), inner, std::string_view{});
+}
+
+struct decode_visitor {
+    bit_reader& in;
+    time_frame frame;
+    template <class T>
+    void leaf(T& value, no_name);
+};
+
+template <class T>
+void decode(T& value, bit_reader& in, time_frame frame) {
+    decode_visitor v{in, frame};
+    walk(value, v);
+}
+
+template <class Events, class Item>
+Item decode_event(bit_reader& in, time_frame frame) {
+    using slot = event_bits<Events>;
+    std::size_t const end = in.bits() + slot::size;
+    auto const index = static_cast<int>(in.get(slot::index));
+    Item item{};
+    if (index > 0 && index < static_cast<int>(std::variant_size_v<Item>))
+        visit_index<static_cast<int>(std::variant_size_v<Item>)>(index, [&](auto i) {
+            using E = std::variant_alternative_t<decltype(i)::value, Item>;
+            if constexpr (!std::is_same_v<E, std::monostate> && !std::is_same_v<E, action_failed> &&
+                          std::is_default_constructible_v<E>) {
+                E e{};
+                decode(e, in, frame);
+                item.template emplace<decltype(i)::value>(e);
+            }
+        });
+    skip_bits(in, end - in.bits());
+    return item;
+}
+
+template <class Machine>
+void decode_pending(Machine& m, bit_reader& in, time_frame frame) {
+    using pending = pending_layout<Machine>;
+    using events = typename machine_model<Machine>::events;
+    using slot = event_bits<events>;
+    if constexpr (pending::defers) {
+        auto& deferred = access::deferred(m);
+        using item_type = typename std::remove_cvref_t<decltype(deferred)>::value_type;
+        bool const retry = in.get(1) != 0;
+        auto const count = static_cast<std::size_t>(in.get(bits_for(static_cast<int>(pending::deferred_capacity) + 1)));
+        deferred.clear();
+        deferred.clear_overflow();
+        for (std::size_t i = 0; i < count; ++i) (void)deferred.push_item(decode_event<events, item_type>(in, frame));
+        skip_bits(in, (pending::deferred_capacity - count) * slot::size);
+        access::set_deferral_pending_retry(m, retry);
+    }
+    if constexpr (pending::delays) {
+        auto& queue = access::queue(m);
+        using item_type = typename std::remove_cvref_t<decltype(queue)>::value_type;
+        auto const count = static_cast<std::size_t>(in.get(bits_for(static_cast<int>(pending::delayed_capacity) + 1)));
+        queue.clear_scheduled();
+        queue.set_clock(frame.clock);
+        for (std::size_t i = 0; i < count; ++i) {
+            std::uint64_t left = in.get(32);
+            left |= in.get(32) << 32;
+            auto const id = static_cast<int>(static_cast<std::uint32_t>(in.get(32)));
+            auto const item = decode_event<events, item_type>(in, frame);
+            (void)queue.put_scheduled(frame.clock + duration{static_cast<duration::rep>(left)}, id, item);
+        }
+        skip_bits(in, (pending::delayed_capacity - count) * (64 + 32 + slot::size));
     }
 }
 
 template <class T>
-void decode(T& value, bit_reader& in, time_frame frame) {
-    if constexpr (verify::unexplored<T>) {
-        return;
-    } else if constexpr (is_machine<T>) {
+void decode_visitor::leaf(T& value, no_name) {
+    using U = std::remove_cv_t<T>;
+    constexpr member_kind k = kind_of<U>();
+    if constexpr (k == member_kind::machine) {
         auto& cfg = access::configuration(value);
-        constexpr auto bits = slot_bits<T>();
-        for (std::size_t k = 0; k < bits.size(); ++k) cfg.active[k] = static_cast<std::uint8_t>(in.get(bits[k]));
+        constexpr auto bits = slot_bits<U>();
+        for (std::size_t s = 0; s < bits.size(); ++s) cfg.active[s] = static_cast<std::uint8_t>(in.get(bits[s]));
         access::set_clock(value, frame.clock);
+        for (auto& armed : access::armed(value)) armed = frame.before(in.get(cycle_bits));
+        decode_pending(value, in, frame);
         decode(value.context(), in, frame);
-        for (auto& armed : access::armed(value))
-            armed = frame.before(in.get(cycle_bits));
-    } else if constexpr (std::is_same_v<T, timer>) {
+    } else if constexpr (k == member_kind::timer) {
         auto const phase = static_cast<std::uint8_t>(in.get(2));
         bool const expired = in.get(1) != 0;
         auto const started = frame.before(in.get(cycle_bits));
         access::set_timer(value, phase, expired, started, frame.clock - started);
-    } else if constexpr (is_channel<T>) {
-        using V = channel_value<T>;
+    } else if constexpr (k == member_kind::channel) {
+        using V = channel_value<U>;
         V pending = value.pending();
         V current = value.get();
         decode(pending, in, frame);
@@ -284,10 +1219,8 @@ void decode(T& value, bit_reader& in, time_frame frame) {
         access::latch(value);
         access::commit(value);
         value.set(pending);
-    } else if constexpr (is_aggregate_class<T>()) {
-        bsc::detail::for_each_field(value, [&](auto& field) { decode(field, in, frame); });
     } else {
-        value = decode_value<T>(in);
+        value = decode_value<U>(in);
     }
 }
 
@@ -320,8 +1253,11 @@ void decode(T& value, bit_reader& in, time_frame frame) {
 //   std::string label(std::uint16_t) const;              // for traces
 //   std::string describe(state const&) const;            // for traces: the configuration by name
 //   duration period() const;                             // optional: the time of a step, for traces
+//   std::vector<detail::encoded_field> fields() const;   // optional: the named parts of a key, for
+//                                                        // the report of an exploration a bound stopped
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -330,12 +1266,20 @@ void decode(T& value, bit_reader& in, time_frame frame) {
 #include <string>
 #include <vector>
 
+
 namespace bsc::verify {
 
 /// Bounds that stop exploration with a report instead of exhausting the machine.
 struct limits {
     std::size_t max_states = 20'000'000;
     std::size_t max_memory_bytes = std::size_t{8} << 30;
+};
+
+/// A part of the explored state (a member of a context, a machine's configuration, timeouts or
+/// pending events) and the number of distinct values it took in the states found.
+struct member_spread {
+    std::string name;
+    std::size_t values = 0;
 };
 
 /// What an exploration did.
@@ -348,6 +1292,21 @@ struct statistics {
     std::size_t key_bytes = 0;     ///< bytes stored per state for its encoding
     bool complete = false;         ///< false if a bound stopped exploration
     std::string stopped_by;        ///< which bound, if any
+    /// When a bound stopped exploration: the parts of the state that took the most distinct
+    /// values, most first (at most five), to say what multiplied the states
+    /// (docs/verification.md: leaving a member out of the state).
+    std::vector<member_spread> widest;
+
+    /// "filled_count: 5,633,072 values; configuration: 12 values": the widest parts, or empty.
+    std::string widest_text() const {
+        std::string out;
+        for (auto const& w : widest) {
+            std::string n = std::to_string(w.values);
+            for (auto i = static_cast<std::ptrdiff_t>(n.size()) - 3; i > 0; i -= 3) n.insert(static_cast<std::size_t>(i), ",");
+            out += (out.empty() ? "" : "; ") + w.name + ": " + n + " values";
+        }
+        return out;
+    }
 };
 
 /// How far an exploration has got: what a progress callback receives.
@@ -417,6 +1376,8 @@ public:
         stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         stats_.memory_bytes = memory();
         stats_.key_bytes = key_size;
+        if constexpr (requires { model_.fields(); })
+            if (!stats_.complete) stats_.widest = widest_fields(model_.fields());
         if (report_) report_progress(expanded, start, true);
         return stats_;
     }
@@ -482,6 +1443,37 @@ private:
             bigger[slot] = i;
         }
         table_.swap(bigger);
+    }
+
+    // The bits [first, first + n) of key i: the value itself up to 64 bits, a hash of them beyond.
+    std::uint64_t bits_of(std::size_t i, std::size_t first, std::size_t n) const {
+        std::byte const* k = key(i);
+        std::uint64_t value = 0;
+        std::uint64_t hash = 0xcbf29ce484222325ull;
+        for (std::size_t b = 0; b < n; ++b) {
+            std::size_t const at = first + b;
+            auto const bit = (static_cast<unsigned>(k[at / 8]) >> (at % 8)) & 1u;
+            if (n <= 64) value |= std::uint64_t{bit} << b;
+            else hash = (hash ^ bit ^ (b << 1)) * 0x100000001b3ull;
+        }
+        return n <= 64 ? value : hash;
+    }
+
+    // The named parts of the states found, those with the most distinct values first.
+    std::vector<member_spread> widest_fields(std::vector<detail::encoded_field> const& fields) const {
+        std::vector<member_spread> spread;
+        std::vector<std::uint64_t> values(count());
+        for (auto const& f : fields) {
+            for (std::size_t i = 0; i < count(); ++i) values[i] = bits_of(i, f.first_bit, f.bits);
+            std::sort(values.begin(), values.end());
+            auto const distinct = static_cast<std::size_t>(std::unique(values.begin(), values.end()) - values.begin());
+            if (distinct > 1) spread.push_back({f.name, distinct});
+        }
+        std::sort(spread.begin(), spread.end(), [](auto const& a, auto const& b) {
+            return a.values != b.values ? a.values > b.values : a.name < b.name;
+        });
+        if (spread.size() > 5) spread.resize(5);
+        return spread;
     }
 
     std::size_t memory() const {
@@ -650,6 +1642,7 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired) {
 #include <cstring>
 #include <string>
 #include <utility>
+#include <vector>
 
 
 namespace bsc::detail {
@@ -666,6 +1659,14 @@ struct codec {
         detail::encode(s, writer, time_frame{origin + period, period});
         if (writer.bits() != encoded_bits<T>()) std::abort();  // the size computed from the types is exact
     }
+    // The named parts of a key, found by encoding a state of the model.
+    std::vector<encoded_field> fields(T const& s) const {
+        std::vector<std::byte> scratch(key_size);
+        bit_writer writer{scratch.data(), encoded_bits<T>()};
+        std::vector<encoded_field> out;
+        detail::encode(s, writer, time_frame{origin + period, period}, &out);
+        return out;
+    }
     T decode(T prototype, std::byte const* in) const {
         bit_reader reader{in, encoded_bits<T>()};
         detail::decode(prototype, reader, time_frame{origin, period});
@@ -673,22 +1674,39 @@ struct codec {
         return prototype;
     }
 };
+// What every model of a bsc state keeps and does alike: the initial state, and its states
+// encoded and decoded by the codec.
+template <class State>
+class encoded_model {
+public:
+    using state = State;
+    static constexpr std::size_t key_size = codec<State>::key_size;
+
+    state initial() const { return initial_; }
+    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
+    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
+    std::vector<encoded_field> fields() const { return codec_.fields(initial_); }
+
+protected:
+    encoded_model(State initial, duration period) : initial_(std::move(initial)), codec_{period} {}
+    duration step_period() const { return codec_.period; }
+
+private:
+    State initial_;
+    codec<State> codec_;
+};
 }  // namespace bsc::detail
 
 namespace bsc::verify {
 
 /// Offers each of the events Es... to the machine in every state (dispatch).
 template <class Machine, class... Es>
-class event_model {
+class event_model : public detail::encoded_model<Machine> {
 public:
     using state = Machine;
-    static constexpr std::size_t key_size = detail::codec<Machine>::key_size;
 
-    explicit event_model(Machine initial) : initial_(std::move(initial)) {}
+    explicit event_model(Machine initial) : detail::encoded_model<Machine>(std::move(initial), duration{}) {}
 
-    state initial() const { return initial_; }
-    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
-    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
     template <class Emit>
     void successors(state const& s, Emit&& emit) const {
         std::uint16_t label = 0;
@@ -705,10 +1723,6 @@ public:
         return std::string(names[i]);
     }
     std::string describe(state const& s) const { return s.active_states().joined(); }
-
-private:
-    Machine initial_;
-    detail::codec<Machine> codec_{};
 };
 
 // The label of a cycle_model's choice when the user gives none.
@@ -721,83 +1735,69 @@ struct numbered_inputs {
 /// names an alternative in traces; written as `name=value` words ("P1=1 S1=0"), a trace shows
 /// only the words that changed from one step to the next (verdict::to_string).
 template <class Machine, class Apply, class Label = numbered_inputs>
-class cycle_model {
+class cycle_model : public detail::encoded_model<Machine> {
 public:
     using state = Machine;
-    static constexpr std::size_t key_size = detail::codec<Machine>::key_size;
 
     cycle_model(Machine initial, duration period, std::size_t choices, Apply apply, Label label = {})
-        : initial_(std::move(initial)),
+        : detail::encoded_model<Machine>(std::move(initial), period),
           choices_(choices),
           apply_(std::move(apply)),
-          label_(std::move(label)),
-          codec_{period} {}
+          label_(std::move(label)) {}
 
-    state initial() const { return initial_; }
-    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
-    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
     template <class Emit>
     void successors(state const& s, Emit&& emit) const {
         for (std::size_t c = 0; c < choices_; ++c) {
             state next = s;
             apply_(next.context(), c);
-            next.step(detail::origin + codec_.period);
+            next.step(detail::origin + period());
             emit(static_cast<std::uint16_t>(c), next);
         }
     }
     std::string label(std::uint16_t i) const { return label_(i); }
     std::string describe(state const& s) const { return s.active_states().joined(); }
     /// The time between two cycles: a trace's step k is at k periods.
-    duration period() const { return codec_.period; }
+    duration period() const { return this->step_period(); }
 
 private:
-    Machine initial_;
     std::size_t choices_;
     Apply apply_;
     Label label_;
-    detail::codec<Machine> codec_;
 };
 
 /// A closed system: an aggregate `System` of machines and plant data, advanced by
 /// `step(system, choice, now)` for each of `choices` alternatives per cycle. `describe`
 /// names a system state for traces; `label(choice)` names an alternative.
 template <class System, class Step, class Describe, class Label>
-class system_model {
+class system_model : public detail::encoded_model<System> {
 public:
     using state = System;
-    static constexpr std::size_t key_size = detail::codec<System>::key_size;
 
     system_model(System initial, duration period, std::size_t choices, Step step, Describe describe, Label label)
-        : initial_(std::move(initial)),
+        : detail::encoded_model<System>(std::move(initial), period),
           choices_(choices),
           step_(std::move(step)),
           describe_(std::move(describe)),
-          label_(std::move(label)),
-          codec_{period} {}
+          label_(std::move(label)) {}
 
-    state initial() const { return initial_; }
-    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
-    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
     template <class Emit>
     void successors(state const& s, Emit&& emit) const {
         for (std::size_t c = 0; c < choices_; ++c) {
             state next = s;
-            step_(next, c, detail::origin + codec_.period);
+            step_(next, c, detail::origin + period());
             emit(static_cast<std::uint16_t>(c), next);
         }
     }
     std::string label(std::uint16_t i) const { return label_(i); }
     std::string describe(state const& s) const { return describe_(s); }
     /// The time between two steps: a trace's step k is at k periods.
-    duration period() const { return codec_.period; }
+    duration period() const { return this->step_period(); }
 
 private:
-    System initial_;
     std::size_t choices_;
     Step step_;
     Describe describe_;
     Label label_;
-    detail::codec<System> codec_;
 };
 
 }  // namespace bsc::verify
@@ -969,7 +1969,9 @@ std::vector<verify::trace_step> path_to(verify::explorer<Model> const& ex, std::
 
 template <class Model>
 verify::verdict incomplete(verify::explorer<Model> const& ex, std::string property) {
-    verify::verdict v{std::move(property), verify::verdict::status::inconclusive, {}, "exploration stopped by " + ex.stats().stopped_by};
+    std::string why = "exploration stopped by " + ex.stats().stopped_by;
+    if (!ex.stats().widest.empty()) why += "; the parts of the state with the most distinct values: " + ex.stats().widest_text();
+    verify::verdict v{std::move(property), verify::verdict::status::inconclusive, {}, std::move(why)};
     return v;
 }
 

@@ -24,7 +24,7 @@ struct ctx {
 }  // namespace cf
 
 template <>
-inline constexpr bool bsc::not_retained<cf::display> = true;
+inline constexpr bool bsc::transient<cf::display> = true;
 
 namespace cf {
 inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),

@@ -61,7 +61,7 @@ void make_header_valid(std::vector<std::byte>& bytes, std::vector<std::byte> con
     for (std::size_t i = 0; i < r::header_size; ++i) bytes[i] = valid[i];
     put_le(bytes, 8, bytes.size() - r::header_size - r::trailer_size, 4);
     std::size_t const checked = bytes.size() - r::trailer_size;
-    put_le(bytes, checked, r::crc32(bytes.data(), checked), 4);
+    put_le(bytes, checked, bsc::detail::crc32(bytes.data(), checked), 4);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 # Packaging tests (label packaging): bsc as its users get it (docs/packaging.md).
 #   packaging.find_package        install bsc into ${CMAKE_BINARY_DIR}/pkg-prefix, then a project
-#                                 finds it with find_package(bsc CONFIG REQUIRED)
+#                                 finds it with find_package(bsc CONFIG REQUIRED), and with
+#                                 COMPONENTS hana where this build has bsc::hana
 #   packaging.add_subdirectory    a project adds bsc's source directory; bsc adds no tests of its own
 #   packaging.fetch_content       a project fetches an archive of bsc with FetchContent (file:// URL)
 #   packaging.single_header       programs built with only single_include/ on the path,
@@ -9,9 +10,14 @@
 #                                 every header under include/bsc compiles on its own
 #   packaging.standard_library_only
 #                                 the headers include the standard library and bsc only
-#                                 (and <mosquitto.h> for bsc::mqtt)
+#                                 (and <mosquitto.h> for bsc::mqtt, Boost.Hana for bsc::hana)
 # Each consumer is configured and built by a cmake subprocess with this build's compiler,
 # generator and build type (tests/packaging/run_consumer.cmake).
+if(TARGET bsc::hana)
+  set(bsc_packaging_hana ON)  # the installed bsc has it too: the consumer requires it
+else()
+  set(bsc_packaging_hana OFF)
+endif()
 foreach(method IN ITEMS find_package add_subdirectory fetch_content single_header)
   add_test(NAME packaging.${method}
     COMMAND ${CMAKE_COMMAND}
@@ -23,6 +29,7 @@ foreach(method IN ITEMS find_package add_subdirectory fetch_content single_heade
       -DCXX=${CMAKE_CXX_COMPILER}
       -DBUILD_TYPE=${CMAKE_BUILD_TYPE}
       -DCTEST=${CMAKE_CTEST_COMMAND}
+      -DHANA=${bsc_packaging_hana}
       -P ${CMAKE_CURRENT_SOURCE_DIR}/packaging/run_consumer.cmake)
   set_tests_properties(packaging.${method} PROPERTIES LABELS packaging TIMEOUT 300)
 endforeach()
@@ -33,6 +40,9 @@ file(GLOB_RECURSE bsc_public_headers CONFIGURE_DEPENDS RELATIVE ${PROJECT_SOURCE
   ${PROJECT_SOURCE_DIR}/include/bsc/*.hpp)
 if(NOT TARGET bsc::mqtt)  # they include <mosquitto.h>
   list(REMOVE_ITEM bsc_public_headers bsc/mqtt.hpp bsc/net/mosquitto_transport.hpp)
+endif()
+if(NOT TARGET bsc::hana)  # it includes Boost.Hana
+  list(REMOVE_ITEM bsc_public_headers bsc/adapt/hana.hpp)
 endif()
 set(bsc_header_units)
 foreach(header IN LISTS bsc_public_headers)
@@ -46,12 +56,16 @@ target_link_libraries(bsc_headers_self_contained PRIVATE bsc::bsc)
 if(TARGET bsc::mqtt)
   target_link_libraries(bsc_headers_self_contained PRIVATE bsc::mqtt)
 endif()
+if(TARGET bsc::hana)
+  target_link_libraries(bsc_headers_self_contained PRIVATE bsc::hana)
+endif()
 bsc_set_warnings(bsc_headers_self_contained)
 add_test(NAME packaging.headers_self_contained
   COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --target bsc_headers_self_contained)
 set_tests_properties(packaging.headers_self_contained PROPERTIES LABELS packaging)
 
-# The library depends on the standard library alone (libmosquitto for bsc::mqtt).
+# The library depends on the standard library alone (libmosquitto for bsc::mqtt, Boost.Hana for
+# bsc::hana).
 add_test(NAME packaging.standard_library_only
   COMMAND ${CMAKE_COMMAND} -DBSC_SOURCE_DIR=${PROJECT_SOURCE_DIR}
     -P ${CMAKE_CURRENT_SOURCE_DIR}/packaging/standard_library_only.cmake)

@@ -3,6 +3,7 @@
 #   -DMETHOD=find_package|add_subdirectory|fetch_content|single_header
 #   -DBSC_SOURCE_DIR=... -DWORK_DIR=... -DPREFIX=... (find_package's install prefix)
 #   -DGENERATOR=... -DCXX=... -DBUILD_TYPE=... -DCTEST=...
+#   -DHANA=ON|OFF (find_package: whether the consumer requires the component hana)
 cmake_minimum_required(VERSION 3.21)
 
 function(run)
@@ -31,7 +32,7 @@ if(METHOD STREQUAL "find_package")
       -DCMAKE_INSTALL_PREFIX=${PREFIX})
   run(${CMAKE_COMMAND} --build ${work}/bsc-build)
   run(${CMAKE_COMMAND} --install ${work}/bsc-build)
-  list(APPEND consumer_args -DCMAKE_PREFIX_PATH=${PREFIX})
+  list(APPEND consumer_args -DCMAKE_PREFIX_PATH=${PREFIX} -DBSC_HANA=${HANA})
 elseif(METHOD STREQUAL "add_subdirectory")
   list(APPEND consumer_args -DBSC_SOURCE_DIR=${BSC_SOURCE_DIR})
 elseif(METHOD STREQUAL "fetch_content")

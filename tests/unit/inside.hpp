@@ -25,6 +25,18 @@ constexpr auto const& queue(Machine const& m) {
 template <class Machine>
 using queue_type = std::remove_cvref_t<decltype(bsc::detail::access::queue(std::declval<Machine&>()))>;
 
+// The events a machine keeps between calls: deferred, and delayed (pending, not yet due).
+template <class Machine>
+std::size_t deferred_count(Machine const& m) {
+    return bsc::detail::access::deferred(const_cast<Machine&>(m)).size();
+}
+template <class Machine>
+std::size_t delayed_count(Machine const& m) {
+    std::size_t n = 0;
+    bsc::detail::access::queue(const_cast<Machine&>(m)).for_each_scheduled([&](bsc::duration, int, auto const&) { ++n; });
+    return n;
+}
+
 // The chart model and the compiled back end's dispatch plan of a chart type.
 template <class Chart>
 using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;

@@ -12,7 +12,7 @@
 
 // The display only logs what Show printed: it has no influence on the behaviour.
 template <>
-inline constexpr bool bsc::verify::unexplored<mcs::display> = true;
+inline constexpr bool bsc::transient<mcs::display> = true;
 
 namespace {
 template <class Machine>

@@ -2,7 +2,7 @@
 // The chart of the retentive-state tests and fuzz target: deep history, a parallel state,
 // timeouts, a final root child, and a context with a member of every kind bsc::save stores
 // (channels of each direction, a timer, a duration, integers of both signs, an enum, floating
-// point, nested aggregates and std::arrays) and one it does not (bsc::not_retained).
+// point, nested aggregates and std::arrays) and one it does not (bsc::transient).
 
 #include <bsc/bsc.hpp>
 #include <bsc/retain.hpp>
@@ -69,7 +69,7 @@ struct ctx {
 }  // namespace retain_test
 
 template <>
-inline constexpr bool bsc::not_retained<retain_test::display> = true;
+inline constexpr bool bsc::transient<retain_test::display> = true;
 
 namespace retain_test {
 

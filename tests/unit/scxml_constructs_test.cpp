@@ -417,7 +417,7 @@ TEST_CASE_TEMPLATE("a history state restores its composite, or takes its default
 
 // The log shows what ran; it does not change behaviour, so the explorer leaves it out.
 template <>
-inline constexpr bool bsc::verify::unexplored<std::string> = true;
+inline constexpr bool bsc::transient<std::string> = true;
 
 TEST_CASE("the explorer covers history states and done events") {
     std::vector<bool> fired(64, false);

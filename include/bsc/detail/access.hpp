@@ -97,6 +97,26 @@ struct access {
     static constexpr auto& queue(M& m) {
         return driver_of(m).queue_;
     }
+    // The events a chart that defers keeps (an event_queue, or no_deferral for one that does not).
+    template <class M>
+    static constexpr auto& deferred(M& m) {
+        return driver_of(m).deferred_;
+    }
+    // Whether a transition changed the configuration since the deferred events were last retried.
+    template <class M>
+    static constexpr bool deferral_pending_retry(M const& m) {
+        if constexpr (std::remove_cvref_t<decltype(driver_of(m))>::defers)
+            return driver_of(m).deferral_.changed;
+        else
+            return false;
+    }
+    template <class M>
+    static constexpr void set_deferral_pending_retry(M& m, bool changed) {
+        if constexpr (std::remove_cvref_t<decltype(driver_of(m))>::defers) {
+            driver_of(m).deferral_.changed = changed;
+            driver_of(m).deferral_.retry = 0;
+        }
+    }
     template <class M>
     static constexpr auto longest_timeout(M const& m) {
         return driver_of(m).longest_timeout();

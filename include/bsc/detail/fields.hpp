@@ -17,13 +17,27 @@
 
 namespace bsc::detail {
 
+// What a probe's conversion returns: the probes are only used in unevaluated contexts, but a
+// member's constructor template that takes one (std::optional's) has its body instantiated, and
+// an operator without a definition would then be "used but never defined".
+template <class T>
+inline T* never_read = nullptr;
+
 // Converts to any member type: a value (preferred: the probe is an rvalue) or, for a member that
 // is a reference, an lvalue of the referenced type.
 struct any_field {
     template <class T>
-    constexpr operator T() &&;  // only used in unevaluated contexts
+        requires(!std::is_same_v<T, any_field> && std::is_move_constructible_v<T>)
+    constexpr operator T() && {
+        return static_cast<T&&>(*never_read<T>);
+    }
     template <class T>
-    constexpr operator T&() const&;
+        requires(!std::is_same_v<T, any_field> && !std::is_move_constructible_v<T>)
+    constexpr operator T() &&;  // (a member that cannot be moved has no constructor template to instantiate it)
+    template <class T>
+    constexpr operator T&() const& {
+        return *never_read<T>;
+    }
 };
 // Converts to values only: it cannot initialise a reference member.
 struct any_value_field {
@@ -36,14 +50,23 @@ constexpr bool brace_constructible(std::index_sequence<I...>) {
     return requires { T{(void(I), Probe{})...}; };
 }
 
+// Converts to lvalues only: a member such as std::optional<T>, whose constructor template also
+// takes any_field (as a T), is then initialised by its copy constructor alone.
+struct any_lvalue_field {
+    template <class T>
+    constexpr operator T&() const {
+        return *never_read<T>;
+    }
+};
+
 // The members initialised one by one: exact for an aggregate that is default-constructible (any
 // shorter list of initialisers is valid too).
-template <class T, std::size_t N = 0>
+template <class T, class Probe, std::size_t N = 0>
 constexpr std::size_t leading_field_count() {
     if constexpr (N > max_fields)
         return N;
-    else if constexpr (brace_constructible<T, any_field>(std::make_index_sequence<N + 1>{}))
-        return leading_field_count<T, N + 1>();
+    else if constexpr (brace_constructible<T, Probe>(std::make_index_sequence<N + 1>{}))
+        return leading_field_count<T, Probe, N + 1>();
     else
         return N;
 }
@@ -51,22 +74,36 @@ constexpr std::size_t leading_field_count() {
 // The largest count in [From, To] that initialises every member: an aggregate with a reference
 // member and no default initialiser for it cannot be initialised by a shorter list, so the count
 // is searched up to its size (each member takes at least a byte).
-template <class T, std::size_t From, std::size_t To>
+template <class T, class Probe, std::size_t From, std::size_t To>
 constexpr std::size_t largest_field_count(std::size_t found) {
     if constexpr (From > To)
         return found;
     else
-        return largest_field_count<T, From + 1, To>(
-            brace_constructible<T, any_field>(std::make_index_sequence<From>{}) ? From : found);
+        return largest_field_count<T, Probe, From + 1, To>(
+            brace_constructible<T, Probe>(std::make_index_sequence<From>{}) ? From : found);
 }
 
-template <class T>
-constexpr std::size_t field_count() {
-    constexpr std::size_t leading = leading_field_count<T>();
+template <class T, class Probe>
+constexpr std::size_t field_count_by() {
+    constexpr std::size_t leading = leading_field_count<T, Probe>();
     if constexpr (leading > max_fields || std::is_default_constructible_v<T>)
         return leading;
     else
-        return largest_field_count<T, leading + 1, (sizeof(T) < max_fields ? sizeof(T) : max_fields)>(leading);
+        return largest_field_count<T, Probe, leading + 1, (sizeof(T) < max_fields ? sizeof(T) : max_fields)>(leading);
+}
+
+// The count by either probe, whichever initialises more: the value probe for members that cannot
+// be copied (std::unique_ptr, std::atomic), the lvalue probe for members whose constructor
+// templates make the value probe ambiguous (std::optional, std::any).
+template <class T>
+constexpr std::size_t field_count() {
+    constexpr std::size_t by_value = field_count_by<T, any_field>();
+    if constexpr (by_value > max_fields)
+        return by_value;
+    else {
+        constexpr std::size_t by_lvalue = field_count_by<T, any_lvalue_field>();
+        return by_value > by_lvalue ? by_value : by_lvalue;
+    }
 }
 
 /// Whether an aggregate has a member that is a non-const lvalue reference (a const one binds a

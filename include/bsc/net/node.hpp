@@ -305,10 +305,10 @@ private:
     }
 
     static constexpr std::uint64_t system_fingerprint() {
-        bsc::detail::retain::fingerprint f;
+        bsc::detail::fingerprint f;
         [&]<std::size_t... A>(std::index_sequence<A...>) {
             ((f.add(plan::names[A]),
-              f.add(bsc::detail::retain::chart_fingerprint<typename plan::template machine_at<A>>())),
+              f.add(bsc::detail::chart_fingerprint<typename plan::template machine_at<A>>())),
              ...);
         }(std::make_index_sequence<N>{});
         // The wiring too: the same charts linked otherwise are another system.
@@ -323,7 +323,7 @@ private:
 
     template <std::size_t A>
     static constexpr std::uint64_t actor_fingerprint() {
-        return bsc::detail::retain::chart_fingerprint<typename plan::template machine_at<A>>();
+        return bsc::detail::chart_fingerprint<typename plan::template machine_at<A>>();
     }
     static constexpr std::array<std::uint64_t, N> actor_fingerprints = []<std::size_t... A>(std::index_sequence<A...>) {
         return std::array<std::uint64_t, N>{actor_fingerprint<A>()...};
@@ -387,8 +387,8 @@ private:
         auto const* bytes = reinterpret_cast<std::byte const*>(raw.data());
         // "bscN", the step, a CRC-32 of the step: bsc::save's own checksum covers the rest.
         bool const whole = raw.size() >= state_header && std::equal(raw.begin(), raw.begin() + 4, "bscN") &&
-                           bsc::detail::retain::read_le(bytes + 12, 4) == bsc::detail::retain::crc32(bytes + 4, 8);
-        auto const step = whole ? static_cast<std::int64_t>(bsc::detail::retain::read_le(bytes + 4, 8)) : 0;
+                           bsc::detail::read_le(bytes + 12, 4) == bsc::detail::crc32(bytes + 4, 8);
+        auto const step = whole ? static_cast<std::int64_t>(bsc::detail::read_le(bytes + 4, 8)) : 0;
         if (!whole || step < -1 || step > max_step)
             throw std::runtime_error("bsc::net::node: " + file.string() + " is not a saved state of a node's actor");
         std::span<std::byte const> const saved{bytes + state_header, raw.size() - state_header};
@@ -406,10 +406,10 @@ private:
     void save_actor(std::size_t a) {
         if (options_.state_dir.empty()) return;
         std::vector<std::byte> bytes(state_header);
-        bsc::detail::retain::writer w{bytes.data()};
+        bsc::detail::byte_writer w{bytes.data()};
         for (char c : {'b', 's', 'c', 'N'}) w.put(static_cast<unsigned char>(c), 1);
         w.put(static_cast<std::uint64_t>(peers_[a].completed), 8);
-        w.put(bsc::detail::retain::crc32(bytes.data() + 4, 8), 4);
+        w.put(bsc::detail::crc32(bytes.data() + 4, 8), 4);
         for_actor(a, [&](auto A) {
             auto const saved = bsc::save(system_.actors.*plan::template step_at<A>);
             bytes.insert(bytes.end(), saved.begin(), saved.end());

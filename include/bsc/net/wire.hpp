@@ -5,10 +5,10 @@
 //   offset  size     field
 //        0  3 bytes  "bsc"
 //        3  1 byte   kind: 'V' a channel's value, 'P' an actor's progress, 'W' a node's will
-//        4  1 byte   format version (1)
+//        4  1 byte   format version (2: the fingerprints of version 1 described types otherwise)
 //        5  8 bytes  the step the message is about (two's complement, little-endian)
 //       13  8 bytes  fingerprint: of the publishing actor's chart, and for a value also of the
-//                    channel's name and value type (detail::retain's fingerprints)
+//                    channel's name and value type (detail/state_bytes.hpp's fingerprints)
 //       21           body: a value as bsc::save writes it (fixed size per type); for a will, one
 //                    byte per actor of the node (its place in the system's order)
 //
@@ -22,12 +22,13 @@
 #include <span>
 #include <vector>
 
+#include <bsc/detail/bytes.hpp>
 #include <bsc/detail/member_names.hpp>
-#include <bsc/retain.hpp>
+#include <bsc/detail/state_bytes.hpp>
 
 namespace bsc::net::wire {
 
-inline constexpr std::uint8_t format_version = 1;
+inline constexpr std::uint8_t format_version = 2;
 inline constexpr std::size_t header_size = 21;
 
 enum class kind : std::uint8_t { value = 'V', progress = 'P', will = 'W' };
@@ -38,7 +39,7 @@ struct header {
     std::uint64_t fingerprint = 0;
 };
 
-inline void put_header(detail::retain::writer& w, kind what, std::int64_t step, std::uint64_t fingerprint) {
+inline void put_header(detail::byte_writer& w, kind what, std::int64_t step, std::uint64_t fingerprint) {
     w.put('b', 1);
     w.put('s', 1);
     w.put('c', 1);
@@ -56,17 +57,17 @@ inline std::optional<header> read_header(std::span<std::byte const> bytes) {
     auto const what = static_cast<kind>(p[3]);
     if (what != kind::value && what != kind::progress && what != kind::will) return std::nullopt;
     if (static_cast<std::uint8_t>(p[4]) != format_version) return std::nullopt;
-    return header{what, static_cast<std::int64_t>(detail::retain::read_le(p + 5, 8)),
-                  detail::retain::read_le(p + 13, 8)};
+    return header{what, static_cast<std::int64_t>(detail::read_le(p + 5, 8)),
+                  detail::read_le(p + 13, 8)};
 }
 
 /// The fingerprint of actor `Machine`'s output channel `Channel`: its chart, its name, its value's type.
 template <class Machine, auto Channel>
 constexpr std::uint64_t value_fingerprint() {
     using channel = std::remove_cvref_t<decltype(std::declval<typename Machine::context_type&>().*Channel)>;
-    detail::retain::fingerprint f{detail::retain::chart_fingerprint<Machine>()};
+    detail::fingerprint f{detail::chart_fingerprint<Machine>()};
     f.add(detail::member_name<Channel>());
-    detail::retain::describe<detail::channel_value<channel>>(f);
+    f.add(detail::describe<detail::channel_value<channel>>());
     return f.value;
 }
 
@@ -74,7 +75,7 @@ constexpr std::uint64_t value_fingerprint() {
 inline std::vector<std::byte> encode(kind what, std::int64_t step, std::uint64_t fingerprint,
                                      std::span<std::uint8_t const> actors = {}) {
     std::vector<std::byte> out(header_size + actors.size());
-    detail::retain::writer w{out.data()};
+    detail::byte_writer w{out.data()};
     put_header(w, what, step, fingerprint);
     for (auto a : actors) w.put(a, 1);
     return out;
@@ -83,10 +84,10 @@ inline std::vector<std::byte> encode(kind what, std::int64_t step, std::uint64_t
 /// A value message.
 template <class T>
 std::vector<std::byte> encode_value(std::int64_t step, std::uint64_t fingerprint, T const& value) {
-    std::vector<std::byte> out(header_size + detail::retain::size_of<T>());
-    detail::retain::writer w{out.data()};
+    std::vector<std::byte> out(header_size + detail::size_of<T>());
+    detail::byte_writer w{out.data()};
     put_header(w, kind::value, step, fingerprint);
-    detail::retain::put(w, value);
+    detail::put(w, value);
     return out;
 }
 
@@ -94,11 +95,11 @@ std::vector<std::byte> encode_value(std::int64_t step, std::uint64_t fingerprint
 /// its values is wrong.
 template <class T>
 bool decode_value(std::span<std::byte const> bytes, T& out) {
-    if (bytes.size() != header_size + detail::retain::size_of<T>()) return false;
-    detail::retain::reader check{bytes.data(), header_size, bytes.size()};
+    if (bytes.size() != header_size + detail::size_of<T>()) return false;
+    detail::byte_reader check{bytes.data(), header_size, bytes.size()};
     T value = out;
-    detail::retain::get(check, value, detail::retain::pass{true, std::nullopt, {}});
-    if (check.result().error != restore_error::none) return false;
+    detail::get(check, value, detail::pass{true, std::nullopt, {}});
+    if (check.failure() != detail::byte_reader::fault::none) return false;
     out = value;
     return true;
 }

@@ -81,6 +81,40 @@ public:
             (void)this->push_item(next->event);
         }
     }
+    // ---- what the queue holds between runs: for the retentive state and the explorer -------
+    // The time of the machine's last cycle, as the queue knows it.
+    constexpr duration clock() const { return clock_; }
+    // Calls f(due, id, item) for each pending event, in the order they were sent.
+    template <class F>
+    constexpr void for_each_scheduled(F&& f) const {
+        std::uint32_t after = 0;
+        bool first = true;
+        for (;;) {
+            slot const* next = nullptr;
+            for (auto const& s : slots_)
+                if (s.pending && (first || s.order > after) && (next == nullptr || s.order < next->order)) next = &s;
+            if (next == nullptr) return;
+            f(next->due, next->id, next->event);
+            after = next->order;
+            first = false;
+        }
+    }
+    // Forgets every pending event and the count of events sent.
+    constexpr void clear_scheduled() {
+        for (auto& s : slots_) s.pending = false;
+        sent_ = 0;
+    }
+    // Keeps an event due at `due`, as the last one sent. False if every slot is taken.
+    constexpr bool put_scheduled(duration due, int id, value_type const& item) {
+        for (auto& s : slots_)
+            if (!s.pending) {
+                s = slot{true, due, sent_++, id, item};
+                return true;
+            }
+        return false;
+    }
+    static constexpr std::size_t slot_count() { return Slots; }
+
     constexpr bool overflowed() const { return base::overflowed() || delayed_overflow_; }
     constexpr void clear_overflow() {
         base::clear_overflow();

@@ -25,6 +25,7 @@
 #include <bsc/configuration.hpp>
 #include <bsc/detail/access.hpp>
 #include <bsc/detail/assume.hpp>
+#include <bsc/detail/machine_base.hpp>
 #include <bsc/detail/row_storage.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/duration.hpp>
@@ -53,11 +54,6 @@ struct observer_argument<Context, Observer> {
 };
 template <class... Arguments>
 using observer_argument_t = typename observer_argument<Arguments...>::type;
-
-// What every machine derives from, whatever its back end (an empty base: it costs nothing).
-struct machine_base {};
-template <class T>
-inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
 
 // The decoder of dispatch_by_name when none is given: builds no event (each is default-constructed).
 struct no_decoder {};

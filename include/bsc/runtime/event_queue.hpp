@@ -121,8 +121,14 @@ public:
                                                      [&](auto i) { f(*std::get_if<decltype(i)::value + 1>(&item)); });
     }
 
-protected:
-    // Queues an item already held as the queue's variant (a delayed event coming due).
+    // ---- what the queue holds between runs: for the retentive state and the explorer -------
+    // Calls f(item) for each event held, oldest first.
+    template <class F>
+    constexpr void for_each_held(F&& f) const {
+        for (std::size_t i = 0; i < this->size(); ++i) f(items_[(this->front() + i) % Capacity]);
+    }
+    // Queues an item already held as the queue's variant (a delayed event coming due, an event
+    // restored).
     constexpr bool push_item(value_type const& item) {
         if (this->refuse_when_full()) return false;
         items_[this->back()] = item;

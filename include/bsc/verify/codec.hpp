@@ -1,8 +1,10 @@
 #pragma once
-// Fixed-size byte encodings of explored states: a machine's configuration bytes, its context
-// member by member (no hand-written code for plain aggregates), and time made relative to the
-// machine's clock and counted in cycles, capped where more time changes nothing. Two states
-// with equal encodings behave the same.
+// Fixed-size bit encodings of explored states, walked by the member layer (detail/members.hpp):
+// a machine's configuration bytes, its timeouts, the events it keeps pending (deferred, and
+// delayed with their ids and due times), its context member by member; time made relative to
+// the machine's clock and counted in cycles, capped where more time changes nothing. Two states
+// with equal encodings behave the same. Transient members (bsc::transient) are not encoded:
+// decoded states keep the initial value of such members.
 
 #include <algorithm>
 #include <array>
@@ -13,30 +15,21 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
-#include <tuple>
+#include <string_view>
 #include <type_traits>
 #include <utility>
+#include <variant>
+#include <vector>
 
 #include <bsc/compiled/machine.hpp>
 #include <bsc/data/timer.hpp>
-#include <bsc/detail/fields.hpp>
+#include <bsc/detail/key_field.hpp>
+#include <bsc/detail/members.hpp>
+#include <bsc/detail/state_bytes.hpp>
 #include <bsc/runtime/driver.hpp>
 #include <bsc/runtime/queue_for.hpp>
 
-namespace bsc::verify {
-/// Specialize as true for a context member type that does not influence behaviour (a log, a
-/// display, statistics): the explorer neither stores nor compares it, so it cannot split or
-/// multiply states. Decoded states keep the initial value of such members.
-template <class T>
-inline constexpr bool unexplored = false;
-}  // namespace bsc::verify
-
 namespace bsc::detail {
-
-template <class T>
-constexpr bool is_aggregate_class() {
-    return std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_base_of_v<bsc::detail::channel_base, T>;
-}
 
 // Periods since a timer or timeout started are kept in this many bits. The count is capped
 // one period past the longest delay that can still matter, so it never wraps: a model whose
@@ -154,53 +147,80 @@ constexpr auto slot_bits() {
     return bits;
 }
 
-template <class T>
-constexpr std::size_t encoded_bits();
+// The bits of a value of T (a member the explorer cannot encode is reported).
+template <class Machine>
+constexpr std::size_t machine_bits();
 
-template <class Tuple>
-struct fields_bits;
-template <class... F>
-struct fields_bits<std::tuple<F&...>> {
-    static constexpr std::size_t value = (std::size_t{0} + ... + encoded_bits<std::remove_cv_t<F>>());
+struct bits_folder : summing_fold<bits_folder> {
+    template <class T, member_kind k>
+    constexpr std::size_t share() const {
+        using U = std::remove_cv_t<T>;
+        if constexpr (k == member_kind::machine) {
+            return machine_bits<U>();
+        } else if constexpr (k == member_kind::timer) {
+            return 2 + 1 + cycle_bits;  // phase, expired, periods since timing began
+        } else if constexpr (k == member_kind::boolean) {
+            return 1;
+        } else if constexpr (k == member_kind::channel) {
+            return 2 * fold<bits_folder, channel_value<U>>(*this);  // pending and current values
+        } else if constexpr (k == member_kind::unwalkable) {
+            return 0;  // reported by the member layer
+        } else if constexpr (k == member_kind::opaque && !std::is_trivially_copyable_v<U>) {
+            detail::report<error::member_not_explorable<U>>();
+            return 0;
+        } else {
+            return 8 * sizeof(U);
+        }
+    }
 };
-
 
 template <class T>
 constexpr std::size_t encoded_bits() {
-    if constexpr (verify::unexplored<T>) {
-        return 0;
-    } else if constexpr (is_machine<T>) {
-        if constexpr (keeps_pending_events<chart_model<typename T::chart_type>>())
-            detail::report<error::pending_events_not_encoded<typename T::chart_type>>();
-        std::size_t config = 0;
-        for (unsigned b : slot_bits<T>()) config += b;
-        constexpr std::size_t timeouts = std::remove_cvref_t<decltype(access::armed(std::declval<T&>()))>{}.size();
-        return config + encoded_bits<typename T::context_type>() + cycle_bits * timeouts;
-    } else if constexpr (std::is_same_v<T, timer>) {
-        return 2 + 1 + cycle_bits;  // phase, expired, periods since timing began
-    } else if constexpr (std::is_same_v<T, bool>) {
-        return 1;
-    } else if constexpr (is_channel<T>) {
-        return 2 * encoded_bits<channel_value<T>>();  // pending and current values
-    } else if constexpr (is_aggregate_class<T>()) {
-        return fields_bits<decltype(bsc::detail::tie_fields(std::declval<T&>()))>::value;
-    } else {
-        static_assert(std::is_trivially_copyable_v<T>,
-                      "bsc: the explorer encodes scalars, enums, channels, timers, machines and aggregates of "
-                      "them; this member type is none of those");
-        return 8 * sizeof(T);
+    return fold<bits_folder, T>(bits_folder{});
+}
+
+// The bits of an event slot: the event's place plus one (0: none), then the largest event's.
+template <class Events>
+struct event_bits;
+template <class... Es>
+struct event_bits<type_list<Es...>> {
+    static constexpr unsigned index = bits_for(static_cast<int>(sizeof...(Es)) + 1);
+    template <class E>
+    static constexpr std::size_t payload_of() {
+        if constexpr (std::is_same_v<E, action_failed> || !encodable<E>)
+            return 0;
+        else
+            return encoded_bits<E>();
     }
+    static constexpr std::size_t payload = std::max({std::size_t{0}, payload_of<Es>()...});
+    static constexpr std::size_t size = index + payload;
+};
+
+template <class Machine>
+constexpr std::size_t pending_bits() {
+    using pending = pending_layout<Machine>;
+    using slot = event_bits<typename machine_model<Machine>::events>;
+    std::size_t bits = 0;
+    if constexpr (pending::defers)
+        bits += 1 + bits_for(static_cast<int>(pending::deferred_capacity) + 1) + pending::deferred_capacity * slot::size;
+    if constexpr (pending::delays)
+        bits += bits_for(static_cast<int>(pending::delayed_capacity) + 1) + pending::delayed_capacity * (64 + 32 + slot::size);
+    return bits;
+}
+
+template <class Machine>
+constexpr std::size_t machine_bits() {
+    static_assert(pending_layout<Machine>::checked || true);
+    std::size_t config = 0;
+    for (unsigned b : slot_bits<Machine>()) config += b;
+    constexpr std::size_t timeouts = std::remove_cvref_t<decltype(access::armed(std::declval<Machine&>()))>{}.size();
+    return config + cycle_bits * timeouts + pending_bits<Machine>() + encoded_bits<typename Machine::context_type>();
 }
 
 template <class T>
 constexpr std::size_t encoded_size() {
     return (encoded_bits<T>() + 7) / 8;
 }
-
-template <class T>
-void encode(T const& value, bit_writer& out, time_frame frame);
-template <class T>
-void decode(T& value, bit_reader& in, time_frame frame);
 
 template <class V>
 void encode_value(V const& v, bit_writer& out) {
@@ -220,57 +240,237 @@ V decode_value(bit_reader& in) {
     }
 }
 
-template <class T>
-void encode(T const& value, bit_writer& out, time_frame frame) {
-    if constexpr (verify::unexplored<T>) {
+// Writes a state's bits. With a list of fields, also records where each named leaf lies (names
+// joined by '.', array elements as name[i]).
+struct encode_visitor {
+    bit_writer& out;
+    time_frame frame;
+    std::vector<encoded_field>* fields = nullptr;
+    std::string path{};
+    std::vector<std::size_t> scopes{};
+
+    static constexpr bool named = true;
+    std::string element_name(std::string_view name, std::size_t i) const {
+        return std::string{name} + "[" + std::to_string(i) + "]";
+    }
+    void enter(std::string_view name) {
+        scopes.push_back(path.size());
+        if (!name.empty()) path += (path.empty() ? "" : ".") + std::string{name};
+    }
+    void leave() {
+        path.resize(scopes.back());
+        scopes.pop_back();
+    }
+    std::string full(std::string_view name) const {
+        if (path.empty()) return std::string{name};
+        return name.empty() ? path : path + "." + std::string{name};
+    }
+    void record(std::string_view name, std::size_t first) {
+        if (fields != nullptr && out.bits() > first) fields->push_back({full(name), first, out.bits() - first});
+    }
+
+    template <class T, class Name>
+    void leaf(T const& value, Name const& name);
+};
+
+template <class Machine>
+void encode_machine(Machine const& value, encode_visitor& v);
+
+template <class T, class Name>
+void encode_visitor::leaf(T const& value, Name const& name) {
+    using U = std::remove_cv_t<T>;
+    constexpr member_kind k = kind_of<U>();
+    std::size_t const first = out.bits();
+    if constexpr (k == member_kind::machine) {
+        enter(name);
+        encode_machine(value, *this);
+        leave();
         return;
-    } else if constexpr (is_machine<T>) {
-        auto& m = const_cast<T&>(value);
-        auto const cfg = access::canonical_configuration(m);
-        constexpr auto bits = slot_bits<T>();
-        for (std::size_t k = 0; k < bits.size(); ++k) out.put(cfg.active[k], bits[k]);
-        time_frame const own{access::clock(m), frame.period};
-        encode(m.context(), out, own);
-        auto const& armed = access::armed(m);
-        for (std::size_t i = 0; i < armed.size(); ++i)
-            out.put(access::timeout_armed(m, i)
-                        ? own.cycles(armed[i], access::longest_timeout(m))
-                        : 0,
-                    cycle_bits);
-    } else if constexpr (std::is_same_v<T, timer>) {
+    } else if constexpr (k == member_kind::timer) {
         out.put(access::timer_phase(value), 2);
         out.put(value.expired() ? 1u : 0u, 1);
         bool const timing = access::timer_phase(value) == 2;  // running, expired or not
         out.put(timing ? frame.cycles(access::timer_started(value), value.limit()) : 0, cycle_bits);
-    } else if constexpr (is_channel<T>) {
-        encode(value.pending(), out, frame);  // a channel of an aggregate: member by member too
-        encode(value.get(), out, frame);
-    } else if constexpr (is_aggregate_class<T>()) {
-        bsc::detail::for_each_field(value, [&](auto const& field) { encode(field, out, frame); });
+    } else if constexpr (k == member_kind::channel) {
+        encode_visitor quiet{out, frame};  // a channel of an aggregate: member by member too
+        walk(value.pending(), quiet, std::string_view{});
+        walk(value.get(), quiet, std::string_view{});
     } else {
         encode_value(value, out);
+    }
+    record(name, first);
+}
+
+template <class T>
+void encode(T const& value, bit_writer& out, time_frame frame, std::vector<encoded_field>* fields = nullptr) {
+    encode_visitor v{out, frame, fields};
+    walk(value, v, std::string_view{});
+}
+
+template <class Events, class Item>
+void encode_event(Item const& item, bit_writer& out, time_frame frame) {
+    using slot = event_bits<Events>;
+    std::size_t const end = out.bits() + slot::size;
+    out.put(item.index(), slot::index);
+    std::visit(
+        [&]<class E>(E const& e) {
+            if constexpr (!std::is_same_v<E, std::monostate> && !std::is_same_v<E, action_failed>) encode(e, out, frame);
+        },
+        item);
+    while (out.bits() < end) out.put(0, static_cast<unsigned>(std::min<std::size_t>(end - out.bits(), 32)));
+}
+
+inline void skip_bits(bit_writer& out, std::size_t n) {
+    while (n > 0) {
+        unsigned const k = static_cast<unsigned>(std::min<std::size_t>(n, 32));
+        out.put(0, k);
+        n -= k;
+    }
+}
+inline void skip_bits(bit_reader& in, std::size_t n) {
+    while (n > 0) {
+        unsigned const k = static_cast<unsigned>(std::min<std::size_t>(n, 32));
+        (void)in.get(k);
+        n -= k;
+    }
+}
+
+template <class Machine>
+void encode_pending(Machine const& value, bit_writer& out, time_frame own) {
+    using pending = pending_layout<Machine>;
+    using events = typename machine_model<Machine>::events;
+    using slot = event_bits<events>;
+    auto& m = const_cast<Machine&>(value);
+    if constexpr (pending::defers) {
+        auto const& deferred = access::deferred(m);
+        out.put(access::deferral_pending_retry(m) ? 1u : 0u, 1);
+        out.put(deferred.size(), bits_for(static_cast<int>(pending::deferred_capacity) + 1));
+        deferred.for_each_held([&](auto const& item) { encode_event<events>(item, out, own); });
+        skip_bits(out, (pending::deferred_capacity - deferred.size()) * slot::size);
+    }
+    if constexpr (pending::delays) {
+        auto const& queue = access::queue(m);
+        std::size_t count = 0;
+        queue.for_each_scheduled([&](duration, int, auto const&) { ++count; });
+        out.put(count, bits_for(static_cast<int>(pending::delayed_capacity) + 1));
+        queue.for_each_scheduled([&](duration due, int id, auto const& item) {
+            auto const left = static_cast<std::uint64_t>((due - own.clock).count());  // the time left
+            out.put(left & 0xffffffffu, 32);
+            out.put(left >> 32, 32);
+            out.put(static_cast<std::uint32_t>(id), 32);
+            encode_event<events>(item, out, own);
+        });
+        skip_bits(out, (pending::delayed_capacity - count) * (64 + 32 + slot::size));
+    }
+}
+
+template <class Machine>
+void encode_machine(Machine const& value, encode_visitor& v) {
+    auto& m = const_cast<Machine&>(value);
+    bit_writer& out = v.out;
+    std::size_t first = out.bits();
+    auto const cfg = access::canonical_configuration(m);
+    constexpr auto bits = slot_bits<Machine>();
+    for (std::size_t k = 0; k < bits.size(); ++k) out.put(cfg.active[k], bits[k]);
+    v.record("configuration", first);
+    time_frame const own{access::clock(m), v.frame.period};
+    first = out.bits();
+    auto const& armed = access::armed(m);
+    for (std::size_t i = 0; i < armed.size(); ++i)
+        out.put(access::timeout_armed(m, i) ? own.cycles(armed[i], access::longest_timeout(m)) : 0, cycle_bits);
+    v.record("timeouts", first);
+    first = out.bits();
+    encode_pending(value, out, own);
+    v.record("pending events", first);
+    encode_visitor inner{out, own, v.fields, v.path};
+    walk(value.context(), inner, std::string_view{});
+}
+
+struct decode_visitor {
+    bit_reader& in;
+    time_frame frame;
+    template <class T>
+    void leaf(T& value, no_name);
+};
+
+template <class T>
+void decode(T& value, bit_reader& in, time_frame frame) {
+    decode_visitor v{in, frame};
+    walk(value, v);
+}
+
+template <class Events, class Item>
+Item decode_event(bit_reader& in, time_frame frame) {
+    using slot = event_bits<Events>;
+    std::size_t const end = in.bits() + slot::size;
+    auto const index = static_cast<int>(in.get(slot::index));
+    Item item{};
+    if (index > 0 && index < static_cast<int>(std::variant_size_v<Item>))
+        visit_index<static_cast<int>(std::variant_size_v<Item>)>(index, [&](auto i) {
+            using E = std::variant_alternative_t<decltype(i)::value, Item>;
+            if constexpr (!std::is_same_v<E, std::monostate> && !std::is_same_v<E, action_failed> &&
+                          std::is_default_constructible_v<E>) {
+                E e{};
+                decode(e, in, frame);
+                item.template emplace<decltype(i)::value>(e);
+            }
+        });
+    skip_bits(in, end - in.bits());
+    return item;
+}
+
+template <class Machine>
+void decode_pending(Machine& m, bit_reader& in, time_frame frame) {
+    using pending = pending_layout<Machine>;
+    using events = typename machine_model<Machine>::events;
+    using slot = event_bits<events>;
+    if constexpr (pending::defers) {
+        auto& deferred = access::deferred(m);
+        using item_type = typename std::remove_cvref_t<decltype(deferred)>::value_type;
+        bool const retry = in.get(1) != 0;
+        auto const count = static_cast<std::size_t>(in.get(bits_for(static_cast<int>(pending::deferred_capacity) + 1)));
+        deferred.clear();
+        deferred.clear_overflow();
+        for (std::size_t i = 0; i < count; ++i) (void)deferred.push_item(decode_event<events, item_type>(in, frame));
+        skip_bits(in, (pending::deferred_capacity - count) * slot::size);
+        access::set_deferral_pending_retry(m, retry);
+    }
+    if constexpr (pending::delays) {
+        auto& queue = access::queue(m);
+        using item_type = typename std::remove_cvref_t<decltype(queue)>::value_type;
+        auto const count = static_cast<std::size_t>(in.get(bits_for(static_cast<int>(pending::delayed_capacity) + 1)));
+        queue.clear_scheduled();
+        queue.set_clock(frame.clock);
+        for (std::size_t i = 0; i < count; ++i) {
+            std::uint64_t left = in.get(32);
+            left |= in.get(32) << 32;
+            auto const id = static_cast<int>(static_cast<std::uint32_t>(in.get(32)));
+            auto const item = decode_event<events, item_type>(in, frame);
+            (void)queue.put_scheduled(frame.clock + duration{static_cast<duration::rep>(left)}, id, item);
+        }
+        skip_bits(in, (pending::delayed_capacity - count) * (64 + 32 + slot::size));
     }
 }
 
 template <class T>
-void decode(T& value, bit_reader& in, time_frame frame) {
-    if constexpr (verify::unexplored<T>) {
-        return;
-    } else if constexpr (is_machine<T>) {
+void decode_visitor::leaf(T& value, no_name) {
+    using U = std::remove_cv_t<T>;
+    constexpr member_kind k = kind_of<U>();
+    if constexpr (k == member_kind::machine) {
         auto& cfg = access::configuration(value);
-        constexpr auto bits = slot_bits<T>();
-        for (std::size_t k = 0; k < bits.size(); ++k) cfg.active[k] = static_cast<std::uint8_t>(in.get(bits[k]));
+        constexpr auto bits = slot_bits<U>();
+        for (std::size_t s = 0; s < bits.size(); ++s) cfg.active[s] = static_cast<std::uint8_t>(in.get(bits[s]));
         access::set_clock(value, frame.clock);
+        for (auto& armed : access::armed(value)) armed = frame.before(in.get(cycle_bits));
+        decode_pending(value, in, frame);
         decode(value.context(), in, frame);
-        for (auto& armed : access::armed(value))
-            armed = frame.before(in.get(cycle_bits));
-    } else if constexpr (std::is_same_v<T, timer>) {
+    } else if constexpr (k == member_kind::timer) {
         auto const phase = static_cast<std::uint8_t>(in.get(2));
         bool const expired = in.get(1) != 0;
         auto const started = frame.before(in.get(cycle_bits));
         access::set_timer(value, phase, expired, started, frame.clock - started);
-    } else if constexpr (is_channel<T>) {
-        using V = channel_value<T>;
+    } else if constexpr (k == member_kind::channel) {
+        using V = channel_value<U>;
         V pending = value.pending();
         V current = value.get();
         decode(pending, in, frame);
@@ -279,10 +479,8 @@ void decode(T& value, bit_reader& in, time_frame frame) {
         access::latch(value);
         access::commit(value);
         value.set(pending);
-    } else if constexpr (is_aggregate_class<T>()) {
-        bsc::detail::for_each_field(value, [&](auto& field) { decode(field, in, frame); });
     } else {
-        value = decode_value<T>(in);
+        value = decode_value<U>(in);
     }
 }
 

@@ -15,8 +15,11 @@
 //   std::string label(std::uint16_t) const;              // for traces
 //   std::string describe(state const&) const;            // for traces: the configuration by name
 //   duration period() const;                             // optional: the time of a step, for traces
+//   std::vector<detail::encoded_field> fields() const;   // optional: the named parts of a key, for
+//                                                        // the report of an exploration a bound stopped
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -25,12 +28,21 @@
 #include <string>
 #include <vector>
 
+#include <bsc/detail/key_field.hpp>
+
 namespace bsc::verify {
 
 /// Bounds that stop exploration with a report instead of exhausting the machine.
 struct limits {
     std::size_t max_states = 20'000'000;
     std::size_t max_memory_bytes = std::size_t{8} << 30;
+};
+
+/// A part of the explored state (a member of a context, a machine's configuration, timeouts or
+/// pending events) and the number of distinct values it took in the states found.
+struct member_spread {
+    std::string name;
+    std::size_t values = 0;
 };
 
 /// What an exploration did.
@@ -43,6 +55,21 @@ struct statistics {
     std::size_t key_bytes = 0;     ///< bytes stored per state for its encoding
     bool complete = false;         ///< false if a bound stopped exploration
     std::string stopped_by;        ///< which bound, if any
+    /// When a bound stopped exploration: the parts of the state that took the most distinct
+    /// values, most first (at most five), to say what multiplied the states
+    /// (docs/verification.md: leaving a member out of the state).
+    std::vector<member_spread> widest;
+
+    /// "filled_count: 5,633,072 values; configuration: 12 values": the widest parts, or empty.
+    std::string widest_text() const {
+        std::string out;
+        for (auto const& w : widest) {
+            std::string n = std::to_string(w.values);
+            for (auto i = static_cast<std::ptrdiff_t>(n.size()) - 3; i > 0; i -= 3) n.insert(static_cast<std::size_t>(i), ",");
+            out += (out.empty() ? "" : "; ") + w.name + ": " + n + " values";
+        }
+        return out;
+    }
 };
 
 /// How far an exploration has got: what a progress callback receives.
@@ -112,6 +139,8 @@ public:
         stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         stats_.memory_bytes = memory();
         stats_.key_bytes = key_size;
+        if constexpr (requires { model_.fields(); })
+            if (!stats_.complete) stats_.widest = widest_fields(model_.fields());
         if (report_) report_progress(expanded, start, true);
         return stats_;
     }
@@ -177,6 +206,37 @@ private:
             bigger[slot] = i;
         }
         table_.swap(bigger);
+    }
+
+    // The bits [first, first + n) of key i: the value itself up to 64 bits, a hash of them beyond.
+    std::uint64_t bits_of(std::size_t i, std::size_t first, std::size_t n) const {
+        std::byte const* k = key(i);
+        std::uint64_t value = 0;
+        std::uint64_t hash = 0xcbf29ce484222325ull;
+        for (std::size_t b = 0; b < n; ++b) {
+            std::size_t const at = first + b;
+            auto const bit = (static_cast<unsigned>(k[at / 8]) >> (at % 8)) & 1u;
+            if (n <= 64) value |= std::uint64_t{bit} << b;
+            else hash = (hash ^ bit ^ (b << 1)) * 0x100000001b3ull;
+        }
+        return n <= 64 ? value : hash;
+    }
+
+    // The named parts of the states found, those with the most distinct values first.
+    std::vector<member_spread> widest_fields(std::vector<detail::encoded_field> const& fields) const {
+        std::vector<member_spread> spread;
+        std::vector<std::uint64_t> values(count());
+        for (auto const& f : fields) {
+            for (std::size_t i = 0; i < count(); ++i) values[i] = bits_of(i, f.first_bit, f.bits);
+            std::sort(values.begin(), values.end());
+            auto const distinct = static_cast<std::size_t>(std::unique(values.begin(), values.end()) - values.begin());
+            if (distinct > 1) spread.push_back({f.name, distinct});
+        }
+        std::sort(spread.begin(), spread.end(), [](auto const& a, auto const& b) {
+            return a.values != b.values ? a.values > b.values : a.name < b.name;
+        });
+        if (spread.size() > 5) spread.resize(5);
+        return spread;
     }
 
     std::size_t memory() const {

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <bsc/detail/type_name.hpp>
 #include <bsc/event_name.hpp>
@@ -35,6 +36,14 @@ struct codec {
         detail::encode(s, writer, time_frame{origin + period, period});
         if (writer.bits() != encoded_bits<T>()) std::abort();  // the size computed from the types is exact
     }
+    // The named parts of a key, found by encoding a state of the model.
+    std::vector<encoded_field> fields(T const& s) const {
+        std::vector<std::byte> scratch(key_size);
+        bit_writer writer{scratch.data(), encoded_bits<T>()};
+        std::vector<encoded_field> out;
+        detail::encode(s, writer, time_frame{origin + period, period}, &out);
+        return out;
+    }
     T decode(T prototype, std::byte const* in) const {
         bit_reader reader{in, encoded_bits<T>()};
         detail::decode(prototype, reader, time_frame{origin, period});
@@ -42,22 +51,39 @@ struct codec {
         return prototype;
     }
 };
+// What every model of a bsc state keeps and does alike: the initial state, and its states
+// encoded and decoded by the codec.
+template <class State>
+class encoded_model {
+public:
+    using state = State;
+    static constexpr std::size_t key_size = codec<State>::key_size;
+
+    state initial() const { return initial_; }
+    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
+    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
+    std::vector<encoded_field> fields() const { return codec_.fields(initial_); }
+
+protected:
+    encoded_model(State initial, duration period) : initial_(std::move(initial)), codec_{period} {}
+    duration step_period() const { return codec_.period; }
+
+private:
+    State initial_;
+    codec<State> codec_;
+};
 }  // namespace bsc::detail
 
 namespace bsc::verify {
 
 /// Offers each of the events Es... to the machine in every state (dispatch).
 template <class Machine, class... Es>
-class event_model {
+class event_model : public detail::encoded_model<Machine> {
 public:
     using state = Machine;
-    static constexpr std::size_t key_size = detail::codec<Machine>::key_size;
 
-    explicit event_model(Machine initial) : initial_(std::move(initial)) {}
+    explicit event_model(Machine initial) : detail::encoded_model<Machine>(std::move(initial), duration{}) {}
 
-    state initial() const { return initial_; }
-    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
-    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
     template <class Emit>
     void successors(state const& s, Emit&& emit) const {
         std::uint16_t label = 0;
@@ -74,10 +100,6 @@ public:
         return std::string(names[i]);
     }
     std::string describe(state const& s) const { return s.active_states().joined(); }
-
-private:
-    Machine initial_;
-    detail::codec<Machine> codec_{};
 };
 
 // The label of a cycle_model's choice when the user gives none.
@@ -90,83 +112,69 @@ struct numbered_inputs {
 /// names an alternative in traces; written as `name=value` words ("P1=1 S1=0"), a trace shows
 /// only the words that changed from one step to the next (verdict::to_string).
 template <class Machine, class Apply, class Label = numbered_inputs>
-class cycle_model {
+class cycle_model : public detail::encoded_model<Machine> {
 public:
     using state = Machine;
-    static constexpr std::size_t key_size = detail::codec<Machine>::key_size;
 
     cycle_model(Machine initial, duration period, std::size_t choices, Apply apply, Label label = {})
-        : initial_(std::move(initial)),
+        : detail::encoded_model<Machine>(std::move(initial), period),
           choices_(choices),
           apply_(std::move(apply)),
-          label_(std::move(label)),
-          codec_{period} {}
+          label_(std::move(label)) {}
 
-    state initial() const { return initial_; }
-    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
-    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
     template <class Emit>
     void successors(state const& s, Emit&& emit) const {
         for (std::size_t c = 0; c < choices_; ++c) {
             state next = s;
             apply_(next.context(), c);
-            next.step(detail::origin + codec_.period);
+            next.step(detail::origin + period());
             emit(static_cast<std::uint16_t>(c), next);
         }
     }
     std::string label(std::uint16_t i) const { return label_(i); }
     std::string describe(state const& s) const { return s.active_states().joined(); }
     /// The time between two cycles: a trace's step k is at k periods.
-    duration period() const { return codec_.period; }
+    duration period() const { return this->step_period(); }
 
 private:
-    Machine initial_;
     std::size_t choices_;
     Apply apply_;
     Label label_;
-    detail::codec<Machine> codec_;
 };
 
 /// A closed system: an aggregate `System` of machines and plant data, advanced by
 /// `step(system, choice, now)` for each of `choices` alternatives per cycle. `describe`
 /// names a system state for traces; `label(choice)` names an alternative.
 template <class System, class Step, class Describe, class Label>
-class system_model {
+class system_model : public detail::encoded_model<System> {
 public:
     using state = System;
-    static constexpr std::size_t key_size = detail::codec<System>::key_size;
 
     system_model(System initial, duration period, std::size_t choices, Step step, Describe describe, Label label)
-        : initial_(std::move(initial)),
+        : detail::encoded_model<System>(std::move(initial), period),
           choices_(choices),
           step_(std::move(step)),
           describe_(std::move(describe)),
-          label_(std::move(label)),
-          codec_{period} {}
+          label_(std::move(label)) {}
 
-    state initial() const { return initial_; }
-    void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
-    state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
     template <class Emit>
     void successors(state const& s, Emit&& emit) const {
         for (std::size_t c = 0; c < choices_; ++c) {
             state next = s;
-            step_(next, c, detail::origin + codec_.period);
+            step_(next, c, detail::origin + period());
             emit(static_cast<std::uint16_t>(c), next);
         }
     }
     std::string label(std::uint16_t i) const { return label_(i); }
     std::string describe(state const& s) const { return describe_(s); }
     /// The time between two steps: a trace's step k is at k periods.
-    duration period() const { return codec_.period; }
+    duration period() const { return this->step_period(); }
 
 private:
-    System initial_;
     std::size_t choices_;
     Step step_;
     Describe describe_;
     Label label_;
-    detail::codec<System> codec_;
 };
 
 }  // namespace bsc::verify

@@ -146,7 +146,9 @@ std::vector<verify::trace_step> path_to(verify::explorer<Model> const& ex, std::
 
 template <class Model>
 verify::verdict incomplete(verify::explorer<Model> const& ex, std::string property) {
-    verify::verdict v{std::move(property), verify::verdict::status::inconclusive, {}, "exploration stopped by " + ex.stats().stopped_by};
+    std::string why = "exploration stopped by " + ex.stats().stopped_by;
+    if (!ex.stats().widest.empty()) why += "; the parts of the state with the most distinct values: " + ex.stats().widest_text();
+    verify::verdict v{std::move(property), verify::verdict::status::inconclusive, {}, std::move(why)};
     return v;
 }
 
