@@ -123,10 +123,10 @@ struct pending_events_not_encoded {
                       "bsc: a machine of this Chart keeps events from one call to the next (deferred by / "
                       "bsc::defer, or sent by bsc::raise_after), and the explorer (bsc::verify), bsc::save / "
                       "bsc::restore and bsc::net encode them with the rest of its state; this Event cannot be "
-                      "encoded: each of its members (at any depth) must be bool, an integer, an enum with a "
-                      "fixed underlying type, float, double, a std::chrono::duration, or a std::array or struct "
-                      "of them (a std::string cannot); change the event, or leave the chart's machine out of "
-                      "what is saved and explored");
+                      "encoded: it must be default-constructible, and each of its members (at any depth) bool, "
+                      "an integer, an enum with a fixed underlying type, float, double, a std::chrono::duration, "
+                      "or a std::array or struct of them (a std::string cannot); change the event, or leave the "
+                      "chart's machine out of what is saved and explored");
     }
 };
 

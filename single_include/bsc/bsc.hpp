@@ -280,10 +280,10 @@ struct pending_events_not_encoded {
                       "bsc: a machine of this Chart keeps events from one call to the next (deferred by / "
                       "bsc::defer, or sent by bsc::raise_after), and the explorer (bsc::verify), bsc::save / "
                       "bsc::restore and bsc::net encode them with the rest of its state; this Event cannot be "
-                      "encoded: each of its members (at any depth) must be bool, an integer, an enum with a "
-                      "fixed underlying type, float, double, a std::chrono::duration, or a std::array or struct "
-                      "of them (a std::string cannot); change the event, or leave the chart's machine out of "
-                      "what is saved and explored");
+                      "encoded: it must be default-constructible, and each of its members (at any depth) bool, "
+                      "an integer, an enum with a fixed underlying type, float, double, a std::chrono::duration, "
+                      "or a std::array or struct of them (a std::string cannot); change the event, or leave the "
+                      "chart's machine out of what is saved and explored");
     }
 };
 
@@ -5540,7 +5540,6 @@ private:
 // visitors and never classify a type themselves.
 
 #include <array>
-#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -5977,41 +5976,43 @@ namespace bsc::detail {
 template <class T>
 inline T* never_read = nullptr;
 
-// Converts to any member type: a value (preferred: the probe is an rvalue) or, for a member that
-// is a reference, an lvalue of the referenced type.
+// Converts to any member type, so that T{any_field{}...} initialises T's members one by one:
+// - a type that can be moved, as an xvalue: a member whose constructor template takes anything
+//   (std::optional, std::any) then takes the probe itself, an exact match, rather than being
+//   left between that constructor and a conversion;
+// - a type that cannot be moved (std::atomic), as a prvalue, which initialises it in place;
+// - a member that is a reference, as an lvalue.
 struct any_field {
     template <class T>
         requires(!std::is_same_v<T, any_field> && std::is_move_constructible_v<T>)
-    constexpr operator T() && {
+    constexpr operator T&&() const&& {
         return static_cast<T&&>(*never_read<T>);
     }
     template <class T>
         requires(!std::is_same_v<T, any_field> && !std::is_move_constructible_v<T>)
-    constexpr operator T() &&;  // (a member that cannot be moved has no constructor template to instantiate it)
+    constexpr operator T() &&;  // (nothing instantiates it: such a member has no constructor template to)
     template <class T>
+        requires(!std::is_same_v<T, any_field>)
     constexpr operator T&() const& {
         return *never_read<T>;
     }
 };
-// Converts to values only: it cannot initialise a reference member.
+// As any_field, but to values only: it cannot initialise a member that is a non-const reference.
 struct any_value_field {
     template <class T>
-    constexpr operator T() const;
+        requires(!std::is_same_v<T, any_value_field> && std::is_move_constructible_v<T>)
+    constexpr operator T&&() const&& {
+        return static_cast<T&&>(*never_read<T>);
+    }
+    template <class T>
+        requires(!std::is_same_v<T, any_value_field> && !std::is_move_constructible_v<T>)
+    constexpr operator T() &&;
 };
 
 template <class T, class Probe, std::size_t... I>
 constexpr bool brace_constructible(std::index_sequence<I...>) {
     return requires { T{(void(I), Probe{})...}; };
 }
-
-// Converts to lvalues only: a member such as std::optional<T>, whose constructor template also
-// takes any_field (as a T), is then initialised by its copy constructor alone.
-struct any_lvalue_field {
-    template <class T>
-    constexpr operator T&() const {
-        return *never_read<T>;
-    }
-};
 
 // The members initialised one by one: exact for an aggregate that is default-constructible (any
 // shorter list of initialisers is valid too).
@@ -6046,18 +6047,9 @@ constexpr std::size_t field_count_by() {
         return largest_field_count<T, Probe, leading + 1, (sizeof(T) < max_fields ? sizeof(T) : max_fields)>(leading);
 }
 
-// The count by either probe, whichever initialises more: the value probe for members that cannot
-// be copied (std::unique_ptr, std::atomic), the lvalue probe for members whose constructor
-// templates make the value probe ambiguous (std::optional, std::any).
 template <class T>
 constexpr std::size_t field_count() {
-    constexpr std::size_t by_value = field_count_by<T, any_field>();
-    if constexpr (by_value > max_fields)
-        return by_value;
-    else {
-        constexpr std::size_t by_lvalue = field_count_by<T, any_lvalue_field>();
-        return by_value > by_lvalue ? by_value : by_lvalue;
-    }
+    return field_count_by<T, any_field>();
 }
 
 /// Whether an aggregate has a member that is a non-const lvalue reference (a const one binds a
@@ -6367,29 +6359,44 @@ constexpr aggregate_problem problem_of_aggregate() {
         return aggregate_problem::none;
 }
 
-template <class T>
-constexpr member_kind kind_of();
+// Whether T is, or may hold, a channel, a timer or a machine, looking Depth levels deep through
+// members, elements, pointers and template arguments: what a type bsc cannot look into must not
+// hide. Its own classification, not kind_of's, and bounded, so that a type that holds itself
+// (a node with a pointer to the next, a tree of std::vector<node>) is asked a finite question.
+// Only complete types are asked (a pointer to an incomplete type hides nothing).
+inline constexpr int hiding_depth = 4;
 
-// Whether T is, or may hold, a channel, a timer or a machine: what a type bsc cannot look into
-// must not hide. Only complete types are asked (a pointer to an incomplete type hides nothing).
-template <class T>
+template <class T, int Depth>
 constexpr bool may_hold_state();
 
-template <class T>
+template <int Depth, class T>
 struct hides_in_arguments : std::false_type {};
-template <template <class...> class Template, class... Arguments>
-struct hides_in_arguments<Template<Arguments...>> : std::bool_constant<(may_hold_state<Arguments>() || ...)> {};
+template <int Depth, template <class...> class Template, class... Arguments>
+struct hides_in_arguments<Depth, Template<Arguments...>>
+    : std::bool_constant<(may_hold_state<Arguments, Depth>() || ...)> {};
+template <int Depth, template <class, auto, auto...> class Template, class Element, auto Value, auto... Values>
+struct hides_in_arguments<Depth, Template<Element, Value, Values...>>  // a static_vector<T, N>, a std::span<T, N>
+    : std::bool_constant<may_hold_state<Element, Depth>()> {};
 
-template <class T>
+template <class T, int Depth>
 constexpr bool may_hide_state() {
-    if constexpr (std::is_pointer_v<T>)
-        return may_hold_state<std::remove_cv_t<std::remove_pointer_t<T>>>();
-    else if constexpr (std::is_union_v<T>)
+    using pointee = std::remove_cv_t<std::remove_pointer_t<T>>;
+    if constexpr (std::is_pointer_v<T>) {  // (a pointer to a machine is a handle on another actor)
+        if constexpr (!requires { sizeof(pointee); })
+            return false;
+        else
+            return !is_machine<pointee> && may_hold_state<pointee, Depth>();
+    } else if constexpr (std::is_union_v<T>) {
         return true;  // bsc cannot see which member is alive
-    else if constexpr (std::is_array_v<T>)
-        return may_hold_state<std::remove_cv_t<std::remove_all_extents_t<T>>>();
-    else
-        return hides_in_arguments<T>::value;
+    } else if constexpr (std::is_array_v<T>) {
+        return may_hold_state<std::remove_cv_t<std::remove_all_extents_t<T>>, Depth>();
+    } else if constexpr (hides_in_arguments<Depth, T>::value) {
+        return true;
+    } else if constexpr (requires { typename T::value_type; }) {  // a container of a class's own
+        return may_hold_state<std::remove_cv_t<typename T::value_type>, Depth>();
+    } else {
+        return false;
+    }
 }
 
 // ---- the rule ------------------------------------------------------------------------------------
@@ -6421,7 +6428,7 @@ constexpr member_kind kind_of() {
         return member_kind::unwalkable;  // <bsc/adapt/hana.hpp> is not included
     else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_union_v<T>)
         return problem_of_aggregate<T>() == aggregate_problem::none ? member_kind::record : member_kind::unwalkable;
-    else if constexpr (may_hide_state<T>())
+    else if constexpr (may_hide_state<T, hiding_depth>())
         return member_kind::unwalkable;
     else
         return member_kind::opaque;
@@ -6458,26 +6465,27 @@ using member_types = decltype(apply_members(std::declval<T&>(), list_member_type
 template <class T>
 inline constexpr std::size_t member_count = []<class... M>(type_list<M...>) { return sizeof...(M); }(member_types<T>{});
 
-template <class T>
+template <class T, int Depth>
 constexpr bool may_hold_state() {
-    if constexpr (!requires { sizeof(T); }) {
+    using U = std::remove_cv_t<T>;
+    if constexpr (Depth <= 0 || !requires { sizeof(U); }) {
+        return false;
+    } else if constexpr (is_machine<U> || is_channel<U> || is_timer<U>) {
+        return true;
+    } else if constexpr (is_std_array<U>) {
+        return may_hold_state<typename U::value_type, Depth - 1>();
+    } else if constexpr (described_by_fields<U> ||
+                         (std::is_class_v<U> && std::is_aggregate_v<U> && !std::is_union_v<U> &&
+                          problem_of_aggregate<U>() == aggregate_problem::none)) {
+        return []<class... M>(type_list<M...>) {
+            return (may_hold_state<M, Depth - 1>() || ...);
+        }(member_types<U>{});
+    } else if constexpr (std::is_class_v<U> && std::is_aggregate_v<U> && !std::is_union_v<U>) {
+        // An aggregate bsc cannot walk is reported where it is a member; held by a template (a
+        // std::vector of them) it is not taken to hide anything.
         return false;
     } else {
-        constexpr member_kind k = kind_of<T>();
-        if constexpr (k == member_kind::machine || k == member_kind::channel || k == member_kind::timer)
-            return true;
-        else if constexpr (k == member_kind::unwalkable)
-            // An aggregate bsc cannot walk is reported where it is a member; held by a template
-            // (a std::vector of them) it is not taken to hide anything.
-            return !(std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_union_v<T>);
-        else if constexpr (k == member_kind::array)
-            return may_hold_state<typename T::value_type>();
-        else if constexpr (k == member_kind::record)
-            return []<class... M>(type_list<M...>) {
-                return (may_hold_state<std::remove_cv_t<M>>() || ...);
-            }(member_types<T>{});
-        else
-            return false;
+        return may_hide_state<U, Depth - 1>();
     }
 }
 
@@ -6977,6 +6985,13 @@ private:
 template <class... Es>
 class event_queue<0, type_list<Es...>> {
 public:
+    using value_type = std::variant<std::monostate, Es...>;
+    template <class F>
+    constexpr void for_each_held(F&&) const {}
+    constexpr bool push_item(value_type const&) {
+        overflowed_ = true;
+        return false;
+    }
     template <class E>
     constexpr bool operator()(E const&) noexcept {
         overflowed_ = true;
@@ -8429,13 +8444,6 @@ template <class Model, class Policy, class Raised>
 struct raise_queue<true, Model, Policy, Raised> {
     using type = typename queue_of<Policy::queue_capacity, typename queued_events<Model, Raised>::type>::type;
 };
-
-// Whether a machine of the chart can keep events from one dispatch to a later one (deferred or
-// delayed events), which neither the explorer's codec nor bsc::save encode.
-template <class Model>
-constexpr bool keeps_pending_events() {
-    return Model::has_deferral || chart_sends_delayed<Model>();
-}
 
 template <class Policy, bool Sends>
 inline constexpr std::size_t delayed_capacity_of = 0;

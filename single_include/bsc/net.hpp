@@ -327,6 +327,11 @@ public:
         if (v >= limit) refuse(fault::invalid_value, at);
         return v < limit ? v : 0;
     }
+    // Passes over what is left up to `to` (padding), or to the end.
+    void skip_to(std::size_t to) {
+        if (to > end_) refuse(fault::truncated, end_);
+        if (to > pos_) pos_ = to < end_ ? to : end_;
+    }
     void refuse(fault f, std::size_t at) {
         if (fault_ == fault::none) {
             fault_ = f;
@@ -402,8 +407,10 @@ constexpr bool encodable_leaf() {
         return has_fixed_underlying_type<U>;
     else if constexpr (k == member_kind::time)
         return kind_of<typename U::rep>() != member_kind::opaque;
+    else if constexpr (k == member_kind::opaque)
+        return std::is_empty_v<U>;  // a tag with constructors holds nothing
     else
-        return k != member_kind::opaque && k != member_kind::unwalkable;
+        return k != member_kind::unwalkable;
 }
 
 // Whether every leaf of T has one, and none is a reference (what lies behind one is not the
@@ -452,6 +459,8 @@ struct size_folder : summing_fold<size_folder> {
             return 1;
         } else if constexpr (k == member_kind::time) {
             return sizeof(typename U::rep);
+        } else if constexpr (k == member_kind::opaque) {
+            return 0;  // empty (encodable_leaf)
         } else {
             return sizeof(U);
         }
@@ -474,7 +483,7 @@ constexpr std::size_t size_of() {
 // bsc::action_failed (which carries an exception, and which no row defers or delays).
 template <class Chart, class E>
 constexpr bool pending_event_encodable() {
-    if constexpr (std::is_same_v<E, action_failed> || encodable<E>)
+    if constexpr (std::is_same_v<E, action_failed> || (encodable<E> && std::is_default_constructible_v<E>))
         return true;
     else
         return detail::report<error::pending_events_not_encoded<Chart, E>>();
@@ -491,8 +500,8 @@ struct event_slot<type_list<Es...>> {
     static constexpr std::size_t index_bytes = sizeof...(Es) + 1 <= 256 ? 1 : 2;
     template <class E>
     static constexpr std::size_t payload_of() {
-        if constexpr (std::is_same_v<E, action_failed> || !encodable<E>)
-            return 0;  // (the second reported by pending_events_encodable)
+        if constexpr (std::is_same_v<E, action_failed> || !encodable<E> || !std::is_default_constructible_v<E>)
+            return 0;  // (the last two reported by pending_events_encodable)
         else
             return size_of<E>();
     }
@@ -728,7 +737,7 @@ void put_pending(byte_writer& w, Machine const& m) {
     auto& machine = const_cast<Machine&>(m);  // access reads through non-const references too
     if constexpr (pending::defers) {
         auto const& deferred = access::deferred(machine);
-        w.put(access::deferral_pending_retry(m) ? 1 : 0, 1);
+        w.put(access::deferral_pending_retry(m) && deferred.size() > 0 ? 1 : 0, 1);
         w.put(deferred.size(), 2);
         deferred.for_each_held([&](auto const& item) { put_event<events>(w, item); });
         for (std::size_t i = deferred.size(); i < pending::deferred_capacity; ++i)
@@ -877,7 +886,7 @@ Item get_event(byte_reader& r) {
             }
         }
     });
-    while (r.position() < end) (void)r.get(1);
+    r.skip_to(end);
     return item;
 }
 

@@ -158,6 +158,11 @@ public:
         if (v >= limit) refuse(fault::invalid_value, at);
         return v < limit ? v : 0;
     }
+    // Passes over what is left up to `to` (padding), or to the end.
+    void skip_to(std::size_t to) {
+        if (to > end_) refuse(fault::truncated, end_);
+        if (to > pos_) pos_ = to < end_ ? to : end_;
+    }
     void refuse(fault f, std::size_t at) {
         if (fault_ == fault::none) {
             fault_ = f;
@@ -202,8 +207,10 @@ constexpr bool encodable_leaf() {
         return has_fixed_underlying_type<U>;
     else if constexpr (k == member_kind::time)
         return kind_of<typename U::rep>() != member_kind::opaque;
+    else if constexpr (k == member_kind::opaque)
+        return std::is_empty_v<U>;  // a tag with constructors holds nothing
     else
-        return k != member_kind::opaque && k != member_kind::unwalkable;
+        return k != member_kind::unwalkable;
 }
 
 // Whether every leaf of T has one, and none is a reference (what lies behind one is not the
@@ -252,6 +259,8 @@ struct size_folder : summing_fold<size_folder> {
             return 1;
         } else if constexpr (k == member_kind::time) {
             return sizeof(typename U::rep);
+        } else if constexpr (k == member_kind::opaque) {
+            return 0;  // empty (encodable_leaf)
         } else {
             return sizeof(U);
         }
@@ -274,7 +283,7 @@ constexpr std::size_t size_of() {
 // bsc::action_failed (which carries an exception, and which no row defers or delays).
 template <class Chart, class E>
 constexpr bool pending_event_encodable() {
-    if constexpr (std::is_same_v<E, action_failed> || encodable<E>)
+    if constexpr (std::is_same_v<E, action_failed> || (encodable<E> && std::is_default_constructible_v<E>))
         return true;
     else
         return detail::report<error::pending_events_not_encoded<Chart, E>>();
@@ -291,8 +300,8 @@ struct event_slot<type_list<Es...>> {
     static constexpr std::size_t index_bytes = sizeof...(Es) + 1 <= 256 ? 1 : 2;
     template <class E>
     static constexpr std::size_t payload_of() {
-        if constexpr (std::is_same_v<E, action_failed> || !encodable<E>)
-            return 0;  // (the second reported by pending_events_encodable)
+        if constexpr (std::is_same_v<E, action_failed> || !encodable<E> || !std::is_default_constructible_v<E>)
+            return 0;  // (the last two reported by pending_events_encodable)
         else
             return size_of<E>();
     }
@@ -528,7 +537,7 @@ void put_pending(byte_writer& w, Machine const& m) {
     auto& machine = const_cast<Machine&>(m);  // access reads through non-const references too
     if constexpr (pending::defers) {
         auto const& deferred = access::deferred(machine);
-        w.put(access::deferral_pending_retry(m) ? 1 : 0, 1);
+        w.put(access::deferral_pending_retry(m) && deferred.size() > 0 ? 1 : 0, 1);
         w.put(deferred.size(), 2);
         deferred.for_each_held([&](auto const& item) { put_event<events>(w, item); });
         for (std::size_t i = deferred.size(); i < pending::deferred_capacity; ++i)
@@ -677,7 +686,7 @@ Item get_event(byte_reader& r) {
             }
         }
     });
-    while (r.position() < end) (void)r.get(1);
+    r.skip_to(end);
     return item;
 }
 
@@ -905,6 +914,8 @@ struct bits_folder : summing_fold<bits_folder> {
             return 2 * fold<bits_folder, channel_value<U>>(*this);  // pending and current values
         } else if constexpr (k == member_kind::unwalkable) {
             return 0;  // reported by the member layer
+        } else if constexpr (k == member_kind::opaque && std::is_empty_v<U>) {
+            return 0;  // a tag holds nothing
         } else if constexpr (k == member_kind::opaque && !std::is_trivially_copyable_v<U>) {
             detail::report<error::member_not_explorable<U>>();
             return 0;
@@ -966,13 +977,15 @@ template <class V>
 void encode_value(V const& v, bit_writer& out) {
     if constexpr (std::is_same_v<V, bool>)
         out.put(v ? 1u : 0u, 1);
-    else
+    else if constexpr (!std::is_empty_v<V>)
         out.put_bytes(&v, sizeof(V));
 }
 template <class V>
 V decode_value(bit_reader& in) {
     if constexpr (std::is_same_v<V, bool>) {
         return in.get(1) != 0;
+    } else if constexpr (std::is_empty_v<V>) {
+        return V{};
     } else {
         V v;
         in.get_bytes(&v, sizeof(V));
@@ -1083,7 +1096,7 @@ void encode_pending(Machine const& value, bit_writer& out, time_frame own) {
     auto& m = const_cast<Machine&>(value);
     if constexpr (pending::defers) {
         auto const& deferred = access::deferred(m);
-        out.put(access::deferral_pending_retry(m) ? 1u : 0u, 1);
+        out.put(access::deferral_pending_retry(m) && deferred.size() > 0 ? 1u : 0u, 1);
         out.put(deferred.size(), bits_for(static_cast<int>(pending::deferred_capacity) + 1));
         deferred.for_each_held([&](auto const& item) { encode_event<events>(item, out, own); });
         skip_bits(out, (pending::deferred_capacity - deferred.size()) * slot::size);
@@ -1093,13 +1106,28 @@ void encode_pending(Machine const& value, bit_writer& out, time_frame own) {
         std::size_t count = 0;
         queue.for_each_scheduled([&](duration, int, auto const&) { ++count; });
         out.put(count, bits_for(static_cast<int>(pending::delayed_capacity) + 1));
-        queue.for_each_scheduled([&](duration due, int id, auto const& item) {
-            auto const left = static_cast<std::uint64_t>((due - own.clock).count());  // the time left
-            out.put(left & 0xffffffffu, 32);
-            out.put(left >> 32, 32);
-            out.put(static_cast<std::uint32_t>(id), 32);
-            encode_event<events>(item, out, own);
-        });
+        // In the order they come due (and, due together, were sent): two machines that hold the
+        // same events sent in another order behave the same, and encode the same.
+        std::array<std::size_t, pending::delayed_capacity> rank{};
+        std::array<duration, pending::delayed_capacity> dues{};
+        std::size_t sent = 0;
+        queue.for_each_scheduled([&](duration due, int, auto const&) { dues[sent++] = due; });
+        for (std::size_t i = 0; i < count; ++i) {
+            rank[i] = 0;
+            for (std::size_t j = 0; j < count; ++j)
+                if (dues[j] < dues[i] || (dues[j] == dues[i] && j < i)) ++rank[i];
+        }
+        for (std::size_t r = 0; r < count; ++r) {
+            std::size_t k = 0;
+            queue.for_each_scheduled([&](duration due, int id, auto const& item) {
+                if (rank[k++] != r) return;
+                auto const left = static_cast<std::uint64_t>((due - own.clock).count());  // the time left
+                out.put(left & 0xffffffffu, 32);
+                out.put(left >> 32, 32);
+                out.put(static_cast<std::uint32_t>(id), 32);
+                encode_event<events>(item, out, own);
+            });
+        }
         skip_bits(out, (pending::delayed_capacity - count) * (64 + 32 + slot::size));
     }
 }
@@ -1294,7 +1322,8 @@ struct statistics {
     std::string stopped_by;        ///< which bound, if any
     /// When a bound stopped exploration: the parts of the state that took the most distinct
     /// values, most first (at most five), to say what multiplied the states
-    /// (docs/verification.md: leaving a member out of the state).
+    /// (docs/verification.md: leaving a member out of the state). Counted over every state found,
+    /// or over a million of them evenly spaced when more were found.
     std::vector<member_spread> widest;
 
     /// "filled_count: 5,633,072 values; configuration: 12 values": the widest parts, or empty.
@@ -1459,12 +1488,16 @@ private:
         return n <= 64 ? value : hash;
     }
 
-    // The named parts of the states found, those with the most distinct values first.
+    // The named parts of the states found, those with the most distinct values first; counted
+    // over at most spread_sample states, evenly spaced (the report must not cost what the
+    // exploration was stopped for).
+    static constexpr std::size_t spread_sample = 1'000'000;
     std::vector<member_spread> widest_fields(std::vector<detail::encoded_field> const& fields) const {
         std::vector<member_spread> spread;
-        std::vector<std::uint64_t> values(count());
+        std::size_t const stride = count() / spread_sample + 1;
+        std::vector<std::uint64_t> values((count() + stride - 1) / stride);
         for (auto const& f : fields) {
-            for (std::size_t i = 0; i < count(); ++i) values[i] = bits_of(i, f.first_bit, f.bits);
+            for (std::size_t i = 0; i < values.size(); ++i) values[i] = bits_of(i * stride, f.first_bit, f.bits);
             std::sort(values.begin(), values.end());
             auto const distinct = static_cast<std::size_t>(std::unique(values.begin(), values.end()) - values.begin());
             if (distinct > 1) spread.push_back({f.name, distinct});

@@ -20,12 +20,11 @@
 #include "backends.hpp"
 #include "inside.hpp"
 #include "../../examples/elevator/door.hpp"
+#include "../../examples/elevator/model.hpp"
 
 namespace elevator_test {
 
 using namespace std::chrono_literals;
-
-inline constexpr std::array<char const*, 5> happenings = {"nothing", "call 0", "call 1", "overload", "load ok"};
 
 // One scripted step: a happening, then a cycle a second later.
 template <class M>
@@ -125,42 +124,11 @@ TEST_CASE("retain: bytes of format version 1, which held no pending events, are 
     CHECK(result.offset == 4);
 }
 
-namespace elevator_test {
-
-template <class Machine>
-struct car {
-    Machine door;
-};
-
-template <class Machine, auto const& Chart>
-auto model() {
-    auto step = [](car<Machine>& c, std::size_t choice, bsc::duration now) {
-        switch (choice) {
-            case 1: c.door.dispatch(elevator::call{0}, bsc::allow_unhandled); break;
-            case 2: c.door.dispatch(elevator::call{1}, bsc::allow_unhandled); break;
-            case 3: c.door.dispatch(elevator::overload{}, bsc::allow_unhandled); break;
-            case 4: c.door.dispatch(elevator::load_ok{}, bsc::allow_unhandled); break;
-            default: break;
-        }
-        c.door.step(now);
-    };
-    auto describe = [](car<Machine> const& c) { return c.door.active_states().joined(); };
-    auto label = [](std::size_t choice) { return std::string{happenings[choice]}; };
-    return bsc::verify::system_model{car<Machine>{Machine{Chart}}, bsc::duration{1s}, happenings.size(), step, describe, label};
-}
-
-template <class Machine>
-bool door_closed(car<Machine> const& c) {
-    return !c.door.template is<elevator::DoorOpen>();
-}
-
-}  // namespace elevator_test
-
 TEST_CASE("verify: the explorer follows deferred and delayed events, finds the door left open and proves the fix") {
     using namespace elevator_test;
     {
-        bsc::verify::explorer ex{model<elevator::flawed_machine, elevator::flawed>()};
-        auto const v = bsc::verify::always_reachable(ex, "door closed", door_closed<elevator::flawed_machine>);
+        bsc::verify::explorer ex{elevator::closed_car<elevator::flawed_machine, elevator::flawed>()};
+        auto const v = bsc::verify::always_reachable(ex, "door closed", elevator::door_closed<elevator::flawed_machine>);
         REQUIRE(v.fails());
         // A shortest counterexample: the door opens, the car is overloaded when the dwell time ends.
         REQUIRE(v.trace.size() == 4);
@@ -170,8 +138,8 @@ TEST_CASE("verify: the explorer follows deferred and delayed events, finds the d
         CHECK(ex.stats().complete);
     }
     {
-        bsc::verify::explorer ex{model<elevator::deferring_machine, elevator::deferring>()};
-        auto const v = bsc::verify::always_reachable(ex, "door closed", door_closed<elevator::deferring_machine>);
+        bsc::verify::explorer ex{elevator::closed_car<elevator::deferring_machine, elevator::deferring>()};
+        auto const v = bsc::verify::always_reachable(ex, "door closed", elevator::door_closed<elevator::deferring_machine>);
         REQUIRE(v.fails());
         // Two calls deferred while the door is open fill the room the dwell event would need.
         std::size_t calls = 0;
@@ -180,8 +148,8 @@ TEST_CASE("verify: the explorer follows deferred and delayed events, finds the d
         CHECK(calls >= 1 + elevator::policy::deferred_capacity);
     }
     {
-        bsc::verify::explorer ex{model<elevator::fixed_machine, elevator::fixed>()};
-        auto const v = bsc::verify::always_reachable(ex, "door closed", door_closed<elevator::fixed_machine>);
+        bsc::verify::explorer ex{elevator::closed_car<elevator::fixed_machine, elevator::fixed>()};
+        auto const v = bsc::verify::always_reachable(ex, "door closed", elevator::door_closed<elevator::fixed_machine>);
         CHECK_MESSAGE(v.holds(), v.to_string());
         CHECK(ex.stats().complete);
         // Calls wait: some explored state holds a deferred call and a pending delayed event.

@@ -8,9 +8,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <bsc/verify.hpp>
 
@@ -107,6 +111,72 @@ TEST_CASE_TEMPLATE("channels after a reference member of the context are latched
     CHECK(m.template is<rob::Busy>());
     CHECK(m.context().motor.get());
     CHECK(plant.pieces == 1);
+}
+
+namespace rob {
+// A context of what controllers hold besides channels and timers: a list that holds itself, a
+// tree of itself, a handle on another machine, an optional value, an owned buffer, a callback;
+// none hides state, so all compile, and the channels beside them (one in a static vector) run.
+struct list_node {
+    int value = 0;
+    list_node* next = nullptr;
+};
+struct tree_node {
+    std::vector<tree_node> children;
+};
+template <class T, std::size_t N>
+struct static_vector {  // a fixed-capacity container of the kind embedded code uses
+    std::array<T, N> items{};
+    std::size_t size = 0;
+};
+struct tag {  // an event with a constructor and no data
+    tag() {}
+};
+struct peer_data {
+    int pokes = 0;
+};
+struct Peer;
+struct Waiting;
+struct Poked;
+inline constexpr auto peer_chart = bsc::make_chart<peer_data>(
+    bsc::composite<Peer>(bsc::initial<Waiting>, bsc::state<Poked>),
+    bsc::state<Waiting> + bsc::event<go> / [](peer_data& d) { ++d.pokes; } = bsc::state<Poked>,
+    bsc::state<Poked> + bsc::event<go> / [](peer_data& d) { ++d.pokes; } = bsc::state<Waiting>);
+using peer_machine = bsc::machine<bsc::chart_ref<peer_chart>>;
+struct handles_io {
+    list_node head;
+    tree_node tree;
+    peer_machine* peer = nullptr;
+    std::optional<int> last;
+    std::unique_ptr<int> buffer;
+    std::function<void(int)> report;
+    static_vector<bsc::input<int>, 2> levels;  // walked: a struct of a std::array
+    bsc::output<int> total;
+};
+inline constexpr auto handles = bsc::make_chart<handles_io>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+    bsc::state<Idle> + bsc::event<tag> / [](handles_io& c) {
+        c.total.set(c.levels.items[0].get() + c.levels.items[1].get());
+        c.last = c.total.pending();
+        if (c.peer != nullptr) c.peer->dispatch(go{});
+    } = bsc::state<Busy>,
+    bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
+}  // namespace rob
+
+TEST_CASE_TEMPLATE("a context of lists, trees, handles and callbacks runs; its nested channels are latched", Backend,
+                   compiled, table) {
+    rob::peer_machine peer{rob::peer_chart};
+    bsc_test::machine_t<Backend, decltype(rob::handles), bsc::scan_policy> m{rob::handles};
+    m.context().peer = &peer;
+    m.context().levels.items[0].set(2);
+    m.context().levels.items[1].set(5);
+    m.step(0ms);  // latches the levels
+    m.dispatch(rob::tag{});
+    m.step(1ms);  // publishes the total
+    CHECK(m.template is<rob::Busy>());
+    CHECK(m.context().total.get() == 7);
+    CHECK(m.context().last == 7);
+    CHECK(peer.context().pokes == 1);
 }
 
 namespace rob {

@@ -74,6 +74,11 @@ public:
         if (v >= limit) refuse(fault::invalid_value, at);
         return v < limit ? v : 0;
     }
+    // Passes over what is left up to `to` (padding), or to the end.
+    void skip_to(std::size_t to) {
+        if (to > end_) refuse(fault::truncated, end_);
+        if (to > pos_) pos_ = to < end_ ? to : end_;
+    }
     void refuse(fault f, std::size_t at) {
         if (fault_ == fault::none) {
             fault_ = f;

@@ -23,41 +23,43 @@ namespace bsc::detail {
 template <class T>
 inline T* never_read = nullptr;
 
-// Converts to any member type: a value (preferred: the probe is an rvalue) or, for a member that
-// is a reference, an lvalue of the referenced type.
+// Converts to any member type, so that T{any_field{}...} initialises T's members one by one:
+// - a type that can be moved, as an xvalue: a member whose constructor template takes anything
+//   (std::optional, std::any) then takes the probe itself, an exact match, rather than being
+//   left between that constructor and a conversion;
+// - a type that cannot be moved (std::atomic), as a prvalue, which initialises it in place;
+// - a member that is a reference, as an lvalue.
 struct any_field {
     template <class T>
         requires(!std::is_same_v<T, any_field> && std::is_move_constructible_v<T>)
-    constexpr operator T() && {
+    constexpr operator T&&() const&& {
         return static_cast<T&&>(*never_read<T>);
     }
     template <class T>
         requires(!std::is_same_v<T, any_field> && !std::is_move_constructible_v<T>)
-    constexpr operator T() &&;  // (a member that cannot be moved has no constructor template to instantiate it)
+    constexpr operator T() &&;  // (nothing instantiates it: such a member has no constructor template to)
     template <class T>
+        requires(!std::is_same_v<T, any_field>)
     constexpr operator T&() const& {
         return *never_read<T>;
     }
 };
-// Converts to values only: it cannot initialise a reference member.
+// As any_field, but to values only: it cannot initialise a member that is a non-const reference.
 struct any_value_field {
     template <class T>
-    constexpr operator T() const;
+        requires(!std::is_same_v<T, any_value_field> && std::is_move_constructible_v<T>)
+    constexpr operator T&&() const&& {
+        return static_cast<T&&>(*never_read<T>);
+    }
+    template <class T>
+        requires(!std::is_same_v<T, any_value_field> && !std::is_move_constructible_v<T>)
+    constexpr operator T() &&;
 };
 
 template <class T, class Probe, std::size_t... I>
 constexpr bool brace_constructible(std::index_sequence<I...>) {
     return requires { T{(void(I), Probe{})...}; };
 }
-
-// Converts to lvalues only: a member such as std::optional<T>, whose constructor template also
-// takes any_field (as a T), is then initialised by its copy constructor alone.
-struct any_lvalue_field {
-    template <class T>
-    constexpr operator T&() const {
-        return *never_read<T>;
-    }
-};
 
 // The members initialised one by one: exact for an aggregate that is default-constructible (any
 // shorter list of initialisers is valid too).
@@ -92,18 +94,9 @@ constexpr std::size_t field_count_by() {
         return largest_field_count<T, Probe, leading + 1, (sizeof(T) < max_fields ? sizeof(T) : max_fields)>(leading);
 }
 
-// The count by either probe, whichever initialises more: the value probe for members that cannot
-// be copied (std::unique_ptr, std::atomic), the lvalue probe for members whose constructor
-// templates make the value probe ambiguous (std::optional, std::any).
 template <class T>
 constexpr std::size_t field_count() {
-    constexpr std::size_t by_value = field_count_by<T, any_field>();
-    if constexpr (by_value > max_fields)
-        return by_value;
-    else {
-        constexpr std::size_t by_lvalue = field_count_by<T, any_lvalue_field>();
-        return by_value > by_lvalue ? by_value : by_lvalue;
-    }
+    return field_count_by<T, any_field>();
 }
 
 /// Whether an aggregate has a member that is a non-const lvalue reference (a const one binds a

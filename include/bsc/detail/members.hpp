@@ -16,7 +16,6 @@
 // visitors and never classify a type themselves.
 
 #include <array>
-#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -25,6 +24,7 @@
 
 #include <bsc/data/channel.hpp>
 #include <bsc/data/timer.hpp>
+#include <bsc/detail/chrono.hpp>
 #include <bsc/detail/fields.hpp>
 #include <bsc/detail/machine_base.hpp>
 #include <bsc/detail/member_names.hpp>
@@ -126,29 +126,44 @@ constexpr aggregate_problem problem_of_aggregate() {
         return aggregate_problem::none;
 }
 
-template <class T>
-constexpr member_kind kind_of();
+// Whether T is, or may hold, a channel, a timer or a machine, looking Depth levels deep through
+// members, elements, pointers and template arguments: what a type bsc cannot look into must not
+// hide. Its own classification, not kind_of's, and bounded, so that a type that holds itself
+// (a node with a pointer to the next, a tree of std::vector<node>) is asked a finite question.
+// Only complete types are asked (a pointer to an incomplete type hides nothing).
+inline constexpr int hiding_depth = 4;
 
-// Whether T is, or may hold, a channel, a timer or a machine: what a type bsc cannot look into
-// must not hide. Only complete types are asked (a pointer to an incomplete type hides nothing).
-template <class T>
+template <class T, int Depth>
 constexpr bool may_hold_state();
 
-template <class T>
+template <int Depth, class T>
 struct hides_in_arguments : std::false_type {};
-template <template <class...> class Template, class... Arguments>
-struct hides_in_arguments<Template<Arguments...>> : std::bool_constant<(may_hold_state<Arguments>() || ...)> {};
+template <int Depth, template <class...> class Template, class... Arguments>
+struct hides_in_arguments<Depth, Template<Arguments...>>
+    : std::bool_constant<(may_hold_state<Arguments, Depth>() || ...)> {};
+template <int Depth, template <class, auto, auto...> class Template, class Element, auto Value, auto... Values>
+struct hides_in_arguments<Depth, Template<Element, Value, Values...>>  // a static_vector<T, N>, a std::span<T, N>
+    : std::bool_constant<may_hold_state<Element, Depth>()> {};
 
-template <class T>
+template <class T, int Depth>
 constexpr bool may_hide_state() {
-    if constexpr (std::is_pointer_v<T>)
-        return may_hold_state<std::remove_cv_t<std::remove_pointer_t<T>>>();
-    else if constexpr (std::is_union_v<T>)
+    using pointee = std::remove_cv_t<std::remove_pointer_t<T>>;
+    if constexpr (std::is_pointer_v<T>) {  // (a pointer to a machine is a handle on another actor)
+        if constexpr (!requires { sizeof(pointee); })
+            return false;
+        else
+            return !is_machine<pointee> && may_hold_state<pointee, Depth>();
+    } else if constexpr (std::is_union_v<T>) {
         return true;  // bsc cannot see which member is alive
-    else if constexpr (std::is_array_v<T>)
-        return may_hold_state<std::remove_cv_t<std::remove_all_extents_t<T>>>();
-    else
-        return hides_in_arguments<T>::value;
+    } else if constexpr (std::is_array_v<T>) {
+        return may_hold_state<std::remove_cv_t<std::remove_all_extents_t<T>>, Depth>();
+    } else if constexpr (hides_in_arguments<Depth, T>::value) {
+        return true;
+    } else if constexpr (requires { typename T::value_type; }) {  // a container of a class's own
+        return may_hold_state<std::remove_cv_t<typename T::value_type>, Depth>();
+    } else {
+        return false;
+    }
 }
 
 // ---- the rule ------------------------------------------------------------------------------------
@@ -180,7 +195,7 @@ constexpr member_kind kind_of() {
         return member_kind::unwalkable;  // <bsc/adapt/hana.hpp> is not included
     else if constexpr (std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_union_v<T>)
         return problem_of_aggregate<T>() == aggregate_problem::none ? member_kind::record : member_kind::unwalkable;
-    else if constexpr (may_hide_state<T>())
+    else if constexpr (may_hide_state<T, hiding_depth>())
         return member_kind::unwalkable;
     else
         return member_kind::opaque;
@@ -217,26 +232,27 @@ using member_types = decltype(apply_members(std::declval<T&>(), list_member_type
 template <class T>
 inline constexpr std::size_t member_count = []<class... M>(type_list<M...>) { return sizeof...(M); }(member_types<T>{});
 
-template <class T>
+template <class T, int Depth>
 constexpr bool may_hold_state() {
-    if constexpr (!requires { sizeof(T); }) {
+    using U = std::remove_cv_t<T>;
+    if constexpr (Depth <= 0 || !requires { sizeof(U); }) {
+        return false;
+    } else if constexpr (is_machine<U> || is_channel<U> || is_timer<U>) {
+        return true;
+    } else if constexpr (is_std_array<U>) {
+        return may_hold_state<typename U::value_type, Depth - 1>();
+    } else if constexpr (described_by_fields<U> ||
+                         (std::is_class_v<U> && std::is_aggregate_v<U> && !std::is_union_v<U> &&
+                          problem_of_aggregate<U>() == aggregate_problem::none)) {
+        return []<class... M>(type_list<M...>) {
+            return (may_hold_state<M, Depth - 1>() || ...);
+        }(member_types<U>{});
+    } else if constexpr (std::is_class_v<U> && std::is_aggregate_v<U> && !std::is_union_v<U>) {
+        // An aggregate bsc cannot walk is reported where it is a member; held by a template (a
+        // std::vector of them) it is not taken to hide anything.
         return false;
     } else {
-        constexpr member_kind k = kind_of<T>();
-        if constexpr (k == member_kind::machine || k == member_kind::channel || k == member_kind::timer)
-            return true;
-        else if constexpr (k == member_kind::unwalkable)
-            // An aggregate bsc cannot walk is reported where it is a member; held by a template
-            // (a std::vector of them) it is not taken to hide anything.
-            return !(std::is_class_v<T> && std::is_aggregate_v<T> && !std::is_union_v<T>);
-        else if constexpr (k == member_kind::array)
-            return may_hold_state<typename T::value_type>();
-        else if constexpr (k == member_kind::record)
-            return []<class... M>(type_list<M...>) {
-                return (may_hold_state<std::remove_cv_t<M>>() || ...);
-            }(member_types<T>{});
-        else
-            return false;
+        return may_hide_state<U, Depth - 1>();
     }
 }
 

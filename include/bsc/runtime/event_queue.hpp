@@ -204,6 +204,13 @@ private:
 template <class... Es>
 class event_queue<0, type_list<Es...>> {
 public:
+    using value_type = std::variant<std::monostate, Es...>;
+    template <class F>
+    constexpr void for_each_held(F&&) const {}
+    constexpr bool push_item(value_type const&) {
+        overflowed_ = true;
+        return false;
+    }
     template <class E>
     constexpr bool operator()(E const&) noexcept {
         overflowed_ = true;

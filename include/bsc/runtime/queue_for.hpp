@@ -88,13 +88,6 @@ struct raise_queue<true, Model, Policy, Raised> {
     using type = typename queue_of<Policy::queue_capacity, typename queued_events<Model, Raised>::type>::type;
 };
 
-// Whether a machine of the chart can keep events from one dispatch to a later one (deferred or
-// delayed events), which neither the explorer's codec nor bsc::save encode.
-template <class Model>
-constexpr bool keeps_pending_events() {
-    return Model::has_deferral || chart_sends_delayed<Model>();
-}
-
 template <class Policy, bool Sends>
 inline constexpr std::size_t delayed_capacity_of = 0;
 template <class Policy>

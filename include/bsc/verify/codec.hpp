@@ -165,6 +165,8 @@ struct bits_folder : summing_fold<bits_folder> {
             return 2 * fold<bits_folder, channel_value<U>>(*this);  // pending and current values
         } else if constexpr (k == member_kind::unwalkable) {
             return 0;  // reported by the member layer
+        } else if constexpr (k == member_kind::opaque && std::is_empty_v<U>) {
+            return 0;  // a tag holds nothing
         } else if constexpr (k == member_kind::opaque && !std::is_trivially_copyable_v<U>) {
             detail::report<error::member_not_explorable<U>>();
             return 0;
@@ -226,13 +228,15 @@ template <class V>
 void encode_value(V const& v, bit_writer& out) {
     if constexpr (std::is_same_v<V, bool>)
         out.put(v ? 1u : 0u, 1);
-    else
+    else if constexpr (!std::is_empty_v<V>)
         out.put_bytes(&v, sizeof(V));
 }
 template <class V>
 V decode_value(bit_reader& in) {
     if constexpr (std::is_same_v<V, bool>) {
         return in.get(1) != 0;
+    } else if constexpr (std::is_empty_v<V>) {
+        return V{};
     } else {
         V v;
         in.get_bytes(&v, sizeof(V));
@@ -343,7 +347,7 @@ void encode_pending(Machine const& value, bit_writer& out, time_frame own) {
     auto& m = const_cast<Machine&>(value);
     if constexpr (pending::defers) {
         auto const& deferred = access::deferred(m);
-        out.put(access::deferral_pending_retry(m) ? 1u : 0u, 1);
+        out.put(access::deferral_pending_retry(m) && deferred.size() > 0 ? 1u : 0u, 1);
         out.put(deferred.size(), bits_for(static_cast<int>(pending::deferred_capacity) + 1));
         deferred.for_each_held([&](auto const& item) { encode_event<events>(item, out, own); });
         skip_bits(out, (pending::deferred_capacity - deferred.size()) * slot::size);
@@ -353,13 +357,28 @@ void encode_pending(Machine const& value, bit_writer& out, time_frame own) {
         std::size_t count = 0;
         queue.for_each_scheduled([&](duration, int, auto const&) { ++count; });
         out.put(count, bits_for(static_cast<int>(pending::delayed_capacity) + 1));
-        queue.for_each_scheduled([&](duration due, int id, auto const& item) {
-            auto const left = static_cast<std::uint64_t>((due - own.clock).count());  // the time left
-            out.put(left & 0xffffffffu, 32);
-            out.put(left >> 32, 32);
-            out.put(static_cast<std::uint32_t>(id), 32);
-            encode_event<events>(item, out, own);
-        });
+        // In the order they come due (and, due together, were sent): two machines that hold the
+        // same events sent in another order behave the same, and encode the same.
+        std::array<std::size_t, pending::delayed_capacity> rank{};
+        std::array<duration, pending::delayed_capacity> dues{};
+        std::size_t sent = 0;
+        queue.for_each_scheduled([&](duration due, int, auto const&) { dues[sent++] = due; });
+        for (std::size_t i = 0; i < count; ++i) {
+            rank[i] = 0;
+            for (std::size_t j = 0; j < count; ++j)
+                if (dues[j] < dues[i] || (dues[j] == dues[i] && j < i)) ++rank[i];
+        }
+        for (std::size_t r = 0; r < count; ++r) {
+            std::size_t k = 0;
+            queue.for_each_scheduled([&](duration due, int id, auto const& item) {
+                if (rank[k++] != r) return;
+                auto const left = static_cast<std::uint64_t>((due - own.clock).count());  // the time left
+                out.put(left & 0xffffffffu, 32);
+                out.put(left >> 32, 32);
+                out.put(static_cast<std::uint32_t>(id), 32);
+                encode_event<events>(item, out, own);
+            });
+        }
         skip_bits(out, (pending::delayed_capacity - count) * (64 + 32 + slot::size));
     }
 }
