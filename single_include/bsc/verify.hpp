@@ -281,9 +281,16 @@ constexpr std::size_t size_of() {
 
 // The events that can wait in a machine between calls: every event of the chart but
 // bsc::action_failed (which carries an exception, and which no row defers or delays).
+// Whether an event that waits in a machine is encoded with its members (retain's bytes, the
+// explorer's bits): bsc::action_failed never waits; an event that cannot be encoded is reported
+// (pending_events_encodable), and takes no room.
+template <class E>
+inline constexpr bool encoded_while_pending =
+    !std::is_same_v<E, action_failed> && encodable<E> && std::is_default_constructible_v<E>;
+
 template <class Chart, class E>
 constexpr bool pending_event_encodable() {
-    if constexpr (std::is_same_v<E, action_failed> || (encodable<E> && std::is_default_constructible_v<E>))
+    if constexpr (std::is_same_v<E, action_failed> || encoded_while_pending<E>)
         return true;
     else
         return detail::report<error::pending_events_not_encoded<Chart, E>>();
@@ -300,10 +307,10 @@ struct event_slot<type_list<Es...>> {
     static constexpr std::size_t index_bytes = sizeof...(Es) + 1 <= 256 ? 1 : 2;
     template <class E>
     static constexpr std::size_t payload_of() {
-        if constexpr (std::is_same_v<E, action_failed> || !encodable<E> || !std::is_default_constructible_v<E>)
-            return 0;  // (the last two reported by pending_events_encodable)
-        else
+        if constexpr (encoded_while_pending<E>)
             return size_of<E>();
+        else
+            return 0;
     }
     static constexpr std::size_t payload = std::max({std::size_t{0}, payload_of<Es>()...});
     static constexpr std::size_t size = index_bytes + payload;
@@ -546,8 +553,7 @@ void put_pending(byte_writer& w, Machine const& m) {
     if constexpr (pending::delays) {
         auto const& queue = access::queue(machine);
         w.put(static_cast<std::uint64_t>(queue.clock().count()), 8);
-        std::size_t count = 0;
-        queue.for_each_scheduled([&](duration, int, auto const&) { ++count; });
+        std::size_t const count = queue.scheduled();
         w.put(count, 2);
         queue.for_each_scheduled([&](duration due, int id, auto const& item) {
             w.put(static_cast<std::uint64_t>(due.count()), 8);
@@ -938,10 +944,10 @@ struct event_bits<type_list<Es...>> {
     static constexpr unsigned index = bits_for(static_cast<int>(sizeof...(Es)) + 1);
     template <class E>
     static constexpr std::size_t payload_of() {
-        if constexpr (std::is_same_v<E, action_failed> || !encodable<E>)
-            return 0;
-        else
+        if constexpr (encoded_while_pending<E>)
             return encoded_bits<E>();
+        else
+            return 0;
     }
     static constexpr std::size_t payload = std::max({std::size_t{0}, payload_of<Es>()...});
     static constexpr std::size_t size = index + payload;
@@ -1103,30 +1109,30 @@ void encode_pending(Machine const& value, bit_writer& out, time_frame own) {
     }
     if constexpr (pending::delays) {
         auto const& queue = access::queue(m);
-        std::size_t count = 0;
-        queue.for_each_scheduled([&](duration, int, auto const&) { ++count; });
-        out.put(count, bits_for(static_cast<int>(pending::delayed_capacity) + 1));
+        using item_type = typename std::remove_cvref_t<decltype(queue)>::value_type;
         // In the order they come due (and, due together, were sent): two machines that hold the
         // same events sent in another order behave the same, and encode the same.
-        std::array<std::size_t, pending::delayed_capacity> rank{};
-        std::array<duration, pending::delayed_capacity> dues{};
-        std::size_t sent = 0;
-        queue.for_each_scheduled([&](duration due, int, auto const&) { dues[sent++] = due; });
+        struct scheduled {
+            duration due;
+            std::size_t sent;
+            int id;
+            item_type const* item;
+        };
+        std::array<scheduled, pending::delayed_capacity> waiting{};
+        std::size_t count = 0;
+        queue.for_each_scheduled([&](duration due, int id, item_type const& item) {
+            waiting[count] = {due, count, id, &item};
+            ++count;
+        });
+        std::sort(waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(count),
+                  [](scheduled const& a, scheduled const& b) { return a.due != b.due ? a.due < b.due : a.sent < b.sent; });
+        out.put(count, bits_for(static_cast<int>(pending::delayed_capacity) + 1));
         for (std::size_t i = 0; i < count; ++i) {
-            rank[i] = 0;
-            for (std::size_t j = 0; j < count; ++j)
-                if (dues[j] < dues[i] || (dues[j] == dues[i] && j < i)) ++rank[i];
-        }
-        for (std::size_t r = 0; r < count; ++r) {
-            std::size_t k = 0;
-            queue.for_each_scheduled([&](duration due, int id, auto const& item) {
-                if (rank[k++] != r) return;
-                auto const left = static_cast<std::uint64_t>((due - own.clock).count());  // the time left
-                out.put(left & 0xffffffffu, 32);
-                out.put(left >> 32, 32);
-                out.put(static_cast<std::uint32_t>(id), 32);
-                encode_event<events>(item, out, own);
-            });
+            auto const left = static_cast<std::uint64_t>((waiting[i].due - own.clock).count());  // the time left
+            out.put(left & 0xffffffffu, 32);
+            out.put(left >> 32, 32);
+            out.put(static_cast<std::uint32_t>(waiting[i].id), 32);
+            encode_event<events>(*waiting[i].item, out, own);
         }
         skip_bits(out, (pending::delayed_capacity - count) * (64 + 32 + slot::size));
     }

@@ -32,9 +32,7 @@ std::size_t deferred_count(Machine const& m) {
 }
 template <class Machine>
 std::size_t delayed_count(Machine const& m) {
-    std::size_t n = 0;
-    bsc::detail::access::queue(const_cast<Machine&>(m)).for_each_scheduled([&](bsc::duration, int, auto const&) { ++n; });
-    return n;
+    return bsc::detail::access::queue(const_cast<Machine&>(m)).scheduled();
 }
 
 // The chart model and the compiled back end's dispatch plan of a chart type.

@@ -136,9 +136,16 @@ constexpr std::size_t size_of() {
 
 // The events that can wait in a machine between calls: every event of the chart but
 // bsc::action_failed (which carries an exception, and which no row defers or delays).
+// Whether an event that waits in a machine is encoded with its members (retain's bytes, the
+// explorer's bits): bsc::action_failed never waits; an event that cannot be encoded is reported
+// (pending_events_encodable), and takes no room.
+template <class E>
+inline constexpr bool encoded_while_pending =
+    !std::is_same_v<E, action_failed> && encodable<E> && std::is_default_constructible_v<E>;
+
 template <class Chart, class E>
 constexpr bool pending_event_encodable() {
-    if constexpr (std::is_same_v<E, action_failed> || (encodable<E> && std::is_default_constructible_v<E>))
+    if constexpr (std::is_same_v<E, action_failed> || encoded_while_pending<E>)
         return true;
     else
         return detail::report<error::pending_events_not_encoded<Chart, E>>();
@@ -155,10 +162,10 @@ struct event_slot<type_list<Es...>> {
     static constexpr std::size_t index_bytes = sizeof...(Es) + 1 <= 256 ? 1 : 2;
     template <class E>
     static constexpr std::size_t payload_of() {
-        if constexpr (std::is_same_v<E, action_failed> || !encodable<E> || !std::is_default_constructible_v<E>)
-            return 0;  // (the last two reported by pending_events_encodable)
-        else
+        if constexpr (encoded_while_pending<E>)
             return size_of<E>();
+        else
+            return 0;
     }
     static constexpr std::size_t payload = std::max({std::size_t{0}, payload_of<Es>()...});
     static constexpr std::size_t size = index_bytes + payload;
@@ -401,8 +408,7 @@ void put_pending(byte_writer& w, Machine const& m) {
     if constexpr (pending::delays) {
         auto const& queue = access::queue(machine);
         w.put(static_cast<std::uint64_t>(queue.clock().count()), 8);
-        std::size_t count = 0;
-        queue.for_each_scheduled([&](duration, int, auto const&) { ++count; });
+        std::size_t const count = queue.scheduled();
         w.put(count, 2);
         queue.for_each_scheduled([&](duration due, int id, auto const& item) {
             w.put(static_cast<std::uint64_t>(due.count()), 8);

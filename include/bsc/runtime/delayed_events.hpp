@@ -84,6 +84,12 @@ public:
     // ---- what the queue holds between runs: for the retentive state and the explorer -------
     // The time of the machine's last cycle, as the queue knows it.
     constexpr duration clock() const { return clock_; }
+    // The number of pending events.
+    constexpr std::size_t scheduled() const {
+        std::size_t n = 0;
+        for (auto const& s : slots_) n += s.pending ? 1 : 0;
+        return n;
+    }
     // Calls f(due, id, item) for each pending event, in the order they were sent.
     template <class F>
     constexpr void for_each_scheduled(F&& f) const {

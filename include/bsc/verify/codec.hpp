@@ -189,10 +189,10 @@ struct event_bits<type_list<Es...>> {
     static constexpr unsigned index = bits_for(static_cast<int>(sizeof...(Es)) + 1);
     template <class E>
     static constexpr std::size_t payload_of() {
-        if constexpr (std::is_same_v<E, action_failed> || !encodable<E>)
-            return 0;
-        else
+        if constexpr (encoded_while_pending<E>)
             return encoded_bits<E>();
+        else
+            return 0;
     }
     static constexpr std::size_t payload = std::max({std::size_t{0}, payload_of<Es>()...});
     static constexpr std::size_t size = index + payload;
@@ -354,30 +354,30 @@ void encode_pending(Machine const& value, bit_writer& out, time_frame own) {
     }
     if constexpr (pending::delays) {
         auto const& queue = access::queue(m);
-        std::size_t count = 0;
-        queue.for_each_scheduled([&](duration, int, auto const&) { ++count; });
-        out.put(count, bits_for(static_cast<int>(pending::delayed_capacity) + 1));
+        using item_type = typename std::remove_cvref_t<decltype(queue)>::value_type;
         // In the order they come due (and, due together, were sent): two machines that hold the
         // same events sent in another order behave the same, and encode the same.
-        std::array<std::size_t, pending::delayed_capacity> rank{};
-        std::array<duration, pending::delayed_capacity> dues{};
-        std::size_t sent = 0;
-        queue.for_each_scheduled([&](duration due, int, auto const&) { dues[sent++] = due; });
+        struct scheduled {
+            duration due;
+            std::size_t sent;
+            int id;
+            item_type const* item;
+        };
+        std::array<scheduled, pending::delayed_capacity> waiting{};
+        std::size_t count = 0;
+        queue.for_each_scheduled([&](duration due, int id, item_type const& item) {
+            waiting[count] = {due, count, id, &item};
+            ++count;
+        });
+        std::sort(waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(count),
+                  [](scheduled const& a, scheduled const& b) { return a.due != b.due ? a.due < b.due : a.sent < b.sent; });
+        out.put(count, bits_for(static_cast<int>(pending::delayed_capacity) + 1));
         for (std::size_t i = 0; i < count; ++i) {
-            rank[i] = 0;
-            for (std::size_t j = 0; j < count; ++j)
-                if (dues[j] < dues[i] || (dues[j] == dues[i] && j < i)) ++rank[i];
-        }
-        for (std::size_t r = 0; r < count; ++r) {
-            std::size_t k = 0;
-            queue.for_each_scheduled([&](duration due, int id, auto const& item) {
-                if (rank[k++] != r) return;
-                auto const left = static_cast<std::uint64_t>((due - own.clock).count());  // the time left
-                out.put(left & 0xffffffffu, 32);
-                out.put(left >> 32, 32);
-                out.put(static_cast<std::uint32_t>(id), 32);
-                encode_event<events>(item, out, own);
-            });
+            auto const left = static_cast<std::uint64_t>((waiting[i].due - own.clock).count());  // the time left
+            out.put(left & 0xffffffffu, 32);
+            out.put(left >> 32, 32);
+            out.put(static_cast<std::uint32_t>(waiting[i].id), 32);
+            encode_event<events>(*waiting[i].item, out, own);
         }
         skip_bits(out, (pending::delayed_capacity - count) * (64 + 32 + slot::size));
     }
