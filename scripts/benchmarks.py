@@ -515,7 +515,8 @@ def kept_analysis():
         m = re.search(r"<!-- analysis:begin -->.*?<!-- analysis:end -->", DOC.read_text(), re.S)
         if m:
             return m.group(0)
-    return "<!-- analysis:begin -->\n(no analysis yet)\n<!-- analysis:end -->"
+    return ("<!-- analysis:begin -->\n(no analysis yet; the standing rules the measurements established are in\n"
+            "[performance.md](performance.md))\n<!-- analysis:end -->")
 
 
 def write_report(times, insns, compile_times, unit_compile, conditions, timings_at, compile_at, table_ready):

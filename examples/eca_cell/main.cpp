@@ -71,7 +71,7 @@ private:
                     static_cast<int>(state_of(c_).size()), state_of(c_).data(),
                     static_cast<int>(state_of(m.button).size()), state_of(m.button).data(),
                     static_cast<int>(state_of(m.robot).size()), state_of(m.robot).data(),
-                    static_cast<int>(pause.size()), pause.data(), m.env.sent.joined().c_str(),
+                    static_cast<int>(pause.size()), pause.data(), m.env.sent.get().joined().c_str(),
                     m.env.light ? "on" : "off");
     }
 
@@ -90,7 +90,7 @@ private:
         if (state_of(m.robot) != x.robot) fail("Robot", x.robot, state_of(m.robot));
         if constexpr (has_pause<Controller>)
             if (!x.pause.empty() && state_of(m.pause) != x.pause) fail("Pause", x.pause, state_of(m.pause));
-        if (m.env.sent.joined() != x.outputs) fail("outputs", x.outputs, m.env.sent.joined());
+        if (m.env.sent.get().joined() != x.outputs) fail("outputs", x.outputs, m.env.sent.get().joined());
         if (m.env.light != x.light) fail("light", x.light ? "on" : "off", m.env.light ? "on" : "off");
     }
 

@@ -127,6 +127,12 @@ struct output_list {
     constexpr void push(std::string_view name) {
         if (size < names.size()) names[size++] = name;
     }
+    /// This list and then `name`.
+    constexpr output_list and_then(std::string_view name) const {
+        output_list longer = *this;
+        longer.push(name);
+        return longer;
+    }
     constexpr bool empty() const { return size == 0; }
     /// "start light_on", or "" when the scan sent nothing.
     std::string joined() const {
@@ -143,18 +149,21 @@ struct output_list {
 struct environment {
     bool light = false;  ///< the light: lit by light_on, put out by light_off
     int jobs = 0;        ///< pick-and-place jobs the robot has been told to do
-    output_list sent{};  ///< the output events of the current scan
+    /// The output events of the current scan: Main's actions append to it, the environment
+    /// empties it before each scan (scan()), so both write it: a bsc::inout channel, read once
+    /// the scan has published it (sent.get()).
+    bsc::inout<output_list> sent{};
     constexpr void receive(out::start) {
         ++jobs;
-        sent.push(out::start::name);
+        sent.set(sent.pending().and_then(out::start::name));
     }
     constexpr void receive(out::light_on) {
         light = true;
-        sent.push(out::light_on::name);
+        sent.set(sent.pending().and_then(out::light_on::name));
     }
     constexpr void receive(out::light_off) {
         light = false;
-        sent.push(out::light_off::name);
+        sent.set(sent.pending().and_then(out::light_off::name));
     }
 };
 
@@ -307,11 +316,11 @@ inline constexpr auto main_chart = make_main<main_connections>(main_tree(), main
 using controller = bsc::machine<bsc::chart_ref<main_chart>>;
 
 /// One scan: Main processes the input event e to completion, the Peripheral modules process
-/// the updating events it sends them as it goes, and `env.sent` lists the output events of
-/// this scan. Returns Main's outcome (consumed: a rule fired).
+/// the updating events it sends them as it goes, and `env.sent.get()` lists the output events
+/// of this scan. Returns Main's outcome (consumed: a rule fired).
 template <class Controller, class E>
 constexpr bsc::outcome scan(Controller& c, E const& e) {
-    c.context().env.sent = {};
+    c.context().env.sent.set({});
     return c.dispatch(e);
 }
 

@@ -291,8 +291,9 @@ struct actuators {
     friend constexpr bool operator==(actuators const&, actuators const&) = default;
 };
 
-/// Writes the sensors into the input channels; the next cycle latches them.
-constexpr void write_inputs(data& d, sensors const& s) {
+/// Writes the sensors into the input channels of the machine's context (the plant's view of it,
+/// `m.context()`, is const: it sets inputs and reads outputs); the next cycle latches them.
+constexpr void write_inputs(data const& d, sensors const& s) {
     d.IN.set(s.IN);
     d.P1.set(s.P1);
     d.P2.set(s.P2);

@@ -47,24 +47,27 @@ bool same_name(std::string_view a, std::string_view b) {
 struct push {
     std::string_view button;  // the button's own name, e.g. "MDI_P"
     bsc::outcome outcome;
+    std::size_t shown_before;  // the display's lines before the push (display::shown())
 };
 
 /// Pushes the button called `name` (in any case); nothing happens if no button is called so.
 std::optional<push> press(machine& m, std::string_view name) {
     auto const found = std::ranges::find_if(events::names, [&](std::string_view event) { return same_name(name, event); });
     if (found == events::names.end()) return std::nullopt;
-    m.context().display.clear();
+    std::size_t const shown_before = m.context().display.shown();
     auto const number = static_cast<std::size_t>(found - events::names.begin());
-    return push{*found, m.dispatch_by_number(number)};
+    return push{*found, m.dispatch_by_number(number), shown_before};
 }
 
-void print(std::string_view button, machine const& m, bsc::outcome outcome) {
+/// The push's line: the configuration, the error and what the push showed (the display's lines
+/// after the first `shown_before`).
+void print(std::string_view button, machine const& m, bsc::outcome outcome, std::size_t shown_before) {
     std::cout << "  " << std::left << std::setw(9) << button << " -> " << std::setw(22)
               << m.active_states().joined() << "  error " << m.context().error;
     if (outcome == bsc::outcome::ignored)
         std::cout << "  (ignored)";
     else
-        std::cout << "  show " << m.context().display.text();
+        std::cout << "  show " << m.context().display.text_since(shown_before);
     std::cout << '\n';
 }
 
@@ -121,7 +124,7 @@ char const* to_string(bsc::outcome o) { return o == consumed ? "consumed" : o ==
 int run_script(bool log) {
     std::cout << "MCS scripted operator run\n";
     machine m = make_machine(log);
-    print("(start)", m, consumed);
+    print("(start)", m, consumed, 0);
     if (m.active_states().joined() != "MCS Off" || m.context().error != 0) {
         std::cerr << "mcs: the machine does not start in 'MCS Off' with error 0\n";
         return 1;
@@ -135,7 +138,7 @@ int run_script(bool log) {
             std::cerr << "mcs: step " << number << ": no button is called " << s.button << '\n';
             return 1;
         }
-        print(pushed->button, m, pushed->outcome);
+        print(pushed->button, m, pushed->outcome, pushed->shown_before);
         std::string const got = m.active_states().joined();
         if (got != s.expected || m.context().error != s.error || pushed->outcome != s.outcome) {
             std::cerr << "mcs: step " << number << " (" << s.button << "): expected '" << s.expected << "', error "
@@ -178,7 +181,7 @@ std::string_view trim(std::string_view s) {
 int run_interactive(bool log) {
     std::cout << "MCS virtual HMI: one button per line, 'help' lists them, 'quit' leaves\n";
     machine m = make_machine(log);
-    print("(start)", m, consumed);
+    print("(start)", m, consumed, 0);
     for (std::string line; std::getline(std::cin, line);) {
         std::string_view const name = trim(line);
         if (name.empty()) continue;
@@ -186,7 +189,7 @@ int run_interactive(bool log) {
         if (same_name(name, "help")) {
             print_help();
         } else if (auto const pushed = press(m, name)) {
-            print(pushed->button, m, pushed->outcome);
+            print(pushed->button, m, pushed->outcome, pushed->shown_before);
         } else {
             std::cerr << "mcs: " << events::unknown(name) << " (any case; 'help' lists the buttons)\n";
         }

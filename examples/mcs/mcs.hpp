@@ -134,6 +134,9 @@ public:
     }
     constexpr void clear() { count_ = 0; }
     constexpr std::size_t size() const { return count_ < capacity ? count_ : capacity; }
+    /// How many lines Show has put on the display, scrolled away or not: a mark from which
+    /// text_since tells what came after (the display is the chart's; the operator reads it).
+    constexpr std::size_t shown() const { return count_; }
     constexpr bool empty() const { return count_ == 0; }
     /// The i-th line still on the display, oldest first.
     constexpr line operator[](std::size_t i) const {
@@ -141,10 +144,13 @@ public:
         return lines_[(first + i) % capacity];
     }
     /// The lines on the display, e.g. "-Mem +Mdi" (for printing, outside the dispatch path).
-    std::string text() const {
+    std::string text() const { return text_since(0); }
+    /// The lines still on the display that Show put there after the first `mark` (shown()).
+    std::string text_since(std::size_t mark) const {
         std::string out;
-        for (std::size_t i = 0; i < size(); ++i) {
-            if (i) out += ' ';
+        std::size_t const first = count_ < capacity ? 0 : count_ - capacity;
+        for (std::size_t i = mark > first ? mark - first : 0; i < size(); ++i) {
+            if (!out.empty()) out += ' ';
             out += (*this)[i].entered ? '+' : '-';
             out += (*this)[i].state;
         }

@@ -104,7 +104,8 @@ struct basic_actors {
 using Actors = basic_actors<true>;
 
 /// The actor diagram: every signal, who sends what to whom, for actors `A` stepped in `Order`,
-/// with the `Extra` links of a larger system (supervised.hpp).
+/// with the `Extra` entries of a larger system (supervised.hpp's links) or of the cell alone
+/// (the inputs the operator sets, bsc::from_outside).
 ///
 /// What a consumer reads when the cell is distributed and a publisher falls silent (in one
 /// process nothing is ever stale and these policies change nothing): a motor command reads
@@ -162,11 +163,20 @@ using cell_system = bsc::system<
     bsc::link<&A::env_robot, &robot_io::to_belt, &A::env_deposit_belt, &deposit_belt_io::from_arm2, bsc::lossless>,
     Extra...>;
 
-/// The cell's own diagram: the controllers step first, then the plant models.
+/// The cell's own diagram: the controllers step first, then the plant models. The operator
+/// (operation.hpp) sets the five manual switches and puts the bricks on the feed belt: those
+/// inputs are driven from outside the system.
 template <class A>
-using system_of = cell_system<A, bsc::order<&A::feed_belt, &A::table, &A::robot, &A::press, &A::deposit_belt,
-                                            &A::env_feed_belt, &A::env_table, &A::env_robot, &A::env_press,
-                                            &A::env_deposit_belt>>;
+using system_of = cell_system<A,
+                              bsc::order<&A::feed_belt, &A::table, &A::robot, &A::press, &A::deposit_belt,
+                                         &A::env_feed_belt, &A::env_table, &A::env_robot, &A::env_press,
+                                         &A::env_deposit_belt>,
+                              bsc::from_outside<&A::feed_belt, &feed_belt_ctl::on>,
+                              bsc::from_outside<&A::table, &table_ctl::on>,
+                              bsc::from_outside<&A::robot, &robot_ctl::on>,
+                              bsc::from_outside<&A::press, &press_ctl::on>,
+                              bsc::from_outside<&A::deposit_belt, &deposit_belt_ctl::on>,
+                              bsc::from_outside<&A::env_feed_belt, &feed_belt_io::put>>;
 
 /// The production cell.
 using cell = system_of<Actors>;

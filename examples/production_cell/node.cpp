@@ -207,6 +207,14 @@ bsc::net::node_options options_of(arguments const& args) {
     return o;
 }
 
+// The supervisor as the run configures it: `--bricks` bricks in all, given where it is built
+// (its context is its own; the environment only sets its inputs).
+pcell::supervisor_actor supervisor_of(arguments const& args) {
+    pcell::supervisor_io io{};
+    io.bricks = static_cast<std::uint8_t>(args.bricks);
+    return pcell::supervisor_actor{pcell::supervisor_chart, io};
+}
+
 // ---- --memory: eleven nodes in one process, compared with the one-process system --------------------
 
 int run_in_memory(arguments const& args) {
@@ -226,7 +234,7 @@ int run_in_memory(arguments const& args) {
     };
     auto supervised = [&args] {
         auto s = std::make_unique<cell>();
-        s->actors.supervisor.context().bricks = static_cast<std::uint8_t>(args.bricks);
+        s->actors.supervisor = supervisor_of(args);
         return s;
     };
     for (std::size_t a = 0; a < actors; ++a) {
@@ -312,7 +320,7 @@ int run_over_mqtt(arguments const& args) {
     endpoint.client_id = args.prefix + "-" + args.name;
     bsc::net::mosquitto_transport transport{endpoint};
     cell system{};
-    system.actors.supervisor.context().bricks = static_cast<std::uint8_t>(args.bricks);
+    system.actors.supervisor = supervisor_of(args);
     node n{system, transport, options_of(args)};
     std::ofstream trace;
     if (!args.trace.empty()) trace.open(args.trace, std::ios::app);

@@ -22,3 +22,4 @@
 #include <bsc/system.hpp>
 #include <bsc/table/engine.hpp>
 #include <bsc/transient.hpp>
+#include <bsc/version.hpp>

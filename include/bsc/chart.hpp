@@ -98,24 +98,62 @@ struct chart {
 
 namespace detail {
 // The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
-// a timeout row of S behind an unguarded timeout row of S with a target and a shorter delay, or
-// an equal one declared earlier, which always fires first and leaves S, so the clock of the
-// other starts again before it is due. (make_chart reports it through the dead row's copy:
-// dsl/row.hpp, timeout_trigger.) Returns the positions (from 1) of the first dead row found and of the row that fires before
-// it; {0, 0} if there is none.
+// a timeout row that an unguarded timeout row, with a target, always beats. That row, of state
+// C, leaves the states from C up to its domain no later than its delay after C's entry. Each
+// such state P whose entry starts C's clock too (C is P, or C is active whenever P is: every
+// composite between them has C's branch as its only child, and no row whose domain lies inside
+// P exits C) leaves, with its clock, every state D below P that is likewise active with P. A
+// timeout row of such a D with a longer delay never fires; with an equal delay, neither does
+// one of C declared later, or one of an ancestor of C (the deeper state's row is tried first).
+// (make_chart reports it through the dead row's copy: dsl/row.hpp, timeout_trigger.) Returns
+// the positions (from 1) of the first dead row found and of the row that beats it; {0, 0} if
+// there is none.
 struct dead_timeout {
     std::size_t row = 0;
     std::size_t fires_first = 0;
 };
-template <std::size_t Count>
-constexpr dead_timeout find_dead_timeout(row_table<Count> const& r, std::array<duration, Count> const& delay) {
-    auto const timeout = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.trigger[i] <= -2; };
-    for (std::size_t i = 0; i < Count; ++i) {
-        if (!timeout(i) || r.guarded[i] || r.target[i] < 0) continue;
-        for (std::size_t j = 0; j < Count; ++j)
-            if (j != i && timeout(j) && r.source[j] == r.source[i] &&
-                (delay[i] < delay[j] || (delay[i] == delay[j] && i < j)))
-                return {j + 1, i + 1};
+
+// Whether state d (p itself or below p) is active whenever p is, with the clock it had when p
+// was entered.
+template <std::size_t N, std::size_t Count>
+constexpr bool active_with(topology<N> const& t, row_table<Count> const& r, int p, int d) {
+    for (int below = d; below != p;) {
+        int const x = t.parent[static_cast<std::size_t>(below)];
+        auto const xi = static_cast<std::size_t>(x);
+        if (t.kinds[xi] == kind::composite)  // a parallel state enters every region
+            for (int other = t.first_child[xi]; other >= 0; other = t.next_sibling[static_cast<std::size_t>(other)])
+                if (other != below && t.kinds[static_cast<std::size_t>(other)] != kind::history) return false;
+        below = x;
+    }
+    for (std::size_t k = 0; k < Count; ++k)
+        if (r.kinds[k] == row_kind::transition && r.domain[k] >= 0 && t.contains(p, r.domain[k]) &&
+            t.is_proper_ancestor(r.domain[k], d))
+            return false;
+    return true;
+}
+
+template <std::size_t N, std::size_t Count>
+constexpr dead_timeout find_dead_timeout(topology<N> const& t, row_table<Count> const& r,
+                                         std::array<duration, Count> const& delay) {
+    std::array<std::size_t, Count> timeouts{};
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < Count; ++i)
+        if (r.kinds[i] == row_kind::transition && r.trigger[i] <= -2) timeouts[count++] = i;
+    for (std::size_t a = 0; a < count; ++a) {
+        std::size_t const first = timeouts[a];
+        if (r.guarded[first] || r.target[first] < 0 || r.domain[first] < 0) continue;
+        int const c = r.source[first];
+        for (int p = c; p >= 0 && !t.contains(p, r.domain[first]); p = t.parent[static_cast<std::size_t>(p)]) {
+            if (p != c && !active_with(t, r, p, c)) break;  // nor is C for the states above
+            for (std::size_t b = 0; b < count; ++b) {
+                std::size_t const j = timeouts[b];
+                int const d = r.source[j];
+                if (j == first || !t.contains(p, d) || (d != p && !active_with(t, r, p, d))) continue;
+                bool const beaten = delay[first] < delay[j] ||
+                                    (delay[first] == delay[j] && (d == c ? first < j : t.is_proper_ancestor(d, c)));
+                if (beaten) return {j + 1, first + 1};
+            }
+        }
     }
     return {};
 }
@@ -183,7 +221,8 @@ constexpr auto make_chart(Root root, Rows... rows) {
         using errors = decltype(detail::check_chart<chart_type>());
         if constexpr (errors::size == 0) {
             if constexpr ((detail::is_timeout_row<Rows> || ...)) {
-                auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::rows, detail::delays_of(rows...));
+                auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree, detail::chart_model<chart_type>::rows,
+                                                          detail::delays_of(rows...));
                 if (dead.row != 0) {
                     if (!std::is_constant_evaluated())
                         detail::bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(dead.row, dead.fires_first);

@@ -36,6 +36,22 @@ constexpr duration shifted(duration t, duration shift) {
     return duration{a + b};
 }
 
+// Whether t + shift lies past duration::max(): a time no clock of a machine ever reaches (a
+// delayed event due then never comes due). A shift below duration::min() is not "past".
+constexpr bool shifted_past_max(duration t, duration shift) {
+    return shift.count() > 0 && t.count() > std::numeric_limits<duration::rep>::max() - shift.count();
+}
+
+// Whether a timeout armed at `since` with `delay` came due before one armed at `other_since`
+// with `other_delay`: the earlier due time (since + delay), and at equal due times the earlier
+// arming. Both are due (has_elapsed at the same time), so neither sum lies past that time: no
+// overflow.
+constexpr bool came_due_first(duration since, duration delay, duration other_since, duration other_delay) {
+    duration const due = since + delay;
+    duration const other_due = other_since + other_delay;
+    return due < other_due || (due == other_due && since < other_since);
+}
+
 // `now - since` (since <= now), saturated at duration::max().
 constexpr duration elapsed(duration since, duration now) {
     if (now <= since) return duration::zero();

@@ -180,6 +180,51 @@ struct state_not_in_chart {
     }
 };
 
+// machine.is<S>() of a state the tree does not declare (the row errors above are about rows).
+template <class State>
+struct queried_state_not_in_chart {
+    constexpr ~queried_state_not_in_chart() {
+        static_assert(detail::dependent_false<queried_state_not_in_chart>,
+                      "bsc: is<State>() asks about a state that the chart's tree does not declare (a misspelt "
+                      "name, or a state of another chart); name one of this chart's states");
+    }
+};
+
+// ---- completion events (bsc::done<S>) --------------------------------------------------------
+
+template <class State>
+struct done_of_state_not_in_chart {
+    constexpr ~done_of_state_not_in_chart() {
+        static_assert(detail::dependent_false<done_of_state_not_in_chart>,
+                      "bsc: a row takes bsc::done<State>, but State is not a state of this chart (a misspelt "
+                      "name?), so the event is never raised and the row never fires; name a composite or "
+                      "parallel state of the chart that has a final child");
+    }
+};
+
+template <class State>
+struct done_never_raised {
+    constexpr ~done_never_raised() {
+        static_assert(detail::dependent_false<done_never_raised>,
+                      "bsc: a row takes bsc::done<State>, but State never completes, so the row never fires: "
+                      "bsc::done<S> is raised when a composite S enters a final child (bsc::final_state), or "
+                      "when every region of a parallel S is in a final state; never for a basic or final "
+                      "state, a composite without a final child, a parallel state with a region that has "
+                      "none, or the root (the machine halts); give State a final child, or take another event");
+    }
+};
+
+template <class Source, class State>
+struct done_source_inactive {
+    constexpr ~done_source_inactive() {
+        static_assert(detail::dependent_false<done_source_inactive>,
+                      "bsc: a row on bsc::done<State> leaves Source, a state inside State that is no longer "
+                      "active when State completes (then only State's final child is, and for a parallel "
+                      "State its regions and their final children), so the row never fires; move the row to "
+                      "State, to an ancestor of State, or to a state orthogonal to it");
+    }
+};
+
 template <class State>
 struct duplicate_state {
     constexpr ~duplicate_state() {
@@ -275,7 +320,8 @@ struct not_an_event_of_the_chart {
     constexpr ~not_an_event_of_the_chart() {
         static_assert(detail::dependent_false<not_an_event_of_the_chart>,
                       "bsc: bsc::event_set<Chart>::number_of<Event>: Event is none of the chart's events (the "
-                      "trigger events of its rows, bsc::action_failed left out); see bsc::event_set<Chart>::events");
+                      "trigger events of its rows, without bsc::done<S>, bsc::action_failed and bsc::any_event, "
+                      "which the environment cannot send); see bsc::event_set<Chart>::events");
     }
 };
 
@@ -305,6 +351,22 @@ struct raised_event_not_in_chart {
     constexpr ~raised_event_not_in_chart() {
         static_assert(detail::dependent_false<raised_event_not_in_chart>,
                       "bsc: an action raises an event type that no transition of this chart handles");
+    }
+};
+
+// ---- events the environment cannot send ----------------------------------------------------
+
+// machine.dispatch(e) of an event only the machine raises, or of the tag of a row on any event
+// (detail::reserved_event in event_set.hpp).
+template <class Event>
+struct event_not_dispatchable {
+    constexpr ~event_not_dispatchable() {
+        static_assert(detail::dependent_false<event_not_dispatchable>,
+                      "bsc: dispatch(e) of an event the environment cannot send: the machine raises "
+                      "bsc::done<S> itself when S completes, and bsc::action_failed when one of its guards or "
+                      "actions throws; bsc::any_event is the tag a row on every event receives, not an event. "
+                      "Dispatch one of the chart's other events (bsc::event_set<Chart>::events), or reach the "
+                      "state the done event would lead to with an event of your own");
     }
 };
 
@@ -496,6 +558,19 @@ struct guard_signature_not_supported {
     }
 };
 
+// A guard that is a bool value: `!`, `&&` or `||` applied to plain lambdas converts them to
+// function pointers and those to true, so the row gets the constant, not a condition.
+template <class Value>
+struct guard_is_a_bool_value {
+    constexpr ~guard_is_a_bool_value() {
+        static_assert(detail::dependent_false<guard_is_a_bool_value>,
+                      "bsc: this row's guard is a bool value, not a condition: `!`, `&&` or `||` applied to a "
+                      "plain lambda converts the lambda to a function pointer and that to true; wrap the lambda "
+                      "in bsc::guard(...) so that the operators combine guards (bsc::guard(f) && g, "
+                      "!bsc::guard(f)), or write the whole condition in one lambda");
+    }
+};
+
 template <class Callable>
 struct action_signature_not_supported {
     constexpr ~action_signature_not_supported() {
@@ -504,6 +579,160 @@ struct action_signature_not_supported {
                       "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
                       "Callable type in this error, in bsc::error::in_row<Source, Trigger, Target, ...> its row, and in "
                       "bsc::error::at_row<Position, ...> where that row is among make_chart's rows");
+    }
+};
+
+// ---- channels and systems (bsc/data/channel.hpp, bsc/system.hpp) ----------------------------
+// Inputs are the environment's, outputs the chart's ([BSC]); a system's wiring is checked where
+// the system type is instantiated. Actors and channels are named by their pointers to members.
+
+template <class T>
+struct input_written_by_the_chart {
+    constexpr ~input_written_by_the_chart() {
+        static_assert(detail::dependent_false<input_written_by_the_chart>,
+                      "bsc: an action writes an input channel (bsc::input<T>::set on the context it receives as "
+                      "Context&): inputs are the environment's, set between cycles through the machine's const "
+                      "context() or by a system's links; publish the value through a bsc::output<T>, or make "
+                      "the channel a bsc::inout<T> if both sides write it. A context built outside a machine "
+                      "is not the environment's view either: give a channel its initial value in its "
+                      "constructor (bsc::input<bool> start{true})");
+    }
+};
+
+template <class T>
+struct output_written_from_outside {
+    constexpr ~output_written_from_outside() {
+        static_assert(detail::dependent_false<output_written_from_outside>,
+                      "bsc: an output channel is written from outside its chart (bsc::output<T>::set on the "
+                      "const context a machine's context() returns, the environment's view): outputs are the "
+                      "chart's, written by its actions; set one of the chart's inputs instead (bsc::input<T>, "
+                      "or bsc::inout<T> if both sides write it), or give the output its initial value in its "
+                      "constructor (bsc::output<bool> lamp{true})");
+    }
+};
+
+template <class Entry>
+struct not_a_link {
+    constexpr ~not_a_link() {
+        static_assert(detail::dependent_false<not_a_link>,
+                      "bsc: after the actors and the order, every argument of bsc::system must be a "
+                      "bsc::link<&Actors::from, &FromContext::output, &Actors::to, &ToContext::input, options...> "
+                      "or a bsc::from_outside<&Actors::actor, &Context::input>; remove or fix this Entry");
+    }
+};
+
+template <class Option>
+struct invalid_link_option {
+    constexpr ~invalid_link_option() {
+        static_assert(detail::dependent_false<invalid_link_option>,
+                      "bsc: this Option of a bsc::link is none of bsc::hold_last, bsc::fail_safe<V>, "
+                      "bsc::lossless and bsc::convert<F>, or it is a second one of a kind: a link takes at "
+                      "most one staleness policy (hold_last, fail_safe<V> or lossless) and at most one "
+                      "bsc::convert; remove it, or fix it");
+    }
+};
+
+template <auto Actor>
+struct actor_twice_in_order {
+    constexpr ~actor_twice_in_order() {
+        static_assert(detail::dependent_false<actor_twice_in_order>,
+                      "bsc: this Actor is named twice in the system's bsc::order, so every system step would "
+                      "step it twice; name it once");
+    }
+};
+
+template <auto Actor>
+struct actor_not_in_order {
+    constexpr ~actor_not_in_order() {
+        static_assert(detail::dependent_false<actor_not_in_order>,
+                      "bsc: a bsc::link or bsc::from_outside of the system names this Actor, but the system's "
+                      "bsc::order does not, so it would never step and its links would never carry anything; "
+                      "add it to the order (or remove the entries that name it)");
+    }
+};
+
+template <auto Actor, auto Channel>
+struct link_source_not_an_output {
+    constexpr ~link_source_not_an_output() {
+        static_assert(detail::dependent_false<link_source_not_an_output>,
+                      "bsc: the source of a bsc::link must be an output of its actor: Channel must name a "
+                      "bsc::output<T> or bsc::inout<T> member of the context of Actor's machine (a link carries "
+                      "what its source publishes; an input is what the source reads, a plain member its "
+                      "internal variable); link from an output, or make the member one");
+    }
+};
+
+template <auto Actor, auto Channel>
+struct link_target_not_an_input {
+    constexpr ~link_target_not_an_input() {
+        static_assert(detail::dependent_false<link_target_not_an_input>,
+                      "bsc: the target of a bsc::link must be an input of its actor: Channel must name a "
+                      "bsc::input<T> or bsc::inout<T> member of the context of Actor's machine (a link writes "
+                      "what its target reads from outside; an output is the target's own to write, a plain "
+                      "member its internal variable); link to an input, or make the member one");
+    }
+};
+
+template <auto FromChannel, auto ToChannel, class From, class To>
+struct link_value_types_differ {
+    constexpr ~link_value_types_differ() {
+        static_assert(detail::dependent_false<link_value_types_differ>,
+                      "bsc: this bsc::link carries a From into a channel of To, a conversion that would "
+                      "happen in silence (300 to true, 2.7 to 2); give both channels the same value type, or "
+                      "make the conversion explicit with the option bsc::convert<F> (the target then reads "
+                      "F(value))");
+    }
+};
+
+template <class Convert, class From, class To>
+struct link_conversion_not_applicable {
+    constexpr ~link_conversion_not_applicable() {
+        static_assert(detail::dependent_false<link_conversion_not_applicable>,
+                      "bsc: the bsc::convert<F> of a link cannot convert its value: F must be callable with "
+                      "the source's value (a From const&) and return something that converts to the target's "
+                      "value type (To); fix F, or link channels of the types it converts");
+    }
+};
+
+template <auto Actor, auto Channel>
+struct input_driven_twice {
+    constexpr ~input_driven_twice() {
+        static_assert(detail::dependent_false<input_driven_twice>,
+                      "bsc: two links of the system drive this input (Channel of Actor), and in every step the "
+                      "later would overwrite the earlier in silence; keep one link into it (give the actor an "
+                      "input for each signal, and combine them in its guards)");
+    }
+};
+
+template <auto Actor, class Member, detail::fixed_string Name>
+struct input_not_driven {
+    constexpr ~input_not_driven() {
+        static_assert(detail::dependent_false<input_not_driven>,
+                      "bsc: no link of the system drives this input of Actor (member Member of its context, "
+                      "named Name), so it would keep whatever it was given; link an output to it, or, if the "
+                      "environment sets it between steps (a switch, a sensor outside the system), declare it "
+                      "among the system's links with bsc::from_outside<&Actors::actor, &Context::channel>");
+    }
+};
+
+template <auto Actor, auto Channel>
+struct from_outside_not_an_input {
+    constexpr ~from_outside_not_an_input() {
+        static_assert(detail::dependent_false<from_outside_not_an_input>,
+                      "bsc: bsc::from_outside must name an input of its actor: Channel must name a "
+                      "bsc::input<T> or bsc::inout<T> member of the context of Actor's machine (the "
+                      "environment sets inputs; an output is the chart's to write, a plain member its internal "
+                      "variable); name an input, or remove the entry");
+    }
+};
+
+template <auto Actor, auto Channel>
+struct input_linked_and_from_outside {
+    constexpr ~input_linked_and_from_outside() {
+        static_assert(detail::dependent_false<input_linked_and_from_outside>,
+                      "bsc: this input (Channel of Actor) is declared bsc::from_outside, but a link of the "
+                      "system drives it too, and would overwrite in every step what the environment set; "
+                      "remove the bsc::from_outside entry, or the link");
     }
 };
 

@@ -10,8 +10,11 @@
 // An event's name is its static member `name` when it has one (`static constexpr
 // std::string_view name = "ON_P";`), otherwise its type's unqualified name (bsc::name_of). Its
 // number is its position among the chart's events: the trigger events of the rows, in the order
-// in which they first appear, bsc::action_failed left out (only a failing guard or action raises
-// it). Two events of a chart with the same name are an error (bsc::error::duplicate_event_name).
+// in which they first appear, without those the environment cannot send (detail::reserved_event:
+// bsc::done<S> and bsc::action_failed, which only the machine raises, and bsc::any_event, a tag).
+// So "done.state.S" and "*" name no event here, and dispatch_by_name answers
+// outcome::unknown_event for them. Two events of a chart with the same name are an error
+// (bsc::error::duplicate_event_name).
 
 #include <array>
 #include <cassert>
@@ -41,12 +44,25 @@ constexpr std::pair<int, int> duplicate_event_name() {
     return {-1, -1};
 }
 
-// The events that can be sent by name: the chart's, without bsc::action_failed.
+// The events a chart may take that the environment cannot send: bsc::done<S>, raised by the
+// machine when S completes, bsc::action_failed, raised when one of its guards or actions throws,
+// and bsc::any_event, the tag that a row on every event receives instead of the event. A dispatch
+// of one from outside would fake what only the machine knows (bsc::error::event_not_dispatchable).
+template <class E>
+inline constexpr bool reserved_event = false;
+template <class S>
+inline constexpr bool reserved_event<done<S>> = true;
+template <>
+inline constexpr bool reserved_event<action_failed> = true;
+template <>
+inline constexpr bool reserved_event<any_event> = true;
+
+// The events that can be sent by name or number: the chart's, without the reserved ones.
 template <class Events>
 struct sendable_events;
 template <class... Events>
 struct sendable_events<type_list<Events...>> {
-    using type = concat_t<std::conditional_t<std::is_same_v<Events, action_failed>, type_list<>, type_list<Events>>...>;
+    using type = concat_t<std::conditional_t<reserved_event<Events>, type_list<>, type_list<Events>>...>;
 };
 
 template <class Events>
@@ -97,9 +113,10 @@ private:
     static_assert(detail::check_event_names(sendable{}));
 
 public:
-    /// The chart's events as a type list, in number order.
+    /// The events the environment may send, as a type list in number order: the chart's trigger
+    /// events without bsc::done<S>, bsc::action_failed and bsc::any_event.
     using events = sendable;
-    /// How many events the chart has.
+    /// How many they are.
     static constexpr std::size_t size = base::size;
     /// Their names, by number.
     static constexpr std::array<std::string_view, size> names = base::names;

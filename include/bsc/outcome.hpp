@@ -71,9 +71,9 @@ struct scan_policy : default_policy {
 
 /// The policy of a machine with nothing but the chart's own work: no test for a reentrant
 /// call, no record of the last outcome, and no clock unless the chart needs time
-/// (docs/benchmarks.md, analysis section 8: on a flat chart with noexcept actions, a dispatch
-/// is then as short as a hand-written switch, and the machine is its configuration and its
-/// context). For code whose guards, actions and observer never call the machine back, that
+/// (docs/performance.md, rule "A lean machine is the chart's own work": on a flat chart with
+/// noexcept actions, a dispatch is then as short as a hand-written switch, and the machine is
+/// its configuration and its context). For code whose guards, actions and observer never call the machine back, that
 /// reads each outcome from dispatch's return value, and that keeps its own time.
 struct lean_policy : default_policy {
     static constexpr bool refuse_reentry = false;

@@ -60,6 +60,165 @@ struct fixed_string {
 #include <type_traits>
 #include <utility>
 
+// begin include/bsc/detail/config.hpp
+// How bsc spells what compilers spell differently: the attributes that steer inlining, the
+// built-ins it uses where the standard spelling costs compile time, the signature a type's name
+// is read from, and the part of <chrono> it includes. Every such spelling is here and nowhere
+// else. GCC and Clang get the spellings bsc's instruction counts and compile times were
+// measured with (docs/performance.md); any other compiler gets the standard spelling, or
+// nothing where an optimisation hint has none (the same behaviour, possibly slower code).
+
+#include <version>  // defines __GLIBCXX__ where the standard library is libstdc++
+
+// ---- inlining ------------------------------------------------------------------------------------
+// BSC_DETAIL_ALWAYS_INLINE: the function is inlined wherever it is called.
+// BSC_DETAIL_NOINLINE: the function is never inlined.
+// BSC_DETAIL_FLATTEN: every call in the function's body is inlined into it, whatever the
+//   inlining budget (GCC: and every call below those; Clang: only the calls written in the body).
+// BSC_DETAIL_WALK_INLINE: on the functions and lambdas of the compiled back end's walk of the
+//   configuration, which a flattened firing is made of. Under GCC, whose `flatten` reaches
+//   every call below, it adds nothing; under Clang the walk's functions are always inlined
+//   themselves (docs/performance.md, rule "Walk inlined under Clang"). In the GNU spelling,
+//   which a lambda takes after its parameters.
+// BSC_DETAIL_VISIT_INLINE: on the functions that hand a context's fields to a visitor. Clang 14
+//   leaves the visit out of line unless told; GCC 12 inlines it where that pays, and forced,
+//   costs more (docs/performance.md, rule "Fields visited without a tuple").
+#if defined(__GNUC__) || defined(__clang__)
+#define BSC_DETAIL_ALWAYS_INLINE [[gnu::always_inline]]
+#define BSC_DETAIL_NOINLINE [[gnu::noinline]]
+#define BSC_DETAIL_FLATTEN [[gnu::flatten]]
+#else
+#define BSC_DETAIL_ALWAYS_INLINE
+#define BSC_DETAIL_NOINLINE
+#define BSC_DETAIL_FLATTEN
+#endif
+#if defined(__clang__)
+#define BSC_DETAIL_WALK_INLINE __attribute__((always_inline))
+#define BSC_DETAIL_VISIT_INLINE [[gnu::always_inline]]
+#else
+#define BSC_DETAIL_WALK_INLINE
+#define BSC_DETAIL_VISIT_INLINE
+#endif
+
+// ---- what the optimiser is told ------------------------------------------------------------------
+// BSC_DETAIL_ASSUME(cond): the optimiser may take cond as true (a statement; cond is not
+//   evaluated and must hold, or the behaviour is undefined). bsc calls it through
+//   detail::assume (detail/assume.hpp), which checks cond instead in builds without NDEBUG.
+// BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS: 1 where the optimiser follows an assumption through
+//   later tests, past the joins of paths (GCC); 0 where it drops it at the first join (Clang),
+//   or is not known to keep it: there bsc stores what it would have assumed (runtime/driver.hpp).
+#if defined(__clang__)
+#define BSC_DETAIL_ASSUME(cond) __builtin_assume(cond)
+#define BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS 0
+#elif defined(__GNUC__)
+#define BSC_DETAIL_ASSUME(cond)                  \
+    do {                                         \
+        if (!(cond)) __builtin_unreachable();    \
+    } while (false)
+#define BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS 1
+#elif defined(_MSC_VER)
+#define BSC_DETAIL_ASSUME(cond) __assume(cond)
+#define BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS 0
+#else
+#define BSC_DETAIL_ASSUME(cond) static_cast<void>(sizeof(cond))
+#define BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS 0
+#endif
+
+// ---- type traits as built-ins ----------------------------------------------------------------------
+// BSC_DETAIL_IS_SAME(A, B), BSC_DETAIL_IS_BASE_OF(Base, Derived), BSC_DETAIL_IS_CLASS(T): the
+// values of std::is_same_v, std::is_base_of_v and std::is_class_v, as the compiler's built-ins
+// where it has them: a built-in instantiates no class template, which a chart's analysis would
+// otherwise do once per pair of types it compares (docs/performance.md,
+// rule "No template per lookup").
+#if defined(__GNUC__) || defined(__clang__)
+#define BSC_DETAIL_TRAIT_BUILTINS 1
+#elif defined(__has_builtin)
+#if __has_builtin(__is_same) && __has_builtin(__is_base_of) && __has_builtin(__is_class)
+#define BSC_DETAIL_TRAIT_BUILTINS 1
+#endif
+#endif
+#if defined(BSC_DETAIL_TRAIT_BUILTINS)
+#define BSC_DETAIL_IS_SAME(A, B) __is_same(A, B)
+#define BSC_DETAIL_IS_BASE_OF(Base, Derived) __is_base_of(Base, Derived)
+#define BSC_DETAIL_IS_CLASS(T) __is_class(T)
+#else
+#include <type_traits>
+#define BSC_DETAIL_IS_SAME(A, B) (std::is_same_v<A, B>)
+#define BSC_DETAIL_IS_BASE_OF(Base, Derived) (std::is_base_of_v<Base, Derived>)
+#define BSC_DETAIL_IS_CLASS(T) (std::is_class_v<T>)
+#endif
+
+// ---- arithmetic ------------------------------------------------------------------------------------
+// BSC_DETAIL_SUB_OVERFLOWS(a, b, out): whether a - b overflows the type of *out (a, b and *out
+// of one signed integer type); if not, *out = a - b.
+#if defined(__GNUC__) || defined(__clang__)
+#define BSC_DETAIL_SUB_OVERFLOWS(a, b, out) __builtin_sub_overflow(a, b, out)
+#else
+#include <limits>
+namespace bsc::detail {
+template <class T>
+constexpr bool sub_overflows(T a, T b, T* out) {
+    if (b > 0 ? a < std::numeric_limits<T>::min() + b : a > std::numeric_limits<T>::max() + b) return true;
+    *out = static_cast<T>(a - b);
+    return false;
+}
+}  // namespace bsc::detail
+#define BSC_DETAIL_SUB_OVERFLOWS(a, b, out) ::bsc::detail::sub_overflows(a, b, out)
+#endif
+
+// ---- names -----------------------------------------------------------------------------------------
+// BSC_DETAIL_FUNCTION_SIGNATURE: the enclosing function's signature, with its template arguments
+// spelled out, from which detail/type_name.hpp reads a type's name and detail/member_names.hpp a
+// member's. Its parsing knows GCC's and Clang's format; under another compiler names are not
+// read correctly.
+#if defined(__GNUC__) || defined(__clang__)
+#define BSC_DETAIL_FUNCTION_SIGNATURE __PRETTY_FUNCTION__
+#elif defined(_MSC_VER)
+#define BSC_DETAIL_FUNCTION_SIGNATURE __FUNCSIG__
+#else
+#define BSC_DETAIL_FUNCTION_SIGNATURE __func__
+#endif
+
+// ---- diagnostics -----------------------------------------------------------------------------------
+// BSC_DETAIL_PRINTS_STRING_ARGUMENTS: 1 where the compiler shows a string held by a template
+// argument as text in its errors (GCC), so that an error can show a row as written; 0 where it
+// shows numbers (Clang) or is not known to, and the text is not computed.
+// BSC_DETAIL_DECLARED_ONLY_BEGIN, BSC_DETAIL_DECLARED_ONLY_END: around code that names a
+// variable template declared and never defined, in constant expressions only (the objects whose
+// members' addresses name the members): Clang warns of the missing definition, which is never
+// needed.
+#if defined(__GNUC__) && !defined(__clang__)
+#define BSC_DETAIL_PRINTS_STRING_ARGUMENTS 1
+#else
+#define BSC_DETAIL_PRINTS_STRING_ARGUMENTS 0
+#endif
+#if defined(__clang__)
+#define BSC_DETAIL_DECLARED_ONLY_BEGIN                                 \
+    _Pragma("clang diagnostic push")                                   \
+    _Pragma("clang diagnostic ignored \"-Wundefined-var-template\"")   \
+    _Pragma("clang diagnostic ignored \"-Wundefined-internal\"")
+#define BSC_DETAIL_DECLARED_ONLY_END _Pragma("clang diagnostic pop")
+#else
+#define BSC_DETAIL_DECLARED_ONLY_BEGIN
+#define BSC_DETAIL_DECLARED_ONLY_END
+#endif
+
+// ---- the standard library --------------------------------------------------------------------------
+// BSC_DETAIL_CHRONO_HEADER: the header detail/chrono.hpp includes for durations, time points and
+// clocks. libstdc++ keeps them in <bits/chrono.h>, without the calendars, time zones and
+// formatting that its C++20 <chrono> brings (0.17 s of CPU in every translation unit that
+// includes bsc: docs/performance.md, rule "Headers include only what bsc uses"); any other
+// library gets <chrono>.
+#if defined(__GLIBCXX__) && defined(__has_include)
+#if __has_include(<bits/chrono.h>)
+#define BSC_DETAIL_CHRONO_HEADER <bits/chrono.h>
+#endif
+#endif
+#if !defined(BSC_DETAIL_CHRONO_HEADER)
+#define BSC_DETAIL_CHRONO_HEADER <chrono>
+#endif
+// end include/bsc/detail/config.hpp
+
 namespace bsc::detail {
 
 template <class...>
@@ -139,7 +298,7 @@ template <class T, class List>
 struct scan_for;
 template <class T, class... Ts>
 struct scan_for<T, type_list<Ts...>> {
-    enum : int { value = first_true({__is_same(T, Ts)...}) };
+    enum : int { value = first_true({BSC_DETAIL_IS_SAME(T, Ts)...}) };
 };
 template <class T, class List, class = void>
 struct position_in : scan_for<T, List> {};  // absent, or present twice (the base is ambiguous)
@@ -337,6 +496,51 @@ struct state_not_in_chart {
     }
 };
 
+// machine.is<S>() of a state the tree does not declare (the row errors above are about rows).
+template <class State>
+struct queried_state_not_in_chart {
+    constexpr ~queried_state_not_in_chart() {
+        static_assert(detail::dependent_false<queried_state_not_in_chart>,
+                      "bsc: is<State>() asks about a state that the chart's tree does not declare (a misspelt "
+                      "name, or a state of another chart); name one of this chart's states");
+    }
+};
+
+// ---- completion events (bsc::done<S>) --------------------------------------------------------
+
+template <class State>
+struct done_of_state_not_in_chart {
+    constexpr ~done_of_state_not_in_chart() {
+        static_assert(detail::dependent_false<done_of_state_not_in_chart>,
+                      "bsc: a row takes bsc::done<State>, but State is not a state of this chart (a misspelt "
+                      "name?), so the event is never raised and the row never fires; name a composite or "
+                      "parallel state of the chart that has a final child");
+    }
+};
+
+template <class State>
+struct done_never_raised {
+    constexpr ~done_never_raised() {
+        static_assert(detail::dependent_false<done_never_raised>,
+                      "bsc: a row takes bsc::done<State>, but State never completes, so the row never fires: "
+                      "bsc::done<S> is raised when a composite S enters a final child (bsc::final_state), or "
+                      "when every region of a parallel S is in a final state; never for a basic or final "
+                      "state, a composite without a final child, a parallel state with a region that has "
+                      "none, or the root (the machine halts); give State a final child, or take another event");
+    }
+};
+
+template <class Source, class State>
+struct done_source_inactive {
+    constexpr ~done_source_inactive() {
+        static_assert(detail::dependent_false<done_source_inactive>,
+                      "bsc: a row on bsc::done<State> leaves Source, a state inside State that is no longer "
+                      "active when State completes (then only State's final child is, and for a parallel "
+                      "State its regions and their final children), so the row never fires; move the row to "
+                      "State, to an ancestor of State, or to a state orthogonal to it");
+    }
+};
+
 template <class State>
 struct duplicate_state {
     constexpr ~duplicate_state() {
@@ -432,7 +636,8 @@ struct not_an_event_of_the_chart {
     constexpr ~not_an_event_of_the_chart() {
         static_assert(detail::dependent_false<not_an_event_of_the_chart>,
                       "bsc: bsc::event_set<Chart>::number_of<Event>: Event is none of the chart's events (the "
-                      "trigger events of its rows, bsc::action_failed left out); see bsc::event_set<Chart>::events");
+                      "trigger events of its rows, without bsc::done<S>, bsc::action_failed and bsc::any_event, "
+                      "which the environment cannot send); see bsc::event_set<Chart>::events");
     }
 };
 
@@ -462,6 +667,22 @@ struct raised_event_not_in_chart {
     constexpr ~raised_event_not_in_chart() {
         static_assert(detail::dependent_false<raised_event_not_in_chart>,
                       "bsc: an action raises an event type that no transition of this chart handles");
+    }
+};
+
+// ---- events the environment cannot send ----------------------------------------------------
+
+// machine.dispatch(e) of an event only the machine raises, or of the tag of a row on any event
+// (detail::reserved_event in event_set.hpp).
+template <class Event>
+struct event_not_dispatchable {
+    constexpr ~event_not_dispatchable() {
+        static_assert(detail::dependent_false<event_not_dispatchable>,
+                      "bsc: dispatch(e) of an event the environment cannot send: the machine raises "
+                      "bsc::done<S> itself when S completes, and bsc::action_failed when one of its guards or "
+                      "actions throws; bsc::any_event is the tag a row on every event receives, not an event. "
+                      "Dispatch one of the chart's other events (bsc::event_set<Chart>::events), or reach the "
+                      "state the done event would lead to with an event of your own");
     }
 };
 
@@ -653,6 +874,19 @@ struct guard_signature_not_supported {
     }
 };
 
+// A guard that is a bool value: `!`, `&&` or `||` applied to plain lambdas converts them to
+// function pointers and those to true, so the row gets the constant, not a condition.
+template <class Value>
+struct guard_is_a_bool_value {
+    constexpr ~guard_is_a_bool_value() {
+        static_assert(detail::dependent_false<guard_is_a_bool_value>,
+                      "bsc: this row's guard is a bool value, not a condition: `!`, `&&` or `||` applied to a "
+                      "plain lambda converts the lambda to a function pointer and that to true; wrap the lambda "
+                      "in bsc::guard(...) so that the operators combine guards (bsc::guard(f) && g, "
+                      "!bsc::guard(f)), or write the whole condition in one lambda");
+    }
+};
+
 template <class Callable>
 struct action_signature_not_supported {
     constexpr ~action_signature_not_supported() {
@@ -661,6 +895,160 @@ struct action_signature_not_supported {
                       "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
                       "Callable type in this error, in bsc::error::in_row<Source, Trigger, Target, ...> its row, and in "
                       "bsc::error::at_row<Position, ...> where that row is among make_chart's rows");
+    }
+};
+
+// ---- channels and systems (bsc/data/channel.hpp, bsc/system.hpp) ----------------------------
+// Inputs are the environment's, outputs the chart's ([BSC]); a system's wiring is checked where
+// the system type is instantiated. Actors and channels are named by their pointers to members.
+
+template <class T>
+struct input_written_by_the_chart {
+    constexpr ~input_written_by_the_chart() {
+        static_assert(detail::dependent_false<input_written_by_the_chart>,
+                      "bsc: an action writes an input channel (bsc::input<T>::set on the context it receives as "
+                      "Context&): inputs are the environment's, set between cycles through the machine's const "
+                      "context() or by a system's links; publish the value through a bsc::output<T>, or make "
+                      "the channel a bsc::inout<T> if both sides write it. A context built outside a machine "
+                      "is not the environment's view either: give a channel its initial value in its "
+                      "constructor (bsc::input<bool> start{true})");
+    }
+};
+
+template <class T>
+struct output_written_from_outside {
+    constexpr ~output_written_from_outside() {
+        static_assert(detail::dependent_false<output_written_from_outside>,
+                      "bsc: an output channel is written from outside its chart (bsc::output<T>::set on the "
+                      "const context a machine's context() returns, the environment's view): outputs are the "
+                      "chart's, written by its actions; set one of the chart's inputs instead (bsc::input<T>, "
+                      "or bsc::inout<T> if both sides write it), or give the output its initial value in its "
+                      "constructor (bsc::output<bool> lamp{true})");
+    }
+};
+
+template <class Entry>
+struct not_a_link {
+    constexpr ~not_a_link() {
+        static_assert(detail::dependent_false<not_a_link>,
+                      "bsc: after the actors and the order, every argument of bsc::system must be a "
+                      "bsc::link<&Actors::from, &FromContext::output, &Actors::to, &ToContext::input, options...> "
+                      "or a bsc::from_outside<&Actors::actor, &Context::input>; remove or fix this Entry");
+    }
+};
+
+template <class Option>
+struct invalid_link_option {
+    constexpr ~invalid_link_option() {
+        static_assert(detail::dependent_false<invalid_link_option>,
+                      "bsc: this Option of a bsc::link is none of bsc::hold_last, bsc::fail_safe<V>, "
+                      "bsc::lossless and bsc::convert<F>, or it is a second one of a kind: a link takes at "
+                      "most one staleness policy (hold_last, fail_safe<V> or lossless) and at most one "
+                      "bsc::convert; remove it, or fix it");
+    }
+};
+
+template <auto Actor>
+struct actor_twice_in_order {
+    constexpr ~actor_twice_in_order() {
+        static_assert(detail::dependent_false<actor_twice_in_order>,
+                      "bsc: this Actor is named twice in the system's bsc::order, so every system step would "
+                      "step it twice; name it once");
+    }
+};
+
+template <auto Actor>
+struct actor_not_in_order {
+    constexpr ~actor_not_in_order() {
+        static_assert(detail::dependent_false<actor_not_in_order>,
+                      "bsc: a bsc::link or bsc::from_outside of the system names this Actor, but the system's "
+                      "bsc::order does not, so it would never step and its links would never carry anything; "
+                      "add it to the order (or remove the entries that name it)");
+    }
+};
+
+template <auto Actor, auto Channel>
+struct link_source_not_an_output {
+    constexpr ~link_source_not_an_output() {
+        static_assert(detail::dependent_false<link_source_not_an_output>,
+                      "bsc: the source of a bsc::link must be an output of its actor: Channel must name a "
+                      "bsc::output<T> or bsc::inout<T> member of the context of Actor's machine (a link carries "
+                      "what its source publishes; an input is what the source reads, a plain member its "
+                      "internal variable); link from an output, or make the member one");
+    }
+};
+
+template <auto Actor, auto Channel>
+struct link_target_not_an_input {
+    constexpr ~link_target_not_an_input() {
+        static_assert(detail::dependent_false<link_target_not_an_input>,
+                      "bsc: the target of a bsc::link must be an input of its actor: Channel must name a "
+                      "bsc::input<T> or bsc::inout<T> member of the context of Actor's machine (a link writes "
+                      "what its target reads from outside; an output is the target's own to write, a plain "
+                      "member its internal variable); link to an input, or make the member one");
+    }
+};
+
+template <auto FromChannel, auto ToChannel, class From, class To>
+struct link_value_types_differ {
+    constexpr ~link_value_types_differ() {
+        static_assert(detail::dependent_false<link_value_types_differ>,
+                      "bsc: this bsc::link carries a From into a channel of To, a conversion that would "
+                      "happen in silence (300 to true, 2.7 to 2); give both channels the same value type, or "
+                      "make the conversion explicit with the option bsc::convert<F> (the target then reads "
+                      "F(value))");
+    }
+};
+
+template <class Convert, class From, class To>
+struct link_conversion_not_applicable {
+    constexpr ~link_conversion_not_applicable() {
+        static_assert(detail::dependent_false<link_conversion_not_applicable>,
+                      "bsc: the bsc::convert<F> of a link cannot convert its value: F must be callable with "
+                      "the source's value (a From const&) and return something that converts to the target's "
+                      "value type (To); fix F, or link channels of the types it converts");
+    }
+};
+
+template <auto Actor, auto Channel>
+struct input_driven_twice {
+    constexpr ~input_driven_twice() {
+        static_assert(detail::dependent_false<input_driven_twice>,
+                      "bsc: two links of the system drive this input (Channel of Actor), and in every step the "
+                      "later would overwrite the earlier in silence; keep one link into it (give the actor an "
+                      "input for each signal, and combine them in its guards)");
+    }
+};
+
+template <auto Actor, class Member, detail::fixed_string Name>
+struct input_not_driven {
+    constexpr ~input_not_driven() {
+        static_assert(detail::dependent_false<input_not_driven>,
+                      "bsc: no link of the system drives this input of Actor (member Member of its context, "
+                      "named Name), so it would keep whatever it was given; link an output to it, or, if the "
+                      "environment sets it between steps (a switch, a sensor outside the system), declare it "
+                      "among the system's links with bsc::from_outside<&Actors::actor, &Context::channel>");
+    }
+};
+
+template <auto Actor, auto Channel>
+struct from_outside_not_an_input {
+    constexpr ~from_outside_not_an_input() {
+        static_assert(detail::dependent_false<from_outside_not_an_input>,
+                      "bsc: bsc::from_outside must name an input of its actor: Channel must name a "
+                      "bsc::input<T> or bsc::inout<T> member of the context of Actor's machine (the "
+                      "environment sets inputs; an output is the chart's to write, a plain member its internal "
+                      "variable); name an input, or remove the entry");
+    }
+};
+
+template <auto Actor, auto Channel>
+struct input_linked_and_from_outside {
+    constexpr ~input_linked_and_from_outside() {
+        static_assert(detail::dependent_false<input_linked_and_from_outside>,
+                      "bsc: this input (Channel of Actor) is declared bsc::from_outside, but a link of the "
+                      "system drives it too, and would overwrite in every step what the environment set; "
+                      "remove the bsc::from_outside entry, or the link");
     }
 };
 
@@ -750,11 +1138,12 @@ inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = tr
 
 #include <string_view>
 
+
 namespace bsc::detail {
 
 template <class T>
 constexpr std::string_view signature() {
-    return __PRETTY_FUNCTION__;
+    return BSC_DETAIL_FUNCTION_SIGNATURE;
 }
 
 // GCC: "... [with T = ns::Name; std::string_view = ...]", Clang: "... [T = ns::Name]".
@@ -829,16 +1218,11 @@ inline constexpr std::string_view name_of = detail::unqualified(qualified_name<T
 // std::chrono's durations, time points, clocks and literals, without the rest of <chrono>.
 // Since C++20, libstdc++'s <chrono> also brings calendars, time zones and formatting (with
 // <string> and <sstream>): 0.17 s of CPU in every translation unit that includes bsc, against
-// 0.03 s for the part bsc uses, which libstdc++ keeps in <bits/chrono.h>. Other standard
-// libraries get <chrono> itself.
+// 0.03 s for the part bsc uses, which libstdc++ keeps in a header of its own, named by
+// BSC_DETAIL_CHRONO_HEADER (detail/config.hpp). Other standard libraries get <chrono> itself.
 
-#include <version>  // defines __GLIBCXX__ where the library is libstdc++
 
-#if defined(__GLIBCXX__) && __has_include(<bits/chrono.h>)
-#include <bits/chrono.h>
-#else
-#include <chrono>
-#endif
+#include BSC_DETAIL_CHRONO_HEADER
 // end include/bsc/detail/chrono.hpp
 
 namespace bsc {
@@ -867,6 +1251,22 @@ constexpr duration shifted(duration t, duration shift) {
     if (b > 0 && a > limits::max() - b) return duration::max();
     if (b < 0 && a < limits::min() - b) return duration::min();
     return duration{a + b};
+}
+
+// Whether t + shift lies past duration::max(): a time no clock of a machine ever reaches (a
+// delayed event due then never comes due). A shift below duration::min() is not "past".
+constexpr bool shifted_past_max(duration t, duration shift) {
+    return shift.count() > 0 && t.count() > std::numeric_limits<duration::rep>::max() - shift.count();
+}
+
+// Whether a timeout armed at `since` with `delay` came due before one armed at `other_since`
+// with `other_delay`: the earlier due time (since + delay), and at equal due times the earlier
+// arming. Both are due (has_elapsed at the same time), so neither sum lies past that time: no
+// overflow.
+constexpr bool came_due_first(duration since, duration delay, duration other_since, duration other_delay) {
+    duration const due = since + delay;
+    duration const other_due = other_since + other_delay;
+    return due < other_due || (due == other_due && since < other_since);
 }
 
 // `now - since` (since <= now), saturated at duration::max().
@@ -1058,9 +1458,9 @@ struct scan_policy : default_policy {
 
 /// The policy of a machine with nothing but the chart's own work: no test for a reentrant
 /// call, no record of the last outcome, and no clock unless the chart needs time
-/// (docs/benchmarks.md, analysis section 8: on a flat chart with noexcept actions, a dispatch
-/// is then as short as a hand-written switch, and the machine is its configuration and its
-/// context). For code whose guards, actions and observer never call the machine back, that
+/// (docs/performance.md, rule "A lean machine is the chart's own work": on a flat chart with
+/// noexcept actions, a dispatch is then as short as a hand-written switch, and the machine is
+/// its configuration and its context). For code whose guards, actions and observer never call the machine back, that
 /// reads each outcome from dispatch's return value, and that keeps its own time.
 struct lean_policy : default_policy {
     static constexpr bool refuse_reentry = false;
@@ -1428,7 +1828,8 @@ struct event_trigger {
     throw std::invalid_argument(
         "bsc::make_chart: the timeout row at position " + std::to_string(row) +
         " can never fire: the unguarded timeout row at position " + std::to_string(fires_first) +
-        " leaves the same state with a shorter (or equal, and earlier) delay, always first");
+        " leaves its state first, every time, with a shorter (or equal) delay, from the same state or "
+        "from a state below it that is active whenever it is");
 #else
     (void)row;
     (void)fires_first;
@@ -1749,7 +2150,9 @@ namespace detail {
 /// A state-scoped timeout trigger: `state<S> + after(3s) = state<T>` fires in the first cycle
 /// (step) at which S has been active for at least 3 s. Armed when S is entered. Without a
 /// target (`state<S> + after(500ms) / a`, an internal timeout) it fires every 500 ms while S is
-/// active: each time it fires, its delay counts again from that cycle.
+/// active: each time it fires, its delay counts again from that cycle. Of several timeouts of S
+/// due in one cycle whose guards hold, the one that came due first fires (then the one armed
+/// first, then the first declared), so that none starves another.
 /// Requirements: 0 <= delay <= bsc::duration::max(); a chart with another delay does not
 /// compile (constexpr chart) or throws std::invalid_argument / std::out_of_range.
 template <class Rep, class Period>
@@ -2177,7 +2580,7 @@ namespace bsc::detail {
 // chart of K events asks K * K times, and no template is instantiated per pair.)
 template <class E, class... Us>
 constexpr std::array<bool, sizeof...(Us)> families_of() {
-    return {(!__is_same(Us, E) && (__is_same(Us, any_event) || __is_base_of(Us, E)))...};
+    return {(!BSC_DETAIL_IS_SAME(Us, E) && (BSC_DETAIL_IS_SAME(Us, any_event) || BSC_DETAIL_IS_BASE_OF(Us, E)))...};
 }
 
 // Of the families `of` (a row of the matrix below), the nearest to the event: the one with
@@ -2202,16 +2605,17 @@ template <class... Us>
 struct event_families<type_list<Us...>> {
     static constexpr std::size_t K = sizeof...(Us);
     // Whether the chart names bsc::any_event, every other event's family.
-    static constexpr bool names_any_event = (false || ... || __is_same(Us, any_event));
+    static constexpr bool names_any_event = (false || ... || BSC_DETAIL_IS_SAME(Us, any_event));
     // How many chart events E derives from, E itself included if it is one (a class is its own
     // base). One built-in per pair and nothing else: a chart of K events asks K * K times.
     template <class E>
-    static constexpr int chart_bases = (0 + ... + static_cast<int>(__is_base_of(Us, E)));
+    static constexpr int chart_bases = (0 + ... + static_cast<int>(BSC_DETAIL_IS_BASE_OF(Us, E)));
     // Whether event E, which the chart does not name (trigger_of asks only then), has a family
     // among the chart's events; any: whether a chart event has.
     template <class E>
-    static constexpr bool has_family = (names_any_event && !__is_same(E, any_event)) || chart_bases<E> > 0;
-    static constexpr bool any = (names_any_event && K > 1) || (false || ... || (chart_bases<Us> > static_cast<int>(__is_class(Us))));
+    static constexpr bool has_family = (names_any_event && !BSC_DETAIL_IS_SAME(E, any_event)) || chart_bases<E> > 0;
+    static constexpr bool any = (names_any_event && K > 1) ||
+                                (false || ... || (chart_bases<Us> > static_cast<int>(BSC_DETAIL_IS_CLASS(Us))));
     // family[t][u]: chart event u is a family of chart event t. (Built only where some event
     // has a family: a chart of K events would otherwise hold K * K flags for nothing.)
     static constexpr auto family = [] {
@@ -2266,9 +2670,9 @@ struct event_families<type_list<Us...>> {
 // own event type (a row on a family sees the family), or bsc::any_event.
 template <class Seen, class E>
 constexpr decltype(auto) event_as(E const& e) {
-    if constexpr (__is_same(Seen, E))
+    if constexpr (BSC_DETAIL_IS_SAME(Seen, E))
         return (e);
-    else if constexpr (__is_same(Seen, any_event))
+    else if constexpr (BSC_DETAIL_IS_SAME(Seen, any_event))
         return any_event{};
     else
         return static_cast<Seen const&>(e);
@@ -2779,6 +3183,96 @@ constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table
 
 }  // namespace bsc::detail
 // end include/bsc/checks/determinism.hpp
+// begin include/bsc/checks/done_events.hpp
+// Rows on completion events (bsc::done<S>, SCXML's done.state.S) that can never fire:
+//   - S is not a state of the chart (a misspelt name): nothing raises the event;
+//   - S never completes: it is basic, final or the root (a final child of the root halts the
+//     machine), a composite without a final child, or a parallel state one of whose regions
+//     never reaches a final state;
+//   - the row's source lies inside S and is not active when S completes: then S's final
+//     child is, and for a parallel S its regions and, in each, what completed it.
+
+#include <array>
+#include <cstddef>
+
+
+namespace bsc::detail {
+
+// The state whose completion an event is (done<S>: S), or void.
+template <class E>
+struct completed_state {
+    using type = void;
+};
+template <class S>
+struct completed_state<done<S>> {
+    using type = S;
+};
+
+// Whether state s can complete: it raises bsc::done<s> in some configuration.
+template <std::size_t N>
+constexpr bool can_complete(topology<N> const& t, int s) {
+    auto const i = static_cast<std::size_t>(s);
+    if (t.kinds[i] == kind::composite) {
+        for (int c = t.first_child[i]; c >= 0; c = t.next_sibling[static_cast<std::size_t>(c)])
+            if (t.kinds[static_cast<std::size_t>(c)] == kind::final_state) return true;
+        return false;
+    }
+    if (t.kinds[i] == kind::parallel) {
+        for (int c = t.first_child[i]; c >= 0; c = t.next_sibling[static_cast<std::size_t>(c)])
+            if (t.kinds[static_cast<std::size_t>(c)] != kind::final_state && !can_complete(t, c)) return false;
+        return t.first_child[i] >= 0;
+    }
+    return false;
+}
+
+// Whether `source`, a state below s, is active when s completes.
+template <std::size_t N>
+constexpr bool active_when_complete(topology<N> const& t, int s, int source) {
+    int const c = t.child_toward(s, source);
+    if (t.kinds[static_cast<std::size_t>(s)] == kind::parallel)
+        return c == source || active_when_complete(t, c, source);
+    return c == source && t.kinds[static_cast<std::size_t>(c)] == kind::final_state;
+}
+
+enum class done_fault { none, not_in_chart, never_raised, source_inactive };
+
+struct done_finding {
+    int row = -1;
+    done_fault fault = done_fault::none;
+};
+
+// The first row on a done event that can never fire. `completes[e]` is, for event e of the
+// chart, the index of the state it completes (-1: not a done event; detail::unknown_state:
+// done<S> of a state not in the chart).
+template <std::size_t N, std::size_t R, std::size_t E>
+constexpr done_finding find_dead_done_row(topology<N> const& t, row_table<R> const& r, std::array<int, E> const& completes) {
+    constexpr int root = 1;
+    for (std::size_t i = 0; i < R; ++i) {
+        if (r.kinds[i] != row_kind::transition || r.trigger[i] < 0) continue;
+        int const s = completes[static_cast<std::size_t>(r.trigger[i])];
+        if (s == -1) continue;
+        if (s == unknown_state) return {static_cast<int>(i), done_fault::not_in_chart};
+        if (s <= root || !can_complete(t, s)) return {static_cast<int>(i), done_fault::never_raised};
+        if (t.is_proper_ancestor(s, r.source[i]) && !active_when_complete(t, s, r.source[i]))
+            return {static_cast<int>(i), done_fault::source_inactive};
+    }
+    return {};
+}
+
+// completes[e] for the events of a chart (see find_dead_done_row).
+template <class Tags, class... Events>
+constexpr std::array<int, sizeof...(Events)> completed_states(type_list<Events...>) {
+    return {[] {
+        using S = typename completed_state<Events>::type;
+        if constexpr (std::is_void_v<S>)
+            return -1;
+        else
+            return position_in<S, Tags>::value >= 0 ? position_in<S, Tags>::value : detail::unknown_state;
+    }()...};
+}
+
+}  // namespace bsc::detail
+// end include/bsc/checks/done_events.hpp
 // begin include/bsc/checks/livelock.hpp
 // Eventless livelock: a cycle of unguarded eventless transitions, which dispatch would
 // follow forever. Nodes are basic states; u -> v when an unguarded eventless transition
@@ -2818,7 +3312,10 @@ constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, 
 }
 
 // Marks the states a transition into `target` enters below `domain`: the path, the default
-// entries of parallel siblings on the path, and the default entry of the target.
+// entries of parallel siblings on the path, and the default entry of the target. A transition
+// with several targets (bsc::targets) is marked target by target: each marks the default
+// entry of the regions the others enter otherwise, which keeps reachability an
+// over-approximation (a state it calls unreachable is, whatever the targets).
 template <std::size_t N>
 constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int domain, int target) {
     for (int a = target; a != domain && a >= 0; a = t.parent[static_cast<std::size_t>(a)]) {
@@ -2833,11 +3330,23 @@ constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int doma
     mark_default_entry(t, m, target);
 }
 
+// Whether entering state s can restore a child of `of` by shallow history, which enters that
+// child by its default entry: s is a shallow history state, or a composite with a shallow
+// history marker (which it is then the `of` of).
+template <std::size_t N>
+constexpr int restored_by_shallow_history(topology<N> const& t, int s) {
+    auto const i = static_cast<std::size_t>(s);
+    if (t.hist[i] != history::shallow) return -1;
+    if (t.kinds[i] == kind::history) return t.parent[i];
+    return t.kinds[i] == kind::composite ? s : -1;
+}
+
 template <std::size_t N, std::size_t R>
 constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R> const& r,
                                                std::array<bool, R> const& dead) {
     std::array<bool, N> reach{};
     std::array<bool, R> applied{};
+    std::array<bool, N> restored{};  // children a shallow history has re-entered by default
     mark_default_entry(t, reach, 0);
     for (bool changed = true; changed;) {
         changed = false;
@@ -2847,7 +3356,20 @@ constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R
             if (!reach[static_cast<std::size_t>(r.source[i])])
                 continue;
             applied[i] = changed = true;
-            mark_entry(t, reach, -1, r.target[i]);
+            for (int target : r.targets_of(i))
+                if (target >= 0) mark_entry(t, reach, -1, target);
+        }
+        // A shallow history restores a child that has been active, and enters it by default:
+        // its initial states become active even if they never were (SCXML IRP test 388).
+        for (int s = 1; s < static_cast<int>(N); ++s) {
+            int const of = reach[static_cast<std::size_t>(s)] ? restored_by_shallow_history(t, s) : -1;
+            if (of < 0) continue;
+            for (int c = t.first_child[static_cast<std::size_t>(of)]; c >= 0; c = t.next_sibling[static_cast<std::size_t>(c)]) {
+                auto const ci = static_cast<std::size_t>(c);
+                if (!reach[ci] || restored[ci] || t.kinds[ci] == kind::history) continue;
+                restored[ci] = changed = true;
+                mark_default_entry(t, reach, c);
+            }
         }
     }
     return reach;
@@ -3270,6 +3792,24 @@ struct action_words<action_seq<As...>> {
 template <class Row>
 struct row_words;
 
+// An event as written: its name; a completion event as `done<S>`, with S's name.
+template <class E>
+struct event_words {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out(name_of<E>);
+    }
+};
+template <class S>
+struct event_words<done<S>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out("done<");
+        out(name_of<S>);
+        out(">");
+    }
+};
+
 template <class S, class Trigger, class G, class A, class T>
 struct row_words<transition_row<S, Trigger, G, A, T>> {
     template <class Out>
@@ -3279,7 +3819,7 @@ struct row_words<transition_row<S, Trigger, G, A, T>> {
             out(" + after(...)");
         } else if constexpr (!std::is_same_v<Trigger, eventless_trigger>) {
             out(" + ");
-            out(name_of<typename Trigger::event>);
+            event_words<typename Trigger::event>::write(out);
         }
         if constexpr (!std::is_same_v<G, no_guard>) {
             out(" [");
@@ -3428,6 +3968,17 @@ struct event_of_trigger<event_trigger<E>> {
     using type = E;
 };
 
+// What a guard that cannot be called is: a bool value (plain lambdas under `!`, `&&`, `||`),
+// or a callable of another signature.
+template <class G>
+struct guard_error {
+    using type = error::guard_signature_not_supported<G>;
+};
+template <>
+struct guard_error<bool> {
+    using type = error::guard_is_a_bool_value<bool>;
+};
+
 // The errors of one row: at most one, wrapped in error::in_row so that it names the row.
 template <class Ctx, class Raise, class Row>
 constexpr auto signature_errors(Row const*) {
@@ -3438,7 +3989,7 @@ constexpr auto signature_errors(Row const*) {
         using actions = typename bad_action<std::remove_cv_t<decltype(Row::action)>, Ctx, E, Raise>::type;
         if constexpr (guards::size > 0)
             return type_list<error::in_row<typename Row::source, trigger, typename Row::target,
-                                           error::guard_signature_not_supported<at<0, guards>>>>{};
+                                           typename guard_error<at<0, guards>>::type>>{};
         else if constexpr (actions::size > 0)
             return type_list<error::in_row<typename Row::source, trigger, typename Row::target,
                                            error::action_signature_not_supported<at<0, actions>>>>{};
@@ -3634,10 +4185,10 @@ struct trigger_type<transition_row<S, timeout_trigger, G, A, T>> {
 // where the compiler prints strings legibly, the row as written).
 template <class Chart, int Index, class Error>
 using row_error = error::at_row<static_cast<std::size_t>(Index) + 1, Error,
-#if defined(__clang__)
-                                void
-#else
+#if BSC_DETAIL_PRINTS_STRING_ARGUMENTS
                                 error::as_written<row_text<typename chart_model<Chart>::template row_at<Index>>()>
+#else
+                                void
 #endif
                                 >;
 
@@ -3792,6 +4343,25 @@ constexpr auto check_determinism() {
 }
 
 template <class Chart>
+constexpr auto check_done_events() {
+    using model = chart_model<Chart>;
+    constexpr done_finding found =
+        find_dead_done_row(model::tree, model::rows, completed_states<typename model::tags>(typename model::events{}));
+    if constexpr (found.fault == done_fault::none) {
+        return type_list<>{};
+    } else {
+        using R = typename model::template row_at<found.row>;
+        using S = typename completed_state<typename trigger_type<R>::type>::type;
+        if constexpr (found.fault == done_fault::not_in_chart)
+            return type_list<row_error<Chart, found.row, error::done_of_state_not_in_chart<S>>>{};
+        else if constexpr (found.fault == done_fault::never_raised)
+            return type_list<row_error<Chart, found.row, error::done_never_raised<S>>>{};
+        else
+            return type_list<row_error<Chart, found.row, error::done_source_inactive<typename R::source, S>>>{};
+    }
+}
+
+template <class Chart>
 inline constexpr auto liveness_of = find_dead_transitions(chart_model<Chart>::tree, chart_model<Chart>::rows);
 
 template <class Chart>
@@ -3856,7 +4426,8 @@ constexpr auto check_chart() {
         return concat_t<decltype(check_orthogonality<Chart>()), decltype(check_local_targets<Chart>()),
                         decltype(check_several_targets<Chart>()), decltype(check_initial_actions<Chart>()),
                         decltype(check_deferrals<Chart>()), decltype(check_event_families<Chart>()),
-                        decltype(check_determinism<Chart>()), decltype(check_dead_transitions<Chart>()),
+                        decltype(check_determinism<Chart>()), decltype(check_done_events<Chart>()),
+                        decltype(check_dead_transitions<Chart>()),
                         decltype(check_reachability<Chart>()), decltype(check_livelock<Chart>()),
                         decltype(check_signatures<Chart>())>{};
 }
@@ -3994,24 +4565,62 @@ struct chart {
 
 namespace detail {
 // The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
-// a timeout row of S behind an unguarded timeout row of S with a target and a shorter delay, or
-// an equal one declared earlier, which always fires first and leaves S, so the clock of the
-// other starts again before it is due. (make_chart reports it through the dead row's copy:
-// dsl/row.hpp, timeout_trigger.) Returns the positions (from 1) of the first dead row found and of the row that fires before
-// it; {0, 0} if there is none.
+// a timeout row that an unguarded timeout row, with a target, always beats. That row, of state
+// C, leaves the states from C up to its domain no later than its delay after C's entry. Each
+// such state P whose entry starts C's clock too (C is P, or C is active whenever P is: every
+// composite between them has C's branch as its only child, and no row whose domain lies inside
+// P exits C) leaves, with its clock, every state D below P that is likewise active with P. A
+// timeout row of such a D with a longer delay never fires; with an equal delay, neither does
+// one of C declared later, or one of an ancestor of C (the deeper state's row is tried first).
+// (make_chart reports it through the dead row's copy: dsl/row.hpp, timeout_trigger.) Returns
+// the positions (from 1) of the first dead row found and of the row that beats it; {0, 0} if
+// there is none.
 struct dead_timeout {
     std::size_t row = 0;
     std::size_t fires_first = 0;
 };
-template <std::size_t Count>
-constexpr dead_timeout find_dead_timeout(row_table<Count> const& r, std::array<duration, Count> const& delay) {
-    auto const timeout = [&](std::size_t i) { return r.kinds[i] == row_kind::transition && r.trigger[i] <= -2; };
-    for (std::size_t i = 0; i < Count; ++i) {
-        if (!timeout(i) || r.guarded[i] || r.target[i] < 0) continue;
-        for (std::size_t j = 0; j < Count; ++j)
-            if (j != i && timeout(j) && r.source[j] == r.source[i] &&
-                (delay[i] < delay[j] || (delay[i] == delay[j] && i < j)))
-                return {j + 1, i + 1};
+
+// Whether state d (p itself or below p) is active whenever p is, with the clock it had when p
+// was entered.
+template <std::size_t N, std::size_t Count>
+constexpr bool active_with(topology<N> const& t, row_table<Count> const& r, int p, int d) {
+    for (int below = d; below != p;) {
+        int const x = t.parent[static_cast<std::size_t>(below)];
+        auto const xi = static_cast<std::size_t>(x);
+        if (t.kinds[xi] == kind::composite)  // a parallel state enters every region
+            for (int other = t.first_child[xi]; other >= 0; other = t.next_sibling[static_cast<std::size_t>(other)])
+                if (other != below && t.kinds[static_cast<std::size_t>(other)] != kind::history) return false;
+        below = x;
+    }
+    for (std::size_t k = 0; k < Count; ++k)
+        if (r.kinds[k] == row_kind::transition && r.domain[k] >= 0 && t.contains(p, r.domain[k]) &&
+            t.is_proper_ancestor(r.domain[k], d))
+            return false;
+    return true;
+}
+
+template <std::size_t N, std::size_t Count>
+constexpr dead_timeout find_dead_timeout(topology<N> const& t, row_table<Count> const& r,
+                                         std::array<duration, Count> const& delay) {
+    std::array<std::size_t, Count> timeouts{};
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < Count; ++i)
+        if (r.kinds[i] == row_kind::transition && r.trigger[i] <= -2) timeouts[count++] = i;
+    for (std::size_t a = 0; a < count; ++a) {
+        std::size_t const first = timeouts[a];
+        if (r.guarded[first] || r.target[first] < 0 || r.domain[first] < 0) continue;
+        int const c = r.source[first];
+        for (int p = c; p >= 0 && !t.contains(p, r.domain[first]); p = t.parent[static_cast<std::size_t>(p)]) {
+            if (p != c && !active_with(t, r, p, c)) break;  // nor is C for the states above
+            for (std::size_t b = 0; b < count; ++b) {
+                std::size_t const j = timeouts[b];
+                int const d = r.source[j];
+                if (j == first || !t.contains(p, d) || (d != p && !active_with(t, r, p, d))) continue;
+                bool const beaten = delay[first] < delay[j] ||
+                                    (delay[first] == delay[j] && (d == c ? first < j : t.is_proper_ancestor(d, c)));
+                if (beaten) return {j + 1, first + 1};
+            }
+        }
     }
     return {};
 }
@@ -4079,7 +4688,8 @@ constexpr auto make_chart(Root root, Rows... rows) {
         using errors = decltype(detail::check_chart<chart_type>());
         if constexpr (errors::size == 0) {
             if constexpr ((detail::is_timeout_row<Rows> || ...)) {
-                auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::rows, detail::delays_of(rows...));
+                auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree, detail::chart_model<chart_type>::rows,
+                                                          detail::delays_of(rows...));
                 if (dead.row != 0) {
                     if (!std::is_constant_evaluated())
                         detail::bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(dead.row, dead.fires_first);
@@ -4292,6 +4902,13 @@ struct chart_layout {
             for (int k = 0; k < timeout_slot_count[static_cast<std::size_t>(s)]; ++k)
                 state[static_cast<std::size_t>(timeout_slot[static_cast<std::size_t>(s)] + k)] = s;
         return state;
+    }();
+    // Whether some state has two timeout rows or more: only their timeouts compete by due time
+    // (the one that came due first fires; docs/semantics.md, "Timers").
+    static constexpr bool has_competing_timeouts = [] {
+        for (int count : timeout_slot_count)
+            if (count > 1) return true;
+        return false;
     }();
 
     // The rows of each state, in declaration order, all kinds: those of state s are
@@ -4612,6 +5229,29 @@ struct plan : chart_layout<Model> {
         return out;
     }();
 
+    // The timeout rows of the source of timeout row `row` declared after it, in declaration
+    // order: those it competes with by due time when its condition holds (the earlier ones did
+    // not hold, or it would not be tried). Empty for a state with one timeout row.
+    static constexpr int later_timeout_count(int row) {
+        int const source = rows.source[static_cast<std::size_t>(row)];
+        int n = 0;
+        for (int i = from_source_begin[static_cast<std::size_t>(source)]; i < from_source_begin[static_cast<std::size_t>(source) + 1]; ++i)
+            n += from_source[static_cast<std::size_t>(i)] > row && layout::is_timeout_row(from_source[static_cast<std::size_t>(i)]);
+        return n;
+    }
+    template <int Row>
+    static constexpr auto later_timeouts = [] {
+        std::array<int, static_cast<std::size_t>(layout::is_timeout_row(Row) ? later_timeout_count(Row) : 0)> out{};
+        std::size_t n = 0;
+        if constexpr (out.size() > 0) {
+            constexpr int source = rows.source[static_cast<std::size_t>(Row)];
+            for (int i = from_source_begin[static_cast<std::size_t>(source)]; i < from_source_begin[static_cast<std::size_t>(source) + 1]; ++i)
+                if (from_source[static_cast<std::size_t>(i)] > Row && layout::is_timeout_row(from_source[static_cast<std::size_t>(i)]))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
+        }
+        return out;
+    }();
+
     template <int Trigger>
     static constexpr int position_of(int row) {
         for (std::size_t i = 0; i < transitions<Trigger>.size(); ++i)
@@ -4736,19 +5376,6 @@ struct plan : chart_layout<Model> {
 
 }  // namespace bsc::detail
 // end include/bsc/compiled/plan.hpp
-// begin include/bsc/detail/walk_inline.hpp
-// BSC_DETAIL_WALK_INLINE: on the functions of the compiled back end's walk of the configuration,
-// which a flattened microstep is made of. GCC's `flatten` inlines every call below the
-// microstep, so there it adds nothing; Clang's inlines only the calls written in the
-// microstep's own body, so under Clang the walk's functions are always inlined themselves
-// (docs/benchmarks.md, analysis section 16).
-
-#if defined(__clang__)
-#define BSC_DETAIL_WALK_INLINE __attribute__((always_inline))
-#else
-#define BSC_DETAIL_WALK_INLINE
-#endif
-// end include/bsc/detail/walk_inline.hpp
 // begin include/bsc/observer.hpp
 // Observer hooks: entry, exit and transition notifications for traces and tests. An
 // observer implements any subset of the hooks; a machine without one pays nothing.
@@ -4834,7 +5461,10 @@ concept observes_cycle_ends = requires(O& o) {
 // A back end derives from it (CRTP) and supplies only what differs:
 //   void enter_initial();                        enters the root and its default completion
 //   template <int Trigger, class E>
-//   bool microstep(E const& e);                  selects and fires the transitions on e
+//   bool fire(E const& e);                       selects and fires the transitions on e,
+//                                                without settling
+//   template <int Trigger, class E>
+//   bool fire_dispatched(E const& e);            fire() for the event a dispatch takes
 //   template <int Component> bool component_step();  one component's turn in a cycle
 //   template <int S> bool is_active() const;     whether state S is active
 
@@ -4933,9 +5563,10 @@ private:
 // end include/bsc/configuration.hpp
 // begin include/bsc/detail/access.hpp
 // The one door to what users may not touch: a channel's latch and commit, a timer's update
-// and its internal state, a machine's configuration, clock, timeout slots and queue. Only the
-// machines, the explorer, the retentive state (bsc/retain.hpp), the VCD recorder and the
-// project's own tests go through it; every class it opens names it as its only friend.
+// and its internal state, a machine's writable context, configuration, clock, timeout slots and
+// queue. Only the machines, the explorer, the retentive state (bsc/retain.hpp), the VCD
+// recorder and the project's own tests go through it; every class it opens names it as its
+// only friend.
 
 #include <cstddef>
 #include <cstdint>
@@ -4953,6 +5584,14 @@ struct access {
     template <class Channel>
     static constexpr void commit(Channel& c) {
         c.commit();
+    }
+    // Both values of a channel at once, as a restored or decoded state has them: what it holds
+    // now and what the next cycle boundary takes. (Not through set: an input's set is the
+    // environment's, an output's the chart's; a restore is neither.)
+    template <class Channel, class T>
+    static constexpr void set_channel(Channel& c, T const& current, T const& pending) {
+        c.now_ = current;
+        c.next_ = pending;
     }
     template <class Timer>
     static constexpr void update(Timer& t, duration now) {
@@ -4980,6 +5619,16 @@ struct access {
 
     // ---- machines: read and written by the explorer, read by the tests ---------------------
     // (through the shared driver, which holds the data and names this class its friend)
+
+    // The machine's context, writable: for what restores or decodes a machine's whole state
+    // (retain, the explorer). The public context() is const: the environment's view.
+    template <class M>
+    static constexpr auto& context(M& m) {
+        if constexpr (requires { typename std::remove_const_t<M>::driver_type; })
+            return driver_of(m).context_.value;
+        else
+            return m.context_;  // a machine of a rejected chart (runtime/rejected.hpp)
+    }
     template <class M>
     static constexpr auto& configuration(M& m) {
         return driver_of(m).config_;
@@ -5088,20 +5737,19 @@ private:
 // the fact settles. The fact must hold: where it does not, the behaviour is undefined. GCC
 // follows what it is told through later tests; Clang drops it where paths join (driver.hpp says
 // what it does there instead). A build without NDEBUG tests the fact instead, and stops the
-// program where it does not hold.
+// program where it does not hold. (The compilers' spellings: detail/config.hpp.)
 
 #include <cassert>
 
+
 namespace bsc::detail {
 
-[[gnu::always_inline]] constexpr void assume(bool holds) {
+BSC_DETAIL_ALWAYS_INLINE constexpr void assume(bool holds) {
 #if !defined(NDEBUG)
     assert(holds && "bsc: a machine's invariant is broken: it was called back from inside its own run under a "
                     "policy that does not refuse it, or copied, assigned to or destroyed there");
-#elif defined(__clang__)
-    __builtin_assume(holds);
 #else
-    if (!holds) __builtin_unreachable();
+    BSC_DETAIL_ASSUME(holds);
 #endif
 }
 
@@ -5133,8 +5781,11 @@ inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
 // An event's name is its static member `name` when it has one (`static constexpr
 // std::string_view name = "ON_P";`), otherwise its type's unqualified name (bsc::name_of). Its
 // number is its position among the chart's events: the trigger events of the rows, in the order
-// in which they first appear, bsc::action_failed left out (only a failing guard or action raises
-// it). Two events of a chart with the same name are an error (bsc::error::duplicate_event_name).
+// in which they first appear, without those the environment cannot send (detail::reserved_event:
+// bsc::done<S> and bsc::action_failed, which only the machine raises, and bsc::any_event, a tag).
+// So "done.state.S" and "*" name no event here, and dispatch_by_name answers
+// outcome::unknown_event for them. Two events of a chart with the same name are an error
+// (bsc::error::duplicate_event_name).
 
 #include <array>
 #include <cassert>
@@ -5160,12 +5811,25 @@ constexpr std::pair<int, int> duplicate_event_name() {
     return {-1, -1};
 }
 
-// The events that can be sent by name: the chart's, without bsc::action_failed.
+// The events a chart may take that the environment cannot send: bsc::done<S>, raised by the
+// machine when S completes, bsc::action_failed, raised when one of its guards or actions throws,
+// and bsc::any_event, the tag that a row on every event receives instead of the event. A dispatch
+// of one from outside would fake what only the machine knows (bsc::error::event_not_dispatchable).
+template <class E>
+inline constexpr bool reserved_event = false;
+template <class S>
+inline constexpr bool reserved_event<done<S>> = true;
+template <>
+inline constexpr bool reserved_event<action_failed> = true;
+template <>
+inline constexpr bool reserved_event<any_event> = true;
+
+// The events that can be sent by name or number: the chart's, without the reserved ones.
 template <class Events>
 struct sendable_events;
 template <class... Events>
 struct sendable_events<type_list<Events...>> {
-    using type = concat_t<std::conditional_t<std::is_same_v<Events, action_failed>, type_list<>, type_list<Events>>...>;
+    using type = concat_t<std::conditional_t<reserved_event<Events>, type_list<>, type_list<Events>>...>;
 };
 
 template <class Events>
@@ -5216,9 +5880,10 @@ private:
     static_assert(detail::check_event_names(sendable{}));
 
 public:
-    /// The chart's events as a type list, in number order.
+    /// The events the environment may send, as a type list in number order: the chart's trigger
+    /// events without bsc::done<S>, bsc::action_failed and bsc::any_event.
     using events = sendable;
-    /// How many events the chart has.
+    /// How many they are.
     static constexpr std::size_t size = base::size;
     /// Their names, by number.
     static constexpr std::array<std::string_view, size> names = base::names;
@@ -5354,6 +6019,18 @@ struct entering_flags<0> {};
 // the context's members through which a chart talks to its environment and to other charts.
 // Plain members of the context are the chart's internal variables: an action's write is visible
 // at once to every later guard.
+//
+// Who writes what follows the formalism, and the types say it: inputs are the plant's (the
+// environment's), outputs the chart's. The environment holds a machine's context as const
+// (machine::context() returns a const reference), the chart's actions receive it as non-const
+// (Context&), and each channel's `set` is const or not accordingly:
+//   bsc::input<T>   set(v) const: the environment writes; an action's write is a compile error
+//                   (bsc::error::input_written_by_the_chart)
+//   bsc::output<T>  set(v): actions write; the environment's write is a compile error
+//                   (bsc::error::output_written_from_outside)
+//   bsc::inout<T>   set(v) const: both write
+// A channel's initial value is given by its constructor (bsc::input<bool> start{true}), not by a
+// write before the machine runs.
 
 #include <type_traits>
 #include <utility>
@@ -5365,6 +6042,18 @@ namespace bsc::detail {
 struct channel_base {
     friend constexpr bool operator==(channel_base const&, channel_base const&) = default;
 };
+
+// The pending value of an input or inout, writable through the const context the environment
+// holds: mutable storage. It is not declared `mutable` because GCC (12 at least) refuses to read
+// a mutable member in constant evaluation, even of an object created there, and a machine with
+// an input could then no longer run in a static_assert. Writing through the const view is
+// defined: the channel itself is not a const object (a machine's context is not; only the view
+// of it that context() returns is), so an input must not be set on a context or a machine
+// declared const.
+template <class T>
+constexpr T& wire(T const& pending) {
+    return const_cast<T&>(pending);  // NOLINT(cppcoreguidelines-pro-type-const-cast)
+}
 }  // namespace bsc::detail
 
 namespace bsc {
@@ -5380,8 +6069,15 @@ public:
     /// The latched value, as guards and actions see it during this cycle.
     constexpr T const& get() const { return now_; }
     constexpr operator T const&() const { return now_; }  // NOLINT
-    /// Written by the environment; visible from the next cycle on.
-    constexpr void set(T value) { next_ = value; }
+    /// Written by the environment (which holds the machine's context as const) and by the links
+    /// of a bsc::system; visible from the next cycle on.
+    constexpr void set(T value) const { detail::wire(next_) = value; }
+    /// Chosen for a non-const input, whatever the argument: the chart's actions receive the
+    /// context as non-const, and a chart does not write its own inputs. A compile error.
+    template <class U = T>
+    constexpr void set(U&&) {
+        detail::report<error::input_written_by_the_chart<T>>();
+    }
     /// The value that the next cycle will latch.
     constexpr T const& pending() const { return next_; }
     friend constexpr bool operator==(input const&, input const&) = default;
@@ -5390,6 +6086,10 @@ private:
     friend struct detail::access;  // the machine latches and commits
     constexpr void latch() { now_ = next_; }
     constexpr void commit() {}
+    // The pending value is the plant's wire, not the machine's state, until the next cycle
+    // latches it: the environment writes it through the const context it holds, so it is
+    // mutable storage (detail::wire). What the chart reads (now_) changes only when the
+    // machine latches.
     T next_{};
     T now_{};
 };
@@ -5406,6 +6106,13 @@ public:
     constexpr operator T const&() const { return now_; }  // NOLINT
     /// Written by actions; published at the end of the cycle.
     constexpr void set(T value) { next_ = value; }
+    /// Chosen for a const output: the environment holds the machine's context as const, and
+    /// only the chart writes its outputs. A compile error. (The parameter is T, as the action's
+    /// overload's, so that a non-const output always takes that one, whatever the argument.)
+    template <class U = T>
+    constexpr void set(std::type_identity_t<U>) const {
+        detail::report<error::output_written_from_outside<T>>();
+    }
     constexpr T const& pending() const { return next_; }
     friend constexpr bool operator==(output const&, output const&) = default;
 
@@ -5418,8 +6125,8 @@ private:
 };
 
 /// A channel that is both input and output ([BSC] allows it): written by the environment or
-/// by actions, read as the value latched at the start of the cycle; writes take effect at the
-/// next cycle boundary.
+/// by actions (`set` works on the const context and on the non-const one), read as the value
+/// latched at the start of the cycle; writes take effect at the next cycle boundary.
 template <class T>
 class inout : detail::channel_base {
 public:
@@ -5427,7 +6134,7 @@ public:
     constexpr explicit inout(T initial) : next_(initial), now_(initial) {}
     constexpr T const& get() const { return now_; }
     constexpr operator T const&() const { return now_; }  // NOLINT
-    constexpr void set(T value) { next_ = value; }
+    constexpr void set(T value) const { detail::wire(next_) = value; }
     constexpr T const& pending() const { return next_; }
     friend constexpr bool operator==(inout const&, inout const&) = default;
 
@@ -5435,6 +6142,8 @@ private:
     friend struct detail::access;  // the machine latches and commits
     constexpr void latch() { now_ = next_; }
     constexpr void commit() { now_ = next_; }
+    // Mutable storage as an input's (detail::wire): the environment writes it through the const
+    // context.
     T next_{};
     T now_{};
 };
@@ -5566,14 +6275,13 @@ private:
 
 #include <cstddef>
 
+
 namespace bsc::detail {
 
 inline constexpr std::size_t max_fields = 128;
 
 template <std::size_t N, class T, class F>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
-#endif
+BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
 constexpr decltype(auto) apply_to_n_fields(T& t, F&& f) {
     if constexpr (N == 0) {
         (void)t;
@@ -6062,11 +6770,10 @@ inline constexpr bool has_reference_field =
 // f(fields...) for the fields of an aggregate, each an lvalue; f() for a type that is not one
 // (after the error that says so). Clang 14 leaves the visit of a context's timers out of line
 // unless told, with a call and its spills in every cycle; GCC 12 inlines it where that pays
-// (bench/manufacturing_cell_bench.cpp: forced, its cycle took more instructions, not fewer).
+// (bench/manufacturing_cell_bench.cpp: forced, its cycle took more instructions, not fewer;
+// docs/performance.md, rule "Fields visited without a tuple").
 template <class T, class F>
-#if defined(__clang__)
-[[gnu::always_inline]]
-#endif
+BSC_DETAIL_VISIT_INLINE
 constexpr decltype(auto) apply_to_fields(T& t, F&& f) {
     using type = std::remove_const_t<T>;
     constexpr std::size_t n = field_count<type>();
@@ -6090,9 +6797,7 @@ constexpr auto tie_fields(T& t) {
 
 // Calls f(field) for each field of an aggregate, in declaration order.
 template <class T, class F>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as apply_to_fields
-#endif
+BSC_DETAIL_VISIT_INLINE  // as apply_to_fields
 constexpr void for_each_field(T& t, F&& f) {
     detail::apply_to_fields(t, [&](auto&... field) { (f(field), ...); });
 }
@@ -6102,10 +6807,11 @@ constexpr void for_each_field(T& t, F&& f) {
 // begin include/bsc/detail/member_names.hpp
 // The names of an aggregate's members as its definition spells them, at compile time, without
 // macros: the address of a member of an object that is declared but never defined is a constant
-// that may be a template argument, and both supported compilers spell that argument in
-// __PRETTY_FUNCTION__ ending with the member's name (GCC 12: "{(& object<T>.T::speed)}",
-// Clang 14: "{&object.speed}"). Used by the opt-in parts that show or store a context by name
-// (the VCD recorder, the retentive state's layout fingerprint); nothing else pays for it.
+// that may be a template argument, and both supported compilers spell that argument in the
+// function's signature (BSC_DETAIL_FUNCTION_SIGNATURE) ending with the member's name (GCC 12:
+// "{(& object<T>.T::speed)}", Clang 14: "{&object.speed}"). Used by the opt-in parts that show
+// or store a context by name (the VCD recorder, the retentive state's layout fingerprint);
+// nothing else pays for it.
 
 #include <array>
 #include <cstddef>
@@ -6123,11 +6829,7 @@ struct member_address {
     T const* address;
 };
 
-#if defined(__clang__)
-#pragma clang diagnostic push
-#pragma clang diagnostic ignored "-Wundefined-var-template"
-#pragma clang diagnostic ignored "-Wundefined-internal"
-#endif
+BSC_DETAIL_DECLARED_ONLY_BEGIN
 // Never defined: only its members' addresses are taken, in constant expressions. T is wrapped so
 // that a T without linkage (in an anonymous namespace, or local to a function) may be named: the
 // wrapper's linkage is the variable's, and Clang refuses an undefined variable of a type without.
@@ -6140,7 +6842,7 @@ extern declared_object<T> const declared_only;
 
 template <auto Address>
 constexpr char const* spelled_address() {
-    return __PRETTY_FUNCTION__;
+    return BSC_DETAIL_FUNCTION_SIGNATURE;
 }
 
 // Identifiers may hold letters beyond ASCII, spelled in UTF-8: every byte of those is >= 0x80.
@@ -6164,9 +6866,7 @@ constexpr std::string_view member_name_of() {
     using member_type = std::remove_cvref_t<decltype(member)>;
     return last_identifier(spelled_address<member_address<member_type>{&member}>());
 }
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
+BSC_DETAIL_DECLARED_ONLY_END
 
 /// The names of T's members, in declaration order. Requirements: T is an aggregate that
 /// detail::tie_fields supports.
@@ -6178,11 +6878,7 @@ inline constexpr auto member_names = []<std::size_t... I>(std::index_sequence<I.
 template <class Class, class Member>
 Class class_of_member(Member Class::*);
 
-#if defined(__clang__)
-#pragma clang diagnostic push
-#pragma clang diagnostic ignored "-Wundefined-var-template"
-#pragma clang diagnostic ignored "-Wundefined-internal"
-#endif
+BSC_DETAIL_DECLARED_ONLY_BEGIN
 /// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
 /// `&axis::speed`. Found by comparing addresses: GCC 12 does not accept the address that `.*`
 /// yields as a template argument, so the member's index among the aggregate's is looked up.
@@ -6200,9 +6896,7 @@ constexpr std::string_view member_name() {
     static_assert(index < member_names<Class>.size(), "the pointer designates no member of the aggregate");
     return member_names<Class>[index];
 }
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
+BSC_DETAIL_DECLARED_ONLY_END
 
 }  // namespace bsc::detail
 // end include/bsc/detail/member_names.hpp
@@ -6441,9 +7135,7 @@ constexpr bool is_transient = bsc::transient<T>;
 
 // f(members...) for a record's members, each an lvalue (const for a const record).
 template <class T, class F>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
-#endif
+BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
 constexpr decltype(auto) apply_members(T& t, F&& f) {
     using type = std::remove_const_t<T>;
     if constexpr (described_by_fields<type>)
@@ -6617,9 +7309,7 @@ constexpr auto const& names_of() {
 }
 
 template <class V, class T, class Name>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
-#endif
+BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
 constexpr void walk_into(T& value, V& v, Name const& name) {
     using U = std::remove_cv_t<T>;
     using visitor = std::remove_const_t<V>;
@@ -6651,9 +7341,7 @@ constexpr void walk_into(T& value, V& v, Name const& name) {
 /// Walks `value` with visitor v, depth first, in declaration order: v.leaf(member, name) for
 /// each leaf it visits. Every member bsc cannot reach is a compile error.
 template <class V, class T, class Name = no_name>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
-#endif
+BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
 constexpr void walk(T& value, V& v, Name const& name = {}) {
     static_assert(reachable<T> || true);  // instantiates the check (its errors are the report)
     walk_into(value, v, name);
@@ -6812,9 +7500,10 @@ public:
     // (runtime/driver.hpp: settled, abandon, end_run_by_exception). Said to the optimiser at
     // the start of a dispatch, so that it places the events a dispatch raises at known slots
     // and drops the tests of a queue it sees nothing raised into: a raise then costs about a
-    // store, its processing a load (docs/benchmarks.md, analysis section 13). A hidden friend,
-    // not a member: the queue is the raise argument of every action, which should not be
-    // handed a promise it can break.
+    // store, its processing a load (docs/performance.md,
+    // rule "Tell the optimiser what a run guarantees"). A hidden friend, not a member: the
+    // queue is the raise argument of every action, which should not be handed a promise it
+    // can break.
     friend constexpr void assume_idle(ring const& q) {
         detail::assume(q.size_ == 0 && q.head_ == 0 && !q.overflowed_);
     }
@@ -7351,9 +8040,9 @@ private:
     // The cycle of step(now), which has marked the machine running; returns its outcome.
     // Out of line, so that step stays small enough to be inlined where it is called: GCC 12,
     // inlining the cycle into step instead, returns the report from a call, assembled in
-    // memory by narrow stores and read back by wider loads, which stall (docs/benchmarks.md,
-    // analysis section 15).
-    [[gnu::noinline]] constexpr outcome cycle(duration now, step_report& report) {
+    // memory by narrow stores and read back by wider loads, which stall (docs/performance.md,
+    // rule "The cycle out of line").
+    BSC_DETAIL_NOINLINE constexpr outcome cycle(duration now, step_report& report) {
         if constexpr (keeps_clock) {
             if (!clock_started_) {
                 // The clock starts at the first cycle, wherever the caller's time starts; what was
@@ -7393,11 +8082,16 @@ public:
     }
 
     /// Processes e to completion: the transitions it enables, then eventless transitions and
-    /// raised events until none remain. Fails to compile if no transition handles E.
+    /// raised events until none remain. Fails to compile if no transition handles E, or if E
+    /// is an event the environment cannot send (bsc::done<S>, bsc::action_failed,
+    /// bsc::any_event: bsc::error::event_not_dispatchable).
     template <class E>
     constexpr outcome dispatch(E const& e) {
         constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (trigger == -2) {
+        if constexpr (reserved_event<E>) {
+            detail::report<error::event_not_dispatchable<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger == -2) {
             detail::report<error::event_in_two_families<E>>();
             return outcome::ignored;
         } else if constexpr (trigger < 0) {
@@ -7412,7 +8106,10 @@ public:
     template <class E>
     constexpr outcome dispatch(E const& e, allow_unhandled_t) {
         constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (trigger == -2) {
+        if constexpr (reserved_event<E>) {
+            detail::report<error::event_not_dispatchable<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger == -2) {
             detail::report<error::event_in_two_families<E>>();
             return outcome::ignored;
         } else if constexpr (trigger < 0) {
@@ -7427,8 +8124,9 @@ public:
     /// Dispatches the event of the chart called `name` (bsc::event_set: its static member
     /// `name`, or its type's name), built by `decode(std::type_identity<E>{})` when the decoder
     /// accepts that call and default-constructed otherwise. outcome::unknown_event, and nothing
-    /// processed, if no event of the chart is so named; outcome::reentrant, as dispatch, from
-    /// inside one of the machine's own guards or actions.
+    /// processed, if no event of the chart the environment may send is so named (so for
+    /// "done.state.S" and "*": bsc::event_set leaves them out); outcome::reentrant, as dispatch,
+    /// from inside one of the machine's own guards or actions.
     template <class Decode = no_decoder>
     constexpr outcome dispatch_by_name(std::string_view name, Decode&& decode = {}) {
         // An unknown name is a number past the last event: dispatch_by_number refuses both alike.
@@ -7460,7 +8158,7 @@ public:
     constexpr bool is() const {
         constexpr int s = model::template index_of_state<S>;
         if constexpr (s < 0) {
-            detail::report<error::state_not_in_chart<S>>();
+            detail::report<error::queried_state_not_in_chart<S>>();
             return false;
         } else {
             return backend().template is_active<s>();
@@ -7499,7 +8197,9 @@ public:
         return nullptr;
     }
 
-    constexpr context_type& context() { return context_.value; }
+    /// The context as the environment sees it: const. Inputs are set through it (input::set is
+    /// const: the plant's wire), outputs and variables read; only the chart's actions write
+    /// outputs and variables (docs/api.md, "Data").
     constexpr context_type const& context() const { return context_.value; }
     constexpr configuration_type const& active_configuration() const { return config_; }
     constexpr Observer& observer() { return observer_.value; }
@@ -7756,14 +8456,14 @@ private:
     constexpr Backend& backend() { return static_cast<Backend&>(*this); }
     constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
 
-    // One microstep on an event (not on the eventless pseudo-event) where the chart defers:
-    // the event is kept if only deferring rows took it. (Elsewhere the callers go straight to
-    // the back end's microstep, without a function between to instantiate per event.)
+    // Fires the transitions an event (not the eventless pseudo-event) enables where the chart
+    // defers, and keeps the event if only deferring rows took it. (Elsewhere the callers go
+    // straight to the back end's fire, without a function between to instantiate per event.)
     template <int Trigger, class E>
-    constexpr bool deferring_microstep(E const& e) {
+    constexpr bool fire_or_defer(E const& e) {
         deferral_.requested = false;
         deferral_.other_fired = false;
-        bool const fired = backend().template microstep<Trigger>(e);
+        bool const fired = backend().template fire<Trigger>(e);
         if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
         return fired;
     }
@@ -7779,21 +8479,23 @@ private:
             }
             if (deferral_.retry == 0) return false;
             --deferral_.retry;
-            deferred_.pop([&](auto const& ev) { microstep_on(ev); });
+            deferred_.pop([&](auto const& ev) { fire_queued(ev); });
             return true;
         } else {
             return false;
         }
     }
 
+    // Fires the transitions an event taken from the queue or the deferred events enables,
+    // without settling; a failure that no transition takes is kept for the caller.
     template <class E>
-    constexpr void microstep_on(E const& e) {
+    constexpr void fire_queued(E const& e) {
         constexpr int trigger = model::template trigger_of<E>;
         bool fired = false;
         if constexpr (defers)
-            fired = deferring_microstep<trigger>(e);
+            fired = fire_or_defer<trigger>(e);
         else
-            fired = backend().template microstep<trigger>(e);
+            fired = backend().template fire<trigger>(e);
         if constexpr (std::is_same_v<E, action_failed>)
             if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
     }
@@ -7860,17 +8562,18 @@ private:
     // has just found clear. Said to the compiler, so that where every guard and action of the
     // run is inlined and cannot throw it sees that nothing set the bit, and end_run's test is
     // gone. GCC takes it as a range it may assume (it follows a range through the bit tests);
-    // Clang, which drops an assumption at the first join of paths, as a store of the cleared
-    // byte, which merges with the running mark or the recorded outcome. (Only where the running
-    // mark is kept: a policy without it never reads the byte at the start.) A machine assigned
-    // to from inside its own run loses its running mark mid-run and breaks this, as it breaks
-    // run to completion: docs/semantics.md, "Reentrancy", says not to.
+    // Clang, which drops an assumption at the first join of paths, and any compiler not known
+    // to follow one (BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS, detail/config.hpp), as a store of the
+    // cleared byte, which merges with the running mark or the recorded outcome. (Only where
+    // the running mark is kept: a policy without it never reads the byte at the start.) A
+    // machine assigned to from inside its own run loses its running mark mid-run and breaks
+    // this, as it breaks run to completion: docs/semantics.md, "Reentrancy", says not to.
     constexpr void start_without_failure() {
         if constexpr (may_throw && Policy::refuse_reentry) {
-#if defined(__clang__)
-            status_ = static_cast<run_status>(bits(status_) & ~failed_bit);
-#else
+#if BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS
             detail::assume(bits(status_) < failed_bit);
+#else
+            status_ = static_cast<run_status>(bits(status_) & ~failed_bit);
 #endif
         }
     }
@@ -7895,7 +8598,7 @@ private:
     // (A try block and not an object whose destructor ends the run: the object would have to
     // live on the stack of every dispatch.)
     template <class Body>
-    [[gnu::always_inline]] constexpr outcome run_to_end(Body&& body) {
+    BSC_DETAIL_ALWAYS_INLINE constexpr outcome run_to_end(Body&& body) {
 #if defined(__cpp_exceptions)
         try {
             return body();
@@ -7936,9 +8639,9 @@ private:
             latch_inputs(context_.value);
             bool fired = false;
             if constexpr (defers)
-                fired = deferring_microstep<Trigger>(e);
+                fired = fire_or_defer<Trigger>(e);
             else
-                fired = backend().template dispatch_microstep<Trigger>(e);
+                fired = backend().template fire_dispatched<Trigger>(e);
             settled = finish(fired);
             commit_outputs(context_.value);
 #if defined(__cpp_exceptions)
@@ -7985,7 +8688,7 @@ private:
         for (;;) {
             if constexpr (layout::has_trigger(eventless_id)) {
                 // Up to max_eventless_steps transitions settle; one more means the chart cycles.
-                for (std::size_t steps = 0; !halted() && backend().template microstep<eventless_id>(eventless{});)
+                for (std::size_t steps = 0; !halted() && backend().template fire<eventless_id>(eventless{});)
                     if (++steps > Policy::max_eventless_steps)
                         return abandon();
             }
@@ -8004,7 +8707,7 @@ private:
             }
             if (++internal_events > Policy::max_internal_events)
                 return abandon();
-            queue_.pop([&](auto const& ev) { microstep_on(ev); });
+            queue_.pop([&](auto const& ev) { fire_queued(ev); });
         }
         return settled(consumed);
     }
@@ -8016,7 +8719,7 @@ private:
         for (; !queue_.empty() && !halted();) {
             if (++n > Policy::max_internal_events)
                 return abandon();
-            queue_.pop([&](auto const& ev) { microstep_on(ev); });
+            queue_.pop([&](auto const& ev) { fire_queued(ev); });
         }
         if constexpr (defers) {
             // The deferred events a transition of this cycle released, each one microstep.
@@ -8025,7 +8728,7 @@ private:
                 if (!retry_deferred()) break;
                 for (; !queue_.empty() && !halted();) {
                     if (++n > Policy::max_internal_events) return abandon();
-                    queue_.pop([&](auto const& ev) { microstep_on(ev); });
+                    queue_.pop([&](auto const& ev) { fire_queued(ev); });
                 }
             }
         }
@@ -8171,6 +8874,8 @@ protected:
 // machine's pending events (runtime/delayed_events.hpp) through the raise argument that every
 // action receives; a chart that uses them gets a queue with slots for them (runtime/queue_for.hpp).
 
+#include <cstdlib>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 
@@ -8196,6 +8901,20 @@ struct cancel_delayed_action : action_base {
         raise.cancel(id);
     }
 };
+
+// Deliberately not constexpr (as bsc_after_negative_delay in dsl/row.hpp): in a constexpr chart,
+// reaching it is the compile error, and its name says what is wrong; a chart built at run time
+// throws (or aborts without exceptions). 0 is "no id": bsc::raise_after without an id sends
+// under it, and nothing can be cancelled by it.
+[[noreturn]] inline void bsc_cancel_delayed_id_zero_names_no_delayed_event() {
+#if defined(__cpp_exceptions)
+    throw std::invalid_argument(
+        "bsc::cancel_delayed: id 0 names no delayed event (it is the id of none); send with "
+        "bsc::raise_after(delay, e, id) and cancel with the same nonzero id");
+#else
+    std::abort();
+#endif
+}
 
 template <class A>
 inline constexpr bool is_delayed_raise = false;
@@ -8223,16 +8942,28 @@ namespace bsc {
 /// `delay` processes it, after the components' turns, as a raised event. It is not tied to the
 /// state that sent it; `bsc::cancel_delayed(id)` cancels it while it is pending (an id of 0 is
 /// none). The machine keeps `Policy::delayed_capacity` pending events; one more is dropped and
-/// the run reports `outcome::queue_overflow`.
-/// Requirements: `e` is an event of the chart (or of a family of one); 0 <= delay.
+/// the run reports `outcome::queue_overflow`. An event whose due time would lie past
+/// bsc::duration::max() never comes due, and is not kept (runtime/delayed_events.hpp).
+/// Requirements: `e` is an event of the chart (or of a family of one); 0 <= delay <=
+/// bsc::duration::max() (as for bsc::after: otherwise a constexpr chart does not compile, and
+/// one built at run time throws std::invalid_argument / std::out_of_range).
 template <class Rep, class Period, class E>
 constexpr auto raise_after(std::chrono::duration<Rep, Period> delay, E e, int id = 0) {
     if (delay < std::chrono::duration<Rep, Period>::zero()) detail::bsc_after_negative_delay();
+    if (std::chrono::duration<long double, std::nano>(delay) >
+        std::chrono::duration<long double, std::nano>(duration::max()))
+        detail::bsc_after_delay_beyond_bsc_duration();
     return detail::delayed_raise<E>{{}, std::chrono::duration_cast<duration>(delay), std::move(e), id};
 }
 
 /// An action that cancels the delayed events still pending under `id` (bsc::raise_after).
-constexpr auto cancel_delayed(int id) { return detail::cancel_delayed_action{{}, id}; }
+/// Requirements: id != 0 (0 is no id; a constexpr chart with cancel_delayed(0) does not compile,
+/// the error naming bsc_cancel_delayed_id_zero_names_no_delayed_event, and one built at run time
+/// throws std::invalid_argument).
+constexpr auto cancel_delayed(int id) {
+    if (id == 0) detail::bsc_cancel_delayed_id_zero_names_no_delayed_event();
+    return detail::cancel_delayed_action{{}, id};
+}
 
 }  // namespace bsc
 // end include/bsc/dsl/delayed.hpp
@@ -8243,6 +8974,14 @@ constexpr auto cancel_delayed(int id) { return detail::cancel_delayed_action{{},
 // events plus a fixed number of slots, each an event with the time it comes due. step(now)
 // moves the events due into the ring, earliest first; a pending event does not belong to the
 // state that sent it, so leaving that state does not cancel it.
+//
+// An event whose due time would lie past duration::max() (a delay near duration::max() from a
+// clock already far from zero) never comes due: no step(now) can reach that time. It is not
+// kept: schedule() accepts it (no overflow) and it takes no slot, so it is neither saved,
+// restored nor explored, and there is nothing for its id to cancel. The same holds where the
+// due time moves: when the clock starts (start_clock: what was sent before the first cycle
+// counts from it) and when a saved machine resumes at a later time (bsc::resume_at,
+// detail/state_bytes.hpp).
 
 #include <array>
 #include <cstddef>
@@ -8263,7 +9002,8 @@ public:
     using typename base::value_type;
 
     /// Schedules e to come due `delay` after the machine's clock (the time of its last cycle).
-    /// False, and an overflow reported at the end of the run, if every slot is taken.
+    /// False, and an overflow reported at the end of the run, if every slot is taken. An event
+    /// due past duration::max() never comes due: it is not kept, and true is returned.
     template <class E>
     constexpr bool schedule(duration delay, E const& e, int id) noexcept(std::is_nothrow_copy_constructible_v<E>) {
         constexpr int as = queued_index<E>(type_list<Es...>{});
@@ -8272,10 +9012,11 @@ public:
             return false;
         } else {
             using F = at<static_cast<std::size_t>(as), type_list<Es...>>;
+            if (shifted_past_max(clock_, delay)) return true;  // never due
             for (auto& s : slots_)
                 if (!s.pending) {
                     s.pending = true;
-                    s.due = shifted(clock_, delay);
+                    s.due = clock_ + delay;
                     s.order = sent_++;
                     s.id = id;
                     s.event = value_type{std::in_place_type<F>, event_as<F>(e)};
@@ -8286,7 +9027,8 @@ public:
         }
     }
 
-    /// Cancels every pending event scheduled under `id` (0: none).
+    /// Cancels every pending event scheduled under `id` (0, no id: none; bsc::cancel_delayed
+    /// refuses it).
     constexpr void cancel(int id) noexcept {
         if (id == 0) return;
         for (auto& s : slots_)
@@ -8296,10 +9038,16 @@ public:
     // ---- for the machine -----------------------------------------------------------------------
     constexpr void set_clock(duration now) { clock_ = now; }
     // The machine's clock started at `now` (its first cycle): what was scheduled before counts
-    // from there, as the timeouts armed before it do.
+    // from there, as the timeouts armed before it do (until then a due time is the delay, the
+    // clock being zero). An event then due past duration::max() never comes due: dropped.
     constexpr void start_clock(duration now) {
         for (auto& s : slots_)
-            if (s.pending) s.due = shifted(s.due, now);
+            if (s.pending) {
+                if (shifted_past_max(s.due, now))
+                    s.pending = false;
+                else
+                    s.due = shifted(s.due, now);
+            }
         clock_ = now;
     }
     // Moves the events due at `now` into the queue of raised events, earliest first, and among
@@ -8414,7 +9162,8 @@ struct queued_events {
 template <class Model, class... Raised>
 struct queued_events<Model, type_list<Raised...>> {
     template <class E>
-    static constexpr bool kept = is_done_event<E> || __is_same(E, action_failed) || position_in<E, type_list<Raised...>>::value >= 0;
+    static constexpr bool kept = is_done_event<E> || BSC_DETAIL_IS_SAME(E, action_failed) ||
+                                 position_in<E, type_list<Raised...>>::value >= 0;
     using type = std::conditional_t<(... && (position_in<Raised, typename Model::events>::value >= 0)),
                                     decltype([]<class... Es>(type_list<Es...>) {
                                         return concat_t<std::conditional_t<kept<Es>, type_list<Es>, type_list<>>...>{};
@@ -8482,8 +9231,20 @@ using queue_for = std::conditional_t<
 
 namespace bsc::detail {
 
+// The chart a machine runs: Chart itself, or the chart a bsc::chart_ref names.
 template <class Chart>
-concept rejected = is_rejected_chart<std::remove_cv_t<Chart>>;
+struct referred_chart {
+    using type = Chart;
+};
+template <auto const& Chart>
+struct referred_chart<chart_ref<Chart>> {
+    using type = std::remove_cvref_t<decltype(Chart)>;
+};
+
+// Declared on `decltype(chart)` or on `bsc::chart_ref<chart>`, alike: either way the chart's
+// own errors are the only ones.
+template <class Chart>
+concept rejected = is_rejected_chart<typename referred_chart<std::remove_cv_t<Chart>>::type>;
 
 template <class Chart>
 class inert_machine {
@@ -8509,10 +9270,10 @@ public:
     constexpr outcome last_outcome() const { return outcome::ignored; }
     std::exception_ptr last_failure() const { return nullptr; }
     constexpr duration now() const { return duration::zero(); }
-    constexpr context_type& context() { return context_; }
-    constexpr context_type const& context() const { return context_; }
+    constexpr context_type const& context() const { return context_; }  // const, as a machine's
 
 private:
+    friend struct access;
     context_type context_{};
 };
 
@@ -8645,7 +9406,7 @@ private:
     // (Where E is the row's own event, e is passed as it is: most rows of most charts, and no
     // conversion to instantiate.)
     template <int Row, class E>
-    static constexpr bool sees_itself = __is_same(E, detail::row_event_t<typename model::template row_at<Row>>);
+    static constexpr bool sees_itself = BSC_DETAIL_IS_SAME(E, detail::row_event_t<typename model::template row_at<Row>>);
     template <int Row, class E>
     static constexpr decltype(auto) seen_by(E const& e) {
         return detail::event_as<detail::row_event_t<typename model::template row_at<Row>>>(e);
@@ -8885,7 +9646,7 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, deferring_microstep)
+        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, fire_or_defer)
             if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), seen_by<Row>(e));
             this->deferral_selected();
             return;
@@ -8967,7 +9728,7 @@ private:
     // are straight-line code.
     template <int Leaf, int Row, class E>
     constexpr void fire_from(E const& e) {
-        if constexpr (!plan::has_parallel) this->mark_running();  // else microstep has marked
+        if constexpr (!plan::has_parallel) this->mark_running();  // else select_and_fire has marked
         constexpr int d = rows.domain[Row];
         if constexpr (d >= 0 && acts_on_exit_up(Leaf, d))
             exit_up<Leaf, d>();
@@ -9127,42 +9888,42 @@ private:
         }(std::make_index_sequence<n>{});
     }
 
-    // One microstep on a trigger; true if a transition fired. Flattened: the walk of the
-    // relevant states, the guards, exits, actions and entries become one straight-line nest of
-    // switches for the trigger, whatever the compiler's inlining budget for the function that
-    // dispatches (a dispatch of a parallel chart otherwise ended up as calls of the walk's
-    // lambdas, which cost more than the walk).
+    // Selects and fires the transitions Trigger enables, without settling; true if a transition
+    // fired. Flattened: the walk of the relevant states, the guards, exits, actions and entries
+    // become one straight-line nest of switches for the trigger, whatever the compiler's
+    // inlining budget for the function that dispatches (a dispatch of a parallel chart otherwise
+    // ended up as calls of the walk's lambdas, which cost more than the walk).
     template <int Trigger, class E>
-    [[gnu::flatten]] constexpr bool microstep(E const& e) {
-        return microstep_body<Trigger>(e);
+    BSC_DETAIL_FLATTEN constexpr bool fire(E const& e) {
+        return select_and_fire<Trigger>(e);
     }
-    // The microstep of a dispatched event. Where the dispatch has nothing to do after it but
-    // record its outcome (no parallel states, nothing raised, no eventless transition or
-    // deferral to settle, and a policy that records), it is flattened in line: the dispatch
-    // then records the outcome where the transition ends and calls nothing (the call cost a
-    // frame, and a mark of the running machine that the record overwrites). Elsewhere it is
-    // called: a dispatch that records nothing ends in a jump to it, and one that settles, or
-    // a microstep of several regions, grows more in line than the call costs (measured:
-    // docs/benchmarks.md, analysis section 16).
-    static constexpr bool microstep_in_dispatch =
+    // fire() for a dispatched event. Where the dispatch has nothing to do after it but record
+    // its outcome (no parallel states, nothing raised, no eventless transition or deferral to
+    // settle, and a policy that records), it is flattened in line: the dispatch then records
+    // the outcome where the transition ends and calls nothing (the call cost a frame, and a
+    // mark of the running machine that the record overwrites). Elsewhere fire() is called: a
+    // dispatch that records nothing ends in a jump to it, and one that settles, or a firing in
+    // several regions, grows more in line than the call costs (docs/performance.md,
+    // rule "Dispatched event fired in line where nothing follows").
+    static constexpr bool dispatch_fires_in_line =
         !plan::has_parallel && (Policy::refuse_reentry || Policy::keep_last_outcome) &&
         std::is_same_v<detail::queue_for<Chart, Policy>, detail::no_event_queue> &&
         !plan::has_trigger(detail::eventless_id) && !base::defers;
     template <int Trigger, class E>
-    BSC_DETAIL_WALK_INLINE constexpr bool dispatch_microstep(E const& e) {
-        if constexpr (microstep_in_dispatch)
-            return microstep_in_line<Trigger>(e);
+    BSC_DETAIL_WALK_INLINE constexpr bool fire_dispatched(E const& e) {
+        if constexpr (dispatch_fires_in_line)
+            return fire_in_line<Trigger>(e);
         else
-            return microstep<Trigger>(e);
+            return fire<Trigger>(e);
     }
     // (Flattened before it is put in line: GCC does not flatten what an always-inline function
-    // brings into a flattened one, hence microstep's own body, not this.)
+    // brings into a flattened one, hence select_and_fire itself, not fire().)
     template <int Trigger, class E>
-    [[gnu::flatten, gnu::always_inline]] constexpr bool microstep_in_line(E const& e) {
-        return microstep_body<Trigger>(e);
+    BSC_DETAIL_FLATTEN BSC_DETAIL_ALWAYS_INLINE constexpr bool fire_in_line(E const& e) {
+        return select_and_fire<Trigger>(e);
     }
     template <int Trigger, class E>
-    constexpr bool microstep_body(E const& e) {
+    constexpr bool select_and_fire(E const& e) {
         if constexpr (!plan::has_trigger(Trigger)) {
             return false;
         } else {
@@ -9198,6 +9959,44 @@ private:
             return true;
     }
 
+    // Condition-driven row Row, whose condition holds, fires; but if it is a timeout and a
+    // timeout row of its source declared after it is due too, came due first (plan.hpp,
+    // later_timeouts; detail::came_due_first) and its guard holds, that one fires instead: of a
+    // state's timeouts due at once, the first to come due. A state with one timeout row, and
+    // every eventless row, goes straight to fire_condition.
+    template <int Row>
+    constexpr void fire_first_due() {
+        constexpr auto const& later = plan::template later_timeouts<Row>;
+        if constexpr (later.size() == 0) {
+            fire_condition<Row>();
+        } else {
+            duration const now = this->cycle_time();
+            std::size_t first = 0;  // 0: Row itself, k: later[k - 1]
+            duration since = this->armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])];
+            duration delay = this->template row<Row>().trigger_value.delay;
+            [&]<std::size_t... K>(std::index_sequence<K...>) {
+                (
+                    [&] {
+                        constexpr int u = later[K];
+                        duration const u_since = this->armed_[static_cast<std::size_t>(plan::row_timeout_slot[u])];
+                        duration const u_delay = this->template row<u>().trigger_value.delay;
+                        if (!detail::has_elapsed(u_since, now, u_delay) || !detail::came_due_first(u_since, u_delay, since, delay))
+                            return;
+                        if constexpr (rows.guarded[u])
+                            if (!guard_holds<u>(eventless{})) return;
+                        first = K + 1;
+                        since = u_since;
+                        delay = u_delay;
+                    }(),
+                    ...);
+                if (first == 0)
+                    fire_condition<Row>();
+                else
+                    (void)((first == K + 1 ? (fire_condition<later[K]>(), true) : false) || ...);
+            }(std::make_index_sequence<later.size()>{});
+        }
+    }
+
     template <int Row>
     constexpr void fire_condition() {
         constexpr int d = rows.domain[Row];
@@ -9205,8 +10004,9 @@ private:
             exit_below<d>();
         run_action<Row>(eventless{});
         run_entries<Row>();
-        // An internal timeout, which leaves its state active, counts again from now.
-        if constexpr (d < 0 && plan::row_timeout_slot[Row] >= 0)
+        // A timeout that leaves its state active (internal, or local: its domain is its state)
+        // counts again from now.
+        if constexpr ((d < 0 || d == rows.source[Row]) && plan::row_timeout_slot[Row] >= 0)
             armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = this->cycle_time();
     }
 
@@ -9214,7 +10014,7 @@ private:
     constexpr bool try_component_candidates() {
         constexpr auto const& candidates = plan::template component_candidates<Frontier, Component>;
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return ((condition_holds<candidates[I]>() && (fire_condition<candidates[I]>(), true)) || ...);
+            return ((condition_holds<candidates[I]>() && (fire_first_due<candidates[I]>(), true)) || ...);
         }(std::make_index_sequence<candidates.size()>{});
     }
 
@@ -9260,11 +10060,17 @@ machine(C const&, A...) -> machine<C const, default_policy, detail::observer_arg
 // Systems of actors (the COMDES-II paper [COMDES]; the modules of the ECA paper [ECA]; see
 // docs/references.md): several machines — controllers and plant models — wired by typed signals
 // from output channels to input channels, stepped in a declared order with the time given from
-// outside. The wiring is one list, the system's actor diagram.
+// outside. The wiring is one list, the system's actor diagram, and it is checked where the
+// system type is instantiated: a link goes from an output to an input of the same value type
+// (or says how to convert with bsc::convert), one link at most drives an input, every linked
+// actor is stepped once per step, and every input of a stepped actor is driven by a link or
+// declared bsc::from_outside. Each defect is one compile error (bsc::error, docs/checks.md).
 
+#include <array>
 #include <cstddef>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 
 
 namespace bsc {
@@ -9290,23 +10096,76 @@ struct fail_safe {
 /// lost object, not a late one.
 struct lossless {};
 
+/// `convert<F>`: the consumer of the link reads `F(value)` for the source's value: a conversion
+/// made explicit where the types of the two channels differ (a link without it requires the
+/// same value type on both ends). F is a constexpr callable: a captureless lambda, a function
+/// pointer. What a fail_safe<V> link reads while stale is V itself, already of the target's type.
+template <auto F>
+struct convert {
+    static constexpr auto function = F;
+};
+
+namespace detail {
+
+template <class T>
+struct is_staleness_policy : std::false_type {};
+template <>
+struct is_staleness_policy<hold_last> : std::true_type {};
+template <>
+struct is_staleness_policy<lossless> : std::true_type {};
+template <auto V>
+struct is_staleness_policy<fail_safe<V>> : std::true_type {};
+
+template <class T>
+struct is_conversion : std::false_type {};
+template <auto F>
+struct is_conversion<convert<F>> : std::true_type {};
+
+// The identity, for a link without bsc::convert.
+struct no_conversion {};
+
+// The first of Ts for which Is holds, or Default.
+template <template <class> class Is, class Default, class... Ts>
+struct first_such {
+    using type = Default;
+};
+template <template <class> class Is, class Default, class T, class... Ts>
+struct first_such<Is, Default, T, Ts...>
+    : std::conditional_t<Is<T>::value, std::type_identity<T>, first_such<Is, Default, Ts...>> {};
+
+}  // namespace detail
+
 /// A signal: the published value of output channel `FromChannel` of actor `FromActor` is
 /// written into input channel `ToChannel` of actor `ToActor` just before `ToActor` steps.
 /// Actors are members of the system's aggregate; channels are members of their contexts.
-/// `WhenStale` (hold_last, fail_safe<V> or lossless) says what the consumer reads when the two
-/// run on different nodes and the publisher falls silent.
-template <auto FromActor, auto FromChannel, auto ToActor, auto ToChannel, class WhenStale = hold_last>
+/// `Options`, in any order and each at most once: what the consumer reads when the two run on
+/// different nodes and the publisher falls silent (hold_last, the default, fail_safe<V> or
+/// lossless), and `convert<F>` for channels of different value types.
+template <auto FromActor, auto FromChannel, auto ToActor, auto ToChannel, class... Options>
 struct link {
     static constexpr auto from_actor = FromActor;
     static constexpr auto from_channel = FromChannel;
     static constexpr auto to_actor = ToActor;
     static constexpr auto to_channel = ToChannel;
-    using when_stale = WhenStale;
+    using when_stale = typename detail::first_such<detail::is_staleness_policy, hold_last, Options...>::type;
+    /// bsc::convert<F>, or detail::no_conversion.
+    using conversion = typename detail::first_such<detail::is_conversion, detail::no_conversion, Options...>::type;
+    using options = detail::type_list<Options...>;
+
+    /// What the consumer reads for the source's value `v`: v, or F(v) with bsc::convert<F>.
+    template <class V>
+    static constexpr auto converted(V const& v) {
+        if constexpr (std::is_same_v<conversion, detail::no_conversion>)
+            return v;
+        else
+            return conversion::function(v);
+    }
 
     template <class Actors>
     static constexpr void transfer(Actors& actors) {
         auto const& source = (actors.*FromActor).context().*FromChannel;
-        ((actors.*ToActor).context().*ToChannel).set(source.get());
+        // The target's input is set through its machine's const context, as the environment sets it.
+        ((actors.*ToActor).context().*ToChannel).set(converted(source.get()));
     }
     template <auto Actor>
     static constexpr bool targets() {
@@ -9315,6 +10174,16 @@ struct link {
         else
             return false;
     }
+};
+
+/// An input that no link drives and that the environment sets between steps (an operator's
+/// switch, a sensor outside the system): input channel `Channel` of actor `Actor`, declared
+/// among a system's links. Every input (bsc::input) of a stepped actor is driven by a link or
+/// so declared.
+template <auto Actor, auto Channel>
+struct from_outside {
+    static constexpr auto actor = Actor;
+    static constexpr auto channel = Channel;
 };
 
 /// The order in which a system steps its actors, as pointers to the aggregate's members.
@@ -9329,17 +10198,352 @@ struct system_report {
     bool halted = false;  ///< some actor is halted (a final child of its root is active)
 };
 
+namespace detail {
+
+template <class T>
+inline constexpr bool is_link = false;
+template <auto FromActor, auto FromChannel, auto ToActor, auto ToChannel, class... Options>
+inline constexpr bool is_link<link<FromActor, FromChannel, ToActor, ToChannel, Options...>> = true;
+template <class T>
+inline constexpr bool is_from_outside = false;
+template <auto Actor, auto Channel>
+inline constexpr bool is_from_outside<from_outside<Actor, Channel>> = true;
+
+template <class List>
+struct tuple_of_list;
+template <class... Ts>
+struct tuple_of_list<type_list<Ts...>> {
+    using type = std::tuple<Ts...>;
+};
+// The entries of a system for which Is holds, in their order, as a std::tuple.
+template <template <class> class Is, class... Entries>
+using entries_such = typename tuple_of_list<
+    concat_t<type_list<>, std::conditional_t<Is<Entries>::value, type_list<Entries>, type_list<>>...>>::type;
+template <class T>
+struct link_entry : std::bool_constant<is_link<T>> {};
+template <class T>
+struct from_outside_entry : std::bool_constant<is_from_outside<T>> {};
+
+// Two pointers to members (or any two template arguments) that designate the same member.
+template <auto A, auto B>
+constexpr bool same_member_pointer() {
+    if constexpr (std::is_same_v<decltype(A), decltype(B)>)
+        return A == B;
+    else
+        return false;
+}
+
+// Channel kinds: bsc::input, bsc::output, bsc::inout (each only itself).
+template <class T>
+inline constexpr bool is_input_channel = false;
+template <class T>
+inline constexpr bool is_input_channel<input<T>> = true;
+template <class T>
+inline constexpr bool is_output_channel = false;
+template <class T>
+inline constexpr bool is_output_channel<output<T>> = true;
+template <class T>
+inline constexpr bool is_inout_channel = false;
+template <class T>
+inline constexpr bool is_inout_channel<inout<T>> = true;
+
+// An actor of Actors that has a context (a machine), and the member Channel of that context.
+template <class Actors, auto Actor>
+concept actor_with_context = requires(Actors const& actors) { (actors.*Actor).context(); };
+template <class Actors, auto Actor>
+using context_of_actor = std::remove_cvref_t<decltype((std::declval<Actors const&>().*Actor).context())>;
+template <class Actors, auto Actor, auto Channel>
+concept actor_has_member =
+    actor_with_context<Actors, Actor> && requires(context_of_actor<Actors, Actor> const& context) { context.*Channel; };
+template <class Actors, auto Actor, auto Channel>
+using member_of_actor = std::remove_cvref_t<decltype(std::declval<context_of_actor<Actors, Actor> const&>().*Channel)>;
+
+// Whether Channel is a member of Actor's context that the actor publishes (an output, an
+// inout), or that is written from outside it (an input, an inout).
+template <class Actors, auto Actor, auto Channel>
+constexpr bool publishes() {
+    if constexpr (actor_has_member<Actors, Actor, Channel>) {
+        using M = member_of_actor<Actors, Actor, Channel>;
+        return is_output_channel<M> || is_inout_channel<M>;
+    } else {
+        return false;
+    }
+}
+template <class Actors, auto Actor, auto Channel>
+constexpr bool written_from_outside() {
+    if constexpr (actor_has_member<Actors, Actor, Channel>) {
+        using M = member_of_actor<Actors, Actor, Channel>;
+        return is_input_channel<M> || is_inout_channel<M>;
+    } else {
+        return false;
+    }
+}
+
+template <class Conversion, class From, class To>
+concept conversion_applies = requires(From const& value) { Conversion::function(value); } &&
+                             std::is_convertible_v<decltype(Conversion::function(std::declval<From const&>())), To>;
+
+// What an option of bsc::link is: 1 a staleness policy, 2 a conversion, 0 neither.
+template <class Option>
+constexpr int option_kind() {
+    return is_staleness_policy<Option>::value ? 1 : is_conversion<Option>::value ? 2 : 0;
+}
+
+// Each option of a link is known, and none is a second of its kind.
+template <class Options>
+struct link_options_rules;
+template <class... Options>
+struct link_options_rules<type_list<Options...>> {
+    static constexpr std::array<int, sizeof...(Options) + 1> kinds{option_kind<Options>()..., -1};
+    template <std::size_t I>
+    static constexpr bool repeated() {
+        for (std::size_t j = 0; j < I; ++j)
+            if (kinds[j] == kinds[I]) return true;
+        return false;
+    }
+    template <std::size_t I, class Option>
+    static constexpr bool check_one() {
+        if constexpr (option_kind<Option>() == 0 || repeated<I>())
+            return report<error::invalid_link_option<Option>>();
+        else
+            return true;
+    }
+    static constexpr bool check() {
+        return []<std::size_t... I>(std::index_sequence<I...>) {
+            return ((check_one<I, Options>() ? 0 : 1) + ... + 0) == 0;
+        }(std::index_sequence_for<Options...>{});
+    }
+};
+
+BSC_DETAIL_DECLARED_ONLY_BEGIN
+// The position of the member that Channel designates among the members of the aggregate
+// Context (member_count<Context> if none), found by comparing addresses, as member_name does.
+template <class Context, auto Channel>
+constexpr std::size_t member_index() {
+    auto const& object = declared_only<Context>.value;
+    void const* const target = &(object.*Channel);
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+        auto const fields = tie_fields(object);
+        std::size_t found = sizeof...(I);
+        ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
+        return found;
+    }(std::make_index_sequence<member_count<Context>>{});
+}
+BSC_DETAIL_DECLARED_ONLY_END
+
+// The name of member I of Context, as a template argument.
+template <class Context, std::size_t I>
+constexpr auto member_name_argument() {
+    constexpr std::string_view name = names_of<Context>()[I];
+    fixed_string<name.size() + 1> text{};
+    for (std::size_t k = 0; k < name.size(); ++k) text.chars[k] = name[k];
+    return text;
+}
+
+// The checks of a system's wiring, each defect reported once (detail::report) as the error that
+// names it; check() is true when there is none. A check that would only repeat an earlier
+// finding in other words is not run: the inputs left undriven are looked for once every link
+// and bsc::from_outside entry is right.
+template <class Actors, class Order, class... Entries>
+struct system_rules;
+
+template <class Actors, auto... Steps, class... Entries>
+struct system_rules<Actors, order<Steps...>, Entries...> {
+    using links = entries_such<link_entry, Entries...>;
+    using declared_outside = entries_such<from_outside_entry, Entries...>;
+
+    template <std::size_t I>
+    static constexpr auto step_at = std::get<I>(std::tuple{Steps...});
+
+    template <auto Actor>
+    static constexpr bool in_order() {
+        return (same_member_pointer<Actor, Steps>() || ...);
+    }
+    // Whether the order names its I-th actor for the first time there.
+    template <std::size_t I>
+    static constexpr bool first_in_order() {
+        return []<std::size_t... J>(std::index_sequence<J...>) {
+            return !(same_member_pointer<step_at<J>, step_at<I>>() || ...);
+        }(std::make_index_sequence<I>{});
+    }
+    // Whether a link drives Channel of Actor.
+    template <auto Actor, auto Channel>
+    static constexpr bool linked() {
+        return []<class... L>(std::tuple<L...>*) {
+            return ((same_member_pointer<L::to_actor, Actor>() && same_member_pointer<L::to_channel, Channel>()) || ...);
+        }(static_cast<links*>(nullptr));
+    }
+
+    template <std::size_t I>
+    static constexpr bool check_step() {
+        if constexpr (!first_in_order<I>())
+            return report<error::actor_twice_in_order<step_at<I>>>();
+        else
+            return true;
+    }
+
+    template <class L>
+    static constexpr bool check_link() {
+        if constexpr (!link_options_rules<typename L::options>::check()) {
+            return false;
+        } else {
+            constexpr bool from_in = in_order<L::from_actor>();
+            constexpr bool to_in = in_order<L::to_actor>();
+            if constexpr (!from_in) report<error::actor_not_in_order<L::from_actor>>();
+            if constexpr (!to_in) report<error::actor_not_in_order<L::to_actor>>();
+            if constexpr (!from_in || !to_in) {
+                return false;
+            } else {
+                constexpr bool source = publishes<Actors, L::from_actor, L::from_channel>();
+                constexpr bool target = written_from_outside<Actors, L::to_actor, L::to_channel>();
+                if constexpr (!source) report<error::link_source_not_an_output<L::from_actor, L::from_channel>>();
+                if constexpr (!target) report<error::link_target_not_an_input<L::to_actor, L::to_channel>>();
+                if constexpr (!source || !target) {
+                    return false;
+                } else {
+                    using from = channel_value<member_of_actor<Actors, L::from_actor, L::from_channel>>;
+                    using to = channel_value<member_of_actor<Actors, L::to_actor, L::to_channel>>;
+                    using conversion = typename L::conversion;
+                    if constexpr (std::is_same_v<conversion, no_conversion> && !std::is_same_v<from, to>)
+                        return report<error::link_value_types_differ<L::from_channel, L::to_channel, from, to>>();
+                    else if constexpr (!std::is_same_v<conversion, no_conversion> &&
+                                       !conversion_applies<conversion, from, to>)
+                        return report<error::link_conversion_not_applicable<conversion, from, to>>();
+                    else
+                        return true;
+                }
+            }
+        }
+    }
+
+    // Link I drives an input that an earlier link drives already.
+    template <std::size_t I>
+    static constexpr bool check_driven_once() {
+        using L = std::tuple_element_t<I, links>;
+        constexpr bool earlier = []<std::size_t... J>(std::index_sequence<J...>) {
+            return ((same_member_pointer<std::tuple_element_t<J, links>::to_actor, L::to_actor>() &&
+                     same_member_pointer<std::tuple_element_t<J, links>::to_channel, L::to_channel>()) ||
+                    ...);
+        }(std::make_index_sequence<I>{});
+        if constexpr (earlier)
+            return report<error::input_driven_twice<L::to_actor, L::to_channel>>();
+        else
+            return true;
+    }
+
+    template <class F>
+    static constexpr bool check_from_outside() {
+        if constexpr (!in_order<F::actor>())
+            return report<error::actor_not_in_order<F::actor>>();
+        else if constexpr (!written_from_outside<Actors, F::actor, F::channel>())
+            return report<error::from_outside_not_an_input<F::actor, F::channel>>();
+        else if constexpr (linked<F::actor, F::channel>())
+            return report<error::input_linked_and_from_outside<F::actor, F::channel>>();
+        else
+            return true;
+    }
+
+    template <class Entry>
+    static constexpr bool check_entry() {
+        if constexpr (is_link<Entry>)
+            return check_link<Entry>();
+        else if constexpr (is_from_outside<Entry>)
+            return check_from_outside<Entry>();
+        else
+            return report<error::not_a_link<Entry>>();
+    }
+
+    // The members of Actor's context that a link or a from_outside entry drives (one more
+    // than the members, for a channel found nowhere).
+    template <auto Actor, class Context>
+    static constexpr auto driven_members() {
+        std::array<bool, member_count<Context> + 1> driven{};
+        auto mark = [&]<auto A, auto Channel>() {
+            if constexpr (same_member_pointer<A, Actor>()) driven[member_index<Context, Channel>()] = true;
+        };
+        []<class... L>(std::tuple<L...>*, auto& m) {
+            (m.template operator()<L::to_actor, L::to_channel>(), ...);
+        }(static_cast<links*>(nullptr), mark);
+        []<class... F>(std::tuple<F...>*, auto& m) {
+            (m.template operator()<F::actor, F::channel>(), ...);
+        }(static_cast<declared_outside*>(nullptr), mark);
+        return driven;
+    }
+    template <auto Actor, class Context>
+    static constexpr auto driven_of = driven_members<Actor, Context>();
+
+    template <auto Actor, class Context, std::size_t K>
+    static constexpr bool check_input_driven() {
+        using member = std::tuple_element_t<K, typename tuple_of_list<member_types<Context>>::type>;
+        if constexpr (is_input_channel<std::remove_cv_t<member>> && !driven_of<Actor, Context>[K])
+            return report<error::input_not_driven<Actor, error::member_number<K>, member_name_argument<Context, K>()>>();
+        else
+            return true;
+    }
+    template <auto Actor, class Context, std::size_t... K>
+    static constexpr bool check_members_driven(std::index_sequence<K...>) {
+        return ((check_input_driven<Actor, Context, K>() ? 0 : 1) + ... + 0) == 0;
+    }
+
+    // Every bsc::input member of the context of the order's I-th actor is driven. Only an
+    // aggregate context is looked into: one described by bsc::fields or Boost.Hana may keep its
+    // channels private, where neither a link nor from_outside can name them. Inputs nested in a
+    // struct or a std::array of the context are not looked for: no link can name them.
+    template <std::size_t I>
+    static constexpr bool check_inputs_driven() {
+        constexpr auto actor = step_at<I>;
+        if constexpr (!first_in_order<I>() || !actor_with_context<Actors, actor>) {
+            return true;
+        } else {
+            using context = context_of_actor<Actors, actor>;
+            if constexpr (!std::is_class_v<context> || !std::is_aggregate_v<context> ||
+                          described_by_fields<context> || kind_of<context>() != member_kind::record)
+                return true;
+            else
+                return check_members_driven<actor, context>(std::make_index_sequence<member_count<context>>{});
+        }
+    }
+
+    static constexpr bool check() {
+        constexpr bool steps = []<std::size_t... I>(std::index_sequence<I...>) {
+            return ((check_step<I>() ? 0 : 1) + ... + 0) == 0;
+        }(std::index_sequence_for<decltype(Steps)...>{});
+        constexpr bool entries = ((check_entry<Entries>() ? 0 : 1) + ... + 0) == 0;
+        constexpr bool once = []<std::size_t... I>(std::index_sequence<I...>) {
+            return ((check_driven_once<I>() ? 0 : 1) + ... + 0) == 0;
+        }(std::make_index_sequence<std::tuple_size_v<links>>{});
+        if constexpr (!entries || !once) {
+            return false;
+        } else {
+            constexpr bool inputs = []<std::size_t... I>(std::index_sequence<I...>) {
+                return ((check_inputs_driven<I>() ? 0 : 1) + ... + 0) == 0;
+            }(std::index_sequence_for<decltype(Steps)...>{});
+            return steps && inputs;
+        }
+    }
+};
+
+}  // namespace detail
+
 template <class Actors, class Order, class... Links>
 struct system;
 
 /// A system: the aggregate `Actors` of machines (anything with `context()` and `step(now)`),
-/// stepped in `Order`, with `Links` delivering signals. `actors` is a public member, so a
-/// system is itself an aggregate that the explorer can encode. No heap.
+/// stepped in `Order`, with `Links` delivering signals and `bsc::from_outside` entries naming the
+/// inputs the environment sets. `actors` is a public member, so a system is itself an aggregate
+/// that the explorer can encode. No heap. The wiring is checked where the type is instantiated
+/// (detail::system_rules): each defect is one compile error, and a system with one does nothing.
 template <class Actors, auto... Steps, class... Links>
 struct system<Actors, order<Steps...>, Links...> {
     using actors_type = Actors;
     using order_type = order<Steps...>;
-    using links_type = std::tuple<Links...>;
+    /// The links, in their order (the bsc::from_outside entries left out).
+    using links_type = detail::entries_such<detail::link_entry, Links...>;
+    /// The bsc::from_outside entries, in their order.
+    using from_outside_type = detail::entries_such<detail::from_outside_entry, Links...>;
+    /// Whether the wiring passed every check.
+    static constexpr bool well_formed = detail::system_rules<Actors, order<Steps...>, Links...>::check();
+    static_assert(well_formed || true);  // instantiates the checks here (their errors are the report)
 
     Actors actors;
 
@@ -9348,14 +10552,19 @@ struct system<Actors, order<Steps...>, Links...> {
     /// step for the others), then runs one cycle at `now`.
     constexpr system_report step(duration now) {
         system_report report;
-        (step_one<Steps>(now, report), ...);
+        if constexpr (well_formed)
+            (step_one<Steps>(now, report), ...);
+        else
+            (void)now;
         return report;
     }
 
 private:
     template <auto Actor>
     constexpr void step_one(duration now, system_report& report) {
-        ((Links::template targets<Actor>() ? Links::transfer(actors) : void()), ...);
+        []<class... L>(std::tuple<L...>*, Actors& all) {
+            ((L::template targets<Actor>() ? L::transfer(all) : void()), ...);
+        }(static_cast<links_type*>(nullptr), actors);
         auto const r = (actors.*Actor).step(now);
         report.transitions += r.transitions;
         report.queue_overflow = report.queue_overflow || r.status == outcome::queue_overflow;
@@ -9383,7 +10592,7 @@ private:
 //   activPath(from, to, hist)               activate_path(domain, target)
 //   StopStEng()                             the destructor (the engine owns no resource)
 //
-// and the five steps of its Figure 9 are those of microstep(). step(now) adds the BSC execution
+// and the five steps of its Figure 9 are those of select_and_fire(). step(now) adds the BSC execution
 // cycle of the Basic Statechart paper [BSC] (one condition-driven transition per component)
 // with the same tables.
 
@@ -9699,6 +10908,8 @@ public:
 
     /// How many states keep an entry time for their timeouts.
     static constexpr std::size_t timeout_slots = static_cast<std::size_t>(layout::timeout_slots);
+    /// Whether a state has several timeout rows, which compete by due time when due together.
+    static constexpr bool competing_timeouts = layout::has_competing_timeouts;
 
     /// True if a transition triggered by `row_event` takes `event`: the same event, or a family
     /// of it (a base class of its type among the chart's events, or bsc::any_event).
@@ -10106,7 +11317,7 @@ private:
             return &e;
         else if constexpr (std::is_same_v<U, bsc::any_event>)
             return &any_event_value;
-        else if constexpr (__is_base_of(U, E))
+        else if constexpr (BSC_DETAIL_IS_BASE_OF(U, E))
             return static_cast<U const*>(&e);
         else
             return nullptr;  // not a family of E: no transition on U takes E
@@ -10134,7 +11345,7 @@ private:
         if constexpr (observed)
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_.value, this->chart(), e);
         if constexpr (base::defers) {
-            if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's deferring_microstep)
+            if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's fire_or_defer)
                 this->deferral_selected();
                 return;
             }
@@ -10144,27 +11355,28 @@ private:
             this->run(action, this->chart(), this->context_.value, e, this->queue_);
     }
 
-    // The microstep of a dispatched event: the same as any other here (the compiled back end
-    // puts it in line in the dispatch).
+    // fire() for a dispatched event: the same as for any other here (the compiled back end puts
+    // it in line in the dispatch).
     template <int Trigger, class E>
-    bool dispatch_microstep(E const& e) {
-        return microstep<Trigger>(e);
+    bool fire_dispatched(E const& e) {
+        return fire<Trigger>(e);
     }
+    // Selects and fires the transitions Trigger enables, without settling; true if a
+    // transition was selected.
     template <int Trigger, class E>
-    bool microstep(E const& e) {
+    bool fire(E const& e) {
         if constexpr (Trigger >= 0 && base::model::has_families)
-            return microstep(static_cast<event_id>(Trigger), as_families(e));
+            return select_and_fire(static_cast<event_id>(Trigger), as_families(e));
         else if constexpr (Trigger >= 0)  // E, or an event the chart does not name, as the trigger's type
-            return microstep(static_cast<event_id>(Trigger),
-                             plain_event{address_as<bsc::detail::at<static_cast<std::size_t>(Trigger), typename base::event_types>>(e)});
+            return select_and_fire(static_cast<event_id>(Trigger),
+                                   plain_event{address_as<bsc::detail::at<static_cast<std::size_t>(Trigger), typename base::event_types>>(e)});
         else
-            return microstep(static_cast<event_id>(Trigger), plain_event{&e});
+            return select_and_fire(static_cast<event_id>(Trigger), plain_event{&e});
     }
 
-    // One microstep for an event, the five steps of the paper's Figure 9; true if a
-    // transition was selected.
+    // The five steps of the paper's Figure 9 for an event; true if a transition was selected.
     template <class Event>
-    bool microstep(event_id event, Event const& e) {
+    bool select_and_fire(event_id event, Event const& e) {
         // 1. Sense the event: an event no transition is triggered by changes nothing.
         if (!tables_type::handles(event)) return false;
 
@@ -10218,7 +11430,7 @@ private:
         for (state_id a = frontier;; a = states[a].parent) {
             for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)])
                 if (is_condition(transitions[static_cast<std::size_t>(t)].event) && condition_holds(t)) {
-                    fire_condition(t);
+                    fire_condition(first_due(t));
                     return true;
                 }
             if (a == component) return false;
@@ -10237,15 +11449,48 @@ private:
         return guard_holds(t, &no_event);
     }
 
+    // The transition that fires when condition-driven transition t's condition holds: t, unless
+    // it is a timeout and a timeout of the same origin declared after it is due too, came due
+    // first (detail::came_due_first) and its guard holds; then the first of those to come due.
+    // (The timeouts declared before t did not hold, or t would not be tried.) Only a chart with
+    // a state of several timeout rows looks, and only at such a state's timeouts.
+    std::int16_t first_due(std::int16_t t) {
+        if constexpr (tables_type::competing_timeouts) {
+            auto const& row = transitions[static_cast<std::size_t>(t)];
+            if (row.event == timeout_id && states[row.from].timeout_slots > 1) {
+                duration const now = this->cycle_time();
+                std::int16_t first = t;
+                duration since = this->armed_[static_cast<std::size_t>(row.timeout_slot)];
+                duration delay = row.delay(this->chart());
+                for (std::int16_t u = tables_type::next_out[static_cast<std::size_t>(t)]; u >= 0;
+                     u = tables_type::next_out[static_cast<std::size_t>(u)]) {
+                    auto const& other = transitions[static_cast<std::size_t>(u)];
+                    if (other.event != timeout_id) continue;
+                    duration const u_since = this->armed_[static_cast<std::size_t>(other.timeout_slot)];
+                    duration const u_delay = other.delay(this->chart());
+                    if (bsc::detail::has_elapsed(u_since, now, u_delay) &&
+                        bsc::detail::came_due_first(u_since, u_delay, since, delay) && guard_holds(u, &no_event)) {
+                        first = u;
+                        since = u_since;
+                        delay = u_delay;
+                    }
+                }
+                return first;
+            }
+        }
+        return t;
+    }
+
     // Steps 3 to 5 of a microstep for one transition: a component's transition fires alone.
     void fire_condition(std::int16_t t) {
         auto const& row = transitions[static_cast<std::size_t>(t)];
         if (row.to != no_state) deactivate_path(row.domain);
         run_action(t, &no_event);
         enter_targets(row);
-        // An internal timeout, which leaves its state active, counts again from now.
+        // A timeout that leaves its state active (internal, or local: its domain is its state)
+        // counts again from now.
         if constexpr (tables_type::timeout_slots > 0)
-            if (row.to == no_state && row.timeout_slot >= 0)
+            if ((row.to == no_state || row.domain == row.from) && row.timeout_slot >= 0)
                 this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->cycle_time();
     }
 
@@ -10267,4 +11512,16 @@ machine(C const&, A...) -> machine<C const, default_policy, bsc::detail::observe
 
 }  // namespace bsc::table
 // end include/bsc/table/engine.hpp
+// begin include/bsc/version.hpp
+// The version of bsc. CMakeLists.txt reads its project version from these three lines, so that
+// the header, the CMake package (bscConfigVersion.cmake) and the CHANGELOG name one version.
+
+#define BSC_VERSION_MAJOR 0
+#define BSC_VERSION_MINOR 2
+#define BSC_VERSION_PATCH 0
+
+/// The version as one number, major * 10000 + minor * 100 + patch (as fmt's FMT_VERSION), for
+/// `#if BSC_VERSION >= 200`.
+#define BSC_VERSION (BSC_VERSION_MAJOR * 10000 + BSC_VERSION_MINOR * 100 + BSC_VERSION_PATCH)
+// end include/bsc/version.hpp
 // end include/bsc/bsc.hpp

@@ -88,9 +88,7 @@ struct fields<T> {
     });
 
     template <class Self, class F>
-#if defined(__clang__)
-    [[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
-#endif
+    BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
     static constexpr decltype(auto) apply(Self& self, F&& f) {
         return boost::hana::unpack(boost::hana::accessors<T>(), [&](auto const&... accessor) -> decltype(auto) {
             constexpr bool references =

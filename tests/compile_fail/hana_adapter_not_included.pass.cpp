@@ -15,7 +15,7 @@ struct axis {  // a constructor: no aggregate, so adapted with Boost.Hana
     axis() : limit{0} {}
     explicit axis(int max) : limit{max} {}
     bool homed() const { return home.get(); }
-    void sense(bool at_home) { home.set(at_home); }
+    void sense(bool at_home) const { home.set(at_home); }  // the environment's: on the const context
 };
 struct ctx {
     axis x;

@@ -25,8 +25,9 @@ inline constexpr auto chart = bsc::make_chart<ctx>(
 }  // namespace cf
 
 int main() {
-    bsc::machine m{cf::chart, cf::ctx{}};
-    m.context().from_input = true;
+    cf::ctx setpoint{};
+    setpoint.from_input = true;  // the setpoint is the input's, from the start
+    bsc::machine m{cf::chart, setpoint};
     m.context().input.set(150);  // latched by the next dispatch
     m.dispatch(cf::check{});
     bool const high = m.is<cf::High>();

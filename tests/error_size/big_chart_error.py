@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Compiles a 200-state chart with one defect and checks that the error fits on one screen.
 Covers the checks of make_chart; errors raised where a machine is used (an unhandled event,
-is<S> of an unknown state) still spell the machine's type.
+is<S> of an unknown state) still spell the machine's type. Every generated chart is also used
+by two machines, one declared on `decltype(chart)` and one on `bsc::chart_ref<chart>`: neither
+may add an error to the chart's.
 
     big_chart_error.py --compiler CXX --include DIR --defect KIND [--keep FILE]
 
@@ -159,6 +161,25 @@ def edit(kind, tree, rows, extra, body):
     if kind == "invalid_deferral":
         rows.append("bsc::state<S5_5> + bsc::event<e9> / bsc::defer = bsc::state<S5_0>")
         return ["S5_5", "e9"], "invalid deferral", "S5_5 + e9 / defer = S5_0"
+    if kind == "done_never_raised":
+        # C7 has no final child: it never completes.
+        rows.append("bsc::state<C7> + bsc::event<bsc::done<C7>> = bsc::state<C8>")
+        return ["C7"], "never completes", "C7 + done<C7> = C8"
+    if kind == "done_of_state_not_in_chart":
+        extra.append("struct Ghost;")
+        rows.append("bsc::state<C7> + bsc::event<bsc::done<Ghost>> = bsc::state<C8>")
+        return ["Ghost"], "is not a state of this chart", "C7 + done<Ghost> = C8"
+    if kind == "done_source_inactive":
+        extra.append("struct Fin;")
+        tree[7].append("bsc::final_state<Fin>")
+        rows.append("bsc::state<S7_8> + bsc::event<e7> = bsc::state<Fin>")
+        rows.append("bsc::state<S7_3> + bsc::event<bsc::done<C7>> = bsc::state<C8>")
+        return ["S7_3", "C7"], "no longer active when State completes", "S7_3 + done<C7> = C8"
+    if kind == "guard_is_a_bool_value":
+        extra.append("inline constexpr auto plain = [](ctx const&) { return true; };")
+        rows.append("bsc::state<S6_6> + bsc::event<e0> [(!plain)] = bsc::state<S6_1>")
+        return ([], r"(?s)(?=.*guard is a bool value)(?=.*in_row<big::S6_6, big::e0, big::S6_1)",
+                "S6_6 + e0 [guard] = S6_1")
     raise SystemExit(f"unknown defect {kind}")
 
 
@@ -168,7 +189,8 @@ DEFECTS = ["unreachable_state", "dead_end_state", "conflicting_transitions", "sh
            "not_a_row", "guard_signature_not_supported", "action_signature_not_supported", "dead_transition",
            "empty_parallel_state", "dead_timeout", "local_target_outside_source", "event_in_two_families",
            "initial_action_without_initial_transition", "invalid_history_state", "targets_not_orthogonal",
-           "initial_states_not_orthogonal", "invalid_deferral"]
+           "initial_states_not_orthogonal", "invalid_deferral", "done_never_raised", "done_of_state_not_in_chart",
+           "done_source_inactive", "guard_is_a_bool_value"]
 
 # Found by constant evaluation of the chart (timeouts are values), not by a bsc::error type. Its
 # error is the failed evaluation of the dead row's destruction (dsl/row.hpp, timeout_trigger),
@@ -186,6 +208,7 @@ def source(kinds):
     # A row's position among make_chart's rows, counted from 1: the faulty row is found by its
     # text, with the guard, action and delay written as bsc writes them when unnamed.
     def as_written(row):
+        row = re.sub(r"bsc::event<bsc::done<(\w+)>>", r"done<\1>", row)
         row = re.sub(r"bsc::(state|event)<(\w+)>", r"\2", row)
         row = re.sub(r"\[\(.*\)\]", "[guard]", row)
         row = re.sub(r"\[bad_guard\{\}\]", "[guard]", row)
@@ -208,6 +231,17 @@ def source(kinds):
     text.append("    bsc::composite<Root>(bsc::initial<C0>,")
     text.append(",\n".join(composites) + "),")
     text.append(",\n".join("    " + r for r in rows) + ");")
+    # The machine, declared both ways the documentation teaches: on the chart's type and on
+    # bsc::chart_ref. A machine on a rejected chart adds no error of its own.
+    text.append("using machine = bsc::machine<decltype(chart)>;")
+    text.append("using machine_of_ref = bsc::machine<bsc::chart_ref<chart>>;")
+    text.append("inline void drive() {")
+    text.append("    machine m{chart};")
+    text.append("    machine_of_ref r{chart};")
+    text.append("    (void)m.dispatch(e0{});")
+    text.append("    (void)r.dispatch(e0{});")
+    text.append("    (void)r.is<S0_0>();")
+    text.append("}")
     if body:
         text.append("inline void run() {")
         text += ["    " + b for b in body]

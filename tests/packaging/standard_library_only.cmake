@@ -2,7 +2,8 @@
 # only the standard library, bsc's own headers and, for bsc::mqtt alone, <mosquitto.h>, and for
 # bsc::hana alone (include/bsc/adapt/hana.hpp, single_include/bsc/hana.hpp) Boost.Hana's. (One header of the standard
 # library's own is named: libstdc++'s <bits/chrono.h>, the part of <chrono> bsc uses, included
-# only where __GLIBCXX__ says it is libstdc++; detail/chrono.hpp.) The single-header consumer
+# only where __GLIBCXX__ says it is libstdc++: BSC_DETAIL_CHRONO_HEADER in detail/config.hpp,
+# which detail/chrono.hpp includes.) The single-header consumer
 # cannot show it: the system's headers (Boost among them) are on every compiler's default path.
 # Run with -DBSC_SOURCE_DIR=... -P standard_library_only.cmake.
 file(GLOB_RECURSE headers ${BSC_SOURCE_DIR}/include/*.hpp ${BSC_SOURCE_DIR}/single_include/*.hpp)

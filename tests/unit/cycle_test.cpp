@@ -7,8 +7,10 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <string>
 #include <type_traits>
 #include <vector>
+#include <utility>
 
 #include <bsc/bsc.hpp>
 
@@ -260,18 +262,18 @@ struct W;
 
 TEST_CASE_TEMPLATE("components entered during a cycle first run in the next cycle", Backend, compiled, table) {
     struct data {
-        bool in = false;
+        bsc::input<bool> in;
     };
     using namespace cyc::turns;
     static constexpr auto chart = bsc::make_chart<data>(
         bsc::composite<cyc::Root>(bsc::initial<X>,
                                   bsc::parallel<Q>(bsc::composite<R1>(bsc::initial<Y>, bsc::state<W>),
                                                    bsc::composite<R2>(bsc::initial<Z>))),
-        bsc::state<X>[([](data const& d) { return d.in; })] = bsc::state<Q>,
-        bsc::state<Y>[([](data const& d) { return d.in; })] = bsc::state<W>,
+        bsc::state<X>[([](data const& d) { return d.in.get(); })] = bsc::state<Q>,
+        bsc::state<Y>[([](data const& d) { return d.in.get(); })] = bsc::state<W>,
         bsc::state<Q> + bsc::event<cyc::kick> = bsc::state<X>, bsc::state<W> + bsc::event<cyc::kick> = bsc::state<Y>);
     machine_t<Backend, decltype(chart)> m{chart, data{}};
-    m.context().in = true;
+    m.context().in.set(true);
     auto const r = m.step(0ms);
     CHECK(r.transitions == 1);
     CHECK(m.template is<Y>());
@@ -281,8 +283,8 @@ TEST_CASE_TEMPLATE("components entered during a cycle first run in the next cycl
 
 TEST_CASE_TEMPLATE("a component that an earlier component leaves during a cycle loses its turn", Backend, compiled, table) {
     struct data {
-        bool leave = false;
-        bool go = false;
+        bsc::input<bool> leave;
+        bsc::input<bool> go;
         int region_fired = 0;
     };
     using namespace cyc::turns;
@@ -292,27 +294,27 @@ TEST_CASE_TEMPLATE("a component that an earlier component leaves during a cycle 
                                   bsc::parallel<Q>(bsc::composite<R1>(bsc::initial<Y>, bsc::state<W>),
                                                    bsc::composite<R2>(bsc::initial<Z>)),
                                   bsc::state<X>),
-        bsc::state<Q>[([](data const& d) { return d.leave; })] = bsc::state<X>,
-        bsc::state<Y>[([](data const& d) { return d.go; })] / [](data& d) { ++d.region_fired; } = bsc::state<W>,
+        bsc::state<Q>[([](data const& d) { return d.leave.get(); })] = bsc::state<X>,
+        bsc::state<Y>[([](data const& d) { return d.go.get(); })] / [](data& d) { ++d.region_fired; } = bsc::state<W>,
         bsc::state<X> + bsc::event<cyc::kick> = bsc::state<Q>);
     machine_t<Backend, decltype(chart)> m{chart, data{}};
     REQUIRE(m.template is<Y>());
 
     // R1 was active when the cycle began and its transition is enabled, but the root's
     // component has left Q when R1's turn comes.
-    m.context().leave = true;
-    m.context().go = true;
+    m.context().leave.set(true);
+    m.context().go.set(true);
     auto const left = m.step(0ms);
     CHECK(left.transitions == 1);
     CHECK(m.template is<X>());
     CHECK(m.context().region_fired == 0);
 
     // The twin: Q stays, and R1 takes its turn.
-    m.context().leave = false;
-    m.context().go = false;
+    m.context().leave.set(false);
+    m.context().go.set(false);
     m.dispatch(cyc::kick{});
     REQUIRE(m.template is<Y>());
-    m.context().go = true;
+    m.context().go.set(true);
     auto const stayed = m.step(1ms);
     CHECK(stayed.transitions == 1);
     CHECK(m.template is<W>());
@@ -391,7 +393,7 @@ struct ping {};
 struct io {
     bsc::output<int> out;
     int got = 0;
-    bool done = false;
+    bsc::input<bool> done;
 };
 // S -> T in a cycle raises ping; T's eventless transition to U is enabled once ping is handled.
 inline constexpr auto raiser = bsc::make_chart<io>(
@@ -399,7 +401,7 @@ inline constexpr auto raiser = bsc::make_chart<io>(
     bsc::state<S>[([](io const&) { return true; })] / bsc::raise(ping{}) = bsc::state<T>,
     bsc::state<T> + bsc::event<ping> / [](io& x) { x.out.set(x.got = 9); },
     bsc::state<T>[([](io const& x) { return x.got == 9; })] = bsc::state<U>,
-    bsc::state<U>[([](io const& x) { return x.done; })] = bsc::state<F>,
+    bsc::state<U>[([](io const& x) { return x.done.get(); })] = bsc::state<F>,
     bsc::state<U> + bsc::event<kick> = bsc::state<S>);
 }  // namespace cyc
 
@@ -420,7 +422,7 @@ TEST_CASE_TEMPLATE("a halted machine's cycle runs nothing, leaves the clock and 
     machine_t<Backend, decltype(cyc::raiser), bsc::scan_policy> m{cyc::raiser, cyc::io{}};
     m.step(0ms);
     m.step(1ms);
-    m.context().done = true;
+    m.context().done.set(true);
     CHECK(m.step(2ms).transitions == 1);
     CHECK(m.halted());
     auto const r = m.step(5ms);
@@ -436,15 +438,16 @@ struct Q1;
 struct Q2;
 struct Z;
 struct order_data {
-    bool ready = false;
+    bsc::input<bool> ready;
+    bsc::input<int> counted;  // the timeouts that the first row does not count (set by the test)
     int timeouts = 0;
 };
 // Q1 has a timeout declared between two eventless transitions; Q, its parent, a longer one.
 inline constexpr auto competing = bsc::make_chart<order_data>(
     bsc::composite<Root>(bsc::initial<Q>, bsc::composite<Q>(bsc::initial<Q1>, bsc::state<Q2>), bsc::state<Z>),
-    bsc::state<Q1>[([](order_data const& d) { return d.ready && d.timeouts > 0; })] = bsc::state<Z>,
+    bsc::state<Q1>[([](order_data const& d) { return d.ready.get() && d.timeouts > d.counted.get(); })] = bsc::state<Z>,
     bsc::state<Q1> + bsc::after(100ms) / [](order_data& d) { ++d.timeouts; },  // internal: re-armed when it fires
-    bsc::state<Q1>[([](order_data const& d) { return d.ready; })] = bsc::state<Q2>,
+    bsc::state<Q1>[([](order_data const& d) { return d.ready.get(); })] = bsc::state<Q2>,
     bsc::state<Q> + bsc::after(150ms) = bsc::state<Z>,
     bsc::state<Z> + bsc::event<kick> = bsc::state<Q>);
 
@@ -466,7 +469,7 @@ TEST_CASE_TEMPLATE("a timeout competes with its state's eventless transitions in
     using cyc::Q1, cyc::Q2, cyc::Z;
     machine_t<Backend, decltype(cyc::competing), bsc::default_policy, cyc::row_log> m{cyc::competing, cyc::order_data{},
                                                                                       cyc::row_log{}};
-    auto& d = m.context();
+    auto const& d = m.context();
     m.step(0ms);
     CHECK(m.step(99ms).status == bsc::outcome::ignored);
     CHECK(m.step(100ms).transitions == 1);  // Q1's timeout, internal: Q1 stays, re-armed at 100 ms
@@ -474,17 +477,17 @@ TEST_CASE_TEMPLATE("a timeout competes with its state's eventless transitions in
     m.step(200ms);                          // Q's timeout (150 ms) is due too: the deeper state's wins
     CHECK(d.timeouts == 2);
     CHECK(m.template is<Q1>());
-    d.timeouts = 0;
-    d.ready = true;
+    d.counted.set(d.timeouts);  // the first row counts the timeouts from here
+    d.ready.set(true);
     m.step(300ms);  // the timeout is declared before Q1 [ready]: it wins
-    CHECK(d.timeouts == 1);
+    CHECK(d.timeouts - d.counted.get() == 1);
     CHECK(m.template is<Q1>());
-    m.step(310ms);  // Q1 [ready && timeouts > 0], declared before the timeout
+    m.step(310ms);  // Q1 [ready && timeouts > counted], declared before the timeout
     CHECK(m.template is<Z>());
-    d.ready = false;
+    d.ready.set(false);
     m.dispatch(cyc::kick{});  // Q and Q1 armed at 310 ms
-    d.ready = true;
-    d.timeouts = 0;
+    d.ready.set(true);
+    d.counted.set(d.timeouts);
     m.step(320ms);  // the timeout is not due: Q1 [ready]
     CHECK(m.template is<Q2>());
     m.step(459ms);
@@ -499,14 +502,231 @@ TEST_CASE_TEMPLATE("a timeout competes with its state's eventless transitions in
     for (std::size_t i = 0; i < 7; ++i) CHECK(log.rows[i] == expected[i]);
 }
 
+// ---- several timeouts of one state due at once ----------------------------------------------
+// Among the timeout rows of one state that are due in a cycle and whose guards hold, the one that
+// came due first fires; at equal due times, the one armed first; then declaration order
+// (docs/semantics.md, "Timers").
+
+namespace due {
+struct Root;
+struct S;
+struct Left;
+struct kick {};
+struct allow {};
+struct log_data {
+    std::string fired;  // one letter per row fired
+    bool allow = false;
+};
+template <char Letter>
+inline constexpr auto note = [](log_data& d) { d.fired += Letter; };
+inline constexpr auto allowed = [](log_data const& d) { return d.allow; };
+inline constexpr auto let = [](log_data& d) { d.allow = true; };
+
+// An internal 1 s timeout declared before a leaving 3 s one: both come due at 3 s, and the
+// leaving one, counting from S's entry, was armed first.
+inline constexpr auto ticking_then_leaving = bsc::make_chart<log_data>(
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>),
+    bsc::state<S> + bsc::after(1s) / note<'i'>,
+    bsc::state<S> + bsc::after(3s) / note<'L'> = bsc::state<Left>,
+    bsc::state<Left> + bsc::event<kick> = bsc::state<S>);
+
+// The same with delays of zero.
+inline constexpr auto zero_delays = bsc::make_chart<log_data>(
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>),
+    bsc::state<S> + bsc::after(0s) / note<'i'>,
+    bsc::state<S> + bsc::after(0s) / note<'L'> = bsc::state<Left>,
+    bsc::state<Left> + bsc::event<kick> = bsc::state<S>);
+
+// Two internal timeouts of equal delay.
+inline constexpr auto twins = bsc::make_chart<log_data>(
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>),
+    bsc::state<S> + bsc::after(1s) / note<'a'>,
+    bsc::state<S> + bsc::after(1s) / note<'b'>,
+    bsc::state<S> + bsc::event<kick> = bsc::state<Left>,
+    bsc::state<Left> + bsc::event<kick> = bsc::state<S>);
+
+// A leaving timeout declared before a guarded one that comes due earlier.
+inline constexpr auto guarded_earlier = bsc::make_chart<log_data>(
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>),
+    bsc::state<S> + bsc::after(3s) / note<'L'> = bsc::state<Left>,
+    bsc::state<S> + bsc::after(1s)[allowed] / note<'g'>,
+    bsc::state<Left> + bsc::event<kick> = bsc::state<S>);
+
+// A longer internal timeout declared before a shorter one, with an eventless row between them.
+inline constexpr auto longer_first = bsc::make_chart<log_data>(
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>),
+    bsc::state<S> + bsc::after(2s) / note<'l'>,
+    bsc::state<S>[allowed] / note<'e'> = bsc::state<Left>,
+    bsc::state<S> + bsc::after(1s) / note<'s'>,
+    bsc::state<Left> + bsc::event<kick> = bsc::state<S>,
+    bsc::state<Root> + bsc::event<allow> / let);
+
+struct delays {  // the delays the observer sees, in the order the timeouts fired
+    std::vector<bsc::duration> fired;
+    template <class Src, class Dst, class E>
+    void on_transition(Src, Dst, E const& e) {
+        if constexpr (std::is_same_v<E, bsc::timeout_elapsed>) fired.push_back(e.delay);
+    }
+};
+
+// A local timeout (its target inside its state, which stays active) before a leaving one.
+struct Busy;
+struct Step;
+inline constexpr auto local_then_leaving = bsc::make_chart<log_data>(
+    bsc::composite<Root>(bsc::initial<Busy>, bsc::composite<Busy>(bsc::initial<Step>, bsc::state<Step>), bsc::state<Left>),
+    bsc::state<Busy> + bsc::after(1s) / note<'l'> = bsc::local(bsc::state<Step>),
+    bsc::state<Busy> + bsc::after(3500ms) / note<'L'> = bsc::state<Left>,
+    bsc::state<Left> + bsc::event<kick> = bsc::state<Busy>);
+}  // namespace due
+
+TEST_CASE_TEMPLATE("a local timeout re-arms, and its state's other timeouts keep counting", Backend, compiled, table) {
+    machine_t<Backend, decltype(due::local_then_leaving), bsc::scan_policy> m{due::local_then_leaving, due::log_data{}};
+    for (auto t = 0ms; t <= 3s; t += 500ms) m.step(t);
+    CHECK(m.context().fired == "lll");  // once a second, not once a cycle after the first second
+    CHECK(m.template is<due::Step>());
+    m.step(4s);  // Busy's 3.5 s timeout, which the local one did not restart, came due first
+    CHECK(m.context().fired == "lllL");
+    CHECK(m.template is<due::Left>());
+}
+
+TEST_CASE_TEMPLATE("of a state's timeouts due together, the one that came due first fires: a shorter internal "
+                   "timeout does not starve a longer one",
+                   Backend, compiled, table) {
+    SUBCASE("scanned every second: the leaving timeout fires at 3 s") {
+        machine_t<Backend, decltype(due::ticking_then_leaving), bsc::scan_policy, due::delays> m{
+            due::ticking_then_leaving, due::log_data{}, due::delays{}};
+        for (auto t = 0s; t <= 3s; t += 1s) m.step(t);
+        // At 3 s the internal one (armed at 2 s) and the leaving one (armed at 0) are both due
+        // at 3 s: the one armed first fires.
+        CHECK(m.context().fired == "iiL");
+        CHECK(m.template is<due::Left>());
+        CHECK(m.observer().fired == std::vector<bsc::duration>{1s, 1s, 3s});
+    }
+    SUBCASE("scanned every 100 ms: the same") {
+        machine_t<Backend, decltype(due::ticking_then_leaving), bsc::scan_policy> m{due::ticking_then_leaving,
+                                                                                    due::log_data{}};
+        for (auto t = 0ms; t < 3s; t += 100ms) m.step(t);
+        CHECK(m.context().fired == "ii");
+        m.step(3s);
+        CHECK(m.context().fired == "iiL");
+        CHECK(m.template is<due::Left>());
+    }
+    SUBCASE("a jump past both: the internal one came due first (at 1 s), the leaving one follows") {
+        machine_t<Backend, decltype(due::ticking_then_leaving), bsc::scan_policy> m{due::ticking_then_leaving,
+                                                                                    due::log_data{}};
+        m.step(0s);
+        m.step(10s);
+        CHECK(m.context().fired == "i");  // re-armed at 10 s: not due before 11 s
+        m.step(10s);
+        CHECK(m.context().fired == "iL");
+        CHECK(m.template is<due::Left>());
+    }
+}
+
+TEST_CASE_TEMPLATE("of two timeouts of delay zero, internal and leaving, the leaving one fires once time advances",
+                   Backend, compiled, table) {
+    machine_t<Backend, decltype(due::zero_delays), bsc::scan_policy> m{due::zero_delays, due::log_data{}};
+    m.step(0ms);  // both due at 0, armed at 0: declaration order
+    CHECK(m.context().fired == "i");
+    m.step(10ms);  // the internal one re-armed at 0, the cycle it fired in: equal again
+    CHECK(m.context().fired == "ii");
+    m.step(20ms);  // the internal one is due at 10 ms, the leaving one since 0
+    CHECK(m.context().fired == "iiL");
+    CHECK(m.template is<due::Left>());
+}
+
+TEST_CASE_TEMPLATE("two internal timeouts of equal delay take turns", Backend, compiled, table) {
+    SUBCASE("scanned every period") {
+        machine_t<Backend, decltype(due::twins), bsc::scan_policy> m{due::twins, due::log_data{}};
+        for (auto t = 0s; t <= 6s; t += 1s) m.step(t);
+        CHECK(m.context().fired == "ababab");
+    }
+    SUBCASE("a jump: each fires once, the one armed first before the other") {
+        machine_t<Backend, decltype(due::twins), bsc::scan_policy> m{due::twins, due::log_data{}};
+        m.step(0s);
+        m.step(10s);  // both due at 1 s, armed at 0: declaration order
+        m.step(10s);  // b, due at 1 s, before a, now due at 11 s
+        m.step(10s);
+        CHECK(m.context().fired == "ab");
+        m.step(11s);  // both due at 11 s, armed at 10 s: declaration order again
+        CHECK(m.context().fired == "aba");
+        m.step(11s);
+        CHECK(m.context().fired == "abab");
+    }
+}
+
+TEST_CASE_TEMPLATE("a timeout that came due first but whose guard is false does not hold back a later one", Backend,
+                   compiled, table) {
+    SUBCASE("the guard false: the leaving timeout fires when due") {
+        machine_t<Backend, decltype(due::guarded_earlier), bsc::scan_policy> m{due::guarded_earlier, due::log_data{}};
+        for (auto t = 0s; t <= 3s; t += 1s) m.step(t);
+        CHECK(m.context().fired == "L");
+        CHECK(m.template is<due::Left>());
+    }
+    SUBCASE("the guard true, a jump: the guarded one, due since 1 s, fires first, declared second") {
+        machine_t<Backend, decltype(due::guarded_earlier), bsc::scan_policy> m{due::guarded_earlier,
+                                                                               due::log_data{"", true}};
+        m.step(0s);
+        m.step(5s);
+        CHECK(m.context().fired == "g");
+        CHECK(m.template is<due::S>());
+        m.step(5s);  // re-armed at 5 s; the leaving one is due since 3 s
+        CHECK(m.context().fired == "gL");
+        CHECK(m.template is<due::Left>());
+    }
+    SUBCASE("the guard true, scanned every second: at 3 s the leaving one was armed first") {
+        machine_t<Backend, decltype(due::guarded_earlier), bsc::scan_policy> m{due::guarded_earlier,
+                                                                               due::log_data{"", true}};
+        for (auto t = 0s; t <= 3s; t += 1s) m.step(t);
+        CHECK(m.context().fired == "ggL");
+        CHECK(m.template is<due::Left>());
+    }
+}
+
+TEST_CASE_TEMPLATE("a longer timeout declared first yields to a shorter one due earlier; eventless rows keep their "
+                   "place in declaration order",
+                   Backend, compiled, table) {
+    SUBCASE("a jump past both: the shorter fires, then the longer") {
+        machine_t<Backend, decltype(due::longer_first), bsc::scan_policy> m{due::longer_first, due::log_data{}};
+        m.step(0s);
+        m.step(5s);
+        CHECK(m.context().fired == "s");
+        m.step(5s);
+        CHECK(m.context().fired == "sl");
+        m.step(5s);  // neither is due: the shorter one at 6 s, the longer one at 7 s
+        CHECK(m.context().fired == "sl");
+    }
+    SUBCASE("the eventless row, declared before the shorter timeout, wins over it") {
+        machine_t<Backend, decltype(due::longer_first), bsc::scan_policy> m{due::longer_first, due::log_data{}};
+        m.step(0s);
+        m.dispatch(due::allow{});
+        m.step(1s);  // the longer timeout is not due; the eventless row comes before the shorter one
+        CHECK(m.context().fired == "e");
+        CHECK(m.template is<due::Left>());
+    }
+    SUBCASE("once the longer timeout, declared before the eventless row, is due, the timeouts go first") {
+        machine_t<Backend, decltype(due::longer_first), bsc::scan_policy> m{due::longer_first, due::log_data{}};
+        m.step(0s);
+        m.dispatch(due::allow{});
+        m.step(5s);  // the longer timeout holds: of the state's timeouts, the one that came due first fires
+        CHECK(m.context().fired == "s");
+        CHECK(m.template is<due::S>());
+        m.step(5s);
+        CHECK(m.context().fired == "sl");
+        m.step(5s);  // no timeout holds: the eventless row
+        CHECK(m.context().fired == "sle");
+        CHECK(m.template is<due::Left>());
+    }
+}
+
 TEST_CASE("channels compare by value: pending and latched (inputs), published and next (outputs)") {
     static_assert(bsc::input<int>{3} == bsc::input<int>{3});
     static_assert(!(bsc::output<int>{3} == bsc::output<int>{4}));
     bsc::input<int> a{1}, b{1};
     CHECK(a == b);
-    a.set(2);
-    CHECK_FALSE(a == b);  // the same latched value, a different pending one
-    b.set(2);
+    std::as_const(a).set(2);  // as the environment sets an input: through a const view
+    CHECK_FALSE(a == b);      // the same latched value, a different pending one
+    std::as_const(b).set(2);
     CHECK(a == b);
     bsc::inout<int> x{5}, y{5};
     x.set(6);

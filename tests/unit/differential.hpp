@@ -122,13 +122,14 @@ public:
     using table_type = bsc::table::machine<chart_type, policy, recorder>;
     using events = typename compiled_type::event_types;
     using tags = typename inside::model<chart_type>::tags;
-    // What the twin dispatches: the chart's events, and the fixture's extra_events (events the
-    // chart does not name, which rows on their families take).
+    // What the twin dispatches: the chart's events the environment may send (not the done
+    // events, bsc::action_failed or bsc::any_event, which dispatch refuses), and the fixture's
+    // extra_events (events the chart does not name, which rows on their families take).
     template <class F>
     static auto extra_of(int) -> typename F::extra_events;
     template <class F>
     static auto extra_of(long) -> inside::type_list<>;
-    using dispatched = inside::concat_t<events, decltype(extra_of<Fixture>(0))>;
+    using dispatched = inside::concat_t<typename bsc::detail::sendable_events<events>::type, decltype(extra_of<Fixture>(0))>;
 
     static_assert(std::is_same_v<typename compiled_type::configuration_type, typename table_type::configuration_type>);
     // The compiled machine drops the queue of a chart none of whose actions can raise.
@@ -173,8 +174,8 @@ public:
             return compare("stray", a, b);
         }
         if (choice == dispatched::size + 1) {
-            Fixture::perturb(compiled_->context(), arg);
-            Fixture::perturb(table_->context(), arg);
+            Fixture::perturb(inside::context(*compiled_), arg);
+            Fixture::perturb(inside::context(*table_), arg);
             return compare("environment write", compiled_->last_outcome(), table_->last_outcome());
         }
         return cycle(arg);

@@ -27,9 +27,9 @@ struct cell_fixture {
     using policy = bsc::scan_policy;
     static constexpr auto const& chart = cell::chart;
     static cell::data initial() { return {}; }
-    static void perturb(cell::data& d, std::uint32_t r) {
-        bsc::input<bool>* const sensors[] = {&d.IN, &d.P1, &d.P2, &d.P3, &d.P4, &d.S1};
-        bsc::input<bool>& s = *sensors[r % 6];
+    static void perturb(cell::data const& d, std::uint32_t r) {
+        bsc::input<bool> const* const sensors[] = {&d.IN, &d.P1, &d.P2, &d.P3, &d.P4, &d.S1};
+        bsc::input<bool> const& s = *sensors[r % 6];
         s.set(!s.pending());
     }
     static bool same(cell::data const& a, cell::data const& b) {

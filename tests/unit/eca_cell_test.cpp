@@ -25,7 +25,7 @@ std::string_view state_of(Module const& m) {
 }
 template <class Controller>
 std::string sent(Controller const& c) {
-    return c.context().env.sent.joined();
+    return c.context().env.sent.get().joined();
 }
 
 eca::controller original() { return eca::controller{eca::main_chart}; }

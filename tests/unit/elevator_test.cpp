@@ -66,8 +66,9 @@ TEST_CASE_TEMPLATE("retain: a machine saved with deferred and delayed events pen
         auto const bytes = bsc::save(original);
         REQUIRE(bytes.size() == bsc::saved_size<machine>);
 
-        machine copy{elevator::fixed};
-        copy.context().served.value = 1000;
+        elevator::data counted{};
+        counted.served.value = 1000;  // the copy's own count, given where it is built
+        machine copy{elevator::fixed, counted};
         auto const result = bsc::restore(copy, bytes);
         REQUIRE_MESSAGE(result, bsc::to_string(result));
         CHECK(bsc::save(copy) == bytes);

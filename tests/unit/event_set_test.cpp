@@ -137,3 +137,55 @@ TEST_CASE("a data member called name is not the event's name; bsc::action_failed
     CHECK(m.dispatch_by_name("reset", decode) == bsc::outcome::consumed);
     CHECK(m.context().failures == 0);
 }
+
+namespace event_set_test {
+struct start {};
+struct finish {};
+struct Idle;
+struct Work;
+struct Busy;
+struct Finished;
+struct Next;
+struct done_ctx {
+    int others = 0;
+};
+// Work completes when it enters Finished, and the machine raises bsc::done<Work>; Next takes every
+// event through bsc::any_event. Neither is an event the environment can send.
+inline constexpr auto completing = bsc::make_chart<done_ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::composite<Work>(bsc::initial<Busy>, bsc::final_state<Finished>),
+                         bsc::state<Next>),
+    bsc::state<Idle> + bsc::event<start> = bsc::state<Work>,
+    bsc::state<Busy> + bsc::event<finish> = bsc::state<Finished>,
+    bsc::state<Work> + bsc::event<bsc::done<Work>> = bsc::state<Next>,
+    bsc::state<Next> + bsc::event<start> = bsc::state<Idle>,
+    bsc::state<Next> + bsc::event<bsc::any_event> / [](done_ctx& c) { ++c.others; });
+}  // namespace event_set_test
+
+TEST_CASE_TEMPLATE("done.state.S and * name no event the environment can send: unknown, and nothing changes", Backend,
+                   compiled, table) {
+    using namespace event_set_test;
+    using set = bsc::event_set<decltype(completing)>;
+    static_assert(set::size == 2);
+    CHECK(set::names == std::array<std::string_view, 2>{"start", "finish"});
+    CHECK(set::find("done.state.Work") == std::nullopt);
+    CHECK(set::find("*") == std::nullopt);
+    CHECK(set::unknown("done.state.Work") ==
+          "no event of this chart is named 'done.state.Work'; its events are start, finish");
+    CHECK(bsc::event_name<bsc::done<Work>> == "done.state.Work");  // its name where the chart is drawn
+    bsc_test::machine_t<Backend, decltype(completing)> m{completing, done_ctx{}};
+    CHECK(m.dispatch_by_name("start") == bsc::outcome::consumed);
+    CHECK(m.active_states().joined() == "Root Work Busy");
+    CHECK(m.dispatch_by_name("done.state.Work") == bsc::outcome::unknown_event);  // Work has not completed
+    CHECK(m.active_states().joined() == "Root Work Busy");
+    CHECK(m.last_outcome() == bsc::outcome::unknown_event);
+    CHECK(m.dispatch_by_name("*") == bsc::outcome::unknown_event);
+    CHECK(m.dispatch_by_number(set::size) == bsc::outcome::unknown_event);
+    CHECK(m.active_states().joined() == "Root Work Busy");
+    CHECK(m.context().others == 0);
+    CHECK(m.dispatch_by_number(set::number_of<finish>) == bsc::outcome::consumed);  // Work completes: done<Work>
+    CHECK(m.active_states().joined() == "Root Next");
+    CHECK(m.dispatch_by_name("*") == bsc::outcome::unknown_event);  // not even where a row takes any event
+    CHECK(m.context().others == 0);
+    CHECK(m.dispatch_by_name("finish") == bsc::outcome::consumed);  // taken by Next's row on any event
+    CHECK(m.context().others == 1);
+}

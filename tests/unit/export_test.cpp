@@ -51,12 +51,12 @@ struct Right;
 struct Done;
 
 struct ctx {
-    bool ready = false;
+    bsc::inout<bool> ready;  // set by the environment, cleared by Slot<1>'s exit action
     int count = 0;
     int resets = 0;
 };
 
-inline constexpr auto ready = bsc::named<"ready">(bsc::guard([](ctx const& c) { return c.ready; }));
+inline constexpr auto ready = bsc::named<"ready">(bsc::guard([](ctx const& c) { return c.ready.get(); }));
 inline constexpr auto positive = bsc::named("positive", bsc::guard([](ctx const& c) { return c.count > 0; }));
 inline constexpr auto below_ten = bsc::guard([](ctx const& c) { return c.count < 10; });
 inline constexpr auto count_up = bsc::named<"count_up">(bsc::action([](ctx& c) { ++c.count; }));
@@ -80,7 +80,7 @@ inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::state<L1> + bsc::event<tick>[positive] = bsc::state<L2>,
     bsc::state<Work> + bsc::event<stop> / reset = bsc::state<b::Idle>,
     bsc::state<Work> + bsc::on_entry / count_up,
-    bsc::state<Slot<1>> + bsc::on_exit / [](ctx& c) { c.ready = false; });
+    bsc::state<Slot<1>> + bsc::on_exit / [](ctx& c) { c.ready.set(false); });
 
 }  // namespace export_test
 
@@ -188,7 +188,7 @@ TEST_CASE("a named guard or action behaves as the unnamed one and composes the s
     static_assert(inside::is_bsc_action<std::remove_cvref_t<decltype(count_up)>>);
     static_assert(!inside::is_bsc_guard<std::remove_cvref_t<decltype(reset)>>);
     // The name given as a template argument takes no room.
-    constexpr auto lambda = [](ctx const& c) { return c.ready; };
+    constexpr auto lambda = [](ctx const& c) { return c.ready.get(); };
     static_assert(sizeof(bsc::named<"x">(bsc::guard(lambda))) == sizeof(bsc::guard(lambda)));
     static_assert(sizeof(bsc::named<"x">(lambda)) == sizeof(lambda));
     static_assert(bsc::named<"x">(bsc::guard(lambda)).name == "x");
@@ -197,10 +197,10 @@ TEST_CASE("a named guard or action behaves as the unnamed one and composes the s
 
     // The composed guards and the sequence run as they would unnamed.
     ctx c{};
-    static_assert((ready && !positive)(ctx{true, 0, 0}, go{}));
-    static_assert(!(ready && !positive)(ctx{true, 1, 0}, go{}));
-    static_assert((below_ten || ready)(ctx{false, 3, 0}, go{}));
-    static_assert(!(!ready || positive)(ctx{true, 0, 0}, go{}));
+    static_assert((ready && !positive)(ctx{bsc::inout<bool>{true}, 0, 0}, go{}));
+    static_assert(!(ready && !positive)(ctx{bsc::inout<bool>{true}, 1, 0}, go{}));
+    static_assert((below_ten || ready)(ctx{bsc::inout<bool>{false}, 3, 0}, go{}));
+    static_assert(!(!ready || positive)(ctx{bsc::inout<bool>{true}, 0, 0}, go{}));
     int raised = 0;
     auto raise = [&](auto const&) {
         ++raised;
@@ -219,14 +219,14 @@ TEST_CASE("a named guard or action behaves as the unnamed one and composes the s
     bsc::machine m{chart, ctx{}};
     CHECK(m.is<a::Idle>());
     CHECK(m.dispatch(go{}) == bsc::outcome::ignored);  // not ready
-    m.context().ready = true;
+    m.context().ready.set(true);
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(m.is<Slot<1>>());
     CHECK(m.context().count == 1);  // count_up, reset, then Work's entry count_up
     CHECK(m.context().resets == 1);
     CHECK(m.dispatch(stop{}) == bsc::outcome::consumed);  // Work + stop / reset, then b::Idle [below_ten]
     CHECK(m.is<a::Idle>());
-    CHECK(!m.context().ready);  // Slot<1>'s exit action
+    CHECK(!m.context().ready.get());  // Slot<1>'s exit action, published at the end of the dispatch
     CHECK(m.context().count == 0);
     CHECK(m.context().resets == 2);
 }

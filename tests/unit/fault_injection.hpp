@@ -91,9 +91,14 @@ bool legal(Machine const& m) {
     return true;
 }
 
+// The events the environment may send (the chart's, without the done events, bsc::action_failed
+// and bsc::any_event, which dispatch refuses).
+template <class Machine>
+using sendable_events = typename bsc::detail::sendable_events<typename Machine::event_types>::type;
+
 template <class Machine, std::size_t I = 0>
 void dispatch_event(Machine& m, std::size_t which) {
-    using events = typename Machine::event_types;
+    using events = sendable_events<Machine>;
     if constexpr (I < events::size) {
         if (which != I) return dispatch_event<Machine, I + 1>(m, which);
         using E = inside::at<I, events>;
@@ -143,10 +148,10 @@ totals run_once(Chart const& chart, long throw_at, int steps, std::uint32_t seed
         try {
             switch (r % 4) {
                 case 0:
-                    if constexpr (machine::event_types::size > 0)
-                        dispatch_event(*m, (r >> 2) % machine::event_types::size);
+                    if constexpr (sendable_events<machine>::size > 0)
+                        dispatch_event(*m, (r >> 2) % sendable_events<machine>::size);
                     break;
-                case 1: Fixture::perturb(m->context(), r >> 2); break;
+                case 1: Fixture::perturb(inside::context(*m), r >> 2); break;
                 default:
                     now += std::chrono::milliseconds{(r >> 2) % 700};
                     m->step(now);
@@ -163,9 +168,9 @@ totals run_once(Chart const& chart, long throw_at, int steps, std::uint32_t seed
     for (int i = 0; i < 20; ++i) {
         std::uint32_t const r = random();
         now += std::chrono::milliseconds{(r >> 2) % 700};
-        if constexpr (machine::event_types::size > 0)
+        if constexpr (sendable_events<machine>::size > 0)
             if (r % 2 == 0) {
-                dispatch_event(*m, (r >> 1) % machine::event_types::size);
+                dispatch_event(*m, (r >> 1) % sendable_events<machine>::size);
                 check(*m);
                 continue;
             }

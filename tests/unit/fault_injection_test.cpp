@@ -13,16 +13,16 @@
 
 namespace {
 
-void toggle(bsc::input<bool>& flag) { flag.set(!flag.pending()); }
+void toggle(bsc::input<bool> const& flag) { flag.set(!flag.pending()); }
 
 // The production cell's controllers, their sensors and the other actors' signals written at
-// random by the environment.
+// random by the environment (through the const view it has of a context).
 struct feed_belt_fixture {
     using policy = bsc::scan_policy;
     static constexpr auto const& chart = pcell::feed_belt_chart;
     static pcell::feed_belt_ctl initial() { return {}; }
-    static void perturb(pcell::feed_belt_ctl& c, std::uint32_t r) {
-        bsc::input<bool>* const flags[] = {&c.on, &c.sensor, &c.table_ready};
+    static void perturb(pcell::feed_belt_ctl const& c, std::uint32_t r) {
+        bsc::input<bool> const* const flags[] = {&c.on, &c.sensor, &c.table_ready};
         toggle(*flags[r % 3]);
     }
 };
@@ -31,9 +31,9 @@ struct table_fixture {
     using policy = bsc::scan_policy;
     static constexpr auto const& chart = pcell::table_chart;
     static pcell::table_ctl initial() { return {}; }
-    static void perturb(pcell::table_ctl& c, std::uint32_t r) {
-        bsc::input<bool>* const flags[] = {&c.on, &c.fed, &c.taken};
-        bsc::input<std::uint8_t>* const sensors[] = {&c.height, &c.angle};
+    static void perturb(pcell::table_ctl const& c, std::uint32_t r) {
+        bsc::input<bool> const* const flags[] = {&c.on, &c.fed, &c.taken};
+        bsc::input<std::uint8_t> const* const sensors[] = {&c.height, &c.angle};
         if (r % 2 == 0)
             toggle(*flags[(r >> 1) % 3]);
         else
@@ -45,10 +45,10 @@ struct robot_fixture {
     using policy = bsc::scan_policy;
     static constexpr auto const& chart = pcell::robot_chart;
     static pcell::robot_ctl initial() { return {}; }
-    static void perturb(pcell::robot_ctl& c, std::uint32_t r) {
-        bsc::input<bool>* const flags[] = {&c.on, &c.table_ready, &c.press_load_ready, &c.press_unload_ready,
+    static void perturb(pcell::robot_ctl const& c, std::uint32_t r) {
+        bsc::input<bool> const* const flags[] = {&c.on, &c.table_ready, &c.press_load_ready, &c.press_unload_ready,
                                            &c.belt_ready};
-        bsc::input<std::uint8_t>* const sensors[] = {&c.angle, &c.ext1, &c.ext2};
+        bsc::input<std::uint8_t> const* const sensors[] = {&c.angle, &c.ext1, &c.ext2};
         if (r % 2 == 0)
             toggle(*flags[(r >> 1) % 5]);
         else
@@ -60,9 +60,9 @@ struct press_fixture {
     using policy = bsc::scan_policy;
     static constexpr auto const& chart = pcell::press_chart;
     static pcell::press_ctl initial() { return {}; }
-    static void perturb(pcell::press_ctl& c, std::uint32_t r) {
-        bsc::input<bool>* const flags[] = {&c.on, &c.loaded, &c.unloaded};
-        bsc::input<std::uint8_t>* const sensors[] = {&c.level, &c.arm1_ext, &c.arm2_ext};
+    static void perturb(pcell::press_ctl const& c, std::uint32_t r) {
+        bsc::input<bool> const* const flags[] = {&c.on, &c.loaded, &c.unloaded};
+        bsc::input<std::uint8_t> const* const sensors[] = {&c.level, &c.arm1_ext, &c.arm2_ext};
         if (r % 2 == 0)
             toggle(*flags[(r >> 1) % 3]);
         else
@@ -74,8 +74,8 @@ struct deposit_belt_fixture {
     using policy = bsc::scan_policy;
     static constexpr auto const& chart = pcell::deposit_belt_chart;
     static pcell::deposit_belt_ctl initial() { return {}; }
-    static void perturb(pcell::deposit_belt_ctl& c, std::uint32_t r) {
-        bsc::input<bool>* const flags[] = {&c.on, &c.dropped};
+    static void perturb(pcell::deposit_belt_ctl const& c, std::uint32_t r) {
+        bsc::input<bool> const* const flags[] = {&c.on, &c.dropped};
         toggle(*flags[r % 2]);
     }
 };

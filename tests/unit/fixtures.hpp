@@ -4,12 +4,16 @@
 //   chart                    the chart
 //   policy                   the limits it runs under
 //   initial()                the context it starts from
-//   perturb(context&, r)     a write by the environment between two dispatches or cycles
+//   perturb(context&, r)     a write between two dispatches or cycles: an input set as the
+//                            environment sets it (through a const view), or a variable of the
+//                            chart changed as no environment can (the harnesses pass the
+//                            writable context, inside::context), to reach more states
 // Their contexts keep a hash of every action, entry and exit in the order they ran, so a
 // difference of order shows in the context as well as in the observer's trace.
 
 #include <chrono>
 #include <cstdint>
+#include <utility>
 
 #include <bsc/bsc.hpp>
 
@@ -498,8 +502,9 @@ inline constexpr auto cnote = bsc::action([](cycle_ctx& c) { c.log = mix(c.log, 
 /// cycle may enter components, which wait for the next), next to a composite; eventless
 /// transitions reading what earlier components wrote in the same cycle, the latched input and
 /// the inout channel; timeouts on basic, composite and parallel states, internal ones (never
-/// re-armed), guarded ones and ones competing with eventless transitions; raised events; a
-/// final state. Under bsc::default_policy and under a scan policy.
+/// re-armed), guarded ones, ones competing with eventless transitions and several of one state
+/// competing by due time; raised events; a final state. Under bsc::default_policy and under a
+/// scan policy.
 template <class Policy>
 struct cycling {
     using policy = Policy;
@@ -562,13 +567,17 @@ struct cycling {
             state<P> + on_entry / cnote<10>, state<P> + on_exit / cnote<11>, state<R2> + on_exit / cnote<12>,
             state<Y3> + on_entry / cnote<13>, state<Z2> + on_exit / cnote<14>, state<W> + on_entry / cnote<15>,
             state<Out> + on_entry / cnote<16>, state<O2> + on_exit / cnote<17>,
-            state<X2> + on_entry / [](cycle_ctx& c) { c.out.set(c.out.pending() + 1); });
+            state<X2> + on_entry / [](cycle_ctx& c) { c.out.set(c.out.pending() + 1); },
+            // Several timeouts of one state, which compete by due time: a second internal one on
+            // W of the same delay, and on X3 a guarded internal one shorter than its leaving one.
+            state<W> + after(25ms) / cnote<6>,
+            state<X3> + after(30ms)[b_odd] / cnote<7>);
     }();
     static cycle_ctx initial() { return {}; }
     static void perturb(cycle_ctx& c, std::uint32_t r) {
         switch (r % 4) {
             case 0:
-            case 1: c.in.set(static_cast<int>((r >> 2) % 9)); break;
+            case 1: std::as_const(c.in).set(static_cast<int>((r >> 2) % 9)); break;
             case 2: c.a = static_cast<int>((r >> 2) % 8); break;
             default: c.b = static_cast<int>((r >> 2) % 8); break;
         }

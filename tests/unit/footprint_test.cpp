@@ -14,6 +14,7 @@
 #include <type_traits>
 
 #include "backends.hpp"
+#include "inside.hpp"
 
 using namespace std::chrono_literals;
 
@@ -143,7 +144,7 @@ TEST_CASE_TEMPLATE("bytes copied over the whole context leave the machine's conf
     std::memset(static_cast<void*>(&replacement), 0xff, sizeof replacement);
     replacement.total = 40;
     replacement.flag = true;
-    std::memcpy(static_cast<void*>(&m.context()), &replacement, sizeof replacement);
+    std::memcpy(static_cast<void*>(&inside::context(m)), &replacement, sizeof replacement);
     CHECK(m.template is<fp::C>());
     CHECK(m.last_outcome() == bsc::outcome::consumed);
     CHECK(m.dispatch(fp::back{}) == bsc::outcome::consumed);
@@ -154,9 +155,10 @@ TEST_CASE_TEMPLATE("bytes copied over the whole context leave the machine's conf
 
 namespace fp {
 // A machine called back from its own guard, entry action or observer: each is refused.
+// The machine and the call it makes are given by the environment, as inputs.
 struct callback {
-    void* self = nullptr;
-    bsc::outcome (*poke)(void*) = nullptr;
+    bsc::input<void*> self;
+    bsc::input<bsc::outcome (*)(void*)> poke;
     bsc::outcome from_guard = bsc::outcome::consumed;
     bsc::outcome from_entry = bsc::outcome::consumed;
 };
@@ -164,10 +166,10 @@ inline constexpr auto calls_back = bsc::make_chart<callback>(
     bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
     bsc::state<A> + bsc::event<go>[([](callback const& c) {
         // The guard's context is const; the callback goes through the stored pointer.
-        const_cast<callback&>(c).from_guard = c.poke(c.self);
+        const_cast<callback&>(c).from_guard = c.poke.get()(c.self.get());
         return true;
     })] = bsc::state<B>,
-    bsc::state<B> + bsc::on_entry / [](callback& c) { c.from_entry = c.poke(c.self); },
+    bsc::state<B> + bsc::on_entry / [](callback& c) { c.from_entry = c.poke.get()(c.self.get()); },
     bsc::state<B> + bsc::event<go> = bsc::state<C>, bsc::state<C> + bsc::event<back> = bsc::state<A>);
 
 struct calling_observer {
@@ -185,9 +187,9 @@ TEST_CASE_TEMPLATE("a dispatch from the machine's own guard or entry action is r
                    bsc_test::table) {
     using machine = bsc_test::machine_t<Backend, decltype(fp::calls_back)>;
     machine m{fp::calls_back};
-    m.context().self = &m;
-    m.context().poke = [](void* self) { return static_cast<machine*>(self)->dispatch(fp::back{}); };
-    CHECK(m.dispatch(fp::back{}) == bsc::outcome::ignored);  // no guard or action ran: a plain dispatch
+    m.context().self.set(&m);
+    m.context().poke.set([](void* self) { return static_cast<machine*>(self)->dispatch(fp::back{}); });
+    CHECK(m.dispatch(fp::back{}) == bsc::outcome::ignored);  // no guard or action ran: a plain dispatch (it latches both)
     CHECK(m.dispatch(fp::go{}) == bsc::outcome::consumed);
     CHECK(m.context().from_guard == bsc::outcome::reentrant);
     CHECK(m.context().from_entry == bsc::outcome::reentrant);

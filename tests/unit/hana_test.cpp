@@ -47,7 +47,7 @@ class press {
 public:
     explicit press(int limit) : dwell{300ms}, strokes{0}, limit{limit} {}
 
-    void request(bool on) { start.set(on); }
+    void request(bool on) const { start.set(on); }  // the environment's: on the const context
     bool requested() const { return start.get(); }
     bool may_stroke() const { return start.get() && strokes < limit; }
     void stroke() {
@@ -89,9 +89,9 @@ protected:
 
 class station : public station_base {
 public:
-    explicit station(bsc::duration on_time) : blink{on_time} {}
+    explicit station(bsc::duration on_time, int faults_so_far = 0) : blink{on_time} { faults = faults_so_far; }
 
-    void allow(bool on) { enable.set(on); }
+    void allow(bool on) const { enable.set(on); }  // the environment's: on the const context
     bool enabled() const { return enable.get(); }
     void light() {
         lamp.set(true);
@@ -335,9 +335,7 @@ TEST_CASE("hana: save and restore keep every member, private, inherited or past 
     CHECK(p2.context().count() == 2);
 
     using station_machine = bsc::machine<decltype(station_chart), bsc::scan_policy>;
-    station_machine s{station_chart, station{200ms}};
-    s.context().fault();
-    s.context().fault();
+    station_machine s{station_chart, station{200ms, 2}};  // two faults so far
     s.context().allow(true);
     s.step(0ms);
     station_machine s2{station_chart, station{1s}};
@@ -351,8 +349,9 @@ TEST_CASE("hana: save and restore keep every member, private, inherited or past 
 
     using big_machine = bsc::machine<decltype(big_chart), bsc::scan_policy>;
     static_assert(bsc::saved_size<big_machine> > 147 * sizeof(int));
-    big_machine b{big_chart, big{}};
-    b.context().m140 = 999;
+    big b_start{};
+    b_start.m140 = 999;
+    big_machine b{big_chart, b_start};
     b.context().in.set(1);
     b.step(0ms);
     big_machine b2{big_chart, big{}};

@@ -17,6 +17,15 @@
 
 namespace inside {
 
+// A machine's context, writable. The environment's view (context()) is const: it sets inputs
+// and reads the rest. The differential and fault-injection harnesses change variables of the
+// chart between runs as no environment can, to compare the back ends from states their runs
+// alone would not reach.
+template <class Machine>
+constexpr auto& context(Machine& m) {
+    return bsc::detail::access::context(m);
+}
+
 // A machine's internal event queue (either back end).
 template <class Machine>
 constexpr auto const& queue(Machine const& m) {

@@ -26,7 +26,7 @@ struct Idle;
 struct Busy;
 struct Done;
 struct ctx {
-    bool ready = false;
+    bsc::input<bool> ready;
     int pings = 0;
 };
 
@@ -37,7 +37,7 @@ inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::state<Idle> + bsc::event<go> / bsc::raise(ping{}) = bsc::state<Busy>,
     bsc::state<Busy> + bsc::event<ping> / [](ctx& c) { ++c.pings; },
     bsc::state<Busy> + bsc::after(1500ms) = bsc::state<Done>,
-    bsc::state<Done>[([](ctx const& c) { return c.ready; })] = bsc::state<Idle>);
+    bsc::state<Done>[([](ctx const& c) { return c.ready.get(); })] = bsc::state<Idle>);
 
 template <class Backend>
 using logged_machine = bsc_test::machine_t<Backend, decltype(chart), bsc::scan_policy, bsc::logger>;
@@ -57,7 +57,7 @@ TEST_CASE_TEMPLATE("the logger writes one line per dispatch, exit, transition an
     m.dispatch(go{});
     m.step(1s);
     m.step(1750ms);  // 1500 ms after Busy was entered (at the 250 ms cycle's time)
-    m.context().ready = true;
+    m.context().ready.set(true);
     m.step(2s);
     CHECK(out.str() ==
           "[0s] entry Root\n"

@@ -104,23 +104,24 @@ TEST_CASE("transitions that stay inside their regions fire without run-time conf
     // Actions in document order, then the entries in document order.
     CHECK(fast.context().log == "012e0e1e2");
     CHECK(fast.context().log == reference.context().log);
-    fast.context().log.clear();
-    reference.context().log.clear();
+    // What each machine logged since `from` characters of its log (the log is the chart's own:
+    // the test reads it, and marks where a step's part begins).
+    auto const since = [](auto const& m, std::size_t from) { return m.context().log.substr(from); };
+    std::size_t from = fast.context().log.size();
     CHECK(fast.dispatch(mt2::tick{}) == bsc::outcome::consumed);
     reference.dispatch(mt2::tick{});
     // All exits first, innermost and last region first; then the actions.
-    CHECK(fast.context().log == "x2x1x0012");
+    CHECK(since(fast, from) == "x2x1x0012");
     CHECK(fast.context().log == reference.context().log);
     CHECK(fast.active_states() == reference.active_states());
     // go: region 1's transition leaves W and conflicts with region 0's, which comes first and wins.
     fast.dispatch(mt2::tick{});
     reference.dispatch(mt2::tick{});
-    fast.context().log.clear();
-    reference.context().log.clear();
+    from = fast.context().log.size();
     fast.dispatch(mt2::go{});
     reference.dispatch(mt2::go{});
     CHECK(fast.context().log == reference.context().log);
-    CHECK(fast.context().log == "x07");
+    CHECK(since(fast, from) == "x07");
     CHECK(fast.is<mt2::On<1>>());
 }
 

@@ -61,7 +61,8 @@ template <class MotorPolicy, class ArrivedPolicy = bsc::hold_last>
 using line = bsc::system<actors, bsc::order<&actors::control, &actors::belt>,
                          bsc::link<&actors::control, &controller_io::motor, &actors::belt, &plant_io::motor, MotorPolicy>,
                          bsc::link<&actors::belt, &plant_io::arrived, &actors::control, &controller_io::arrived,
-                                   ArrivedPolicy>>;
+                                   ArrivedPolicy>,
+                         bsc::from_outside<&actors::control, &controller_io::request>>;
 
 // Two nodes, one actor each, on one bus, with the test's clock.
 template <class System>
@@ -339,4 +340,63 @@ TEST_CASE("a node refuses an actor the system does not have") {
     bsc::net::node_options o;
     o.actors = {"conveyor"};
     CHECK_THROWS_AS(bsc::net::node<system>(s, t, o), std::invalid_argument);
+}
+
+namespace net_test {
+struct Even;
+struct Odd;
+
+// A meter whose level grows by one every 100 ms (every step), and a reader that gets it doubled.
+struct meter_io {
+    bsc::output<int> level;
+};
+inline constexpr auto meter_chart = bsc::make_chart<meter_io>(
+    bsc::composite<Root>(bsc::initial<Even>, bsc::state<Odd>),
+    bsc::state<Even> + bsc::after(100ms) / [](meter_io& m) { m.level.set(m.level.pending() + 1); } = bsc::state<Odd>,
+    bsc::state<Odd> + bsc::after(100ms) / [](meter_io& m) { m.level.set(m.level.pending() + 1); } = bsc::state<Even>);
+struct reader_io {
+    bsc::input<int> doubled;
+};
+inline constexpr auto reader_chart = bsc::make_chart<reader_io>(
+    bsc::composite<Root>(bsc::initial<Still>, bsc::state<Moving>),
+    bsc::state<Still>[([](reader_io const& r) { return r.doubled.get() < 0; })] = bsc::state<Moving>,
+    bsc::state<Moving>[([](reader_io const& r) { return r.doubled.get() >= 0; })] = bsc::state<Still>);
+constexpr int twice(int n) { return 2 * n; }
+
+struct gauge_actors {
+    bsc::machine<decltype(meter_chart)> meter{meter_chart};
+    bsc::machine<decltype(reader_chart)> reader{reader_chart};
+};
+using gauge = bsc::system<gauge_actors, bsc::order<&gauge_actors::meter, &gauge_actors::reader>,
+                          bsc::link<&gauge_actors::meter, &meter_io::level, &gauge_actors::reader, &reader_io::doubled,
+                                    bsc::convert<&twice>, bsc::fail_safe<-1>>>;
+}  // namespace net_test
+
+TEST_CASE("across nodes a link's bsc::convert applies as in one process, and its fail-safe value is read as it is") {
+    std::chrono::steady_clock::time_point now{};
+    bsc::net::memory_bus bus;
+    bsc::net::memory_transport to_meter{bus}, to_reader{bus};
+    net_test::gauge meter_side{}, reader_side{};
+    auto options = [&](std::string actor) {
+        bsc::net::node_options o;
+        o.name = actor;
+        o.actors = {actor};
+        o.last_step = 3;
+        o.clock = [&now] { return now; };
+        return o;
+    };
+    bsc::net::node<net_test::gauge> meter_node{meter_side, to_meter, options("meter")};
+    bsc::net::node<net_test::gauge> reader_node{reader_side, to_reader, options("reader")};
+    for (int i = 0; i < 1000; ++i)
+        if (meter_node.run_once(0ms) + reader_node.run_once(0ms) == 0) break;
+    REQUIRE(reader_node.completed(1) == 3);
+    CHECK(meter_side.actors.meter.context().level.get() == 3);     // one more in each of steps 1 to 3
+    CHECK(reader_side.actors.reader.context().doubled.get() == 6);  // step 3's level (the meter steps first), doubled
+    to_meter.disconnect();  // the meter's will: stale at once
+    reader_node.stop_after(4);
+    now += 100ms;
+    reader_node.run_once(0ms);
+    CHECK(reader_node.completed(1) == 4);
+    CHECK(reader_side.actors.reader.context().doubled.get() == -1);  // the fail-safe value, not twice it
+    CHECK(reader_side.actors.reader.is<net_test::Moving>());
 }

@@ -57,8 +57,9 @@ TEST_CASE_TEMPLATE("retain: a restored machine continues exactly as the saved on
         auto const bytes = bsc::save(original);
         REQUIRE(bytes.size() == bsc::saved_size<machine>);
 
-        machine copy{chart, ctx{}};
-        copy.context().screen.shown = 42;
+        ctx own{};
+        own.screen.shown = 42;  // the copy's own display, given where it is built
+        machine copy{chart, own};
         auto const result = bsc::restore(copy, bytes);
         REQUIRE_MESSAGE(result, bsc::to_string(result));
         CHECK(bsc::save(copy) == bytes);
@@ -417,18 +418,22 @@ struct supervisor_ctx {
     sub_machine sub{sub_chart};
     int orders = 0;
 };
+struct step_sub {  // the supervisor steps its sub-controller at `now`
+    bsc::duration now{};
+};
 inline constexpr auto supervisor_chart = bsc::make_chart<supervisor_ctx>(
     bsc::composite<Root>(bsc::initial<Hold>, bsc::state<Work>),
     bsc::state<Hold> + bsc::event<go> / [](supervisor_ctx& c) {
         ++c.orders;
         c.sub.dispatch(go{});
     } = bsc::state<Work>,
-    bsc::state<Work> + bsc::event<back> = bsc::state<Hold>);
+    bsc::state<Work> + bsc::event<back> = bsc::state<Hold>,
+    bsc::state<Root> + bsc::event<step_sub> / [](supervisor_ctx& c, step_sub const& s) { c.sub.step(s.now); });
 
 TEST_CASE("retain: a machine held in the context is saved and restored with its own time") {
     using supervisor = bsc::machine<decltype(supervisor_chart)>;
     supervisor m{supervisor_chart, supervisor_ctx{}};
-    m.context().sub.step(5s);
+    m.dispatch(step_sub{5s});
     m.dispatch(go{});
     REQUIRE(m.context().sub.is<SubBusy>());
     auto const bytes = bsc::save(m);
@@ -440,10 +445,46 @@ TEST_CASE("retain: a machine held in the context is saved and restored with its 
     CHECK(fresh.context().orders == 1);
     CHECK(fresh.context().sub.context().jobs == 1);
     CHECK(fresh.context().sub.now() == 100s);  // the sub-machine's clock moves with the resumed time
-    fresh.context().sub.step(100s + 999ms);
+    fresh.dispatch(step_sub{100s + 999ms});
     CHECK(fresh.context().sub.is<SubBusy>());
-    fresh.context().sub.step(101s);
+    fresh.dispatch(step_sub{101s});
     CHECK(fresh.context().sub.is<SubIdle>());
+}
+
+// A delayed event sent from a clock of 10 s with a delay of bsc::duration::max() - 10 s: due at
+// bsc::duration::max() exactly, the last time a step can reach.
+struct ring {};
+struct far_ctx {
+    int rings = 0;
+};
+inline constexpr auto far_chart = bsc::make_chart<far_ctx>(
+    bsc::composite<Root>(bsc::initial<Hold>, bsc::state<Work>),
+    bsc::state<Hold> + bsc::event<go> / bsc::raise_after(bsc::duration::max() - 10s, ring{}, 1) = bsc::state<Work>,
+    bsc::state<Work> + bsc::event<ring> / [](far_ctx& c) { ++c.rings; } = bsc::state<Hold>,
+    bsc::state<Work> + bsc::event<back> = bsc::state<Hold>);
+
+TEST_CASE_TEMPLATE("retain: a delayed event that resume_at moves past bsc::duration::max() never comes due", Backend,
+                   bsc_test::compiled, bsc_test::table) {
+    using machine = bsc_test::machine_t<Backend, decltype(far_chart), bsc::scan_policy>;
+    machine m{far_chart};
+    m.step(10s);
+    m.dispatch(go{});
+    auto const bytes = bsc::save(m);
+
+    machine same{far_chart};
+    REQUIRE(bsc::restore(same, bytes));
+    same.step(bsc::duration::max());
+    CHECK(same.context().rings == 1);  // at the last instant
+
+    machine resumed{far_chart};
+    REQUIRE(bsc::restore(resumed, bytes, bsc::resume_at{11s}));  // a second later: past the end of time
+    machine sent_later{far_chart};
+    sent_later.step(11s);
+    sent_later.dispatch(go{});  // sent from 11 s: not kept either
+    CHECK(bsc::save(resumed) == bsc::save(sent_later));
+    resumed.step(bsc::duration::max());
+    CHECK(resumed.context().rings == 0);
+    CHECK(resumed.template is<Work>());
 }
 
 // ---- the manufacturing cell ---------------------------------------------------------------------

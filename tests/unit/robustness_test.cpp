@@ -14,6 +14,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <bsc/verify.hpp>
@@ -166,8 +167,9 @@ inline constexpr auto handles = bsc::make_chart<handles_io>(
 TEST_CASE_TEMPLATE("a context of lists, trees, handles and callbacks runs; its nested channels are latched", Backend,
                    compiled, table) {
     rob::peer_machine peer{rob::peer_chart};
-    bsc_test::machine_t<Backend, decltype(rob::handles), bsc::scan_policy> m{rob::handles};
-    m.context().peer = &peer;
+    rob::handles_io io{};
+    io.peer = &peer;  // a handle on another actor, given where the machine is built
+    bsc_test::machine_t<Backend, decltype(rob::handles), bsc::scan_policy> m{rob::handles, std::move(io)};
     m.context().levels.items[0].set(2);
     m.context().levels.items[1].set(5);
     m.step(0ms);  // latches the levels
@@ -183,11 +185,12 @@ namespace rob {
 // ---- reentrant dispatch ---------------------------------------------------------------------
 struct poke {};
 struct Other;
+// The machine and the calls it makes on itself are given by the environment, as inputs.
 struct reentrant_ctx {
-    void* self = nullptr;
-    bsc::outcome (*dispatch_go)(void*) = nullptr;  // calls self->dispatch(go{})
-    bsc::outcome (*step_now)(void*) = nullptr;     // calls self->step(...)
-    bsc::outcome (*by_name)(void*, char const*) = nullptr;  // calls self->dispatch_by_name(name)
+    bsc::input<void*> self;
+    bsc::input<bsc::outcome (*)(void*)> dispatch_go;               // calls self->dispatch(go{})
+    bsc::input<bsc::outcome (*)(void*)> step_now;                  // calls self->step(...)
+    bsc::input<bsc::outcome (*)(void*, char const*)> by_name;      // calls self->dispatch_by_name(name)
     bsc::outcome inner = bsc::outcome::consumed;
     bsc::outcome inner_step = bsc::outcome::consumed;
     bsc::outcome inner_by_name = bsc::outcome::consumed;
@@ -201,10 +204,10 @@ inline constexpr auto reentrant = bsc::make_chart<reentrant_ctx>(
     bsc::state<Busy> + bsc::on_entry / [](reentrant_ctx& c) { ++c.busy_entries; },
     bsc::state<Idle> + bsc::event<poke> /
             [](reentrant_ctx& c) {
-                c.inner = c.dispatch_go(c.self);  // a dispatch from inside the machine's own action
-                c.inner_step = c.step_now(c.self);
-                c.inner_by_name = c.by_name(c.self, "go");
-                c.inner_unknown = c.by_name(c.self, "no such event");
+                c.inner = c.dispatch_go.get()(c.self.get());  // a dispatch from inside the machine's own action
+                c.inner_step = c.step_now.get()(c.self.get());
+                c.inner_by_name = c.by_name.get()(c.self.get(), "go");
+                c.inner_unknown = c.by_name.get()(c.self.get(), "no such event");
             } = bsc::state<Busy>,
     bsc::state<Busy> + bsc::event<go> = bsc::state<Other>,
     bsc::state<Other> + bsc::event<go> = bsc::state<Idle>);
@@ -215,12 +218,12 @@ TEST_CASE_TEMPLATE("a dispatch, by type or by name, or a step from inside the ma
                    Backend, compiled, table) {
     using machine = bsc_test::machine_t<Backend, decltype(rob::reentrant)>;
     machine m{rob::reentrant};
-    m.context().self = &m;
-    m.context().dispatch_go = [](void* self) { return static_cast<machine*>(self)->dispatch(rob::go{}); };
-    m.context().step_now = [](void* self) { return static_cast<machine*>(self)->step(1ms).status; };
-    m.context().by_name = [](void* self, char const* name) {
+    m.context().self.set(&m);
+    m.context().dispatch_go.set([](void* self) { return static_cast<machine*>(self)->dispatch(rob::go{}); });
+    m.context().step_now.set([](void* self) { return static_cast<machine*>(self)->step(1ms).status; });
+    m.context().by_name.set([](void* self, char const* name) {
         return static_cast<machine*>(self)->dispatch_by_name(name);
-    };
+    });
     CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);
     CHECK(m.context().inner == bsc::outcome::reentrant);
     CHECK(m.context().inner_step == bsc::outcome::reentrant);
@@ -258,13 +261,13 @@ TEST_CASE_TEMPLATE("an internal timeout fires every period while its state is ac
     for (auto t = 0ms; t < 2s; t += 100ms) m.step(t);
     CHECK(m.context().ticks == 3);  // at 500, 1000 and 1500 ms
     CHECK(m.template is<rob::Heating>());
-    m.step(2s);  // the internal timeout (due too) comes first in declaration order: one per cycle
-    CHECK(m.context().ticks == 4);
-    m.step(2100ms);
+    m.step(2s);  // both due at 2 s: the external one, armed at 0 (the internal one at 1.5 s), fires
+    CHECK(m.context().ticks == 3);
     CHECK(m.template is<rob::Done>());
+    m.step(2100ms);
     m.dispatch(rob::go{});  // re-entered: both count from the last cycle again
     for (auto t = 2200ms; t <= 2600ms; t += 100ms) m.step(t);
-    CHECK(m.context().ticks == 5);  // 500 ms after 2100 ms
+    CHECK(m.context().ticks == 4);  // 500 ms after 2100 ms
 }
 
 TEST_CASE_TEMPLATE("the clock starts at the first cycle, wherever the caller's time starts", Backend, compiled, table) {
@@ -317,7 +320,8 @@ TEST_CASE("a chart built at run time with a timeout that can never fire throws, 
     };
     CHECK_THROWS_WITH_AS(build(1s, 2s),
                          "bsc::make_chart: the timeout row at position 3 can never fire: the unguarded timeout row at "
-                         "position 2 leaves the same state with a shorter (or equal, and earlier) delay, always first",
+                         "position 2 leaves its state first, every time, with a shorter (or equal) delay, from the same "
+                         "state or from a state below it that is active whenever it is",
                          std::invalid_argument);
     CHECK_THROWS_WITH_AS(build(1s, 1s), doctest::Contains("row at position 3 can never fire"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(build(3s, 2s), doctest::Contains("row at position 2 can never fire"), std::invalid_argument);
@@ -349,7 +353,7 @@ inline std::uint64_t simulated_expiry(bsc::duration delay, bsc::duration period)
 }
 
 inline auto explore(bsc::duration delay, bsc::duration period, std::size_t max_states) {
-    auto model = bsc::verify::cycle_model{timed_machine{timed_chart(delay)}, period, 1, [](nothing&, std::size_t) {}};
+    auto model = bsc::verify::cycle_model{timed_machine{timed_chart(delay)}, period, 1, [](nothing const&, std::size_t) {}};
     return bsc::verify::explorer{model, bsc::verify::limits{max_states, std::size_t{1} << 30}};
 }
 }  // namespace rob
@@ -404,7 +408,7 @@ TEST_CASE("beyond 16 bits of periods the explorer still counts exactly; beyond i
 TEST_CASE("an exploration stopped by its memory bound never held more than the bound") {
     std::size_t const bound = std::size_t{4} << 20;
     auto model = bsc::verify::cycle_model{rob::timed_machine{rob::timed_chart(std::chrono::hours{24})}, 1ms, 1,
-                                          [](rob::nothing&, std::size_t) {}};  // 86.4 million cycles: far too many
+                                          [](rob::nothing const&, std::size_t) {}};  // 86.4 million cycles: far too many
     std::size_t const before = heap_meter::live();
     heap_meter::reset_peak();
     bsc::verify::explorer limited{model, bsc::verify::limits{100'000'000, bound}};
@@ -424,9 +428,9 @@ struct boom : std::runtime_error {
 };
 struct Fault; struct Outer; struct Inner;
 struct fault_ctx {
-    bool throw_in_action = false;
-    bool throw_in_entry = false;
-    bool throw_in_guard = false;
+    bsc::input<bool> throw_in_action;  // where to throw: the environment's switches
+    bsc::input<bool> throw_in_entry;
+    bsc::input<bool> throw_in_guard;
     int idle_exits = 0;
     int outer_entries = 0;
     int inner_entries = 0;
@@ -437,12 +441,12 @@ struct raised {};
 // Without a row on bsc::action_failed: the caller gets the exception.
 inline constexpr auto throwing_rows = bsc::rows(
     bsc::state<Idle> + bsc::on_exit / [](fault_ctx& c) { ++c.idle_exits; },
-    bsc::state<Outer> + bsc::on_entry / [](fault_ctx& c) { ++c.outer_entries; if (c.throw_in_entry) throw boom{}; },
+    bsc::state<Outer> + bsc::on_entry / [](fault_ctx& c) { ++c.outer_entries; if (c.throw_in_entry.get()) throw boom{}; },
     bsc::state<Inner> + bsc::on_entry / [](fault_ctx& c) { ++c.inner_entries; },
-    bsc::state<Idle> + bsc::event<go> [([](fault_ctx const& c) { if (c.throw_in_guard) throw boom{}; return true; })] /
+    bsc::state<Idle> + bsc::event<go> [([](fault_ctx const& c) { if (c.throw_in_guard.get()) throw boom{}; return true; })] /
             [](fault_ctx& c, go const&, auto& raise) {
                 raise(raised{});  // queued before the throw: still processed in this dispatch
-                if (c.throw_in_action) throw boom{};
+                if (c.throw_in_action.get()) throw boom{};
             } = bsc::state<Outer>,
     bsc::state<Outer> + bsc::event<raised> / [](fault_ctx& c) { ++c.raised_seen; },
     bsc::state<Outer> + bsc::event<poke> = bsc::state<Idle>);
@@ -469,7 +473,7 @@ struct reporting : bsc::default_policy {
 TEST_CASE_TEMPLATE("an action that throws: the microstep completes, then the caller gets the exception", Backend,
                    compiled, table) {
     bsc_test::machine_t<Backend, decltype(rob::unhandled)> m{rob::unhandled};
-    m.context().throw_in_action = true;
+    m.context().throw_in_action.set(true);
     CHECK_THROWS_AS(m.dispatch(rob::go{}), rob::boom);
     // The transition led where it leads: Idle exited once, Outer and Inner entered once.
     CHECK(m.template is<rob::Inner>());
@@ -478,7 +482,7 @@ TEST_CASE_TEMPLATE("an action that throws: the microstep completes, then the cal
     CHECK(m.context().inner_entries == 1);
     CHECK(m.context().raised_seen == 1);  // the event raised before the throw was processed
     // The machine goes on working, and the next unrelated dispatch finds nothing left over.
-    m.context().throw_in_action = false;
+    m.context().throw_in_action.set(false);
     CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);
     CHECK(m.template is<rob::Idle>());
     CHECK(m.context().raised_seen == 1);
@@ -488,7 +492,7 @@ TEST_CASE_TEMPLATE("an action that throws: the microstep completes, then the cal
 
 TEST_CASE_TEMPLATE("an entry action that throws leaves a configuration the chart can reach", Backend, compiled, table) {
     bsc_test::machine_t<Backend, decltype(rob::unhandled)> m{rob::unhandled};
-    m.context().throw_in_entry = true;
+    m.context().throw_in_entry.set(true);
     CHECK_THROWS_AS(m.dispatch(rob::go{}), rob::boom);
     CHECK(m.template is<rob::Outer>());
     CHECK(m.template is<rob::Inner>());  // the default entry went on below the failed entry
@@ -499,17 +503,17 @@ TEST_CASE_TEMPLATE("an entry action that throws leaves a configuration the chart
 
 TEST_CASE_TEMPLATE("a guard that throws does not hold, and its failure reaches the caller", Backend, compiled, table) {
     bsc_test::machine_t<Backend, decltype(rob::unhandled)> m{rob::unhandled};
-    m.context().throw_in_guard = true;
+    m.context().throw_in_guard.set(true);
     CHECK_THROWS_AS(m.dispatch(rob::go{}), rob::boom);
     CHECK(m.template is<rob::Idle>());
     CHECK(m.context().idle_exits == 0);
-    m.context().throw_in_guard = false;
+    m.context().throw_in_guard.set(false);
     CHECK(m.dispatch(rob::go{}) == bsc::outcome::consumed);
 }
 
 TEST_CASE_TEMPLATE("a chart takes bsc::action_failed with an ordinary transition", Backend, compiled, table) {
     bsc_test::machine_t<Backend, decltype(rob::handled)> m{rob::handled};
-    m.context().throw_in_action = true;
+    m.context().throw_in_action.set(true);
     CHECK(m.dispatch(rob::go{}) == bsc::outcome::consumed);  // nothing escapes: the chart handled it
     CHECK(m.template is<rob::Fault>());
     CHECK(m.context().caught == "boom");
@@ -521,7 +525,7 @@ TEST_CASE_TEMPLATE("a chart takes bsc::action_failed with an ordinary transition
 TEST_CASE_TEMPLATE("under a policy that does not rethrow, the failure is an outcome and last_failure() holds it",
                    Backend, compiled, table) {
     bsc_test::machine_t<Backend, decltype(rob::unhandled), rob::reporting> m{rob::unhandled};
-    m.context().throw_in_action = true;
+    m.context().throw_in_action.set(true);
     CHECK(m.dispatch(rob::go{}) == bsc::outcome::failed);
     CHECK(m.last_outcome() == bsc::outcome::failed);
     REQUIRE(m.last_failure() != nullptr);
@@ -547,11 +551,11 @@ struct entry_thrower {
 
 TEST_CASE_TEMPLATE("a failure kept by a run that an exception ends goes with that run", Backend, compiled, table) {
     bsc_test::machine_t<Backend, decltype(rob::unhandled), rob::reporting, rob::entry_thrower<rob::Outer>> m{rob::unhandled};
-    m.context().throw_in_action = true;
+    m.context().throw_in_action.set(true);
     m.observer().armed = true;
     // The action's failure is kept, then the observer's exception ends the run: that is what escapes.
     CHECK_THROWS_AS(m.dispatch(rob::go{}), rob::observer_error);
-    m.context().throw_in_action = false;
+    m.context().throw_in_action.set(false);
     m.observer().armed = false;
     // Nothing of the ended run is reported by the next one, nor by any after it.
     CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);
@@ -564,9 +568,9 @@ TEST_CASE_TEMPLATE("a dispatch whose actions cannot fail reports no failure afte
                    table) {
     // The status byte keeps whether the run under way has failed: it must not leak into the next run.
     bsc_test::machine_t<Backend, decltype(rob::unhandled), rob::reporting> m{rob::unhandled};
-    m.context().throw_in_action = true;
+    m.context().throw_in_action.set(true);
     CHECK(m.dispatch(rob::go{}) == bsc::outcome::failed);
-    m.context().throw_in_action = false;
+    m.context().throw_in_action.set(false);
     CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);  // Outer to Idle: no action, no guard
     CHECK(m.last_outcome() == bsc::outcome::consumed);
     CHECK(m.dispatch(rob::poke{}) == bsc::outcome::ignored);  // nothing runs at all
@@ -578,9 +582,9 @@ TEST_CASE_TEMPLATE("under bsc::lean_policy a failure is rethrown once, and the n
                    compiled, table) {
     // lean_policy keeps no outcome: the failure's mark is cleared all the same.
     bsc_test::machine_t<Backend, decltype(rob::unhandled), bsc::lean_policy> m{rob::unhandled};
-    m.context().throw_in_action = true;
+    m.context().throw_in_action.set(true);
     CHECK_THROWS_AS(m.dispatch(rob::go{}), rob::boom);
-    m.context().throw_in_action = false;
+    m.context().throw_in_action.set(false);
     CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);
     CHECK(m.dispatch(rob::poke{}) == bsc::outcome::ignored);
     CHECK(m.dispatch(rob::go{}) == bsc::outcome::consumed);

@@ -5,6 +5,8 @@
 #include <doctest/doctest.h>
 
 #include <chrono>
+#include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,15 @@ inline constexpr auto log = [](char const* what) {
 
 using namespace beyond;
 
+// What a machine's chart logged after the first `mark` characters of its log, without the space
+// that separates it from what came before (the log is the chart's: the test reads it, and
+// marks where the part it checks begins).
+template <class Machine>
+std::string logged_since(Machine const& m, std::size_t mark) {
+    std::string const& log = m.context().log;
+    return log.substr(mark > 0 && mark < log.size() && log[mark] == ' ' ? mark + 1 : mark);
+}
+
 // ---- local transitions ---------------------------------------------------------------------
 
 namespace beyond {
@@ -61,15 +72,15 @@ TEST_CASE_TEMPLATE("a local transition exits and enters only below its source", 
     m.dispatch(go{});
     m.dispatch(go{});
     REQUIRE(m.active_states().joined() == "Root Work Step2");
-    m.context().log.clear();
+    std::size_t mark = m.context().log.size();  // what the chart logs from here
     CHECK(m.dispatch(restart{}) == bsc::outcome::consumed);
-    CHECK(m.context().log == "exit Step2 restart enter Step1");
+    CHECK(logged_since(m, mark) == "exit Step2 restart enter Step1");
     CHECK(m.active_states().joined() == "Root Work Step1");
     m.dispatch(go{});
-    m.context().log.clear();
+    mark = m.context().log.size();
     // The same target without bsc::local leaves and re-enters the source (SCXML's external).
     CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
-    CHECK(m.context().log == "exit Step2 exit Work back enter Work enter Step1");
+    CHECK(logged_since(m, mark) == "exit Step2 exit Work back enter Work enter Step1");
 }
 
 TEST_CASE("a local transition is drawn as such, and exported as SCXML's type=\"internal\"") {
@@ -113,19 +124,19 @@ TEST_CASE_TEMPLATE("a row on an event takes the events derived from it; the firs
     CHECK(m.context().log == "send 7");
     CHECK(m.template is<Sent>());
     m.dispatch(go{});
-    m.context().log.clear();
+    std::size_t mark = m.context().log.size();  // what the chart logs from here
     failed.code = 0;  // the first row's guard fails: the row on the family `error` is next
     CHECK(m.dispatch(failed) == bsc::outcome::consumed);
-    CHECK(m.context().log == "error");
+    CHECK(logged_since(m, mark) == "error");
     CHECK(m.template is<Fault>());
     m.dispatch(go{});
-    m.context().log.clear();
+    mark = m.context().log.size();
     CHECK(m.dispatch(error{}) == bsc::outcome::consumed);  // not an error_send: the first row is not a candidate
     CHECK(m.template is<Fault>());
     m.dispatch(go{});
-    m.context().log.clear();
+    mark = m.context().log.size();
     CHECK(m.dispatch(other{}) == bsc::outcome::consumed);  // only bsc::any_event takes it
-    CHECK(m.context().log == "any");
+    CHECK(logged_since(m, mark) == "any");
     CHECK(m.template is<Caught>());
     // bsc::any_event takes every event, so nothing is unhandled: an event of no row at all too.
     struct stranger {};
@@ -163,13 +174,13 @@ TEST_CASE_TEMPLATE("bsc::any_event has the priority of its row: a deeper state's
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(m.context().log == "inner go");
     CHECK(m.template is<Elsewhere>());
-    m.context().log.clear();
+    std::size_t mark = m.context().log.size();  // what the chart logs from here
     CHECK(m.dispatch(restart{}) == bsc::outcome::consumed);
-    CHECK(m.context().log == " raised 3");
+    CHECK(logged_since(m, mark) == "raised 3");
     CHECK(m.template is<Inner>());
-    m.context().log.clear();
+    mark = m.context().log.size();
     CHECK(m.dispatch(back{}) == bsc::outcome::consumed);  // Inner has no row on back: Outer's any_event row
-    CHECK(m.context().log == "outer any");
+    CHECK(logged_since(m, mark) == "outer any");
     CHECK(m.template is<Caught>());
 }
 
@@ -196,7 +207,6 @@ TEST_CASE_TEMPLATE("entering a final child of a composite raises done for the co
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(m.context().log == "exit Step1 go enter Finished exit Finished exit Work done Work enter Next");
     CHECK(m.template is<Next>());
-    m.context().log.clear();
     CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
     CHECK(m.template is<Step1>());
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
@@ -236,9 +246,9 @@ TEST_CASE_TEMPLATE("when every region of a parallel state is in a final state, d
     CHECK(m.template is<Next>());
     // Back in P, the regions start over from their initial states: nothing is complete, and
     // the bytes of the regions (F1, F2 from the last visit) do not count while P is entered.
-    m.context().log.clear();
+    std::size_t mark = m.context().log.size();  // what the chart logs from here
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
-    CHECK(m.context().log.empty());
+    CHECK(logged_since(m, mark).empty());
     CHECK(m.template is<A1>());
     CHECK(m.template is<B1>());
 }
@@ -266,9 +276,9 @@ TEST_CASE_TEMPLATE("a parallel state entered with every region final raises its 
     CHECK(m.context().log == "done Q1 done Q2 done Q");
     CHECK(m.template is<Next>());
     m.dispatch(go{});
-    m.context().log.clear();
+    std::size_t mark = m.context().log.size();  // what the chart logs from here
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
-    CHECK(m.context().log == "done Q1 done Q2 done Q");
+    CHECK(logged_since(m, mark) == "done Q1 done Q2 done Q");
 }
 
 namespace beyond {
@@ -338,14 +348,14 @@ TEST_CASE_TEMPLATE("an initial transition runs its actions after its state's ent
     CHECK(m.context().log == "enter Work initial Work enter Mid enter Deep");
     CHECK(m.active_states().joined() == "Root Work Mid Deep");
     m.dispatch(back{});
-    m.context().log.clear();
+    std::size_t mark = m.context().log.size();  // what the chart logs from here
     // A transition to a state inside Work does not take Work's initial transition.
     CHECK(m.dispatch(restart{}) == bsc::outcome::consumed);
-    CHECK(m.context().log == "enter Work enter Step1");
-    m.context().log.clear();
+    CHECK(logged_since(m, mark) == "enter Work enter Step1");
+    mark = m.context().log.size();
     // Entering Mid as a transition's target takes Mid's initial transition.
     CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
-    CHECK(m.context().log == "enter Mid initial Mid");
+    CHECK(logged_since(m, mark) == "enter Mid initial Mid");
     CHECK(m.template is<Other>());
 }
 
@@ -381,9 +391,9 @@ TEST_CASE_TEMPLATE("a history state restores its composite, or takes its default
         CHECK(m.context().log == "enter Work Hs default enter Sub enter SubA");
         m.dispatch(go{});  // SubA -> SubB
         m.dispatch(back{});
-        m.context().log.clear();
+        std::size_t mark = m.context().log.size();  // what the chart logs from here
         CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
-        CHECK(m.context().log == "enter Work enter Sub enter SubA");  // shallow: Sub, then Sub's initial
+        CHECK(logged_since(m, mark) == "enter Work enter Sub enter SubA");  // shallow: Sub, then Sub's initial
     }
     SUBCASE("deep, never active: the default (deep inside); then the whole remembered configuration") {
         machine_t<Backend, decltype(history_chart)> m{history_chart, ctx{}};
@@ -393,23 +403,23 @@ TEST_CASE_TEMPLATE("a history state restores its composite, or takes its default
         m.dispatch(go{});  // Step1 -> Sub (SubA)
         m.dispatch(go{});  // SubA -> SubB
         m.dispatch(back{});
-        m.context().log.clear();
+        std::size_t mark = m.context().log.size();  // what the chart logs from here
         CHECK(m.dispatch(resume{}) == bsc::outcome::consumed);
-        CHECK(m.context().log == "enter Work enter Sub enter SubB");
+        CHECK(logged_since(m, mark) == "enter Work enter Sub enter SubB");
         CHECK(m.active_states().joined() == "Root Work Sub SubB");
     }
     SUBCASE("a transition to the composite itself takes its initial state, not its history") {
         machine_t<Backend, decltype(history_chart)> m{history_chart, ctx{}};
         m.dispatch(resume{});
         m.dispatch(back{});
-        m.context().log.clear();
+        std::size_t mark = m.context().log.size();  // what the chart logs from here
         CHECK(m.dispatch(restart{}) == bsc::outcome::consumed);
-        CHECK(m.context().log == "enter Work enter Step1");
+        CHECK(logged_since(m, mark) == "enter Work enter Step1");
         // ... and is remembered: the shallow history now restores Step1.
         m.dispatch(back{});
-        m.context().log.clear();
+        mark = m.context().log.size();
         m.dispatch(go{});
-        CHECK(m.context().log == "enter Work enter Step1");
+        CHECK(logged_since(m, mark) == "enter Work enter Step1");
     }
 }
 
@@ -606,6 +616,74 @@ TEST_CASE_TEMPLATE("a delayed event comes due in the first cycle at or after its
     }
 }
 
+namespace beyond {
+// A delay near bsc::duration::max(): from a clock far from zero, due past the end of time.
+inline constexpr auto far_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Wait>, bsc::state<Rang>),
+    bsc::state<Idle> + bsc::event<start> / bsc::raise_after(bsc::duration::max() - std::chrono::seconds{5}, tick{}, 1) =
+        bsc::state<Wait>,
+    bsc::state<Idle> + bsc::event<start_again> / bsc::raise_after(std::chrono::seconds{1}, tick{}) = bsc::state<Wait>,
+    bsc::state<Wait> + bsc::event<tick> / log("tick") = bsc::state<Rang>,
+    bsc::state<Wait> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<Rang> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<Idle> + bsc::event<tick> / log("late tick"));
+struct one_delayed_slot : bsc::default_policy {
+    static constexpr std::size_t delayed_capacity = 1;
+};
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("a delayed event whose due time lies past bsc::duration::max() never comes due, and takes no slot",
+                   Backend, compiled, table) {
+    using namespace std::chrono_literals;
+    auto constexpr end_of_time = bsc::duration::max();
+    SUBCASE("sent from a clock far from zero: not delivered, even by step(duration::max())") {
+        machine_t<Backend, decltype(far_chart)> m{far_chart, ctx{}};
+        m.step(end_of_time - 10s);
+        CHECK(m.dispatch(start{}) == bsc::outcome::consumed);
+        m.step(end_of_time);
+        CHECK(m.context().log.empty());
+        CHECK(m.template is<Wait>());
+    }
+    SUBCASE("not kept: another delayed event still finds the only slot") {
+        machine_t<Backend, decltype(far_chart), one_delayed_slot> m{far_chart, ctx{}};
+        m.step(end_of_time - 10s);
+        CHECK(m.dispatch(start{}) == bsc::outcome::consumed);
+        CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
+        CHECK(m.dispatch(start_again{}) == bsc::outcome::consumed);  // no overflow
+        m.step(end_of_time - 9s);
+        CHECK(m.context().log == "tick");
+        m.dispatch(back{});
+        m.step(end_of_time);
+        CHECK(m.context().log == "tick");
+    }
+    SUBCASE("due at duration::max() exactly: delivered by step(duration::max())") {
+        machine_t<Backend, decltype(far_chart)> m{far_chart, ctx{}};
+        m.step(5s);
+        m.dispatch(start{});
+        m.step(end_of_time - 1ns);
+        CHECK(m.template is<Wait>());
+        m.step(end_of_time);
+        CHECK(m.context().log == "tick");
+        CHECK(m.template is<Rang>());
+    }
+    SUBCASE("sent before the first cycle, which starts the clock far from zero: dropped then") {
+        machine_t<Backend, decltype(far_chart), one_delayed_slot> m{far_chart, ctx{}};
+        m.dispatch(start{});  // counts from the first cycle
+        m.step(10s);          // which puts it 5 s past the end of time
+        m.step(end_of_time);
+        CHECK(m.context().log.empty());
+        m.dispatch(back{});
+        CHECK(m.dispatch(start_again{}) == bsc::outcome::consumed);  // its slot is free
+    }
+}
+
+TEST_CASE("bsc::cancel_delayed(0) and a delay beyond bsc::duration, in a chart built at run time, throw") {
+    CHECK_THROWS_AS((void)bsc::cancel_delayed(0), std::invalid_argument);
+    CHECK_NOTHROW((void)bsc::cancel_delayed(1));
+    CHECK_THROWS_AS((void)bsc::raise_after(std::chrono::hours{24 * 365 * 1000}, tick{}), std::out_of_range);
+    CHECK_THROWS_AS((void)bsc::raise_after(std::chrono::seconds{-1}, tick{}), std::invalid_argument);
+}
+
 TEST_CASE("a delayed event and its cancellation are labelled in the exports") {
     auto const mermaid = bsc::to_mermaid(delayed_chart);
     CHECK(mermaid.find("Idle --> Wait : start / raise_after(2s, tick, 1)") != std::string::npos);
@@ -673,4 +751,89 @@ TEST_CASE_TEMPLATE("an initial transition may name one state in each region (ini
     CHECK(m.active_states().joined() == "Root Outer3 Q3 QL QL2 QM QM1 QR QR2");
     CHECK(bsc::to_scxml(initial_set_chart).find("<transition target=\"QL2 QR2\">") != std::string::npos);
     CHECK(bsc::to_mermaid(initial_set_chart).find("[*] --> QR2") != std::string::npos);
+}
+
+// ---- reachability follows every target and what a shallow history enters -------------------
+
+namespace beyond {
+struct Par;
+struct RegionA;
+struct RegionX;
+struct A1;
+struct B;
+struct X1;
+struct Y;
+
+// Y is entered only by the second target of Idle's row: reachability follows every target.
+inline constexpr auto second_target_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
+                         bsc::parallel<Par>(bsc::composite<RegionA>(bsc::initial<A1>, bsc::state<A1>, bsc::state<B>),
+                                            bsc::composite<RegionX>(bsc::initial<X1>, bsc::state<X1>, bsc::state<Y>))),
+    bsc::state<Idle> + bsc::event<go> = bsc::targets(bsc::state<B>, bsc::state<Y>),
+    bsc::state<Idle> + bsc::event<other> = bsc::state<Par>, bsc::state<Par> + bsc::event<back> = bsc::state<Idle>);
+
+struct Hist;
+struct P1;
+struct P2;
+struct X;
+struct next {};
+// X is never entered by a row: only the shallow history of Work restores P2, which it enters by
+// default, X (as W3C SCXML IRP test 388).
+inline constexpr auto restored_default_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
+                         bsc::composite<Work>(bsc::initial<P1>, bsc::shallow_history_state<Hist, P1>, bsc::state<P1>,
+                                              bsc::composite<P2>(bsc::initial<X>, bsc::state<X>, bsc::state<Y>))),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Hist>, bsc::state<P1> + bsc::event<next> = bsc::state<Y>,
+    bsc::state<X> + bsc::event<next> = bsc::state<P1>, bsc::state<Work> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<X> + bsc::on_entry / log("enter X"));
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("a state entered only by the second target of bsc::targets is reachable", Backend, compiled, table) {
+    machine_t<Backend, decltype(second_target_chart)> m{second_target_chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.active_states().joined() == "Root Par RegionA B RegionX Y");
+}
+
+TEST_CASE_TEMPLATE("a shallow history enters the restored child by default: a state never active before is reachable",
+                   Backend, compiled, table) {
+    machine_t<Backend, decltype(restored_default_chart)> m{restored_default_chart, ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);  // no history yet: the default, P1
+    CHECK(m.active_states().joined() == "Root Work P1");
+    CHECK(m.dispatch(next{}) == bsc::outcome::consumed);
+    CHECK(m.active_states().joined() == "Root Work P2 Y");
+    CHECK(m.dispatch(back{}) == bsc::outcome::consumed);
+    CHECK(m.context().log.empty());
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);  // restores P2, entered by default
+    CHECK(m.active_states().joined() == "Root Work P2 X");
+    CHECK(m.context().log == "enter X");
+}
+
+// ---- done events of parallel states: the regions are active when it completes ----------------
+
+namespace beyond {
+struct Both;
+struct Left;
+struct Right;
+struct LeftWork;
+struct LeftDone;
+struct RightWork;
+struct RightDone;
+struct After;
+inline constexpr auto region_takes_done_chart = bsc::make_chart<ctx>(
+    bsc::composite<Root>(
+        bsc::initial<Both>, bsc::state<After>,
+        bsc::parallel<Both>(bsc::composite<Left>(bsc::initial<LeftWork>, bsc::state<LeftWork>, bsc::final_state<LeftDone>),
+                            bsc::composite<Right>(bsc::initial<RightWork>, bsc::state<RightWork>, bsc::final_state<RightDone>))),
+    bsc::state<LeftWork> + bsc::event<go> = bsc::state<LeftDone>, bsc::state<RightWork> + bsc::event<next> = bsc::state<RightDone>,
+    bsc::state<Left> + bsc::event<bsc::done<Both>> / log("Left takes done.state.Both") = bsc::state<After>,
+    bsc::state<After> + bsc::event<back> = bsc::state<Both>);
+}  // namespace beyond
+
+TEST_CASE_TEMPLATE("a region of a parallel state takes the parallel state's done event", Backend, compiled, table) {
+    machine_t<Backend, decltype(region_takes_done_chart)> m{region_takes_done_chart, ctx{}};
+    m.dispatch(go{});
+    CHECK(m.context().log.empty());
+    m.dispatch(next{});
+    CHECK(m.context().log == "Left takes done.state.Both");
+    CHECK(m.active_states().joined() == "Root After");
 }

@@ -223,7 +223,7 @@ struct Right;
 struct Wait;
 struct Idle;
 struct data {
-    bool go = false;
+    bsc::input<bool> go;
 };
 using namespace std::chrono_literals;
 inline constexpr auto chart = [] {
@@ -232,9 +232,9 @@ inline constexpr auto chart = [] {
         bsc::composite<Top>(bsc::initial<Par>,
                             bsc::parallel<Par>(bsc::composite<Left>(bsc::initial<L1>, state<L2>), state<Right>),
                             state<Wait>, state<Idle>),
-        state<L1> + after(250ms) = state<L2>, state<L2>[([](data const& d) { return d.go; })] = state<L1>,
-        state<Right> + after(2s)[([](data const& d) { return d.go; })] = state<Wait>,
-        state<Wait> + after(1500us)[([](data const& d) { return d.go; })] = state<Idle>,
+        state<L1> + after(250ms) = state<L2>, state<L2>[([](data const& d) { return d.go.get(); })] = state<L1>,
+        state<Right> + after(2s)[([](data const& d) { return d.go.get(); })] = state<Wait>,
+        state<Wait> + after(1500us)[([](data const& d) { return d.go.get(); })] = state<Idle>,
         state<Wait> + after(3s) = state<Par>,  // the shorter one is guarded: unguarded, it would make this one dead
         state<Idle> + bsc::event<go> = state<Par>);
 }();
@@ -272,7 +272,7 @@ TEST_CASE("table: timeout rows read their delay from the chart; their origins ke
     m.step(0ms);
     CHECK(m.step(250ms).transitions == 1);  // Left: L1's timeout
     CHECK(m.is<L2>());
-    m.context().go = true;
+    m.context().go.set(true);
     auto const r = m.step(2s);  // Left: L2 [go]; Right: its guarded timeout
     CHECK(r.transitions == 2);
     CHECK(m.is<Wait>());

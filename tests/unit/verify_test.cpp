@@ -137,7 +137,7 @@ inline constexpr auto blink = bsc::make_chart<blink_data>(
 }  // namespace ver
 
 TEST_CASE("cycle models: absolute time is abstracted, so a periodic behaviour has finitely many states") {
-    auto apply = [](ver::blink_data& d, std::size_t choice) { d.enable.set(choice == 1); };
+    auto apply = [](ver::blink_data const& d, std::size_t choice) { d.enable.set(choice == 1); };
     bsc::verify::cycle_model model{bsc::machine{ver::blink, ver::blink_data{}}, 100ms, 2, apply};
     bsc::verify::explorer ex{model};
     auto const& st = ex.run();
@@ -155,8 +155,67 @@ TEST_CASE("cycle models: absolute time is abstracted, so a periodic behaviour ha
               .holds());
 }
 
+namespace ver {
+struct Ticking;
+struct Halted;
+struct stop {};
+struct two_data {
+    bsc::input<bool> enable;
+};
+inline constexpr auto enabled = [](two_data const& d) { return d.enable.get(); };
+// Two guarded internal timeouts of one state: which fires, when both are due, depends on when each
+// came due, long after the longest delay.
+inline constexpr auto two_timeouts = bsc::make_chart<two_data>(
+    bsc::composite<Root>(bsc::initial<Ticking>, bsc::state<Halted>),
+    bsc::state<Ticking> + bsc::after(1s)[enabled] / [] {},
+    bsc::state<Ticking> + bsc::after(2s)[enabled] / [] {},
+    bsc::state<Ticking> + bsc::event<stop> = bsc::state<Halted>,
+    bsc::state<Halted> + bsc::event<stop> = bsc::state<Ticking>);
+struct rows_fired {
+    std::vector<int> rows;
+    void on_row(int row) { rows.push_back(row); }
+};
+}  // namespace ver
+
+TEST_CASE("the codec keeps the order in which a state's timeouts came due, long past the longest delay") {
+    using machine = bsc::machine<decltype(ver::two_timeouts), bsc::scan_policy, ver::rows_fired>;
+    machine never{ver::two_timeouts};  // neither timeout has fired: both count from 0
+    machine once{ver::two_timeouts};   // the 1 s one fired at 1 s, and counts from there
+    never.step(0s);
+    once.step(0s);
+    once.context().enable.set(true);
+    once.step(1s);
+    once.context().enable.set(false);
+    for (auto t = 2s; t <= 10s; t += 1s) {
+        never.step(t);
+        once.step(t);
+    }
+    REQUIRE(once.observer().rows == std::vector<int>{0});
+    inside::codec<machine> const codec{1s};
+    std::vector<std::byte> never_key(codec.key_size);
+    std::vector<std::byte> once_key(codec.key_size);
+    codec.encode(never, never_key.data());
+    codec.encode(once, once_key.data());
+    CHECK(never_key != once_key);  // each timeout's count is capped at 3 periods, but not their difference
+    // Decoded, each behaves as the machine it was encoded from: when enabled, `never` fires the
+    // 1 s timeout (due at 1 s), `once` the 2 s one (due at 2 s, as the other, but armed first).
+    auto const next_row = [](machine m, bsc::duration at) {
+        m.observer().rows.clear();
+        m.context().enable.set(true);
+        m.step(at);
+        return m.observer().rows;
+    };
+    CHECK(next_row(never, 11s) == std::vector<int>{0});
+    CHECK(next_row(once, 11s) == std::vector<int>{1});
+    machine const fresh{ver::two_timeouts};
+    auto const decoded_never = codec.decode(fresh, never_key.data());
+    auto const decoded_once = codec.decode(fresh, once_key.data());
+    CHECK(next_row(decoded_never, decoded_never.now() + 1s) == std::vector<int>{0});
+    CHECK(next_row(decoded_once, decoded_once.now() + 1s) == std::vector<int>{1});
+}
+
 TEST_CASE("leads_to_within: a bounded response, with a counterexample that shows the time of each step") {
-    auto apply = [](ver::blink_data& d, std::size_t choice) { d.enable.set(choice == 1); };
+    auto apply = [](ver::blink_data const& d, std::size_t choice) { d.enable.set(choice == 1); };
     auto label = [](std::size_t choice) { return choice == 1 ? std::string("enable=1") : std::string("enable=0"); };
     bsc::verify::cycle_model model{bsc::machine{ver::blink, ver::blink_data{}}, 100ms, 2, apply, label};
     bsc::verify::explorer ex{model};
@@ -188,7 +247,7 @@ TEST_CASE("leads_to_within: a bounded response, with a counterexample that shows
 }
 
 TEST_CASE("leads_to_within fails on a cycle or a deadlock that avoids q, and q in the p-state counts") {
-    auto apply = [](ver::blink_data& d, std::size_t choice) { d.enable.set(choice == 1); };
+    auto apply = [](ver::blink_data const& d, std::size_t choice) { d.enable.set(choice == 1); };
     bsc::verify::cycle_model model{bsc::machine{ver::blink, ver::blink_data{}}, 100ms, 2, apply};
     bsc::verify::explorer ex{model};
     auto const off = [](auto const& m) { return m.template is<ver::Off>(); };
@@ -220,7 +279,7 @@ TEST_CASE("a trace report folds runs of repeated steps and shows only the inputs
 }
 
 TEST_CASE("a progress callback reports a long exploration while it runs, and once at the end") {
-    auto apply = [](ver::blink_data& d, std::size_t choice) { d.enable.set(choice == 1); };
+    auto apply = [](ver::blink_data const& d, std::size_t choice) { d.enable.set(choice == 1); };
     bsc::verify::cycle_model model{bsc::machine{ver::blink, ver::blink_data{}}, 100ms, 2, apply};
     bsc::verify::explorer ex{model};
     std::vector<bsc::verify::progress> seen;
@@ -285,11 +344,12 @@ TEST_CASE("the codec encodes channels of aggregates member by member, and decode
     // 2 x (8 + 1) bits per item channel, 2 bits for the flag: 38 bits.
     CHECK(codec::key_size == 5);
     ver::carrier c{};
-    c.incoming.set({7, true});
+    auto const& environment = c;  // inputs are set through a const view, outputs by the chart
+    environment.incoming.set({7, true});
     inside::latch(c.incoming);
-    c.incoming.set({9, false});
+    environment.incoming.set({9, false});
     c.outgoing.set({3, true});
-    c.flag.set(true);
+    environment.flag.set(true);
     std::vector<std::byte> key(codec::key_size);
     codec{}.encode(c, key.data());
     ver::carrier const back = codec{}.decode(ver::carrier{}, key.data());

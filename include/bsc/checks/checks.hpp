@@ -7,12 +7,14 @@
 
 #include <bsc/checks/dead_transitions.hpp>
 #include <bsc/checks/determinism.hpp>
+#include <bsc/checks/done_events.hpp>
 #include <bsc/error.hpp>
 #include <bsc/checks/livelock.hpp>
 #include <bsc/checks/reachability.hpp>
 #include <bsc/checks/row_text.hpp>
 #include <bsc/checks/signatures.hpp>
 #include <bsc/checks/structure.hpp>
+#include <bsc/detail/config.hpp>
 #include <bsc/model/chart_model.hpp>
 
 namespace bsc::detail {
@@ -34,10 +36,10 @@ struct trigger_type<transition_row<S, timeout_trigger, G, A, T>> {
 // where the compiler prints strings legibly, the row as written).
 template <class Chart, int Index, class Error>
 using row_error = error::at_row<static_cast<std::size_t>(Index) + 1, Error,
-#if defined(__clang__)
-                                void
-#else
+#if BSC_DETAIL_PRINTS_STRING_ARGUMENTS
                                 error::as_written<row_text<typename chart_model<Chart>::template row_at<Index>>()>
+#else
+                                void
 #endif
                                 >;
 
@@ -192,6 +194,25 @@ constexpr auto check_determinism() {
 }
 
 template <class Chart>
+constexpr auto check_done_events() {
+    using model = chart_model<Chart>;
+    constexpr done_finding found =
+        find_dead_done_row(model::tree, model::rows, completed_states<typename model::tags>(typename model::events{}));
+    if constexpr (found.fault == done_fault::none) {
+        return type_list<>{};
+    } else {
+        using R = typename model::template row_at<found.row>;
+        using S = typename completed_state<typename trigger_type<R>::type>::type;
+        if constexpr (found.fault == done_fault::not_in_chart)
+            return type_list<row_error<Chart, found.row, error::done_of_state_not_in_chart<S>>>{};
+        else if constexpr (found.fault == done_fault::never_raised)
+            return type_list<row_error<Chart, found.row, error::done_never_raised<S>>>{};
+        else
+            return type_list<row_error<Chart, found.row, error::done_source_inactive<typename R::source, S>>>{};
+    }
+}
+
+template <class Chart>
 inline constexpr auto liveness_of = find_dead_transitions(chart_model<Chart>::tree, chart_model<Chart>::rows);
 
 template <class Chart>
@@ -256,7 +277,8 @@ constexpr auto check_chart() {
         return concat_t<decltype(check_orthogonality<Chart>()), decltype(check_local_targets<Chart>()),
                         decltype(check_several_targets<Chart>()), decltype(check_initial_actions<Chart>()),
                         decltype(check_deferrals<Chart>()), decltype(check_event_families<Chart>()),
-                        decltype(check_determinism<Chart>()), decltype(check_dead_transitions<Chart>()),
+                        decltype(check_determinism<Chart>()), decltype(check_done_events<Chart>()),
+                        decltype(check_dead_transitions<Chart>()),
                         decltype(check_reachability<Chart>()), decltype(check_livelock<Chart>()),
                         decltype(check_signatures<Chart>())>{};
 }

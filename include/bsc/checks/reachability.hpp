@@ -34,7 +34,10 @@ constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, 
 }
 
 // Marks the states a transition into `target` enters below `domain`: the path, the default
-// entries of parallel siblings on the path, and the default entry of the target.
+// entries of parallel siblings on the path, and the default entry of the target. A transition
+// with several targets (bsc::targets) is marked target by target: each marks the default
+// entry of the regions the others enter otherwise, which keeps reachability an
+// over-approximation (a state it calls unreachable is, whatever the targets).
 template <std::size_t N>
 constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int domain, int target) {
     for (int a = target; a != domain && a >= 0; a = t.parent[static_cast<std::size_t>(a)]) {
@@ -49,11 +52,23 @@ constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int doma
     mark_default_entry(t, m, target);
 }
 
+// Whether entering state s can restore a child of `of` by shallow history, which enters that
+// child by its default entry: s is a shallow history state, or a composite with a shallow
+// history marker (which it is then the `of` of).
+template <std::size_t N>
+constexpr int restored_by_shallow_history(topology<N> const& t, int s) {
+    auto const i = static_cast<std::size_t>(s);
+    if (t.hist[i] != history::shallow) return -1;
+    if (t.kinds[i] == kind::history) return t.parent[i];
+    return t.kinds[i] == kind::composite ? s : -1;
+}
+
 template <std::size_t N, std::size_t R>
 constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R> const& r,
                                                std::array<bool, R> const& dead) {
     std::array<bool, N> reach{};
     std::array<bool, R> applied{};
+    std::array<bool, N> restored{};  // children a shallow history has re-entered by default
     mark_default_entry(t, reach, 0);
     for (bool changed = true; changed;) {
         changed = false;
@@ -63,7 +78,20 @@ constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R
             if (!reach[static_cast<std::size_t>(r.source[i])])
                 continue;
             applied[i] = changed = true;
-            mark_entry(t, reach, -1, r.target[i]);
+            for (int target : r.targets_of(i))
+                if (target >= 0) mark_entry(t, reach, -1, target);
+        }
+        // A shallow history restores a child that has been active, and enters it by default:
+        // its initial states become active even if they never were (SCXML IRP test 388).
+        for (int s = 1; s < static_cast<int>(N); ++s) {
+            int const of = reach[static_cast<std::size_t>(s)] ? restored_by_shallow_history(t, s) : -1;
+            if (of < 0) continue;
+            for (int c = t.first_child[static_cast<std::size_t>(of)]; c >= 0; c = t.next_sibling[static_cast<std::size_t>(c)]) {
+                auto const ci = static_cast<std::size_t>(c);
+                if (!reach[ci] || restored[ci] || t.kinds[ci] == kind::history) continue;
+                restored[ci] = changed = true;
+                mark_default_entry(t, reach, c);
+            }
         }
     }
     return reach;

@@ -116,6 +116,24 @@ struct action_words<action_seq<As...>> {
 template <class Row>
 struct row_words;
 
+// An event as written: its name; a completion event as `done<S>`, with S's name.
+template <class E>
+struct event_words {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out(name_of<E>);
+    }
+};
+template <class S>
+struct event_words<done<S>> {
+    template <class Out>
+    static constexpr void write(Out& out) {
+        out("done<");
+        out(name_of<S>);
+        out(">");
+    }
+};
+
 template <class S, class Trigger, class G, class A, class T>
 struct row_words<transition_row<S, Trigger, G, A, T>> {
     template <class Out>
@@ -125,7 +143,7 @@ struct row_words<transition_row<S, Trigger, G, A, T>> {
             out(" + after(...)");
         } else if constexpr (!std::is_same_v<Trigger, eventless_trigger>) {
             out(" + ");
-            out(name_of<typename Trigger::event>);
+            event_words<typename Trigger::event>::write(out);
         }
         if constexpr (!std::is_same_v<G, no_guard>) {
             out(" [");

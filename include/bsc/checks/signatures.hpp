@@ -79,6 +79,17 @@ struct event_of_trigger<event_trigger<E>> {
     using type = E;
 };
 
+// What a guard that cannot be called is: a bool value (plain lambdas under `!`, `&&`, `||`),
+// or a callable of another signature.
+template <class G>
+struct guard_error {
+    using type = error::guard_signature_not_supported<G>;
+};
+template <>
+struct guard_error<bool> {
+    using type = error::guard_is_a_bool_value<bool>;
+};
+
 // The errors of one row: at most one, wrapped in error::in_row so that it names the row.
 template <class Ctx, class Raise, class Row>
 constexpr auto signature_errors(Row const*) {
@@ -89,7 +100,7 @@ constexpr auto signature_errors(Row const*) {
         using actions = typename bad_action<std::remove_cv_t<decltype(Row::action)>, Ctx, E, Raise>::type;
         if constexpr (guards::size > 0)
             return type_list<error::in_row<typename Row::source, trigger, typename Row::target,
-                                           error::guard_signature_not_supported<at<0, guards>>>>{};
+                                           typename guard_error<at<0, guards>>::type>>{};
         else if constexpr (actions::size > 0)
             return type_list<error::in_row<typename Row::source, trigger, typename Row::target,
                                            error::action_signature_not_supported<at<0, actions>>>>{};

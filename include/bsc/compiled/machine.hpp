@@ -14,8 +14,8 @@
 
 #include <bsc/chart.hpp>
 #include <bsc/compiled/plan.hpp>
+#include <bsc/detail/config.hpp>
 #include <bsc/detail/meta.hpp>
-#include <bsc/detail/walk_inline.hpp>
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/runtime/driver.hpp>
@@ -97,7 +97,7 @@ private:
     // (Where E is the row's own event, e is passed as it is: most rows of most charts, and no
     // conversion to instantiate.)
     template <int Row, class E>
-    static constexpr bool sees_itself = __is_same(E, detail::row_event_t<typename model::template row_at<Row>>);
+    static constexpr bool sees_itself = BSC_DETAIL_IS_SAME(E, detail::row_event_t<typename model::template row_at<Row>>);
     template <int Row, class E>
     static constexpr decltype(auto) seen_by(E const& e) {
         return detail::event_as<detail::row_event_t<typename model::template row_at<Row>>>(e);
@@ -337,7 +337,7 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, deferring_microstep)
+        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, fire_or_defer)
             if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), seen_by<Row>(e));
             this->deferral_selected();
             return;
@@ -419,7 +419,7 @@ private:
     // are straight-line code.
     template <int Leaf, int Row, class E>
     constexpr void fire_from(E const& e) {
-        if constexpr (!plan::has_parallel) this->mark_running();  // else microstep has marked
+        if constexpr (!plan::has_parallel) this->mark_running();  // else select_and_fire has marked
         constexpr int d = rows.domain[Row];
         if constexpr (d >= 0 && acts_on_exit_up(Leaf, d))
             exit_up<Leaf, d>();
@@ -579,42 +579,42 @@ private:
         }(std::make_index_sequence<n>{});
     }
 
-    // One microstep on a trigger; true if a transition fired. Flattened: the walk of the
-    // relevant states, the guards, exits, actions and entries become one straight-line nest of
-    // switches for the trigger, whatever the compiler's inlining budget for the function that
-    // dispatches (a dispatch of a parallel chart otherwise ended up as calls of the walk's
-    // lambdas, which cost more than the walk).
+    // Selects and fires the transitions Trigger enables, without settling; true if a transition
+    // fired. Flattened: the walk of the relevant states, the guards, exits, actions and entries
+    // become one straight-line nest of switches for the trigger, whatever the compiler's
+    // inlining budget for the function that dispatches (a dispatch of a parallel chart otherwise
+    // ended up as calls of the walk's lambdas, which cost more than the walk).
     template <int Trigger, class E>
-    [[gnu::flatten]] constexpr bool microstep(E const& e) {
-        return microstep_body<Trigger>(e);
+    BSC_DETAIL_FLATTEN constexpr bool fire(E const& e) {
+        return select_and_fire<Trigger>(e);
     }
-    // The microstep of a dispatched event. Where the dispatch has nothing to do after it but
-    // record its outcome (no parallel states, nothing raised, no eventless transition or
-    // deferral to settle, and a policy that records), it is flattened in line: the dispatch
-    // then records the outcome where the transition ends and calls nothing (the call cost a
-    // frame, and a mark of the running machine that the record overwrites). Elsewhere it is
-    // called: a dispatch that records nothing ends in a jump to it, and one that settles, or
-    // a microstep of several regions, grows more in line than the call costs (measured:
-    // docs/benchmarks.md, analysis section 16).
-    static constexpr bool microstep_in_dispatch =
+    // fire() for a dispatched event. Where the dispatch has nothing to do after it but record
+    // its outcome (no parallel states, nothing raised, no eventless transition or deferral to
+    // settle, and a policy that records), it is flattened in line: the dispatch then records
+    // the outcome where the transition ends and calls nothing (the call cost a frame, and a
+    // mark of the running machine that the record overwrites). Elsewhere fire() is called: a
+    // dispatch that records nothing ends in a jump to it, and one that settles, or a firing in
+    // several regions, grows more in line than the call costs (docs/performance.md,
+    // rule "Dispatched event fired in line where nothing follows").
+    static constexpr bool dispatch_fires_in_line =
         !plan::has_parallel && (Policy::refuse_reentry || Policy::keep_last_outcome) &&
         std::is_same_v<detail::queue_for<Chart, Policy>, detail::no_event_queue> &&
         !plan::has_trigger(detail::eventless_id) && !base::defers;
     template <int Trigger, class E>
-    BSC_DETAIL_WALK_INLINE constexpr bool dispatch_microstep(E const& e) {
-        if constexpr (microstep_in_dispatch)
-            return microstep_in_line<Trigger>(e);
+    BSC_DETAIL_WALK_INLINE constexpr bool fire_dispatched(E const& e) {
+        if constexpr (dispatch_fires_in_line)
+            return fire_in_line<Trigger>(e);
         else
-            return microstep<Trigger>(e);
+            return fire<Trigger>(e);
     }
     // (Flattened before it is put in line: GCC does not flatten what an always-inline function
-    // brings into a flattened one, hence microstep's own body, not this.)
+    // brings into a flattened one, hence select_and_fire itself, not fire().)
     template <int Trigger, class E>
-    [[gnu::flatten, gnu::always_inline]] constexpr bool microstep_in_line(E const& e) {
-        return microstep_body<Trigger>(e);
+    BSC_DETAIL_FLATTEN BSC_DETAIL_ALWAYS_INLINE constexpr bool fire_in_line(E const& e) {
+        return select_and_fire<Trigger>(e);
     }
     template <int Trigger, class E>
-    constexpr bool microstep_body(E const& e) {
+    constexpr bool select_and_fire(E const& e) {
         if constexpr (!plan::has_trigger(Trigger)) {
             return false;
         } else {
@@ -650,6 +650,44 @@ private:
             return true;
     }
 
+    // Condition-driven row Row, whose condition holds, fires; but if it is a timeout and a
+    // timeout row of its source declared after it is due too, came due first (plan.hpp,
+    // later_timeouts; detail::came_due_first) and its guard holds, that one fires instead: of a
+    // state's timeouts due at once, the first to come due. A state with one timeout row, and
+    // every eventless row, goes straight to fire_condition.
+    template <int Row>
+    constexpr void fire_first_due() {
+        constexpr auto const& later = plan::template later_timeouts<Row>;
+        if constexpr (later.size() == 0) {
+            fire_condition<Row>();
+        } else {
+            duration const now = this->cycle_time();
+            std::size_t first = 0;  // 0: Row itself, k: later[k - 1]
+            duration since = this->armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])];
+            duration delay = this->template row<Row>().trigger_value.delay;
+            [&]<std::size_t... K>(std::index_sequence<K...>) {
+                (
+                    [&] {
+                        constexpr int u = later[K];
+                        duration const u_since = this->armed_[static_cast<std::size_t>(plan::row_timeout_slot[u])];
+                        duration const u_delay = this->template row<u>().trigger_value.delay;
+                        if (!detail::has_elapsed(u_since, now, u_delay) || !detail::came_due_first(u_since, u_delay, since, delay))
+                            return;
+                        if constexpr (rows.guarded[u])
+                            if (!guard_holds<u>(eventless{})) return;
+                        first = K + 1;
+                        since = u_since;
+                        delay = u_delay;
+                    }(),
+                    ...);
+                if (first == 0)
+                    fire_condition<Row>();
+                else
+                    (void)((first == K + 1 ? (fire_condition<later[K]>(), true) : false) || ...);
+            }(std::make_index_sequence<later.size()>{});
+        }
+    }
+
     template <int Row>
     constexpr void fire_condition() {
         constexpr int d = rows.domain[Row];
@@ -657,8 +695,9 @@ private:
             exit_below<d>();
         run_action<Row>(eventless{});
         run_entries<Row>();
-        // An internal timeout, which leaves its state active, counts again from now.
-        if constexpr (d < 0 && plan::row_timeout_slot[Row] >= 0)
+        // A timeout that leaves its state active (internal, or local: its domain is its state)
+        // counts again from now.
+        if constexpr ((d < 0 || d == rows.source[Row]) && plan::row_timeout_slot[Row] >= 0)
             armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = this->cycle_time();
     }
 
@@ -666,7 +705,7 @@ private:
     constexpr bool try_component_candidates() {
         constexpr auto const& candidates = plan::template component_candidates<Frontier, Component>;
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return ((condition_holds<candidates[I]>() && (fire_condition<candidates[I]>(), true)) || ...);
+            return ((condition_holds<candidates[I]>() && (fire_first_due<candidates[I]>(), true)) || ...);
         }(std::make_index_sequence<candidates.size()>{});
     }
 

@@ -181,6 +181,29 @@ struct plan : chart_layout<Model> {
         return out;
     }();
 
+    // The timeout rows of the source of timeout row `row` declared after it, in declaration
+    // order: those it competes with by due time when its condition holds (the earlier ones did
+    // not hold, or it would not be tried). Empty for a state with one timeout row.
+    static constexpr int later_timeout_count(int row) {
+        int const source = rows.source[static_cast<std::size_t>(row)];
+        int n = 0;
+        for (int i = from_source_begin[static_cast<std::size_t>(source)]; i < from_source_begin[static_cast<std::size_t>(source) + 1]; ++i)
+            n += from_source[static_cast<std::size_t>(i)] > row && layout::is_timeout_row(from_source[static_cast<std::size_t>(i)]);
+        return n;
+    }
+    template <int Row>
+    static constexpr auto later_timeouts = [] {
+        std::array<int, static_cast<std::size_t>(layout::is_timeout_row(Row) ? later_timeout_count(Row) : 0)> out{};
+        std::size_t n = 0;
+        if constexpr (out.size() > 0) {
+            constexpr int source = rows.source[static_cast<std::size_t>(Row)];
+            for (int i = from_source_begin[static_cast<std::size_t>(source)]; i < from_source_begin[static_cast<std::size_t>(source) + 1]; ++i)
+                if (from_source[static_cast<std::size_t>(i)] > Row && layout::is_timeout_row(from_source[static_cast<std::size_t>(i)]))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
+        }
+        return out;
+    }();
+
     template <int Trigger>
     static constexpr int position_of(int row) {
         for (std::size_t i = 0; i < transitions<Trigger>.size(); ++i)

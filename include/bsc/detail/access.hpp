@@ -1,8 +1,9 @@
 #pragma once
 // The one door to what users may not touch: a channel's latch and commit, a timer's update
-// and its internal state, a machine's configuration, clock, timeout slots and queue. Only the
-// machines, the explorer, the retentive state (bsc/retain.hpp), the VCD recorder and the
-// project's own tests go through it; every class it opens names it as its only friend.
+// and its internal state, a machine's writable context, configuration, clock, timeout slots and
+// queue. Only the machines, the explorer, the retentive state (bsc/retain.hpp), the VCD
+// recorder and the project's own tests go through it; every class it opens names it as its
+// only friend.
 
 #include <cstddef>
 #include <cstdint>
@@ -22,6 +23,14 @@ struct access {
     template <class Channel>
     static constexpr void commit(Channel& c) {
         c.commit();
+    }
+    // Both values of a channel at once, as a restored or decoded state has them: what it holds
+    // now and what the next cycle boundary takes. (Not through set: an input's set is the
+    // environment's, an output's the chart's; a restore is neither.)
+    template <class Channel, class T>
+    static constexpr void set_channel(Channel& c, T const& current, T const& pending) {
+        c.now_ = current;
+        c.next_ = pending;
     }
     template <class Timer>
     static constexpr void update(Timer& t, duration now) {
@@ -49,6 +58,16 @@ struct access {
 
     // ---- machines: read and written by the explorer, read by the tests ---------------------
     // (through the shared driver, which holds the data and names this class its friend)
+
+    // The machine's context, writable: for what restores or decodes a machine's whole state
+    // (retain, the explorer). The public context() is const: the environment's view.
+    template <class M>
+    static constexpr auto& context(M& m) {
+        if constexpr (requires { typename std::remove_const_t<M>::driver_type; })
+            return driver_of(m).context_.value;
+        else
+            return m.context_;  // a machine of a rejected chart (runtime/rejected.hpp)
+    }
     template <class M>
     static constexpr auto& configuration(M& m) {
         return driver_of(m).config_;

@@ -2,13 +2,9 @@
 // std::chrono's durations, time points, clocks and literals, without the rest of <chrono>.
 // Since C++20, libstdc++'s <chrono> also brings calendars, time zones and formatting (with
 // <string> and <sstream>): 0.17 s of CPU in every translation unit that includes bsc, against
-// 0.03 s for the part bsc uses, which libstdc++ keeps in <bits/chrono.h>. Other standard
-// libraries get <chrono> itself.
+// 0.03 s for the part bsc uses, which libstdc++ keeps in a header of its own, named by
+// BSC_DETAIL_CHRONO_HEADER (detail/config.hpp). Other standard libraries get <chrono> itself.
 
-#include <version>  // defines __GLIBCXX__ where the library is libstdc++
+#include <bsc/detail/config.hpp>
 
-#if defined(__GLIBCXX__) && __has_include(<bits/chrono.h>)
-#include <bits/chrono.h>
-#else
-#include <chrono>
-#endif
+#include BSC_DETAIL_CHRONO_HEADER

@@ -5,14 +5,14 @@
 
 #include <cstddef>
 
+#include <bsc/detail/config.hpp>
+
 namespace bsc::detail {
 
 inline constexpr std::size_t max_fields = 128;
 
 template <std::size_t N, class T, class F>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
-#endif
+BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
 constexpr decltype(auto) apply_to_n_fields(T& t, F&& f) {
     if constexpr (N == 0) {
         (void)t;

@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <utility>
 
+#include <bsc/detail/config.hpp>
 #include <bsc/detail/field_bindings.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/error.hpp>
@@ -109,11 +110,10 @@ inline constexpr bool has_reference_field =
 // f(fields...) for the fields of an aggregate, each an lvalue; f() for a type that is not one
 // (after the error that says so). Clang 14 leaves the visit of a context's timers out of line
 // unless told, with a call and its spills in every cycle; GCC 12 inlines it where that pays
-// (bench/manufacturing_cell_bench.cpp: forced, its cycle took more instructions, not fewer).
+// (bench/manufacturing_cell_bench.cpp: forced, its cycle took more instructions, not fewer;
+// docs/performance.md, rule "Fields visited without a tuple").
 template <class T, class F>
-#if defined(__clang__)
-[[gnu::always_inline]]
-#endif
+BSC_DETAIL_VISIT_INLINE
 constexpr decltype(auto) apply_to_fields(T& t, F&& f) {
     using type = std::remove_const_t<T>;
     constexpr std::size_t n = field_count<type>();
@@ -137,9 +137,7 @@ constexpr auto tie_fields(T& t) {
 
 // Calls f(field) for each field of an aggregate, in declaration order.
 template <class T, class F>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as apply_to_fields
-#endif
+BSC_DETAIL_VISIT_INLINE  // as apply_to_fields
 constexpr void for_each_field(T& t, F&& f) {
     detail::apply_to_fields(t, [&](auto&... field) { (f(field), ...); });
 }

@@ -1,10 +1,11 @@
 #pragma once
 // The names of an aggregate's members as its definition spells them, at compile time, without
 // macros: the address of a member of an object that is declared but never defined is a constant
-// that may be a template argument, and both supported compilers spell that argument in
-// __PRETTY_FUNCTION__ ending with the member's name (GCC 12: "{(& object<T>.T::speed)}",
-// Clang 14: "{&object.speed}"). Used by the opt-in parts that show or store a context by name
-// (the VCD recorder, the retentive state's layout fingerprint); nothing else pays for it.
+// that may be a template argument, and both supported compilers spell that argument in the
+// function's signature (BSC_DETAIL_FUNCTION_SIGNATURE) ending with the member's name (GCC 12:
+// "{(& object<T>.T::speed)}", Clang 14: "{&object.speed}"). Used by the opt-in parts that show
+// or store a context by name (the VCD recorder, the retentive state's layout fingerprint);
+// nothing else pays for it.
 
 #include <array>
 #include <cstddef>
@@ -12,6 +13,7 @@
 #include <tuple>
 #include <utility>
 
+#include <bsc/detail/config.hpp>
 #include <bsc/detail/fields.hpp>
 
 namespace bsc::detail {
@@ -23,11 +25,7 @@ struct member_address {
     T const* address;
 };
 
-#if defined(__clang__)
-#pragma clang diagnostic push
-#pragma clang diagnostic ignored "-Wundefined-var-template"
-#pragma clang diagnostic ignored "-Wundefined-internal"
-#endif
+BSC_DETAIL_DECLARED_ONLY_BEGIN
 // Never defined: only its members' addresses are taken, in constant expressions. T is wrapped so
 // that a T without linkage (in an anonymous namespace, or local to a function) may be named: the
 // wrapper's linkage is the variable's, and Clang refuses an undefined variable of a type without.
@@ -40,7 +38,7 @@ extern declared_object<T> const declared_only;
 
 template <auto Address>
 constexpr char const* spelled_address() {
-    return __PRETTY_FUNCTION__;
+    return BSC_DETAIL_FUNCTION_SIGNATURE;
 }
 
 // Identifiers may hold letters beyond ASCII, spelled in UTF-8: every byte of those is >= 0x80.
@@ -64,9 +62,7 @@ constexpr std::string_view member_name_of() {
     using member_type = std::remove_cvref_t<decltype(member)>;
     return last_identifier(spelled_address<member_address<member_type>{&member}>());
 }
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
+BSC_DETAIL_DECLARED_ONLY_END
 
 /// The names of T's members, in declaration order. Requirements: T is an aggregate that
 /// detail::tie_fields supports.
@@ -78,11 +74,7 @@ inline constexpr auto member_names = []<std::size_t... I>(std::index_sequence<I.
 template <class Class, class Member>
 Class class_of_member(Member Class::*);
 
-#if defined(__clang__)
-#pragma clang diagnostic push
-#pragma clang diagnostic ignored "-Wundefined-var-template"
-#pragma clang diagnostic ignored "-Wundefined-internal"
-#endif
+BSC_DETAIL_DECLARED_ONLY_BEGIN
 /// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
 /// `&axis::speed`. Found by comparing addresses: GCC 12 does not accept the address that `.*`
 /// yields as a template argument, so the member's index among the aggregate's is looked up.
@@ -100,8 +92,6 @@ constexpr std::string_view member_name() {
     static_assert(index < member_names<Class>.size(), "the pointer designates no member of the aggregate");
     return member_names<Class>[index];
 }
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
+BSC_DETAIL_DECLARED_ONLY_END
 
 }  // namespace bsc::detail

@@ -25,6 +25,7 @@
 #include <bsc/data/channel.hpp>
 #include <bsc/data/timer.hpp>
 #include <bsc/detail/chrono.hpp>
+#include <bsc/detail/config.hpp>
 #include <bsc/detail/fields.hpp>
 #include <bsc/detail/machine_base.hpp>
 #include <bsc/detail/member_names.hpp>
@@ -208,9 +209,7 @@ constexpr bool is_transient = bsc::transient<T>;
 
 // f(members...) for a record's members, each an lvalue (const for a const record).
 template <class T, class F>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
-#endif
+BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
 constexpr decltype(auto) apply_members(T& t, F&& f) {
     using type = std::remove_const_t<T>;
     if constexpr (described_by_fields<type>)
@@ -384,9 +383,7 @@ constexpr auto const& names_of() {
 }
 
 template <class V, class T, class Name>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
-#endif
+BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
 constexpr void walk_into(T& value, V& v, Name const& name) {
     using U = std::remove_cv_t<T>;
     using visitor = std::remove_const_t<V>;
@@ -418,9 +415,7 @@ constexpr void walk_into(T& value, V& v, Name const& name) {
 /// Walks `value` with visitor v, depth first, in declaration order: v.leaf(member, name) for
 /// each leaf it visits. Every member bsc cannot reach is a compile error.
 template <class V, class T, class Name = no_name>
-#if defined(__clang__)
-[[gnu::always_inline]]  // as detail::apply_to_fields (detail/fields.hpp)
-#endif
+BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
 constexpr void walk(T& value, V& v, Name const& name = {}) {
     static_assert(reachable<T> || true);  // instantiates the check (its errors are the report)
     walk_into(value, v, name);

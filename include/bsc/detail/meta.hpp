@@ -7,6 +7,8 @@
 #include <type_traits>
 #include <utility>
 
+#include <bsc/detail/config.hpp>
+
 namespace bsc::detail {
 
 template <class...>
@@ -86,7 +88,7 @@ template <class T, class List>
 struct scan_for;
 template <class T, class... Ts>
 struct scan_for<T, type_list<Ts...>> {
-    enum : int { value = first_true({__is_same(T, Ts)...}) };
+    enum : int { value = first_true({BSC_DETAIL_IS_SAME(T, Ts)...}) };
 };
 template <class T, class List, class = void>
 struct position_in : scan_for<T, List> {};  // absent, or present twice (the base is ambiguous)

@@ -3,11 +3,13 @@
 
 #include <string_view>
 
+#include <bsc/detail/config.hpp>
+
 namespace bsc::detail {
 
 template <class T>
 constexpr std::string_view signature() {
-    return __PRETTY_FUNCTION__;
+    return BSC_DETAIL_FUNCTION_SIGNATURE;
 }
 
 // GCC: "... [with T = ns::Name; std::string_view = ...]", Clang: "... [T = ns::Name]".

@@ -3,6 +3,8 @@
 // machine's pending events (runtime/delayed_events.hpp) through the raise argument that every
 // action receives; a chart that uses them gets a queue with slots for them (runtime/queue_for.hpp).
 
+#include <cstdlib>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 
@@ -33,6 +35,20 @@ struct cancel_delayed_action : action_base {
     }
 };
 
+// Deliberately not constexpr (as bsc_after_negative_delay in dsl/row.hpp): in a constexpr chart,
+// reaching it is the compile error, and its name says what is wrong; a chart built at run time
+// throws (or aborts without exceptions). 0 is "no id": bsc::raise_after without an id sends
+// under it, and nothing can be cancelled by it.
+[[noreturn]] inline void bsc_cancel_delayed_id_zero_names_no_delayed_event() {
+#if defined(__cpp_exceptions)
+    throw std::invalid_argument(
+        "bsc::cancel_delayed: id 0 names no delayed event (it is the id of none); send with "
+        "bsc::raise_after(delay, e, id) and cancel with the same nonzero id");
+#else
+    std::abort();
+#endif
+}
+
 template <class A>
 inline constexpr bool is_delayed_raise = false;
 template <class E>
@@ -59,15 +75,27 @@ namespace bsc {
 /// `delay` processes it, after the components' turns, as a raised event. It is not tied to the
 /// state that sent it; `bsc::cancel_delayed(id)` cancels it while it is pending (an id of 0 is
 /// none). The machine keeps `Policy::delayed_capacity` pending events; one more is dropped and
-/// the run reports `outcome::queue_overflow`.
-/// Requirements: `e` is an event of the chart (or of a family of one); 0 <= delay.
+/// the run reports `outcome::queue_overflow`. An event whose due time would lie past
+/// bsc::duration::max() never comes due, and is not kept (runtime/delayed_events.hpp).
+/// Requirements: `e` is an event of the chart (or of a family of one); 0 <= delay <=
+/// bsc::duration::max() (as for bsc::after: otherwise a constexpr chart does not compile, and
+/// one built at run time throws std::invalid_argument / std::out_of_range).
 template <class Rep, class Period, class E>
 constexpr auto raise_after(std::chrono::duration<Rep, Period> delay, E e, int id = 0) {
     if (delay < std::chrono::duration<Rep, Period>::zero()) detail::bsc_after_negative_delay();
+    if (std::chrono::duration<long double, std::nano>(delay) >
+        std::chrono::duration<long double, std::nano>(duration::max()))
+        detail::bsc_after_delay_beyond_bsc_duration();
     return detail::delayed_raise<E>{{}, std::chrono::duration_cast<duration>(delay), std::move(e), id};
 }
 
 /// An action that cancels the delayed events still pending under `id` (bsc::raise_after).
-constexpr auto cancel_delayed(int id) { return detail::cancel_delayed_action{{}, id}; }
+/// Requirements: id != 0 (0 is no id; a constexpr chart with cancel_delayed(0) does not compile,
+/// the error naming bsc_cancel_delayed_id_zero_names_no_delayed_event, and one built at run time
+/// throws std::invalid_argument).
+constexpr auto cancel_delayed(int id) {
+    if (id == 0) detail::bsc_cancel_delayed_id_zero_names_no_delayed_event();
+    return detail::cancel_delayed_action{{}, id};
+}
 
 }  // namespace bsc

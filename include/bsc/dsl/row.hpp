@@ -38,7 +38,8 @@ struct event_trigger {
     throw std::invalid_argument(
         "bsc::make_chart: the timeout row at position " + std::to_string(row) +
         " can never fire: the unguarded timeout row at position " + std::to_string(fires_first) +
-        " leaves the same state with a shorter (or equal, and earlier) delay, always first");
+        " leaves its state first, every time, with a shorter (or equal) delay, from the same state or "
+        "from a state below it that is active whenever it is");
 #else
     (void)row;
     (void)fires_first;
@@ -359,7 +360,9 @@ namespace detail {
 /// A state-scoped timeout trigger: `state<S> + after(3s) = state<T>` fires in the first cycle
 /// (step) at which S has been active for at least 3 s. Armed when S is entered. Without a
 /// target (`state<S> + after(500ms) / a`, an internal timeout) it fires every 500 ms while S is
-/// active: each time it fires, its delay counts again from that cycle.
+/// active: each time it fires, its delay counts again from that cycle. Of several timeouts of S
+/// due in one cycle whose guards hold, the one that came due first fires (then the one armed
+/// first, then the first declared), so that none starves another.
 /// Requirements: 0 <= delay <= bsc::duration::max(); a chart with another delay does not
 /// compile (constexpr chart) or throws std::invalid_argument / std::out_of_range.
 template <class Rep, class Period>

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 
+#include <bsc/detail/config.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/dsl/row.hpp>
 
@@ -22,7 +23,7 @@ namespace bsc::detail {
 // chart of K events asks K * K times, and no template is instantiated per pair.)
 template <class E, class... Us>
 constexpr std::array<bool, sizeof...(Us)> families_of() {
-    return {(!__is_same(Us, E) && (__is_same(Us, any_event) || __is_base_of(Us, E)))...};
+    return {(!BSC_DETAIL_IS_SAME(Us, E) && (BSC_DETAIL_IS_SAME(Us, any_event) || BSC_DETAIL_IS_BASE_OF(Us, E)))...};
 }
 
 // Of the families `of` (a row of the matrix below), the nearest to the event: the one with
@@ -47,16 +48,17 @@ template <class... Us>
 struct event_families<type_list<Us...>> {
     static constexpr std::size_t K = sizeof...(Us);
     // Whether the chart names bsc::any_event, every other event's family.
-    static constexpr bool names_any_event = (false || ... || __is_same(Us, any_event));
+    static constexpr bool names_any_event = (false || ... || BSC_DETAIL_IS_SAME(Us, any_event));
     // How many chart events E derives from, E itself included if it is one (a class is its own
     // base). One built-in per pair and nothing else: a chart of K events asks K * K times.
     template <class E>
-    static constexpr int chart_bases = (0 + ... + static_cast<int>(__is_base_of(Us, E)));
+    static constexpr int chart_bases = (0 + ... + static_cast<int>(BSC_DETAIL_IS_BASE_OF(Us, E)));
     // Whether event E, which the chart does not name (trigger_of asks only then), has a family
     // among the chart's events; any: whether a chart event has.
     template <class E>
-    static constexpr bool has_family = (names_any_event && !__is_same(E, any_event)) || chart_bases<E> > 0;
-    static constexpr bool any = (names_any_event && K > 1) || (false || ... || (chart_bases<Us> > static_cast<int>(__is_class(Us))));
+    static constexpr bool has_family = (names_any_event && !BSC_DETAIL_IS_SAME(E, any_event)) || chart_bases<E> > 0;
+    static constexpr bool any = (names_any_event && K > 1) ||
+                                (false || ... || (chart_bases<Us> > static_cast<int>(BSC_DETAIL_IS_CLASS(Us))));
     // family[t][u]: chart event u is a family of chart event t. (Built only where some event
     // has a family: a chart of K events would otherwise hold K * K flags for nothing.)
     static constexpr auto family = [] {
@@ -111,9 +113,9 @@ struct event_families<type_list<Us...>> {
 // own event type (a row on a family sees the family), or bsc::any_event.
 template <class Seen, class E>
 constexpr decltype(auto) event_as(E const& e) {
-    if constexpr (__is_same(Seen, E))
+    if constexpr (BSC_DETAIL_IS_SAME(Seen, E))
         return (e);
-    else if constexpr (__is_same(Seen, any_event))
+    else if constexpr (BSC_DETAIL_IS_SAME(Seen, any_event))
         return any_event{};
     else
         return static_cast<Seen const&>(e);

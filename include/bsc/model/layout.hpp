@@ -117,6 +117,13 @@ struct chart_layout {
                 state[static_cast<std::size_t>(timeout_slot[static_cast<std::size_t>(s)] + k)] = s;
         return state;
     }();
+    // Whether some state has two timeout rows or more: only their timeouts compete by due time
+    // (the one that came due first fires; docs/semantics.md, "Timers").
+    static constexpr bool has_competing_timeouts = [] {
+        for (int count : timeout_slot_count)
+            if (count > 1) return true;
+        return false;
+    }();
 
     // The rows of each state, in declaration order, all kinds: those of state s are
     // from_source[from_source_begin[s]] to from_source[from_source_begin[s + 1]] (exclusive).

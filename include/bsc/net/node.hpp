@@ -102,10 +102,12 @@ struct deployment {
     static_assert(sizeof(System) == 0, "bsc::net::node<System>: System must be a bsc::system<Actors, bsc::order<...>, links...>");
 };
 
-template <class Actors, auto... Steps, class... Links>
-struct deployment<system<Actors, order<Steps...>, Links...>> {
+template <class Actors, auto... Steps, class... Entries>
+struct deployment<system<Actors, order<Steps...>, Entries...>> {
+    // The links only: a system's bsc::from_outside entries are the environment's business.
+    using links = typename system<Actors, order<Steps...>, Entries...>::links_type;
     static constexpr std::size_t actor_count = sizeof...(Steps);
-    static constexpr std::size_t link_count = sizeof...(Links);
+    static constexpr std::size_t link_count = std::tuple_size_v<links>;
     static constexpr std::array<std::string_view, actor_count> names{bsc::detail::member_name<Steps>()...};
 
     template <auto Actor>
@@ -119,15 +121,26 @@ struct deployment<system<Actors, order<Steps...>, Links...>> {
     template <std::size_t I>
     using machine_at = std::remove_cvref_t<decltype(std::declval<Actors&>().*nth_member<I, Steps...>::value)>;
 
+    // What link L carries over the network: the source's value, as its publisher published it
+    // (the consumer's side applies the link's bsc::convert).
     template <class L>
     using value_of = bsc::detail::channel_value<std::remove_cvref_t<
         decltype(((std::declval<Actors&>().*L::from_actor).context()).*L::from_channel)>>;
+    // What the consumer of link L reads: its input's value type.
+    template <class L>
+    using target_value_of = bsc::detail::channel_value<std::remove_cvref_t<
+        decltype(((std::declval<Actors&>().*L::to_actor).context()).*L::to_channel)>>;
 
-    static constexpr std::array<std::size_t, link_count> from{place<Links::from_actor>()...};
-    static constexpr std::array<std::size_t, link_count> to{place<Links::to_actor>()...};
-    static constexpr std::array<bool, link_count> lossless{std::is_same_v<typename Links::when_stale, bsc::lossless>...};
-    static_assert(((place<Links::from_actor>() < actor_count && place<Links::to_actor>() < actor_count) && ...),
-                  "bsc::net::node: every actor a link names must be in the system's order");
+    // (Every actor a link names is in the order: bsc::system checks it.)
+    static constexpr std::array<std::size_t, link_count> from = []<class... L>(std::tuple<L...>*) {
+        return std::array<std::size_t, link_count>{place<L::from_actor>()...};
+    }(static_cast<links*>(nullptr));
+    static constexpr std::array<std::size_t, link_count> to = []<class... L>(std::tuple<L...>*) {
+        return std::array<std::size_t, link_count>{place<L::to_actor>()...};
+    }(static_cast<links*>(nullptr));
+    static constexpr std::array<bool, link_count> lossless = []<class... L>(std::tuple<L...>*) {
+        return std::array<bool, link_count>{std::is_same_v<typename L::when_stale, bsc::lossless>...};
+    }(static_cast<links*>(nullptr));
 };
 
 }  // namespace detail
@@ -646,28 +659,32 @@ private:
         if (on_step) on_step(a, n);
     }
 
-    // Writes link I's value into its consumer's input; true if the value is a stale one.
+    // Writes link I's value into its consumer's input (converted by the link's bsc::convert, as
+    // bsc::system does); true if the value is a stale one. The input is set through the
+    // machine's const context, as the environment sets it.
     template <std::size_t I>
     bool feed(std::int64_t n, time_point now) {
         using link = std::tuple_element_t<I, links>;
         constexpr auto p = plan::from[I];
         constexpr auto c = plan::to[I];
-        auto& target = (system_.actors.*link::to_actor).context().*link::to_channel;
+        auto const& target = (system_.actors.*link::to_actor).context().*link::to_channel;
         if (local_[p]) {
-            target.set(((system_.actors.*link::from_actor).context().*link::from_channel).get());
+            target.set(link::converted(((system_.actors.*link::from_actor).context().*link::from_channel).get()));
             return false;
         }
         auto const& s = std::get<I>(slots_);
         auto const needed = p < c ? n : n - 1;
         if (s.step >= needed && same_step_from(p, c, I)) {
-            target.set(s.value);
+            target.set(link::converted(s.value));
             return false;
         }
         (void)now;
         if constexpr (requires { link::when_stale::value; }) {
-            target.set(typename plan::template value_of<link>(link::when_stale::value));
+            // A fail-safe value is what the consumer reads: of the target's type, not converted.
+            typename plan::template target_value_of<link> const safe = link::when_stale::value;
+            target.set(safe);
         } else if (s.step != unknown) {
-            target.set(s.value);
+            target.set(link::converted(s.value));
         }
         return true;
     }

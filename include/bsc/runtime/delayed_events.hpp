@@ -5,6 +5,14 @@
 // events plus a fixed number of slots, each an event with the time it comes due. step(now)
 // moves the events due into the ring, earliest first; a pending event does not belong to the
 // state that sent it, so leaving that state does not cancel it.
+//
+// An event whose due time would lie past duration::max() (a delay near duration::max() from a
+// clock already far from zero) never comes due: no step(now) can reach that time. It is not
+// kept: schedule() accepts it (no overflow) and it takes no slot, so it is neither saved,
+// restored nor explored, and there is nothing for its id to cancel. The same holds where the
+// due time moves: when the clock starts (start_clock: what was sent before the first cycle
+// counts from it) and when a saved machine resumes at a later time (bsc::resume_at,
+// detail/state_bytes.hpp).
 
 #include <array>
 #include <cstddef>
@@ -29,7 +37,8 @@ public:
     using typename base::value_type;
 
     /// Schedules e to come due `delay` after the machine's clock (the time of its last cycle).
-    /// False, and an overflow reported at the end of the run, if every slot is taken.
+    /// False, and an overflow reported at the end of the run, if every slot is taken. An event
+    /// due past duration::max() never comes due: it is not kept, and true is returned.
     template <class E>
     constexpr bool schedule(duration delay, E const& e, int id) noexcept(std::is_nothrow_copy_constructible_v<E>) {
         constexpr int as = queued_index<E>(type_list<Es...>{});
@@ -38,10 +47,11 @@ public:
             return false;
         } else {
             using F = at<static_cast<std::size_t>(as), type_list<Es...>>;
+            if (shifted_past_max(clock_, delay)) return true;  // never due
             for (auto& s : slots_)
                 if (!s.pending) {
                     s.pending = true;
-                    s.due = shifted(clock_, delay);
+                    s.due = clock_ + delay;
                     s.order = sent_++;
                     s.id = id;
                     s.event = value_type{std::in_place_type<F>, event_as<F>(e)};
@@ -52,7 +62,8 @@ public:
         }
     }
 
-    /// Cancels every pending event scheduled under `id` (0: none).
+    /// Cancels every pending event scheduled under `id` (0, no id: none; bsc::cancel_delayed
+    /// refuses it).
     constexpr void cancel(int id) noexcept {
         if (id == 0) return;
         for (auto& s : slots_)
@@ -62,10 +73,16 @@ public:
     // ---- for the machine -----------------------------------------------------------------------
     constexpr void set_clock(duration now) { clock_ = now; }
     // The machine's clock started at `now` (its first cycle): what was scheduled before counts
-    // from there, as the timeouts armed before it do.
+    // from there, as the timeouts armed before it do (until then a due time is the delay, the
+    // clock being zero). An event then due past duration::max() never comes due: dropped.
     constexpr void start_clock(duration now) {
         for (auto& s : slots_)
-            if (s.pending) s.due = shifted(s.due, now);
+            if (s.pending) {
+                if (shifted_past_max(s.due, now))
+                    s.pending = false;
+                else
+                    s.due = shifted(s.due, now);
+            }
         clock_ = now;
     }
     // Moves the events due at `now` into the queue of raised events, earliest first, and among

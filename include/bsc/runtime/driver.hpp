@@ -9,7 +9,10 @@
 // A back end derives from it (CRTP) and supplies only what differs:
 //   void enter_initial();                        enters the root and its default completion
 //   template <int Trigger, class E>
-//   bool microstep(E const& e);                  selects and fires the transitions on e
+//   bool fire(E const& e);                       selects and fires the transitions on e,
+//                                                without settling
+//   template <int Trigger, class E>
+//   bool fire_dispatched(E const& e);            fire() for the event a dispatch takes
 //   template <int Component> bool component_step();  one component's turn in a cycle
 //   template <int S> bool is_active() const;     whether state S is active
 
@@ -25,6 +28,7 @@
 #include <bsc/configuration.hpp>
 #include <bsc/detail/access.hpp>
 #include <bsc/detail/assume.hpp>
+#include <bsc/detail/config.hpp>
 #include <bsc/detail/machine_base.hpp>
 #include <bsc/detail/row_storage.hpp>
 #include <bsc/detail/type_name.hpp>
@@ -212,9 +216,9 @@ private:
     // The cycle of step(now), which has marked the machine running; returns its outcome.
     // Out of line, so that step stays small enough to be inlined where it is called: GCC 12,
     // inlining the cycle into step instead, returns the report from a call, assembled in
-    // memory by narrow stores and read back by wider loads, which stall (docs/benchmarks.md,
-    // analysis section 15).
-    [[gnu::noinline]] constexpr outcome cycle(duration now, step_report& report) {
+    // memory by narrow stores and read back by wider loads, which stall (docs/performance.md,
+    // rule "The cycle out of line").
+    BSC_DETAIL_NOINLINE constexpr outcome cycle(duration now, step_report& report) {
         if constexpr (keeps_clock) {
             if (!clock_started_) {
                 // The clock starts at the first cycle, wherever the caller's time starts; what was
@@ -254,11 +258,16 @@ public:
     }
 
     /// Processes e to completion: the transitions it enables, then eventless transitions and
-    /// raised events until none remain. Fails to compile if no transition handles E.
+    /// raised events until none remain. Fails to compile if no transition handles E, or if E
+    /// is an event the environment cannot send (bsc::done<S>, bsc::action_failed,
+    /// bsc::any_event: bsc::error::event_not_dispatchable).
     template <class E>
     constexpr outcome dispatch(E const& e) {
         constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (trigger == -2) {
+        if constexpr (reserved_event<E>) {
+            detail::report<error::event_not_dispatchable<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger == -2) {
             detail::report<error::event_in_two_families<E>>();
             return outcome::ignored;
         } else if constexpr (trigger < 0) {
@@ -273,7 +282,10 @@ public:
     template <class E>
     constexpr outcome dispatch(E const& e, allow_unhandled_t) {
         constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (trigger == -2) {
+        if constexpr (reserved_event<E>) {
+            detail::report<error::event_not_dispatchable<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger == -2) {
             detail::report<error::event_in_two_families<E>>();
             return outcome::ignored;
         } else if constexpr (trigger < 0) {
@@ -288,8 +300,9 @@ public:
     /// Dispatches the event of the chart called `name` (bsc::event_set: its static member
     /// `name`, or its type's name), built by `decode(std::type_identity<E>{})` when the decoder
     /// accepts that call and default-constructed otherwise. outcome::unknown_event, and nothing
-    /// processed, if no event of the chart is so named; outcome::reentrant, as dispatch, from
-    /// inside one of the machine's own guards or actions.
+    /// processed, if no event of the chart the environment may send is so named (so for
+    /// "done.state.S" and "*": bsc::event_set leaves them out); outcome::reentrant, as dispatch,
+    /// from inside one of the machine's own guards or actions.
     template <class Decode = no_decoder>
     constexpr outcome dispatch_by_name(std::string_view name, Decode&& decode = {}) {
         // An unknown name is a number past the last event: dispatch_by_number refuses both alike.
@@ -321,7 +334,7 @@ public:
     constexpr bool is() const {
         constexpr int s = model::template index_of_state<S>;
         if constexpr (s < 0) {
-            detail::report<error::state_not_in_chart<S>>();
+            detail::report<error::queried_state_not_in_chart<S>>();
             return false;
         } else {
             return backend().template is_active<s>();
@@ -360,7 +373,9 @@ public:
         return nullptr;
     }
 
-    constexpr context_type& context() { return context_.value; }
+    /// The context as the environment sees it: const. Inputs are set through it (input::set is
+    /// const: the plant's wire), outputs and variables read; only the chart's actions write
+    /// outputs and variables (docs/api.md, "Data").
     constexpr context_type const& context() const { return context_.value; }
     constexpr configuration_type const& active_configuration() const { return config_; }
     constexpr Observer& observer() { return observer_.value; }
@@ -617,14 +632,14 @@ private:
     constexpr Backend& backend() { return static_cast<Backend&>(*this); }
     constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
 
-    // One microstep on an event (not on the eventless pseudo-event) where the chart defers:
-    // the event is kept if only deferring rows took it. (Elsewhere the callers go straight to
-    // the back end's microstep, without a function between to instantiate per event.)
+    // Fires the transitions an event (not the eventless pseudo-event) enables where the chart
+    // defers, and keeps the event if only deferring rows took it. (Elsewhere the callers go
+    // straight to the back end's fire, without a function between to instantiate per event.)
     template <int Trigger, class E>
-    constexpr bool deferring_microstep(E const& e) {
+    constexpr bool fire_or_defer(E const& e) {
         deferral_.requested = false;
         deferral_.other_fired = false;
-        bool const fired = backend().template microstep<Trigger>(e);
+        bool const fired = backend().template fire<Trigger>(e);
         if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
         return fired;
     }
@@ -640,21 +655,23 @@ private:
             }
             if (deferral_.retry == 0) return false;
             --deferral_.retry;
-            deferred_.pop([&](auto const& ev) { microstep_on(ev); });
+            deferred_.pop([&](auto const& ev) { fire_queued(ev); });
             return true;
         } else {
             return false;
         }
     }
 
+    // Fires the transitions an event taken from the queue or the deferred events enables,
+    // without settling; a failure that no transition takes is kept for the caller.
     template <class E>
-    constexpr void microstep_on(E const& e) {
+    constexpr void fire_queued(E const& e) {
         constexpr int trigger = model::template trigger_of<E>;
         bool fired = false;
         if constexpr (defers)
-            fired = deferring_microstep<trigger>(e);
+            fired = fire_or_defer<trigger>(e);
         else
-            fired = backend().template microstep<trigger>(e);
+            fired = backend().template fire<trigger>(e);
         if constexpr (std::is_same_v<E, action_failed>)
             if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
     }
@@ -721,17 +738,18 @@ private:
     // has just found clear. Said to the compiler, so that where every guard and action of the
     // run is inlined and cannot throw it sees that nothing set the bit, and end_run's test is
     // gone. GCC takes it as a range it may assume (it follows a range through the bit tests);
-    // Clang, which drops an assumption at the first join of paths, as a store of the cleared
-    // byte, which merges with the running mark or the recorded outcome. (Only where the running
-    // mark is kept: a policy without it never reads the byte at the start.) A machine assigned
-    // to from inside its own run loses its running mark mid-run and breaks this, as it breaks
-    // run to completion: docs/semantics.md, "Reentrancy", says not to.
+    // Clang, which drops an assumption at the first join of paths, and any compiler not known
+    // to follow one (BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS, detail/config.hpp), as a store of the
+    // cleared byte, which merges with the running mark or the recorded outcome. (Only where
+    // the running mark is kept: a policy without it never reads the byte at the start.) A
+    // machine assigned to from inside its own run loses its running mark mid-run and breaks
+    // this, as it breaks run to completion: docs/semantics.md, "Reentrancy", says not to.
     constexpr void start_without_failure() {
         if constexpr (may_throw && Policy::refuse_reentry) {
-#if defined(__clang__)
-            status_ = static_cast<run_status>(bits(status_) & ~failed_bit);
-#else
+#if BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS
             detail::assume(bits(status_) < failed_bit);
+#else
+            status_ = static_cast<run_status>(bits(status_) & ~failed_bit);
 #endif
         }
     }
@@ -756,7 +774,7 @@ private:
     // (A try block and not an object whose destructor ends the run: the object would have to
     // live on the stack of every dispatch.)
     template <class Body>
-    [[gnu::always_inline]] constexpr outcome run_to_end(Body&& body) {
+    BSC_DETAIL_ALWAYS_INLINE constexpr outcome run_to_end(Body&& body) {
 #if defined(__cpp_exceptions)
         try {
             return body();
@@ -797,9 +815,9 @@ private:
             latch_inputs(context_.value);
             bool fired = false;
             if constexpr (defers)
-                fired = deferring_microstep<Trigger>(e);
+                fired = fire_or_defer<Trigger>(e);
             else
-                fired = backend().template dispatch_microstep<Trigger>(e);
+                fired = backend().template fire_dispatched<Trigger>(e);
             settled = finish(fired);
             commit_outputs(context_.value);
 #if defined(__cpp_exceptions)
@@ -846,7 +864,7 @@ private:
         for (;;) {
             if constexpr (layout::has_trigger(eventless_id)) {
                 // Up to max_eventless_steps transitions settle; one more means the chart cycles.
-                for (std::size_t steps = 0; !halted() && backend().template microstep<eventless_id>(eventless{});)
+                for (std::size_t steps = 0; !halted() && backend().template fire<eventless_id>(eventless{});)
                     if (++steps > Policy::max_eventless_steps)
                         return abandon();
             }
@@ -865,7 +883,7 @@ private:
             }
             if (++internal_events > Policy::max_internal_events)
                 return abandon();
-            queue_.pop([&](auto const& ev) { microstep_on(ev); });
+            queue_.pop([&](auto const& ev) { fire_queued(ev); });
         }
         return settled(consumed);
     }
@@ -877,7 +895,7 @@ private:
         for (; !queue_.empty() && !halted();) {
             if (++n > Policy::max_internal_events)
                 return abandon();
-            queue_.pop([&](auto const& ev) { microstep_on(ev); });
+            queue_.pop([&](auto const& ev) { fire_queued(ev); });
         }
         if constexpr (defers) {
             // The deferred events a transition of this cycle released, each one microstep.
@@ -886,7 +904,7 @@ private:
                 if (!retry_deferred()) break;
                 for (; !queue_.empty() && !halted();) {
                     if (++n > Policy::max_internal_events) return abandon();
-                    queue_.pop([&](auto const& ev) { microstep_on(ev); });
+                    queue_.pop([&](auto const& ev) { fire_queued(ev); });
                 }
             }
         }

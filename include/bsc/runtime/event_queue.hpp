@@ -31,9 +31,10 @@ public:
     // (runtime/driver.hpp: settled, abandon, end_run_by_exception). Said to the optimiser at
     // the start of a dispatch, so that it places the events a dispatch raises at known slots
     // and drops the tests of a queue it sees nothing raised into: a raise then costs about a
-    // store, its processing a load (docs/benchmarks.md, analysis section 13). A hidden friend,
-    // not a member: the queue is the raise argument of every action, which should not be
-    // handed a promise it can break.
+    // store, its processing a load (docs/performance.md,
+    // rule "Tell the optimiser what a run guarantees"). A hidden friend, not a member: the
+    // queue is the raise argument of every action, which should not be handed a promise it
+    // can break.
     friend constexpr void assume_idle(ring const& q) {
         detail::assume(q.size_ == 0 && q.head_ == 0 && !q.overflowed_);
     }

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include <bsc/action_failed.hpp>
+#include <bsc/detail/config.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/row.hpp>
@@ -51,7 +52,8 @@ struct queued_events {
 template <class Model, class... Raised>
 struct queued_events<Model, type_list<Raised...>> {
     template <class E>
-    static constexpr bool kept = is_done_event<E> || __is_same(E, action_failed) || position_in<E, type_list<Raised...>>::value >= 0;
+    static constexpr bool kept = is_done_event<E> || BSC_DETAIL_IS_SAME(E, action_failed) ||
+                                 position_in<E, type_list<Raised...>>::value >= 0;
     using type = std::conditional_t<(... && (position_in<Raised, typename Model::events>::value >= 0)),
                                     decltype([]<class... Es>(type_list<Es...>) {
                                         return concat_t<std::conditional_t<kept<Es>, type_list<Es>, type_list<>>...>{};

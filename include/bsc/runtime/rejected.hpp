@@ -8,14 +8,27 @@
 #include <exception>
 #include <type_traits>
 
+#include <bsc/chart_ref.hpp>
 #include <bsc/duration.hpp>
 #include <bsc/error.hpp>
 #include <bsc/outcome.hpp>
 
 namespace bsc::detail {
 
+// The chart a machine runs: Chart itself, or the chart a bsc::chart_ref names.
 template <class Chart>
-concept rejected = is_rejected_chart<std::remove_cv_t<Chart>>;
+struct referred_chart {
+    using type = Chart;
+};
+template <auto const& Chart>
+struct referred_chart<chart_ref<Chart>> {
+    using type = std::remove_cvref_t<decltype(Chart)>;
+};
+
+// Declared on `decltype(chart)` or on `bsc::chart_ref<chart>`, alike: either way the chart's
+// own errors are the only ones.
+template <class Chart>
+concept rejected = is_rejected_chart<typename referred_chart<std::remove_cv_t<Chart>>::type>;
 
 template <class Chart>
 class inert_machine {
@@ -41,10 +54,10 @@ public:
     constexpr outcome last_outcome() const { return outcome::ignored; }
     std::exception_ptr last_failure() const { return nullptr; }
     constexpr duration now() const { return duration::zero(); }
-    constexpr context_type& context() { return context_; }
-    constexpr context_type const& context() const { return context_; }
+    constexpr context_type const& context() const { return context_; }  // const, as a machine's
 
 private:
+    friend struct access;
     context_type context_{};
 };
 

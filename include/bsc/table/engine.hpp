@@ -15,7 +15,7 @@
 //   activPath(from, to, hist)               activate_path(domain, target)
 //   StopStEng()                             the destructor (the engine owns no resource)
 //
-// and the five steps of its Figure 9 are those of microstep(). step(now) adds the BSC execution
+// and the five steps of its Figure 9 are those of select_and_fire(). step(now) adds the BSC execution
 // cycle of the Basic Statechart paper [BSC] (one condition-driven transition per component)
 // with the same tables.
 
@@ -25,6 +25,7 @@
 #include <type_traits>
 #include <utility>
 
+#include <bsc/detail/config.hpp>
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/runtime/driver.hpp>
@@ -397,7 +398,7 @@ private:
             return &e;
         else if constexpr (std::is_same_v<U, bsc::any_event>)
             return &any_event_value;
-        else if constexpr (__is_base_of(U, E))
+        else if constexpr (BSC_DETAIL_IS_BASE_OF(U, E))
             return static_cast<U const*>(&e);
         else
             return nullptr;  // not a family of E: no transition on U takes E
@@ -425,7 +426,7 @@ private:
         if constexpr (observed)
             if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_.value, this->chart(), e);
         if constexpr (base::defers) {
-            if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's deferring_microstep)
+            if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's fire_or_defer)
                 this->deferral_selected();
                 return;
             }
@@ -435,27 +436,28 @@ private:
             this->run(action, this->chart(), this->context_.value, e, this->queue_);
     }
 
-    // The microstep of a dispatched event: the same as any other here (the compiled back end
-    // puts it in line in the dispatch).
+    // fire() for a dispatched event: the same as for any other here (the compiled back end puts
+    // it in line in the dispatch).
     template <int Trigger, class E>
-    bool dispatch_microstep(E const& e) {
-        return microstep<Trigger>(e);
+    bool fire_dispatched(E const& e) {
+        return fire<Trigger>(e);
     }
+    // Selects and fires the transitions Trigger enables, without settling; true if a
+    // transition was selected.
     template <int Trigger, class E>
-    bool microstep(E const& e) {
+    bool fire(E const& e) {
         if constexpr (Trigger >= 0 && base::model::has_families)
-            return microstep(static_cast<event_id>(Trigger), as_families(e));
+            return select_and_fire(static_cast<event_id>(Trigger), as_families(e));
         else if constexpr (Trigger >= 0)  // E, or an event the chart does not name, as the trigger's type
-            return microstep(static_cast<event_id>(Trigger),
-                             plain_event{address_as<bsc::detail::at<static_cast<std::size_t>(Trigger), typename base::event_types>>(e)});
+            return select_and_fire(static_cast<event_id>(Trigger),
+                                   plain_event{address_as<bsc::detail::at<static_cast<std::size_t>(Trigger), typename base::event_types>>(e)});
         else
-            return microstep(static_cast<event_id>(Trigger), plain_event{&e});
+            return select_and_fire(static_cast<event_id>(Trigger), plain_event{&e});
     }
 
-    // One microstep for an event, the five steps of the paper's Figure 9; true if a
-    // transition was selected.
+    // The five steps of the paper's Figure 9 for an event; true if a transition was selected.
     template <class Event>
-    bool microstep(event_id event, Event const& e) {
+    bool select_and_fire(event_id event, Event const& e) {
         // 1. Sense the event: an event no transition is triggered by changes nothing.
         if (!tables_type::handles(event)) return false;
 
@@ -509,7 +511,7 @@ private:
         for (state_id a = frontier;; a = states[a].parent) {
             for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)])
                 if (is_condition(transitions[static_cast<std::size_t>(t)].event) && condition_holds(t)) {
-                    fire_condition(t);
+                    fire_condition(first_due(t));
                     return true;
                 }
             if (a == component) return false;
@@ -528,15 +530,48 @@ private:
         return guard_holds(t, &no_event);
     }
 
+    // The transition that fires when condition-driven transition t's condition holds: t, unless
+    // it is a timeout and a timeout of the same origin declared after it is due too, came due
+    // first (detail::came_due_first) and its guard holds; then the first of those to come due.
+    // (The timeouts declared before t did not hold, or t would not be tried.) Only a chart with
+    // a state of several timeout rows looks, and only at such a state's timeouts.
+    std::int16_t first_due(std::int16_t t) {
+        if constexpr (tables_type::competing_timeouts) {
+            auto const& row = transitions[static_cast<std::size_t>(t)];
+            if (row.event == timeout_id && states[row.from].timeout_slots > 1) {
+                duration const now = this->cycle_time();
+                std::int16_t first = t;
+                duration since = this->armed_[static_cast<std::size_t>(row.timeout_slot)];
+                duration delay = row.delay(this->chart());
+                for (std::int16_t u = tables_type::next_out[static_cast<std::size_t>(t)]; u >= 0;
+                     u = tables_type::next_out[static_cast<std::size_t>(u)]) {
+                    auto const& other = transitions[static_cast<std::size_t>(u)];
+                    if (other.event != timeout_id) continue;
+                    duration const u_since = this->armed_[static_cast<std::size_t>(other.timeout_slot)];
+                    duration const u_delay = other.delay(this->chart());
+                    if (bsc::detail::has_elapsed(u_since, now, u_delay) &&
+                        bsc::detail::came_due_first(u_since, u_delay, since, delay) && guard_holds(u, &no_event)) {
+                        first = u;
+                        since = u_since;
+                        delay = u_delay;
+                    }
+                }
+                return first;
+            }
+        }
+        return t;
+    }
+
     // Steps 3 to 5 of a microstep for one transition: a component's transition fires alone.
     void fire_condition(std::int16_t t) {
         auto const& row = transitions[static_cast<std::size_t>(t)];
         if (row.to != no_state) deactivate_path(row.domain);
         run_action(t, &no_event);
         enter_targets(row);
-        // An internal timeout, which leaves its state active, counts again from now.
+        // A timeout that leaves its state active (internal, or local: its domain is its state)
+        // counts again from now.
         if constexpr (tables_type::timeout_slots > 0)
-            if (row.to == no_state && row.timeout_slot >= 0)
+            if ((row.to == no_state || row.domain == row.from) && row.timeout_slot >= 0)
                 this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->cycle_time();
     }
 

@@ -313,6 +313,8 @@ public:
 
     /// How many states keep an entry time for their timeouts.
     static constexpr std::size_t timeout_slots = static_cast<std::size_t>(layout::timeout_slots);
+    /// Whether a state has several timeout rows, which compete by due time when due together.
+    static constexpr bool competing_timeouts = layout::has_competing_timeouts;
 
     /// True if a transition triggered by `row_event` takes `event`: the same event, or a family
     /// of it (a base class of its type among the chart's events, or bsc::any_event).

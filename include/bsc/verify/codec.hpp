@@ -53,6 +53,12 @@ struct time_frame {
         auto const n = static_cast<std::uint64_t>(d / period);
         return n < limit ? n : limit;
     }
+    // The whole periods in `since .. clock`, not capped.
+    std::uint64_t periods(duration since) const {
+        if (period <= duration::zero()) return 0;
+        auto const d = elapsed(since, clock);
+        return d <= duration::zero() ? 0 : static_cast<std::uint64_t>(d / period);
+    }
     // A delay of more periods than the counter holds: no exploration may rest on a counter that
     // would wrap. Thrown, or printed before aborting where exceptions are disabled.
     [[noreturn]] void refuse(duration delay, std::uint64_t periods) const {
@@ -383,6 +389,48 @@ void encode_pending(Machine const& value, bit_writer& out, time_frame own) {
     }
 }
 
+// The periods since each timeout slot was armed, as a key holds them (0 for a slot whose state
+// is inactive). A state's timeout matters only until it is due, so its count is capped one period
+// past the longest delay. The timeouts of a state with several also compete by which came due
+// first (docs/semantics.md, "Timers"), which the differences of their counts decide as long as
+// they are below that cap: such a state's counts are kept in order, ties included, each above
+// the next smaller one by its difference capped the same way (the smallest capped as a single
+// count is). Two machines whose counts are so keyed alike behave alike.
+template <class Machine>
+auto timeout_periods(Machine& m, time_frame own) {
+    using layout = chart_layout<machine_model<Machine>>;
+    constexpr auto slots = static_cast<std::size_t>(layout::timeout_slots);
+    auto const& armed = access::armed(m);
+    duration const longest = access::longest_timeout(m);
+    std::array<std::uint64_t, slots> out{};
+    for (std::size_t i = 0; i < slots; ++i) out[i] = access::timeout_armed(m, i) ? own.cycles(armed[i], longest) : 0;
+    if constexpr (layout::has_competing_timeouts) {
+        // The cap of a single count (time_frame::cycles, which has refused a cap that does not fit).
+        std::uint64_t const cap = own.period > duration::zero() ? static_cast<std::uint64_t>(longest / own.period) + 1 : 0;
+        for (std::size_t s = 0; s < layout::timeout_slot_count.size(); ++s) {
+            auto const count = static_cast<std::size_t>(layout::timeout_slot_count[s]);
+            if (count < 2 || !access::timeout_armed(m, static_cast<std::size_t>(layout::timeout_slot[s]))) continue;
+            auto const first = static_cast<std::size_t>(layout::timeout_slot[s]);
+            std::array<std::size_t, slots> order{};  // the state's slots, fewest periods first
+            std::array<std::uint64_t, slots> raw{};
+            for (std::size_t k = 0; k < count; ++k) {
+                order[k] = first + k;
+                raw[first + k] = own.periods(armed[first + k]);
+            }
+            std::stable_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count),
+                             [&](std::size_t a, std::size_t b) { return raw[a] < raw[b]; });
+            std::uint64_t kept = 0;
+            for (std::size_t k = 0; k < count; ++k) {
+                std::uint64_t const step = k == 0 ? raw[order[0]] : raw[order[k]] - raw[order[k - 1]];
+                kept += step < cap ? step : cap;
+                if (kept > max_cycles) own.refuse(longest, kept);
+                out[order[k]] = kept;
+            }
+        }
+    }
+    return out;
+}
+
 template <class Machine>
 void encode_machine(Machine const& value, encode_visitor& v) {
     auto& m = const_cast<Machine&>(value);
@@ -394,9 +442,7 @@ void encode_machine(Machine const& value, encode_visitor& v) {
     v.record("configuration", first);
     time_frame const own{access::clock(m), v.frame.period};
     first = out.bits();
-    auto const& armed = access::armed(m);
-    for (std::size_t i = 0; i < armed.size(); ++i)
-        out.put(access::timeout_armed(m, i) ? own.cycles(armed[i], access::longest_timeout(m)) : 0, cycle_bits);
+    for (std::uint64_t periods : timeout_periods(m, own)) out.put(periods, cycle_bits);
     v.record("timeouts", first);
     first = out.bits();
     encode_pending(value, out, own);
@@ -465,6 +511,11 @@ void decode_pending(Machine& m, bit_reader& in, time_frame frame) {
             left |= in.get(32) << 32;
             auto const id = static_cast<int>(static_cast<std::uint32_t>(in.get(32)));
             auto const item = decode_event<events, item_type>(in, frame);
+            // (Due past duration::max() from this clock: never, and not kept, as the queue keeps
+            // none such: runtime/delayed_events.hpp.)
+            if (left > static_cast<std::uint64_t>(duration::max().count()) ||
+                shifted_past_max(frame.clock, duration{static_cast<duration::rep>(left)}))
+                continue;
             (void)queue.put_scheduled(frame.clock + duration{static_cast<duration::rep>(left)}, id, item);
         }
         skip_bits(in, (pending::delayed_capacity - count) * (64 + 32 + slot::size));
@@ -482,7 +533,7 @@ void decode_visitor::leaf(T& value, no_name) {
         access::set_clock(value, frame.clock);
         for (auto& armed : access::armed(value)) armed = frame.before(in.get(cycle_bits));
         decode_pending(value, in, frame);
-        decode(value.context(), in, frame);
+        decode(access::context(value), in, frame);
     } else if constexpr (k == member_kind::timer) {
         auto const phase = static_cast<std::uint8_t>(in.get(2));
         bool const expired = in.get(1) != 0;
@@ -494,10 +545,7 @@ void decode_visitor::leaf(T& value, no_name) {
         V current = value.get();
         decode(pending, in, frame);
         decode(current, in, frame);
-        value.set(current);  // both values, through the channel's own cycle boundary
-        access::latch(value);
-        access::commit(value);
-        value.set(pending);
+        access::set_channel(value, current, pending);
     } else {
         value = decode_value<U>(in);
     }

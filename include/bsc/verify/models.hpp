@@ -108,9 +108,11 @@ struct numbered_inputs {
 };
 
 /// Steps the machine with a fixed period; before each cycle, `apply(context, choice)` sets the
-/// inputs for one of `choices` alternatives, and every alternative is explored. `label(choice)`
-/// names an alternative in traces; written as `name=value` words ("P1=1 S1=0"), a trace shows
-/// only the words that changed from one step to the next (verdict::to_string).
+/// inputs for one of `choices` alternatives (`context` is the machine's `context()`, const, the
+/// environment's view: inputs are set through it), and every alternative is explored.
+/// `label(choice)` names an alternative in traces; written as `name=value` words
+/// ("P1=1 S1=0"), a trace shows only the words that changed from one step to the next
+/// (verdict::to_string).
 template <class Machine, class Apply, class Label = numbered_inputs>
 class cycle_model : public detail::encoded_model<Machine> {
 public:

@@ -17,7 +17,7 @@ struct On;
 class panel {
 public:
     explicit panel(bsc::duration on_time) : timer{on_time} {}
-    void press(bool down) { button.set(down); }
+    void press(bool down) const { button.set(down); }  // the environment's: on the const context
     bool pressed() const { return button.get(); }
     void light(bool on) {
         light_out.set(on);

@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <string>
 
+#define BSC_STRINGIFY_(x) #x
+#define BSC_STRINGIFY(x) BSC_STRINGIFY_(x)
+
 namespace turnstile {
 struct coin {};
 struct push {};
@@ -27,8 +30,12 @@ int main() {
     m.dispatch(turnstile::push{});
     m.dispatch(turnstile::coin{});
     std::string const diagram = bsc::to_mermaid(turnstile::chart);
+    // The header's version is the package's.
+    std::string const header_version = BSC_STRINGIFY(BSC_VERSION_MAJOR) "." BSC_STRINGIFY(
+        BSC_VERSION_MINOR) "." BSC_STRINGIFY(BSC_VERSION_PATCH);
     bool const ok = m.is<turnstile::Unlocked>() && m.context().coins == 2 &&
-                    diagram.find("Locked --> Unlocked : coin / add_coin") != std::string::npos;
+                    diagram.find("Locked --> Unlocked : coin / add_coin") != std::string::npos &&
+                    header_version == BSC_PACKAGE_VERSION;
     std::puts(ok ? "find_package: ok" : "find_package: FAILED");
     return ok ? 0 : 1;
 }

@@ -1,0 +1,31 @@
+// EXPECT: (bsc::error::from_outside_not_an_input<&cf::actors::first, &cf::io::out.*bsc: bsc::from_outside must name an input of its actor|bsc: bsc::from_outside must name an input of its actor.*bsc::error::from_outside_not_an_input<&cf::actors::first, &cf::io::out)
+// bsc::from_outside names an output, which only the relay's chart writes.
+#include <bsc/bsc.hpp>
+
+namespace cf {
+struct Root;
+struct Off;
+struct On;
+// A relay: its output follows its input.
+struct io {
+    bsc::input<bool> in;
+    bsc::output<bool> out;
+    bsc::output<int> count;
+};
+inline constexpr auto relay = bsc::make_chart<io>(
+    bsc::composite<Root>(bsc::initial<Off>, bsc::state<On>),
+    bsc::state<Off>[([](io const& c) { return c.in.get(); })] / [](io& c) { c.out.set(true); } = bsc::state<On>,
+    bsc::state<On>[([](io const& c) { return !c.in.get(); })] / [](io& c) { c.out.set(false); } = bsc::state<Off>);
+struct actors {
+    bsc::machine<bsc::chart_ref<relay>> first{relay};
+    bsc::machine<bsc::chart_ref<relay>> second{relay};
+};
+using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
+                          bsc::from_outside<&actors::first, &io::out>,
+                          bsc::link<&actors::first, &io::out, &actors::second, &io::in>>;
+
+inline int run() {
+    chain s{};
+    return s.step(bsc::duration{}).transitions;
+}
+}  // namespace cf

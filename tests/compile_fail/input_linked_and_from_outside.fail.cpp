@@ -1,0 +1,32 @@
+// EXPECT: (bsc::error::input_linked_and_from_outside<&cf::actors::second, &cf::io::in.*bsc: this input \(Channel of Actor\) is declared bsc::from_outside, but a link|bsc: this input \(Channel of Actor\) is declared bsc::from_outside, but a link.*bsc::error::input_linked_and_from_outside<&cf::actors::second, &cf::io::in)
+// The second relay's input is declared bsc::from_outside, and a link drives it too.
+#include <bsc/bsc.hpp>
+
+namespace cf {
+struct Root;
+struct Off;
+struct On;
+// A relay: its output follows its input.
+struct io {
+    bsc::input<bool> in;
+    bsc::output<bool> out;
+    bsc::output<int> count;
+};
+inline constexpr auto relay = bsc::make_chart<io>(
+    bsc::composite<Root>(bsc::initial<Off>, bsc::state<On>),
+    bsc::state<Off>[([](io const& c) { return c.in.get(); })] / [](io& c) { c.out.set(true); } = bsc::state<On>,
+    bsc::state<On>[([](io const& c) { return !c.in.get(); })] / [](io& c) { c.out.set(false); } = bsc::state<Off>);
+struct actors {
+    bsc::machine<bsc::chart_ref<relay>> first{relay};
+    bsc::machine<bsc::chart_ref<relay>> second{relay};
+};
+using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
+                          bsc::from_outside<&actors::first, &io::in>,
+                          bsc::link<&actors::first, &io::out, &actors::second, &io::in>,
+                          bsc::from_outside<&actors::second, &io::in>>;
+
+inline int run() {
+    chain s{};
+    return s.step(bsc::duration{}).transitions;
+}
+}  // namespace cf

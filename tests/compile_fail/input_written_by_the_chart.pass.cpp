@@ -1,0 +1,17 @@
+// Twin of input_written_by_the_chart.fail.cpp: the action writes the chart's output.
+#include <bsc/bsc.hpp>
+
+namespace cf {
+struct Root;
+struct Off;
+struct On;
+struct io {
+    bsc::input<bool> in;
+    bsc::output<bool> out;
+};
+
+inline constexpr auto chart = bsc::make_chart<io>(
+    bsc::composite<Root>(bsc::initial<Off>, bsc::state<On>),
+    bsc::state<Off>[([](io const& c) { return c.in.get(); })] / [](io& c) { c.out.set(false); } = bsc::state<On>,
+    bsc::state<On>[([](io const& c) { return !c.in.get(); })] = bsc::state<Off>);
+}  // namespace cf

@@ -1,0 +1,31 @@
+// EXPECT: (bsc::error::link_source_not_an_output<&cf::actors::first, &cf::io::in.*bsc: the source of a bsc::link must be an output of its actor|bsc: the source of a bsc::link must be an output of its actor.*bsc::error::link_source_not_an_output<&cf::actors::first, &cf::io::in)
+// The link starts at an input of its source actor: a link carries what its source publishes.
+#include <bsc/bsc.hpp>
+
+namespace cf {
+struct Root;
+struct Off;
+struct On;
+// A relay: its output follows its input.
+struct io {
+    bsc::input<bool> in;
+    bsc::output<bool> out;
+    bsc::output<int> count;
+};
+inline constexpr auto relay = bsc::make_chart<io>(
+    bsc::composite<Root>(bsc::initial<Off>, bsc::state<On>),
+    bsc::state<Off>[([](io const& c) { return c.in.get(); })] / [](io& c) { c.out.set(true); } = bsc::state<On>,
+    bsc::state<On>[([](io const& c) { return !c.in.get(); })] / [](io& c) { c.out.set(false); } = bsc::state<Off>);
+struct actors {
+    bsc::machine<bsc::chart_ref<relay>> first{relay};
+    bsc::machine<bsc::chart_ref<relay>> second{relay};
+};
+using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
+                          bsc::from_outside<&actors::first, &io::in>,
+                          bsc::link<&actors::first, &io::in, &actors::second, &io::in>>;
+
+inline int run() {
+    chain s{};
+    return s.step(bsc::duration{}).transitions;
+}
+}  // namespace cf
