@@ -31,6 +31,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -167,10 +168,18 @@ bool register_impl(char const* name) {
 /// on the implementation `name`, prints a checksum of what it observed.
 template <class W>
 int drive(int argc, char** argv) {
-    if (argc != 3) {
-        std::fprintf(stderr, "usage: %s IMPLEMENTATION EVENTS\n", argv[0]);
-        for (auto const& e : registry<W>::entries()) std::fprintf(stderr, "  %s\n", e.name.c_str());
-        return 2;
+    bool const asked = argc == 2 && (std::string_view{argv[1]} == "--help" || std::string_view{argv[1]} == "-h");
+    if (argc != 3 || asked || argv[1][0] == '-') {  // a flag other than --help is unknown
+        std::FILE* const to = asked ? stdout : stderr;
+        std::fprintf(to,
+                     "usage: %s IMPLEMENTATION EVENTS\n"
+                     "Runs EVENTS events of the %s workload on IMPLEMENTATION and prints a checksum of what it\n"
+                     "observed (no flags, no defaults: both arguments are required).\n"
+                     "  -h, --help  print this text and exit\n"
+                     "IMPLEMENTATION is one of:\n",
+                     argv[0], W::name);
+        for (auto const& e : registry<W>::entries()) std::fprintf(to, "  %s\n", e.name.c_str());
+        return asked ? 0 : 2;
     }
     std::size_t const n = std::strtoull(argv[2], nullptr, 10);
     for (auto const& e : registry<W>::entries()) {

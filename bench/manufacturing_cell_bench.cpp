@@ -345,8 +345,16 @@ void bm_hand_written_scan(benchmark::State& state) {
 
 #if defined(BENCH_CELL_INSNS)
 int main(int argc, char** argv) {
-    if (argc != 3) {
-        std::fprintf(stderr, "usage: %s IMPLEMENTATION CYCLES\n  bsc_compiled\n  hand_written\n", argv[0]);
+    bool const asked = argc == 2 && (std::string_view{argv[1]} == "--help" || std::string_view{argv[1]} == "-h");
+    if (argc != 3 || asked || argv[1][0] == '-') {  // a flag other than --help is unknown
+        std::fprintf(asked ? stdout : stderr,
+                     "usage: %s IMPLEMENTATION CYCLES\n"
+                     "Runs CYCLES scan cycles of the manufacturing cell's controller and prints a checksum\n"
+                     "(no flags, no defaults: both arguments are required).\n"
+                     "  -h, --help  print this text and exit\n"
+                     "IMPLEMENTATION is one of:\n  bsc_compiled\n  hand_written\n",
+                     argv[0]);
+        if (asked) return 0;
         return 2;
     }
     std::string_view const impl = argv[1];

@@ -93,4 +93,4 @@ bsc_add_doc_samples(docs/examples/eca_cell.md eca_cell_page)
 get_property(bsc_doc_sample_pages GLOBAL PROPERTY bsc_doc_sample_pages)
 add_test(NAME doc.samples_covered
   COMMAND ${Python3_EXECUTABLE} ${bsc_doc_samples_script} check ${PROJECT_SOURCE_DIR} ${bsc_doc_sample_pages})
-set_tests_properties(doc.samples_covered PROPERTIES LABELS doc)
+set_tests_properties(doc.samples_covered PROPERTIES LABELS "doc;fast")

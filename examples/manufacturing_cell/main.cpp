@@ -104,15 +104,18 @@ std::vector<bsc::duration> scripted_arrivals(int pieces) {
     return times;
 }
 
-int usage() {
-    std::fprintf(stderr,
+// Prints the usage text to `to`; returns the exit status: 0 when asked for, 2 after a wrong flag.
+int usage(std::FILE* to, int status) {
+    std::fprintf(to,
                  "usage: manufacturing_cell [--pieces N] [--seed S] [--period MS] [--quiet] [--vcd FILE]\n"
-                 "  --pieces N   pieces to run through the cell (default 8)\n"
-                 "  --seed S     random arrivals from seed S instead of the fixed script\n"
-                 "  --period MS  scan period in milliseconds (default 100)\n"
-                 "  --quiet      print the summary only\n"
-                 "  --vcd FILE   record every cycle in FILE as a value change dump (GTKWave)\n");
-    return 2;
+                 "Runs pieces through the manufacturing cell in closed loop with its plant and checks the run.\n"
+                 "  --pieces N   pieces to run through the cell, 0 to 10000 (default: 8)\n"
+                 "  --seed S     random arrivals from seed S (default: the fixed script of arrivals)\n"
+                 "  --period MS  scan period in milliseconds, 1 to 1000 (default: 100)\n"
+                 "  --quiet      print the summary only (default: print every piece's events too)\n"
+                 "  --vcd FILE   record every cycle in FILE as a value change dump, for GTKWave (default: none)\n"
+                 "  -h, --help   print this text and exit\n");
+    return status;
 }
 
 bool parse(int argc, char** argv, options& o) {
@@ -147,7 +150,9 @@ bool parse(int argc, char** argv, options& o) {
 
 int main(int argc, char** argv) {
     options o;
-    if (!parse(argc, argv, o)) return usage();
+    for (int i = 1; i < argc; ++i)
+        if (std::string_view{argv[i]} == "--help" || std::string_view{argv[i]} == "-h") return usage(stdout, 0);
+    if (!parse(argc, argv, o)) return usage(stderr, 2);
     auto const arrivals = o.random ? cell::arrivals::random(o.pieces, o.seed, 500ms, 12s) : scripted_arrivals(o.pieces);
 
     auto const ms = [](bsc::duration d) { return static_cast<long>(std::chrono::duration_cast<std::chrono::milliseconds>(d).count()); };

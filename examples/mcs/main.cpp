@@ -209,11 +209,14 @@ int main(int argc, char** argv) {
         } else if (a == "--log" && !log) {
             log = true;
         } else {
-            std::cerr << "usage: mcs [--interactive] [--log]\n"
-                         "  without arguments: run the scripted operator run and check it\n"
-                         "  --interactive:     push buttons by name, one per line on standard input\n"
-                         "  --log:             write every exit, transition and entry to standard error\n";
-            return 2;
+            bool const asked = a == "--help" || a == "-h";
+            (asked ? std::cout : std::cerr)
+                << "usage: mcs [--interactive] [--log]\n"
+                   "  without flags:  run the scripted operator run and check it\n"
+                   "  --interactive   push buttons by name, one per line on standard input (default: off, the script)\n"
+                   "  --log           write every exit, transition and entry to standard error (default: off)\n"
+                   "  -h, --help      print this text and exit\n";
+            return asked ? 0 : 2;
         }
     }
     return interactive ? run_interactive(log) : run_script(log);

@@ -55,12 +55,28 @@ struct arguments {
     bool memory = false;
 };
 
+static_assert(pcell::supervisor_offers.size() == 5, "the usage text names the default of --bricks");
+constexpr char const* usage_text =
+    "usage: production_cell_node (--broker HOST:PORT [node flags] | --memory) [--steps N] [--bricks N]\n"
+    "       production_cell_node --help\n"
+    "Runs actors of the supervised production cell as a node over MQTT (--broker), or all eleven\n"
+    "actors as eleven nodes in one process (--memory), until they complete the last step.\n"
+    "  --broker HOST:PORT  the MQTT broker to connect to (one of --broker, --memory is required)\n"
+    "  --memory            eleven nodes on the in-process transport, checked against one process\n"
+    "  --name NAME         the node's name, unique per broker (default: cell)\n"
+    "  --actors A,B,...    the actors the node runs, or all (default: all)\n"
+    "  --prefix P          the topics' prefix, one per system (default: pcell)\n"
+    "  --state-dir DIR     save the actors' state there, and resume from it (default: none)\n"
+    "  --trace FILE        append one JSON line per actor step (default: none)\n"
+    "  --steps N           the last step, 100 ms each (default: 1200, 120 s of the cell)\n"
+    "  --pace-ms MS        at least MS between two steps of an actor (default: 0, as fast as it can)\n"
+    "  --deadline-ms MS    a silent peer is stale after MS (default: 300)\n"
+    "  --timeout-s S       give up, exit 1, if not finished after S seconds (default: 120)\n"
+    "  --bricks N          the bricks the supervisor puts on the feed belt, 0 to 255 (default: 5)\n"
+    "  -h, --help          print this text and exit\n";
+
 [[noreturn]] void usage(char const* message) {
-    std::fprintf(stderr,
-                 "%s\nusage: production_cell_node (--broker HOST:PORT [--name NAME] [--actors A,B,...|all] "
-                 "[--prefix P] [--state-dir DIR] [--trace FILE] [--steps N] [--pace-ms MS] [--deadline-ms MS] "
-                 "[--timeout-s S] | --memory [--steps N]) [--bricks N]\n",
-                 message);
+    std::fprintf(stderr, "%s\n%s", message, usage_text);
     std::exit(2);
 }
 
@@ -80,6 +96,10 @@ arguments parse(int argc, char** argv) {
             if (i + 1 >= argc) usage("a flag lacks its value");
             return argv[++i];
         };
+        if (flag == "--help" || flag == "-h") {
+            std::fputs(usage_text, stdout);
+            std::exit(0);
+        }
         if (flag == "--broker") a.broker = value();
         else if (flag == "--name") a.name = value();
         else if (flag == "--actors") {

@@ -33,6 +33,11 @@ struct no_observer {};
 ///   void on_exit(auto state);               // after state's exit actions
 ///   void on_transition(auto source, auto target, auto const& event);  // before the action
 ///   void on_row(int row);                   // the same moment: the row's position in make_chart
+///   void on_guard(std::string_view guard);  // just before on_transition, for a row with a guard:
+///                                           // the guard as the exports write it, e.g. "released",
+///                                           // "!released && ready", "guard" when no part has a name
+///   void on_defer(auto source, auto const& event);  // just before on_transition, for a row
+///                                           // that defers the event (`/ bsc::defer`)
 ///   void on_dispatch(auto const& event);    // dispatch(event) begins (not when refused)
 ///   void on_cycle(bsc::duration now);       // step(now) begins, with the cycle's time
 ///   void on_cycle_end();                    // that cycle's outputs are committed
@@ -53,6 +58,14 @@ concept observes_exit = requires(O& o) {
 template <class O, class Src, class Dst, class E>
 concept observes_transition = requires(O& o, E const& e) {
     o.on_transition(Src{}, Dst{}, e);
+};
+template <class O>
+concept observes_guards = requires(O& o, std::string_view text) {
+    o.on_guard(text);
+};
+template <class O, class Src, class E>
+concept observes_deferrals = requires(O& o, E const& e) {
+    o.on_defer(Src{}, e);
 };
 template <class O>
 concept observes_rows = requires(O& o) {

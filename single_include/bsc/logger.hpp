@@ -6,8 +6,10 @@
 // begin include/bsc/logger.hpp
 // bsc::logger: an observer that reports what a machine does, one record per dispatch, exit,
 // transition and entry, with the machine's time, the cycle's number, and the trigger as the
-// chart writes it (the event's bsc::event_name, "after(5s)", or "condition"). Records go to a callback, or
-// as lines to a std::ostream:
+// chart writes it (the event's bsc::event_name, "after(5s)", or "condition"), followed by the
+// guard's name in brackets where the guard has one ("go [ready]", "[released]"); an event a row
+// defers is reported as a deferral ("defer go in Busy"). Records go to a callback, or as lines
+// to a std::ostream:
 //
 //   bsc::machine<decltype(chart), bsc::scan_policy, bsc::logger> m{chart, ctx{}, bsc::logger{std::clog}};
 //   m.step(0s);
@@ -51,7 +53,7 @@ namespace bsc {
 /// One thing a machine did, as bsc::logger reports it. The views are valid during the
 /// callback only.
 struct log_record {
-    enum class kind { dispatch, exit, transition, entry };
+    enum class kind { dispatch, exit, transition, entry, deferral };
     kind what = kind::dispatch;
     /// The machine's time: the cycle's `now` within step(now), otherwise the time of the last
     /// cycle this logger saw (zero before the first).
@@ -59,14 +61,15 @@ struct log_record {
     /// The cycle's number within step(now), counted from 1 by this logger; 0 outside a cycle
     /// (the construction, a dispatch).
     std::uint64_t cycle = 0;
-    std::string_view state;    ///< exit, entry: the state; transition: the source
+    std::string_view state;    ///< exit, entry: the state; transition, deferral: the source
     std::string_view target;   ///< transition: the target, "internal" for an internal transition
-    std::string_view trigger;  ///< transition: the event's name, "after(<delay>)" or "condition";
-                               ///< dispatch: the event's name
+    std::string_view trigger;  ///< transition: the event's name, "after(<delay>)" or "condition",
+                               ///< then " [guard]" for a named guard, or "[guard]" alone for an
+                               ///< eventless row; dispatch, deferral: the event's name
 };
 
 /// The record as one line, without newline: "[1500ms #3] transition Idle -> Busy on go",
-/// "[1500ms] dispatch go" (no cycle number outside a cycle).
+/// "[1500ms] dispatch go" (no cycle number outside a cycle), "[2s #4] defer go in Busy".
 inline std::string to_string(log_record const& r) {
     std::string line = "[" + detail::delay_label(r.time);
     if (r.cycle > 0) line += " #" + std::to_string(r.cycle);
@@ -83,6 +86,9 @@ inline std::string to_string(log_record const& r) {
             break;
         case log_record::kind::entry:
             line.append("entry ").append(r.state);
+            break;
+        case log_record::kind::deferral:
+            line.append("defer ").append(r.trigger).append(" in ").append(r.state);
             break;
     }
     return line;
@@ -123,18 +129,33 @@ public:
     void on_entry(State) {
         emit({log_record::kind::entry, time_, cycle(), State::name, {}, {}});
     }
+    // Before on_transition of a guarded row: the guard as the exports write it ("guard" when no
+    // part of it has a name, which the record leaves out).
+    void on_guard(std::string_view guard) {
+        guard_.assign(guard);
+        guarded_ = guard != "guard";
+    }
+    // Before on_transition of a deferring row: that transition is reported as the deferral.
+    template <class Source, class E>
+    void on_defer(Source, E const&) {
+        deferring_ = true;
+    }
     template <class Source, class Target, class E>
     void on_transition(Source, Target, E const& e) {
-        std::string_view trigger;
+        bool const guarded = std::exchange(guarded_, false);
+        if (std::exchange(deferring_, false)) {
+            emit({log_record::kind::deferral, time_, cycle(), Source::name, {}, event_name<E>});
+            return;
+        }
         if constexpr (std::is_same_v<E, timeout_elapsed>) {
             trigger_ = "after(" + detail::delay_label(e.delay) + ")";
-            trigger = trigger_;
         } else if constexpr (std::is_same_v<E, eventless>) {
-            trigger = "condition";
+            trigger_ = guarded ? std::string{} : std::string{"condition"};
         } else {
-            trigger = event_name<E>;
+            trigger_.assign(event_name<E>);
         }
-        emit({log_record::kind::transition, time_, cycle(), Source::name, Target::name, trigger});
+        if (guarded) trigger_.append(trigger_.empty() ? "[" : " [").append(guard_).append("]");
+        emit({log_record::kind::transition, time_, cycle(), Source::name, Target::name, trigger_});
     }
 
 private:
@@ -147,7 +168,10 @@ private:
     duration time_{};  // the last cycle's time: a dispatch's too
     std::uint64_t cycles_ = 0;
     bool in_cycle_ = false;
-    std::string trigger_;  // the text of the last timeout trigger, which a record views
+    std::string trigger_;  // the text of the last transition's trigger, which a record views
+    std::string guard_;    // the guard of the transition about to be reported
+    bool guarded_ = false;    // it has a name to report
+    bool deferring_ = false;  // the transition about to be reported defers its event
 };
 
 }  // namespace bsc

@@ -122,6 +122,9 @@ public:
         return deliver_all(inbox_, deliver);
     }
     bool connected() const override { return connected_; }
+    std::string peer() const override {
+        return "the MQTT broker at " + endpoint_.host + ":" + std::to_string(endpoint_.port);
+    }
 
 private:
     bool try_connect() {

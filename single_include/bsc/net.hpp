@@ -69,6 +69,8 @@ public:
     virtual std::size_t poll(std::chrono::milliseconds timeout, std::function<void(message const&)> const& deliver) = 0;
     /// Whether the connection is up now.
     virtual bool connected() const = 0;
+    /// What the transport connects to, for diagnostics, e.g. "the MQTT broker at 127.0.0.1:1883".
+    virtual std::string peer() const { return "the network"; }
 };
 
 /// Hands every message of `inbox` to `deliver`, oldest first, and empties it; returns how many.
@@ -139,6 +141,7 @@ public:
         return connected_ ? deliver_all(inbox_, deliver) : 0;
     }
     bool connected() const override { return connected_; }
+    std::string peer() const override { return "the memory bus"; }
 
     /// The connection breaks: what was not yet delivered is lost, the others receive the will.
     void disconnect() {
@@ -1278,8 +1281,9 @@ public:
     std::int64_t completed(std::size_t place) const { return peers_[place].completed; }
     /// Whether the actor at `place` (on another node) is stale now.
     bool is_stale(std::size_t place) const { return !local_[place] && stale(place, options_.clock()); }
-    /// What each hosted actor that has not finished waits for, e.g. "table waits for step 12 of
-    /// robot (robot.taken)"; empty when none waits. For diagnostics.
+    /// What each hosted actor that has not finished waits for, e.g. "table waits for the value of
+    /// step 12 of robot (has 11)", after "cannot reach <the transport's peer>; " while the
+    /// transport is not connected; empty when none waits. For diagnostics.
     std::string waiting() const {
         std::string out;
         auto const now = options_.clock();
@@ -1291,6 +1295,7 @@ public:
             if (!out.empty()) out += "; ";
             out += std::string(plan::names[a]) + " waits for " + why;
         }
+        if (!out.empty() && !net_.connected()) out = "cannot reach " + net_.peer() + "; " + out;
         return out;
     }
     /// Whether the last step of the hosted actor at `place` read a stale value.
@@ -1599,6 +1604,13 @@ private:
         publish_actor(a);
     }
 
+    // What a diagnostic says of the last step known of an actor or a value.
+    static std::string known_step(std::int64_t step) {
+        if (step == unknown) return "not heard from yet";
+        if (step < 0) return "has completed no step";
+        return "has " + std::to_string(step);
+    }
+
     // Whether actor `a` can run step `n`; `stale_input` tells whether it would read a stale value,
     // and `why`, if given, what it waits for when it cannot.
     bool ready(std::size_t a, std::int64_t n, time_point now, bool& stale_input, std::string* why = nullptr) const {
@@ -1611,7 +1623,7 @@ private:
                     if (local_[p] || plan::lossless[i] || !stale(p, now)) {
                         if (why)
                             *why = "the value of step " + std::to_string(needed) + " of " +
-                                   std::string(plan::names[p]) + " (has " + std::to_string(has) + ")";
+                                   std::string(plan::names[p]) + " (" + known_step(has) + ")";
                         return false;
                     }
                     stale_input = true;
@@ -1621,8 +1633,9 @@ private:
                 auto const needed = c > a ? n - 1 : n;
                 if (peers_[c].completed < needed && (local_[c] || plan::lossless[i] || !stale(c, now))) {
                     if (why)
-                        *why = std::string(plan::names[c]) + " to complete step " + std::to_string(needed) +
-                               " (has " + std::to_string(peers_[c].completed) + ")";
+                        *why = std::string(plan::names[c]) +
+                               (needed < 0 ? std::string(" to start") : " to complete step " + std::to_string(needed)) +
+                               " (" + known_step(peers_[c].completed) + ")";
                     return false;
                 }
             }

@@ -198,7 +198,7 @@ DEFECTS = ["unreachable_state", "dead_end_state", "conflicting_transitions", "sh
 VALUE_CHECKS = {"dead_timeout"}
 
 
-def source(kinds):
+def source(kinds, clang=False):
     tree, rows = base_chart()
     extra, body = [], []
     found = []
@@ -233,14 +233,20 @@ def source(kinds):
     text.append(",\n".join("    " + r for r in rows) + ");")
     # The machine, declared both ways the documentation teaches: on the chart's type and on
     # bsc::chart_ref. A machine on a rejected chart adds no error of its own.
+    # A dead timeout is found by evaluating the chart, which then is no constant: Clang reports
+    # every use of it that needs one, and bsc::chart_ref<chart> is such a use (docs/checks.md,
+    # section 10). Those charts are used by a machine on their type only.
+    by_ref = not (clang and any(kind in VALUE_CHECKS for kind in kinds))
     text.append("using machine = bsc::machine<decltype(chart)>;")
-    text.append("using machine_of_ref = bsc::machine<bsc::chart_ref<chart>>;")
+    if by_ref:
+        text.append("using machine_of_ref = bsc::machine<bsc::chart_ref<chart>>;")
     text.append("inline void drive() {")
     text.append("    machine m{chart};")
-    text.append("    machine_of_ref r{chart};")
     text.append("    (void)m.dispatch(e0{});")
-    text.append("    (void)r.dispatch(e0{});")
-    text.append("    (void)r.is<S0_0>();")
+    if by_ref:
+        text.append("    machine_of_ref r{chart};")
+        text.append("    (void)r.dispatch(e0{});")
+        text.append("    (void)r.is<S0_0>();")
     text.append("}")
     if body:
         text.append("inline void run() {")
@@ -263,7 +269,7 @@ def main():
     for kind in kinds:
         if kind not in DEFECTS:
             parser.error(f"unknown defect {kind}; one of {', '.join(DEFECTS)}")
-    text, found, rows = source(kinds)
+    text, found, rows = source(kinds, "clang" in os.path.basename(args.compiler))
     with tempfile.TemporaryDirectory() as work:
         path = args.keep or os.path.join(work, "big_chart.cpp")
         with open(path, "w") as f:

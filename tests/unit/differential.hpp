@@ -129,7 +129,7 @@ public:
     static auto extra_of(int) -> typename F::extra_events;
     template <class F>
     static auto extra_of(long) -> inside::type_list<>;
-    using dispatched = inside::concat_t<typename bsc::detail::sendable_events<events>::type, decltype(extra_of<Fixture>(0))>;
+    using dispatched = inside::concat_t<inside::sendable_events<events>, decltype(extra_of<Fixture>(0))>;
 
     static_assert(std::is_same_v<typename compiled_type::configuration_type, typename table_type::configuration_type>);
     // The compiled machine drops the queue of a chart none of whose actions can raise.

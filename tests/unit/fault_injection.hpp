@@ -94,7 +94,7 @@ bool legal(Machine const& m) {
 // The events the environment may send (the chart's, without the done events, bsc::action_failed
 // and bsc::any_event, which dispatch refuses).
 template <class Machine>
-using sendable_events = typename bsc::detail::sendable_events<typename Machine::event_types>::type;
+using sendable_events = inside::sendable_events<typename Machine::event_types>;
 
 template <class Machine, std::size_t I = 0>
 void dispatch_event(Machine& m, std::size_t which) {

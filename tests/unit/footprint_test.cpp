@@ -457,18 +457,18 @@ constexpr int late_total() {
 }  // namespace fp
 
 TEST_CASE("an event whose default construction is not a constant keeps the general queue, usable in constant expressions") {
-    static_assert(!std::is_same_v<bsc::detail::queue_for<decltype(fp::raises_late), bsc::default_policy>,
-                                  bsc::detail::single_event_queue<8, fp::late>>);
+    static_assert(!std::is_same_v<inside::queue_for<decltype(fp::raises_late), bsc::default_policy>,
+                                  inside::single_event_queue<8, fp::late>>);
     static_assert(fp::late_total() == 6);
     CHECK(fp::late_total() == 6);
 }
 
 TEST_CASE_TEMPLATE("a chart that raises one event type keeps the events in order, without an index, or only their count",
                    Backend, bsc_test::compiled, bsc_test::table) {
-    using tick_queue = bsc::detail::queue_for<decltype(fp::raises_ticks), bsc::default_policy>;
-    using ping_queue = bsc::detail::queue_for<decltype(fp::raises_pings), bsc::default_policy>;
-    static_assert(std::is_same_v<tick_queue, bsc::detail::single_event_queue<8, fp::tick>>);
-    static_assert(std::is_same_v<ping_queue, bsc::detail::single_event_queue<8, fp::back>>);
+    using tick_queue = inside::queue_for<decltype(fp::raises_ticks), bsc::default_policy>;
+    using ping_queue = inside::queue_for<decltype(fp::raises_pings), bsc::default_policy>;
+    static_assert(std::is_same_v<tick_queue, inside::single_event_queue<8, fp::tick>>);
+    static_assert(std::is_same_v<ping_queue, inside::single_event_queue<8, fp::back>>);
     // Eight ints and the ring's two counters and flag; for the empty event, only those.
     static_assert(sizeof(tick_queue) ==
                   fp::padded(8 * sizeof(int) + 2 * sizeof(std::size_t) + 1, alignof(std::size_t)));

@@ -13,6 +13,7 @@
 #include <bsc/compiled/plan.hpp>
 #include <bsc/detail/access.hpp>
 #include <bsc/export.hpp>
+#include <bsc/retain.hpp>
 #include <bsc/verify.hpp>
 
 namespace inside {
@@ -76,6 +77,49 @@ using bsc::detail::identifier;
 using bsc::detail::last_scopes;
 using bsc::detail::unique_identifiers;
 using bsc::detail::unique_names;
+
+// A row's text as bsc's errors write it (checks/row_text.hpp).
+template <class Row>
+constexpr auto row_text() {
+    return bsc::detail::row_text<Row>();
+}
+
+// The queue a chart's machine gets (runtime/queue_for.hpp), and its one-event kind.
+template <class Chart, class Policy>
+using queue_for = bsc::detail::queue_for<Chart, Policy>;
+template <std::size_t Capacity, class E>
+using single_event_queue = bsc::detail::single_event_queue<Capacity, E>;
+
+// The events that can be dispatched from outside (event_set.hpp), as a type list.
+template <class Events>
+using sendable_events = typename bsc::detail::sendable_events<Events>::type;
+
+// The retentive state's format: its header's size, its checksum, the fingerprints it checks a
+// restore against, and the timeout slots a chart keeps.
+inline constexpr std::size_t retain_header_size = bsc::detail::retain::header_size;
+inline std::uint32_t crc32(std::byte const* bytes, std::size_t n) { return bsc::detail::crc32(bytes, n); }
+template <class Machine>
+constexpr std::uint64_t chart_fingerprint() {
+    return bsc::detail::chart_fingerprint<Machine>();
+}
+template <class Machine>
+constexpr std::uint64_t layout_fingerprint() {
+    return bsc::detail::layout_fingerprint<Machine>();
+}
+template <class Chart>
+inline constexpr std::size_t timeout_slots =
+    bsc::detail::chart_layout<bsc::detail::chart_model<std::remove_cv_t<Chart>>>::timeout_slots;
+
+// How the member layer sees a type: an enum with a fixed underlying type, the number of an
+// aggregate's fields, their names.
+template <class T>
+inline constexpr bool has_fixed_underlying_type = bsc::detail::has_fixed_underlying_type<T>;
+template <class T>
+constexpr std::size_t field_count() {
+    return bsc::detail::field_count<T>();
+}
+template <class T>
+inline constexpr auto const& member_names = bsc::detail::member_names<T>;
 
 // ---- fault injection -------------------------------------------------------------------
 // with_faults<Injector>(chart) is the same chart with every guard and every action (transition,

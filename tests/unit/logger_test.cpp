@@ -77,6 +77,65 @@ TEST_CASE_TEMPLATE("the logger writes one line per dispatch, exit, transition an
     CHECK(m.observer().cycles() == 5);
 }
 
+namespace logger_test {
+struct job {
+    int n = 0;
+};
+struct finish {};
+struct jobs {
+    bsc::input<bool> ready;
+    bsc::input<bool> done;
+    int taken = 0;
+};
+inline constexpr auto is_ready = bsc::named<"ready">(bsc::guard([](jobs const& c) { return c.ready.get(); }));
+inline constexpr auto is_done = bsc::named("done", bsc::guard([](jobs const& c) { return c.done.get(); }));
+// Named guards (by type and by value) on an event's row and on an eventless row, and a row
+// that defers an event.
+inline constexpr auto guarded_chart = bsc::make_chart<jobs>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>, bsc::state<Done>),
+    bsc::state<Idle> + bsc::event<go>[is_ready] = bsc::state<Busy>,
+    bsc::state<Idle> + bsc::event<job> / [](jobs& c) { ++c.taken; },
+    bsc::state<Busy> + bsc::event<job> / bsc::defer,
+    bsc::state<Busy>[is_done && !is_ready] = bsc::state<Done>,
+    bsc::state<Done> + bsc::event<job> / bsc::defer,
+    bsc::state<Done> + bsc::event<finish> = bsc::state<Idle>);
+}  // namespace logger_test
+
+TEST_CASE_TEMPLATE("the logger names a transition's named guard, and reports a deferral as one", Backend, compiled,
+                   table) {
+    using namespace logger_test;
+    std::ostringstream out;
+    bsc_test::machine_t<Backend, decltype(guarded_chart), bsc::scan_policy, bsc::logger> m{guarded_chart, jobs{},
+                                                                                           bsc::logger{out}};
+    m.context().ready.set(true);
+    m.step(0ms);
+    m.dispatch(go{});
+    m.dispatch(job{7});
+    m.context().ready.set(false);
+    m.context().done.set(true);
+    m.step(1s);
+    m.dispatch(finish{});
+    CHECK(m.context().taken == 1);
+    CHECK(out.str() ==
+          "[0s] entry Root\n"
+          "[0s] entry Idle\n"
+          "[0s] dispatch go\n"
+          "[0s] exit Idle\n"
+          "[0s] transition Idle -> Busy on go [ready]\n"
+          "[0s] entry Busy\n"
+          "[0s] dispatch job\n"
+          "[0s] defer job in Busy\n"
+          "[1s #2] exit Busy\n"
+          "[1s #2] transition Busy -> Done on [done && !ready]\n"
+          "[1s #2] entry Done\n"
+          "[1s #2] defer job in Done\n"  // retried after the change of configuration, deferred again
+          "[1s] dispatch finish\n"
+          "[1s] exit Done\n"
+          "[1s] transition Done -> Idle on finish\n"
+          "[1s] entry Idle\n"
+          "[1s] transition Idle -> internal on job\n");
+}
+
 TEST_CASE_TEMPLATE("the logger's records go to a callback, with the cycle's number only inside a cycle", Backend,
                    compiled, table) {
     using namespace logger_test;

@@ -15,29 +15,19 @@
 #include <bsc/net/memory_transport.hpp>
 #include <bsc/net/node.hpp>
 
+#include "conveyor.hpp"
+
 using namespace std::chrono_literals;
 
 namespace net_test {
-struct Root;
-struct Idle;
-struct Running;
+using conveyor::Idle;
+using conveyor::Root;
+using conveyor::Running;
+using conveyor::controller;
+using conveyor::controller_io;
 struct Still;
 struct Moving;
 struct At;
-
-// The controller starts the motor when asked and stops it when the part has arrived.
-struct controller_io {
-    bsc::input<bool> request;
-    bsc::input<bool> arrived;
-    bsc::output<bool> motor;
-    int cycles = 0;  // steps taken, to tell a step from a held value
-};
-inline constexpr auto controller = bsc::make_chart<controller_io>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Running>),
-    bsc::state<Idle>[([](controller_io const& c) { return c.request.get() && !c.arrived.get(); })] /
-            [](controller_io& c) { c.motor.set(true); } = bsc::state<Running>,
-    bsc::state<Running>[([](controller_io const& c) { return c.arrived.get(); })] /
-            [](controller_io& c) { c.motor.set(false); } = bsc::state<Idle>);
 
 // The plant: the part moves while the motor runs and arrives after 300 ms of it.
 struct plant_io {
@@ -330,6 +320,38 @@ TEST_CASE("a node does not start from a damaged saved state") {
         out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     }
     std::filesystem::remove_all(dir);
+}
+
+namespace net_test {
+// A transport whose broker never answers: nothing goes out, nothing comes in.
+class unreachable_transport final : public bsc::net::transport {
+public:
+    void set_will(std::string_view, std::span<std::byte const>) override {}
+    void subscribe(std::string_view) override {}
+    void publish(std::string_view, std::span<std::byte const>) override {}
+    std::size_t poll(std::chrono::milliseconds, std::function<void(bsc::net::message const&)> const&) override {
+        return 0;
+    }
+    bool connected() const override { return false; }
+    std::string peer() const override { return "the MQTT broker at 192.0.2.1:1883"; }
+};
+}  // namespace net_test
+
+TEST_CASE("a node that cannot connect says so, and names a peer never heard from without a number") {
+    using system = net_test::line<bsc::hold_last>;
+    net_test::unreachable_transport t;
+    system s{};
+    bsc::net::node_options o;
+    o.name = "control";
+    o.actors = {"control"};
+    o.last_step = 3;
+    bsc::net::node<system> n(s, t, o);
+    CHECK(n.run_once(0ms) == 0);
+    auto const why = n.waiting();
+    INFO(why);
+    CHECK(why == "cannot reach the MQTT broker at 192.0.2.1:1883; control waits for belt to start (not heard from yet)");
+    CHECK(why.find("-9223372036854775808") == std::string::npos);
+    CHECK(n.completed(1) == std::numeric_limits<std::int64_t>::min());
 }
 
 TEST_CASE("a node refuses an actor the system does not have") {

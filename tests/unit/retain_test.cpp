@@ -22,6 +22,7 @@
 #include "retain_fixture.hpp"
 #include "../../examples/manufacturing_cell/controller.hpp"
 #include "../../examples/manufacturing_cell/monitor.hpp"
+#include "inside.hpp"
 
 namespace retain_test {
 
@@ -42,7 +43,7 @@ void refused_unchanged(M& m, std::span<std::byte const> bytes, bsc::restore_erro
 std::vector<std::byte> patched(std::vector<std::byte> bytes, std::size_t at, std::uint8_t value) {
     bytes[at] = std::byte{value};
     std::size_t const n = bytes.size() - 4;
-    std::uint32_t const crc = bsc::detail::crc32(bytes.data(), n);
+    std::uint32_t const crc = inside::crc32(bytes.data(), n);
     for (std::size_t i = 0; i < 4; ++i) bytes[n + i] = static_cast<std::byte>((crc >> (8 * i)) & 0xffu);
     return bytes;
 }
@@ -193,8 +194,8 @@ TEST_CASE("retain: bytes that are not this machine's state are refused with the 
 
     // Values out of range, behind a valid checksum: a configuration byte (one past the last child
     // of its composite), the flag "a cycle has run", the last outcome, a bool of the context.
-    using model = bsc::detail::chart_model<decltype(chart)>;
-    constexpr std::size_t payload = bsc::detail::retain::header_size;
+    using model = inside::model<decltype(chart)>;
+    constexpr std::size_t payload = inside::retain_header_size;
     std::size_t const slots = static_cast<std::size_t>(model::tree.slots);
     for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s) {
         if (model::tree.slot[s] < 0) continue;
@@ -208,7 +209,7 @@ TEST_CASE("retain: bytes that are not this machine's state are refused with the 
     refused_unchanged(m, patched(good, payload + slots + 8, 2), restore_error::invalid_value, payload + slots + 8);
     // The last outcome follows the timeout slots; the context follows it. Its first member is
     // `start` (a bool channel: pending, then current).
-    std::size_t const slots_timeouts = bsc::detail::chart_layout<bsc::detail::chart_model<decltype(chart)>>::timeout_slots;
+    std::size_t const slots_timeouts = inside::timeout_slots<decltype(chart)>;
     std::size_t const outcome_at = payload + slots + 9 + 8 * slots_timeouts;
     refused_unchanged(m, patched(good, outcome_at, 200), restore_error::invalid_value, outcome_at);
     refused_unchanged(m, patched(good, outcome_at + 2, 7), restore_error::invalid_value, outcome_at + 2);
@@ -222,9 +223,9 @@ enum class signed_level : std::int8_t { low = -1, high = 1 };
 enum class unsigned_level : std::uint8_t { low = 1, high = 2 };
 enum legacy_color { red, green };                 // no fixed underlying type: cannot be restored
 enum fixed_color : std::uint8_t { cyan, magenta };  // can
-static_assert(!bsc::detail::has_fixed_underlying_type<legacy_color>);
-static_assert(bsc::detail::has_fixed_underlying_type<fixed_color>);
-static_assert(bsc::detail::has_fixed_underlying_type<signed_level>);
+static_assert(!inside::has_fixed_underlying_type<legacy_color>);
+static_assert(inside::has_fixed_underlying_type<fixed_color>);
+static_assert(inside::has_fixed_underlying_type<signed_level>);
 struct with_signed_enum {
     bsc::input<bool> start;
     signed_level level{};
@@ -264,8 +265,8 @@ template <class Context>
 using layout_machine = bsc::machine<decltype(layout_chart<Context>)>;
 
 TEST_CASE("retain: the layout fingerprint tells members' names, order, types and channel kinds apart") {
-    using bsc::detail::chart_fingerprint;
-    using bsc::detail::layout_fingerprint;
+    using inside::chart_fingerprint;
+    using inside::layout_fingerprint;
     // The same states: the chart's fingerprint is the same.
     CHECK(chart_fingerprint<layout_machine<renamed>>() == chart_fingerprint<layout_machine<original_layout>>());
     constexpr std::array<std::uint64_t, 7> layouts = {
@@ -325,7 +326,7 @@ TEST_CASE("retain: a timer's state that no timer can come to is refused") {
     auto const idle = bsc::save(m);
     // header, one configuration byte, the clock, the flag, the outcome; then limit, start,
     // elapsed (8 bytes each), phase, expired
-    std::size_t const timer_at = bsc::detail::retain::header_size + 1 + 8 + 1 + 1;
+    std::size_t const timer_at = inside::retain_header_size + 1 + 8 + 1 + 1;
     machine target{timer_chart};
     refused_unchanged(target, patched(idle, timer_at + 7, 0x80), bsc::restore_error::invalid_value, timer_at);
     refused_unchanged(target, patched(idle, timer_at + 25, 1), bsc::restore_error::invalid_value, timer_at);  // idle, expired

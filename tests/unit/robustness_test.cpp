@@ -21,6 +21,7 @@
 
 #include "backends.hpp"
 #include "heap_meter.hpp"
+#include "inside.hpp"
 
 using namespace std::chrono_literals;
 using bsc_test::compiled;
@@ -99,7 +100,7 @@ inline constexpr auto referencing = bsc::make_chart<referencing_io>(
         ++c.plant.pieces;
     } = bsc::state<Busy>,
     bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
-static_assert(bsc::detail::field_count<referencing_io>() == 4);
+static_assert(inside::field_count<referencing_io>() == 4);
 }  // namespace rob
 
 TEST_CASE_TEMPLATE("channels after a reference member of the context are latched and published", Backend, compiled,

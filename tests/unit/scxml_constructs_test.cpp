@@ -32,12 +32,7 @@ struct Idle;
 struct ctx {
     std::string log;
 };
-inline constexpr auto log = [](char const* what) {
-    return bsc::action([what](ctx& c) {
-        if (!c.log.empty()) c.log += ' ';
-        c.log += what;
-    });
-};
+inline constexpr auto log = bsc_test::log_action<ctx>;
 }  // namespace beyond
 
 using namespace beyond;

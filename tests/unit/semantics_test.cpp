@@ -35,12 +35,7 @@ struct ctx {
     std::string log;
     bsc::input<bool> ready;  // the environment's: set between dispatches
 };
-inline constexpr auto log = [](char const* what) {
-    return bsc::action([what](ctx& c) {
-        if (!c.log.empty()) c.log += ' ';
-        c.log += what;
-    });
-};
+inline constexpr auto log = bsc_test::log_action<ctx>;
 
 // What a machine's chart logged after the first `mark` characters of its log, without the space
 // that separates it from what came before (the log is the chart's: the test reads it, and

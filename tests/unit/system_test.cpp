@@ -11,6 +11,7 @@
 #include <bsc/verify.hpp>
 
 #include "backends.hpp"
+#include "conveyor.hpp"
 
 using namespace std::chrono_literals;
 using bsc_test::compiled;
@@ -18,25 +19,14 @@ using bsc_test::machine_t;
 using bsc_test::table;
 
 namespace sys {
-struct Root;
-struct Idle;
-struct Running;
+using conveyor::Idle;
+using conveyor::Root;
+using conveyor::Running;
+using conveyor::controller;
+using conveyor::controller_io;
 struct Still;
 struct Moving;
 struct At;
-
-// The controller: start the motor when asked, stop it when the sensor says the part arrived.
-struct controller_io {
-    bsc::input<bool> request;
-    bsc::input<bool> arrived;
-    bsc::output<bool> motor;
-};
-inline constexpr auto controller = bsc::make_chart<controller_io>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Running>),
-    bsc::state<Idle>[([](controller_io const& c) { return c.request.get() && !c.arrived.get(); })] /
-            [](controller_io& c) { c.motor.set(true); } = bsc::state<Running>,
-    bsc::state<Running>[([](controller_io const& c) { return c.arrived.get(); })] /
-            [](controller_io& c) { c.motor.set(false); } = bsc::state<Idle>);
 
 // The plant: a part moves while the motor runs and reaches the sensor after 300 ms; the
 // environment takes it away (reset).

@@ -12,6 +12,8 @@
 
 #include <bsc/table/engine.hpp>
 
+#include "trace.hpp"
+
 #include "inside.hpp"
 
 namespace tbl {
@@ -24,12 +26,7 @@ struct ctx {
     bool flag = false;
     std::string log;
 };
-inline constexpr auto log = [](char const* what) {
-    return bsc::action([what](ctx& c) {
-        if (!c.log.empty()) c.log += ' ';
-        c.log += what;
-    });
-};
+inline constexpr auto log = bsc_test::log_action<ctx>;
 }  // namespace tbl
 
 using namespace tbl;

@@ -1,5 +1,6 @@
 #pragma once
-// A test observer that records entries, exits and transitions as one readable string.
+// Traces as one readable string: a test observer that records entries, exits and transitions,
+// and an action that appends a word to the context's own `log`.
 
 #include <string>
 #include <string_view>
@@ -19,6 +20,16 @@ struct trace_observer {
     void on_transition(auto source, auto target, auto const&) const {
         put(std::string(source.name) + ">" + std::string(target.name));
     }
+};
+
+// `log_action<ctx>("enter A")`: an action that appends the word to `ctx::log`, a std::string,
+// separated by a space.
+template <class Ctx>
+inline constexpr auto log_action = [](char const* what) {
+    return bsc::action([what](Ctx& c) {
+        if (!c.log.empty()) c.log += ' ';
+        c.log += what;
+    });
 };
 
 }  // namespace bsc_test

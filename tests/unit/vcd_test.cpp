@@ -16,6 +16,7 @@
 #include <string>
 
 #include "backends.hpp"
+#include "inside.hpp"
 
 namespace vcd_test {
 
@@ -63,10 +64,10 @@ inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::state<Work> + bsc::event<stop> / [](ctx& c) { c.dwell.reset(); } = bsc::state<Mode<1, 2>>,
     bsc::state<Mode<1, 2>> + bsc::event<go> = bsc::state<Idle>);
 
-static_assert(bsc::detail::member_names<ctx>[0] == "start");
-static_assert(bsc::detail::member_names<ctx>[3] == "s");
-static_assert(bsc::detail::member_names<ctx>[6] == "raw");
-static_assert(bsc::detail::member_names<spindle>[1] == "limits");
+static_assert(inside::member_names<ctx>[0] == "start");
+static_assert(inside::member_names<ctx>[3] == "s");
+static_assert(inside::member_names<ctx>[6] == "raw");
+static_assert(inside::member_names<spindle>[1] == "limits");
 
 constexpr char const* header =
     "$comment bsc::vcd_recorder: the states, channels, timers and variables of one machine $end\n"

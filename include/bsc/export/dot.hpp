@@ -6,9 +6,12 @@
 // parallel states are clusters; the regions of a parallel state are dashed clusters. A
 // composite's initial child is marked by an edge from a small black dot; history by a circled
 // H (shallow) or H* (deep) inside the composite. Transitions are edges labelled
-// "event [guard] / action"; an edge from or to a composite or parallel state starts or ends at
-// the cluster's border (`compound=true` with `ltail`/`lhead`, through an invisible anchor node
-// inside the cluster).
+// "event [guard] / action", the label padded with two spaces on each side so that the labels of
+// neighbouring edges never run together; an edge from or to a composite or parallel state starts
+// or ends at the cluster's border (`compound=true` with `ltail`/`lhead`, through an invisible
+// anchor node inside the cluster); the label of an edge that crosses a cluster's border, which
+// Graphviz may place far from the part it draws, is tied to it by a line (`decorate`). Nodes
+// and ranks are spread (`nodesep`, `ranksep`) to leave room for the labels.
 
 #include <string>
 #include <string_view>
@@ -95,7 +98,7 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
 
 inline std::string to_dot(diagram const& m) {
     std::string out = "digraph " + dot_quoted(m[0].label) + " {\n";
-    out += "    compound=true;\n";
+    out += "    compound=true; nodesep=0.6; ranksep=0.8; forcelabels=true;\n";
     out += "    fontname=\"Helvetica\"; fontsize=11;\n";
     out += "    node [shape=box, style=rounded, fontname=\"Helvetica\", fontsize=11];\n";
     out += "    edge [fontname=\"Helvetica\", fontsize=9];\n";
@@ -108,11 +111,20 @@ inline std::string to_dot(diagram const& m) {
             std::string attributes;
             auto const add = [&](std::string const& a) { attributes += (attributes.empty() ? "" : ", ") + a; };
             auto const label = t.label();
-            if (!label.empty()) add("label=" + dot_quoted(label));
+            if (!label.empty()) add("label=" + dot_quoted("  " + label + "  "));
             // Graphviz ignores ltail when the head is inside the tail's cluster, and lhead when
             // the tail is inside the head's cluster; such an edge starts or ends at the anchor.
-            if (!m[t.source].is_leaf() && !m.contains(t.source, target)) add("ltail=" + dot_cluster(m, t.source));
-            if (!m[target].is_leaf() && !m.contains(target, t.source)) add("lhead=" + dot_cluster(m, target));
+            bool clipped = false;
+            if (!m[t.source].is_leaf() && !m.contains(t.source, target)) {
+                add("ltail=" + dot_cluster(m, t.source));
+                clipped = true;
+            }
+            if (!m[target].is_leaf() && !m.contains(target, t.source)) {
+                add("lhead=" + dot_cluster(m, target));
+                clipped = true;
+            }
+            // Graphviz may place the label of an edge that crosses a cluster's border far from it.
+            if (!label.empty() && (clipped || m[t.source].parent != m[target].parent)) add("decorate=true");
             out += (attributes.empty() ? "" : " [" + attributes + "]") + ";\n";
         }
     }

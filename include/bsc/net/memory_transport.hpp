@@ -43,6 +43,7 @@ public:
         return connected_ ? deliver_all(inbox_, deliver) : 0;
     }
     bool connected() const override { return connected_; }
+    std::string peer() const override { return "the memory bus"; }
 
     /// The connection breaks: what was not yet delivered is lost, the others receive the will.
     void disconnect() {

@@ -40,6 +40,8 @@ public:
     virtual std::size_t poll(std::chrono::milliseconds timeout, std::function<void(message const&)> const& deliver) = 0;
     /// Whether the connection is up now.
     virtual bool connected() const = 0;
+    /// What the transport connects to, for diagnostics, e.g. "the MQTT broker at 127.0.0.1:1883".
+    virtual std::string peer() const { return "the network"; }
 };
 
 /// Hands every message of `inbox` to `deliver`, oldest first, and empties it; returns how many.
