@@ -21,7 +21,7 @@ int main() {
     bool const ok = bsc::to_mermaid(turnstile::chart).find("Unlocked --> Locked : push") != std::string::npos &&
                     bsc::to_scxml(turnstile::chart).find("<transition event=\"coin\" target=\"Unlocked\"/>") !=
                         std::string::npos &&
-                    bsc::to_dot(turnstile::chart).find("\"Locked\" -> \"Unlocked\" [label=\"coin\"];") !=
+                    bsc::to_dot(turnstile::chart).find("\"Locked\" -> \"Unlocked\" [label=\"  coin  \"];") !=
                         std::string::npos &&
                     bsc::to_plantuml(turnstile::chart).find("Locked --> Unlocked : coin") != std::string::npos;
     std::puts(ok ? "single header export.hpp: ok" : "single header export.hpp: FAILED");
