@@ -1172,8 +1172,10 @@ auto timeout_periods(Machine& m, time_frame own) {
                 order[k] = first + k;
                 raw[first + k] = own.periods(armed[first + k]);
             }
-            std::stable_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count),
-                             [&](std::size_t a, std::size_t b) { return raw[a] < raw[b]; });
+            // std::sort with the slot as the tie-break: the order of a stable sort, without the
+            // buffer std::stable_sort allocates.
+            std::sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count),
+                      [&](std::size_t a, std::size_t b) { return raw[a] < raw[b] || (raw[a] == raw[b] && a < b); });
             std::uint64_t kept = 0;
             for (std::size_t k = 0; k < count; ++k) {
                 std::uint64_t const step = k == 0 ? raw[order[0]] : raw[order[k]] - raw[order[k - 1]];
