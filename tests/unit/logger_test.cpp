@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "backends.hpp"
@@ -134,6 +135,26 @@ TEST_CASE_TEMPLATE("the logger names a transition's named guard, and reports a d
           "[1s] transition Done -> Idle on finish\n"
           "[1s] entry Idle\n"
           "[1s] transition Idle -> internal on job\n");
+}
+
+// An observer with the guard and deferral hooks only: the machine calls them with no
+// on_transition beside them, on either back end.
+struct guards_and_deferrals {
+    std::vector<std::string> seen;
+    void on_guard(std::string_view guard) { seen.emplace_back(guard); }
+    template <class State, class E>
+    void on_defer(State, E const&) { seen.emplace_back("defer"); }
+};
+
+TEST_CASE_TEMPLATE("an observer of guards and deferrals alone is called", Backend, compiled, table) {
+    using namespace logger_test;
+    bsc_test::machine_t<Backend, decltype(guarded_chart), bsc::scan_policy, guards_and_deferrals> m{
+        guarded_chart, jobs{}, guards_and_deferrals{}};
+    m.context().ready.set(true);
+    m.step(0ms);
+    m.dispatch(go{});
+    m.dispatch(job{7});
+    CHECK(m.observer().seen == std::vector<std::string>{"ready", "defer"});
 }
 
 TEST_CASE_TEMPLATE("the logger's records go to a callback, with the cycle's number only inside a cycle", Backend,

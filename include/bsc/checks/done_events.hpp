@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 
 #include <bsc/dsl/row.hpp>
 #include <bsc/model/chart_model.hpp>
@@ -74,6 +75,12 @@ constexpr done_finding find_dead_done_row(topology<N> const& t, row_table<R> con
             return {static_cast<int>(i), done_fault::source_inactive};
     }
     return {};
+}
+
+// Whether a chart's events include a completion event: only then is there a row to check.
+template <class... Events>
+constexpr bool takes_done_event(type_list<Events...>) {
+    return (!std::is_void_v<typename completed_state<Events>::type> || ...);
 }
 
 // completes[e] for the events of a chart (see find_dead_done_row).

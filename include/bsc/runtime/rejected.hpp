@@ -15,20 +15,11 @@
 
 namespace bsc::detail {
 
-// The chart a machine runs: Chart itself, or the chart a bsc::chart_ref names.
+// Declared on `decltype(chart)` or on `bsc::chart_ref<chart>` (whose chart_type is the chart's
+// type), alike: either way the chart's own errors are the only ones.
 template <class Chart>
-struct referred_chart {
-    using type = Chart;
-};
-template <auto const& Chart>
-struct referred_chart<chart_ref<Chart>> {
-    using type = std::remove_cvref_t<decltype(Chart)>;
-};
-
-// Declared on `decltype(chart)` or on `bsc::chart_ref<chart>`, alike: either way the chart's
-// own errors are the only ones.
-template <class Chart>
-concept rejected = is_rejected_chart<typename referred_chart<std::remove_cv_t<Chart>>::type>;
+concept rejected = is_rejected_chart<std::remove_cv_t<Chart>> ||
+                   (is_chart_ref<std::remove_cv_t<Chart>> && is_rejected_chart<typename std::remove_cv_t<Chart>::chart_type>);
 
 template <class Chart>
 class inert_machine {
