@@ -36,6 +36,16 @@ constexpr duration shifted(duration t, duration shift) {
     return duration{a + b};
 }
 
+// to - from, saturated at duration::min() and duration::max(), as shifted.
+constexpr duration difference(duration to, duration from) {
+    auto const a = to.count();
+    auto const b = from.count();
+    using limits = std::numeric_limits<duration::rep>;
+    if (b < 0 && a > limits::max() + b) return duration::max();
+    if (b > 0 && a < limits::min() + b) return duration::min();
+    return duration{a - b};
+}
+
 // Whether t + shift lies past duration::max(): a time no clock of a machine ever reaches (a
 // delayed event due then never comes due). A shift below duration::min() is not "past".
 constexpr bool shifted_past_max(duration t, duration shift) {

@@ -83,6 +83,15 @@ template <template <class> class Is, class Default, class T, class... Ts>
 struct first_such<Is, Default, T, Ts...>
     : std::conditional_t<Is<T>::value, std::type_identity<T>, first_such<Is, Default, Ts...>> {};
 
+// Two pointers to members (or any two template arguments) that designate the same member.
+template <auto A, auto B>
+constexpr bool same_member_pointer() {
+    if constexpr (std::is_same_v<decltype(A), decltype(B)>)
+        return A == B;
+    else
+        return false;
+}
+
 }  // namespace detail
 
 /// A signal: the published value of output channel `FromChannel` of actor `FromActor` is
@@ -119,10 +128,7 @@ struct link {
     }
     template <auto Actor>
     static constexpr bool targets() {
-        if constexpr (std::is_same_v<decltype(Actor), decltype(ToActor)>)
-            return Actor == ToActor;
-        else
-            return false;
+        return detail::same_member_pointer<Actor, ToActor>();
     }
 };
 
@@ -173,15 +179,6 @@ template <class T>
 struct link_entry : std::bool_constant<is_link<T>> {};
 template <class T>
 struct from_outside_entry : std::bool_constant<is_from_outside<T>> {};
-
-// Two pointers to members (or any two template arguments) that designate the same member.
-template <auto A, auto B>
-constexpr bool same_member_pointer() {
-    if constexpr (std::is_same_v<decltype(A), decltype(B)>)
-        return A == B;
-    else
-        return false;
-}
 
 // Channel kinds: bsc::input, bsc::output, bsc::inout (each only itself).
 template <class T>
@@ -266,19 +263,6 @@ struct link_options_rules<type_list<Options...>> {
 };
 
 BSC_DETAIL_DECLARED_ONLY_BEGIN
-// The position of the member that Channel designates among the members of the aggregate
-// Context (member_count<Context> if none), found by comparing addresses, as member_name does.
-template <class Context, auto Channel>
-constexpr std::size_t member_index() {
-    auto const& object = declared_only<Context>.value;
-    void const* const target = &(object.*Channel);
-    return [&]<std::size_t... I>(std::index_sequence<I...>) {
-        auto const fields = tie_fields(object);
-        std::size_t found = sizeof...(I);
-        ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
-        return found;
-    }(std::make_index_sequence<member_count<Context>>{});
-}
 BSC_DETAIL_DECLARED_ONLY_END
 
 // The name of member I of Context, as a template argument.
@@ -409,7 +393,7 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
     static constexpr auto driven_members() {
         std::array<bool, member_count<Context> + 1> driven{};
         auto mark = [&]<auto A, auto Channel>() {
-            if constexpr (same_member_pointer<A, Actor>()) driven[member_index<Context, Channel>()] = true;
+            if constexpr (same_member_pointer<A, Actor>()) driven[member_index<Channel>()] = true;
         };
         []<class... L>(std::tuple<L...>*, auto& m) {
             (m.template operator()<L::to_actor, L::to_channel>(), ...);

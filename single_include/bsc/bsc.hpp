@@ -148,24 +148,6 @@ struct fixed_string {
 #define BSC_DETAIL_IS_CLASS(T) (std::is_class_v<T>)
 #endif
 
-// ---- arithmetic ------------------------------------------------------------------------------------
-// BSC_DETAIL_SUB_OVERFLOWS(a, b, out): whether a - b overflows the type of *out (a, b and *out
-// of one signed integer type); if not, *out = a - b.
-#if defined(__GNUC__) || defined(__clang__)
-#define BSC_DETAIL_SUB_OVERFLOWS(a, b, out) __builtin_sub_overflow(a, b, out)
-#else
-#include <limits>
-namespace bsc::detail {
-template <class T>
-constexpr bool sub_overflows(T a, T b, T* out) {
-    if (b > 0 ? a < std::numeric_limits<T>::min() + b : a > std::numeric_limits<T>::max() + b) return true;
-    *out = static_cast<T>(a - b);
-    return false;
-}
-}  // namespace bsc::detail
-#define BSC_DETAIL_SUB_OVERFLOWS(a, b, out) ::bsc::detail::sub_overflows(a, b, out)
-#endif
-
 // ---- names -----------------------------------------------------------------------------------------
 // BSC_DETAIL_FUNCTION_SIGNATURE: the enclosing function's signature, with its template arguments
 // spelled out, from which detail/type_name.hpp reads a type's name and detail/member_names.hpp a
@@ -1253,6 +1235,16 @@ constexpr duration shifted(duration t, duration shift) {
     return duration{a + b};
 }
 
+// to - from, saturated at duration::min() and duration::max(), as shifted.
+constexpr duration difference(duration to, duration from) {
+    auto const a = to.count();
+    auto const b = from.count();
+    using limits = std::numeric_limits<duration::rep>;
+    if (b < 0 && a > limits::max() + b) return duration::max();
+    if (b > 0 && a < limits::min() + b) return duration::min();
+    return duration{a - b};
+}
+
 // Whether t + shift lies past duration::max(): a time no clock of a machine ever reaches (a
 // delayed event due then never comes due). A shift below duration::min() is not "past".
 constexpr bool shifted_past_max(duration t, duration shift) {
@@ -2145,6 +2137,17 @@ namespace detail {
     std::abort();
 #endif
 }
+
+// A delay of bsc::after or bsc::raise_after as a bsc::duration, refused (the functions above)
+// when it is negative or does not fit.
+template <class Rep, class Period>
+constexpr duration checked_delay(std::chrono::duration<Rep, Period> delay) {
+    if (delay < std::chrono::duration<Rep, Period>::zero()) bsc_after_negative_delay();
+    if (std::chrono::duration<long double, std::nano>(delay) >
+        std::chrono::duration<long double, std::nano>(duration::max()))
+        bsc_after_delay_beyond_bsc_duration();
+    return std::chrono::duration_cast<duration>(delay);
+}
 }  // namespace detail
 
 /// A state-scoped timeout trigger: `state<S> + after(3s) = state<T>` fires in the first cycle
@@ -2157,11 +2160,7 @@ namespace detail {
 /// compile (constexpr chart) or throws std::invalid_argument / std::out_of_range.
 template <class Rep, class Period>
 constexpr detail::timeout_ref after(std::chrono::duration<Rep, Period> delay) {
-    if (delay < std::chrono::duration<Rep, Period>::zero()) detail::bsc_after_negative_delay();
-    if (std::chrono::duration<long double, std::nano>(delay) >
-        std::chrono::duration<long double, std::nano>(duration::max()))
-        detail::bsc_after_delay_beyond_bsc_duration();
-    return {std::chrono::duration_cast<duration>(delay)};
+    return {detail::checked_delay(delay)};
 }
 
 }  // namespace bsc
@@ -3194,6 +3193,7 @@ constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 
 
 namespace bsc::detail {
@@ -3257,6 +3257,12 @@ constexpr done_finding find_dead_done_row(topology<N> const& t, row_table<R> con
             return {static_cast<int>(i), done_fault::source_inactive};
     }
     return {};
+}
+
+// Whether a chart's events include a completion event: only then is there a row to check.
+template <class... Events>
+constexpr bool takes_done_event(type_list<Events...>) {
+    return (!std::is_void_v<typename completed_state<Events>::type> || ...);
 }
 
 // completes[e] for the events of a chart (see find_dead_done_row).
@@ -4345,8 +4351,13 @@ constexpr auto check_determinism() {
 template <class Chart>
 constexpr auto check_done_events() {
     using model = chart_model<Chart>;
-    constexpr done_finding found =
-        find_dead_done_row(model::tree, model::rows, completed_states<typename model::tags>(typename model::events{}));
+    constexpr done_finding found = [] {
+        if constexpr (takes_done_event(typename model::events{}))
+            return find_dead_done_row(model::tree, model::rows,
+                                      completed_states<typename model::tags>(typename model::events{}));
+        else
+            return done_finding{};  // most charts: nothing to look at
+    }();
     if constexpr (found.fault == done_fault::none) {
         return type_list<>{};
     } else {
@@ -4910,6 +4921,19 @@ struct chart_layout {
             if (count > 1) return true;
         return false;
     }();
+
+    // Whether timeout row `row` competes with other timeouts of its state by due time.
+    static constexpr bool competes_by_due_time(int row) {
+        return has_competing_timeouts && is_timeout_row(row) &&
+               timeout_slot_count[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(row)])] > 1;
+    }
+
+    // Whether timeout row `row`, when it fires, leaves its state active and so counts again from
+    // that cycle: an internal timeout (no domain), or a local one (its domain is its state).
+    static constexpr bool rearms(int row) {
+        auto const r = static_cast<std::size_t>(row);
+        return is_timeout_row(row) && (rows.domain[r] < 0 || rows.domain[r] == rows.source[r]);
+    }
 
     // The rows of each state, in declaration order, all kinds: those of state s are
     // from_source[from_source_begin[s]] to from_source[from_source_begin[s + 1]] (exclusive).
@@ -6892,13 +6916,13 @@ template <class Class, class Member>
 Class class_of_member(Member Class::*);
 
 BSC_DETAIL_DECLARED_ONLY_BEGIN
-/// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
-/// `&axis::speed`. Found by comparing addresses: GCC 12 does not accept the address that `.*`
-/// yields as a template argument, so the member's index among the aggregate's is looked up.
+/// The position of the member that the pointer to member `Member` designates among its
+/// aggregate's members (their count if none), found by comparing addresses: GCC 12 does not
+/// accept the address that `.*` yields as a template argument.
 template <auto Member>
-constexpr std::string_view member_name() {
+constexpr std::size_t member_index() {
     using Class = decltype(class_of_member(Member));
-    constexpr std::size_t index = []<std::size_t... I>(std::index_sequence<I...>) {
+    return []<std::size_t... I>(std::index_sequence<I...>) {
         auto const& object = declared_only<Class>.value;
         void const* const target = &(object.*Member);
         auto const fields = tie_fields(object);
@@ -6906,6 +6930,13 @@ constexpr std::string_view member_name() {
         ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
         return found;
     }(std::make_index_sequence<member_names<Class>.size()>{});
+}
+/// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
+/// `&axis::speed`.
+template <auto Member>
+constexpr std::string_view member_name() {
+    using Class = decltype(class_of_member(Member));
+    constexpr std::size_t index = member_index<Member>();
     static_assert(index < member_names<Class>.size(), "the pointer designates no member of the aggregate");
     return member_names<Class>[index];
 }
@@ -7813,78 +7844,84 @@ constexpr void run_block(Block&& block, OnFailure&& on_failure) {
 // The calls a machine makes to its observer, by state and row number: each hook is called
 // only if the observer has it, and a machine without observer generates nothing.
 
+#include <type_traits>
+
+// begin include/bsc/detail/guard_label.hpp
+// The label of a guard, as the exports draw it and the logger writes it: its name (bsc::named),
+// a composition of named guards with their operators, or "guard". Also the pieces the labels
+// of actions share (export/model.hpp): has_name, expression, parenthesized.
+
 #include <string>
 #include <string_view>
-#include <type_traits>
 
 
 namespace bsc::detail {
 
-// Whether a row defers its event (`/ bsc::defer`).
-template <class Row>
-inline constexpr bool row_defers = [] {
-    if constexpr (requires { Row::defers; })
-        return Row::defers;
-    else
-        return false;
-}();
+/// A guard or action that has a name (bsc::named, or any callable with a `name` member).
+template <class T>
+concept has_name = requires(T const& t) { std::string_view{t.name}; };
 
-// What kind of guard expression G is.
+template <class T>
+inline constexpr bool is_not_guard = false;
 template <class G>
-struct guard_kind {
-    static constexpr bool fn = false, negation = false, conjunction = false, disjunction = false;
-};
+inline constexpr bool is_not_guard<not_guard<G>> = true;
+template <class T>
+inline constexpr bool is_and_guard = false;
+template <class L, class R>
+inline constexpr bool is_and_guard<and_guard<L, R>> = true;
+template <class T>
+inline constexpr bool is_or_guard = false;
+template <class L, class R>
+inline constexpr bool is_or_guard<or_guard<L, R>> = true;
+template <class T>
+inline constexpr bool is_guard_fn = false;
 template <class F>
-struct guard_kind<guard_fn<F>> : guard_kind<void> {
-    static constexpr bool fn = true;
-};
-template <class G>
-struct guard_kind<not_guard<G>> : guard_kind<void> {
-    static constexpr bool negation = true;
-};
-template <class L, class R>
-struct guard_kind<and_guard<L, R>> : guard_kind<void> {
-    static constexpr bool conjunction = true;
-};
-template <class L, class R>
-struct guard_kind<or_guard<L, R>> : guard_kind<void> {
-    static constexpr bool disjunction = true;
+inline constexpr bool is_guard_fn<guard_fn<F>> = true;
+
+/// A label and whether any part of it was named; `precedence` places parentheses:
+/// 1 for ||, 2 for &&, 3 for a name or a negation.
+struct expression {
+    std::string text;
+    bool named = false;
+    int precedence = 3;
 };
 
-// A guard as the exports write it (export/model.hpp, guard_expression): its name, given with
-// bsc::named<"text"> or bsc::named(text, f); a composition with its unnamed parts as "guard", in
-// parentheses where precedence needs them (3: a name or !, 2: &&, 1: ||). Appends to `out`;
-// returns whether some part has a name.
-template <class G>
-bool guard_text(G const& g, std::string& out, int outer = 0);
-template <class L, class R>
-bool guard_text_of_pair(L const& l, R const& r, std::string_view op, int precedence, std::string& out, int outer) {
-    if (outer > precedence) out += '(';
-    bool const left = guard_text(l, out, precedence);
-    out.append(op);
-    bool const right = guard_text(r, out, precedence);
-    if (outer > precedence) out += ')';
-    return left || right;
+inline std::string parenthesized(expression const& e, int context) {
+    return e.precedence < context ? "(" + e.text + ")" : e.text;
 }
+
 template <class G>
-bool guard_text(G const& g, std::string& out, int outer) {
-    if constexpr (requires { std::string_view{g.name}; }) {
-        out.append(std::string_view{g.name});
-        return true;
-    } else if constexpr (guard_kind<G>::fn) {
-        return guard_text(g.fn, out, outer);
-    } else if constexpr (guard_kind<G>::negation) {
-        out += '!';
-        return guard_text(g.g, out, 3);
-    } else if constexpr (guard_kind<G>::conjunction) {
-        return guard_text_of_pair(g.l, g.r, " && ", 2, out, outer);
-    } else if constexpr (guard_kind<G>::disjunction) {
-        return guard_text_of_pair(g.l, g.r, " || ", 1, out, outer);
+expression guard_expression(G const& g) {
+    if constexpr (has_name<G>) {
+        return {std::string(std::string_view{g.name}), true, 3};
+    } else if constexpr (is_not_guard<G>) {
+        auto const inner = guard_expression(g.g);
+        return {"!" + parenthesized(inner, 3), inner.named, 3};
+    } else if constexpr (is_and_guard<G> || is_or_guard<G>) {
+        int const precedence = is_and_guard<G> ? 2 : 1;
+        auto const l = guard_expression(g.l);
+        auto const r = guard_expression(g.r);
+        return {parenthesized(l, precedence) + (is_and_guard<G> ? " && " : " || ") + parenthesized(r, precedence),
+                l.named || r.named, precedence};
+    } else if constexpr (is_guard_fn<G>) {
+        return guard_expression(g.fn);
     } else {
-        out += "guard";
-        return false;
+        return {"guard", false, 3};
     }
 }
+
+/// The label of a guard: its name, a composition of named guards ("!released && at_home", an
+/// unnamed part shown as "guard"), or "guard" when no part has a name.
+template <class G>
+std::string guard_label(G const& g) {
+    auto const e = guard_expression(g);
+    return e.named ? e.text : "guard";
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/guard_label.hpp
+
+namespace bsc::detail {
 
 template <class Model, class Observer>
 struct notify {
@@ -7907,7 +7944,8 @@ struct notify {
     template <int Row, class E>
     static constexpr bool observes_row =
         observes_transition<Observer, source_tag<Row>, target_tag<Row>, reported_event<Row, E>> ||
-        observes_rows<Observer>;
+        observes_rows<Observer> || (Model::rows.guarded[Row] && observes_guards<Observer>) ||
+        (Model::rows.defers[Row] && observes_deferrals<Observer, source_tag<Row>, E>);
 
     // After state S's entry actions.
     template <int S>
@@ -7924,16 +7962,9 @@ struct notify {
     template <int Row, class RowObject, class E>
     static constexpr void transition(Observer& o, RowObject const& row, E const& e) {
         using reported = reported_event<Row, E>;
-        using row_type = typename Model::template row_at<Row>;
-        if constexpr (observes_guards<Observer>) {
-            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row.guard)>, no_guard>) {
-                std::string text;
-                if (!guard_text(row.guard, text)) text = "guard";
-                o.on_guard(text);
-            }
-        }
-        if constexpr (observes_deferrals<Observer, source_tag<Row>, E>)
-            if constexpr (row_defers<row_type>) o.on_defer(source_tag<Row>{}, e);
+        if constexpr (Model::rows.guarded[Row] && observes_guards<Observer>) o.on_guard(guard_label(row.guard));
+        if constexpr (Model::rows.defers[Row] && observes_deferrals<Observer, source_tag<Row>, E>)
+            o.on_defer(source_tag<Row>{}, e);
         if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, reported>) {
             if constexpr (std::is_same_v<reported, timeout_elapsed>)
                 o.on_transition(source_tag<Row>{}, target_tag<Row>{}, timeout_elapsed{row.trigger_value.delay});
@@ -9040,11 +9071,7 @@ namespace bsc {
 /// one built at run time throws std::invalid_argument / std::out_of_range).
 template <class Rep, class Period, class E>
 constexpr auto raise_after(std::chrono::duration<Rep, Period> delay, E e, int id = 0) {
-    if (delay < std::chrono::duration<Rep, Period>::zero()) detail::bsc_after_negative_delay();
-    if (std::chrono::duration<long double, std::nano>(delay) >
-        std::chrono::duration<long double, std::nano>(duration::max()))
-        detail::bsc_after_delay_beyond_bsc_duration();
-    return detail::delayed_raise<E>{{}, std::chrono::duration_cast<duration>(delay), std::move(e), id};
+    return detail::delayed_raise<E>{{}, detail::checked_delay(delay), std::move(e), id};
 }
 
 /// An action that cancels the delayed events still pending under `id` (bsc::raise_after).
@@ -9322,20 +9349,11 @@ using queue_for = std::conditional_t<
 
 namespace bsc::detail {
 
-// The chart a machine runs: Chart itself, or the chart a bsc::chart_ref names.
+// Declared on `decltype(chart)` or on `bsc::chart_ref<chart>` (whose chart_type is the chart's
+// type), alike: either way the chart's own errors are the only ones.
 template <class Chart>
-struct referred_chart {
-    using type = Chart;
-};
-template <auto const& Chart>
-struct referred_chart<chart_ref<Chart>> {
-    using type = std::remove_cvref_t<decltype(Chart)>;
-};
-
-// Declared on `decltype(chart)` or on `bsc::chart_ref<chart>`, alike: either way the chart's
-// own errors are the only ones.
-template <class Chart>
-concept rejected = is_rejected_chart<typename referred_chart<std::remove_cv_t<Chart>>::type>;
+concept rejected = is_rejected_chart<std::remove_cv_t<Chart>> ||
+                   (is_chart_ref<std::remove_cv_t<Chart>> && is_rejected_chart<typename std::remove_cv_t<Chart>::chart_type>);
 
 template <class Chart>
 class inert_machine {
@@ -10050,11 +10068,20 @@ private:
             return true;
     }
 
-    // Condition-driven row Row, whose condition holds, fires; but if it is a timeout and a
-    // timeout row of its source declared after it is due too, came due first (plan.hpp,
-    // later_timeouts; detail::came_due_first) and its guard holds, that one fires instead: of a
-    // state's timeouts due at once, the first to come due. A state with one timeout row, and
-    // every eventless row, goes straight to fire_condition.
+    // Condition-driven row Row, whose condition holds, fires; a timeout that competes with
+    // others of its state by due time (layout.hpp, competes_by_due_time) goes through
+    // fire_first_due, every other row straight to fire_condition.
+    template <int Row>
+    constexpr void fire_candidate() {
+        if constexpr (plan::competes_by_due_time(Row))
+            fire_first_due<Row>();
+        else
+            fire_condition<Row>();
+    }
+
+    // Timeout row Row, due, fires; but if a timeout row of its source declared after it is due
+    // too, came due first (plan.hpp, later_timeouts; detail::came_due_first) and its guard
+    // holds, that one fires instead: of a state's timeouts due at once, the first to come due.
     template <int Row>
     constexpr void fire_first_due() {
         constexpr auto const& later = plan::template later_timeouts<Row>;
@@ -10095,9 +10122,8 @@ private:
             exit_below<d>();
         run_action<Row>(eventless{});
         run_entries<Row>();
-        // A timeout that leaves its state active (internal, or local: its domain is its state)
-        // counts again from now.
-        if constexpr ((d < 0 || d == rows.source[Row]) && plan::row_timeout_slot[Row] >= 0)
+        // A timeout that leaves its state active counts again from now (layout.hpp, rearms).
+        if constexpr (plan::rearms(Row))
             armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = this->cycle_time();
     }
 
@@ -10105,7 +10131,7 @@ private:
     constexpr bool try_component_candidates() {
         constexpr auto const& candidates = plan::template component_candidates<Frontier, Component>;
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return ((condition_holds<candidates[I]>() && (fire_first_due<candidates[I]>(), true)) || ...);
+            return ((condition_holds<candidates[I]>() && (fire_candidate<candidates[I]>(), true)) || ...);
         }(std::make_index_sequence<candidates.size()>{});
     }
 
@@ -10224,6 +10250,15 @@ template <template <class> class Is, class Default, class T, class... Ts>
 struct first_such<Is, Default, T, Ts...>
     : std::conditional_t<Is<T>::value, std::type_identity<T>, first_such<Is, Default, Ts...>> {};
 
+// Two pointers to members (or any two template arguments) that designate the same member.
+template <auto A, auto B>
+constexpr bool same_member_pointer() {
+    if constexpr (std::is_same_v<decltype(A), decltype(B)>)
+        return A == B;
+    else
+        return false;
+}
+
 }  // namespace detail
 
 /// A signal: the published value of output channel `FromChannel` of actor `FromActor` is
@@ -10260,10 +10295,7 @@ struct link {
     }
     template <auto Actor>
     static constexpr bool targets() {
-        if constexpr (std::is_same_v<decltype(Actor), decltype(ToActor)>)
-            return Actor == ToActor;
-        else
-            return false;
+        return detail::same_member_pointer<Actor, ToActor>();
     }
 };
 
@@ -10314,15 +10346,6 @@ template <class T>
 struct link_entry : std::bool_constant<is_link<T>> {};
 template <class T>
 struct from_outside_entry : std::bool_constant<is_from_outside<T>> {};
-
-// Two pointers to members (or any two template arguments) that designate the same member.
-template <auto A, auto B>
-constexpr bool same_member_pointer() {
-    if constexpr (std::is_same_v<decltype(A), decltype(B)>)
-        return A == B;
-    else
-        return false;
-}
 
 // Channel kinds: bsc::input, bsc::output, bsc::inout (each only itself).
 template <class T>
@@ -10407,19 +10430,6 @@ struct link_options_rules<type_list<Options...>> {
 };
 
 BSC_DETAIL_DECLARED_ONLY_BEGIN
-// The position of the member that Channel designates among the members of the aggregate
-// Context (member_count<Context> if none), found by comparing addresses, as member_name does.
-template <class Context, auto Channel>
-constexpr std::size_t member_index() {
-    auto const& object = declared_only<Context>.value;
-    void const* const target = &(object.*Channel);
-    return [&]<std::size_t... I>(std::index_sequence<I...>) {
-        auto const fields = tie_fields(object);
-        std::size_t found = sizeof...(I);
-        ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
-        return found;
-    }(std::make_index_sequence<member_count<Context>>{});
-}
 BSC_DETAIL_DECLARED_ONLY_END
 
 // The name of member I of Context, as a template argument.
@@ -10550,7 +10560,7 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
     static constexpr auto driven_members() {
         std::array<bool, member_count<Context> + 1> driven{};
         auto mark = [&]<auto A, auto Channel>() {
-            if constexpr (same_member_pointer<A, Actor>()) driven[member_index<Context, Channel>()] = true;
+            if constexpr (same_member_pointer<A, Actor>()) driven[member_index<Channel>()] = true;
         };
         []<class... L>(std::tuple<L...>*, auto& m) {
             (m.template operator()<L::to_actor, L::to_channel>(), ...);
@@ -10797,6 +10807,7 @@ struct transition_row {
     /// entry, or for an internal timeout the cycle it last fired in); -1 for the others.
     std::int16_t timeout_slot = -1;
     bool defers = false;  ///< the row defers its event (`/ bsc::defer`): it keeps the event, and has no action
+    bool rearms = false;  ///< a timeout that leaves its source active: it counts again from when it fires
     /// A transition with several targets (bsc::targets): the others after `to`; no_state where
     /// there are fewer.
     std::array<state_id, 3> more_to{};
@@ -10932,6 +10943,7 @@ private:
             row.delay = &delay_thunk<r>;
         row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
         row.defers = rows.defers[i];
+        row.rearms = layout::rearms(static_cast<int>(i));
         for (std::size_t k = 0; k < row.more_to.size(); ++k) row.more_to[k] = id(rows.more_targets[i][k]);
         return row;
     }
@@ -11578,11 +11590,9 @@ private:
         if (row.to != no_state) deactivate_path(row.domain);
         run_action(t, &no_event);
         enter_targets(row);
-        // A timeout that leaves its state active (internal, or local: its domain is its state)
-        // counts again from now.
+        // A timeout that leaves its state active counts again from now (layout.hpp, rearms).
         if constexpr (tables_type::timeout_slots > 0)
-            if ((row.to == no_state || row.domain == row.from) && row.timeout_slot >= 0)
-                this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->cycle_time();
+            if (row.rearms) this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->cycle_time();
     }
 
     // The event that eventless and timeout transitions receive.

@@ -77,26 +77,6 @@ namespace bsc::detail {
 
 // ---- Labels of guards and actions -------------------------------------------------------------
 
-/// A guard or action that has a name (bsc::named, or any callable with a `name` member).
-template <class T>
-concept has_name = requires(T const& t) { std::string_view{t.name}; };
-
-template <class T>
-inline constexpr bool is_not_guard = false;
-template <class G>
-inline constexpr bool is_not_guard<not_guard<G>> = true;
-template <class T>
-inline constexpr bool is_and_guard = false;
-template <class L, class R>
-inline constexpr bool is_and_guard<and_guard<L, R>> = true;
-template <class T>
-inline constexpr bool is_or_guard = false;
-template <class L, class R>
-inline constexpr bool is_or_guard<or_guard<L, R>> = true;
-template <class T>
-inline constexpr bool is_guard_fn = false;
-template <class F>
-inline constexpr bool is_guard_fn<guard_fn<F>> = true;
 template <class T>
 inline constexpr bool is_action_fn = false;
 template <class F>
@@ -109,46 +89,6 @@ template <class T>
 inline constexpr bool is_state_action = false;
 template <class A>
 inline constexpr bool is_state_action<state_action<A>> = true;
-
-/// A label and whether any part of it was named; `precedence` places parentheses:
-/// 1 for ||, 2 for &&, 3 for a name or a negation.
-struct expression {
-    std::string text;
-    bool named = false;
-    int precedence = 3;
-};
-
-inline std::string parenthesized(expression const& e, int context) {
-    return e.precedence < context ? "(" + e.text + ")" : e.text;
-}
-
-template <class G>
-expression guard_expression(G const& g) {
-    if constexpr (has_name<G>) {
-        return {std::string(std::string_view{g.name}), true, 3};
-    } else if constexpr (is_not_guard<G>) {
-        auto const inner = guard_expression(g.g);
-        return {"!" + parenthesized(inner, 3), inner.named, 3};
-    } else if constexpr (is_and_guard<G> || is_or_guard<G>) {
-        int const precedence = is_and_guard<G> ? 2 : 1;
-        auto const l = guard_expression(g.l);
-        auto const r = guard_expression(g.r);
-        return {parenthesized(l, precedence) + (is_and_guard<G> ? " && " : " || ") + parenthesized(r, precedence),
-                l.named || r.named, precedence};
-    } else if constexpr (is_guard_fn<G>) {
-        return guard_expression(g.fn);
-    } else {
-        return {"guard", false, 3};
-    }
-}
-
-/// The label of a guard: its name, a composition of named guards ("!released && at_home", an
-/// unnamed part shown as "guard"), or "guard" when no part has a name.
-template <class G>
-std::string guard_label(G const& g) {
-    auto const e = guard_expression(g);
-    return e.named ? e.text : "guard";
-}
 
 template <class A>
 expression action_expression(A const& a) {

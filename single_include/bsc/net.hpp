@@ -790,13 +790,6 @@ struct pass {
     duration shift{};  // added to every time the enclosing machine keeps
 };
 
-// to - from, saturated.
-constexpr duration difference(duration to, duration from) {
-    duration::rep d{};
-    if (BSC_DETAIL_SUB_OVERFLOWS(to.count(), from.count(), &d)) return from.count() < 0 ? duration::max() : duration::min();
-    return duration{d};
-}
-
 template <class Machine>
 void get_machine(byte_reader& r, Machine& m, pass const& p);
 
@@ -1101,14 +1094,6 @@ struct node_stats {
 
 namespace detail {
 
-template <auto A, auto B>
-constexpr bool same_member() {
-    if constexpr (std::is_same_v<decltype(A), decltype(B)>)
-        return A == B;
-    else
-        return false;
-}
-
 template <std::size_t I, auto... Members>
 struct nth_member;
 template <auto First, auto... Rest>
@@ -1134,7 +1119,7 @@ struct deployment<system<Actors, order<Steps...>, Entries...>> {
     template <auto Actor>
     static constexpr std::size_t place() {
         std::size_t i = 0, found = actor_count;
-        ((same_member<Actor, Steps>() ? (found = i, ++i) : ++i), ...);
+        ((bsc::detail::same_member_pointer<Actor, Steps>() ? (found = i, ++i) : ++i), ...);
         return found;
     }
     template <std::size_t I>

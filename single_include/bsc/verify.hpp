@@ -587,13 +587,6 @@ struct pass {
     duration shift{};  // added to every time the enclosing machine keeps
 };
 
-// to - from, saturated.
-constexpr duration difference(duration to, duration from) {
-    duration::rep d{};
-    if (BSC_DETAIL_SUB_OVERFLOWS(to.count(), from.count(), &d)) return from.count() < 0 ? duration::max() : duration::min();
-    return duration{d};
-}
-
 template <class Machine>
 void get_machine(byte_reader& r, Machine& m, pass const& p);
 

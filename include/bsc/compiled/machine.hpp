@@ -650,11 +650,20 @@ private:
             return true;
     }
 
-    // Condition-driven row Row, whose condition holds, fires; but if it is a timeout and a
-    // timeout row of its source declared after it is due too, came due first (plan.hpp,
-    // later_timeouts; detail::came_due_first) and its guard holds, that one fires instead: of a
-    // state's timeouts due at once, the first to come due. A state with one timeout row, and
-    // every eventless row, goes straight to fire_condition.
+    // Condition-driven row Row, whose condition holds, fires; a timeout that competes with
+    // others of its state by due time (layout.hpp, competes_by_due_time) goes through
+    // fire_first_due, every other row straight to fire_condition.
+    template <int Row>
+    constexpr void fire_candidate() {
+        if constexpr (plan::competes_by_due_time(Row))
+            fire_first_due<Row>();
+        else
+            fire_condition<Row>();
+    }
+
+    // Timeout row Row, due, fires; but if a timeout row of its source declared after it is due
+    // too, came due first (plan.hpp, later_timeouts; detail::came_due_first) and its guard
+    // holds, that one fires instead: of a state's timeouts due at once, the first to come due.
     template <int Row>
     constexpr void fire_first_due() {
         constexpr auto const& later = plan::template later_timeouts<Row>;
@@ -695,9 +704,8 @@ private:
             exit_below<d>();
         run_action<Row>(eventless{});
         run_entries<Row>();
-        // A timeout that leaves its state active (internal, or local: its domain is its state)
-        // counts again from now.
-        if constexpr ((d < 0 || d == rows.source[Row]) && plan::row_timeout_slot[Row] >= 0)
+        // A timeout that leaves its state active counts again from now (layout.hpp, rearms).
+        if constexpr (plan::rearms(Row))
             armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = this->cycle_time();
     }
 
@@ -705,7 +713,7 @@ private:
     constexpr bool try_component_candidates() {
         constexpr auto const& candidates = plan::template component_candidates<Frontier, Component>;
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return ((condition_holds<candidates[I]>() && (fire_first_due<candidates[I]>(), true)) || ...);
+            return ((condition_holds<candidates[I]>() && (fire_candidate<candidates[I]>(), true)) || ...);
         }(std::make_index_sequence<candidates.size()>{});
     }
 

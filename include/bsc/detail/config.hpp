@@ -86,24 +86,6 @@
 #define BSC_DETAIL_IS_CLASS(T) (std::is_class_v<T>)
 #endif
 
-// ---- arithmetic ------------------------------------------------------------------------------------
-// BSC_DETAIL_SUB_OVERFLOWS(a, b, out): whether a - b overflows the type of *out (a, b and *out
-// of one signed integer type); if not, *out = a - b.
-#if defined(__GNUC__) || defined(__clang__)
-#define BSC_DETAIL_SUB_OVERFLOWS(a, b, out) __builtin_sub_overflow(a, b, out)
-#else
-#include <limits>
-namespace bsc::detail {
-template <class T>
-constexpr bool sub_overflows(T a, T b, T* out) {
-    if (b > 0 ? a < std::numeric_limits<T>::min() + b : a > std::numeric_limits<T>::max() + b) return true;
-    *out = static_cast<T>(a - b);
-    return false;
-}
-}  // namespace bsc::detail
-#define BSC_DETAIL_SUB_OVERFLOWS(a, b, out) ::bsc::detail::sub_overflows(a, b, out)
-#endif
-
 // ---- names -----------------------------------------------------------------------------------------
 // BSC_DETAIL_FUNCTION_SIGNATURE: the enclosing function's signature, with its template arguments
 // spelled out, from which detail/type_name.hpp reads a type's name and detail/member_names.hpp a

@@ -75,13 +75,13 @@ template <class Class, class Member>
 Class class_of_member(Member Class::*);
 
 BSC_DETAIL_DECLARED_ONLY_BEGIN
-/// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
-/// `&axis::speed`. Found by comparing addresses: GCC 12 does not accept the address that `.*`
-/// yields as a template argument, so the member's index among the aggregate's is looked up.
+/// The position of the member that the pointer to member `Member` designates among its
+/// aggregate's members (their count if none), found by comparing addresses: GCC 12 does not
+/// accept the address that `.*` yields as a template argument.
 template <auto Member>
-constexpr std::string_view member_name() {
+constexpr std::size_t member_index() {
     using Class = decltype(class_of_member(Member));
-    constexpr std::size_t index = []<std::size_t... I>(std::index_sequence<I...>) {
+    return []<std::size_t... I>(std::index_sequence<I...>) {
         auto const& object = declared_only<Class>.value;
         void const* const target = &(object.*Member);
         auto const fields = tie_fields(object);
@@ -89,6 +89,13 @@ constexpr std::string_view member_name() {
         ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
         return found;
     }(std::make_index_sequence<member_names<Class>.size()>{});
+}
+/// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
+/// `&axis::speed`.
+template <auto Member>
+constexpr std::string_view member_name() {
+    using Class = decltype(class_of_member(Member));
+    constexpr std::size_t index = member_index<Member>();
     static_assert(index < member_names<Class>.size(), "the pointer designates no member of the aggregate");
     return member_names<Class>[index];
 }

@@ -30,7 +30,6 @@
 #include <bsc/action_failed.hpp>
 #include <bsc/detail/access.hpp>
 #include <bsc/detail/bytes.hpp>
-#include <bsc/detail/config.hpp>
 #include <bsc/detail/members.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/duration.hpp>
@@ -442,13 +441,6 @@ struct pass {
     std::optional<duration> resume{};
     duration shift{};  // added to every time the enclosing machine keeps
 };
-
-// to - from, saturated.
-constexpr duration difference(duration to, duration from) {
-    duration::rep d{};
-    if (BSC_DETAIL_SUB_OVERFLOWS(to.count(), from.count(), &d)) return from.count() < 0 ? duration::max() : duration::min();
-    return duration{d};
-}
 
 template <class Machine>
 void get_machine(byte_reader& r, Machine& m, pass const& p);

@@ -82,11 +82,7 @@ namespace bsc {
 /// one built at run time throws std::invalid_argument / std::out_of_range).
 template <class Rep, class Period, class E>
 constexpr auto raise_after(std::chrono::duration<Rep, Period> delay, E e, int id = 0) {
-    if (delay < std::chrono::duration<Rep, Period>::zero()) detail::bsc_after_negative_delay();
-    if (std::chrono::duration<long double, std::nano>(delay) >
-        std::chrono::duration<long double, std::nano>(duration::max()))
-        detail::bsc_after_delay_beyond_bsc_duration();
-    return detail::delayed_raise<E>{{}, std::chrono::duration_cast<duration>(delay), std::move(e), id};
+    return detail::delayed_raise<E>{{}, detail::checked_delay(delay), std::move(e), id};
 }
 
 /// An action that cancels the delayed events still pending under `id` (bsc::raise_after).

@@ -355,6 +355,17 @@ namespace detail {
     std::abort();
 #endif
 }
+
+// A delay of bsc::after or bsc::raise_after as a bsc::duration, refused (the functions above)
+// when it is negative or does not fit.
+template <class Rep, class Period>
+constexpr duration checked_delay(std::chrono::duration<Rep, Period> delay) {
+    if (delay < std::chrono::duration<Rep, Period>::zero()) bsc_after_negative_delay();
+    if (std::chrono::duration<long double, std::nano>(delay) >
+        std::chrono::duration<long double, std::nano>(duration::max()))
+        bsc_after_delay_beyond_bsc_duration();
+    return std::chrono::duration_cast<duration>(delay);
+}
 }  // namespace detail
 
 /// A state-scoped timeout trigger: `state<S> + after(3s) = state<T>` fires in the first cycle
@@ -367,11 +378,7 @@ namespace detail {
 /// compile (constexpr chart) or throws std::invalid_argument / std::out_of_range.
 template <class Rep, class Period>
 constexpr detail::timeout_ref after(std::chrono::duration<Rep, Period> delay) {
-    if (delay < std::chrono::duration<Rep, Period>::zero()) detail::bsc_after_negative_delay();
-    if (std::chrono::duration<long double, std::nano>(delay) >
-        std::chrono::duration<long double, std::nano>(duration::max()))
-        detail::bsc_after_delay_beyond_bsc_duration();
-    return {std::chrono::duration_cast<duration>(delay)};
+    return {detail::checked_delay(delay)};
 }
 
 }  // namespace bsc

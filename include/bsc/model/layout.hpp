@@ -125,6 +125,19 @@ struct chart_layout {
         return false;
     }();
 
+    // Whether timeout row `row` competes with other timeouts of its state by due time.
+    static constexpr bool competes_by_due_time(int row) {
+        return has_competing_timeouts && is_timeout_row(row) &&
+               timeout_slot_count[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(row)])] > 1;
+    }
+
+    // Whether timeout row `row`, when it fires, leaves its state active and so counts again from
+    // that cycle: an internal timeout (no domain), or a local one (its domain is its state).
+    static constexpr bool rearms(int row) {
+        auto const r = static_cast<std::size_t>(row);
+        return is_timeout_row(row) && (rows.domain[r] < 0 || rows.domain[r] == rows.source[r]);
+    }
+
     // The rows of each state, in declaration order, all kinds: those of state s are
     // from_source[from_source_begin[s]] to from_source[from_source_begin[s + 1]] (exclusive).
     // Built once, so that what is asked per state or per (state, trigger) reads that state's

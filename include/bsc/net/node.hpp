@@ -80,14 +80,6 @@ struct node_stats {
 
 namespace detail {
 
-template <auto A, auto B>
-constexpr bool same_member() {
-    if constexpr (std::is_same_v<decltype(A), decltype(B)>)
-        return A == B;
-    else
-        return false;
-}
-
 template <std::size_t I, auto... Members>
 struct nth_member;
 template <auto First, auto... Rest>
@@ -113,7 +105,7 @@ struct deployment<system<Actors, order<Steps...>, Entries...>> {
     template <auto Actor>
     static constexpr std::size_t place() {
         std::size_t i = 0, found = actor_count;
-        ((same_member<Actor, Steps>() ? (found = i, ++i) : ++i), ...);
+        ((bsc::detail::same_member_pointer<Actor, Steps>() ? (found = i, ++i) : ++i), ...);
         return found;
     }
     template <std::size_t I>

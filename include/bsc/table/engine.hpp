@@ -568,11 +568,9 @@ private:
         if (row.to != no_state) deactivate_path(row.domain);
         run_action(t, &no_event);
         enter_targets(row);
-        // A timeout that leaves its state active (internal, or local: its domain is its state)
-        // counts again from now.
+        // A timeout that leaves its state active counts again from now (layout.hpp, rearms).
         if constexpr (tables_type::timeout_slots > 0)
-            if ((row.to == no_state || row.domain == row.from) && row.timeout_slot >= 0)
-                this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->cycle_time();
+            if (row.rearms) this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->cycle_time();
     }
 
     // The event that eventless and timeout transitions receive.

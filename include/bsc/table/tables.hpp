@@ -111,6 +111,7 @@ struct transition_row {
     /// entry, or for an internal timeout the cycle it last fired in); -1 for the others.
     std::int16_t timeout_slot = -1;
     bool defers = false;  ///< the row defers its event (`/ bsc::defer`): it keeps the event, and has no action
+    bool rearms = false;  ///< a timeout that leaves its source active: it counts again from when it fires
     /// A transition with several targets (bsc::targets): the others after `to`; no_state where
     /// there are fewer.
     std::array<state_id, 3> more_to{};
@@ -246,6 +247,7 @@ private:
             row.delay = &delay_thunk<r>;
         row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
         row.defers = rows.defers[i];
+        row.rearms = layout::rearms(static_cast<int>(i));
         for (std::size_t k = 0; k < row.more_to.size(); ++k) row.more_to[k] = id(rows.more_targets[i][k]);
         return row;
     }
