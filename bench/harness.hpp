@@ -103,9 +103,8 @@ struct registry {
                         std::fprintf(stderr,
                                      "bench %s: %s differs from hand_written after event %zu (event index %u)\n"
                                      "  hand_written: %s\n  %s: %s\n",
-                                     W::name, e.name.c_str(), i, unsigned(seq[i]),
-                                     W::describe(expected[i]).c_str(), e.name.c_str(),
-                                     W::describe(got[i]).c_str());
+                                     W::name, e.name.c_str(), i, unsigned(seq[i]), W::describe(expected[i]).c_str(),
+                                     e.name.c_str(), W::describe(got[i]).c_str());
                         std::abort();
                     }
                 }
@@ -198,5 +197,6 @@ int drive(int argc, char** argv) {
 #define BENCH_CAT2(a, b) a##b
 #define BENCH_CAT(a, b) BENCH_CAT2(a, b)
 /// Registers implementation Impl of workload W under `name` (one line per implementation).
-#define BENCH_IMPL(W, name, ...) \
-    [[maybe_unused]] static bool const BENCH_CAT(bench_registered_, __LINE__) = ::bench::register_impl<W, __VA_ARGS__>(name)
+#define BENCH_IMPL(W, name, ...)                                    \
+    [[maybe_unused]] static bool const BENCH_CAT(bench_registered_, \
+                                                 __LINE__) = ::bench::register_impl<W, __VA_ARGS__>(name)

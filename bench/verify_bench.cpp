@@ -38,9 +38,9 @@ BENCHMARK(manufacturing_cell)->Arg(500)->Arg(100)->Arg(50)->Unit(benchmark::kMil
 
 // The Mode Control Supervisor, its 13 buttons offered in every state.
 void mcs_panel(benchmark::State& state) {
-    explore(state, bsc::verify::event_model<mcs::machine, mcs::on_p, mcs::off_p, mcs::estop_p, mcs::reset_p,
-                                            mcs::mem_p, mcs::mdi_p, mcs::tape_p, mcs::hnd_p, mcs::jog_p, mcs::rpd_p,
-                                            mcs::zrn_p, mcs::edit_p, mcs::setup_p>{mcs::machine{mcs::chart, mcs::panel{}}});
+    explore(state, bsc::verify::event_model<mcs::machine, mcs::on_p, mcs::off_p, mcs::estop_p, mcs::reset_p, mcs::mem_p,
+                                            mcs::mdi_p, mcs::tape_p, mcs::hnd_p, mcs::jog_p, mcs::rpd_p, mcs::zrn_p,
+                                            mcs::edit_p, mcs::setup_p>{mcs::machine{mcs::chart, mcs::panel{}}});
 }
 BENCHMARK(mcs_panel)->Unit(benchmark::kMillisecond);
 
@@ -59,9 +59,9 @@ void production_cell(benchmark::State& state) {
     initial.actors.robot.context().on.set(true);
     initial.actors.press.context().on.set(true);
     initial.actors.deposit_belt.context().on.set(true);
-    explore(state, bsc::verify::system_model{initial, pcell::period, 2, step,
-                                             [](pcell::cell const&) { return std::string{}; },
-                                             [](std::uint16_t) { return std::string{}; }});
+    explore(state,
+            bsc::verify::system_model{initial, pcell::period, 2, step, [](pcell::cell const&) { return std::string{}; },
+                                      [](std::uint16_t) { return std::string{}; }});
 }
 BENCHMARK(production_cell)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond);
 }  // namespace

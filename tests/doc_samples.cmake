@@ -21,12 +21,21 @@
 #                                  marked `in NAME` are pasted there in order and make one
 #                                  program, <prefix>_<i>_<j>_...: a page's fragments that need
 #                                  the same context cost one translation unit.
-#   <!-- sample: fails REGEX -->   the block shows a compile error and its fix. A line with a
-#   <!-- sample: in NAME; fails REGEX -->
+#   <!-- sample: fails defect=TYPE -->
+#   <!-- sample: in NAME; fails defect=TYPE -->
+#                                  the block shows a compile error and its fix. A line with a
 #                                  comment `// Error...` belongs to the erroneous version only,
 #                                  a line with a comment `// Fix...` to the fixed version only,
-#                                  the other lines to both. The erroneous version must fail to
-#                                  compile with a diagnostic matching REGEX: ctest
+#                                  the other lines to both. The error is a defect of the
+#                                  catalogue, tests/defects/catalogue.py: TYPE is its check's
+#                                  name, or its error type as the compiler prints it without
+#                                  bsc::error:: (`defect=dead_end_state<cf::Stuck>`,
+#                                  `defect=at_row<3, local_target_outside_source<cf::Work, cf::Idle>`),
+#                                  and the catalogue gives the regex, with the check's message,
+#                                  that the compile-fail tests and error_size.* use too.
+#   <!-- sample: fails REGEX -->   the same, with a regex of its own (a diagnostic that is no
+#                                  check's message). Either way, the erroneous version must
+#                                  fail to compile with a diagnostic matching the regex: ctest
 #                                  doc.<prefix>_<n>.fails builds the object library
 #                                  <prefix>_<n> (EXCLUDE_FROM_ALL) and passes if the build output
 #                                  matches (PASS_REGULAR_EXPRESSION, as tests/compile_fail). The
@@ -75,7 +84,7 @@ function(bsc_add_doc_samples page prefix)
     message(FATAL_ERROR "the code samples of ${page} cannot be extracted (see above)")
   endif()
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
-    ${PROJECT_SOURCE_DIR}/${page} ${bsc_doc_samples_script})
+    ${PROJECT_SOURCE_DIR}/${page} ${bsc_doc_samples_script} ${bsc_defect_catalogue})
   set_property(GLOBAL APPEND PROPERTY bsc_doc_sample_pages ${page})
   include(${out}/${prefix}.cmake)
 endfunction()

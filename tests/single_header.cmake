@@ -6,7 +6,7 @@
 # It doubles the compile time of the unit tests; BSC_TEST_SINGLE_HEADER=OFF leaves it out (the
 # dev preset does; the clang preset builds it instead of the unit tests against include/).
 #
-# Some test sources include a header of the library directly (<bsc/table/engine.hpp>). Under
+# Some test sources include a header of the library directly (<bsc/table/machine.hpp>). Under
 # single_include/ that header would be found in include/ and define again what the single
 # header already holds. A directory of forwarding headers, placed between single_include/ and
 # include/, answers each header that a single header contains with that single header; the

@@ -8,7 +8,7 @@
 
 #include <bsc/bsc.hpp>
 #if defined(BENCH_BSC_TABLE)
-#include <bsc/table/engine.hpp>
+#include <bsc/table/machine.hpp>
 #endif
 
 #include "../bsc_variant.hpp"
@@ -31,9 +31,11 @@ struct counters {
 
 // The actions' noexcept and the machine's policy: bench/bsc_variant.hpp.
 template <int K>
-inline constexpr auto leave = [](counters& c) noexcept(BENCH_NOEXCEPT_ACTIONS) { c.count += static_cast<std::uint64_t>(K); };
+inline constexpr auto leave =
+    [](counters& c) noexcept(BENCH_NOEXCEPT_ACTIONS) { c.count += static_cast<std::uint64_t>(K); };
 template <int K>
-inline constexpr auto come_back = [](counters& c) noexcept(BENCH_NOEXCEPT_ACTIONS) { c.count += 100u * static_cast<std::uint64_t>(K); };
+inline constexpr auto come_back =
+    [](counters& c) noexcept(BENCH_NOEXCEPT_ACTIONS) { c.count += 100u * static_cast<std::uint64_t>(K); };
 inline constexpr auto entered = [](counters& c) noexcept(BENCH_NOEXCEPT_ACTIONS) { ++c.entries; };
 
 template <int K>
@@ -46,10 +48,11 @@ constexpr auto level() {
 
 template <int... K>
 constexpr auto make_chart(std::integer_sequence<int, K...>) {
-    return bsc::make_chart<counters>(bsc::composite<R>(bsc::initial<D<1>>, level<1>(), bsc::state<P<1>>),
-                                     (bsc::state<D<K + 1>> + bsc::on_entry / entered)...,
-                                     (bsc::state<D<K + 1>> + bsc::event<L<K + 1>> / leave<K + 1> = bsc::state<P<K + 1>>)...,
-                                     (bsc::state<P<K + 1>> + bsc::event<L<K + 1>> / come_back<K + 1> = bsc::state<D<K + 1>>)...);
+    return bsc::make_chart<counters>(
+        bsc::composite<R>(bsc::initial<D<1>>, level<1>(), bsc::state<P<1>>),
+        (bsc::state<D<K + 1>> + bsc::on_entry / entered)...,
+        (bsc::state<D<K + 1>> + bsc::event<L<K + 1>> / leave<K + 1> = bsc::state<P<K + 1>>)...,
+        (bsc::state<P<K + 1>> + bsc::event<L<K + 1>> / come_back<K + 1> = bsc::state<D<K + 1>>)...);
 }
 
 inline constexpr auto chart = make_chart(std::make_integer_sequence<int, 8>{});
@@ -62,9 +65,11 @@ public:
     }
     deep_bench::workload::observation observe() const {
         int depth = 8;
+        // clang-format off
         [&]<int... K>(std::integer_sequence<int, K...>) {
             ((m_.template is<P<K + 1>>() ? (void)(depth = K) : (void)0), ...);
         }(std::make_integer_sequence<int, 8>{});
+        // clang-format on
         return {depth, m_.context().count, m_.context().entries};
     }
 

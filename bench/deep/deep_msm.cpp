@@ -105,7 +105,8 @@ public:
     deep_machine& operator=(deep_machine const&) = delete;
 
     void on(std::uint8_t event) {
-        bench::with_index<deep_bench::levels>(event, [&](auto i) { m_.process_event(L<int(decltype(i)::value) + 1>{}); });
+        bench::with_index<deep_bench::levels>(event,
+                                              [&](auto i) { m_.process_event(L<int(decltype(i)::value) + 1>{}); });
     }
 
     deep_bench::workload::observation observe() const { return {depth<1>(m_), c_.count, c_.entries}; }

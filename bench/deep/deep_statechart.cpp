@@ -44,15 +44,15 @@ struct R : sc::simple_state<R, Machine, D<1>> {};
 
 // The levels are written out (a class template D<K> would need D<K-1> complete while D<K-1>
 // itself is being defined).
-#define BENCH_DEEP_LEVEL(K, OUTER, INNER)                                                 \
-    template <>                                                                           \
-    struct D<K> : sc::state<D<K>, OUTER, INNER> {                                         \
-        using reactions = sc::transition<L<K>, P<K>, Machine, &Machine::leave<K>>;        \
-        explicit D(my_context ctx) : my_base(ctx) { ++outermost_context().entries; }      \
-    };                                                                                    \
-    template <>                                                                           \
-    struct P<K> : sc::simple_state<P<K>, OUTER> {                                         \
-        using reactions = sc::transition<L<K>, D<K>, Machine, &Machine::come_back<K>>;    \
+#define BENCH_DEEP_LEVEL(K, OUTER, INNER)                                              \
+    template <>                                                                        \
+    struct D<K> : sc::state<D<K>, OUTER, INNER> {                                      \
+        using reactions = sc::transition<L<K>, P<K>, Machine, &Machine::leave<K>>;     \
+        explicit D(my_context ctx) : my_base(ctx) { ++outermost_context().entries; }   \
+    };                                                                                 \
+    template <>                                                                        \
+    struct P<K> : sc::simple_state<P<K>, OUTER> {                                      \
+        using reactions = sc::transition<L<K>, D<K>, Machine, &Machine::come_back<K>>; \
     };
 
 BENCH_DEEP_LEVEL(1, R, D<2>)
@@ -72,7 +72,8 @@ public:
     deep_machine& operator=(deep_machine const&) = delete;
 
     void on(std::uint8_t event) {
-        bench::with_index<deep_bench::levels>(event, [&](auto i) { m_.process_event(std::get<decltype(i)::value>(events_)); });
+        bench::with_index<deep_bench::levels>(event,
+                                              [&](auto i) { m_.process_event(std::get<decltype(i)::value>(events_)); });
     }
 
     deep_bench::workload::observation observe() const {

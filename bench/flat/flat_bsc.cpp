@@ -8,7 +8,7 @@
 
 #include <bsc/bsc.hpp>
 #if defined(BENCH_BSC_TABLE)
-#include <bsc/table/engine.hpp>
+#include <bsc/table/machine.hpp>
 #endif
 
 #include "flat_chart_bsc.hpp"
@@ -29,9 +29,11 @@ public:
     flat_bench::workload::observation observe() const {
         std::size_t state = 0;
         bench::with_index<1>(0, [&](auto) {
+            // clang-format off
             [&]<std::size_t... I>(std::index_sequence<I...>) {
                 ((m_.template is<flat_bsc::S<I>>() ? (void)(state = I) : (void)0), ...);
             }(std::make_index_sequence<N>{});
+            // clang-format on
         });
         return {state, m_.context().count};
     }

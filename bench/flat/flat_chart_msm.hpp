@@ -23,7 +23,7 @@
 #include <boost/preprocessor/iterate.hpp>
 namespace boost {
 namespace mpl {
-#define BOOST_PP_ITERATION_PARAMS_1 (3, (51, BENCH_FLAT_N, <boost/mpl/vector/aux_/numbered.hpp>))
+#define BOOST_PP_ITERATION_PARAMS_1 (3, (51, BENCH_FLAT_N, <boost / mpl / vector / aux_ / numbered.hpp>))
 #include BOOST_PP_ITERATE()
 }  // namespace mpl
 }  // namespace boost

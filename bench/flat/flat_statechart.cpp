@@ -29,8 +29,8 @@ struct Machine : sc::state_machine<Machine, S<0>> {
 
 template <std::size_t I>
 struct S : sc::simple_state<S<I>, Machine> {
-    using reactions = sc::transition<E<flat_bench::handled_by(I, N)>, S<flat_bench::next_of(I, N)>, Machine,
-                                     &Machine::act<I>>;
+    using reactions =
+        sc::transition<E<flat_bench::handled_by(I, N)>, S<flat_bench::next_of(I, N)>, Machine, &Machine::act<I>>;
 };
 
 template <class Seq>

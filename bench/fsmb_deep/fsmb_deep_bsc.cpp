@@ -76,9 +76,11 @@ public:
     }
     fsmb_deep_bench::workload::observation observe() const {
         std::size_t leaf = 0;
+        // clang-format off
         [&]<int... K>(std::integer_sequence<int, K...>) {
             ((m_.is<deep::lvl2<K / 9, K / 3 % 3, K % 3>>() ? (void)(leaf = K) : (void)0), ...);
         }(std::make_integer_sequence<int, static_cast<int>(fsmb_deep_bench::workload::leaves)>{});
+        // clang-format on
         return {leaf, m_.context().counter};
     }
 

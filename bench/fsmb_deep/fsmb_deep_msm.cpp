@@ -55,10 +55,9 @@ struct final1 : msm::front::state<> {};  // lvl1_xy's final state
 template <int X, int Y>
 struct lvl1_ : machine_base<lvl1_<X, Y>> {
     using initial_state = lvl2<X, Y, 0>;
-    using transition_table = mpl::vector<
-        Row<lvl2<X, Y, 0>, event<9 * X + 3 * Y>, lvl2<X, Y, 1>, none, none>,
-        Row<lvl2<X, Y, 1>, event<9 * X + 3 * Y + 1>, lvl2<X, Y, 2>, none, none>,
-        Row<lvl2<X, Y, 2>, event<9 * X + 3 * Y + 2>, final1<X, Y>, none, none>>;
+    using transition_table = mpl::vector<Row<lvl2<X, Y, 0>, event<9 * X + 3 * Y>, lvl2<X, Y, 1>, none, none>,
+                                         Row<lvl2<X, Y, 1>, event<9 * X + 3 * Y + 1>, lvl2<X, Y, 2>, none, none>,
+                                         Row<lvl2<X, Y, 2>, event<9 * X + 3 * Y + 2>, final1<X, Y>, none, none>>;
     std::uint64_t* counter = nullptr;
 };
 template <int X, int Y>
@@ -71,10 +70,9 @@ struct final0 : msm::front::state<> {};  // lvl0_x's final state
 template <int X>
 struct lvl0_ : machine_base<lvl0_<X>> {
     using initial_state = lvl1<X, 0>;
-    using transition_table = mpl::vector<
-        Row<lvl1<X, 0>, none, lvl1<X, 1>, none, completed<final1<X, 0>>>,
-        Row<lvl1<X, 1>, none, lvl1<X, 2>, none, completed<final1<X, 1>>>,
-        Row<lvl1<X, 2>, none, final0<X>, none, completed<final1<X, 2>>>>;
+    using transition_table = mpl::vector<Row<lvl1<X, 0>, none, lvl1<X, 1>, none, completed<final1<X, 0>>>,
+                                         Row<lvl1<X, 1>, none, lvl1<X, 2>, none, completed<final1<X, 1>>>,
+                                         Row<lvl1<X, 2>, none, final0<X>, none, completed<final1<X, 2>>>>;
 };
 template <int X>
 using lvl0 = msm::back::state_machine<lvl0_<X>>;
@@ -82,10 +80,9 @@ using lvl0 = msm::back::state_machine<lvl0_<X>>;
 // ---- Root -------------------------------------------------------------------------------------
 struct root_ : machine_base<root_> {
     using initial_state = lvl0<0>;
-    using transition_table = mpl::vector<
-        Row<lvl0<0>, none, lvl0<1>, none, completed<final0<0>>>,
-        Row<lvl0<1>, none, lvl0<2>, none, completed<final0<1>>>,
-        Row<lvl0<2>, none, lvl0<0>, none, completed<final0<2>>>>;
+    using transition_table = mpl::vector<Row<lvl0<0>, none, lvl0<1>, none, completed<final0<0>>>,
+                                         Row<lvl0<1>, none, lvl0<2>, none, completed<final0<1>>>,
+                                         Row<lvl0<2>, none, lvl0<0>, none, completed<final0<2>>>>;
 };
 using root = msm::back::state_machine<root_>;
 

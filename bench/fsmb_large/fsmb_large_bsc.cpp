@@ -51,9 +51,11 @@ public:
     }
     fsmb_large_bench::workload::observation observe() const {
         std::size_t state = 0;
+        // clang-format off
         [&]<std::size_t... K>(std::index_sequence<K...>) {
             ((m_.is<large::state<K>>() ? (void)(state = K) : (void)0), ...);
         }(std::make_index_sequence<large::N>{});
+        // clang-format on
         return {state, m_.context().counter};
     }
 

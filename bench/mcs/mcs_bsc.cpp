@@ -8,7 +8,7 @@
 
 #include <bsc/bsc.hpp>
 #if defined(BENCH_BSC_TABLE)
-#include <bsc/table/engine.hpp>
+#include <bsc/table/machine.hpp>
 #endif
 
 #include "../../examples/mcs/mcs.hpp"
@@ -31,9 +31,8 @@ template <class Machine>
 class supervisor {
 public:
     void on(std::uint8_t event) {
-        bench::with_index<event_count>(event, [&](auto i) {
-            m_.dispatch(typename button_at<decltype(i)::value, mcs::buttons>::type{});
-        });
+        bench::with_index<event_count>(
+            event, [&](auto i) { m_.dispatch(typename button_at<decltype(i)::value, mcs::buttons>::type{}); });
     }
 
     workload::observation observe() const {

@@ -109,10 +109,8 @@ struct Tape : shown<Tape>, msm::front::explicit_entry<0> {
 struct Auto_ : shown_machine<Auto_> {
     static constexpr std::string_view name = "Auto";
     using initial_state = Mem;
-    using transition_table = mpl::vector<
-        Row<Mdi, mem_p, Mem>, Row<Tape, mem_p, Mem>,
-        Row<Mem, mdi_p, Mdi>, Row<Tape, mdi_p, Mdi>,
-        Row<Mem, tape_p, Tape>, Row<Mdi, tape_p, Tape>>;
+    using transition_table = mpl::vector<Row<Mdi, mem_p, Mem>, Row<Tape, mem_p, Mem>, Row<Mem, mdi_p, Mdi>,
+                                         Row<Tape, mdi_p, Mdi>, Row<Mem, tape_p, Tape>, Row<Mdi, tape_p, Tape>>;
 };
 using Auto = msm::back::state_machine<Auto_, msm::back::AlwaysHistory>;
 
@@ -132,11 +130,10 @@ struct Zrn : shown<Zrn>, msm::front::explicit_entry<0> {
 struct Manual_ : shown_machine<Manual_> {
     static constexpr std::string_view name = "Manual";
     using initial_state = Handle;
-    using transition_table = mpl::vector<
-        Row<Jog, hnd_p, Handle>, Row<Rpd, hnd_p, Handle>, Row<Zrn, hnd_p, Handle>,
-        Row<Handle, jog_p, Jog>, Row<Rpd, jog_p, Jog>, Row<Zrn, jog_p, Jog>,
-        Row<Handle, rpd_p, Rpd>, Row<Jog, rpd_p, Rpd>, Row<Zrn, rpd_p, Rpd>,
-        Row<Handle, zrn_p, Zrn>, Row<Jog, zrn_p, Zrn>, Row<Rpd, zrn_p, Zrn>>;
+    using transition_table =
+        mpl::vector<Row<Jog, hnd_p, Handle>, Row<Rpd, hnd_p, Handle>, Row<Zrn, hnd_p, Handle>, Row<Handle, jog_p, Jog>,
+                    Row<Rpd, jog_p, Jog>, Row<Zrn, jog_p, Jog>, Row<Handle, rpd_p, Rpd>, Row<Jog, rpd_p, Rpd>,
+                    Row<Zrn, rpd_p, Rpd>, Row<Handle, zrn_p, Zrn>, Row<Jog, zrn_p, Zrn>, Row<Rpd, zrn_p, Zrn>>;
 };
 using Manual = msm::back::state_machine<Manual_, msm::back::AlwaysHistory>;
 
@@ -151,17 +148,18 @@ struct On_ : shown_machine<On_> {
     static constexpr std::string_view name = "On";
     using initial_state = Auto;
     using transition_table = mpl::vector<
-        Row<Manual, mem_p, Auto::direct<Mem>>, Row<Edit, mem_p, Auto::direct<Mem>>, Row<Setup, mem_p, Auto::direct<Mem>>,
-        Row<Manual, mdi_p, Auto::direct<Mdi>>, Row<Edit, mdi_p, Auto::direct<Mdi>>, Row<Setup, mdi_p, Auto::direct<Mdi>>,
+        Row<Manual, mem_p, Auto::direct<Mem>>, Row<Edit, mem_p, Auto::direct<Mem>>,
+        Row<Setup, mem_p, Auto::direct<Mem>>, Row<Manual, mdi_p, Auto::direct<Mdi>>,
+        Row<Edit, mdi_p, Auto::direct<Mdi>>, Row<Setup, mdi_p, Auto::direct<Mdi>>,
         Row<Manual, tape_p, Auto::direct<Tape>>, Row<Edit, tape_p, Auto::direct<Tape>>,
-        Row<Setup, tape_p, Auto::direct<Tape>>,
-        Row<Auto, hnd_p, Manual::direct<Handle>>, Row<Edit, hnd_p, Manual::direct<Handle>>,
-        Row<Setup, hnd_p, Manual::direct<Handle>>,
-        Row<Auto, jog_p, Manual::direct<Jog>>, Row<Edit, jog_p, Manual::direct<Jog>>, Row<Setup, jog_p, Manual::direct<Jog>>,
-        Row<Auto, rpd_p, Manual::direct<Rpd>>, Row<Edit, rpd_p, Manual::direct<Rpd>>, Row<Setup, rpd_p, Manual::direct<Rpd>>,
-        Row<Auto, zrn_p, Manual::direct<Zrn>>, Row<Edit, zrn_p, Manual::direct<Zrn>>, Row<Setup, zrn_p, Manual::direct<Zrn>>,
-        Row<Auto, edit_p, Edit>, Row<Manual, edit_p, Edit>, Row<Setup, edit_p, Edit>,
-        Row<Auto, setup_p, Setup>, Row<Manual, setup_p, Setup>, Row<Edit, setup_p, Setup>>;
+        Row<Setup, tape_p, Auto::direct<Tape>>, Row<Auto, hnd_p, Manual::direct<Handle>>,
+        Row<Edit, hnd_p, Manual::direct<Handle>>, Row<Setup, hnd_p, Manual::direct<Handle>>,
+        Row<Auto, jog_p, Manual::direct<Jog>>, Row<Edit, jog_p, Manual::direct<Jog>>,
+        Row<Setup, jog_p, Manual::direct<Jog>>, Row<Auto, rpd_p, Manual::direct<Rpd>>,
+        Row<Edit, rpd_p, Manual::direct<Rpd>>, Row<Setup, rpd_p, Manual::direct<Rpd>>,
+        Row<Auto, zrn_p, Manual::direct<Zrn>>, Row<Edit, zrn_p, Manual::direct<Zrn>>,
+        Row<Setup, zrn_p, Manual::direct<Zrn>>, Row<Auto, edit_p, Edit>, Row<Manual, edit_p, Edit>,
+        Row<Setup, edit_p, Edit>, Row<Auto, setup_p, Setup>, Row<Manual, setup_p, Setup>, Row<Edit, setup_p, Setup>>;
 };
 using On = msm::back::state_machine<On_, msm::back::AlwaysHistory>;
 
@@ -175,19 +173,15 @@ struct Estop : shown<Estop> {
 struct MCS_ : shown_machine<MCS_> {
     static constexpr std::string_view name = "MCS";
     using initial_state = Off;
-    using transition_table = mpl::vector<
-        Row<Off, on_p, On>,
-        Row<Estop, reset_p, Estop, set_error0>,
-        Row<Estop, off_p, Off, none, cond>,
-        Row<On, off_p, Off>,
-        Row<On, estop_p, Estop, set_error1>,
-        Row<Off, estop_p, Estop, set_error1>,
-        Row<Estop, estop_p, Estop, set_error1>>;
+    using transition_table =
+        mpl::vector<Row<Off, on_p, On>, Row<Estop, reset_p, Estop, set_error0>, Row<Estop, off_p, Off, none, cond>,
+                    Row<On, off_p, Off>, Row<On, estop_p, Estop, set_error1>, Row<Off, estop_p, Estop, set_error1>,
+                    Row<Estop, estop_p, Estop, set_error1>>;
 };
 using MCS = msm::back::state_machine<MCS_>;
 
-using buttons = mpl::vector<on_p, off_p, estop_p, reset_p, mem_p, mdi_p, tape_p, hnd_p, jog_p, rpd_p, zrn_p, edit_p,
-                            setup_p>;
+using buttons =
+    mpl::vector<on_p, off_p, estop_p, reset_p, mem_p, mdi_p, tape_p, hnd_p, jog_p, rpd_p, zrn_p, edit_p, setup_p>;
 
 class supervisor {
 public:
@@ -203,9 +197,8 @@ public:
     supervisor& operator=(supervisor const&) = delete;
 
     void on(std::uint8_t event) {
-        bench::with_index<event_count>(event, [&](auto i) {
-            m_.process_event(typename mpl::at_c<buttons, decltype(i)::value>::type{});
-        });
+        bench::with_index<event_count>(
+            event, [&](auto i) { m_.process_event(typename mpl::at_c<buttons, decltype(i)::value>::type{}); });
     }
 
     workload::observation observe() const { return workload::observe(active(), panel_.error, panel_.display); }

@@ -80,9 +80,9 @@ struct Off : shown<Off, MCS> {
 struct Estop : shown<Estop, MCS> {
     using shown::shown;
     static constexpr std::string_view name = "Estop";
-    using reactions = mpl::list<sc::transition<reset_p, Estop, Machine, &Machine::set_error0>,
-                                sc::custom_reaction<off_p>,
-                                sc::transition<estop_p, Estop, Machine, &Machine::set_error1>>;
+    using reactions =
+        mpl::list<sc::transition<reset_p, Estop, Machine, &Machine::set_error0>, sc::custom_reaction<off_p>,
+                  sc::transition<estop_p, Estop, Machine, &Machine::set_error1>>;
     sc::result react(off_p const&) {
         if (outermost_context().p.error == 0)  // cond
             return transit<Off>();
@@ -92,15 +92,15 @@ struct Estop : shown<Estop, MCS> {
 struct On : shown<On, MCS, Auto, sc::has_deep_history> {
     using shown::shown;
     static constexpr std::string_view name = "On";
-    using reactions = mpl::list<sc::transition<off_p, Off>,
-                                sc::transition<estop_p, Estop, Machine, &Machine::set_error1>>;
+    using reactions =
+        mpl::list<sc::transition<off_p, Off>, sc::transition<estop_p, Estop, Machine, &Machine::set_error1>>;
 };
 struct Auto : shown<Auto, On, Mem> {
     using shown::shown;
     static constexpr std::string_view name = "Auto";
-    using reactions = mpl::list<sc::transition<hnd_p, Handle>, sc::transition<jog_p, Jog>, sc::transition<rpd_p, Rpd>,
-                                sc::transition<zrn_p, Zrn>, sc::transition<edit_p, Edit>,
-                                sc::transition<setup_p, Setup>>;
+    using reactions =
+        mpl::list<sc::transition<hnd_p, Handle>, sc::transition<jog_p, Jog>, sc::transition<rpd_p, Rpd>,
+                  sc::transition<zrn_p, Zrn>, sc::transition<edit_p, Edit>, sc::transition<setup_p, Setup>>;
 };
 struct Manual : shown<Manual, On, Handle> {
     using shown::shown;

@@ -77,8 +77,8 @@ struct workload {
     static std::string describe(observation const& o) {
         static constexpr char const* names[] = {"Off", "Estop", "Mem", "Mdi",  "Tape", "Handle",
                                                 "Jog", "Rpd",   "Zrn", "Edit", "Setup"};
-        std::string s = std::string("leaf ") + names[static_cast<int>(o.active)] + " error " +
-                        std::to_string(o.error) + " display";
+        std::string s = std::string("leaf ") + names[static_cast<int>(o.active)] + " error " + std::to_string(o.error) +
+                        " display";
         for (std::size_t i = 0; i < o.lines; ++i) {
             s += o.shown[i].entered ? " +" : " -";
             s += o.shown[i].state;

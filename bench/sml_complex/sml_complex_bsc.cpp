@@ -23,8 +23,9 @@ inline constexpr auto nothing = []() noexcept(BENCH_NOEXCEPT_ACTIONS) {};
 
 template <std::size_t... Others, std::size_t... K>
 constexpr auto make_chart(std::index_sequence<Others...>, std::index_sequence<K...>) {
-    return bsc::make_chart<none>(bsc::composite<Ring>(bsc::initial<S<0>>, bsc::state<S<Others + 1>>...),
-                                 (bsc::state<S<K>> + bsc::event<E<K>>[holds] / nothing = bsc::state<S<(K + 1) % N>>)...);
+    return bsc::make_chart<none>(
+        bsc::composite<Ring>(bsc::initial<S<0>>, bsc::state<S<Others + 1>>...),
+        (bsc::state<S<K>> + bsc::event<E<K>>[holds] / nothing = bsc::state<S<(K + 1) % N>>)...);
 }
 inline constexpr auto chart = make_chart(std::make_index_sequence<N - 1>{}, std::make_index_sequence<N>{});
 }  // namespace ring
@@ -36,9 +37,11 @@ public:
     }
     sml_complex_bench::workload::observation observe() const {
         std::size_t state = 0;
+        // clang-format off
         [&]<std::size_t... K>(std::index_sequence<K...>) {
             ((m_.is<ring::S<K>>() ? (void)(state = K) : (void)0), ...);
         }(std::make_index_sequence<ring::N>{});
+        // clang-format on
         return {state};
     }
 

@@ -26,9 +26,7 @@ struct workload {
         bool operator==(observation const& o) const { return state == o.state; }
     };
 
-    static std::string describe(observation const& o) {
-        return o.state == 0 ? "idle" : "s" + std::to_string(o.state);
-    }
+    static std::string describe(observation const& o) { return o.state == 0 ? "idle" : "s" + std::to_string(o.state); }
 
     static bench::sequence record() {
         bench::rng r{11};

@@ -8,10 +8,23 @@
 namespace {
 
 namespace cd {
-struct play {}; struct end_pause {}; struct stop {}; struct pause {}; struct open_close {}; struct cd_detected {};
-struct next_song {}; struct previous_song {};
-struct Player; struct Empty; struct Open; struct Stopped; struct Playing; struct Paused;
-struct Song1; struct Song2; struct Song3;
+struct play {};
+struct end_pause {};
+struct stop {};
+struct pause {};
+struct open_close {};
+struct cd_detected {};
+struct next_song {};
+struct previous_song {};
+struct Player;
+struct Empty;
+struct Open;
+struct Stopped;
+struct Playing;
+struct Paused;
+struct Song1;
+struct Song2;
+struct Song3;
 struct none {};
 
 // The actions of Boost.SML's benchmark: they do nothing. (noexcept: bench/bsc_variant.hpp.)

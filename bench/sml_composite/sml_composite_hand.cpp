@@ -11,17 +11,33 @@ class cd_player_switch {
 public:
     void on(std::uint8_t e) {
         switch (e) {
-        case play_e: if (state_ == stopped_s) play(); break;
-        case end_pause_e: if (state_ == paused_s) play(); break;
-        case stop_e: if (state_ == playing_s || state_ == paused_s || state_ == stopped_s) state_ = stopped_s; break;
-        case pause_e: if (state_ == playing_s) state_ = paused_s; break;
-        case open_close_e:
-            if (state_ == open_s) state_ = empty_s;
-            else if (state_ == empty_s || state_ == paused_s || state_ == stopped_s || state_ == playing_s) state_ = open_s;
+        case play_e:
+            if (state_ == stopped_s) play();
             break;
-        case cd_detected_e: if (state_ == empty_s) state_ = stopped_s; break;
-        case next_song_e: if (state_ == playing_s && song_ < 3) ++song_; break;
-        case previous_song_e: if (state_ == playing_s && song_ > 1) --song_; break;
+        case end_pause_e:
+            if (state_ == paused_s) play();
+            break;
+        case stop_e:
+            if (state_ == playing_s || state_ == paused_s || state_ == stopped_s) state_ = stopped_s;
+            break;
+        case pause_e:
+            if (state_ == playing_s) state_ = paused_s;
+            break;
+        case open_close_e:
+            if (state_ == open_s)
+                state_ = empty_s;
+            else if (state_ == empty_s || state_ == paused_s || state_ == stopped_s || state_ == playing_s)
+                state_ = open_s;
+            break;
+        case cd_detected_e:
+            if (state_ == empty_s) state_ = stopped_s;
+            break;
+        case next_song_e:
+            if (state_ == playing_s && song_ < 3) ++song_;
+            break;
+        case previous_song_e:
+            if (state_ == playing_s && song_ > 1) --song_;
+            break;
         default: break;
         }
     }

@@ -45,11 +45,9 @@ struct Song2 : msm::front::state<> {};
 struct Song3 : msm::front::state<> {};
 struct Playing_ : machine_base<Playing_> {
     using initial_state = Song1;
-    using transition_table = mpl::vector<
-        Row<Song1, next_song, Song2, nothing, none>,
-        Row<Song2, next_song, Song3, nothing, none>,
-        Row<Song3, previous_song, Song2, nothing, none>,
-        Row<Song2, previous_song, Song1, nothing, none>>;
+    using transition_table =
+        mpl::vector<Row<Song1, next_song, Song2, nothing, none>, Row<Song2, next_song, Song3, nothing, none>,
+                    Row<Song3, previous_song, Song2, nothing, none>, Row<Song2, previous_song, Song1, nothing, none>>;
 };
 using Playing = msm::back::state_machine<Playing_>;
 
@@ -60,19 +58,13 @@ struct Stopped : msm::front::state<> {};
 struct Paused : msm::front::state<> {};
 struct player_ : machine_base<player_> {
     using initial_state = Empty;
-    using transition_table = mpl::vector<
-        Row<Stopped, play, Playing, nothing, none>,
-        Row<Paused, end_pause, Playing, nothing, none>,
-        Row<Open, open_close, Empty, nothing, none>,
-        Row<Empty, open_close, Open, nothing, none>,
-        Row<Paused, open_close, Open, nothing, none>,
-        Row<Stopped, open_close, Open, nothing, none>,
-        Row<Playing, open_close, Open, nothing, none>,
-        Row<Playing, pause, Paused, nothing, none>,
-        Row<Playing, stop, Stopped, nothing, none>,
-        Row<Paused, stop, Stopped, nothing, none>,
-        Row<Empty, cd_detected, Stopped, nothing, none>,
-        Row<Stopped, stop, Stopped, nothing, none>>;
+    using transition_table =
+        mpl::vector<Row<Stopped, play, Playing, nothing, none>, Row<Paused, end_pause, Playing, nothing, none>,
+                    Row<Open, open_close, Empty, nothing, none>, Row<Empty, open_close, Open, nothing, none>,
+                    Row<Paused, open_close, Open, nothing, none>, Row<Stopped, open_close, Open, nothing, none>,
+                    Row<Playing, open_close, Open, nothing, none>, Row<Playing, pause, Paused, nothing, none>,
+                    Row<Playing, stop, Stopped, nothing, none>, Row<Paused, stop, Stopped, nothing, none>,
+                    Row<Empty, cd_detected, Stopped, nothing, none>, Row<Stopped, stop, Stopped, nothing, none>>;
 };
 using player = msm::back::state_machine<player_>;
 

@@ -20,7 +20,16 @@
 namespace sml_composite_bench {
 
 enum state : std::uint8_t { empty_s, open_s, stopped_s, playing_s, paused_s };
-enum event : std::uint8_t { play_e, end_pause_e, stop_e, pause_e, open_close_e, cd_detected_e, next_song_e, previous_song_e };
+enum event : std::uint8_t {
+    play_e,
+    end_pause_e,
+    stop_e,
+    pause_e,
+    open_close_e,
+    cd_detected_e,
+    next_song_e,
+    previous_song_e
+};
 
 struct workload {
     static constexpr char const* name = "sml_composite";

@@ -8,8 +8,18 @@
 namespace {
 
 namespace cd {
-struct play {}; struct end_pause {}; struct stop {}; struct pause {}; struct open_close {}; struct cd_detected {};
-struct Player; struct Empty; struct Open; struct Stopped; struct Playing; struct Pause;
+struct play {};
+struct end_pause {};
+struct stop {};
+struct pause {};
+struct open_close {};
+struct cd_detected {};
+struct Player;
+struct Empty;
+struct Open;
+struct Stopped;
+struct Playing;
+struct Pause;
 struct none {};
 
 // The actions of Boost.SML's benchmark: they do nothing. (noexcept: bench/bsc_variant.hpp.)

@@ -11,15 +11,27 @@ class cd_player_switch {
 public:
     void on(std::uint8_t e) {
         switch (e) {
-        case play_e: if (state_ == stopped_s) state_ = playing_s; break;
-        case end_pause_e: if (state_ == pause_s) state_ = playing_s; break;
-        case stop_e: if (state_ == playing_s || state_ == pause_s || state_ == stopped_s) state_ = stopped_s; break;
-        case pause_e: if (state_ == playing_s) state_ = pause_s; break;
-        case open_close_e:
-            if (state_ == open_s) state_ = empty_s;
-            else if (state_ == empty_s || state_ == pause_s || state_ == stopped_s || state_ == playing_s) state_ = open_s;
+        case play_e:
+            if (state_ == stopped_s) state_ = playing_s;
             break;
-        case cd_detected_e: if (state_ == empty_s) state_ = stopped_s; break;
+        case end_pause_e:
+            if (state_ == pause_s) state_ = playing_s;
+            break;
+        case stop_e:
+            if (state_ == playing_s || state_ == pause_s || state_ == stopped_s) state_ = stopped_s;
+            break;
+        case pause_e:
+            if (state_ == playing_s) state_ = pause_s;
+            break;
+        case open_close_e:
+            if (state_ == open_s)
+                state_ = empty_s;
+            else if (state_ == empty_s || state_ == pause_s || state_ == stopped_s || state_ == playing_s)
+                state_ = open_s;
+            break;
+        case cd_detected_e:
+            if (state_ == empty_s) state_ = stopped_s;
+            break;
         default: break;
         }
     }

@@ -38,19 +38,13 @@ struct player_ : msm::front::state_machine_def<player_> {
     using no_exception_thrown = int;
     using no_message_queue = int;
     using initial_state = Empty;
-    using transition_table = mpl::vector<
-        Row<Stopped, play, Playing, nothing, none>,
-        Row<Pause, end_pause, Playing, nothing, none>,
-        Row<Open, open_close, Empty, nothing, none>,
-        Row<Empty, open_close, Open, nothing, none>,
-        Row<Pause, open_close, Open, nothing, none>,
-        Row<Stopped, open_close, Open, nothing, none>,
-        Row<Playing, open_close, Open, nothing, none>,
-        Row<Playing, pause, Pause, nothing, none>,
-        Row<Playing, stop, Stopped, nothing, none>,
-        Row<Pause, stop, Stopped, nothing, none>,
-        Row<Empty, cd_detected, Stopped, nothing, none>,
-        Row<Stopped, stop, Stopped, nothing, none>>;
+    using transition_table =
+        mpl::vector<Row<Stopped, play, Playing, nothing, none>, Row<Pause, end_pause, Playing, nothing, none>,
+                    Row<Open, open_close, Empty, nothing, none>, Row<Empty, open_close, Open, nothing, none>,
+                    Row<Pause, open_close, Open, nothing, none>, Row<Stopped, open_close, Open, nothing, none>,
+                    Row<Playing, open_close, Open, nothing, none>, Row<Playing, pause, Pause, nothing, none>,
+                    Row<Playing, stop, Stopped, nothing, none>, Row<Pause, stop, Stopped, nothing, none>,
+                    Row<Empty, cd_detected, Stopped, nothing, none>, Row<Stopped, stop, Stopped, nothing, none>>;
     template <class E, class F>
     void no_transition(E const&, F&, int) {}
 };

@@ -38,8 +38,9 @@ struct workload {
     }
 
     static bench::sequence record() {
-        static constexpr std::uint8_t loop[] = {open_close_e, open_close_e, cd_detected_e, play_e, pause_e, end_pause_e,
-                                                pause_e,      stop_e,       stop_e,        open_close_e, open_close_e};
+        static constexpr std::uint8_t loop[] = {open_close_e, open_close_e, cd_detected_e, play_e,
+                                                pause_e,      end_pause_e,  pause_e,       stop_e,
+                                                stop_e,       open_close_e, open_close_e};
         bench::sequence s;
         for (int i = 0; i < 909; ++i)
             for (std::uint8_t e : loop) s.push_back(e);

@@ -8,7 +8,7 @@
 
 #include <bsc/bsc.hpp>
 #if defined(BENCH_BSC_TABLE)
-#include <bsc/table/engine.hpp>
+#include <bsc/table/machine.hpp>
 #endif
 
 #include "../bsc_variant.hpp"
@@ -70,9 +70,11 @@ public:
     }
     workload::observation observe() const {
         workload::observation o{{}, m_.context().n};
+        // clang-format off
         [&]<int... R>(std::integer_sequence<int, R...>) {
             ((o.state[R] = m_.template is<A<R, 0>>() ? 0 : m_.template is<A<R, 1>>() ? 1 : 2), ...);
         }(std::make_integer_sequence<int, int(regions)>{});
+        // clang-format on
         return o;
     }
 

@@ -38,10 +38,10 @@ struct add {
 };
 
 template <int R>
-using region_rows = mpl::vector<Row<A<R, 0>, step, A<R, 1>, add<R, 1>, none>, Row<A<R, 1>, step, A<R, 2>, add<R, 1>, none>,
-                                Row<A<R, 2>, step, A<R, 0>, add<R, 1>, none>, Row<A<R, 1>, reset, A<R, 0>, add<R, 16>, none>,
-                                Row<A<R, 2>, reset, A<R, 0>, add<R, 16>, none>,
-                                Row<A<R, 0>, flip, A<R, flip_target(R)>, add<R, 4>, none>>;
+using region_rows = mpl::vector<
+    Row<A<R, 0>, step, A<R, 1>, add<R, 1>, none>, Row<A<R, 1>, step, A<R, 2>, add<R, 1>, none>,
+    Row<A<R, 2>, step, A<R, 0>, add<R, 1>, none>, Row<A<R, 1>, reset, A<R, 0>, add<R, 16>, none>,
+    Row<A<R, 2>, reset, A<R, 0>, add<R, 16>, none>, Row<A<R, 0>, flip, A<R, flip_target(R)>, add<R, 4>, none>>;
 
 template <class Seq>
 struct all_rows;
@@ -54,8 +54,9 @@ struct all_rows<std::integer_sequence<int, R...>> {
 struct W_ : msm::front::state_machine_def<W_> {
     using no_exception_thrown = int;
     using no_message_queue = int;
-    using initial_state = mpl::vector<A<0, initial_of(0)>, A<1, initial_of(1)>, A<2, initial_of(2)>, A<3, initial_of(3)>,
-                                      A<4, initial_of(4)>, A<5, initial_of(5)>, A<6, initial_of(6)>, A<7, initial_of(7)>>;
+    using initial_state =
+        mpl::vector<A<0, initial_of(0)>, A<1, initial_of(1)>, A<2, initial_of(2)>, A<3, initial_of(3)>,
+                    A<4, initial_of(4)>, A<5, initial_of(5)>, A<6, initial_of(6)>, A<7, initial_of(7)>>;
     using transition_table = typename all_rows<std::make_integer_sequence<int, int(regions)>>::type;
     template <class E, class F>
     void no_transition(E const&, F&, int) {}
@@ -91,9 +92,9 @@ private:
     template <int R>
     static std::uint8_t state_of(int id) {
         using stt = W::stt;
-        return id == msm::back::get_state_id<stt, A<R, 0>>::value ? 0
+        return id == msm::back::get_state_id<stt, A<R, 0>>::value   ? 0
                : id == msm::back::get_state_id<stt, A<R, 1>>::value ? 1
-                                                                   : 2;
+                                                                    : 2;
     }
 
     W m_;

@@ -47,10 +47,11 @@ struct Machine : sc::state_machine<Machine, W> {
     }
 };
 
-struct W : sc::simple_state<W, Machine,
-                            mpl::list<A<0, initial_of(0)>, A<1, initial_of(1)>, A<2, initial_of(2)>, A<3, initial_of(3)>,
-                                      A<4, initial_of(4)>, A<5, initial_of(5)>, A<6, initial_of(6)>,
-                                      A<7, initial_of(7)>>> {};
+struct W
+    : sc::simple_state<W, Machine,
+                       mpl::list<A<0, initial_of(0)>, A<1, initial_of(1)>, A<2, initial_of(2)>, A<3, initial_of(3)>,
+                                 A<4, initial_of(4)>, A<5, initial_of(5)>, A<6, initial_of(6)>, A<7, initial_of(7)>>> {
+};
 
 template <int R>
 struct A<R, 0> : sc::simple_state<A<R, 0>, W::orthogonal<R>> {

@@ -37,7 +37,9 @@ std::string_view state_of(Module const& m) {
 }
 
 template <class Controller>
-constexpr bool has_pause = requires(Controller const& c) { c.context().pause; };
+constexpr bool has_pause = requires(Controller const& c) {
+    c.context().pause;
+};
 
 template <class Controller>
 class script {
@@ -120,9 +122,9 @@ void figure_7b_run(script<eca::extended_controller>& s) {
     using namespace eca::in;
     s.input(press{}, {"Pressed", "Busy", "Running", "start light_on", true});  // rules 4 and 1
     s.input(release{}, {"Released", "Busy", "Running", "", true});
-    s.input(pause{}, {"Released", "Busy", "Paused", "", true});    // rule 6, Robot? Busy
-    s.input(done{}, {"Released", "Idle", "Paused", "", true});     // rule 5, Pause? Paused: light stays on
-    s.input(press{}, {"Pressed", "Idle", "Paused", "", true});     // rule 4, Pause? Paused: ignored
+    s.input(pause{}, {"Released", "Busy", "Paused", "", true});  // rule 6, Robot? Busy
+    s.input(done{}, {"Released", "Idle", "Paused", "", true});   // rule 5, Pause? Paused: light stays on
+    s.input(press{}, {"Pressed", "Idle", "Paused", "", true});   // rule 4, Pause? Paused: ignored
     s.input(release{}, {"Released", "Idle", "Paused", "", true});
     s.input(continue_{}, {"Released", "Idle", "Running", "light_off", false});  // rule 7, Robot? Idle
     s.input(press{}, {"Pressed", "Busy", "Running", "start light_on", true});   // normal mode again
@@ -163,7 +165,8 @@ int main() {
     figure_5_run(original);
     failures += report(original, 2);
 
-    script same_run{"Figure 7b: the extended controller on the same run", eca::extended_controller{eca::extended_main_chart}};
+    script same_run{"Figure 7b: the extended controller on the same run",
+                    eca::extended_controller{eca::extended_main_chart}};
     figure_5_run(same_run);
     failures += report(same_run, 2);
 

@@ -193,10 +193,9 @@ struct Idle;
 struct Busy;
 struct set_busy {};  // Σu
 struct set_idle {};
-inline constexpr auto chart = bsc::make_chart<no_data>(
-    bsc::composite<Robot>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<set_busy> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<set_idle> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<no_data>(bsc::composite<Robot>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                       bsc::state<Idle> + bsc::event<set_busy> = bsc::state<Busy>,
+                                                       bsc::state<Busy> + bsc::event<set_idle> = bsc::state<Idle>);
 using module = bsc::machine<bsc::chart_ref<chart>>;
 }  // namespace robot
 
@@ -229,17 +228,20 @@ inline constexpr auto robot_is = bsc::named<joined_name<robot_query, bsc::name_o
 
 /// The updating event U, sent to the Robot module and processed by it at once.
 template <class U>
-inline constexpr auto update_robot =
-    bsc::named<joined_name<bsc::name_of<U>>.text>(bsc::action([](auto& main) { main.robot.dispatch(U{}); }));
+inline constexpr auto update_robot = bsc::named<joined_name<bsc::name_of<U>>.text>(bsc::action([](auto& main) {
+    main.robot.dispatch(U{});
+}));
 /// The updating event U, sent to the Button module and processed by it at once.
 template <class U>
-inline constexpr auto update_button =
-    bsc::named<joined_name<bsc::name_of<U>>.text>(bsc::action([](auto& main) { main.button.dispatch(U{}); }));
+inline constexpr auto update_button = bsc::named<joined_name<bsc::name_of<U>>.text>(bsc::action([](auto& main) {
+    main.button.dispatch(U{});
+}));
 
 /// The output event O, sent to the environment.
 template <class O>
-inline constexpr auto emit =
-    bsc::named<joined_name<O::name>.text>(bsc::action([](auto& main) { main.env.receive(O{}); }));
+inline constexpr auto emit = bsc::named<joined_name<O::name>.text>(bsc::action([](auto& main) {
+    main.env.receive(O{});
+}));
 
 // ---- Main ----------------------------------------------------------------------------------
 
@@ -266,9 +268,9 @@ inline constexpr auto on = bsc::state<Idle> + bsc::event<E>;
 constexpr auto rule_press(auto trigger) {
     return std::tuple{
         trigger = bsc::state<QueryRobotOnPress>,
-        bsc::state<QueryRobotOnPress>[robot_is<robot::Idle>] /
-                (update_button<button::set_pressed>, update_robot<robot::set_busy>, emit<out::start>,
-                 emit<out::light_on>) = bsc::state<Idle>,
+        bsc::state<QueryRobotOnPress>[robot_is<robot::Idle>] / (update_button<button::set_pressed>,
+                                                                update_robot<robot::set_busy>, emit<out::start>,
+                                                                emit<out::light_on>) = bsc::state<Idle>,
         bsc::state<QueryRobotOnPress>[robot_is<robot::Busy>] / update_button<button::set_pressed> = bsc::state<Idle>,
     };
 }
@@ -307,8 +309,8 @@ struct main_connections {
 };
 
 /// The rules of Figure 5, each triggered by its input event in Idle.
-inline constexpr auto main_rules =
-    std::tuple_cat(rule_press(on<in::press>), rule_release(on<in::release>), rule_done(on<in::done>));
+inline constexpr auto main_rules = std::tuple_cat(rule_press(on<in::press>), rule_release(on<in::release>),
+                                                  rule_done(on<in::done>));
 
 inline constexpr auto main_chart = make_main<main_connections>(main_tree(), main_rules);
 

@@ -79,8 +79,9 @@ inline constexpr auto pause_is = bsc::named<joined_name<pause_query, bsc::name_o
     bsc::guard([](auto const& main) { return main.pause.template is<S>(); }));
 /// The updating event U, sent to the Pause module.
 template <class U>
-inline constexpr auto update_pause =
-    bsc::named<joined_name<bsc::name_of<U>>.text>(bsc::action([](auto& main) { main.pause.dispatch(U{}); }));
+inline constexpr auto update_pause = bsc::named<joined_name<bsc::name_of<U>>.text>(bsc::action([](auto& main) {
+    main.pause.dispatch(U{});
+}));
 
 // ---- The new transient states and rules ----------------------------------------------------
 
@@ -115,8 +116,8 @@ constexpr auto rule_pause_on_done(auto trigger) {
 constexpr auto rule_pause(auto trigger) {
     return std::tuple{
         trigger = bsc::state<QueryRobotOnPause>,
-        bsc::state<QueryRobotOnPause>[robot_is<robot::Idle>] / (update_pause<pause::set_paused>, emit<out::light_on>) =
-            bsc::state<Idle>,
+        bsc::state<QueryRobotOnPause>[robot_is<robot::Idle>] /
+            (update_pause<pause::set_paused>, emit<out::light_on>) = bsc::state<Idle>,
         bsc::state<QueryRobotOnPause>[robot_is<robot::Busy>] / update_pause<pause::set_paused> = bsc::state<Idle>,
     };
 }
@@ -128,7 +129,7 @@ constexpr auto rule_continue(auto trigger) {
     return std::tuple{
         trigger = bsc::state<QueryRobotOnContinue>,
         bsc::state<QueryRobotOnContinue>[robot_is<robot::Idle>] /
-                (update_pause<pause::set_running>, emit<out::light_off>) = bsc::state<Idle>,
+            (update_pause<pause::set_running>, emit<out::light_off>) = bsc::state<Idle>,
         bsc::state<QueryRobotOnContinue>[robot_is<robot::Busy>] / update_pause<pause::set_running> = bsc::state<Idle>,
     };
 }
@@ -152,7 +153,7 @@ inline constexpr auto extended_rules = std::tuple_cat(
     rule_continue(on<in::continue_>),                                     // rule 7
     rule_press(bsc::state<QueryPauseOnPress>[pause_is<pause::Running>]),  // rule 1, new trigger
     rule_release(on<in::release>),                                        // rule 2
-    rule_done(bsc::state<QueryPauseOnDone>[pause_is<pause::Running>]));  // rule 3, new trigger
+    rule_done(bsc::state<QueryPauseOnDone>[pause_is<pause::Running>]));   // rule 3, new trigger
 
 inline constexpr auto extended_main_chart = make_main<extended_connections>(
     main_tree(bsc::state<QueryPauseOnPress>, bsc::state<QueryPauseOnDone>, bsc::state<QueryRobotOnPause>,

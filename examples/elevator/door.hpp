@@ -69,10 +69,12 @@ inline constexpr auto serve = bsc::action([](data& d) { ++d.served.value; });
 template <class LoadCleared, class... Extra>
 constexpr auto door_chart(LoadCleared load_cleared, Extra... extra) {
     return bsc::make_chart<data>(
-        bsc::composite<Car>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Moving>,
-                            bsc::composite<DoorOpen>(bsc::initial<Dwelling>, bsc::state<Dwelling>, bsc::state<Overloaded>)),
+        bsc::composite<Car>(
+            bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Moving>,
+            bsc::composite<DoorOpen>(bsc::initial<Dwelling>, bsc::state<Dwelling>, bsc::state<Overloaded>)),
         bsc::state<Idle> + bsc::event<call>[here] = bsc::state<DoorOpen>,
-        bsc::state<Idle> + bsc::event<call>[!here] / (go_to, bsc::raise_after(travel_time, arrived{})) = bsc::state<Moving>,
+        bsc::state<Idle> +
+            bsc::event<call>[!here] / (go_to, bsc::raise_after(travel_time, arrived{})) = bsc::state<Moving>,
         bsc::state<Moving> + bsc::event<call> / bsc::defer,
         bsc::state<Moving> + bsc::event<arrived> / stop = bsc::state<DoorOpen>,
         bsc::state<DoorOpen> + bsc::on_entry / (serve, bsc::raise_after(dwell_time, dwell_over{}, dwell_timer)),
@@ -87,13 +89,12 @@ inline constexpr auto dwell_again = bsc::state<Overloaded> + bsc::event<load_ok>
 // Nothing takes the dwell timer's event while the car is overloaded: it is dropped.
 inline constexpr auto flawed = door_chart(dwell_again);
 // The load cleared: the dwell time starts over.
-inline constexpr auto fixed = door_chart(bsc::state<Overloaded> + bsc::event<load_ok> /
-                                             (bsc::cancel_delayed(dwell_timer),
-                                              bsc::raise_after(dwell_time, dwell_over{}, dwell_timer)) =
-                                             bsc::state<Dwelling>);
+inline constexpr auto fixed = door_chart(
+    bsc::state<Overloaded> +
+        bsc::event<load_ok> / (bsc::cancel_delayed(dwell_timer),
+                               bsc::raise_after(dwell_time, dwell_over{}, dwell_timer)) = bsc::state<Dwelling>);
 // Deferring the dwell timer's event while overloaded: refuted (see above).
-inline constexpr auto deferring =
-    door_chart(dwell_again, bsc::state<Overloaded> + bsc::event<dwell_over> / bsc::defer);
+inline constexpr auto deferring = door_chart(dwell_again, bsc::state<Overloaded> + bsc::event<dwell_over> / bsc::defer);
 
 using flawed_machine = bsc::machine<bsc::chart_ref<flawed>, policy>;
 using fixed_machine = bsc::machine<bsc::chart_ref<fixed>, policy>;

@@ -37,8 +37,8 @@ auto closed_car() {
     };
     auto describe = [](car<Machine> const& c) { return c.door.active_states().joined(); };
     auto label = [](std::size_t choice) { return std::string{happenings[choice]}; };
-    return bsc::verify::system_model{car<Machine>{Machine{Chart}}, bsc::duration{std::chrono::seconds{1}},
-                                     happenings.size(), step, describe, label};
+    return bsc::verify::system_model{
+        car<Machine>{Machine{Chart}}, bsc::duration{std::chrono::seconds{1}}, happenings.size(), step, describe, label};
 }
 
 // What the door must always be able to do again, from any state the car can reach.

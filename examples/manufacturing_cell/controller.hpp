@@ -71,17 +71,17 @@ inline constexpr bsc::duration robot_time = 2500ms;  ///< T3: the robot takes th
 
 struct Cell;  // the controller: an AND state whose regions are the five components
 
-struct Belt;               // component 1: the belt
-struct BeltOff;            //   motor off, the phase still open (E1 false)
-struct BeltOn;             //   motor on, carrying a piece from the input buffer to P1
-struct BeltDone;           //   motor off, the belt has ended its phase (E1 set)
-struct Drill;              // component 2: the drill
+struct Belt;      // component 1: the belt
+struct BeltOff;   //   motor off, the phase still open (E1 false)
+struct BeltOn;    //   motor on, carrying a piece from the input buffer to P1
+struct BeltDone;  //   motor off, the belt has ended its phase (E1 set)
+struct Drill;     // component 2: the drill
 struct DrillOff;
 struct DrillOn;
-struct Test;               // component 3: the test station
+struct Test;  // component 3: the test station
 struct TestOff;
 struct TestOn;
-struct Robot;              // component 4: the robot
+struct Robot;  // component 4: the robot
 struct RobotOff;
 struct RobotOn;
 struct Table;              // component 5: the cylinder that turns the table
@@ -221,15 +221,14 @@ inline constexpr auto new_phase = bsc::named<"reset E1-E4">([](data& d) { d.E1 =
 /// constraints 2 and 3 from the same rows; `chart` is the paper's.
 template <class G4, class G13>
 constexpr auto make_controller(G4 guard4, G13 guard13) {
-        return bsc::make_chart<data>(
+    return bsc::make_chart<data>(
         // The components, in the paper's order: the order in which they run in each cycle.
-        bsc::parallel<Cell>(
-            bsc::composite<Belt>(bsc::initial<BeltOff>, bsc::state<BeltOn>, bsc::state<BeltDone>),
-            bsc::composite<Drill>(bsc::initial<DrillOff>, bsc::state<DrillOn>),
-            bsc::composite<Test>(bsc::initial<TestOff>, bsc::state<TestOn>),
-            bsc::composite<Robot>(bsc::initial<RobotOff>, bsc::state<RobotOn>),
-            bsc::composite<Table>(bsc::initial<CylinderReturned>, bsc::state<CylinderAdvancing>,
-                                  bsc::state<CylinderReturning>)),
+        bsc::parallel<Cell>(bsc::composite<Belt>(bsc::initial<BeltOff>, bsc::state<BeltOn>, bsc::state<BeltDone>),
+                            bsc::composite<Drill>(bsc::initial<DrillOff>, bsc::state<DrillOn>),
+                            bsc::composite<Test>(bsc::initial<TestOff>, bsc::state<TestOn>),
+                            bsc::composite<Robot>(bsc::initial<RobotOff>, bsc::state<RobotOn>),
+                            bsc::composite<Table>(bsc::initial<CylinderReturned>, bsc::state<CylinderAdvancing>,
+                                                  bsc::state<CylinderReturning>)),
 
         // BELT: "If inputbuffer & ¬P1 then BeltOn; If P1 then BeltOff".
         // Paper silent: the belt's third state. The paper gives the belt three states but the
@@ -237,27 +236,26 @@ constexpr auto make_controller(G4 guard4, G13 guard13) {
         // (a piece delivered to P1, or nothing to carry), left when the table resets E1. So the belt
         // is in BeltDone whenever the table turns, and the three states combine freely with the
         // devices' while the table stands still (the paper's 3 x 2 x 2 x 2 = 24 configurations).
-        bsc::state<BeltOff>  [g1] / belt_on             = bsc::state<BeltOn>,
-        bsc::state<BeltOn>   [g2] / belt_off            = bsc::state<BeltDone>,
-        bsc::state<BeltOff>  [g3] / belt_nothing_to_do  = bsc::state<BeltDone>,  // constraint 2
-        bsc::state<BeltDone> [new_phase_begun]          = bsc::state<BeltOff>,
+        bsc::state<BeltOff>[g1] / belt_on = bsc::state<BeltOn>,
+        bsc::state<BeltOn>[g2] / belt_off = bsc::state<BeltDone>,
+        bsc::state<BeltOff>[g3] / belt_nothing_to_do = bsc::state<BeltDone>,  // constraint 2
+        bsc::state<BeltDone>[new_phase_begun] = bsc::state<BeltOff>,
 
         // DRILL: "If P2 then DrillOn & tm1On; If tm1.tm then DrillOff".
         // Paper silent: without a piece the drill stays Off and only sets E2 (an internal
         // transition: nothing is exited or entered).
-        bsc::state<DrillOff> [guard4] / drill_on            = bsc::state<DrillOn>,
-        bsc::state<DrillOn>  [g5] / drill_off           = bsc::state<DrillOff>,
-        bsc::state<DrillOff> [g6] / drill_nothing_to_do,                          // constraint 2
+        bsc::state<DrillOff>[guard4] / drill_on = bsc::state<DrillOn>,
+        bsc::state<DrillOn>[g5] / drill_off = bsc::state<DrillOff>,
+        bsc::state<DrillOff>[g6] / drill_nothing_to_do,  // constraint 2
 
         // TEST: "If P3 then TestOn & tm2On; If tm2.tm then TestOff".
-        bsc::state<TestOff>  [g7] / test_on             = bsc::state<TestOn>,
-        bsc::state<TestOn>   [g8] / test_off            = bsc::state<TestOff>,
-        bsc::state<TestOff>  [g9] / test_nothing_to_do,                           // constraint 2
+        bsc::state<TestOff>[g7] / test_on = bsc::state<TestOn>, bsc::state<TestOn>[g8] / test_off = bsc::state<TestOff>,
+        bsc::state<TestOff>[g9] / test_nothing_to_do,  // constraint 2
 
         // ROBOT: "If P4 then RobotOn & tm3On; If tm3.tm then RobotOff".
-        bsc::state<RobotOff> [g10] / robot_on           = bsc::state<RobotOn>,
-        bsc::state<RobotOn>  [g11] / robot_off          = bsc::state<RobotOff>,
-        bsc::state<RobotOff> [g12] / robot_nothing_to_do,                         // constraint 2
+        bsc::state<RobotOff>[g10] / robot_on = bsc::state<RobotOn>,
+        bsc::state<RobotOn>[g11] / robot_off = bsc::state<RobotOff>,
+        bsc::state<RobotOff>[g12] / robot_nothing_to_do,  // constraint 2
 
         // TABLE: "If BeltEnd & DrillEnd & TestEnd & RobotEnd then ValveOn; If SensorOn then
         // ValveOff"; with constraint 3 and the reset of E1..E4 after each turn.
@@ -266,10 +264,10 @@ constexpr auto make_controller(G4 guard4, G13 guard13) {
         // cycle after, in practice), the phase ends: CylinderReturning resets E1..E4. The devices
         // therefore stay off for the whole turn and see the pieces at their new positions.
         // Paper silent: under g15 the table does not move: an internal transition resets E1..E4.
-        bsc::state<CylinderReturned>  [guard13] / valve_on         = bsc::state<CylinderAdvancing>,  // constraint 3
-        bsc::state<CylinderAdvancing> [g14] / valve_off        = bsc::state<CylinderReturning>,
-        bsc::state<CylinderReturning> [arm_left_end] / new_phase = bsc::state<CylinderReturned>,
-        bsc::state<CylinderReturned>  [g15] / new_phase);                                        // constraint 3
+        bsc::state<CylinderReturned>[guard13] / valve_on = bsc::state<CylinderAdvancing>,  // constraint 3
+        bsc::state<CylinderAdvancing>[g14] / valve_off = bsc::state<CylinderReturning>,
+        bsc::state<CylinderReturning>[arm_left_end] / new_phase = bsc::state<CylinderReturned>,
+        bsc::state<CylinderReturned>[g15] / new_phase);  // constraint 3
 }
 
 inline constexpr auto chart = make_controller(g4, g13);

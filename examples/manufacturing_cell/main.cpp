@@ -63,7 +63,9 @@ snapshot take(cell::machine const& m, cell::sensors const& in) {
     s.drill = m.is<cell::DrillOn>() ? "On" : "Off";
     s.test = m.is<cell::TestOn>() ? "On" : "Off";
     s.robot = m.is<cell::RobotOn>() ? "On" : "Off";
-    s.table = m.is<cell::CylinderAdvancing>() ? "Advancing" : m.is<cell::CylinderReturning>() ? "Returning" : "Returned";
+    s.table = m.is<cell::CylinderAdvancing>()   ? "Advancing"
+              : m.is<cell::CylinderReturning>() ? "Returning"
+                                                : "Returned";
     s.out = cell::read_outputs(m.context());
     s.in = in;
     return s;
@@ -77,14 +79,15 @@ bool only_belt_idles(snapshot const& a, snapshot const& b) {
 }
 
 void print_header() {
-    std::printf("    t [s]  Belt Drill Test Robot Table      | outputs                     | sensors            | E1-4\n");
+    std::printf(
+        "    t [s]  Belt Drill Test Robot Table      | outputs                     | sensors            | E1-4\n");
 }
 
 void print_line(bsc::duration t, snapshot const& s, cell::data const& d) {
     auto const on = [](bool b, char const* name, char const* off) { return b ? name : off; };
     std::printf("%9.3f  %-4s %-5s %-4s %-5s %-10s | %s %s %s %s %s | %s %s %s %s %s %s  | %d%d%d%d\n",
-                std::chrono::duration<double>(t).count(), s.belt.data(), s.drill.data(), s.test.data(),
-                s.robot.data(), s.table.data(), on(s.out.belt, "belt", "----"), on(s.out.drill, "drill", "-----"),
+                std::chrono::duration<double>(t).count(), s.belt.data(), s.drill.data(), s.test.data(), s.robot.data(),
+                s.table.data(), on(s.out.belt, "belt", "----"), on(s.out.drill, "drill", "-----"),
                 on(s.out.test, "test", "----"), on(s.out.robot, "robot", "-----"), on(s.out.valve, "valve", "-----"),
                 on(s.in.IN, "IN", "--"), on(s.in.P1, "P1", "--"), on(s.in.P2, "P2", "--"), on(s.in.P3, "P3", "--"),
                 on(s.in.P4, "P4", "--"), on(s.in.S1, "S1", "--"), d.E1, d.E2, d.E3, d.E4);
@@ -155,7 +158,9 @@ int main(int argc, char** argv) {
     if (!parse(argc, argv, o)) return usage(stderr, 2);
     auto const arrivals = o.random ? cell::arrivals::random(o.pieces, o.seed, 500ms, 12s) : scripted_arrivals(o.pieces);
 
-    auto const ms = [](bsc::duration d) { return static_cast<long>(std::chrono::duration_cast<std::chrono::milliseconds>(d).count()); };
+    auto const ms = [](bsc::duration d) {
+        return static_cast<long>(std::chrono::duration_cast<std::chrono::milliseconds>(d).count());
+    };
     std::printf("Manufacturing cell: %d pieces (%s), scan period %ld ms, T1 %ld ms, T2 %ld ms, T3 %ld ms\n", o.pieces,
                 o.random ? ("random arrivals, seed " + std::to_string(o.seed)).c_str() : "scripted arrivals",
                 ms(o.period), ms(cell::drill_time), ms(cell::test_time), ms(cell::robot_time));
@@ -182,9 +187,10 @@ int main(int argc, char** argv) {
     long folded = 0;
     auto const flush = [&] {
         if (folded > 0)
-            std::printf("           ... %ld more cycles: the belt alternates Off/Done, E1..E4 are set and reset"
-                        " (empty phases, g15)\n",
-                        folded);
+            std::printf(
+                "           ... %ld more cycles: the belt alternates Off/Done, E1..E4 are set and reset"
+                " (empty phases, g15)\n",
+                folded);
         folded = 0;
     };
     while (!loop.done() && loop.cycles() < max_cycles) {
@@ -209,8 +215,7 @@ int main(int argc, char** argv) {
 
     cell::plant const& p = loop.plant();
     std::printf("\nsummary: %zu pieces in, %zu stored, %d table turns, %ld cycles (%.1f s)\n", p.pieces().size(),
-                p.stored(), p.turns(), loop.cycles(),
-                std::chrono::duration<double>(loop.cycles() * o.period).count());
+                p.stored(), p.turns(), loop.cycles(), std::chrono::duration<double>(loop.cycles() * o.period).count());
     for (cell::piece const& x : p.pieces())
         if (!o.quiet)
             std::printf("  piece %d: in at %.1f s, drilled %d, tested %d, %s at %.1f s\n", x.id,
@@ -221,7 +226,8 @@ int main(int argc, char** argv) {
     if (vcd) {
         vcd_file.flush();
         if (vcd_file) {
-            std::printf("waveform: %zu samples of %zu variables in %s\n", vcd->samples(), vcd->variables(), o.vcd.c_str());
+            std::printf("waveform: %zu samples of %zu variables in %s\n", vcd->samples(), vcd->variables(),
+                        o.vcd.c_str());
         } else {
             std::printf("FAILED: could not write the waveform to %s\n", o.vcd.c_str());
             ok = false;
@@ -229,6 +235,7 @@ int main(int argc, char** argv) {
     }
     if (!finished) std::printf("FAILED: not every piece was stored within %ld cycles\n", max_cycles);
     for (std::string const& v : loop.monitor().violations()) std::printf("VIOLATION %s\n", v.c_str());
-    if (ok) std::printf("ok: every piece drilled, tested and stored; constraints 1-3, synchronisation and timing held\n");
+    if (ok)
+        std::printf("ok: every piece drilled, tested and stored; constraints 1-3, synchronisation and timing held\n");
     return ok ? 0 : 1;
 }

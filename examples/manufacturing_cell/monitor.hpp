@@ -52,8 +52,8 @@ public:
         std::array<bool, 4> const on{out.belt, out.drill, out.test, out.robot};
         std::array<bool, 4> const was{last_.belt, last_.drill, last_.test, last_.robot};
         std::array<bool, 4> const piece_there{latched.IN && !latched.P1, latched.P2, latched.P3, latched.P4};
-        char const* const position[4] = {"a piece in the input buffer and P1 free", "a piece at P2",
-                                         "a piece at P3", "a piece at P4"};
+        char const* const position[4] = {"a piece in the input buffer and P1 free", "a piece at P2", "a piece at P3",
+                                         "a piece at P4"};
         for (std::size_t d = 0; d < 4; ++d) {
             auto& t = track_[d];
             if (on[d] && !was[d]) {  // the device starts
@@ -84,17 +84,14 @@ public:
         // Every device has finished when the table actually turns (at the full advance).
         for (; turns_seen_ < p.turn_log().size(); ++turns_seen_) {
             turn_record const& turn = p.turn_log()[turns_seen_];
-            auto const piece_at = [&](std::size_t i) {
-                return p.pieces()[static_cast<std::size_t>(turn.before[i])];
-            };
+            auto const piece_at = [&](std::size_t i) { return p.pieces()[static_cast<std::size_t>(turn.before[i])]; };
             if (turn.before[1] != plant::none && piece_at(1).drilled == 0)
                 violation("synchronisation: the table turned before the piece at P2 was drilled");
             if (turn.before[2] != plant::none && piece_at(2).tested == 0)
                 violation("synchronisation: the table turned before the piece at P3 was tested");
             if (turn.before[3] != plant::none)
                 violation("synchronisation: the table turned before the robot had cleared P4");
-            if (turn.on_belt != plant::none)
-                violation("synchronisation: the table turned with a piece on the belt");
+            if (turn.on_belt != plant::none) violation("synchronisation: the table turned with a piece on the belt");
         }
         for (; faults_seen_ < p.faults().size(); ++faults_seen_) violation("plant fault: " + p.faults()[faults_seen_]);
         last_ = out;
@@ -122,9 +119,8 @@ public:
 
 private:
     void violation(std::string what) {
-        violations_.push_back(
-            std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(now_).count()) + " ms: " +
-            std::move(what));
+        violations_.push_back(std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(now_).count()) +
+                              " ms: " + std::move(what));
     }
 
     struct track {
@@ -147,8 +143,8 @@ private:
 struct cycle_record {
     long cycle = 0;
     bsc::duration time{};
-    sensors latched;     ///< what the controller latched at the start of the cycle
-    actuators out;       ///< what it published at the end
+    sensors latched;  ///< what the controller latched at the start of the cycle
+    actuators out;    ///< what it published at the end
     bsc::step_report report;
 };
 

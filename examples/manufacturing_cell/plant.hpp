@@ -180,8 +180,7 @@ private:
     }
 
     void turn(bsc::duration when) {
-        if (at_[3] != none)
-            fault("turn with piece " + std::to_string(at_[3]) + " still at P4", when);
+        if (at_[3] != none) fault("turn with piece " + std::to_string(at_[3]) + " still at P4", when);
         turn_log_.push_back({when, at_, on_belt_});
         at_ = {at_[3], at_[0], at_[1], at_[2]};
         turned_ = true;
@@ -202,9 +201,9 @@ private:
     int on_belt_ = none;
     bsc::duration belt_progress_{};
     std::array<int, 4> at_{none, none, none, none};
-    bsc::duration arm_{};       // advance of the arm, 0 (returned) .. arm_advance (S1)
-    bool turned_ = false;       // this stroke has turned the table
-    bool in_transit_ = false;   // the table is between positions
+    bsc::duration arm_{};      // advance of the arm, 0 (returned) .. arm_advance (S1)
+    bool turned_ = false;      // this stroke has turned the table
+    bool in_transit_ = false;  // the table is between positions
     int turns_ = 0;
     std::vector<turn_record> turn_log_;
     bsc::duration drill_on_{}, test_on_{}, robot_on_{};  // how long each device has been on
@@ -237,8 +236,7 @@ inline std::vector<bsc::duration> bursts(int bursts, int size, bsc::duration fir
 /// `count` pieces with gaps drawn uniformly (to the millisecond) from [min_gap, max_gap] by a
 /// generator seeded with `seed`. The same seed gives the same times with any compiler: only
 /// std::mt19937's raw output, which the standard fixes, is used.
-inline std::vector<bsc::duration> random(int count, std::uint32_t seed, bsc::duration min_gap,
-                                         bsc::duration max_gap) {
+inline std::vector<bsc::duration> random(int count, std::uint32_t seed, bsc::duration min_gap, bsc::duration max_gap) {
     std::mt19937 gen{seed};
     auto const lo = std::chrono::duration_cast<std::chrono::milliseconds>(min_gap).count();
     auto const span = std::chrono::duration_cast<std::chrono::milliseconds>(max_gap).count() - lo + 1;

@@ -30,15 +30,15 @@ inline constexpr int belt_cycles = 2;  ///< cycles of belt motion from the input
 inline constexpr int arm_cycles = 2;   ///< cycles of valve-on for a full advance (a 90 degree turn)
 
 struct plant {
-    bool waiting = false;          ///< a piece is in the input buffer (IN)
-    bool carrying = false;         ///< the belt carries a piece towards P1
-    std::uint8_t belt_run = 0;     ///< cycles it has been carried
-    std::array<bool, 4> at{};      ///< a piece at P1..P4
-    std::uint8_t arm = 0;          ///< cycles of advance so far
-    bool advanced = false;         ///< the arm is fully advanced (S1)
-    bool robot_was_on = false;     ///< the robot ran in the last cycle
-    bool empty_turn = false;       ///< the table turned with nothing at P1..P3 (constraint 3)
-    bool collision = false;        ///< a piece was put where one already was
+    bool waiting = false;       ///< a piece is in the input buffer (IN)
+    bool carrying = false;      ///< the belt carries a piece towards P1
+    std::uint8_t belt_run = 0;  ///< cycles it has been carried
+    std::array<bool, 4> at{};   ///< a piece at P1..P4
+    std::uint8_t arm = 0;       ///< cycles of advance so far
+    bool advanced = false;      ///< the arm is fully advanced (S1)
+    bool robot_was_on = false;  ///< the robot ran in the last cycle
+    bool empty_turn = false;    ///< the table turned with nothing at P1..P3 (constraint 3)
+    bool collision = false;     ///< a piece was put where one already was
 };
 
 /// The closed loop: the controller and the plant. Any controller chart over cell::data will do,
@@ -106,8 +106,8 @@ auto model(Chart const& chart, bsc::duration scan = period) {
     auto step = [](state& s, std::size_t choice, bsc::duration now) { cycle(s, choice == 1, now); };
     auto describe = [](state const& s) { return s.controller.active_states().joined() + describe_plant(s.plant); };
     auto label = [](std::uint16_t c) { return std::string(c == 1 ? "cycle, a piece arrives" : "cycle"); };
-    return bsc::verify::system_model{state{bsc::machine<Chart, bsc::scan_policy>{chart, data{}}, plant{}}, scan, 2,
-                                     step, describe, label};
+    return bsc::verify::system_model{
+        state{bsc::machine<Chart, bsc::scan_policy>{chart, data{}}, plant{}}, scan, 2, step, describe, label};
 }
 
 }  // namespace cell::finite

@@ -52,7 +52,8 @@ struct push {
 
 /// Pushes the button called `name` (in any case); nothing happens if no button is called so.
 std::optional<push> press(machine& m, std::string_view name) {
-    auto const found = std::ranges::find_if(events::names, [&](std::string_view event) { return same_name(name, event); });
+    auto const found = std::ranges::find_if(events::names,
+                                            [&](std::string_view event) { return same_name(name, event); });
     if (found == events::names.end()) return std::nullopt;
     std::size_t const shown_before = m.context().display.shown();
     auto const number = static_cast<std::size_t>(found - events::names.begin());
@@ -62,8 +63,8 @@ std::optional<push> press(machine& m, std::string_view name) {
 /// The push's line: the configuration, the error and what the push showed (the display's lines
 /// after the first `shown_before`).
 void print(std::string_view button, machine const& m, bsc::outcome outcome, std::size_t shown_before) {
-    std::cout << "  " << std::left << std::setw(9) << button << " -> " << std::setw(22)
-              << m.active_states().joined() << "  error " << m.context().error;
+    std::cout << "  " << std::left << std::setw(9) << button << " -> " << std::setw(22) << m.active_states().joined()
+              << "  error " << m.context().error;
     if (outcome == bsc::outcome::ignored)
         std::cout << "  (ignored)";
     else
@@ -142,8 +143,8 @@ int run_script(bool log) {
         std::string const got = m.active_states().joined();
         if (got != s.expected || m.context().error != s.error || pushed->outcome != s.outcome) {
             std::cerr << "mcs: step " << number << " (" << s.button << "): expected '" << s.expected << "', error "
-                      << s.error << ", " << to_string(s.outcome) << "; got '" << got << "', error "
-                      << m.context().error << ", " << to_string(pushed->outcome) << '\n';
+                      << s.error << ", " << to_string(s.outcome) << "; got '" << got << "', error " << m.context().error
+                      << ", " << to_string(pushed->outcome) << '\n';
             return 1;
         }
         // With --log, the logger saw a transition for each push that was consumed, and none otherwise.
@@ -165,9 +166,11 @@ int run_script(bool log) {
 
 void print_help() {
     std::cout << "buttons (any case):\n";
+    // clang-format off
     [&]<class... Button>(mcs::button_list<Button...>) {
         ((std::cout << "  " << std::left << std::setw(9) << Button::name << Button::label << '\n'), ...);
     }(mcs::buttons{});
+    // clang-format on
     std::cout << "  help     this list\n  quit     leave (so does end of input)\n";
 }
 

@@ -93,22 +93,22 @@ struct setup_p {
 /// The buttons of the panel, in the order the help text lists them.
 template <class... Buttons>
 struct button_list {};
-using buttons = button_list<on_p, off_p, estop_p, reset_p, mem_p, mdi_p, tape_p, hnd_p, jog_p, rpd_p, zrn_p,
-                            edit_p, setup_p>;
+using buttons =
+    button_list<on_p, off_p, estop_p, reset_p, mem_p, mdi_p, tape_p, hnd_p, jog_p, rpd_p, zrn_p, edit_p, setup_p>;
 
 // ---- The states of Table 1 and Figure 12 --------------------------------------------------------
 // The modes are spelled as type names (Mem for the paper's MEM); the buttons keep the paper's
 // capitals (MEM_P).
 
-struct MCS;     // level 1
-struct Off;     // level 2
+struct MCS;  // level 1
+struct Off;  // level 2
 struct On;
-struct Estop;   // Emergency stop
-struct Auto;    // level 3: the work mode groups
+struct Estop;  // Emergency stop
+struct Auto;   // level 3: the work mode groups
 struct Manual;
-struct Edit;    // Program Edit
-struct Setup;   // Parameter Setup
-struct Mem;     // level 4: the work modes of Auto
+struct Edit;   // Program Edit
+struct Setup;  // Parameter Setup
+struct Mem;    // level 4: the work modes of Auto
 struct Mdi;
 struct Tape;
 struct Handle;  // level 4: the work modes of Manual
@@ -194,52 +194,49 @@ inline constexpr auto show_exit = bsc::named<"Show">([](panel& p) { p.display.sh
 
 // Table 1 and Figure 12: the topology, one level per indentation, siblings in Figure 12's
 // order (Off, Estop, On).
-inline constexpr auto tree =
-    bsc::composite<MCS>(bsc::initial<Off>,
-        bsc::state<Off>,
-        bsc::state<Estop>,
-        // _Hist (Figure 12): coming back On restores the work mode in use when On was left.
-        // Deep history because the paper's engine (Figure 9, step 5) "searches the history
-        // condition until an atomic state is finally reached", i.e. down to the mode itself.
-        bsc::composite<On>(bsc::deep_history, bsc::initial<Auto>,
-            bsc::composite<Auto>(bsc::initial<Mem>, bsc::state<Mdi>, bsc::state<Tape>),
-            // Paper silent: Manual's default. Handle, listed first in Table 1 as MEM is for
-            // Auto, and the slowest way to move an axis. No row ever relies on it: every
-            // Manual button names its mode, and On's history names the mode it restores.
-            bsc::composite<Manual>(bsc::initial<Handle>, bsc::state<Jog>, bsc::state<Rpd>, bsc::state<Zrn>),
-            bsc::state<Edit>,
-            bsc::state<Setup>));
+inline constexpr auto tree = bsc::composite<MCS>(
+    bsc::initial<Off>, bsc::state<Off>, bsc::state<Estop>,
+    // _Hist (Figure 12): coming back On restores the work mode in use when On was left.
+    // Deep history because the paper's engine (Figure 9, step 5) "searches the history
+    // condition until an atomic state is finally reached", i.e. down to the mode itself.
+    bsc::composite<On>(bsc::deep_history, bsc::initial<Auto>,
+                       bsc::composite<Auto>(bsc::initial<Mem>, bsc::state<Mdi>, bsc::state<Tape>),
+                       // Paper silent: Manual's default. Handle, listed first in Table 1 as MEM is for
+                       // Auto, and the slowest way to move an axis. No row ever relies on it: every
+                       // Manual button names its mode, and On's history names the mode it restores.
+                       bsc::composite<Manual>(bsc::initial<Handle>, bsc::state<Jog>, bsc::state<Rpd>, bsc::state<Zrn>),
+                       bsc::state<Edit>, bsc::state<Setup>));
 
 // The chart's rows come in groups (bsc::rows), so that the verification tests can build
 // deliberately broken variants from the same parts.
 inline constexpr auto show_rows = bsc::rows(
     // Figure 12, columns Entry and Exit: every state calls Show when entered and when left.
-    bsc::state<MCS>    + bsc::on_entry / show_entry<MCS>,    bsc::state<MCS>    + bsc::on_exit / show_exit<MCS>,
-    bsc::state<Off>    + bsc::on_entry / show_entry<Off>,    bsc::state<Off>    + bsc::on_exit / show_exit<Off>,
-    bsc::state<Estop>  + bsc::on_entry / show_entry<Estop>,  bsc::state<Estop>  + bsc::on_exit / show_exit<Estop>,
-    bsc::state<On>     + bsc::on_entry / show_entry<On>,     bsc::state<On>     + bsc::on_exit / show_exit<On>,
-    bsc::state<Auto>   + bsc::on_entry / show_entry<Auto>,   bsc::state<Auto>   + bsc::on_exit / show_exit<Auto>,
+    bsc::state<MCS> + bsc::on_entry / show_entry<MCS>, bsc::state<MCS> + bsc::on_exit / show_exit<MCS>,
+    bsc::state<Off> + bsc::on_entry / show_entry<Off>, bsc::state<Off> + bsc::on_exit / show_exit<Off>,
+    bsc::state<Estop> + bsc::on_entry / show_entry<Estop>, bsc::state<Estop> + bsc::on_exit / show_exit<Estop>,
+    bsc::state<On> + bsc::on_entry / show_entry<On>, bsc::state<On> + bsc::on_exit / show_exit<On>,
+    bsc::state<Auto> + bsc::on_entry / show_entry<Auto>, bsc::state<Auto> + bsc::on_exit / show_exit<Auto>,
     bsc::state<Manual> + bsc::on_entry / show_entry<Manual>, bsc::state<Manual> + bsc::on_exit / show_exit<Manual>,
-    bsc::state<Edit>   + bsc::on_entry / show_entry<Edit>,   bsc::state<Edit>   + bsc::on_exit / show_exit<Edit>,
-    bsc::state<Setup>  + bsc::on_entry / show_entry<Setup>,  bsc::state<Setup>  + bsc::on_exit / show_exit<Setup>,
-    bsc::state<Mem>    + bsc::on_entry / show_entry<Mem>,    bsc::state<Mem>    + bsc::on_exit / show_exit<Mem>,
-    bsc::state<Mdi>    + bsc::on_entry / show_entry<Mdi>,    bsc::state<Mdi>    + bsc::on_exit / show_exit<Mdi>,
-    bsc::state<Tape>   + bsc::on_entry / show_entry<Tape>,   bsc::state<Tape>   + bsc::on_exit / show_exit<Tape>,
+    bsc::state<Edit> + bsc::on_entry / show_entry<Edit>, bsc::state<Edit> + bsc::on_exit / show_exit<Edit>,
+    bsc::state<Setup> + bsc::on_entry / show_entry<Setup>, bsc::state<Setup> + bsc::on_exit / show_exit<Setup>,
+    bsc::state<Mem> + bsc::on_entry / show_entry<Mem>, bsc::state<Mem> + bsc::on_exit / show_exit<Mem>,
+    bsc::state<Mdi> + bsc::on_entry / show_entry<Mdi>, bsc::state<Mdi> + bsc::on_exit / show_exit<Mdi>,
+    bsc::state<Tape> + bsc::on_entry / show_entry<Tape>, bsc::state<Tape> + bsc::on_exit / show_exit<Tape>,
     bsc::state<Handle> + bsc::on_entry / show_entry<Handle>, bsc::state<Handle> + bsc::on_exit / show_exit<Handle>,
-    bsc::state<Jog>    + bsc::on_entry / show_entry<Jog>,    bsc::state<Jog>    + bsc::on_exit / show_exit<Jog>,
-    bsc::state<Rpd>    + bsc::on_entry / show_entry<Rpd>,    bsc::state<Rpd>    + bsc::on_exit / show_exit<Rpd>,
-    bsc::state<Zrn>    + bsc::on_entry / show_entry<Zrn>,    bsc::state<Zrn>    + bsc::on_exit / show_exit<Zrn>);
+    bsc::state<Jog> + bsc::on_entry / show_entry<Jog>, bsc::state<Jog> + bsc::on_exit / show_exit<Jog>,
+    bsc::state<Rpd> + bsc::on_entry / show_entry<Rpd>, bsc::state<Rpd> + bsc::on_exit / show_exit<Rpd>,
+    bsc::state<Zrn> + bsc::on_entry / show_entry<Zrn>, bsc::state<Zrn> + bsc::on_exit / show_exit<Zrn>);
 
 /// Figure 13, with its guard `cond` as a parameter (the chart uses mcs::cond).
 template <class Cond>
 constexpr auto figure13(Cond c) {
     return bsc::rows(
         // Figure 13: origin state + event [guard] / action = destination state.
-        bsc::state<Off>   + bsc::event<on_p>                     = bsc::state<On>,
-        bsc::state<Estop> + bsc::event<reset_p> / set_error0     = bsc::state<Estop>,  // external: Show -Estop +Estop
-        bsc::state<Estop> + bsc::event<off_p> [c]                = bsc::state<Off>,
-        bsc::state<On>    + bsc::event<off_p>                    = bsc::state<Off>,
-        bsc::state<On>    + bsc::event<estop_p> / set_error1     = bsc::state<Estop>);
+        bsc::state<Off> + bsc::event<on_p> = bsc::state<On>,
+        bsc::state<Estop> + bsc::event<reset_p> / set_error0 = bsc::state<Estop>,  // external: Show -Estop +Estop
+        bsc::state<Estop> + bsc::event<off_p>[c] = bsc::state<Off>,
+        bsc::state<On> + bsc::event<off_p> = bsc::state<Off>,
+        bsc::state<On> + bsc::event<estop_p> / set_error1 = bsc::state<Estop>);
 }
 
 inline constexpr auto estop_rows = bsc::rows(
@@ -247,8 +244,8 @@ inline constexpr auto estop_rows = bsc::rows(
     // the stop too, so the machine cannot be switched on before the stop is acknowledged; in
     // Estop after a reset it latches the stop again (without this row a second E-stop pushed
     // after RESET_P would be ignored and OFF_P would then pass cond).
-    bsc::state<Off>   + bsc::event<estop_p> / set_error1     = bsc::state<Estop>,
-    bsc::state<Estop> + bsc::event<estop_p> / set_error1     = bsc::state<Estop>
+    bsc::state<Off> + bsc::event<estop_p> / set_error1 = bsc::state<Estop>,
+    bsc::state<Estop> + bsc::event<estop_p> / set_error1 = bsc::state<Estop>
     // Paper silent, and left without a row, so ignored: ON_P while On or in Estop (from Estop
     // the way back is RESET_P, OFF_P, ON_P), OFF_P while Off, RESET_P outside Estop (there is
     // nothing to reset: the error is 0 whenever the machine is not in Estop).
@@ -265,59 +262,42 @@ inline constexpr auto mode_rows = bsc::rows(
     // in Estop, is ignored (the mode is chosen while the machine is On; switching On again
     // restores the last one through On's history).
     //   Auto
-    bsc::state<Mdi>    + bsc::event<mem_p>   = bsc::state<Mem>,
-    bsc::state<Tape>   + bsc::event<mem_p>   = bsc::state<Mem>,
-    bsc::state<Manual> + bsc::event<mem_p>   = bsc::state<Mem>,
-    bsc::state<Edit>   + bsc::event<mem_p>   = bsc::state<Mem>,
-    bsc::state<Setup>  + bsc::event<mem_p>   = bsc::state<Mem>,
+    bsc::state<Mdi> + bsc::event<mem_p> = bsc::state<Mem>, bsc::state<Tape> + bsc::event<mem_p> = bsc::state<Mem>,
+    bsc::state<Manual> + bsc::event<mem_p> = bsc::state<Mem>, bsc::state<Edit> + bsc::event<mem_p> = bsc::state<Mem>,
+    bsc::state<Setup> + bsc::event<mem_p> = bsc::state<Mem>,
 
-    bsc::state<Mem>    + bsc::event<mdi_p>   = bsc::state<Mdi>,
-    bsc::state<Tape>   + bsc::event<mdi_p>   = bsc::state<Mdi>,
-    bsc::state<Manual> + bsc::event<mdi_p>   = bsc::state<Mdi>,
-    bsc::state<Edit>   + bsc::event<mdi_p>   = bsc::state<Mdi>,
-    bsc::state<Setup>  + bsc::event<mdi_p>   = bsc::state<Mdi>,
+    bsc::state<Mem> + bsc::event<mdi_p> = bsc::state<Mdi>, bsc::state<Tape> + bsc::event<mdi_p> = bsc::state<Mdi>,
+    bsc::state<Manual> + bsc::event<mdi_p> = bsc::state<Mdi>, bsc::state<Edit> + bsc::event<mdi_p> = bsc::state<Mdi>,
+    bsc::state<Setup> + bsc::event<mdi_p> = bsc::state<Mdi>,
 
-    bsc::state<Mem>    + bsc::event<tape_p>  = bsc::state<Tape>,
-    bsc::state<Mdi>    + bsc::event<tape_p>  = bsc::state<Tape>,
-    bsc::state<Manual> + bsc::event<tape_p>  = bsc::state<Tape>,
-    bsc::state<Edit>   + bsc::event<tape_p>  = bsc::state<Tape>,
-    bsc::state<Setup>  + bsc::event<tape_p>  = bsc::state<Tape>,
+    bsc::state<Mem> + bsc::event<tape_p> = bsc::state<Tape>, bsc::state<Mdi> + bsc::event<tape_p> = bsc::state<Tape>,
+    bsc::state<Manual> + bsc::event<tape_p> = bsc::state<Tape>,
+    bsc::state<Edit> + bsc::event<tape_p> = bsc::state<Tape>, bsc::state<Setup> + bsc::event<tape_p> = bsc::state<Tape>,
     //   Manual
-    bsc::state<Jog>    + bsc::event<hnd_p>   = bsc::state<Handle>,
-    bsc::state<Rpd>    + bsc::event<hnd_p>   = bsc::state<Handle>,
-    bsc::state<Zrn>    + bsc::event<hnd_p>   = bsc::state<Handle>,
-    bsc::state<Auto>   + bsc::event<hnd_p>   = bsc::state<Handle>,
-    bsc::state<Edit>   + bsc::event<hnd_p>   = bsc::state<Handle>,
-    bsc::state<Setup>  + bsc::event<hnd_p>   = bsc::state<Handle>,
+    bsc::state<Jog> + bsc::event<hnd_p> = bsc::state<Handle>, bsc::state<Rpd> + bsc::event<hnd_p> = bsc::state<Handle>,
+    bsc::state<Zrn> + bsc::event<hnd_p> = bsc::state<Handle>, bsc::state<Auto> + bsc::event<hnd_p> = bsc::state<Handle>,
+    bsc::state<Edit> + bsc::event<hnd_p> = bsc::state<Handle>,
+    bsc::state<Setup> + bsc::event<hnd_p> = bsc::state<Handle>,
 
-    bsc::state<Handle> + bsc::event<jog_p>   = bsc::state<Jog>,
-    bsc::state<Rpd>    + bsc::event<jog_p>   = bsc::state<Jog>,
-    bsc::state<Zrn>    + bsc::event<jog_p>   = bsc::state<Jog>,
-    bsc::state<Auto>   + bsc::event<jog_p>   = bsc::state<Jog>,
-    bsc::state<Edit>   + bsc::event<jog_p>   = bsc::state<Jog>,
-    bsc::state<Setup>  + bsc::event<jog_p>   = bsc::state<Jog>,
+    bsc::state<Handle> + bsc::event<jog_p> = bsc::state<Jog>, bsc::state<Rpd> + bsc::event<jog_p> = bsc::state<Jog>,
+    bsc::state<Zrn> + bsc::event<jog_p> = bsc::state<Jog>, bsc::state<Auto> + bsc::event<jog_p> = bsc::state<Jog>,
+    bsc::state<Edit> + bsc::event<jog_p> = bsc::state<Jog>, bsc::state<Setup> + bsc::event<jog_p> = bsc::state<Jog>,
 
-    bsc::state<Handle> + bsc::event<rpd_p>   = bsc::state<Rpd>,
-    bsc::state<Jog>    + bsc::event<rpd_p>   = bsc::state<Rpd>,
-    bsc::state<Zrn>    + bsc::event<rpd_p>   = bsc::state<Rpd>,
-    bsc::state<Auto>   + bsc::event<rpd_p>   = bsc::state<Rpd>,
-    bsc::state<Edit>   + bsc::event<rpd_p>   = bsc::state<Rpd>,
-    bsc::state<Setup>  + bsc::event<rpd_p>   = bsc::state<Rpd>,
+    bsc::state<Handle> + bsc::event<rpd_p> = bsc::state<Rpd>, bsc::state<Jog> + bsc::event<rpd_p> = bsc::state<Rpd>,
+    bsc::state<Zrn> + bsc::event<rpd_p> = bsc::state<Rpd>, bsc::state<Auto> + bsc::event<rpd_p> = bsc::state<Rpd>,
+    bsc::state<Edit> + bsc::event<rpd_p> = bsc::state<Rpd>, bsc::state<Setup> + bsc::event<rpd_p> = bsc::state<Rpd>,
 
-    bsc::state<Handle> + bsc::event<zrn_p>   = bsc::state<Zrn>,
-    bsc::state<Jog>    + bsc::event<zrn_p>   = bsc::state<Zrn>,
-    bsc::state<Rpd>    + bsc::event<zrn_p>   = bsc::state<Zrn>,
-    bsc::state<Auto>   + bsc::event<zrn_p>   = bsc::state<Zrn>,
-    bsc::state<Edit>   + bsc::event<zrn_p>   = bsc::state<Zrn>,
-    bsc::state<Setup>  + bsc::event<zrn_p>   = bsc::state<Zrn>,
+    bsc::state<Handle> + bsc::event<zrn_p> = bsc::state<Zrn>, bsc::state<Jog> + bsc::event<zrn_p> = bsc::state<Zrn>,
+    bsc::state<Rpd> + bsc::event<zrn_p> = bsc::state<Zrn>, bsc::state<Auto> + bsc::event<zrn_p> = bsc::state<Zrn>,
+    bsc::state<Edit> + bsc::event<zrn_p> = bsc::state<Zrn>, bsc::state<Setup> + bsc::event<zrn_p> = bsc::state<Zrn>,
     //   Program Edit and Parameter Setup
-    bsc::state<Auto>   + bsc::event<edit_p>  = bsc::state<Edit>,
-    bsc::state<Manual> + bsc::event<edit_p>  = bsc::state<Edit>,
-    bsc::state<Setup>  + bsc::event<edit_p>  = bsc::state<Edit>,
+    bsc::state<Auto> + bsc::event<edit_p> = bsc::state<Edit>,
+    bsc::state<Manual> + bsc::event<edit_p> = bsc::state<Edit>,
+    bsc::state<Setup> + bsc::event<edit_p> = bsc::state<Edit>,
 
-    bsc::state<Auto>   + bsc::event<setup_p> = bsc::state<Setup>,
+    bsc::state<Auto> + bsc::event<setup_p> = bsc::state<Setup>,
     bsc::state<Manual> + bsc::event<setup_p> = bsc::state<Setup>,
-    bsc::state<Edit>   + bsc::event<setup_p> = bsc::state<Setup>);
+    bsc::state<Edit> + bsc::event<setup_p> = bsc::state<Setup>);
 
 inline constexpr auto chart = bsc::make_chart<panel>(tree, show_rows, figure13(cond), estop_rows, mode_rows);
 

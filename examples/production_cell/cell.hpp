@@ -149,7 +149,8 @@ using cell_system = bsc::system<
     bsc::link<&A::env_robot, &robot_io::arm2_sensor, &A::press, &press_ctl::arm2_ext>,
     bsc::link<&A::press, &press_ctl::plate, &A::env_press, &press_io::plate, bsc::fail_safe<stop>>,
     // Deposit belt actor
-    bsc::link<&A::deposit_belt, &deposit_belt_ctl::motor, &A::env_deposit_belt, &deposit_belt_io::motor, bsc::fail_safe<false>>,
+    bsc::link<&A::deposit_belt, &deposit_belt_ctl::motor, &A::env_deposit_belt, &deposit_belt_io::motor,
+              bsc::fail_safe<false>>,
     // Plant to plant: the bricks, and where the robot's arms are
     bsc::link<&A::env_feed_belt, &feed_belt_io::to_table, &A::env_table, &table_io::from_belt, bsc::lossless>,
     bsc::link<&A::env_robot, &robot_io::arm1_over_table, &A::env_table, &table_io::arm1_over, bsc::lossless>,
@@ -167,16 +168,14 @@ using cell_system = bsc::system<
 /// (operation.hpp) sets the five manual switches and puts the bricks on the feed belt: those
 /// inputs are driven from outside the system.
 template <class A>
-using system_of = cell_system<A,
-                              bsc::order<&A::feed_belt, &A::table, &A::robot, &A::press, &A::deposit_belt,
-                                         &A::env_feed_belt, &A::env_table, &A::env_robot, &A::env_press,
-                                         &A::env_deposit_belt>,
-                              bsc::from_outside<&A::feed_belt, &feed_belt_ctl::on>,
-                              bsc::from_outside<&A::table, &table_ctl::on>,
-                              bsc::from_outside<&A::robot, &robot_ctl::on>,
-                              bsc::from_outside<&A::press, &press_ctl::on>,
-                              bsc::from_outside<&A::deposit_belt, &deposit_belt_ctl::on>,
-                              bsc::from_outside<&A::env_feed_belt, &feed_belt_io::put>>;
+using system_of =
+    cell_system<A,
+                bsc::order<&A::feed_belt, &A::table, &A::robot, &A::press, &A::deposit_belt, &A::env_feed_belt,
+                           &A::env_table, &A::env_robot, &A::env_press, &A::env_deposit_belt>,
+                bsc::from_outside<&A::feed_belt, &feed_belt_ctl::on>, bsc::from_outside<&A::table, &table_ctl::on>,
+                bsc::from_outside<&A::robot, &robot_ctl::on>, bsc::from_outside<&A::press, &press_ctl::on>,
+                bsc::from_outside<&A::deposit_belt, &deposit_belt_ctl::on>,
+                bsc::from_outside<&A::env_feed_belt, &feed_belt_io::put>>;
 
 /// The production cell.
 using cell = system_of<Actors>;

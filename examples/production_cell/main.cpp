@@ -35,8 +35,8 @@ std::string states(Machine const& m) {
 
 std::string line(pcell::cell const& s) {
     auto const& a = s.actors;
-    return "feed " + states(a.feed_belt) + " | table " + states(a.table) + " | robot " + states(a.robot) +
-           " | press " + states(a.press) + " | deposit " + states(a.deposit_belt) + " || " + pcell::picture(s);
+    return "feed " + states(a.feed_belt) + " | table " + states(a.table) + " | robot " + states(a.robot) + " | press " +
+           states(a.press) + " | deposit " + states(a.deposit_belt) + " || " + pcell::picture(s);
 }
 
 double seconds(bsc::duration d) { return std::chrono::duration<double>(d).count(); }

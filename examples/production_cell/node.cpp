@@ -100,8 +100,10 @@ arguments parse(int argc, char** argv) {
             std::fputs(usage_text, stdout);
             std::exit(0);
         }
-        if (flag == "--broker") a.broker = value();
-        else if (flag == "--name") a.name = value();
+        if (flag == "--broker")
+            a.broker = value();
+        else if (flag == "--name")
+            a.name = value();
         else if (flag == "--actors") {
             std::string_view list = value();
             if (list == "all") continue;
@@ -110,16 +112,26 @@ arguments parse(int argc, char** argv) {
                 a.actors.emplace_back(list.substr(0, comma));
                 list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
             }
-        } else if (flag == "--prefix") a.prefix = value();
-        else if (flag == "--state-dir") a.state_dir = value();
-        else if (flag == "--trace") a.trace = value();
-        else if (flag == "--steps") a.steps = number(value());
-        else if (flag == "--pace-ms") a.pace_ms = number(value());
-        else if (flag == "--deadline-ms") a.deadline_ms = number(value());
-        else if (flag == "--timeout-s") a.timeout_s = number(value());
-        else if (flag == "--bricks") a.bricks = static_cast<int>(number(value()));
-        else if (flag == "--memory") a.memory = true;
-        else usage("unknown flag");
+        } else if (flag == "--prefix")
+            a.prefix = value();
+        else if (flag == "--state-dir")
+            a.state_dir = value();
+        else if (flag == "--trace")
+            a.trace = value();
+        else if (flag == "--steps")
+            a.steps = number(value());
+        else if (flag == "--pace-ms")
+            a.pace_ms = number(value());
+        else if (flag == "--deadline-ms")
+            a.deadline_ms = number(value());
+        else if (flag == "--timeout-s")
+            a.timeout_s = number(value());
+        else if (flag == "--bricks")
+            a.bricks = static_cast<int>(number(value()));
+        else if (flag == "--memory")
+            a.memory = true;
+        else
+            usage("unknown flag");
     }
     if (a.memory == !a.broker.empty()) usage("give either --broker or --memory");
     if (a.bricks < 0 || a.bricks > 255) usage("--bricks is 0 to 255");
@@ -170,11 +182,16 @@ std::string trace_line(cell const& s, std::size_t actor, std::int64_t step, bool
     if (name == "supervisor") {
         line += ",\"put\":" + std::to_string(a.supervisor.context().next);
         line += ",\"states\":" + json_states(a.supervisor);
-    } else if (name == "feed_belt") line += ",\"states\":" + json_states(a.feed_belt);
-    else if (name == "table") line += ",\"states\":" + json_states(a.table);
-    else if (name == "robot") line += ",\"states\":" + json_states(a.robot);
-    else if (name == "press") line += ",\"states\":" + json_states(a.press);
-    else if (name == "deposit_belt") line += ",\"states\":" + json_states(a.deposit_belt);
+    } else if (name == "feed_belt")
+        line += ",\"states\":" + json_states(a.feed_belt);
+    else if (name == "table")
+        line += ",\"states\":" + json_states(a.table);
+    else if (name == "robot")
+        line += ",\"states\":" + json_states(a.robot);
+    else if (name == "press")
+        line += ",\"states\":" + json_states(a.press);
+    else if (name == "deposit_belt")
+        line += ",\"states\":" + json_states(a.deposit_belt);
     else if (name == "env_feed_belt") {
         for (auto const b : a.env_feed_belt.context().slots) add(b, "feed_belt");
         line += ",\"damage\":" + std::string(flag(a.env_feed_belt.is<pcell::Damage>()));
@@ -190,7 +207,7 @@ std::string trace_line(cell const& s, std::size_t actor, std::int64_t step, bool
         add(r.held2, "arm2");
         line += ",\"damage\":" + std::string(flag(a.env_robot.is<pcell::Damage>()));
         line += ",\"driven\":" + std::string(flag(r.turn.get() != pcell::stop || r.arm1.get() != pcell::stop ||
-                                                   r.arm2.get() != pcell::stop));
+                                                  r.arm2.get() != pcell::stop));
         line += ",\"arm1_in_press_area\":" + std::string(flag(r.angle == pcell::arm1_to_press && r.ext1 > 0));
         line += ",\"arm2_in_press_area\":" + std::string(flag(r.angle == pcell::arm2_to_press && r.ext2 > 0));
     } else if (name == "env_press") {
@@ -247,9 +264,11 @@ int run_in_memory(arguments const& args) {
     std::map<std::pair<std::size_t, std::int64_t>, std::vector<std::byte>> deployed;
     auto saved = [](cell const& s, std::size_t actor) {
         std::vector<std::byte> bytes;
+        // clang-format off
         [&]<std::size_t... A>(std::index_sequence<A...>) {
             ((A == actor ? (bytes = bsc::save(s.actors.*bsc::net::detail::deployment<cell>::step_at<A>), 0) : 0), ...);
         }(std::make_index_sequence<actors>{});
+        // clang-format on
         return bytes;
     };
     auto supervised = [&args] {
@@ -307,7 +326,8 @@ int run_in_memory(arguments const& args) {
         }
     }
     auto const& d = reference.actors.env_deposit_belt.context();
-    double const minutes = static_cast<double>(args.steps + 1) * std::chrono::duration<double>(pcell::period).count() / 60;
+    double const minutes = static_cast<double>(args.steps + 1) * std::chrono::duration<double>(pcell::period).count() /
+                           60;
     auto const per_step = [&](auto wall) {
         return std::chrono::duration<double, std::micro>(wall).count() / static_cast<double>(args.steps + 1);
     };
@@ -318,9 +338,10 @@ int run_in_memory(arguments const& args) {
     auto const plain_wall = std::chrono::steady_clock::now() - plain_began;
     (void)reference_began;
     if (again->actors.env_deposit_belt.context().delivered != d.delivered) return 1;  // and the loop is not elided
-    std::printf("%zu actor steps deployed over 11 nodes equal the one-process cell's; bricks delivered %d of %d "
-                "(%.2f per minute of the cell)\n",
-                compared, d.delivered, args.bricks, d.delivered / minutes);
+    std::printf(
+        "%zu actor steps deployed over 11 nodes equal the one-process cell's; bricks delivered %d of %d "
+        "(%.2f per minute of the cell)\n",
+        compared, d.delivered, args.bricks, d.delivered / minutes);
     std::printf("wall time per step: %.1f us deployed over 11 nodes in memory, %.1f us as one bsc::system\n",
                 per_step(deployed_wall), per_step(plain_wall));
     // Every brick delivered forged, unless the run was too short for the supply (a throughput run).
@@ -360,12 +381,13 @@ int run_over_mqtt(arguments const& args) {
         }
     }
     auto const& st = n.stats();
-    std::printf("node %s: %llu steps (%llu jumps, %llu with stale inputs), %llu messages sent, %llu applied, "
-                "%llu old, %llu refused, %llu actors resumed\n",
-                args.name.c_str(), static_cast<unsigned long long>(st.steps), static_cast<unsigned long long>(st.jumps),
-                static_cast<unsigned long long>(st.stale_steps), static_cast<unsigned long long>(st.published),
-                static_cast<unsigned long long>(st.received), static_cast<unsigned long long>(st.old),
-                static_cast<unsigned long long>(st.refused), static_cast<unsigned long long>(st.restored));
+    std::printf(
+        "node %s: %llu steps (%llu jumps, %llu with stale inputs), %llu messages sent, %llu applied, "
+        "%llu old, %llu refused, %llu actors resumed\n",
+        args.name.c_str(), static_cast<unsigned long long>(st.steps), static_cast<unsigned long long>(st.jumps),
+        static_cast<unsigned long long>(st.stale_steps), static_cast<unsigned long long>(st.published),
+        static_cast<unsigned long long>(st.received), static_cast<unsigned long long>(st.old),
+        static_cast<unsigned long long>(st.refused), static_cast<unsigned long long>(st.restored));
     if (!n.finished()) {
         std::printf("FAILED: node %s did not finish in %ld s\n", args.name.c_str(), args.timeout_s);
         return 1;

@@ -19,8 +19,8 @@ namespace pcell {
 
 /// The places a brick can be in, in the order it passes them.
 enum class place : std::uint8_t { feed_belt, table, arm1, press, arm2, deposit_belt };
-inline constexpr std::array<std::string_view, 6> place_names{"feed belt", "table", "arm1", "press", "arm2",
-                                                             "deposit belt"};
+inline constexpr std::array<std::string_view, 6> place_names{"feed belt", "table", "arm1",
+                                                             "press",     "arm2",  "deposit belt"};
 
 /// Calls f(brick, place) for every brick in the cell (not those that have left it).
 template <class System, class F>

@@ -34,13 +34,13 @@ inline constexpr drive rev = -1;
 
 inline constexpr auto period = 100ms;
 
-inline constexpr auto belt_slot_time = 300ms;   // a belt moves a brick by one slot
-inline constexpr auto table_step_time = 200ms;  // the table lifts or turns by one step
-inline constexpr auto robot_turn_time = 300ms;  // the robot turns from one stop to the next
-inline constexpr auto arm_step_time = 200ms;    // an arm extends or retracts by one step
-inline constexpr auto press_step_time = 300ms;  // the plate moves from one level to the next
-inline constexpr auto grip_time = 300ms;        // an electromagnet takes hold of a brick
-inline constexpr auto release_time = 300ms;     // ... and lets it go
+inline constexpr auto belt_slot_time = 300ms;         // a belt moves a brick by one slot
+inline constexpr auto table_step_time = 200ms;        // the table lifts or turns by one step
+inline constexpr auto robot_turn_time = 300ms;        // the robot turns from one stop to the next
+inline constexpr auto arm_step_time = 200ms;          // an arm extends or retracts by one step
+inline constexpr auto press_step_time = 300ms;        // the plate moves from one level to the next
+inline constexpr auto grip_time = 300ms;              // an electromagnet takes hold of a brick
+inline constexpr auto release_time = 300ms;           // ... and lets it go
 inline constexpr auto deposit_clear_time = 600ms;     // the deposit belt moves a dropped brick on
 inline constexpr auto deposit_run_out_time = 1200ms;  // ... then runs until it is surely empty
 
@@ -49,12 +49,12 @@ inline constexpr auto deposit_run_out_time = 1200ms;  // ... then runs until it 
 inline constexpr std::uint8_t feed_slots = 4;     // slot 3 is under the photoelectric sensor
 inline constexpr std::uint8_t deposit_slots = 3;  // a brick dropped by arm2 lands in slot 0
 
-inline constexpr std::uint8_t table_top = 2;       // vertical: 0 (feed belt level) .. 2 (arm1 level)
-inline constexpr std::uint8_t table_unload = 2;    // rotation: 0 (facing the belt) .. 2 (45 degrees)
-inline constexpr std::uint8_t press_bottom = 0;    // the plate: unloaded by arm2
-inline constexpr std::uint8_t press_middle = 1;    // loaded by arm1
-inline constexpr std::uint8_t press_top = 2;       // forging
-inline constexpr std::uint8_t arm_limit = 2;       // an arm extends from 0 to 2
+inline constexpr std::uint8_t table_top = 2;     // vertical: 0 (feed belt level) .. 2 (arm1 level)
+inline constexpr std::uint8_t table_unload = 2;  // rotation: 0 (facing the belt) .. 2 (45 degrees)
+inline constexpr std::uint8_t press_bottom = 0;  // the plate: unloaded by arm2
+inline constexpr std::uint8_t press_middle = 1;  // loaded by arm1
+inline constexpr std::uint8_t press_top = 2;     // forging
+inline constexpr std::uint8_t arm_limit = 2;     // an arm extends from 0 to 2
 
 /// The four stops of the robot's rotation, in the order it passes them.
 inline constexpr std::uint8_t arm1_to_table = 0;
@@ -82,21 +82,20 @@ constexpr auto axis_region() {
     return bsc::composite<Region>(bsc::initial<Still>, bsc::state<Fwd>, bsc::state<Rev>);
 }
 
-template <class Context, class Still, class Fwd, class Rev, class Damage, auto Motor, auto Position,
-          std::uint8_t Limit, class Step>
+template <class Context, class Still, class Fwd, class Rev, class Damage, auto Motor, auto Position, std::uint8_t Limit,
+          class Step>
 constexpr auto axis_rows(Step step) {
     return bsc::rows(
         bsc::state<Still>[([](Context const& c) { return (c.*Motor).get() == fwd; })] = bsc::state<Fwd>,
         bsc::state<Still>[([](Context const& c) { return (c.*Motor).get() == rev; })] = bsc::state<Rev>,
         bsc::state<Fwd>[([](Context const& c) { return (c.*Motor).get() == stop; })] = bsc::state<Still>,
         bsc::state<Fwd>[([](Context const& c) { return (c.*Motor).get() == rev; })] = bsc::state<Rev>,
-        bsc::state<Fwd> + bsc::after(step)[([](Context const& c) { return c.*Position >= Limit; })] =
-            bsc::state<Damage>,
+        bsc::state<Fwd> +
+            bsc::after(step)[([](Context const& c) { return c.*Position >= Limit; })] = bsc::state<Damage>,
         bsc::state<Fwd> + bsc::after(step) / [](Context& c) { ++(c.*Position); } = bsc::state<Fwd>,
         bsc::state<Rev>[([](Context const& c) { return (c.*Motor).get() == stop; })] = bsc::state<Still>,
         bsc::state<Rev>[([](Context const& c) { return (c.*Motor).get() == fwd; })] = bsc::state<Fwd>,
-        bsc::state<Rev> + bsc::after(step)[([](Context const& c) { return c.*Position == 0; })] =
-            bsc::state<Damage>,
+        bsc::state<Rev> + bsc::after(step)[([](Context const& c) { return c.*Position == 0; })] = bsc::state<Damage>,
         bsc::state<Rev> + bsc::after(step) / [](Context& c) { --(c.*Position); } = bsc::state<Rev>);
 }
 

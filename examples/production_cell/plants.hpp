@@ -27,7 +27,7 @@ struct Sensing;
 template <class Context>
 constexpr auto sensor_rows() {
     return bsc::rows(bsc::state<Sensing>[([](Context const& c) { return Context::stale(c); })] /
-                [](Context& c) { Context::publish(c); });
+                     [](Context& c) { Context::publish(c); });
 }
 
 // ==== Feed belt ===================================================================================
@@ -69,26 +69,25 @@ struct feed_belt_io {
 inline constexpr auto env_feed_belt_chart = bsc::make_chart<feed_belt_io>(
     bsc::composite<EnvFeedBelt>(
         bsc::initial<FeedBeltWorks>,
-        bsc::parallel<FeedBeltWorks>(bsc::composite<FbBelt>(bsc::initial<FbStill>, bsc::state<FbMoving>,
-                                                            bsc::state<FbDropping>),
-                                     bsc::composite<FbStart>(bsc::initial<FbReady>),
-                                     bsc::composite<Sensors>(bsc::initial<Sensing>)),
+        bsc::parallel<FeedBeltWorks>(
+            bsc::composite<FbBelt>(bsc::initial<FbStill>, bsc::state<FbMoving>, bsc::state<FbDropping>),
+            bsc::composite<FbStart>(bsc::initial<FbReady>), bsc::composite<Sensors>(bsc::initial<Sensing>)),
         bsc::final_state<Damage>),
-    bsc::rows(bsc::state<FbStill>[([](feed_belt_io const& c) { return c.motor.get(); })] = bsc::state<FbMoving>,
-         bsc::state<FbMoving>[([](feed_belt_io const& c) { return !c.motor.get(); })] = bsc::state<FbStill>,
-         bsc::state<FbMoving> + bsc::after(belt_slot_time)[(
-                                    [](feed_belt_io const& c) { return bool(c.slots[feed_slots - 1]); })] /
-                 feed_belt_io::advance = bsc::state<FbDropping>,
-         bsc::state<FbMoving> + bsc::after(belt_slot_time) / feed_belt_io::advance = bsc::state<FbMoving>,
-         bsc::state<FbDropping> / [](feed_belt_io& c) { c.to_table.set(brick{}); } = bsc::state<FbMoving>,
-         // R1: a brick put on another one.
-         bsc::state<FbReady>[([](feed_belt_io const& c) { return c.put.get() && c.slots[0]; })] =
-             bsc::state<Damage>,
-         bsc::state<FbReady>[([](feed_belt_io const& c) { return bool(c.put.get()); })] /
-             [](feed_belt_io& c) {
-                 c.slots[0] = c.put.get();
-                 ++c.fed;
-             }),
+    bsc::rows(
+        bsc::state<FbStill>[([](feed_belt_io const& c) { return c.motor.get(); })] = bsc::state<FbMoving>,
+        bsc::state<FbMoving>[([](feed_belt_io const& c) { return !c.motor.get(); })] = bsc::state<FbStill>,
+        bsc::state<FbMoving> +
+            bsc::after(belt_slot_time)[([](feed_belt_io const& c) { return bool(c.slots[feed_slots - 1]); })] /
+                feed_belt_io::advance = bsc::state<FbDropping>,
+        bsc::state<FbMoving> + bsc::after(belt_slot_time) / feed_belt_io::advance = bsc::state<FbMoving>,
+        bsc::state<FbDropping> / [](feed_belt_io& c) { c.to_table.set(brick{}); } = bsc::state<FbMoving>,
+        // R1: a brick put on another one.
+        bsc::state<FbReady>[([](feed_belt_io const& c) { return c.put.get() && c.slots[0]; })] = bsc::state<Damage>,
+        bsc::state<FbReady>[([](feed_belt_io const& c) { return bool(c.put.get()); })] /
+            [](feed_belt_io& c) {
+                c.slots[0] = c.put.get();
+                ++c.fed;
+            }),
     sensor_rows<feed_belt_io>());
 
 // ==== Elevating rotary table ======================================================================
@@ -109,14 +108,14 @@ struct TaLoaded;
 struct TaGiving;
 
 struct table_io {
-    bsc::input<drive> lift;         // vertical motor
-    bsc::input<drive> turn;         // rotation motor
-    bsc::input<brick> from_belt;    // a brick falling off the feed belt
-    bsc::input<bool> arm1_over;     // the robot's arm1 is extended over the table
-    bsc::input<bool> arm1_grips;    // ... at the unloading position, its magnet on, empty
+    bsc::input<drive> lift;       // vertical motor
+    bsc::input<drive> turn;       // rotation motor
+    bsc::input<brick> from_belt;  // a brick falling off the feed belt
+    bsc::input<bool> arm1_over;   // the robot's arm1 is extended over the table
+    bsc::input<bool> arm1_grips;  // ... at the unloading position, its magnet on, empty
     bsc::output<std::uint8_t> height_sensor;
     bsc::output<std::uint8_t> angle_sensor;
-    bsc::output<brick> to_arm1;     // the brick taken by arm1's magnet (for one step)
+    bsc::output<brick> to_arm1;  // the brick taken by arm1's magnet (for one step)
     std::uint8_t height = 0;
     std::uint8_t angle = 0;
     brick load{};
@@ -137,11 +136,10 @@ inline constexpr auto table_arm1_over = [](table_io const& c) { return c.arm1_ov
 inline constexpr auto env_table_chart = bsc::make_chart<table_io>(
     bsc::composite<EnvTable>(
         bsc::initial<TableWorks>,
-        bsc::parallel<TableWorks>(axis_region<TaLift, LiftStill, LiftUp, LiftDown>(),
-                                  axis_region<TaTurn, TurnStill, TurnOut, TurnBack>(),
-                                  bsc::composite<TaBrick>(bsc::initial<TaEmpty>, bsc::state<TaLoaded>,
-                                                          bsc::state<TaGiving>),
-                                  bsc::composite<Sensors>(bsc::initial<Sensing>)),
+        bsc::parallel<TableWorks>(
+            axis_region<TaLift, LiftStill, LiftUp, LiftDown>(), axis_region<TaTurn, TurnStill, TurnOut, TurnBack>(),
+            bsc::composite<TaBrick>(bsc::initial<TaEmpty>, bsc::state<TaLoaded>, bsc::state<TaGiving>),
+            bsc::composite<Sensors>(bsc::initial<Sensing>)),
         bsc::final_state<Damage>),
     // R2: the table moves into arm1.
     collision_rows<table_io, LiftStill, LiftUp, LiftDown, Damage, &table_io::lift>(table_arm1_over),
@@ -209,9 +207,9 @@ struct robot_io {
     bsc::output<bool> arm1_grips;     // arm1's magnet is on, empty, at the table's unloading position
     bsc::output<bool> arm1_in_press;  // arm1 is extended into the press area
     bsc::output<bool> arm2_in_press;
-    bsc::output<bool> arm2_grips;     // arm2's magnet is on, empty, at the press's unloading position
-    bsc::output<brick> to_press;      // the brick dropped by arm1 (for one step)
-    bsc::output<brick> to_belt;       // the brick dropped by arm2 (for one step)
+    bsc::output<bool> arm2_grips;  // arm2's magnet is on, empty, at the press's unloading position
+    bsc::output<brick> to_press;   // the brick dropped by arm1 (for one step)
+    bsc::output<brick> to_belt;    // the brick dropped by arm2 (for one step)
     std::uint8_t angle = arm2_to_press;
     std::uint8_t ext1 = 0;
     std::uint8_t ext2 = 0;
@@ -250,14 +248,14 @@ struct robot_io {
 inline constexpr auto env_robot_chart = bsc::make_chart<robot_io>(
     bsc::composite<EnvRobot>(
         bsc::initial<RobotWorks>,
-        bsc::parallel<RobotWorks>(
-            axis_region<RoTurn, TurretStill, TurretFwd, TurretRev>(),
-            axis_region<RoArm1, Arm1Still, Arm1Out, Arm1In>(), axis_region<RoArm2, Arm2Still, Arm2Out, Arm2In>(),
-            bsc::composite<RoMagnet1>(bsc::initial<Mag1Off>, bsc::state<Mag1On>, bsc::state<Mag1Holding>,
-                                      bsc::state<Mag1Dropping>),
-            bsc::composite<RoMagnet2>(bsc::initial<Mag2Off>, bsc::state<Mag2On>, bsc::state<Mag2Holding>,
-                                      bsc::state<Mag2Dropping>),
-            bsc::composite<Sensors>(bsc::initial<Sensing>)),
+        bsc::parallel<RobotWorks>(axis_region<RoTurn, TurretStill, TurretFwd, TurretRev>(),
+                                  axis_region<RoArm1, Arm1Still, Arm1Out, Arm1In>(),
+                                  axis_region<RoArm2, Arm2Still, Arm2Out, Arm2In>(),
+                                  bsc::composite<RoMagnet1>(bsc::initial<Mag1Off>, bsc::state<Mag1On>,
+                                                            bsc::state<Mag1Holding>, bsc::state<Mag1Dropping>),
+                                  bsc::composite<RoMagnet2>(bsc::initial<Mag2Off>, bsc::state<Mag2On>,
+                                                            bsc::state<Mag2Holding>, bsc::state<Mag2Dropping>),
+                                  bsc::composite<Sensors>(bsc::initial<Sensing>)),
         bsc::final_state<Damage>),
     // R2: turning with an arm extended sweeps it through the table, the press or the belt.
     collision_rows<robot_io, TurretStill, TurretFwd, TurretRev, Damage, &robot_io::turn>(
@@ -266,12 +264,10 @@ inline constexpr auto env_robot_chart = bsc::make_chart<robot_io>(
         robot_turn_time),
     // R2: arm1 extended too far while pointing towards the press hits the press (paper, II).
     bsc::rows(bsc::state<Arm1Out> + bsc::after(arm_step_time)[([](robot_io const& c) {
-             return c.angle == arm1_to_press && c.ext1 >= arm1_reach_press;
-         })] = bsc::state<Damage>),
-    axis_rows<robot_io, Arm1Still, Arm1Out, Arm1In, Damage, &robot_io::arm1, &robot_io::ext1, arm_limit>(
-        arm_step_time),
-    axis_rows<robot_io, Arm2Still, Arm2Out, Arm2In, Damage, &robot_io::arm2, &robot_io::ext2, arm_limit>(
-        arm_step_time),
+                  return c.angle == arm1_to_press && c.ext1 >= arm1_reach_press;
+              })] = bsc::state<Damage>),
+    axis_rows<robot_io, Arm1Still, Arm1Out, Arm1In, Damage, &robot_io::arm1, &robot_io::ext1, arm_limit>(arm_step_time),
+    axis_rows<robot_io, Arm2Still, Arm2Out, Arm2In, Damage, &robot_io::arm2, &robot_io::ext2, arm_limit>(arm_step_time),
     bsc::rows(
         // Arm1's magnet: takes a brick from the table, lets it go into the press.
         bsc::state<Mag1Off>[([](robot_io const& c) { return bool(c.from_table.get()); })] =
@@ -284,10 +280,11 @@ inline constexpr auto env_robot_chart = bsc::make_chart<robot_io>(
             bsc::state<Damage>,  // R1: two bricks on arm1
         bsc::state<Mag1Holding>[([](robot_io const& c) {
             return !c.magnet1.get() && c.angle == arm1_to_press && c.ext1 == arm1_reach_press;
-        })] / [](robot_io& c) {
-            c.to_press.set(c.held1);
-            c.held1 = brick{};
-        } = bsc::state<Mag1Dropping>,
+        })] /
+            [](robot_io& c) {
+                c.to_press.set(c.held1);
+                c.held1 = brick{};
+            } = bsc::state<Mag1Dropping>,
         bsc::state<Mag1Holding>[([](robot_io const& c) { return !c.magnet1.get(); })] =
             bsc::state<Damage>,  // let go anywhere else: the brick falls
         bsc::state<Mag1Dropping> / [](robot_io& c) { c.to_press.set(brick{}); } = bsc::state<Mag1Off>,
@@ -301,10 +298,11 @@ inline constexpr auto env_robot_chart = bsc::make_chart<robot_io>(
             bsc::state<Damage>,  // R1: two bricks on arm2
         bsc::state<Mag2Holding>[([](robot_io const& c) {
             return !c.magnet2.get() && c.angle == arm2_to_belt && c.ext2 == arm2_reach_belt;
-        })] / [](robot_io& c) {
-            c.to_belt.set(c.held2);
-            c.held2 = brick{};
-        } = bsc::state<Mag2Dropping>,
+        })] /
+            [](robot_io& c) {
+                c.to_belt.set(c.held2);
+                c.held2 = brick{};
+            } = bsc::state<Mag2Dropping>,
         bsc::state<Mag2Holding>[([](robot_io const& c) { return !c.magnet2.get(); })] = bsc::state<Damage>,
         bsc::state<Mag2Dropping> / [](robot_io& c) { c.to_belt.set(brick{}); } = bsc::state<Mag2Off>),
     sensor_rows<robot_io>());
@@ -323,13 +321,13 @@ struct PrLoaded;
 struct PrGiving;
 
 struct press_io {
-    bsc::input<drive> plate;         // the plate's motor
-    bsc::input<bool> arm1_in;        // arm1 is extended into the press area
-    bsc::input<bool> arm2_in;        // arm2 likewise
-    bsc::input<brick> from_arm1;     // a brick dropped by arm1
-    bsc::input<bool> arm2_grips;     // arm2's magnet is on, empty, at the unloading position
+    bsc::input<drive> plate;      // the plate's motor
+    bsc::input<bool> arm1_in;     // arm1 is extended into the press area
+    bsc::input<bool> arm2_in;     // arm2 likewise
+    bsc::input<brick> from_arm1;  // a brick dropped by arm1
+    bsc::input<bool> arm2_grips;  // arm2's magnet is on, empty, at the unloading position
     bsc::output<std::uint8_t> plate_sensor;
-    bsc::output<brick> to_arm2;      // the brick taken by arm2's magnet (for one step)
+    bsc::output<brick> to_arm2;  // the brick taken by arm2's magnet (for one step)
     std::uint8_t level = press_middle;
     brick load{};
 
@@ -340,10 +338,10 @@ struct press_io {
 inline constexpr auto env_press_chart = bsc::make_chart<press_io>(
     bsc::composite<EnvPress>(
         bsc::initial<PressWorks>,
-        bsc::parallel<PressWorks>(axis_region<PrPlate, PlateStill, PlateUp, PlateDown>(),
-                                  bsc::composite<PrBrick>(bsc::initial<PrEmpty>, bsc::state<PrLoaded>,
-                                                          bsc::state<PrGiving>),
-                                  bsc::composite<Sensors>(bsc::initial<Sensing>)),
+        bsc::parallel<PressWorks>(
+            axis_region<PrPlate, PlateStill, PlateUp, PlateDown>(),
+            bsc::composite<PrBrick>(bsc::initial<PrEmpty>, bsc::state<PrLoaded>, bsc::state<PrGiving>),
+            bsc::composite<Sensors>(bsc::initial<Sensing>)),
         bsc::final_state<Damage>),
     // R2: the plate moves while an arm is in the press.
     collision_rows<press_io, PlateStill, PlateUp, PlateDown, Damage, &press_io::plate>(
@@ -406,14 +404,15 @@ inline constexpr auto env_deposit_belt_chart = bsc::make_chart<deposit_belt_io>(
         bsc::parallel<DepositBeltWorks>(bsc::composite<DbBelt>(bsc::initial<DbStill>, bsc::state<DbMoving>),
                                         bsc::composite<DbStart>(bsc::initial<DbReady>)),
         bsc::final_state<Damage>),
-    bsc::rows(bsc::state<DbStill>[([](deposit_belt_io const& c) { return c.motor.get(); })] = bsc::state<DbMoving>,
-         bsc::state<DbMoving>[([](deposit_belt_io const& c) { return !c.motor.get(); })] = bsc::state<DbStill>,
-         bsc::state<DbMoving> + bsc::after(belt_slot_time) / deposit_belt_io::advance = bsc::state<DbMoving>,
-         // R1: a brick dropped onto another one.
-         bsc::state<DbReady>[([](deposit_belt_io const& c) { return c.from_arm2.get() && c.slots[0]; })] =
-             bsc::state<Damage>,
-         bsc::state<DbReady>[([](deposit_belt_io const& c) { return bool(c.from_arm2.get()); })] /
-             [](deposit_belt_io& c) { c.slots[0] = c.from_arm2.get(); }));
+    bsc::rows(
+        bsc::state<DbStill>[([](deposit_belt_io const& c) { return c.motor.get(); })] = bsc::state<DbMoving>,
+        bsc::state<DbMoving>[([](deposit_belt_io const& c) { return !c.motor.get(); })] = bsc::state<DbStill>,
+        bsc::state<DbMoving> + bsc::after(belt_slot_time) / deposit_belt_io::advance = bsc::state<DbMoving>,
+        // R1: a brick dropped onto another one.
+        bsc::state<DbReady>[([](deposit_belt_io const& c) { return c.from_arm2.get() && c.slots[0]; })] =
+            bsc::state<Damage>,
+        bsc::state<DbReady>[([](deposit_belt_io const& c) { return bool(c.from_arm2.get()); })] /
+            [](deposit_belt_io& c) { c.slots[0] = c.from_arm2.get(); }));
 
 using feed_belt_plant = bsc::machine<bsc::chart_ref<env_feed_belt_chart>>;
 using table_plant = bsc::machine<bsc::chart_ref<env_table_chart>>;

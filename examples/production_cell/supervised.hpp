@@ -26,11 +26,11 @@ struct SvWait;  // waiting for the next brick's time and a free start of the fee
 struct SvPut;   // a brick is being put on the belt (for one step)
 
 struct supervisor_io {
-    bsc::input<bool> start_free;  // the feed belt's first slots are empty
-    bsc::output<bool> on;         // the controllers' manual switch
-    bsc::output<brick> put;       // a brick put at the start of the feed belt (for one step)
-    bsc::timer clock{bsc::duration::max()};  // time since the cell was switched on
-    std::uint8_t next = 0;                   // bricks put so far
+    bsc::input<bool> start_free;                     // the feed belt's first slots are empty
+    bsc::output<bool> on;                            // the controllers' manual switch
+    bsc::output<brick> put;                          // a brick put at the start of the feed belt (for one step)
+    bsc::timer clock{bsc::duration::max()};          // time since the cell was switched on
+    std::uint8_t next = 0;                           // bricks put so far
     std::uint8_t bricks = supervisor_offers.size();  // bricks to put in all
 
     static constexpr bool due(supervisor_io const& c) {
@@ -42,9 +42,9 @@ struct supervisor_io {
 inline constexpr auto supervisor_chart = bsc::make_chart<supervisor_io>(
     bsc::composite<Supervisor>(bsc::initial<SvWait>, bsc::state<SvPut>),
     bsc::state<Supervisor> + bsc::on_entry / bsc::named<"on=1, clock.start()">([](supervisor_io& c) {
-        c.on.set(true);
-        c.clock.start();
-    }),
+                                 c.on.set(true);
+                                 c.clock.start();
+                             }),
     bsc::state<SvWait>[bsc::named<"due">(bsc::guard([](supervisor_io const& c) { return supervisor_io::due(c); }))] /
         bsc::named<"put=brick(next+1), ++next">([](supervisor_io& c) {
             c.put.set(brick{static_cast<std::uint8_t>(c.next + 1), false});

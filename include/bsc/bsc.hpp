@@ -3,7 +3,6 @@
 
 #include <bsc/chart.hpp>
 #include <bsc/chart_ref.hpp>
-#include <bsc/compiled/machine.hpp>
 #include <bsc/configuration.hpp>
 #include <bsc/data/channel.hpp>
 #include <bsc/data/timer.hpp>
@@ -16,10 +15,13 @@
 #include <bsc/dsl/tree.hpp>
 #include <bsc/duration.hpp>
 #include <bsc/error.hpp>
+#include <bsc/events.hpp>
 #include <bsc/fields.hpp>
+#include <bsc/machine.hpp>
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
+#include <bsc/policies.hpp>
 #include <bsc/system.hpp>
-#include <bsc/table/engine.hpp>
+#include <bsc/table/machine.hpp>
 #include <bsc/transient.hpp>
 #include <bsc/version.hpp>

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include <bsc/error.hpp>
-#include <bsc/checks/checks.hpp>
+#include <bsc/detail/checks/checks.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/detail/row_storage.hpp>
 #include <bsc/duration.hpp>
@@ -68,11 +68,13 @@ template <class... A>
 constexpr auto flatten_rows(A... a) {
     using positions = flat_positions<A...>;
     row_storage<A...> arguments{{static_cast<A&&>(a)}...};
+    // clang-format off
     return [&]<std::size_t... J>(std::index_sequence<J...>) {
         return row_group<std::remove_cvref_t<
             decltype(flat_row<positions::of[J].argument, positions::of[J].position>(arguments))>...>{
             {{flat_row<positions::of[J].argument, positions::of[J].position>(arguments)}...}};
     }(std::make_index_sequence<positions::size>{});
+    // clang-format on
 }
 
 template <class Root>
@@ -97,7 +99,7 @@ struct chart {
 };
 
 namespace detail {
-// The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
+// The dead transitions that only the delays tell (detail/checks/dead_transitions.hpp finds the others):
 // a timeout row that an unguarded timeout row, with a target, always beats. That row, of state
 // C, leaves the states from C up to its domain no later than its delay after C's entry. Each
 // such state P whose entry starts C's clock too (C is P, or C is active whenever P is: every
@@ -205,15 +207,18 @@ template <class Context, class Root, class... Rows>
 constexpr auto make_chart(Root root, Rows... rows) {
     if constexpr ((detail::is_row_group<Rows> || ...)) {
         auto group = detail::flatten_rows(std::move(rows)...);
+        // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
             return make_chart<Context>(std::move(root), detail::take_row<I>(group.rows)...);
         }(std::make_index_sequence<detail::rows_in<decltype(group)>>{});
+        // clang-format on
     } else if constexpr (!detail::is_compound_root<Root>()) {
         return detail::rejected_chart<Context, error::root_must_be_composite<Root>>{};
     } else if constexpr (!(detail::is_row<Rows> && ...)) {
-        constexpr int bad = detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_row<Rows>>...>>::value;
-        return detail::rejected_chart<Context,
-                                      error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>>{};
+        constexpr int bad =
+            detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_row<Rows>>...>>::value;
+        return detail::rejected_chart<
+            Context, error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>>{};
     } else {
         // The chart, or, when its checks find errors, the rejected_chart whose destruction
         // reports them.
@@ -221,11 +226,13 @@ constexpr auto make_chart(Root root, Rows... rows) {
         using errors = decltype(detail::check_chart<chart_type>());
         if constexpr (errors::size == 0) {
             if constexpr ((detail::is_timeout_row<Rows> || ...)) {
-                auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree, detail::chart_model<chart_type>::rows,
-                                                          detail::delays_of(rows...));
+                auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree,
+                                                            detail::chart_model<chart_type>::rows,
+                                                            detail::delays_of(rows...));
                 if (dead.row != 0) {
                     if (!std::is_constant_evaluated())
-                        detail::bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(dead.row, dead.fires_first);
+                        detail::bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(dead.row,
+                                                                                               dead.fires_first);
                     // In a constant expression, the error comes from the marked parameter's
                     // destruction, after this returns (detail::timeout_trigger).
                     chart_type built{{{std::move(rows)}...}};

@@ -34,25 +34,21 @@ public:
     constexpr auto end() const { return names_.begin() + static_cast<std::ptrdiff_t>(size_); }
     constexpr bool contains(std::string_view name) const {
         for (auto n : *this)
-            if (n == name)
-                return true;
+            if (n == name) return true;
         return false;
     }
     /// The same names in the same order.
     friend constexpr bool operator==(state_names const& a, state_names const& b) {
-        if (a.size_ != b.size_)
-            return false;
+        if (a.size_ != b.size_) return false;
         for (std::size_t i = 0; i < a.size_; ++i)
-            if (a.names_[i] != b.names_[i])
-                return false;
+            if (a.names_[i] != b.names_[i]) return false;
         return true;
     }
     /// The names joined by `separator`, e.g. "Mcs On Auto Mem".
     std::string joined(std::string_view separator = " ") const {
         std::string out;
         for (std::size_t i = 0; i < size_; ++i) {
-            if (i)
-                out += separator;
+            if (i) out += separator;
             out += names_[i];
         }
         return out;

@@ -574,11 +574,12 @@ struct guard_is_a_bool_value {
 template <class Callable>
 struct action_signature_not_supported {
     constexpr ~action_signature_not_supported() {
-        static_assert(detail::dependent_false<action_signature_not_supported>,
-                      "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
-                      "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
-                      "Callable type in this error, in bsc::error::in_row<Source, Trigger, Target, ...> its row, and in "
-                      "bsc::error::at_row<Position, ...> where that row is among make_chart's rows");
+        static_assert(
+            detail::dependent_false<action_signature_not_supported>,
+            "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
+            "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
+            "Callable type in this error, in bsc::error::in_row<Source, Trigger, Target, ...> its row, and in "
+            "bsc::error::at_row<Position, ...> where that row is among make_chart's rows");
     }
 };
 
@@ -759,7 +760,7 @@ void raise_deferred() {
 /// What make_chart returns for a chart that fails its checks: the errors found, raised when
 /// the object is destroyed outside constant evaluation (the destructor is instantiated
 /// whenever a chart variable is declared, so every error is reported once), and the context
-/// type, so that a machine declared on it (runtime/rejected.hpp) stays silent instead of
+/// type, so that a machine declared on it (detail/runtime/rejected.hpp) stays silent instead of
 /// adding errors of its own.
 template <class Context, class... Errors>
 struct rejected_chart {

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include <bsc/detail/type_name.hpp>
+#include <bsc/events.hpp>
 
 namespace bsc {
 
@@ -19,13 +20,7 @@ concept names_itself = requires {
     requires std::convertible_to<decltype(E::name), std::string_view>;
     requires !std::is_member_object_pointer_v<decltype(&E::name)>;
 };
-}  // namespace detail
 
-template <class S>
-struct done;
-struct any_event;
-
-namespace detail {
 // "done.state." and the state's name, in static storage.
 template <class S>
 inline constexpr auto done_event_text = [] {

@@ -25,10 +25,10 @@
 #include <type_traits>
 #include <utility>
 
-#include <bsc/action_failed.hpp>
+#include <bsc/events.hpp>
 #include <bsc/error.hpp>
 #include <bsc/event_name.hpp>
-#include <bsc/model/chart_model.hpp>
+#include <bsc/detail/model/chart_model.hpp>
 
 namespace bsc {
 

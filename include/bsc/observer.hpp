@@ -6,6 +6,7 @@
 
 #include <bsc/detail/type_name.hpp>
 #include <bsc/duration.hpp>
+#include <bsc/events.hpp>
 
 namespace bsc {
 
@@ -18,12 +19,6 @@ struct state_tag {
 
 /// The target reported for an internal transition, which exits and enters nothing.
 struct internal {};
-
-/// What on_transition receives as the event of a timeout row (`after(delay)`): its delay. An
-/// eventless row's transition receives bsc::eventless, an event's transition the event.
-struct timeout_elapsed {
-    duration delay;
-};
 
 /// The default observer: no hooks, no cost.
 struct no_observer {};

@@ -53,7 +53,7 @@
 #include <bsc/detail/bytes.hpp>
 #include <bsc/detail/state_bytes.hpp>
 #include <bsc/duration.hpp>
-#include <bsc/runtime/driver.hpp>
+#include <bsc/detail/runtime/driver.hpp>
 
 namespace bsc {
 
@@ -84,14 +84,16 @@ struct restore_result {
 constexpr std::string_view to_string(restore_error e) {
     switch (e) {
         case restore_error::none: return "restored";
-        case restore_error::machine_running: return "the machine is running (restore was called from one of its guards or actions)";
+        case restore_error::machine_running:
+            return "the machine is running (restore was called from one of its guards or actions)";
         case restore_error::truncated: return "truncated: the bytes end before the saved state does";
         case restore_error::not_saved_state: return "not a saved bsc machine: the bytes do not begin with \"bscR\"";
         case restore_error::unsupported_version: return "saved in a format version this library does not read";
         case restore_error::trailing_bytes: return "more bytes follow the saved state";
         case restore_error::corrupted: return "corrupted: the checksum does not match";
         case restore_error::other_chart: return "saved from another chart (its states differ)";
-        case restore_error::other_layout: return "saved with another context layout (members, names, types or order differ)";
+        case restore_error::other_layout:
+            return "saved with another context layout (members, names, types or order differ)";
         case restore_error::invalid_value: return "a saved value is out of range";
     }
     return "unknown restore_error";
@@ -174,8 +176,8 @@ namespace bsc {
 /// with bsc::error::pending_events_not_encoded<Chart, Event> if the machine can keep an event
 /// pending that cannot be.
 template <class Machine>
-inline constexpr std::size_t saved_size =
-    detail::retain::header_size + detail::machine_size<Machine>() + detail::retain::trailer_size;
+inline constexpr std::size_t saved_size = detail::retain::header_size +
+                                          detail::machine_size<Machine>() + detail::retain::trailer_size;
 
 /// Saves the machine into `out`. Returns the bytes written (saved_size<Machine>), or 0 when
 /// `out` is shorter than that or the machine is running (save was called from one of its guards

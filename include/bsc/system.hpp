@@ -196,12 +196,16 @@ inline constexpr bool is_inout_channel<inout<T>> = true;
 
 // An actor of Actors that has a context (a machine), and the member Channel of that context.
 template <class Actors, auto Actor>
-concept actor_with_context = requires(Actors const& actors) { (actors.*Actor).context(); };
+concept actor_with_context = requires(Actors const& actors) {
+    (actors.*Actor).context();
+};
 template <class Actors, auto Actor>
 using context_of_actor = std::remove_cvref_t<decltype((std::declval<Actors const&>().*Actor).context())>;
 template <class Actors, auto Actor, auto Channel>
-concept actor_has_member =
-    actor_with_context<Actors, Actor> && requires(context_of_actor<Actors, Actor> const& context) { context.*Channel; };
+concept actor_has_member = actor_with_context<Actors, Actor> &&
+    requires(context_of_actor<Actors, Actor> const& context) {
+    context.*Channel;
+};
 template <class Actors, auto Actor, auto Channel>
 using member_of_actor = std::remove_cvref_t<decltype(std::declval<context_of_actor<Actors, Actor> const&>().*Channel)>;
 
@@ -227,8 +231,10 @@ constexpr bool written_from_outside() {
 }
 
 template <class Conversion, class From, class To>
-concept conversion_applies = requires(From const& value) { Conversion::function(value); } &&
-                             std::is_convertible_v<decltype(Conversion::function(std::declval<From const&>())), To>;
+concept conversion_applies = requires(From const& value) {
+    Conversion::function(value);
+}
+&&std::is_convertible_v<decltype(Conversion::function(std::declval<From const&>())), To>;
 
 // What an option of bsc::link is: 1 a staleness policy, 2 a conversion, 0 neither.
 template <class Option>
@@ -256,9 +262,11 @@ struct link_options_rules<type_list<Options...>> {
             return true;
     }
     static constexpr bool check() {
+        // clang-format off
         return []<std::size_t... I>(std::index_sequence<I...>) {
             return ((check_one<I, Options>() ? 0 : 1) + ... + 0) == 0;
         }(std::index_sequence_for<Options...>{});
+        // clang-format on
     }
 };
 
@@ -296,16 +304,20 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
     // Whether the order names its I-th actor for the first time there.
     template <std::size_t I>
     static constexpr bool first_in_order() {
+        // clang-format off
         return []<std::size_t... J>(std::index_sequence<J...>) {
             return !(same_member_pointer<step_at<J>, step_at<I>>() || ...);
         }(std::make_index_sequence<I>{});
+        // clang-format on
     }
     // Whether a link drives Channel of Actor.
     template <auto Actor, auto Channel>
     static constexpr bool linked() {
+        // clang-format off
         return []<class... L>(std::tuple<L...>*) {
             return ((same_member_pointer<L::to_actor, Actor>() && same_member_pointer<L::to_channel, Channel>()) || ...);
         }(static_cast<links*>(nullptr));
+        // clang-format on
     }
 
     template <std::size_t I>
@@ -354,11 +366,13 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
     template <std::size_t I>
     static constexpr bool check_driven_once() {
         using L = std::tuple_element_t<I, links>;
+        // clang-format off
         constexpr bool earlier = []<std::size_t... J>(std::index_sequence<J...>) {
             return ((same_member_pointer<std::tuple_element_t<J, links>::to_actor, L::to_actor>() &&
                      same_member_pointer<std::tuple_element_t<J, links>::to_channel, L::to_channel>()) ||
                     ...);
         }(std::make_index_sequence<I>{});
+        // clang-format on
         if constexpr (earlier)
             return report<error::input_driven_twice<L::to_actor, L::to_channel>>();
         else
@@ -395,12 +409,16 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
         auto mark = [&]<auto A, auto Channel>() {
             if constexpr (same_member_pointer<A, Actor>()) driven[member_index<Channel>()] = true;
         };
+        // clang-format off
         []<class... L>(std::tuple<L...>*, auto& m) {
             (m.template operator()<L::to_actor, L::to_channel>(), ...);
         }(static_cast<links*>(nullptr), mark);
+        // clang-format on
+        // clang-format off
         []<class... F>(std::tuple<F...>*, auto& m) {
             (m.template operator()<F::actor, F::channel>(), ...);
         }(static_cast<declared_outside*>(nullptr), mark);
+        // clang-format on
         return driven;
     }
     template <auto Actor, class Context>
@@ -410,7 +428,8 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
     static constexpr bool check_input_driven() {
         using member = std::tuple_element_t<K, typename tuple_of_list<member_types<Context>>::type>;
         if constexpr (is_input_channel<std::remove_cv_t<member>> && !driven_of<Actor, Context>[K])
-            return report<error::input_not_driven<Actor, error::member_number<K>, member_name_argument<Context, K>()>>();
+            return report<
+                error::input_not_driven<Actor, error::member_number<K>, member_name_argument<Context, K>()>>();
         else
             return true;
     }
@@ -430,8 +449,8 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
             return true;
         } else {
             using context = context_of_actor<Actors, actor>;
-            if constexpr (!std::is_class_v<context> || !std::is_aggregate_v<context> ||
-                          described_by_fields<context> || kind_of<context>() != member_kind::record)
+            if constexpr (!std::is_class_v<context> || !std::is_aggregate_v<context> || described_by_fields<context> ||
+                          kind_of<context>() != member_kind::record)
                 return true;
             else
                 return check_members_driven<actor, context>(std::make_index_sequence<member_count<context>>{});
@@ -439,19 +458,25 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
     }
 
     static constexpr bool check() {
+        // clang-format off
         constexpr bool steps = []<std::size_t... I>(std::index_sequence<I...>) {
             return ((check_step<I>() ? 0 : 1) + ... + 0) == 0;
         }(std::index_sequence_for<decltype(Steps)...>{});
+        // clang-format on
         constexpr bool entries = ((check_entry<Entries>() ? 0 : 1) + ... + 0) == 0;
+        // clang-format off
         constexpr bool once = []<std::size_t... I>(std::index_sequence<I...>) {
             return ((check_driven_once<I>() ? 0 : 1) + ... + 0) == 0;
         }(std::make_index_sequence<std::tuple_size_v<links>>{});
+        // clang-format on
         if constexpr (!entries || !once) {
             return false;
         } else {
+            // clang-format off
             constexpr bool inputs = []<std::size_t... I>(std::index_sequence<I...>) {
                 return ((check_inputs_driven<I>() ? 0 : 1) + ... + 0) == 0;
             }(std::index_sequence_for<decltype(Steps)...>{});
+            // clang-format on
             return steps && inputs;
         }
     }
@@ -496,9 +521,11 @@ struct system<Actors, order<Steps...>, Links...> {
 private:
     template <auto Actor>
     constexpr void step_one(duration now, system_report& report) {
+        // clang-format off
         []<class... L>(std::tuple<L...>*, Actors& all) {
             ((L::template targets<Actor>() ? L::transfer(all) : void()), ...);
         }(static_cast<links_type*>(nullptr), actors);
+        // clang-format on
         auto const r = (actors.*Actor).step(now);
         report.transitions += r.transitions;
         report.queue_overflow = report.queue_overflow || r.status == outcome::queue_overflow;

@@ -16,8 +16,8 @@ template <class T>
 struct transient_member {
     T value{};
 
-    constexpr operator T&() & { return value; }                // NOLINT(google-explicit-constructor)
-    constexpr operator T const&() const& { return value; }    // NOLINT(google-explicit-constructor)
+    constexpr operator T&() & { return value; }             // NOLINT(google-explicit-constructor)
+    constexpr operator T const&() const& { return value; }  // NOLINT(google-explicit-constructor)
     constexpr transient_member& operator=(T const& v) {
         value = v;
         return *this;

@@ -44,7 +44,7 @@
 #include <bsc/detail/members.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/duration.hpp>
-#include <bsc/model/chart_model.hpp>
+#include <bsc/detail/model/chart_model.hpp>
 
 namespace bsc::detail::vcd {
 
@@ -73,8 +73,8 @@ value scalar_value(T v) {
     if constexpr (std::is_floating_point_v<T>) {
         out.real = static_cast<double>(v);
     } else if constexpr (std::is_enum_v<T>) {
-        out.bits = static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<std::underlying_type_t<T>>>(
-            static_cast<std::underlying_type_t<T>>(v)));
+        out.bits = static_cast<std::uint64_t>(
+            static_cast<std::make_unsigned_t<std::underlying_type_t<T>>>(static_cast<std::underlying_type_t<T>>(v)));
     } else if constexpr (std::is_same_v<T, bool>) {
         out.bits = v ? 1 : 0;
     } else {
@@ -197,9 +197,7 @@ inline void write_value(std::ostream& out, var_kind kind, value const& v, std::s
             // The shortest text that reads back as the same double.
             out << 'r' << number(v.real) << ' ' << id << '\n';
             return;
-        case var_kind::string:
-            out << 's' << token(v.text) << ' ' << id << '\n';
-            return;
+        case var_kind::string: out << 's' << token(v.text) << ' ' << id << '\n'; return;
     }
 }
 
@@ -278,8 +276,8 @@ private:
         void var(detail::vcd::var_kind kind, unsigned width, std::string_view name, detail::vcd::value const&) {
             static constexpr char const* kinds[] = {"wire", "integer", "reg", "real", "string"};
             auto id = detail::vcd::identifier(self.vars_.size());
-            self.out_ << "$var " << kinds[static_cast<int>(kind)] << ' ' << detail::vcd::number(width) << ' ' << id << ' '
-                      << detail::vcd::token(name) << " $end\n";
+            self.out_ << "$var " << kinds[static_cast<int>(kind)] << ' ' << detail::vcd::number(width) << ' ' << id
+                      << ' ' << detail::vcd::token(name) << " $end\n";
             // The first sample writes every value: the "last" one is marked as never seen.
             self.vars_.push_back({kind, std::move(id), {}});
         }

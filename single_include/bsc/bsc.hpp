@@ -106,14 +106,14 @@ struct fixed_string {
 //   detail::assume (detail/assume.hpp), which checks cond instead in builds without NDEBUG.
 // BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS: 1 where the optimiser follows an assumption through
 //   later tests, past the joins of paths (GCC); 0 where it drops it at the first join (Clang),
-//   or is not known to keep it: there bsc stores what it would have assumed (runtime/driver.hpp).
+//   or is not known to keep it: there bsc stores what it would have assumed (detail/runtime/run_control.hpp).
 #if defined(__clang__)
 #define BSC_DETAIL_ASSUME(cond) __builtin_assume(cond)
 #define BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS 0
 #elif defined(__GNUC__)
-#define BSC_DETAIL_ASSUME(cond)                  \
-    do {                                         \
-        if (!(cond)) __builtin_unreachable();    \
+#define BSC_DETAIL_ASSUME(cond)               \
+    do {                                      \
+        if (!(cond)) __builtin_unreachable(); \
     } while (false)
 #define BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS 1
 #elif defined(_MSC_VER)
@@ -175,10 +175,9 @@ struct fixed_string {
 #define BSC_DETAIL_PRINTS_STRING_ARGUMENTS 0
 #endif
 #if defined(__clang__)
-#define BSC_DETAIL_DECLARED_ONLY_BEGIN                                 \
-    _Pragma("clang diagnostic push")                                   \
-    _Pragma("clang diagnostic ignored \"-Wundefined-var-template\"")   \
-    _Pragma("clang diagnostic ignored \"-Wundefined-internal\"")
+#define BSC_DETAIL_DECLARED_ONLY_BEGIN                                                                \
+    _Pragma("clang diagnostic push") _Pragma("clang diagnostic ignored \"-Wundefined-var-template\"") \
+        _Pragma("clang diagnostic ignored \"-Wundefined-internal\"")
 #define BSC_DETAIL_DECLARED_ONLY_END _Pragma("clang diagnostic pop")
 #else
 #define BSC_DETAIL_DECLARED_ONLY_BEGIN
@@ -285,8 +284,8 @@ struct scan_for<T, type_list<Ts...>> {
 template <class T, class List, class = void>
 struct position_in : scan_for<T, List> {};  // absent, or present twice (the base is ambiguous)
 template <class T, class List>
-struct position_in<T, List,
-                   std::void_t<decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr)))>>
+struct position_in<
+    T, List, std::void_t<decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr)))>>
     : decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr))) {};
 
 template <std::size_t I, class List>
@@ -872,11 +871,12 @@ struct guard_is_a_bool_value {
 template <class Callable>
 struct action_signature_not_supported {
     constexpr ~action_signature_not_supported() {
-        static_assert(detail::dependent_false<action_signature_not_supported>,
-                      "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
-                      "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
-                      "Callable type in this error, in bsc::error::in_row<Source, Trigger, Target, ...> its row, and in "
-                      "bsc::error::at_row<Position, ...> where that row is among make_chart's rows");
+        static_assert(
+            detail::dependent_false<action_signature_not_supported>,
+            "bsc: an action must be callable as a(context&, event const&, raise&), a(context&, event const&), "
+            "a(context&) or a(); an entry/exit action as a(context&, raise&), a(context&) or a(); see the "
+            "Callable type in this error, in bsc::error::in_row<Source, Trigger, Target, ...> its row, and in "
+            "bsc::error::at_row<Position, ...> where that row is among make_chart's rows");
     }
 };
 
@@ -1057,7 +1057,7 @@ void raise_deferred() {
 /// What make_chart returns for a chart that fails its checks: the errors found, raised when
 /// the object is destroyed outside constant evaluation (the destructor is instantiated
 /// whenever a chart variable is declared, so every error is reported once), and the context
-/// type, so that a machine declared on it (runtime/rejected.hpp) stays silent instead of
+/// type, so that a machine declared on it (detail/runtime/rejected.hpp) stays silent instead of
 /// adding errors of its own.
 template <class Context, class... Errors>
 struct rejected_chart {
@@ -1074,14 +1074,14 @@ inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = tr
 
 }  // namespace bsc::detail
 // end include/bsc/error.hpp
-// begin include/bsc/checks/checks.hpp
+// begin include/bsc/detail/checks/checks.hpp
 // Runs every static check of a chart and turns each finding into the error type that names
 // it. A check returns its findings as a type_list of bsc::error types (empty: nothing found);
 // nothing is reported here: make_chart returns the findings (detail::rejected_chart), and
 // their destruction reports them. Structural checks come first: the others assume a
 // well-formed tree.
 
-// begin include/bsc/checks/dead_transitions.hpp
+// begin include/bsc/detail/checks/dead_transitions.hpp
 // Transitions that can never fire (seed 000's "unreachable transitions"), found from the
 // structure alone, guards ignored:
 //   - a row leaving a final child of a composite root: the machine halts there, and dispatch
@@ -1097,7 +1097,7 @@ inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = tr
 #include <array>
 #include <cstddef>
 
-// begin include/bsc/checks/rows_by_source.hpp
+// begin include/bsc/detail/checks/rows_by_source.hpp
 // The rows a check looks at, grouped by source state in declaration order (a counting sort),
 // so that a check compares only the rows of one state: linear in the chart for the usual few
 // rows per state. Rows of state s are order[begin[s]] .. order[begin[s + 1] - 1].
@@ -1105,7 +1105,7 @@ inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = tr
 #include <array>
 #include <cstddef>
 
-// begin include/bsc/model/chart_model.hpp
+// begin include/bsc/detail/model/chart_model.hpp
 // The model of a chart: its state tree and its rows flattened into constexpr arrays, from
 // which everything else is computed. The static checks, both back ends, the exports and the
 // explorer read these arrays; only lookups by type use templates.
@@ -1136,14 +1136,10 @@ constexpr std::string_view type_from_signature(std::string_view sig) {
     int depth = 0;
     for (; end < sig.size(); ++end) {
         const char c = sig[end];
-        if (c == '<' || c == '(' || c == '[')
-            ++depth;
-        if (c == '>' || c == ')')
-            --depth;
-        if (depth < 0 || (depth == 0 && (c == ';' || c == ']')))
-            break;
-        if (c == ']')
-            --depth;
+        if (c == '<' || c == '(' || c == '[') ++depth;
+        if (c == '>' || c == ')') --depth;
+        if (depth < 0 || (depth == 0 && (c == ';' || c == ']'))) break;
+        if (c == ']') --depth;
     }
     return sig.substr(start, end - start);
 }
@@ -1153,12 +1149,9 @@ constexpr std::string_view unqualified(std::string_view name) {
     std::size_t cut = 0;
     int depth = 0;
     for (std::size_t i = 0; i + 1 < name.size(); ++i) {
-        if (name[i] == '<')
-            ++depth;
-        if (name[i] == '>')
-            --depth;
-        if (depth == 0 && name[i] == ':' && name[i + 1] == ':')
-            cut = i + 2;
+        if (name[i] == '<') ++depth;
+        if (name[i] == '>') --depth;
+        if (depth == 0 && name[i] == ':' && name[i + 1] == ':') cut = i + 2;
     }
     return name.substr(cut);
 }
@@ -1292,21 +1285,21 @@ constexpr duration elapsed(duration since, duration now) {
 namespace bsc::detail {
 
 // Whether a callable has one of the signatures below: what make_chart checks
-// (checks/signatures.hpp) and what these helpers call.
+// (detail/checks/signatures.hpp) and what these helpers call.
 template <class G, class Ctx, class E>
 inline constexpr bool guard_callable = std::is_invocable_r_v<bool, G const&, Ctx const&, E const&> ||
                                        std::is_invocable_r_v<bool, G const&, Ctx const&> ||
                                        std::is_invocable_r_v<bool, G const&>;
 template <class A, class Ctx, class E, class Raise>
-inline constexpr bool action_callable =
-    std::is_invocable_v<A const&, Ctx&, E const&, Raise&> || std::is_invocable_v<A const&, Ctx&, E const&> ||
-    std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+inline constexpr bool action_callable = std::is_invocable_v<A const&, Ctx&, E const&, Raise&> ||
+                                        std::is_invocable_v<A const&, Ctx&, E const&> ||
+                                        std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
 template <class A, class Ctx, class Raise>
-inline constexpr bool state_action_callable =
-    std::is_invocable_v<A const&, Ctx&, Raise&> || std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+inline constexpr bool state_action_callable = std::is_invocable_v<A const&, Ctx&, Raise&> ||
+                                              std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
 
 // Whether the call these helpers make cannot throw: the form they pick is noexcept. A chart
-// none of whose guards and actions can throw needs no record of failures (runtime/driver.hpp).
+// none of whose guards and actions can throw needs no record of failures (detail/runtime/machine_data.hpp, may_throw).
 template <class G, class Ctx, class E>
 constexpr bool guard_nothrow() {
     if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&, E const&>)
@@ -1350,7 +1343,8 @@ constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) noexcept(guard
 }
 
 template <class A, class Ctx, class E, class Raise>
-constexpr void call_action(A const& a, Ctx& ctx, E const& e, Raise& raise) noexcept(action_nothrow<A, Ctx, E, Raise>()) {
+constexpr void call_action(A const& a, Ctx& ctx, E const& e,
+                           Raise& raise) noexcept(action_nothrow<A, Ctx, E, Raise>()) {
     if constexpr (std::is_invocable_v<A const&, Ctx&, E const&, Raise&>)
         a(ctx, e, raise);
     else if constexpr (std::is_invocable_v<A const&, Ctx&, E const&>)
@@ -1378,7 +1372,8 @@ constexpr void call_state_action(A const& a, Ctx& ctx, Raise& raise) noexcept(st
 }  // namespace bsc::detail
 // end include/bsc/detail/invoke.hpp
 // begin include/bsc/outcome.hpp
-// What dispatch reports, and the limits a machine runs under.
+// What a run reports: the outcome of a dispatch, the report of a cycle; and the tag that lets
+// a dispatch ignore an event no transition handles.
 
 #include <cstddef>
 #include <cstdint>
@@ -1398,6 +1393,31 @@ enum class outcome : std::uint8_t {
     unknown_event,   ///< dispatch_by_name or dispatch_by_number named no event of the chart: nothing was
                      ///< processed (bsc::event_set<Chart>::unknown(name) says why)
 };
+
+/// What one BSC execution cycle (`step(now)`) did, on either back end.
+struct step_report {
+    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
+    int transitions = 0;                ///< condition-driven transitions fired by the components
+    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
+};
+
+/// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
+/// handles is then allowed (and ignored) instead of failing to compile.
+struct allow_unhandled_t {
+    explicit allow_unhandled_t() = default;
+};
+inline constexpr allow_unhandled_t allow_unhandled{};
+
+}  // namespace bsc
+// end include/bsc/outcome.hpp
+// begin include/bsc/policies.hpp
+// The limits a machine runs under: bsc::default_policy, bsc::scan_policy, bsc::lean_policy, and
+// the requirements a policy of one's own meets (bsc::machine_policy).
+
+#include <concepts>
+#include <cstddef>
+
+namespace bsc {
 
 /// The limits of a machine. Derive from it and override a member to change one:
 /// `struct my_limits : bsc::default_policy { static constexpr std::size_t queue_capacity = 32; };`
@@ -1460,22 +1480,24 @@ struct lean_policy : default_policy {
     static constexpr bool keep_clock = false;
 };
 
-/// What one BSC execution cycle (`step(now)`) did, on either back end.
-struct step_report {
-    outcome status = outcome::ignored;  ///< consumed if any transition fired in the cycle
-    int transitions = 0;                ///< condition-driven transitions fired by the components
-    bool clock_went_backwards = false;  ///< `now` was earlier than the previous cycle's time
+/// What a machine reads of its policy: every member of bsc::default_policy, of its type. A
+/// policy of one's own derives from bsc::default_policy and overrides members, and so meets it;
+/// `bsc::machine<decltype(chart), Context, Observer, Policy>` with a Policy that does not names
+/// this concept in its error, at the declaration.
+template <class Policy>
+concept machine_policy = requires {
+    { Policy::queue_capacity } -> std::convertible_to<std::size_t>;
+    { Policy::max_eventless_steps } -> std::convertible_to<std::size_t>;
+    { Policy::max_internal_events } -> std::convertible_to<std::size_t>;
+    { Policy::settle_eventless } -> std::convertible_to<bool>;
+    { Policy::rethrow_failures } -> std::convertible_to<bool>;
+    { Policy::refuse_reentry } -> std::convertible_to<bool>;
+    { Policy::keep_last_outcome } -> std::convertible_to<bool>;
+    { Policy::keep_clock } -> std::convertible_to<bool>;
 };
-
-/// Tag for dispatch(e, bsc::allow_unhandled): dispatching an event type that no transition
-/// handles is then allowed (and ignored) instead of failing to compile.
-struct allow_unhandled_t {
-    explicit allow_unhandled_t() = default;
-};
-inline constexpr allow_unhandled_t allow_unhandled{};
 
 }  // namespace bsc
-// end include/bsc/outcome.hpp
+// end include/bsc/policies.hpp
 
 namespace bsc::detail {
 
@@ -1495,7 +1517,8 @@ template <class F>
 struct action_fn : action_base {
     [[no_unique_address]] F fn;
     template <class Ctx, class E, class Raise>
-    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const noexcept(noexcept(call_action(fn, ctx, e, raise))) {
+    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const
+        noexcept(noexcept(call_action(fn, ctx, e, raise))) {
         call_action(fn, ctx, e, raise);
     }
 };
@@ -1536,9 +1559,7 @@ constexpr auto make_seq(std::tuple<As...> t) {
 
 template <class L, class R>
     requires(bsc_action<L> || bsc_action<R>)
-constexpr auto operator,(L l, R r) {
-    return make_seq(std::tuple_cat(as_tuple(std::move(l)), as_tuple(std::move(r))));
-}
+constexpr auto operator,(L l, R r) { return make_seq(std::tuple_cat(as_tuple(std::move(l)), as_tuple(std::move(r)))); }
 
 struct no_action {
     template <class Ctx, class E, class Raise>
@@ -1570,7 +1591,7 @@ struct state_action {
 };
 
 // What the chart's analysis hands an action as its raise argument, to learn whether it takes one
-// (may_raise below) and whether it can be called at all (checks/signatures.hpp): callable with
+// (may_raise below) and whether it can be called at all (detail/checks/signatures.hpp): callable with
 // any event, as a machine's queue is with the chart's events (an event the chart does not take
 // is reported where the machine calls the action: bsc::error::raised_event_not_in_chart). Not a
 // machine's queue, whose type spells every event of the chart and holds a std::variant of
@@ -1643,12 +1664,13 @@ using join_raised = typename join_raised_of<(std::is_same_v<Lists, raises_anythi
 // (A sequence, and an entry or exit action wrapping one of bsc's, are looked into; any other
 // action raises anything if may_raise says it can raise at all.)
 template <class Ctx, class E, class Raise, class A>
-auto raised_by(A const*) -> std::conditional_t<may_raise<Ctx, E, Raise>(static_cast<A const*>(nullptr)), raises_anything,
-                                               type_list<>>;
+auto raised_by(A const*)
+    -> std::conditional_t<may_raise<Ctx, E, Raise>(static_cast<A const*>(nullptr)), raises_anything, type_list<>>;
 template <class Ctx, class E, class Raise, class Ev>
 auto raised_by(action_fn<raise_fn<Ev>> const*) -> type_list<Ev>;
 template <class Ctx, class E, class Raise, class... As>
-auto raised_by(action_seq<As...> const*) -> join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>;
+auto raised_by(action_seq<As...> const*)
+    -> join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>;
 template <class Ctx, class E, class Raise, class A>
     requires bsc_action<A>
 auto raised_by(state_action<A> const*) -> decltype(raised_by<Ctx, state_change, Raise>(static_cast<A const*>(nullptr)));
@@ -1796,6 +1818,56 @@ constexpr auto guard(F f) {
 
 }  // namespace bsc
 // end include/bsc/dsl/guard.hpp
+// begin include/bsc/events.hpp
+// The events bsc itself defines: the tag of an eventless transition, the trigger every event
+// matches, a state's completion event, the event of a failed guard or action, and what an
+// observer receives for a timeout.
+
+#include <exception>
+
+
+namespace bsc {
+
+namespace detail {
+// The trigger of a transition taken without an event, when its guard holds.
+struct eventless_trigger {};
+}  // namespace detail
+
+/// The tag used in diagnostics and observers for a transition without an event.
+using eventless = detail::eventless_trigger;
+
+/// The trigger every event matches: `state<S> + event<bsc::any_event> = state<T>` takes any
+/// event that no deeper state and no earlier row of S takes first (SCXML's event="*",
+/// Boost.SML's event<_>). Its guard and action receive this tag, not the event.
+struct any_event {};
+
+/// The completion event of state S (SCXML's done.state.S): raised when a final child of the
+/// composite S is entered, or, for a parallel S, when every region of S has entered a final
+/// state. A row takes it like any event: `state<Work> + event<bsc::done<Work>> = state<Next>`.
+/// (A final child of the root raises nothing: the machine halts.)
+template <class S>
+struct done {
+    using state = S;
+};
+
+/// What a machine puts on its internal queue when a guard, an action, an entry or an exit
+/// action throws (W3C SCXML's error.execution): the rest of that callable is skipped, the
+/// microstep completes, and this event carries the exception. A chart handles it with
+/// ordinary rows, e.g. `state<Running> + event<bsc::action_failed> = state<Fault>`. A failure
+/// that no transition takes is the caller's: dispatch() or step() rethrows it once the machine
+/// is consistent (or reports outcome::failed, as the policy says).
+struct action_failed {
+    std::exception_ptr error;
+};
+
+/// What on_transition receives as the event of a timeout row (`after(delay)`): its delay. An
+/// eventless row's transition receives bsc::eventless, an event's transition the event.
+struct timeout_elapsed {
+    duration delay;
+};
+
+}  // namespace bsc
+// end include/bsc/events.hpp
 
 namespace bsc::detail {
 
@@ -1806,8 +1878,6 @@ struct local_ref;
 template <class... S>
 struct targets_ref;
 
-/// The trigger of a transition taken without an event, when its guard holds.
-struct eventless_trigger {};
 template <class E>
 struct event_trigger {
     using event = E;
@@ -1815,7 +1885,7 @@ struct event_trigger {
 // Deliberately not constexpr (as bsc_after_negative_delay below): in a constexpr chart, reaching
 // it is the compile error, and its name says what is wrong; a chart built at run time throws.
 [[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(std::size_t row,
-                                                                                         std::size_t fires_first) {
+                                                                                        std::size_t fires_first) {
 #if defined(__cpp_exceptions)
     throw std::invalid_argument(
         "bsc::make_chart: the timeout row at position " + std::to_string(row) +
@@ -1976,7 +2046,7 @@ struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
         return transition_row<S, Trigger, G, A, several_targets<T2...>>{{}, trigger_value, guard, action};
     }
     template <class A2>
-        requires(std::is_same_v<A, no_action> && std::is_same_v<T, no_target>)
+        requires(std::is_same_v<A, no_action>&& std::is_same_v<T, no_target>)
     constexpr auto operator/(A2 a) const {
         using action_t = decltype(as_action(std::move(a)));
         return transition_row<S, Trigger, G, action_t, T>{{}, trigger_value, guard, as_action(std::move(a))};
@@ -2074,8 +2144,7 @@ constexpr bool is_event_type() {
 
 template <class E>
 constexpr event_ref<E> checked_event_ref() {
-    if constexpr (!is_event_type<E>())
-        detail::report<error::not_an_event<E>>();
+    if constexpr (!is_event_type<E>()) detail::report<error::not_an_event<E>>();
     return {};
 }
 
@@ -2101,23 +2170,6 @@ inline constexpr detail::exit_keyword on_exit{};
 /// Requirements: S is a composite without a history marker
 /// (bsc::error::initial_action_without_initial_transition).
 inline constexpr detail::initial_keyword on_initial{};
-
-/// The tag used in diagnostics and observers for a transition without an event.
-using eventless = detail::eventless_trigger;
-
-/// The trigger every event matches: `state<S> + event<bsc::any_event> = state<T>` takes any
-/// event that no deeper state and no earlier row of S takes first (SCXML's event="*",
-/// Boost.SML's event<_>). Its guard and action receive this tag, not the event.
-struct any_event {};
-
-/// The completion event of state S (SCXML's done.state.S): raised when a final child of the
-/// composite S is entered, or, for a parallel S, when every region of S has entered a final
-/// state. A row takes it like any event: `state<Work> + event<bsc::done<Work>> = state<Next>`.
-/// (A final child of the root raises nothing: the machine halts.)
-template <class S>
-struct done {
-    using state = S;
-};
 
 namespace detail {
 // Deliberately not constexpr: in a constexpr chart, reaching one of these is the compile error
@@ -2525,10 +2577,12 @@ constexpr auto composite(A...) {
                                  detail::is_history_marker<A>)&&...);
     constexpr int history_markers = (0 + ... + int{detail::is_history_marker<A>});
     if constexpr (!all_valid) {
-        constexpr int bad =
-            detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
-                                                detail::is_initial_marker<A> || detail::is_history_marker<A>>...>>::value;
-        detail::report<error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
+        constexpr int bad = detail::position_in<
+            std::false_type, detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
+                                                                  detail::is_initial_marker<A> ||
+                                                                  detail::is_history_marker<A>>...>>::value;
+        detail::report<
+            error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
     } else if constexpr (history_markers > 1) {
         detail::report<error::conflicting_history_markers<S>>();
     }
@@ -2545,9 +2599,11 @@ template <class S, class... A>
 constexpr auto parallel(A...) {
     constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A>)&&...);
     if constexpr (!all_valid) {
-        constexpr int bad =
-            detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>>::value;
-        detail::report<error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
+        constexpr int bad = detail::position_in<
+            std::false_type,
+            detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>>::value;
+        detail::report<
+            error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
     } else if constexpr (sizeof...(A) == 0) {
         detail::report<error::empty_parallel_state<S>>();
     }
@@ -2557,7 +2613,7 @@ constexpr auto parallel(A...) {
 
 }  // namespace bsc
 // end include/bsc/dsl/tree.hpp
-// begin include/bsc/model/event_families.hpp
+// begin include/bsc/detail/model/event_families.hpp
 // Event families: a row on event U also takes every event E derived from U, and a row on
 // bsc::any_event takes every event (SCXML's event descriptors, which match by prefix, written
 // as C++ inheritance). U is then a family of E. Computed from the chart's events by the model,
@@ -2590,7 +2646,8 @@ constexpr int nearest_family(std::array<bool, K> const& of, std::array<std::arra
                              std::array<int, K> const& counts) {
     int nearest = -1;
     for (std::size_t u = 0; u < K; ++u)
-        if (of[u] && (nearest < 0 || counts[u] > counts[static_cast<std::size_t>(nearest)])) nearest = static_cast<int>(u);
+        if (of[u] && (nearest < 0 || counts[u] > counts[static_cast<std::size_t>(nearest)]))
+            nearest = static_cast<int>(u);
     if (nearest < 0) return -1;
     // A chain: the nearest family's own families are all the others.
     for (std::size_t u = 0; u < K; ++u)
@@ -2678,7 +2735,7 @@ constexpr decltype(auto) event_as(E const& e) {
 }
 
 }  // namespace bsc::detail
-// end include/bsc/model/event_families.hpp
+// end include/bsc/detail/model/event_families.hpp
 
 namespace bsc::detail {
 
@@ -2731,9 +2788,9 @@ struct topology {
     std::array<int, N> first_child{};
     std::array<int, N> next_sibling{};
     std::array<int, N> child_count{};
-    std::array<int, N> ordinal{};        // position among siblings
-    std::array<int, N> initial{};        // state index of the initial child, or -1
-    std::array<int, N> initial_target{};  // the initial state: the initial child, or a deeper descendant
+    std::array<int, N> ordinal{};                      // position among siblings
+    std::array<int, N> initial{};                      // state index of the initial child, or -1
+    std::array<int, N> initial_target{};               // the initial state: the initial child, or a deeper descendant
     std::array<std::array<int, 3>, N> more_initial{};  // initial states after the first (initial<A, B>), else -1
 
     // State s's initial states: its initial state, then the others (initial<A, B>), -1 after.
@@ -2767,8 +2824,7 @@ struct topology {
     }
     constexpr bool under_parallel(int s) const {
         for (int a = parent[at(s)]; a >= 0; a = parent[at(a)])
-            if (kinds[at(a)] == kind::parallel)
-                return true;
+            if (kinds[at(a)] == kind::parallel) return true;
         return false;
     }
 };
@@ -2809,11 +2865,11 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     for (int& m : t.more_initial[i]) m = -1;
     t.initial_count[i] = static_cast<int>(Node::initials::size);
     t.slot[i] = -1;
-    if (Node::node_kind == kind::composite)
-        t.slot[i] = t.slots++;
+    if (Node::node_kind == kind::composite) t.slot[i] = t.slots++;
     int next = index + 1;
     int count = 0;
     int previous = -1;
+    // clang-format off
     [&]<class... C>(type_list<C...>) {
         ((link_child(t, i, previous, next), next = fill_topology<C>(t, next, index, count++, depth + 1)), ...);
         if constexpr (Node::initials::size == 1) {
@@ -2834,17 +2890,24 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
             }
         }
     }(typename Node::children{});
+    // clang-format on
     t.child_count[i] = count;
     t.end[i] = next;
     // Its initial states after the first, below it (unknown_state if not declared there).
-    if constexpr (requires { requires Node::more_initials::size > 0; })
+    if constexpr (requires {
+                      requires Node::more_initials::size >
+                      0;
+                  })
+        // clang-format off
         [&]<class... More>(type_list<More...>) {
             using tags = typename tags_of<decltype(flatten<Node>())>::type;
             std::size_t k = 0;
             ((t.more_initial[i][k++] = position_in<More, tags>::value > 0 ? index + position_in<More, tags>::value : unknown_state), ...);
         }(typename Node::more_initials{});
+    // clang-format on
     // The defaults of its history states, which lie anywhere below Node (-1 if not found).
     if constexpr (Node::node_kind == kind::composite && has_history_child(typename Node::children{}))
+        // clang-format off
         [&]<class... C>(type_list<C...>) {
             (
                 [&] {
@@ -2860,6 +2923,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
                 }(),
                 ...);
         }(typename Node::children{});
+    // clang-format on
     return next;
 }
 
@@ -2870,8 +2934,8 @@ struct row_table {
     std::array<int, R> target{};   // no_state for internal transitions and entry/exit rows
     std::array<int, R> trigger{};  // eventless_id, or the event's position in the chart's event list
     std::array<bool, R> guarded{};
-    std::array<int, R> domain{};  // the transition domain (SCXML), no_state if internal
-    std::array<bool, R> local{};  // declared local (bsc::local): its domain is its source
+    std::array<int, R> domain{};   // the transition domain (SCXML), no_state if internal
+    std::array<bool, R> local{};   // declared local (bsc::local): its domain is its source
     std::array<bool, R> defers{};  // defers its event (/ bsc::defer)
     // A transition with several targets (bsc::targets): `target` is the first, these the others
     // (no_state where there are fewer).
@@ -2932,9 +2996,9 @@ template <class... Rows>
 struct event_list<type_list<Rows...>> {
     using with_repeats = type_list<typename trigger_event<Rows>::type...>;
     template <std::size_t... I>
-    static auto first_occurrences(std::index_sequence<I...>)
-        -> concat_t<std::conditional_t<position_in<typename trigger_event<Rows>::type, with_repeats>::value == static_cast<int>(I),
-                                       type_list<typename trigger_event<Rows>::type>, type_list<>>...>;
+    static auto first_occurrences(std::index_sequence<I...>) -> concat_t<
+        std::conditional_t<position_in<typename trigger_event<Rows>::type, with_repeats>::value == static_cast<int>(I),
+                           type_list<typename trigger_event<Rows>::type>, type_list<>>...>;
     using all = decltype(first_occurrences(std::index_sequence_for<Rows...>{}));
 };
 template <class List>
@@ -2958,8 +3022,7 @@ struct state_index<no_target, Tags> {
 template <std::size_t N, std::size_t M = 0>
 constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false,
                                 std::array<int, M> const& more = {}) {
-    if (target < 0)
-        return no_state;
+    if (target < 0) return no_state;
     // SCXML's type="internal": a compound source that contains the target stays active.
     if (local && t.kinds[static_cast<std::size_t>(source)] == kind::composite && t.is_proper_ancestor(source, target))
         return source;
@@ -2992,6 +3055,7 @@ struct chart_model {
         return t;
     }();
 
+    // clang-format off
     static constexpr row_table<row_types::size> rows = []<class... Rs>(type_list<Rs...>) {
         row_table<row_types::size> r{};
         for (int& f : r.event_family) f = -1;
@@ -3030,6 +3094,7 @@ struct chart_model {
             ...);
         return r;
     }(row_types{});
+    // clang-format on
 
     template <int I>
     using tag_at = at<static_cast<std::size_t>(I), tags>;
@@ -3055,12 +3120,14 @@ struct chart_model {
 // The unqualified names of a model's states, by index (0: the implicit top). A variable of
 // its own, so that only what shows names (active_states, the tables, reports) instantiates it.
 template <class Model>
+// clang-format off
 inline constexpr auto state_names_of = []<class... Tags>(type_list<Tags...>) {
     return std::array<std::string_view, sizeof...(Tags)>{name_of<Tags>...};
 }(typename Model::tags{});
+// clang-format on
 
 }  // namespace bsc::detail
-// end include/bsc/model/chart_model.hpp
+// end include/bsc/detail/model/chart_model.hpp
 
 namespace bsc::detail {
 
@@ -3080,12 +3147,13 @@ constexpr row_buckets<N, R> rows_by_source(row_table<R> const& r, Keep keep) {
     for (std::size_t s = 0; s < N; ++s) b.begin[s + 1] += b.begin[s];
     std::array<int, N + 1> fill = b.begin;
     for (std::size_t i = 0; i < R; ++i)
-        if (kept(i)) b.order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
+        if (kept(i))
+            b.order[static_cast<std::size_t>(fill[static_cast<std::size_t>(r.source[i])]++)] = static_cast<int>(i);
     return b;
 }
 
 }  // namespace bsc::detail
-// end include/bsc/checks/rows_by_source.hpp
+// end include/bsc/detail/checks/rows_by_source.hpp
 
 namespace bsc::detail {
 
@@ -3105,7 +3173,8 @@ constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<
     auto takes_unguarded = [&](int b, int trigger) {
         auto const bi = static_cast<std::size_t>(b);
         for (int k = unguarded.begin[bi]; k < unguarded.begin[bi + 1]; ++k)
-            if (r.takes(r.trigger[static_cast<std::size_t>(unguarded.order[static_cast<std::size_t>(k)])], trigger)) return true;
+            if (r.takes(r.trigger[static_cast<std::size_t>(unguarded.order[static_cast<std::size_t>(k)])], trigger))
+                return true;
         return false;
     };
     for (std::size_t i = 0; i < R; ++i) {
@@ -3132,11 +3201,11 @@ constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<
 }
 
 }  // namespace bsc::detail
-// end include/bsc/checks/dead_transitions.hpp
-// begin include/bsc/checks/determinism.hpp
+// end include/bsc/detail/checks/dead_transitions.hpp
+// begin include/bsc/detail/checks/determinism.hpp
 // Determinism: two unguarded transitions on the same source and trigger conflict; a
 // transition after an unguarded one on the same source and trigger, or on a family of its
-// trigger (model/event_families.hpp), is shadowed.
+// trigger (detail/model/event_families.hpp), is shadowed.
 
 
 namespace bsc::detail {
@@ -3181,8 +3250,8 @@ constexpr determinism_findings find_nondeterminism(topology<N> const&, row_table
 }
 
 }  // namespace bsc::detail
-// end include/bsc/checks/determinism.hpp
-// begin include/bsc/checks/done_events.hpp
+// end include/bsc/detail/checks/determinism.hpp
+// begin include/bsc/detail/checks/done_events.hpp
 // Rows on completion events (bsc::done<S>, SCXML's done.state.S) that can never fire:
 //   - S is not a state of the chart (a misspelt name): nothing raises the event;
 //   - S never completes: it is basic, final or the root (a final child of the root halts the
@@ -3245,7 +3314,8 @@ struct done_finding {
 // chart, the index of the state it completes (-1: not a done event; detail::unknown_state:
 // done<S> of a state not in the chart).
 template <std::size_t N, std::size_t R, std::size_t E>
-constexpr done_finding find_dead_done_row(topology<N> const& t, row_table<R> const& r, std::array<int, E> const& completes) {
+constexpr done_finding find_dead_done_row(topology<N> const& t, row_table<R> const& r,
+                                          std::array<int, E> const& completes) {
     constexpr int root = 1;
     for (std::size_t i = 0; i < R; ++i) {
         if (r.kinds[i] != row_kind::transition || r.trigger[i] < 0) continue;
@@ -3278,13 +3348,13 @@ constexpr std::array<int, sizeof...(Events)> completed_states(type_list<Events..
 }
 
 }  // namespace bsc::detail
-// end include/bsc/checks/done_events.hpp
-// begin include/bsc/checks/livelock.hpp
+// end include/bsc/detail/checks/done_events.hpp
+// begin include/bsc/detail/checks/livelock.hpp
 // Eventless livelock: a cycle of unguarded eventless transitions, which dispatch would
 // follow forever. Nodes are basic states; u -> v when an unguarded eventless transition
 // enabled in u (its source is u or an ancestor) enters v.
 
-// begin include/bsc/checks/reachability.hpp
+// begin include/bsc/detail/checks/reachability.hpp
 // Reachability (structure only, guards ignored) and dead ends. Both follow only the rows
 // that can fire: `dead` marks the ones that never do (dead_transitions.hpp).
 
@@ -3330,8 +3400,7 @@ constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int doma
         if (p >= 0 && p != domain && t.kinds[static_cast<std::size_t>(p)] == kind::parallel)
             for (int c = t.first_child[static_cast<std::size_t>(p)]; c >= 0;
                  c = t.next_sibling[static_cast<std::size_t>(c)])
-                if (c != a)
-                    mark_default_entry(t, m, c);
+                if (c != a) mark_default_entry(t, m, c);
     }
     mark_default_entry(t, m, target);
 }
@@ -3357,10 +3426,8 @@ constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R
     for (bool changed = true; changed;) {
         changed = false;
         for (std::size_t i = 0; i < R; ++i) {
-            if (applied[i] || dead[i] || r.kinds[i] != row_kind::transition || r.target[i] < 0)
-                continue;
-            if (!reach[static_cast<std::size_t>(r.source[i])])
-                continue;
+            if (applied[i] || dead[i] || r.kinds[i] != row_kind::transition || r.target[i] < 0) continue;
+            if (!reach[static_cast<std::size_t>(r.source[i])]) continue;
             applied[i] = changed = true;
             for (int target : r.targets_of(i))
                 if (target >= 0) mark_entry(t, reach, -1, target);
@@ -3370,7 +3437,8 @@ constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R
         for (int s = 1; s < static_cast<int>(N); ++s) {
             int const of = reach[static_cast<std::size_t>(s)] ? restored_by_shallow_history(t, s) : -1;
             if (of < 0) continue;
-            for (int c = t.first_child[static_cast<std::size_t>(of)]; c >= 0; c = t.next_sibling[static_cast<std::size_t>(c)]) {
+            for (int c = t.first_child[static_cast<std::size_t>(of)]; c >= 0;
+                 c = t.next_sibling[static_cast<std::size_t>(c)]) {
                 auto const ci = static_cast<std::size_t>(c);
                 if (!reach[ci] || restored[ci] || t.kinds[ci] == kind::history) continue;
                 restored[ci] = changed = true;
@@ -3414,8 +3482,7 @@ constexpr bool reenters(topology<N> const& t, int target, int x) {
 template <std::size_t N, std::size_t R>
 constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::array<bool, R> const& dead,
                             std::array<bool, N> const& reach) {
-    auto const rows =
-        rows_by_source<N>(r, [&](std::size_t i) { return r.target[i] >= 0 && !dead[i]; });
+    auto const rows = rows_by_source<N>(r, [&](std::size_t i) { return r.target[i] >= 0 && !dead[i]; });
     auto const& begin = rows.begin;
     auto const& order = rows.order;
     // Rows whose source lies in the states [lo, hi) of document order.
@@ -3434,8 +3501,8 @@ constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::ar
             leaves = way_out_among(a, a + 1, x, x);
             int const p = t.parent[static_cast<std::size_t>(a)];
             if (!leaves && t.kinds[static_cast<std::size_t>(p)] == kind::parallel)
-                leaves = way_out_among(p + 1, a, x, p) || way_out_among(t.end[static_cast<std::size_t>(a)],
-                                                                       t.end[static_cast<std::size_t>(p)], x, p);
+                leaves = way_out_among(p + 1, a, x, p) ||
+                         way_out_among(t.end[static_cast<std::size_t>(a)], t.end[static_cast<std::size_t>(p)], x, p);
         }
         if (!leaves) return x;
     }
@@ -3443,7 +3510,7 @@ constexpr int find_dead_end(topology<N> const& t, row_table<R> const& r, std::ar
 }
 
 }  // namespace bsc::detail
-// end include/bsc/checks/reachability.hpp
+// end include/bsc/detail/checks/reachability.hpp
 
 namespace bsc::detail {
 
@@ -3502,7 +3569,8 @@ constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) 
             changed = false;
             std::array<int, N> in{}, out{};
             for (std::size_t e = 0; e < count; ++e)
-                if (!removed[static_cast<std::size_t>(edges[e].from)] && !removed[static_cast<std::size_t>(edges[e].to)]) {
+                if (!removed[static_cast<std::size_t>(edges[e].from)] &&
+                    !removed[static_cast<std::size_t>(edges[e].to)]) {
                     ++out[static_cast<std::size_t>(edges[e].from)];
                     ++in[static_cast<std::size_t>(edges[e].to)];
                 }
@@ -3517,8 +3585,8 @@ constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) 
 }
 
 }  // namespace bsc::detail
-// end include/bsc/checks/livelock.hpp
-// begin include/bsc/checks/row_text.hpp
+// end include/bsc/detail/checks/livelock.hpp
+// begin include/bsc/detail/checks/row_text.hpp
 // A row as the user wrote it, as text computed from its type: "Idle + go [ready] / start = Busy".
 // Errors about a row carry it (bsc::error::as_written), so that the row at fault can be found
 // by reading it. What the type does not hold is written generically: an unnamed guard is
@@ -3656,13 +3724,7 @@ concept names_itself = requires {
     requires std::convertible_to<decltype(E::name), std::string_view>;
     requires !std::is_member_object_pointer_v<decltype(&E::name)>;
 };
-}  // namespace detail
 
-template <class S>
-struct done;
-struct any_event;
-
-namespace detail {
 // "done.state." and the state's name, in static storage.
 template <class S>
 inline constexpr auto done_event_text = [] {
@@ -3838,10 +3900,12 @@ struct row_words<transition_row<S, Trigger, G, A, T>> {
         }
         if constexpr (target_parts<T>::all::size > 1) {
             out(" = targets(");
+            // clang-format off
             [&]<class... Targets>(type_list<Targets...>) {
                 bool first = true;
                 ((out(first ? "" : ", "), out(name_of<Targets>), first = false), ...);
             }(typename target_parts<T>::all{});
+            // clang-format on
             out(")");
         } else if constexpr (target_parts<T>::local) {
             out(" = local(");
@@ -3898,8 +3962,8 @@ constexpr auto row_text() {
 }
 
 }  // namespace bsc::detail
-// end include/bsc/checks/row_text.hpp
-// begin include/bsc/checks/signatures.hpp
+// end include/bsc/detail/checks/row_text.hpp
+// begin include/bsc/detail/checks/signatures.hpp
 // Guards and actions that cannot be called, found where the chart is declared so that the
 // error names the row they belong to (bsc::error::in_row) instead of surfacing later inside a
 // machine's dispatch. A guard is called as g(context const&, event const&), g(context const&)
@@ -3990,7 +4054,8 @@ template <class Ctx, class Raise, class Row>
 constexpr auto signature_errors(Row const*) {
     if constexpr (is_transition_row<Row>) {
         using E = typename event_of_trigger<typename Row::trigger>::type;
-        using trigger = std::conditional_t<std::is_same_v<typename Row::trigger, event_trigger<E>>, E, typename Row::trigger>;
+        using trigger =
+            std::conditional_t<std::is_same_v<typename Row::trigger, event_trigger<E>>, E, typename Row::trigger>;
         using guards = typename bad_guard<std::remove_cv_t<decltype(Row::guard)>, Ctx, E>::type;
         using actions = typename bad_action<std::remove_cv_t<decltype(Row::action)>, Ctx, E, Raise>::type;
         if constexpr (guards::size > 0)
@@ -4027,8 +4092,8 @@ template <class Ctx, class Row>
 using signature_error = at<0, decltype(signature_errors<Ctx, raise_stand_in>(static_cast<Row const*>(nullptr)))>;
 
 }  // namespace bsc::detail
-// end include/bsc/checks/signatures.hpp
-// begin include/bsc/checks/structure.hpp
+// end include/bsc/detail/checks/signatures.hpp
+// begin include/bsc/detail/checks/structure.hpp
 // Structural checks: every state declared once, every row's states in the tree, exactly one
 // initial child per composite, no transition between orthogonal regions, every local
 // transition's target inside its source.
@@ -4041,8 +4106,7 @@ template <class... Tags>
 constexpr int find_duplicate(type_list<Tags...>) {
     constexpr int first[] = {position_in<Tags, type_list<Tags...>>::value..., 0};
     for (int i = 0; i < static_cast<int>(sizeof...(Tags)); ++i)
-        if (first[i] != i)
-            return i;
+        if (first[i] != i) return i;
     return -1;
 }
 
@@ -4057,8 +4121,7 @@ constexpr int find_initial_problem(topology<N> const& t) {
 template <std::size_t R>
 constexpr int find_unknown_state(row_table<R> const& r) {
     for (std::size_t i = 0; i < R; ++i) {
-        if (r.source[i] == unknown_state || r.target[i] == unknown_state)
-            return static_cast<int>(i);
+        if (r.source[i] == unknown_state || r.target[i] == unknown_state) return static_cast<int>(i);
         for (int m : r.more_targets[i])
             if (m == unknown_state) return static_cast<int>(i);
     }
@@ -4069,11 +4132,9 @@ template <std::size_t N, std::size_t R>
 constexpr int find_orthogonal_transition(topology<N> const& t, row_table<R> const& r) {
     for (std::size_t i = 0; i < R; ++i) {
         int const s = r.source[i], d = r.target[i];
-        if (r.kinds[i] != row_kind::transition || d < 0)
-            continue;
+        if (r.kinds[i] != row_kind::transition || d < 0) continue;
         int const l = t.lca(s, d);
-        if (t.kinds[static_cast<std::size_t>(l)] == kind::parallel && l != s && l != d)
-            return static_cast<int>(i);
+        if (t.kinds[static_cast<std::size_t>(l)] == kind::parallel && l != s && l != d) return static_cast<int>(i);
     }
     return -1;
 }
@@ -4091,7 +4152,8 @@ constexpr int find_invalid_history(topology<N> const& t, row_table<R> const& r) 
             return static_cast<int>(s);
     }
     for (std::size_t i = 0; i < R; ++i)
-        if (r.kinds[i] != row_kind::initial && r.source[i] >= 0 && t.kinds[static_cast<std::size_t>(r.source[i])] == kind::history)
+        if (r.kinds[i] != row_kind::initial && r.source[i] >= 0 &&
+            t.kinds[static_cast<std::size_t>(r.source[i])] == kind::history)
             return r.source[i];
     return -1;
 }
@@ -4164,13 +4226,12 @@ constexpr int find_targets_not_orthogonal(topology<N> const& t, row_table<R> con
 template <std::size_t N, std::size_t R>
 constexpr int find_misplaced_local(topology<N> const& t, row_table<R> const& r) {
     for (std::size_t i = 0; i < R; ++i)
-        if (r.local[i] && !t.is_proper_ancestor(r.source[i], r.target[i]))
-            return static_cast<int>(i);
+        if (r.local[i] && !t.is_proper_ancestor(r.source[i], r.target[i])) return static_cast<int>(i);
     return -1;
 }
 
 }  // namespace bsc::detail
-// end include/bsc/checks/structure.hpp
+// end include/bsc/detail/checks/structure.hpp
 
 namespace bsc::detail {
 
@@ -4217,7 +4278,8 @@ constexpr auto check_structure() {
         constexpr int first = model::template index_of_state<S>;
         constexpr int implicit = model::tree.implicit[duplicate] ? duplicate : model::tree.implicit[first] ? first : -1;
         if constexpr (implicit >= 0)
-            return type_list<error::initial_not_a_child<typename model::template tag_at<model::tree.parent[implicit]>, S>>{};
+            return type_list<
+                error::initial_not_a_child<typename model::template tag_at<model::tree.parent[implicit]>, S>>{};
         else
             return type_list<error::duplicate_state<S>>{};
     } else {
@@ -4244,7 +4306,8 @@ constexpr auto check_structure() {
                 if constexpr (history_state >= 0)
                     return type_list<error::invalid_history_state<typename model::template tag_at<history_state>>>{};
                 else if constexpr (initial_set >= 0)
-                    return type_list<error::initial_states_not_orthogonal<typename model::template tag_at<initial_set>>>{};
+                    return type_list<
+                        error::initial_states_not_orthogonal<typename model::template tag_at<initial_set>>>{};
                 else
                     return type_list<>{};
             }
@@ -4258,8 +4321,8 @@ constexpr auto check_orthogonality() {
     constexpr int row = find_orthogonal_transition(model::tree, model::rows);
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return type_list<
-            row_error<Chart, row, error::transition_between_orthogonal_regions<typename R::source, typename R::target>>>{};
+        return type_list<row_error<
+            Chart, row, error::transition_between_orthogonal_regions<typename R::source, typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -4271,7 +4334,8 @@ constexpr auto check_local_targets() {
     constexpr int row = find_misplaced_local(model::tree, model::rows);
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return type_list<row_error<Chart, row, error::local_target_outside_source<typename R::source, typename R::target>>>{};
+        return type_list<
+            row_error<Chart, row, error::local_target_outside_source<typename R::source, typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -4283,7 +4347,9 @@ constexpr auto check_several_targets() {
     constexpr int row = find_targets_not_orthogonal(model::tree, model::rows);
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
+        // clang-format off
         using named = decltype([]<class... S>(type_list<S...>) { return error::target_states<S...>{}; }(typename R::targets{}));
+        // clang-format on
         return type_list<row_error<Chart, row, error::targets_not_orthogonal<typename R::source, named>>>{};
     } else {
         return type_list<>{};
@@ -4296,7 +4362,8 @@ constexpr auto check_deferrals() {
     constexpr int row = find_invalid_deferral(model::rows, position_in<any_event, typename model::events>::value);
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return type_list<row_error<Chart, row, error::invalid_deferral<typename R::source, typename trigger_type<R>::type>>>{};
+        return type_list<
+            row_error<Chart, row, error::invalid_deferral<typename R::source, typename trigger_type<R>::type>>>{};
     } else {
         return type_list<>{};
     }
@@ -4307,8 +4374,9 @@ constexpr auto check_initial_actions() {
     using model = chart_model<Chart>;
     constexpr int row = find_misplaced_initial_action(model::tree, model::rows);
     if constexpr (row >= 0)
-        return type_list<row_error<Chart, row, error::initial_action_without_initial_transition<
-                                                   typename model::template row_at<row>::source>>>{};
+        return type_list<row_error<
+            Chart, row,
+            error::initial_action_without_initial_transition<typename model::template row_at<row>::source>>>{};
     else
         return type_list<>{};
 }
@@ -4336,13 +4404,14 @@ constexpr auto check_determinism() {
     constexpr row_pair shadowed = found.shadowed;
     if constexpr (conflict.found()) {
         using R = typename model::template row_at<conflict.second>;
-        return type_list<row_error<Chart, conflict.second,
-                                   error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>>>{};
+        return type_list<
+            row_error<Chart, conflict.second,
+                      error::conflicting_transitions<typename R::source, typename trigger_type<R>::type>>>{};
     } else if constexpr (shadowed.found()) {
         using R = typename model::template row_at<shadowed.second>;
-        return type_list<row_error<Chart, shadowed.second,
-                                   error::shadowed_transition<typename R::source, typename trigger_type<R>::type,
-                                                              typename R::target>>>{};
+        return type_list<row_error<
+            Chart, shadowed.second,
+            error::shadowed_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -4382,7 +4451,8 @@ constexpr auto check_dead_transitions() {
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
         return type_list<row_error<
-            Chart, row, error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>>{};
+            Chart, row,
+            error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -4438,13 +4508,12 @@ constexpr auto check_chart() {
                         decltype(check_several_targets<Chart>()), decltype(check_initial_actions<Chart>()),
                         decltype(check_deferrals<Chart>()), decltype(check_event_families<Chart>()),
                         decltype(check_determinism<Chart>()), decltype(check_done_events<Chart>()),
-                        decltype(check_dead_transitions<Chart>()),
-                        decltype(check_reachability<Chart>()), decltype(check_livelock<Chart>()),
-                        decltype(check_signatures<Chart>())>{};
+                        decltype(check_dead_transitions<Chart>()), decltype(check_reachability<Chart>()),
+                        decltype(check_livelock<Chart>()), decltype(check_signatures<Chart>())>{};
 }
 
 }  // namespace bsc::detail
-// end include/bsc/checks/checks.hpp
+// end include/bsc/detail/checks/checks.hpp
 // begin include/bsc/detail/row_storage.hpp
 // The rows of a chart, held as one object: each row in a base of its own, keyed by its
 // position. A row is read with row_at<I>(rows), a function template whose arguments are the
@@ -4546,11 +4615,13 @@ template <class... A>
 constexpr auto flatten_rows(A... a) {
     using positions = flat_positions<A...>;
     row_storage<A...> arguments{{static_cast<A&&>(a)}...};
+    // clang-format off
     return [&]<std::size_t... J>(std::index_sequence<J...>) {
         return row_group<std::remove_cvref_t<
             decltype(flat_row<positions::of[J].argument, positions::of[J].position>(arguments))>...>{
             {{flat_row<positions::of[J].argument, positions::of[J].position>(arguments)}...}};
     }(std::make_index_sequence<positions::size>{});
+    // clang-format on
 }
 
 template <class Root>
@@ -4575,7 +4646,7 @@ struct chart {
 };
 
 namespace detail {
-// The dead transitions that only the delays tell (checks/dead_transitions.hpp finds the others):
+// The dead transitions that only the delays tell (detail/checks/dead_transitions.hpp finds the others):
 // a timeout row that an unguarded timeout row, with a target, always beats. That row, of state
 // C, leaves the states from C up to its domain no later than its delay after C's entry. Each
 // such state P whose entry starts C's clock too (C is P, or C is active whenever P is: every
@@ -4683,15 +4754,18 @@ template <class Context, class Root, class... Rows>
 constexpr auto make_chart(Root root, Rows... rows) {
     if constexpr ((detail::is_row_group<Rows> || ...)) {
         auto group = detail::flatten_rows(std::move(rows)...);
+        // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
             return make_chart<Context>(std::move(root), detail::take_row<I>(group.rows)...);
         }(std::make_index_sequence<detail::rows_in<decltype(group)>>{});
+        // clang-format on
     } else if constexpr (!detail::is_compound_root<Root>()) {
         return detail::rejected_chart<Context, error::root_must_be_composite<Root>>{};
     } else if constexpr (!(detail::is_row<Rows> && ...)) {
-        constexpr int bad = detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_row<Rows>>...>>::value;
-        return detail::rejected_chart<Context,
-                                      error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>>{};
+        constexpr int bad =
+            detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_row<Rows>>...>>::value;
+        return detail::rejected_chart<
+            Context, error::not_a_row<detail::at<static_cast<std::size_t>(bad), detail::type_list<Rows...>>>>{};
     } else {
         // The chart, or, when its checks find errors, the rejected_chart whose destruction
         // reports them.
@@ -4699,11 +4773,13 @@ constexpr auto make_chart(Root root, Rows... rows) {
         using errors = decltype(detail::check_chart<chart_type>());
         if constexpr (errors::size == 0) {
             if constexpr ((detail::is_timeout_row<Rows> || ...)) {
-                auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree, detail::chart_model<chart_type>::rows,
-                                                          detail::delays_of(rows...));
+                auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree,
+                                                            detail::chart_model<chart_type>::rows,
+                                                            detail::delays_of(rows...));
                 if (dead.row != 0) {
                     if (!std::is_constant_evaluated())
-                        detail::bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(dead.row, dead.fires_first);
+                        detail::bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(dead.row,
+                                                                                               dead.fires_first);
                     // In a constant expression, the error comes from the marked parameter's
                     // destruction, after this returns (detail::timeout_trigger).
                     chart_type built{{{std::move(rows)}...}};
@@ -4774,763 +4850,6 @@ template <auto const& Chart>
 inline constexpr bool is_chart_ref<chart_ref<Chart>> = true;
 }  // namespace bsc::detail
 // end include/bsc/chart_ref.hpp
-// begin include/bsc/compiled/machine.hpp
-// bsc::machine: the compiled back end. For an event type, dispatch is a nest of switches on
-// the configuration bytes that visits only the states where a transition on that event can
-// leave; at each basic state the candidate transitions, their exits, action and entries are
-// straight-line code fixed at compile time. Parallel regions select first and fire after,
-// as SCXML's microstep does. The public interface and the run to completion are the shared
-// driver's (runtime/driver.hpp); this file selects and fires.
-
-#include <array>
-#include <cstddef>
-#include <cstdint>
-#include <type_traits>
-#include <utility>
-
-// begin include/bsc/compiled/plan.hpp
-// Compile-time dispatch plans: for a trigger, which states lead to a transition and, for each
-// basic state, which transitions are its candidates in SCXML order (deepest source first,
-// then declaration order). The compiled machine expands these into switches and straight-line
-// code; nothing here exists at run time.
-
-#include <array>
-
-// begin include/bsc/model/layout.hpp
-// What every back end lays out the same way, computed once from the chart model: the
-// components of a BSC cycle, the timeout slots, the children of each state, the bytes of the
-// initial configuration, the transitions in declaration order and the entry and exit rows of
-// each state. Both back ends number these alike because both read them from here.
-
-#include <array>
-#include <cstddef>
-#include <cstdint>
-
-
-namespace bsc::detail {
-
-template <class Model>
-struct chart_layout {
-    static constexpr auto const& tree = Model::tree;
-    static constexpr auto const& rows = Model::rows;
-    static constexpr int N = Model::N;
-    static constexpr int R = Model::R;
-    static constexpr int root = 1;  // state 0 is the implicit top above the chart's root
-
-    // Whether row `row` is a transition on `trigger`: an event's position, eventless_id, or
-    // any_condition (eventless or timeout).
-    static constexpr bool is_transition_on(int row, int trigger) {
-        auto const r = static_cast<std::size_t>(row);
-        if (rows.kinds[r] != row_kind::transition) return false;
-        if (trigger == any_condition) return rows.trigger[r] < 0;
-        // A row on a family of the trigger's event takes it too (model/event_families.hpp).
-        if constexpr (Model::has_families)
-            return rows.takes(rows.trigger[r], trigger);
-        else
-            return rows.trigger[r] == trigger;
-    }
-
-    static constexpr bool has_trigger(int trigger) {
-        for (int r = 0; r < R; ++r)
-            if (is_transition_on(r, trigger)) return true;
-        return false;
-    }
-
-    static constexpr bool is_timeout_row(int row) {
-        auto const r = static_cast<std::size_t>(row);
-        return rows.kinds[r] == row_kind::transition && rows.trigger[r] <= timeout_trigger_id(0);
-    }
-
-    // The children of state S, in document order.
-    template <int S>
-    static constexpr auto children = [] {
-        std::array<int, static_cast<std::size_t>(tree.child_count[static_cast<std::size_t>(S)])> out{};
-        std::size_t n = 0;
-        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
-             c = tree.next_sibling[static_cast<std::size_t>(c)])
-            out[n++] = c;
-        return out;
-    }();
-
-    // BSC components: the root and every child of a parallel state, in document order. In a
-    // cycle each fires at most one condition-driven transition, chosen from the states between
-    // its active frontier (a basic state, or a parallel state whose children are components of
-    // their own) and its root.
-    static constexpr int component_count() {
-        int n = 1;
-        for (int s = 2; s < N; ++s)
-            n += tree.kinds[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] == kind::parallel;
-        return n;
-    }
-    static constexpr auto components = [] {
-        std::array<int, static_cast<std::size_t>(component_count())> out{};
-        std::size_t n = 0;
-        out[n++] = root;
-        for (int s = 2; s < N; ++s)
-            if (tree.kinds[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] == kind::parallel)
-                out[n++] = s;
-        return out;
-    }();
-
-    // Every timeout row has a slot for the time from which its delay counts: the entry of its
-    // source, or the cycle it last fired in for an internal timeout (which re-arms itself).
-    // Slots are numbered by source state in document order, then by row, so the slots of one
-    // state are contiguous: timeout_slot[s] is the first (-1 if none), timeout_slot_count[s]
-    // how many; row_timeout_slot[r] is row r's (-1 for other rows).
-    static constexpr auto timeout_slot_count = [] {
-        std::array<int, static_cast<std::size_t>(N)> count{};
-        for (int r = 0; r < R; ++r)
-            if (is_timeout_row(r)) ++count[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])];
-        return count;
-    }();
-    static constexpr auto timeout_slot = [] {
-        std::array<int, static_cast<std::size_t>(N)> first{};
-        int n = 0;
-        for (std::size_t s = 0; s < first.size(); ++s) {
-            first[s] = timeout_slot_count[s] > 0 ? n : -1;
-            n += timeout_slot_count[s];
-        }
-        return first;
-    }();
-    static constexpr int timeout_slots = [] {
-        int n = 0;
-        for (int count : timeout_slot_count) n += count;
-        return n;
-    }();
-    static constexpr auto row_timeout_slot = [] {
-        std::array<int, static_cast<std::size_t>(R)> slot{};
-        std::array<int, static_cast<std::size_t>(N)> used{};
-        for (int r = 0; r < R; ++r) {
-            auto const source = static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)]);
-            slot[static_cast<std::size_t>(r)] = is_timeout_row(r) ? timeout_slot[source] + used[source]++ : -1;
-        }
-        return slot;
-    }();
-    // The state whose entry arms a slot.
-    static constexpr auto timeout_slot_state = [] {
-        std::array<int, static_cast<std::size_t>(timeout_slots)> state{};
-        for (int s = 0; s < N; ++s)
-            for (int k = 0; k < timeout_slot_count[static_cast<std::size_t>(s)]; ++k)
-                state[static_cast<std::size_t>(timeout_slot[static_cast<std::size_t>(s)] + k)] = s;
-        return state;
-    }();
-    // Whether some state has two timeout rows or more: only their timeouts compete by due time
-    // (the one that came due first fires; docs/semantics.md, "Timers").
-    static constexpr bool has_competing_timeouts = [] {
-        for (int count : timeout_slot_count)
-            if (count > 1) return true;
-        return false;
-    }();
-
-    // Whether timeout row `row` competes with other timeouts of its state by due time.
-    static constexpr bool competes_by_due_time(int row) {
-        return has_competing_timeouts && is_timeout_row(row) &&
-               timeout_slot_count[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(row)])] > 1;
-    }
-
-    // Whether timeout row `row`, when it fires, leaves its state active and so counts again from
-    // that cycle: an internal timeout (no domain), or a local one (its domain is its state).
-    static constexpr bool rearms(int row) {
-        auto const r = static_cast<std::size_t>(row);
-        return is_timeout_row(row) && (rows.domain[r] < 0 || rows.domain[r] == rows.source[r]);
-    }
-
-    // The rows of each state, in declaration order, all kinds: those of state s are
-    // from_source[from_source_begin[s]] to from_source[from_source_begin[s + 1]] (exclusive).
-    // Built once, so that what is asked per state or per (state, trigger) reads that state's
-    // rows and not all the chart's: the compile time stays linear in the chart.
-    static constexpr auto from_source_begin = [] {
-        std::array<int, static_cast<std::size_t>(N) + 1> begin{};
-        for (int r = 0; r < R; ++r) ++begin[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)]) + 1];
-        for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s) begin[s + 1] += begin[s];
-        return begin;
-    }();
-    static constexpr auto from_source = [] {
-        std::array<int, static_cast<std::size_t>(R)> out{};
-        auto next = from_source_begin;
-        for (int r = 0; r < R; ++r) out[static_cast<std::size_t>(next[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])]++)] = r;
-        return out;
-    }();
-
-    static constexpr int count_rows(row_kind k, int state) {
-        int n = 0;
-        if (state < 0) {
-            for (int r = 0; r < R; ++r) n += rows.kinds[static_cast<std::size_t>(r)] == k;
-        } else {
-            for (int i = from_source_begin[static_cast<std::size_t>(state)]; i < from_source_begin[static_cast<std::size_t>(state) + 1]; ++i)
-                n += rows.kinds[static_cast<std::size_t>(from_source[static_cast<std::size_t>(i)])] == k;
-        }
-        return n;
-    }
-
-    // The rows of kind K from state S (every state if S is -1), in declaration order: the
-    // entry or exit rows of a state, or all transitions.
-    template <row_kind K, int S>
-    static constexpr auto rows_of = [] {
-        std::array<int, static_cast<std::size_t>(count_rows(K, S))> out{};
-        std::size_t n = 0;
-        if constexpr (S < 0) {
-            for (int r = 0; r < R; ++r)
-                if (rows.kinds[static_cast<std::size_t>(r)] == K) out[n++] = r;
-        } else {
-            for (int i = from_source_begin[S]; i < from_source_begin[S + 1]; ++i)
-                if (rows.kinds[static_cast<std::size_t>(from_source[static_cast<std::size_t>(i)])] == K)
-                    out[n++] = from_source[static_cast<std::size_t>(i)];
-        }
-        return out;
-    }();
-    static constexpr auto const& transition_rows = rows_of<row_kind::transition, -1>;
-
-    // How many basic states below s can be active at once: the most transitions one event
-    // can select there.
-    static constexpr int max_active_leaves(int s = root) {
-        auto const i = static_cast<std::size_t>(s);
-        if (tree.is_leaf(s)) return 1;
-        int result = 0;
-        for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)]) {
-            int const m = max_active_leaves(c);
-            result = tree.kinds[i] == kind::parallel ? result + m : (m > result ? m : result);
-        }
-        return result;
-    }
-
-    static constexpr bool has_parallel = [] {
-        for (int s = 0; s < N; ++s)
-            if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel) return true;
-        return false;
-    }();
-
-    // history_child[s]: the first history pseudo-state among the children of composite s, -1
-    // if none; deep_history_child[s]: whether one of them is deep.
-    static constexpr auto history_child = [] {
-        std::array<int, static_cast<std::size_t>(N)> out{};
-        for (int s = 0; s < N; ++s) {
-            out[static_cast<std::size_t>(s)] = -1;
-            for (int c = tree.first_child[static_cast<std::size_t>(s)]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
-                if (tree.kinds[static_cast<std::size_t>(c)] == kind::history && out[static_cast<std::size_t>(s)] < 0)
-                    out[static_cast<std::size_t>(s)] = c;
-        }
-        return out;
-    }();
-    static constexpr auto deep_history_child = [] {
-        std::array<bool, static_cast<std::size_t>(N)> out{};
-        for (int s = 1; s < N; ++s)
-            if (tree.kinds[static_cast<std::size_t>(s)] == kind::history && tree.hist[static_cast<std::size_t>(s)] == history::deep)
-                out[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] = true;
-        return out;
-    }();
-    static constexpr bool has_history_states = [] {
-        for (int s = 0; s < N; ++s)
-            if (tree.kinds[static_cast<std::size_t>(s)] == kind::history) return true;
-        return false;
-    }();
-
-    // The initial configuration: every composite's byte at its initial child; the byte of a
-    // composite with history states at the first of them, which is never active: the mark of a
-    // composite that has never been active, whose history states take their defaults.
-    static constexpr auto initial_bytes = [] {
-        std::array<std::uint8_t, static_cast<std::size_t>(tree.slots)> bytes{};
-        for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s)
-            if (tree.slot[s] >= 0)
-                bytes[static_cast<std::size_t>(tree.slot[s])] = static_cast<std::uint8_t>(
-                    tree.ordinal[static_cast<std::size_t>(history_child[s] >= 0 ? history_child[s] : tree.initial[s])]);
-        return bytes;
-    }();
-    // Whether composite s's byte says it has never been active (it selects a history state).
-    template <int S>
-    static constexpr bool never_active_byte(std::uint8_t byte) {
-        bool is_history = false;
-        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
-            is_history = is_history || (tree.kinds[static_cast<std::size_t>(c)] == kind::history &&
-                                        tree.ordinal[static_cast<std::size_t>(c)] == byte);
-        return is_history;
-    }
-
-    // Which children of the root are final, by ordinal: the machine halts when its root's
-    // byte selects one. Empty unless the root is a composite with a final child.
-    static constexpr bool can_halt = [] {
-        if (tree.kinds[root] != kind::composite) return false;
-        for (int c = tree.first_child[root]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
-            if (tree.kinds[static_cast<std::size_t>(c)] == kind::final_state) return true;
-        return false;
-    }();
-    static constexpr auto final_root_children = [] {
-        std::array<bool, can_halt ? static_cast<std::size_t>(tree.child_count[root]) : 0> out{};
-        if constexpr (can_halt)
-            for (int c = tree.first_child[root]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
-                out[static_cast<std::size_t>(tree.ordinal[static_cast<std::size_t>(c)])] =
-                    tree.kinds[static_cast<std::size_t>(c)] == kind::final_state;
-        return out;
-    }();
-
-    // Two selected transitions conflict when their exit sets meet, i.e. when their domains nest.
-    static constexpr bool conflict(int r1, int r2) {
-        int const d1 = rows.domain[static_cast<std::size_t>(r1)], d2 = rows.domain[static_cast<std::size_t>(r2)];
-        if (d1 < 0 || d2 < 0) return false;
-        return tree.contains(d1, d2) || tree.contains(d2, d1);
-    }
-    // Of two conflicting transitions, the later-selected one preempts the earlier when its
-    // source lies below the earlier one's (SCXML's removeConflictingTransitions).
-    static constexpr bool preempts(int later, int earlier) {
-        return tree.is_proper_ancestor(rows.source[static_cast<std::size_t>(earlier)],
-                                       rows.source[static_cast<std::size_t>(later)]);
-    }
-};
-
-}  // namespace bsc::detail
-// end include/bsc/model/layout.hpp
-
-namespace bsc::detail {
-
-template <class Model>
-struct plan : chart_layout<Model> {
-    using layout = chart_layout<Model>;
-    using layout::tree;
-    using layout::rows;
-    using layout::N;
-    using layout::R;
-    using layout::is_transition_on;
-    using layout::components;
-    using layout::has_parallel;
-    using layout::conflict;
-    using layout::from_source;
-    using layout::from_source_begin;
-
-    // The transitions on each event, in declaration order, for a chart without event families
-    // (where a row takes the events of its trigger only): those on event position t are
-    // on_event[on_event_begin[t]] to on_event[on_event_begin[t + 1]] (exclusive). Built once,
-    // so that each trigger's list is read, not found by a scan of every row.
-    static constexpr int event_count = static_cast<int>(Model::events::size);
-    static constexpr auto on_event_begin = [] {
-        std::array<int, static_cast<std::size_t>(event_count) + 1> begin{};
-        for (int r = 0; r < R; ++r)
-            if (rows.kinds[static_cast<std::size_t>(r)] == row_kind::transition && rows.trigger[static_cast<std::size_t>(r)] >= 0)
-                ++begin[static_cast<std::size_t>(rows.trigger[static_cast<std::size_t>(r)]) + 1];
-        for (std::size_t t = 0; t < static_cast<std::size_t>(event_count); ++t) begin[t + 1] += begin[t];
-        return begin;
-    }();
-    static constexpr auto on_event = [] {
-        std::array<int, static_cast<std::size_t>(on_event_begin[static_cast<std::size_t>(event_count)])> out{};
-        auto next = on_event_begin;
-        for (int r = 0; r < R; ++r)
-            if (rows.kinds[static_cast<std::size_t>(r)] == row_kind::transition && rows.trigger[static_cast<std::size_t>(r)] >= 0)
-                out[static_cast<std::size_t>(next[static_cast<std::size_t>(rows.trigger[static_cast<std::size_t>(r)])]++)] = r;
-        return out;
-    }();
-    static constexpr bool indexed_by_event(int trigger) { return !Model::has_families && trigger >= 0; }
-
-    static constexpr int transition_count(int trigger) {
-        if (indexed_by_event(trigger))
-            return on_event_begin[static_cast<std::size_t>(trigger) + 1] - on_event_begin[static_cast<std::size_t>(trigger)];
-        int n = 0;
-        for (int r = 0; r < R; ++r) n += is_transition_on(r, trigger) ? 1 : 0;
-        return n;
-    }
-
-    // The transitions on a trigger, in declaration order; the selection buffer stores positions
-    // here. What follows reads this list.
-    template <int Trigger>
-    static constexpr auto transitions = [] {
-        std::array<int, static_cast<std::size_t>(transition_count(Trigger))> out{};
-        std::size_t n = 0;
-        if constexpr (indexed_by_event(Trigger)) {
-            for (int i = on_event_begin[static_cast<std::size_t>(Trigger)]; i < on_event_begin[static_cast<std::size_t>(Trigger) + 1]; ++i)
-                out[n++] = on_event[static_cast<std::size_t>(i)];
-        } else {
-            for (int r = 0; r < R; ++r)
-                if (is_transition_on(r, Trigger))
-                    out[n++] = r;
-        }
-        return out;
-    }();
-
-    // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a
-    // descendant. (Asked of the states a dispatch walks through, each asking reads the trigger's
-    // transitions: no array of every state per trigger, which made the compile time quadratic.)
-    template <int Trigger>
-    static constexpr bool relevant(int s) {
-        for (int const r : transitions<Trigger>) {
-            int const src = rows.source[static_cast<std::size_t>(r)];
-            if (tree.contains(src, s) || tree.contains(s, src)) return true;
-        }
-        return false;
-    }
-
-    // No transition on the trigger leaves a state strictly below s: every state below s takes
-    // it by the rows of s and its ancestors only.
-    template <int Trigger>
-    static constexpr bool no_source_below(int s) {
-        for (int const r : transitions<Trigger>) {
-            int const src = rows.source[static_cast<std::size_t>(r)];
-            if (src != s && tree.contains(s, src)) return false;
-        }
-        return true;
-    }
-
-    // The children of composite s toward the sources of the trigger's transitions below it,
-    // in document order, each once; or `every`, if a source is s or above it (every child is
-    // then relevant).
-    template <int Trigger>
-    struct children_found {
-        std::array<int, transitions<Trigger>.size()> child{};
-        std::size_t count = 0;
-        bool every = false;
-    };
-    template <int Trigger>
-    static constexpr children_found<Trigger> children_toward_sources(int s) {
-        children_found<Trigger> found{};
-        for (int const r : transitions<Trigger>) {
-            int const src = rows.source[static_cast<std::size_t>(r)];
-            if (tree.contains(src, s)) {
-                found.every = true;
-                return found;
-            }
-            if (!tree.contains(s, src)) continue;
-            int const c = tree.child_toward(s, src);
-            bool seen = false;
-            for (std::size_t j = 0; j < found.count && !seen; ++j) seen = found.child[j] == c;
-            if (seen) continue;
-            std::size_t i = found.count++;  // insertion in document order
-            for (; i > 0 && found.child[i - 1] > c; --i) found.child[i] = found.child[i - 1];
-            found.child[i] = c;
-        }
-        return found;
-    }
-
-    // The children of composite S that are relevant to the trigger, in document order: the
-    // only ones dispatch on the trigger compares S's byte with, so each trigger instantiates
-    // code along its own paths only (linear in the transitions, not in states x triggers).
-    template <int Trigger, int S>
-    static constexpr auto relevant_children = [] {
-        constexpr auto found = children_toward_sources<Trigger>(S);
-        if constexpr (found.every) {
-            return layout::template children<S>;
-        } else {
-            std::array<int, found.count> out{};
-            for (std::size_t i = 0; i < found.count; ++i) out[i] = found.child[i];
-            return out;
-        }
-    }();
-
-    static constexpr int candidate_count(int leaf, int trigger) {
-        int n = 0;
-        for (int a = leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
-            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
-                n += is_transition_on(from_source[static_cast<std::size_t>(i)], trigger) ? 1 : 0;
-        return n;
-    }
-
-    template <int Leaf, int Trigger>
-    static constexpr auto candidates = [] {
-        std::array<int, static_cast<std::size_t>(candidate_count(Leaf, Trigger))> out{};
-        std::size_t n = 0;
-        for (int a = Leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
-            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
-                if (is_transition_on(from_source[static_cast<std::size_t>(i)], Trigger))
-                    out[n++] = from_source[static_cast<std::size_t>(i)];
-        return out;
-    }();
-
-    static constexpr int component_candidate_count(int frontier, int component) {
-        int n = 0;
-        for (int a = frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
-            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
-                n += is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition) ? 1 : 0;
-            if (a == component) break;
-        }
-        return n;
-    }
-    template <int Frontier, int Component>
-    static constexpr auto component_candidates = [] {
-        std::array<int, static_cast<std::size_t>(component_candidate_count(Frontier, Component))> out{};
-        std::size_t n = 0;
-        for (int a = Frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
-            for (int i = from_source_begin[static_cast<std::size_t>(a)]; i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
-                if (is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition))
-                    out[n++] = from_source[static_cast<std::size_t>(i)];
-            if (a == Component) break;
-        }
-        return out;
-    }();
-
-    // The timeout rows of the source of timeout row `row` declared after it, in declaration
-    // order: those it competes with by due time when its condition holds (the earlier ones did
-    // not hold, or it would not be tried). Empty for a state with one timeout row.
-    static constexpr int later_timeout_count(int row) {
-        int const source = rows.source[static_cast<std::size_t>(row)];
-        int n = 0;
-        for (int i = from_source_begin[static_cast<std::size_t>(source)]; i < from_source_begin[static_cast<std::size_t>(source) + 1]; ++i)
-            n += from_source[static_cast<std::size_t>(i)] > row && layout::is_timeout_row(from_source[static_cast<std::size_t>(i)]);
-        return n;
-    }
-    template <int Row>
-    static constexpr auto later_timeouts = [] {
-        std::array<int, static_cast<std::size_t>(layout::is_timeout_row(Row) ? later_timeout_count(Row) : 0)> out{};
-        std::size_t n = 0;
-        if constexpr (out.size() > 0) {
-            constexpr int source = rows.source[static_cast<std::size_t>(Row)];
-            for (int i = from_source_begin[static_cast<std::size_t>(source)]; i < from_source_begin[static_cast<std::size_t>(source) + 1]; ++i)
-                if (from_source[static_cast<std::size_t>(i)] > Row && layout::is_timeout_row(from_source[static_cast<std::size_t>(i)]))
-                    out[n++] = from_source[static_cast<std::size_t>(i)];
-        }
-        return out;
-    }();
-
-    template <int Trigger>
-    static constexpr int position_of(int row) {
-        for (std::size_t i = 0; i < transitions<Trigger>.size(); ++i)
-            if (transitions<Trigger>[i] == row)
-                return static_cast<int>(i);
-        return -1;
-    }
-
-    static constexpr int index_in_components(int s) {
-        for (std::size_t i = 0; i < components.size(); ++i)
-            if (components[i] == s) return static_cast<int>(i);
-        return -1;
-    }
-
-    // The component a state lies in, as an index into components. Within a component at most
-    // one transition is selected per microstep: its basic states that lie below no further
-    // parallel state are mutually exclusive.
-    static constexpr auto component_of = [] {
-        std::array<int, static_cast<std::size_t>(N)> out{};
-        for (int s = 0; s < N; ++s) {
-            out[static_cast<std::size_t>(s)] = 0;
-            for (int a = s; a > 1; a = tree.parent[static_cast<std::size_t>(a)]) {
-                int const i = index_in_components(a);
-                if (i >= 0) {
-                    out[static_cast<std::size_t>(s)] = i;
-                    break;
-                }
-            }
-        }
-        return out;
-    }();
-
-    template <int Trigger>
-    static constexpr int component_row_count(int component) {
-        int n = 0;
-        for (int const r : transitions<Trigger>)
-            n += component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == component;
-        return n;
-    }
-    // The transitions on a trigger whose source lies in component C, in declaration order.
-    template <int Trigger, int C>
-    static constexpr auto component_rows = [] {
-        std::array<int, static_cast<std::size_t>(component_row_count<Trigger>(C))> out{};
-        std::size_t n = 0;
-        for (int const r : transitions<Trigger>)
-            if (component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == C)
-                out[n++] = r;
-        return out;
-    }();
-    // What a region-local selection records for a row: 1 + its position in its component's rows.
-    template <int Trigger, int Row>
-    static constexpr int component_code = [] {
-        constexpr auto const& list = component_rows<Trigger, component_of[static_cast<std::size_t>(rows.source[Row])]>;
-        for (std::size_t i = 0; i < list.size(); ++i)
-            if (list[i] == Row) return static_cast<int>(i) + 1;
-        return 0;
-    }();
-
-    // A trigger is region-local when what SCXML's conflict resolution does at run time is known
-    // at compile time to keep every selected transition: no transition on it leaves a state that
-    // contains a parallel state (so each is selected by one basic state at most), and no two
-    // transitions from different components have nesting domains (so none preempts another).
-    // Its microstep then records one row per component and fires the components in document
-    // order, with no run-time conflict check.
-    template <int Trigger>
-    static constexpr bool region_local = [] {
-        if (!has_parallel) return false;  // nothing to resolve: every transition fires where selected
-        constexpr auto const& on_trigger = transitions<Trigger>;
-        for (std::size_t i = 0; i < on_trigger.size(); ++i) {
-            int const r = on_trigger[i];
-            int const src = rows.source[static_cast<std::size_t>(r)];
-            for (int s = src; s < tree.end[static_cast<std::size_t>(src)]; ++s)
-                if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel) return false;
-            if (component_row_count<Trigger>(component_of[static_cast<std::size_t>(src)]) > 254) return false;
-            for (std::size_t j = i + 1; j < on_trigger.size(); ++j) {
-                int const r2 = on_trigger[j];
-                if (component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r2)])] != component_of[static_cast<std::size_t>(src)] &&
-                    conflict(r, r2))
-                    return false;
-            }
-        }
-        return true;
-    }();
-
-    // A region-local trigger whose transitions can fire as they are selected, with the same
-    // effects as selecting all first: none is guarded (so no selection can depend on another
-    // component's action), and no state that one of them exits or enters has an entry or exit row
-    // (so the only visible effects are the transition actions, which run in document order
-    // either way). Each component's transition changes only the bytes inside its own domain.
-    template <int Trigger>
-    static constexpr bool fires_at_selection = [] {
-        if (!region_local<Trigger>) return false;
-        for (int const r : transitions<Trigger>) {
-            if (rows.guarded[static_cast<std::size_t>(r)]) return false;
-            int const d = rows.domain[static_cast<std::size_t>(r)];
-            if (d < 0) continue;  // targetless: exits and enters nothing
-            for (int r2 = 0; r2 < R; ++r2) {
-                auto const k = rows.kinds[static_cast<std::size_t>(r2)];
-                int const s = rows.source[static_cast<std::size_t>(r2)];
-                if (k != row_kind::transition && s != d && tree.contains(d, s)) return false;
-            }
-        }
-        return true;
-    }();
-
-    // The components in which a transition on the trigger can be selected under a parallel state.
-    template <int Trigger>
-    static constexpr int selecting_component_count() {
-        int n = 0;
-        for (std::size_t c = 1; c < components.size(); ++c) n += component_row_count<Trigger>(static_cast<int>(c)) > 0;
-        return n;
-    }
-    template <int Trigger>
-    static constexpr auto selecting_components = [] {
-        std::array<int, static_cast<std::size_t>(selecting_component_count<Trigger>())> out{};
-        std::size_t n = 0;
-        for (std::size_t c = 1; c < components.size(); ++c)
-            if (component_row_count<Trigger>(static_cast<int>(c)) > 0) out[n++] = static_cast<int>(c);
-        return out;
-    }();
-};
-
-}  // namespace bsc::detail
-// end include/bsc/compiled/plan.hpp
-// begin include/bsc/observer.hpp
-// Observer hooks: entry, exit and transition notifications for traces and tests. An
-// observer implements any subset of the hooks; a machine without one pays nothing.
-
-#include <string_view>
-
-
-namespace bsc {
-
-/// Identifies a state in observer calls: `tag.name` is its unqualified name, `type` the state.
-template <class S>
-struct state_tag {
-    using type = S;
-    static constexpr std::string_view name = name_of<S>;
-};
-
-/// The target reported for an internal transition, which exits and enters nothing.
-struct internal {};
-
-/// What on_transition receives as the event of a timeout row (`after(delay)`): its delay. An
-/// eventless row's transition receives bsc::eventless, an event's transition the event.
-struct timeout_elapsed {
-    duration delay;
-};
-
-/// The default observer: no hooks, no cost.
-struct no_observer {};
-
-/// An observer may define, each optional:
-///   void on_entry(auto state);              // after state's entry actions
-///   void on_exit(auto state);               // after state's exit actions
-///   void on_transition(auto source, auto target, auto const& event);  // before the action
-///   void on_row(int row);                   // the same moment: the row's position in make_chart
-///   void on_guard(std::string_view guard);  // just before on_transition, for a row with a guard:
-///                                           // the guard as the exports write it, e.g. "released",
-///                                           // "!released && ready", "guard" when no part has a name
-///   void on_defer(auto source, auto const& event);  // just before on_transition, for a row
-///                                           // that defers the event (`/ bsc::defer`)
-///   void on_dispatch(auto const& event);    // dispatch(event) begins (not when refused)
-///   void on_cycle(bsc::duration now);       // step(now) begins, with the cycle's time
-///   void on_cycle_end();                    // that cycle's outputs are committed
-/// where `state`, `source` and `target` are bsc::state_tag<S> (target: state_tag<bsc::internal>
-/// for an internal transition) and `event` is the event: bsc::eventless for an eventless row,
-/// bsc::timeout_elapsed{delay} for a timeout row. A hook the observer lacks costs nothing.
-/// The time of a dispatch is the machine's clock, now(): the time of the last cycle (a machine
-/// that keeps no clock, policy keep_clock, has none: its on_cycle gets the caller's time).
-namespace detail {
-template <class O, class Tag>
-concept observes_entry = requires(O& o) {
-    o.on_entry(Tag{});
-};
-template <class O, class Tag>
-concept observes_exit = requires(O& o) {
-    o.on_exit(Tag{});
-};
-template <class O, class Src, class Dst, class E>
-concept observes_transition = requires(O& o, E const& e) {
-    o.on_transition(Src{}, Dst{}, e);
-};
-template <class O>
-concept observes_guards = requires(O& o, std::string_view text) {
-    o.on_guard(text);
-};
-template <class O, class Src, class E>
-concept observes_deferrals = requires(O& o, E const& e) {
-    o.on_defer(Src{}, e);
-};
-template <class O>
-concept observes_rows = requires(O& o) {
-    o.on_row(0);
-};
-template <class O, class E>
-concept observes_dispatch = requires(O& o, E const& e) {
-    o.on_dispatch(e);
-};
-template <class O>
-concept observes_cycles = requires(O& o) {
-    o.on_cycle(duration{});
-};
-template <class O>
-concept observes_cycle_ends = requires(O& o) {
-    o.on_cycle_end();
-};
-}  // namespace detail
-
-}  // namespace bsc
-// end include/bsc/observer.hpp
-// begin include/bsc/runtime/driver.hpp
-// What both back ends share: the public interface of a machine and everything that does not
-// depend on how a transition is selected and fired. The driver owns the machine's data (chart,
-// context, configuration, queue, clock, timeout slots, outcome, observer), runs an event to
-// completion (settling eventless transitions and raised events, with the policy's limits),
-// runs a BSC cycle's shell (time, timers, latched inputs, the components' turns, committed
-// outputs), and answers is<S>, halted and active_states from the configuration bytes.
-//
-// A back end derives from it (CRTP) and supplies only what differs:
-//   void enter_initial();                        enters the root and its default completion
-//   template <int Trigger, class E>
-//   bool fire(E const& e);                       selects and fires the transitions on e,
-//                                                without settling
-//   template <int Trigger, class E>
-//   bool fire_dispatched(E const& e);            fire() for the event a dispatch takes
-//   template <int Component> bool component_step();  one component's turn in a cycle
-//   template <int S> bool is_active() const;     whether state S is active
-
-#include <array>
-#include <cstddef>
-#include <cstdint>
-#include <string_view>
-#include <type_traits>
-#include <utility>
-
-// begin include/bsc/action_failed.hpp
-// bsc::action_failed: the event a machine raises when one of its guards or actions throws.
-
-#include <exception>
-
-namespace bsc {
-
-/// What a machine puts on its internal queue when a guard, an action, an entry or an exit
-/// action throws (W3C SCXML's error.execution): the rest of that callable is skipped, the
-/// microstep completes, and this event carries the exception. A chart handles it with
-/// ordinary rows, e.g. `state<Running> + event<bsc::action_failed> = state<Fault>`. A failure
-/// that no transition takes is the caller's: dispatch() or step() rethrows it once the machine
-/// is consistent (or reports outcome::failed, as the policy says).
-struct action_failed {
-    std::exception_ptr error;
-};
-
-}  // namespace bsc
-// end include/bsc/action_failed.hpp
 // begin include/bsc/configuration.hpp
 // The active configuration, and the list of active state names it yields for traces.
 
@@ -5567,25 +4886,21 @@ public:
     constexpr auto end() const { return names_.begin() + static_cast<std::ptrdiff_t>(size_); }
     constexpr bool contains(std::string_view name) const {
         for (auto n : *this)
-            if (n == name)
-                return true;
+            if (n == name) return true;
         return false;
     }
     /// The same names in the same order.
     friend constexpr bool operator==(state_names const& a, state_names const& b) {
-        if (a.size_ != b.size_)
-            return false;
+        if (a.size_ != b.size_) return false;
         for (std::size_t i = 0; i < a.size_; ++i)
-            if (a.names_[i] != b.names_[i])
-                return false;
+            if (a.names_[i] != b.names_[i]) return false;
         return true;
     }
     /// The names joined by `separator`, e.g. "Mcs On Auto Mem".
     std::string joined(std::string_view separator = " ") const {
         std::string out;
         for (std::size_t i = 0; i < size_; ++i) {
-            if (i)
-                out += separator;
+            if (i) out += separator;
             out += names_[i];
         }
         return out;
@@ -5598,6 +4913,27 @@ private:
 
 }  // namespace bsc
 // end include/bsc/configuration.hpp
+// begin include/bsc/data/channel.hpp
+// Data channels of a Basic Statechart (the Basic Statechart paper [BSC], docs/references.md):
+// the context's members through which a chart talks to its environment and to other charts.
+// Plain members of the context are the chart's internal variables: an action's write is visible
+// at once to every later guard.
+//
+// Who writes what follows the formalism, and the types say it: inputs are the plant's (the
+// environment's), outputs the chart's. The environment holds a machine's context as const
+// (machine::context() returns a const reference), the chart's actions receive it as non-const
+// (Context&), and each channel's `set` is const or not accordingly:
+//   bsc::input<T>   set(v) const: the environment writes; an action's write is a compile error
+//                   (bsc::error::input_written_by_the_chart)
+//   bsc::output<T>  set(v): actions write; the environment's write is a compile error
+//                   (bsc::error::output_written_from_outside)
+//   bsc::inout<T>   set(v) const: both write
+// A channel's initial value is given by its constructor (bsc::input<bool> start{true}), not by a
+// write before the machine runs.
+
+#include <type_traits>
+#include <utility>
+
 // begin include/bsc/detail/access.hpp
 // The one door to what users may not touch: a channel's latch and commit, a timer's update
 // and its internal state, a machine's writable context, configuration, clock, timeout slots and
@@ -5664,7 +5000,7 @@ struct access {
         if constexpr (requires { typename std::remove_const_t<M>::driver_type; })
             return driver_of(m).context_.value;
         else
-            return m.context_;  // a machine of a rejected chart (runtime/rejected.hpp)
+            return m.context_;  // a machine of a rejected chart (detail/runtime/rejected.hpp)
     }
     template <class M>
     static constexpr auto& configuration(M& m) {
@@ -5768,310 +5104,6 @@ private:
 
 }  // namespace bsc::detail
 // end include/bsc/detail/access.hpp
-// begin include/bsc/detail/assume.hpp
-// Tells the optimiser a fact the code keeps but cannot show it (a machine's status byte has no
-// failure bit set between runs; its queue is empty between runs), so that it drops the tests
-// the fact settles. The fact must hold: where it does not, the behaviour is undefined. GCC
-// follows what it is told through later tests; Clang drops it where paths join (driver.hpp says
-// what it does there instead). A build without NDEBUG tests the fact instead, and stops the
-// program where it does not hold. (The compilers' spellings: detail/config.hpp.)
-
-#include <cassert>
-
-
-namespace bsc::detail {
-
-BSC_DETAIL_ALWAYS_INLINE constexpr void assume(bool holds) {
-#if !defined(NDEBUG)
-    assert(holds && "bsc: a machine's invariant is broken: it was called back from inside its own run under a "
-                    "policy that does not refuse it, or copied, assigned to or destroyed there");
-#else
-    BSC_DETAIL_ASSUME(holds);
-#endif
-}
-
-}  // namespace bsc::detail
-// end include/bsc/detail/assume.hpp
-// begin include/bsc/detail/machine_base.hpp
-// What every machine derives from, whatever its back end (an empty base: it costs nothing), so
-// that the member layer (detail/members.hpp) knows a machine held in a context.
-
-#include <type_traits>
-
-namespace bsc::detail {
-
-struct machine_base {};
-template <class T>
-inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
-
-}  // namespace bsc::detail
-// end include/bsc/detail/machine_base.hpp
-// begin include/bsc/event_set.hpp
-// bsc::event_set<Chart>: the events of a chart, named and numbered at compile time, so that a
-// program can dispatch an event it received as text (an operator panel, a command line) or as a
-// number (a field bus, a network message):
-//
-//   m.dispatch_by_name("ON_P");                      // outcome::unknown_event if no event is so named
-//   m.dispatch_by_number(3, decode);                 // decode(std::type_identity<E>{}) builds E
-//   bsc::event_set<decltype(chart)>::names           // {"ON_P", "OFF_P", ...}
-//
-// An event's name is its static member `name` when it has one (`static constexpr
-// std::string_view name = "ON_P";`), otherwise its type's unqualified name (bsc::name_of). Its
-// number is its position among the chart's events: the trigger events of the rows, in the order
-// in which they first appear, without those the environment cannot send (detail::reserved_event:
-// bsc::done<S> and bsc::action_failed, which only the machine raises, and bsc::any_event, a tag).
-// So "done.state.S" and "*" name no event here, and dispatch_by_name answers
-// outcome::unknown_event for them. Two events of a chart with the same name are an error
-// (bsc::error::duplicate_event_name).
-
-#include <array>
-#include <cassert>
-#include <cstddef>
-#include <optional>
-#include <string>
-#include <string_view>
-#include <type_traits>
-#include <utility>
-
-
-namespace bsc {
-
-namespace detail {
-
-// The first pair of events of Events with the same name, as positions (-1, -1 if none).
-template <class... Events>
-constexpr std::pair<int, int> duplicate_event_name() {
-    constexpr std::array<std::string_view, sizeof...(Events)> names{event_name<Events>...};
-    for (std::size_t i = 0; i < names.size(); ++i)
-        for (std::size_t j = i + 1; j < names.size(); ++j)
-            if (names[i] == names[j]) return {static_cast<int>(i), static_cast<int>(j)};
-    return {-1, -1};
-}
-
-// The events a chart may take that the environment cannot send: bsc::done<S>, raised by the
-// machine when S completes, bsc::action_failed, raised when one of its guards or actions throws,
-// and bsc::any_event, the tag that a row on every event receives instead of the event. A dispatch
-// of one from outside would fake what only the machine knows (bsc::error::event_not_dispatchable).
-template <class E>
-inline constexpr bool reserved_event = false;
-template <class S>
-inline constexpr bool reserved_event<done<S>> = true;
-template <>
-inline constexpr bool reserved_event<action_failed> = true;
-template <>
-inline constexpr bool reserved_event<any_event> = true;
-
-// The events that can be sent by name or number: the chart's, without the reserved ones.
-template <class Events>
-struct sendable_events;
-template <class... Events>
-struct sendable_events<type_list<Events...>> {
-    using type = concat_t<std::conditional_t<reserved_event<Events>, type_list<>, type_list<Events>>...>;
-};
-
-template <class Events>
-struct event_set_of;
-template <class... Events>
-struct event_set_of<type_list<Events...>> {
-    static constexpr std::size_t size = sizeof...(Events);
-    static constexpr std::array<std::string_view, size> names{event_name<Events>...};
-
-    // Calls f(std::type_identity<E>{}) for the event numbered `number` (< size).
-    template <class F>
-    static constexpr decltype(auto) visit(std::size_t number, F&& f) {
-        assert(number < size);
-        return visit_from<0>(number, f);
-    }
-
-private:
-    template <std::size_t I, class F>
-    static constexpr decltype(auto) visit_from(std::size_t number, F& f) {
-        if constexpr (I + 1 < size) {
-            if (number != I) return visit_from<I + 1>(number, f);
-        }
-        return f(std::type_identity<at<I, type_list<Events...>>>{});
-    }
-};
-
-// Reports the first two events of the list with the same name; true either way, so that the
-// static_assert that calls it adds no error of its own.
-template <class... Events>
-constexpr bool check_event_names(type_list<Events...>) {
-    constexpr auto duplicate = duplicate_event_name<Events...>();
-    if constexpr (duplicate.first >= 0)
-        report<error::duplicate_event_name<at<static_cast<std::size_t>(duplicate.first), type_list<Events...>>,
-                                           at<static_cast<std::size_t>(duplicate.second), type_list<Events...>>>>();
-    return true;
-}
-
-}  // namespace detail
-
-/// The events of Chart, named and numbered at compile time (see the top of this header).
-/// Requirements: no two events of the chart have the same event_name.
-template <class Chart>
-struct event_set {
-private:
-    using model = detail::chart_model<std::remove_cv_t<Chart>>;
-    using sendable = typename detail::sendable_events<typename model::events>::type;
-    using base = detail::event_set_of<sendable>;
-    static_assert(detail::check_event_names(sendable{}));
-
-public:
-    /// The events the environment may send, as a type list in number order: the chart's trigger
-    /// events without bsc::done<S>, bsc::action_failed and bsc::any_event.
-    using events = sendable;
-    /// How many they are.
-    static constexpr std::size_t size = base::size;
-    /// Their names, by number.
-    static constexpr std::array<std::string_view, size> names = base::names;
-
-    /// The number of event E (bsc::error::not_an_event_of_the_chart if E is none of `events`).
-    template <class E>
-    static constexpr std::size_t number_of = [] {
-        constexpr int n = detail::position_in<E, sendable>::value;
-        if constexpr (n < 0) detail::report<error::not_an_event_of_the_chart<E>>();
-        return static_cast<std::size_t>(n < 0 ? 0 : n);
-    }();
-
-    /// The number of the event called `name` (exactly, case included), or nothing.
-    static constexpr std::optional<std::size_t> find(std::string_view name) {
-        for (std::size_t i = 0; i < size; ++i)
-            if (names[i] == name) return i;
-        return std::nullopt;
-    }
-
-    /// Why `name` names no event: "no event of this chart is named 'X'; its events are A, B, C".
-    static std::string unknown(std::string_view name) {
-        std::string text = "no event of this chart is named '";
-        text.append(name).append(size == 0 ? "'; it has no events" : "'; its events are ");
-        for (std::size_t i = 0; i < size; ++i) text.append(i == 0 ? "" : ", ").append(names[i]);
-        return text;
-    }
-
-    /// Calls f(std::type_identity<E>{}) for the event numbered `number`.
-    /// Requirements: number < size.
-    template <class F>
-    static constexpr decltype(auto) visit(std::size_t number, F&& f) {
-        return base::visit(number, f);
-    }
-};
-
-}  // namespace bsc
-// end include/bsc/event_set.hpp
-// begin include/bsc/model/completion.hpp
-// Completion (SCXML 3.7.1): which states raise bsc::done<S>, and the flags a machine keeps
-// while it enters a parallel state. Computed only for a chart that can take a done event (it
-// names one, or takes bsc::any_event); for every other chart all of this is empty, and the
-// back ends generate nothing for it.
-
-#include <array>
-#include <cstddef>
-
-
-namespace bsc::detail {
-
-template <class E>
-inline constexpr bool is_done_event = false;
-template <class S>
-inline constexpr bool is_done_event<done<S>> = true;
-template <>
-inline constexpr bool is_done_event<any_event> = true;  // it takes done events too
-
-template <class Model>
-struct completion {
-    static constexpr int N = Model::N;
-    static constexpr auto const& tree = Model::tree;
-
-    // Whether a row of the chart can take a done event.
-    static constexpr bool takes_any = []<class... Es>(type_list<Es...>) {
-        return (is_done_event<Es> || ...);
-    }(typename Model::events{});
-
-    // trigger[s]: the trigger of bsc::done<S> for a composite or parallel state S other than
-    // the root, or -1 (no row takes it, or it is never raised).
-    static constexpr std::array<int, static_cast<std::size_t>(N)> trigger = [] {
-        std::array<int, static_cast<std::size_t>(N)> out{};
-        for (int& t : out) t = -1;
-        if constexpr (takes_any)
-            [&]<class... Tags>(type_list<Tags...>) {
-                std::size_t s = 0;
-                ((out[s] = s > 1 && (tree.kinds[s] == kind::composite || tree.kinds[s] == kind::parallel)
-                               ? Model::template trigger_of<done<Tags>>
-                               : -1,
-                  ++s),
-                 ...);
-            }(typename Model::tags{});
-        return out;
-    }();
-
-    // Whether the machine ever raises a done event: then it needs a queue.
-    static constexpr bool raises = [] {
-        for (int t : trigger)
-            if (t >= 0) return true;
-        return false;
-    }();
-
-    // The parallel states whose done event is taken, numbered: while one is being entered, a
-    // final state entered in one of its regions must not look at the regions not yet entered
-    // (their bytes are the history of an earlier visit).
-    static constexpr int parallel_count = [] {
-        int n = 0;
-        for (int s = 0; s < N; ++s)
-            n += tree.kinds[static_cast<std::size_t>(s)] == kind::parallel && trigger[static_cast<std::size_t>(s)] >= 0;
-        return n;
-    }();
-    static constexpr auto parallel_number = [] {
-        std::array<int, static_cast<std::size_t>(N)> out{};
-        int n = 0;
-        for (int s = 0; s < N; ++s)
-            out[static_cast<std::size_t>(s)] =
-                tree.kinds[static_cast<std::size_t>(s)] == kind::parallel && trigger[static_cast<std::size_t>(s)] >= 0 ? n++
-                                                                                                                      : -1;
-        return out;
-    }();
-};
-
-// What a machine keeps for completion: one flag per parallel state whose done event is taken,
-// set while the state's regions are being entered. Nothing for other charts.
-template <int Parallels>
-struct entering_flags {
-    std::array<bool, static_cast<std::size_t>(Parallels)> flag{};
-};
-template <>
-struct entering_flags<0> {};
-
-}  // namespace bsc::detail
-// end include/bsc/model/completion.hpp
-// begin include/bsc/runtime/context_data.hpp
-// The machine's view of a context's data model: it latches input channels, commits output
-// channels and updates timers, wherever they are in the context (detail/members.hpp walks it:
-// members, aggregates, std::arrays, types described by bsc::fields, at any depth; transient
-// members too, since their channels and timers still run). Members that hold none cost
-// nothing, and a context with none is not visited at all.
-
-#include <type_traits>
-
-// begin include/bsc/data/channel.hpp
-// Data channels of a Basic Statechart (the Basic Statechart paper [BSC], docs/references.md):
-// the context's members through which a chart talks to its environment and to other charts.
-// Plain members of the context are the chart's internal variables: an action's write is visible
-// at once to every later guard.
-//
-// Who writes what follows the formalism, and the types say it: inputs are the plant's (the
-// environment's), outputs the chart's. The environment holds a machine's context as const
-// (machine::context() returns a const reference), the chart's actions receive it as non-const
-// (Context&), and each channel's `set` is const or not accordingly:
-//   bsc::input<T>   set(v) const: the environment writes; an action's write is a compile error
-//                   (bsc::error::input_written_by_the_chart)
-//   bsc::output<T>  set(v): actions write; the environment's write is a compile error
-//                   (bsc::error::output_written_from_outside)
-//   bsc::inout<T>   set(v) const: both write
-// A channel's initial value is given by its constructor (bsc::input<bool> start{true}), not by a
-// write before the machine runs.
-
-#include <type_traits>
-#include <utility>
-
 
 namespace bsc::detail {
 // Lets the machine find channels among the context's members. Equal to any other, so that
@@ -6238,8 +5270,8 @@ public:
     constexpr duration elapsed() const { return elapsed_; }
 
     friend constexpr bool operator==(timer const& a, timer const& b) {
-        return a.limit_ == b.limit_ && a.started_ == b.started_ && a.elapsed_ == b.elapsed_ &&
-               a.phase_ == b.phase_ && a.expired_ == b.expired_;
+        return a.limit_ == b.limit_ && a.started_ == b.started_ && a.elapsed_ == b.elapsed_ && a.phase_ == b.phase_ &&
+               a.expired_ == b.expired_;
     }
 
 private:
@@ -6268,6 +5300,976 @@ private:
 
 }  // namespace bsc
 // end include/bsc/data/timer.hpp
+// begin include/bsc/dsl/delayed.hpp
+// Delayed events to self: the actions bsc::raise_after and bsc::cancel_delayed. They reach the
+// machine's pending events (detail/runtime/delayed_events.hpp) through the raise argument that every
+// action receives; a chart that uses them gets a queue with slots for them (detail/runtime/queue_for.hpp).
+
+#include <cstdlib>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+
+
+namespace bsc::detail {
+
+// bsc::raise_after and bsc::cancel_delayed: actions that reach the machine's delayed events
+// (detail/runtime/delayed_events.hpp) through the raise argument.
+template <class E>
+struct delayed_raise : action_base {
+    duration delay;
+    E event;
+    int id;
+    template <class Ctx, class Ev, class Raise>
+    constexpr void operator()(Ctx&, Ev const&, Raise& raise) const noexcept(std::is_nothrow_copy_constructible_v<E>) {
+        (void)raise.schedule(delay, event, id);
+    }
+};
+struct cancel_delayed_action : action_base {
+    int id;
+    template <class Ctx, class Ev, class Raise>
+    constexpr void operator()(Ctx&, Ev const&, Raise& raise) const noexcept {
+        raise.cancel(id);
+    }
+};
+
+// Deliberately not constexpr (as bsc_after_negative_delay in dsl/row.hpp): in a constexpr chart,
+// reaching it is the compile error, and its name says what is wrong; a chart built at run time
+// throws (or aborts without exceptions). 0 is "no id": bsc::raise_after without an id sends
+// under it, and nothing can be cancelled by it.
+[[noreturn]] inline void bsc_cancel_delayed_id_zero_names_no_delayed_event() {
+#if defined(__cpp_exceptions)
+    throw std::invalid_argument(
+        "bsc::cancel_delayed: id 0 names no delayed event (it is the id of none); send with "
+        "bsc::raise_after(delay, e, id) and cancel with the same nonzero id");
+#else
+    std::abort();
+#endif
+}
+
+template <class A>
+inline constexpr bool is_delayed_raise = false;
+template <class E>
+inline constexpr bool is_delayed_raise<delayed_raise<E>> = true;
+
+// Whether an action sends or cancels delayed events: then the machine keeps slots for them.
+template <class A>
+inline constexpr bool sends_delayed = false;
+template <class E>
+inline constexpr bool sends_delayed<delayed_raise<E>> = true;
+template <>
+inline constexpr bool sends_delayed<cancel_delayed_action> = true;
+template <class... As>
+inline constexpr bool sends_delayed<action_seq<As...>> = (sends_delayed<As> || ...);
+template <class A>
+inline constexpr bool sends_delayed<state_action<A>> = sends_delayed<A>;
+
+}  // namespace bsc::detail
+
+namespace bsc {
+
+/// An action that raises `e` to the machine after `delay` (SCXML's `<send delay>` to itself):
+/// the first `step(now)` whose time is at least the machine's clock when the action ran plus
+/// `delay` processes it, after the components' turns, as a raised event. It is not tied to the
+/// state that sent it; `bsc::cancel_delayed(id)` cancels it while it is pending (an id of 0 is
+/// none). The machine keeps `Policy::delayed_capacity` pending events; one more is dropped and
+/// the run reports `outcome::queue_overflow`. An event whose due time would lie past
+/// bsc::duration::max() never comes due, and is not kept (detail/runtime/delayed_events.hpp).
+/// Requirements: `e` is an event of the chart (or of a family of one); 0 <= delay <=
+/// bsc::duration::max() (as for bsc::after: otherwise a constexpr chart does not compile, and
+/// one built at run time throws std::invalid_argument / std::out_of_range).
+template <class Rep, class Period, class E>
+constexpr auto raise_after(std::chrono::duration<Rep, Period> delay, E e, int id = 0) {
+    return detail::delayed_raise<E>{{}, detail::checked_delay(delay), std::move(e), id};
+}
+
+/// An action that cancels the delayed events still pending under `id` (bsc::raise_after).
+/// Requirements: id != 0 (0 is no id; a constexpr chart with cancel_delayed(0) does not compile,
+/// the error naming bsc_cancel_delayed_id_zero_names_no_delayed_event, and one built at run time
+/// throws std::invalid_argument).
+constexpr auto cancel_delayed(int id) {
+    if (id == 0) detail::bsc_cancel_delayed_id_zero_names_no_delayed_event();
+    return detail::cancel_delayed_action{{}, id};
+}
+
+}  // namespace bsc
+// end include/bsc/dsl/delayed.hpp
+// begin include/bsc/fields.hpp
+// bsc::fields<T>: what the members of a context type are, for a type that is not a plain
+// aggregate (a class with private members, constructors or base classes, or more than 128
+// members). Every part of bsc that walks a machine's state uses it: channels' latch and commit,
+// timers' update, retentive state, the explorer, the waveform and the network. Aggregates need
+// nothing: their members are found without it. <bsc/adapt/hana.hpp> specialises it for every
+// type adapted with Boost.Hana.
+
+namespace bsc {
+
+/// Specialise for a type whose members bsc cannot find by itself:
+///
+///     template <> struct bsc::fields<axis> {
+///         static constexpr std::array<std::string_view, 2> names{"speed", "limit"};
+///         template <class Self, class F>   // Self: axis or axis const
+///         static constexpr decltype(auto) apply(Self& self, F&& f) { return f(self.speed_, self.limit_); }
+///     };
+///
+/// Requirements: `names` holds one name per member, in the order in which `apply` passes them
+/// to `f`, each as an lvalue of the object. Members left out are not part of the machine's state
+/// (neither saved, explored nor recorded) and their channels and timers are not driven.
+template <class T>
+struct fields {};
+
+}  // namespace bsc
+// end include/bsc/fields.hpp
+// begin include/bsc/machine.hpp
+// bsc::machine: the compiled back end. For an event type, dispatch is a nest of switches on
+// the configuration bytes that visits only the states where a transition on that event can
+// leave; at each basic state the candidate transitions, their exits, action and entries are
+// straight-line code fixed at compile time. Parallel regions select first and fire after,
+// as SCXML's microstep does. The public interface and the run to completion are the shared
+// driver's (detail/runtime/driver.hpp); this file selects and fires.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/detail/compiled/plan.hpp
+// Compile-time dispatch plans: for a trigger, which states lead to a transition and, for each
+// basic state, which transitions are its candidates in SCXML order (deepest source first,
+// then declaration order). The compiled machine expands these into switches and straight-line
+// code; nothing here exists at run time.
+
+#include <array>
+
+// begin include/bsc/detail/model/layout.hpp
+// What every back end lays out the same way, computed once from the chart model: the
+// components of a BSC cycle, the timeout slots, the children of each state, the bytes of the
+// initial configuration, the transitions in declaration order and the entry and exit rows of
+// each state. Both back ends number these alike because both read them from here.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+
+namespace bsc::detail {
+
+template <class Model>
+struct chart_layout {
+    static constexpr auto const& tree = Model::tree;
+    static constexpr auto const& rows = Model::rows;
+    static constexpr int N = Model::N;
+    static constexpr int R = Model::R;
+    static constexpr int root = 1;  // state 0 is the implicit top above the chart's root
+
+    // Whether row `row` is a transition on `trigger`: an event's position, eventless_id, or
+    // any_condition (eventless or timeout).
+    static constexpr bool is_transition_on(int row, int trigger) {
+        auto const r = static_cast<std::size_t>(row);
+        if (rows.kinds[r] != row_kind::transition) return false;
+        if (trigger == any_condition) return rows.trigger[r] < 0;
+        // A row on a family of the trigger's event takes it too (detail/model/event_families.hpp).
+        if constexpr (Model::has_families)
+            return rows.takes(rows.trigger[r], trigger);
+        else
+            return rows.trigger[r] == trigger;
+    }
+
+    static constexpr bool has_trigger(int trigger) {
+        for (int r = 0; r < R; ++r)
+            if (is_transition_on(r, trigger)) return true;
+        return false;
+    }
+
+    static constexpr bool is_timeout_row(int row) {
+        auto const r = static_cast<std::size_t>(row);
+        return rows.kinds[r] == row_kind::transition && rows.trigger[r] <= timeout_trigger_id(0);
+    }
+
+    // The children of state S, in document order.
+    template <int S>
+    static constexpr auto children = [] {
+        std::array<int, static_cast<std::size_t>(tree.child_count[static_cast<std::size_t>(S)])> out{};
+        std::size_t n = 0;
+        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
+             c = tree.next_sibling[static_cast<std::size_t>(c)])
+            out[n++] = c;
+        return out;
+    }();
+
+    // BSC components: the root and every child of a parallel state, in document order. In a
+    // cycle each fires at most one condition-driven transition, chosen from the states between
+    // its active frontier (a basic state, or a parallel state whose children are components of
+    // their own) and its root.
+    static constexpr int component_count() {
+        int n = 1;
+        for (int s = 2; s < N; ++s)
+            n += tree.kinds[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] == kind::parallel;
+        return n;
+    }
+    static constexpr auto components = [] {
+        std::array<int, static_cast<std::size_t>(component_count())> out{};
+        std::size_t n = 0;
+        out[n++] = root;
+        for (int s = 2; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] == kind::parallel)
+                out[n++] = s;
+        return out;
+    }();
+
+    // Every timeout row has a slot for the time from which its delay counts: the entry of its
+    // source, or the cycle it last fired in for an internal timeout (which re-arms itself).
+    // Slots are numbered by source state in document order, then by row, so the slots of one
+    // state are contiguous: timeout_slot[s] is the first (-1 if none), timeout_slot_count[s]
+    // how many; row_timeout_slot[r] is row r's (-1 for other rows).
+    static constexpr auto timeout_slot_count = [] {
+        std::array<int, static_cast<std::size_t>(N)> count{};
+        for (int r = 0; r < R; ++r)
+            if (is_timeout_row(r)) ++count[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])];
+        return count;
+    }();
+    static constexpr auto timeout_slot = [] {
+        std::array<int, static_cast<std::size_t>(N)> first{};
+        int n = 0;
+        for (std::size_t s = 0; s < first.size(); ++s) {
+            first[s] = timeout_slot_count[s] > 0 ? n : -1;
+            n += timeout_slot_count[s];
+        }
+        return first;
+    }();
+    static constexpr int timeout_slots = [] {
+        int n = 0;
+        for (int count : timeout_slot_count) n += count;
+        return n;
+    }();
+    static constexpr auto row_timeout_slot = [] {
+        std::array<int, static_cast<std::size_t>(R)> slot{};
+        std::array<int, static_cast<std::size_t>(N)> used{};
+        for (int r = 0; r < R; ++r) {
+            auto const source = static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)]);
+            slot[static_cast<std::size_t>(r)] = is_timeout_row(r) ? timeout_slot[source] + used[source]++ : -1;
+        }
+        return slot;
+    }();
+    // The state whose entry arms a slot.
+    static constexpr auto timeout_slot_state = [] {
+        std::array<int, static_cast<std::size_t>(timeout_slots)> state{};
+        for (int s = 0; s < N; ++s)
+            for (int k = 0; k < timeout_slot_count[static_cast<std::size_t>(s)]; ++k)
+                state[static_cast<std::size_t>(timeout_slot[static_cast<std::size_t>(s)] + k)] = s;
+        return state;
+    }();
+    // Whether some state has two timeout rows or more: only their timeouts compete by due time
+    // (the one that came due first fires; docs/semantics.md, "Timers").
+    static constexpr bool has_competing_timeouts = [] {
+        for (int count : timeout_slot_count)
+            if (count > 1) return true;
+        return false;
+    }();
+
+    // Whether timeout row `row` competes with other timeouts of its state by due time.
+    static constexpr bool competes_by_due_time(int row) {
+        return has_competing_timeouts && is_timeout_row(row) &&
+               timeout_slot_count[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(row)])] > 1;
+    }
+
+    // Whether timeout row `row`, when it fires, leaves its state active and so counts again from
+    // that cycle: an internal timeout (no domain), or a local one (its domain is its state).
+    static constexpr bool rearms(int row) {
+        auto const r = static_cast<std::size_t>(row);
+        return is_timeout_row(row) && (rows.domain[r] < 0 || rows.domain[r] == rows.source[r]);
+    }
+
+    // The rows of each state, in declaration order, all kinds: those of state s are
+    // from_source[from_source_begin[s]] to from_source[from_source_begin[s + 1]] (exclusive).
+    // Built once, so that what is asked per state or per (state, trigger) reads that state's
+    // rows and not all the chart's: the compile time stays linear in the chart.
+    static constexpr auto from_source_begin = [] {
+        std::array<int, static_cast<std::size_t>(N) + 1> begin{};
+        for (int r = 0; r < R; ++r) ++begin[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)]) + 1];
+        for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s) begin[s + 1] += begin[s];
+        return begin;
+    }();
+    static constexpr auto from_source = [] {
+        std::array<int, static_cast<std::size_t>(R)> out{};
+        auto next = from_source_begin;
+        for (int r = 0; r < R; ++r)
+            out[static_cast<std::size_t>(next[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])]++)] =
+                r;
+        return out;
+    }();
+
+    static constexpr int count_rows(row_kind k, int state) {
+        int n = 0;
+        if (state < 0) {
+            for (int r = 0; r < R; ++r) n += rows.kinds[static_cast<std::size_t>(r)] == k;
+        } else {
+            for (int i = from_source_begin[static_cast<std::size_t>(state)];
+                 i < from_source_begin[static_cast<std::size_t>(state) + 1]; ++i)
+                n += rows.kinds[static_cast<std::size_t>(from_source[static_cast<std::size_t>(i)])] == k;
+        }
+        return n;
+    }
+
+    // The rows of kind K from state S (every state if S is -1), in declaration order: the
+    // entry or exit rows of a state, or all transitions.
+    template <row_kind K, int S>
+    static constexpr auto rows_of = [] {
+        std::array<int, static_cast<std::size_t>(count_rows(K, S))> out{};
+        std::size_t n = 0;
+        if constexpr (S < 0) {
+            for (int r = 0; r < R; ++r)
+                if (rows.kinds[static_cast<std::size_t>(r)] == K) out[n++] = r;
+        } else {
+            for (int i = from_source_begin[S]; i < from_source_begin[S + 1]; ++i)
+                if (rows.kinds[static_cast<std::size_t>(from_source[static_cast<std::size_t>(i)])] == K)
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
+        }
+        return out;
+    }();
+    static constexpr auto const& transition_rows = rows_of<row_kind::transition, -1>;
+
+    // How many basic states below s can be active at once: the most transitions one event
+    // can select there.
+    static constexpr int max_active_leaves(int s = root) {
+        auto const i = static_cast<std::size_t>(s);
+        if (tree.is_leaf(s)) return 1;
+        int result = 0;
+        for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)]) {
+            int const m = max_active_leaves(c);
+            result = tree.kinds[i] == kind::parallel ? result + m : (m > result ? m : result);
+        }
+        return result;
+    }
+
+    static constexpr bool has_parallel = [] {
+        for (int s = 0; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel) return true;
+        return false;
+    }();
+
+    // history_child[s]: the first history pseudo-state among the children of composite s, -1
+    // if none; deep_history_child[s]: whether one of them is deep.
+    static constexpr auto history_child = [] {
+        std::array<int, static_cast<std::size_t>(N)> out{};
+        for (int s = 0; s < N; ++s) {
+            out[static_cast<std::size_t>(s)] = -1;
+            for (int c = tree.first_child[static_cast<std::size_t>(s)]; c >= 0;
+                 c = tree.next_sibling[static_cast<std::size_t>(c)])
+                if (tree.kinds[static_cast<std::size_t>(c)] == kind::history && out[static_cast<std::size_t>(s)] < 0)
+                    out[static_cast<std::size_t>(s)] = c;
+        }
+        return out;
+    }();
+    static constexpr auto deep_history_child = [] {
+        std::array<bool, static_cast<std::size_t>(N)> out{};
+        for (int s = 1; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(s)] == kind::history &&
+                tree.hist[static_cast<std::size_t>(s)] == history::deep)
+                out[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(s)])] = true;
+        return out;
+    }();
+    static constexpr bool has_history_states = [] {
+        for (int s = 0; s < N; ++s)
+            if (tree.kinds[static_cast<std::size_t>(s)] == kind::history) return true;
+        return false;
+    }();
+
+    // The initial configuration: every composite's byte at its initial child; the byte of a
+    // composite with history states at the first of them, which is never active: the mark of a
+    // composite that has never been active, whose history states take their defaults.
+    static constexpr auto initial_bytes = [] {
+        std::array<std::uint8_t, static_cast<std::size_t>(tree.slots)> bytes{};
+        for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s)
+            if (tree.slot[s] >= 0)
+                bytes[static_cast<std::size_t>(tree.slot[s])] = static_cast<std::uint8_t>(
+                    tree.ordinal[static_cast<std::size_t>(history_child[s] >= 0 ? history_child[s] : tree.initial[s])]);
+        return bytes;
+    }();
+    // Whether composite s's byte says it has never been active (it selects a history state).
+    template <int S>
+    static constexpr bool never_active_byte(std::uint8_t byte) {
+        bool is_history = false;
+        for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
+             c = tree.next_sibling[static_cast<std::size_t>(c)])
+            is_history = is_history || (tree.kinds[static_cast<std::size_t>(c)] == kind::history &&
+                                        tree.ordinal[static_cast<std::size_t>(c)] == byte);
+        return is_history;
+    }
+
+    // Which children of the root are final, by ordinal: the machine halts when its root's
+    // byte selects one. Empty unless the root is a composite with a final child.
+    static constexpr bool can_halt = [] {
+        if (tree.kinds[root] != kind::composite) return false;
+        for (int c = tree.first_child[root]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+            if (tree.kinds[static_cast<std::size_t>(c)] == kind::final_state) return true;
+        return false;
+    }();
+    static constexpr auto final_root_children = [] {
+        std::array<bool, can_halt ? static_cast<std::size_t>(tree.child_count[root]) : 0> out{};
+        if constexpr (can_halt)
+            for (int c = tree.first_child[root]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                out[static_cast<std::size_t>(tree.ordinal[static_cast<std::size_t>(c)])] =
+                    tree.kinds[static_cast<std::size_t>(c)] == kind::final_state;
+        return out;
+    }();
+
+    // Two selected transitions conflict when their exit sets meet, i.e. when their domains nest.
+    static constexpr bool conflict(int r1, int r2) {
+        int const d1 = rows.domain[static_cast<std::size_t>(r1)], d2 = rows.domain[static_cast<std::size_t>(r2)];
+        if (d1 < 0 || d2 < 0) return false;
+        return tree.contains(d1, d2) || tree.contains(d2, d1);
+    }
+    // Of two conflicting transitions, the later-selected one preempts the earlier when its
+    // source lies below the earlier one's (SCXML's removeConflictingTransitions).
+    static constexpr bool preempts(int later, int earlier) {
+        return tree.is_proper_ancestor(rows.source[static_cast<std::size_t>(earlier)],
+                                       rows.source[static_cast<std::size_t>(later)]);
+    }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/model/layout.hpp
+
+namespace bsc::detail {
+
+template <class Model>
+struct plan : chart_layout<Model> {
+    using layout = chart_layout<Model>;
+    using layout::tree;
+    using layout::rows;
+    using layout::N;
+    using layout::R;
+    using layout::is_transition_on;
+    using layout::components;
+    using layout::has_parallel;
+    using layout::conflict;
+    using layout::from_source;
+    using layout::from_source_begin;
+
+    // The transitions on each event, in declaration order, for a chart without event families
+    // (where a row takes the events of its trigger only): those on event position t are
+    // on_event[on_event_begin[t]] to on_event[on_event_begin[t + 1]] (exclusive). Built once,
+    // so that each trigger's list is read, not found by a scan of every row.
+    static constexpr int event_count = static_cast<int>(Model::events::size);
+    static constexpr auto on_event_begin = [] {
+        std::array<int, static_cast<std::size_t>(event_count) + 1> begin{};
+        for (int r = 0; r < R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == row_kind::transition &&
+                rows.trigger[static_cast<std::size_t>(r)] >= 0)
+                ++begin[static_cast<std::size_t>(rows.trigger[static_cast<std::size_t>(r)]) + 1];
+        for (std::size_t t = 0; t < static_cast<std::size_t>(event_count); ++t) begin[t + 1] += begin[t];
+        return begin;
+    }();
+    static constexpr auto on_event = [] {
+        std::array<int, static_cast<std::size_t>(on_event_begin[static_cast<std::size_t>(event_count)])> out{};
+        auto next = on_event_begin;
+        for (int r = 0; r < R; ++r)
+            if (rows.kinds[static_cast<std::size_t>(r)] == row_kind::transition &&
+                rows.trigger[static_cast<std::size_t>(r)] >= 0)
+                out[static_cast<std::size_t>(
+                    next[static_cast<std::size_t>(rows.trigger[static_cast<std::size_t>(r)])]++)] = r;
+        return out;
+    }();
+    static constexpr bool indexed_by_event(int trigger) { return !Model::has_families && trigger >= 0; }
+
+    static constexpr int transition_count(int trigger) {
+        if (indexed_by_event(trigger))
+            return on_event_begin[static_cast<std::size_t>(trigger) + 1] -
+                   on_event_begin[static_cast<std::size_t>(trigger)];
+        int n = 0;
+        for (int r = 0; r < R; ++r) n += is_transition_on(r, trigger) ? 1 : 0;
+        return n;
+    }
+
+    // The transitions on a trigger, in declaration order; the selection buffer stores positions
+    // here. What follows reads this list.
+    template <int Trigger>
+    static constexpr auto transitions = [] {
+        std::array<int, static_cast<std::size_t>(transition_count(Trigger))> out{};
+        std::size_t n = 0;
+        if constexpr (indexed_by_event(Trigger)) {
+            for (int i = on_event_begin[static_cast<std::size_t>(Trigger)];
+                 i < on_event_begin[static_cast<std::size_t>(Trigger) + 1]; ++i)
+                out[n++] = on_event[static_cast<std::size_t>(i)];
+        } else {
+            for (int r = 0; r < R; ++r)
+                if (is_transition_on(r, Trigger)) out[n++] = r;
+        }
+        return out;
+    }();
+
+    // State s needs visiting for the trigger: a transition on it leaves s, an ancestor or a
+    // descendant. (Asked of the states a dispatch walks through, each asking reads the trigger's
+    // transitions: no array of every state per trigger, which made the compile time quadratic.)
+    template <int Trigger>
+    static constexpr bool relevant(int s) {
+        for (int const r : transitions<Trigger>) {
+            int const src = rows.source[static_cast<std::size_t>(r)];
+            if (tree.contains(src, s) || tree.contains(s, src)) return true;
+        }
+        return false;
+    }
+
+    // No transition on the trigger leaves a state strictly below s: every state below s takes
+    // it by the rows of s and its ancestors only.
+    template <int Trigger>
+    static constexpr bool no_source_below(int s) {
+        for (int const r : transitions<Trigger>) {
+            int const src = rows.source[static_cast<std::size_t>(r)];
+            if (src != s && tree.contains(s, src)) return false;
+        }
+        return true;
+    }
+
+    // The children of composite s toward the sources of the trigger's transitions below it,
+    // in document order, each once; or `every`, if a source is s or above it (every child is
+    // then relevant).
+    template <int Trigger>
+    struct children_found {
+        std::array<int, transitions<Trigger>.size()> child{};
+        std::size_t count = 0;
+        bool every = false;
+    };
+    template <int Trigger>
+    static constexpr children_found<Trigger> children_toward_sources(int s) {
+        children_found<Trigger> found{};
+        for (int const r : transitions<Trigger>) {
+            int const src = rows.source[static_cast<std::size_t>(r)];
+            if (tree.contains(src, s)) {
+                found.every = true;
+                return found;
+            }
+            if (!tree.contains(s, src)) continue;
+            int const c = tree.child_toward(s, src);
+            bool seen = false;
+            for (std::size_t j = 0; j < found.count && !seen; ++j) seen = found.child[j] == c;
+            if (seen) continue;
+            std::size_t i = found.count++;  // insertion in document order
+            for (; i > 0 && found.child[i - 1] > c; --i) found.child[i] = found.child[i - 1];
+            found.child[i] = c;
+        }
+        return found;
+    }
+
+    // The children of composite S that are relevant to the trigger, in document order: the
+    // only ones dispatch on the trigger compares S's byte with, so each trigger instantiates
+    // code along its own paths only (linear in the transitions, not in states x triggers).
+    template <int Trigger, int S>
+    static constexpr auto relevant_children = [] {
+        constexpr auto found = children_toward_sources<Trigger>(S);
+        if constexpr (found.every) {
+            return layout::template children<S>;
+        } else {
+            std::array<int, found.count> out{};
+            for (std::size_t i = 0; i < found.count; ++i) out[i] = found.child[i];
+            return out;
+        }
+    }();
+
+    static constexpr int candidate_count(int leaf, int trigger) {
+        int n = 0;
+        for (int a = leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
+            for (int i = from_source_begin[static_cast<std::size_t>(a)];
+                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                n += is_transition_on(from_source[static_cast<std::size_t>(i)], trigger) ? 1 : 0;
+        return n;
+    }
+
+    template <int Leaf, int Trigger>
+    static constexpr auto candidates = [] {
+        std::array<int, static_cast<std::size_t>(candidate_count(Leaf, Trigger))> out{};
+        std::size_t n = 0;
+        for (int a = Leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
+            for (int i = from_source_begin[static_cast<std::size_t>(a)];
+                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                if (is_transition_on(from_source[static_cast<std::size_t>(i)], Trigger))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
+        return out;
+    }();
+
+    static constexpr int component_candidate_count(int frontier, int component) {
+        int n = 0;
+        for (int a = frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
+            for (int i = from_source_begin[static_cast<std::size_t>(a)];
+                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                n += is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition) ? 1 : 0;
+            if (a == component) break;
+        }
+        return n;
+    }
+    template <int Frontier, int Component>
+    static constexpr auto component_candidates = [] {
+        std::array<int, static_cast<std::size_t>(component_candidate_count(Frontier, Component))> out{};
+        std::size_t n = 0;
+        for (int a = Frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
+            for (int i = from_source_begin[static_cast<std::size_t>(a)];
+                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+                if (is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
+            if (a == Component) break;
+        }
+        return out;
+    }();
+
+    // The timeout rows of the source of timeout row `row` declared after it, in declaration
+    // order: those it competes with by due time when its condition holds (the earlier ones did
+    // not hold, or it would not be tried). Empty for a state with one timeout row.
+    static constexpr int later_timeout_count(int row) {
+        int const source = rows.source[static_cast<std::size_t>(row)];
+        int n = 0;
+        for (int i = from_source_begin[static_cast<std::size_t>(source)];
+             i < from_source_begin[static_cast<std::size_t>(source) + 1]; ++i)
+            n += from_source[static_cast<std::size_t>(i)] > row &&
+                 layout::is_timeout_row(from_source[static_cast<std::size_t>(i)]);
+        return n;
+    }
+    template <int Row>
+    static constexpr auto later_timeouts = [] {
+        std::array<int, static_cast<std::size_t>(layout::is_timeout_row(Row) ? later_timeout_count(Row) : 0)> out{};
+        std::size_t n = 0;
+        if constexpr (out.size() > 0) {
+            constexpr int source = rows.source[static_cast<std::size_t>(Row)];
+            for (int i = from_source_begin[static_cast<std::size_t>(source)];
+                 i < from_source_begin[static_cast<std::size_t>(source) + 1]; ++i)
+                if (from_source[static_cast<std::size_t>(i)] > Row &&
+                    layout::is_timeout_row(from_source[static_cast<std::size_t>(i)]))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
+        }
+        return out;
+    }();
+
+    template <int Trigger>
+    static constexpr int position_of(int row) {
+        for (std::size_t i = 0; i < transitions<Trigger>.size(); ++i)
+            if (transitions<Trigger>[i] == row) return static_cast<int>(i);
+        return -1;
+    }
+
+    static constexpr int index_in_components(int s) {
+        for (std::size_t i = 0; i < components.size(); ++i)
+            if (components[i] == s) return static_cast<int>(i);
+        return -1;
+    }
+
+    // The component a state lies in, as an index into components. Within a component at most
+    // one transition is selected per microstep: its basic states that lie below no further
+    // parallel state are mutually exclusive.
+    static constexpr auto component_of = [] {
+        std::array<int, static_cast<std::size_t>(N)> out{};
+        for (int s = 0; s < N; ++s) {
+            out[static_cast<std::size_t>(s)] = 0;
+            for (int a = s; a > 1; a = tree.parent[static_cast<std::size_t>(a)]) {
+                int const i = index_in_components(a);
+                if (i >= 0) {
+                    out[static_cast<std::size_t>(s)] = i;
+                    break;
+                }
+            }
+        }
+        return out;
+    }();
+
+    template <int Trigger>
+    static constexpr int component_row_count(int component) {
+        int n = 0;
+        for (int const r : transitions<Trigger>)
+            n += component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == component;
+        return n;
+    }
+    // The transitions on a trigger whose source lies in component C, in declaration order.
+    template <int Trigger, int C>
+    static constexpr auto component_rows = [] {
+        std::array<int, static_cast<std::size_t>(component_row_count<Trigger>(C))> out{};
+        std::size_t n = 0;
+        for (int const r : transitions<Trigger>)
+            if (component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r)])] == C) out[n++] = r;
+        return out;
+    }();
+    // What a region-local selection records for a row: 1 + its position in its component's rows.
+    template <int Trigger, int Row>
+    static constexpr int component_code = [] {
+        constexpr auto const& list = component_rows<Trigger, component_of[static_cast<std::size_t>(rows.source[Row])]>;
+        for (std::size_t i = 0; i < list.size(); ++i)
+            if (list[i] == Row) return static_cast<int>(i) + 1;
+        return 0;
+    }();
+
+    // A trigger is region-local when what SCXML's conflict resolution does at run time is known
+    // at compile time to keep every selected transition: no transition on it leaves a state that
+    // contains a parallel state (so each is selected by one basic state at most), and no two
+    // transitions from different components have nesting domains (so none preempts another).
+    // Its microstep then records one row per component and fires the components in document
+    // order, with no run-time conflict check.
+    template <int Trigger>
+    static constexpr bool region_local = [] {
+        if (!has_parallel) return false;  // nothing to resolve: every transition fires where selected
+        constexpr auto const& on_trigger = transitions<Trigger>;
+        for (std::size_t i = 0; i < on_trigger.size(); ++i) {
+            int const r = on_trigger[i];
+            int const src = rows.source[static_cast<std::size_t>(r)];
+            for (int s = src; s < tree.end[static_cast<std::size_t>(src)]; ++s)
+                if (tree.kinds[static_cast<std::size_t>(s)] == kind::parallel) return false;
+            if (component_row_count<Trigger>(component_of[static_cast<std::size_t>(src)]) > 254) return false;
+            for (std::size_t j = i + 1; j < on_trigger.size(); ++j) {
+                int const r2 = on_trigger[j];
+                if (component_of[static_cast<std::size_t>(rows.source[static_cast<std::size_t>(r2)])] !=
+                        component_of[static_cast<std::size_t>(src)] &&
+                    conflict(r, r2))
+                    return false;
+            }
+        }
+        return true;
+    }();
+
+    // A region-local trigger whose transitions can fire as they are selected, with the same
+    // effects as selecting all first: none is guarded (so no selection can depend on another
+    // component's action), and no state that one of them exits or enters has an entry or exit row
+    // (so the only visible effects are the transition actions, which run in document order
+    // either way). Each component's transition changes only the bytes inside its own domain.
+    template <int Trigger>
+    static constexpr bool fires_at_selection = [] {
+        if (!region_local<Trigger>) return false;
+        for (int const r : transitions<Trigger>) {
+            if (rows.guarded[static_cast<std::size_t>(r)]) return false;
+            int const d = rows.domain[static_cast<std::size_t>(r)];
+            if (d < 0) continue;  // targetless: exits and enters nothing
+            for (int r2 = 0; r2 < R; ++r2) {
+                auto const k = rows.kinds[static_cast<std::size_t>(r2)];
+                int const s = rows.source[static_cast<std::size_t>(r2)];
+                if (k != row_kind::transition && s != d && tree.contains(d, s)) return false;
+            }
+        }
+        return true;
+    }();
+
+    // The components in which a transition on the trigger can be selected under a parallel state.
+    template <int Trigger>
+    static constexpr int selecting_component_count() {
+        int n = 0;
+        for (std::size_t c = 1; c < components.size(); ++c) n += component_row_count<Trigger>(static_cast<int>(c)) > 0;
+        return n;
+    }
+    template <int Trigger>
+    static constexpr auto selecting_components = [] {
+        std::array<int, static_cast<std::size_t>(selecting_component_count<Trigger>())> out{};
+        std::size_t n = 0;
+        for (std::size_t c = 1; c < components.size(); ++c)
+            if (component_row_count<Trigger>(static_cast<int>(c)) > 0) out[n++] = static_cast<int>(c);
+        return out;
+    }();
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/compiled/plan.hpp
+// begin include/bsc/observer.hpp
+// Observer hooks: entry, exit and transition notifications for traces and tests. An
+// observer implements any subset of the hooks; a machine without one pays nothing.
+
+#include <string_view>
+
+
+namespace bsc {
+
+/// Identifies a state in observer calls: `tag.name` is its unqualified name, `type` the state.
+template <class S>
+struct state_tag {
+    using type = S;
+    static constexpr std::string_view name = name_of<S>;
+};
+
+/// The target reported for an internal transition, which exits and enters nothing.
+struct internal {};
+
+/// The default observer: no hooks, no cost.
+struct no_observer {};
+
+/// An observer may define, each optional:
+///   void on_entry(auto state);              // after state's entry actions
+///   void on_exit(auto state);               // after state's exit actions
+///   void on_transition(auto source, auto target, auto const& event);  // before the action
+///   void on_row(int row);                   // the same moment: the row's position in make_chart
+///   void on_guard(std::string_view guard);  // just before on_transition, for a row with a guard:
+///                                           // the guard as the exports write it, e.g. "released",
+///                                           // "!released && ready", "guard" when no part has a name
+///   void on_defer(auto source, auto const& event);  // just before on_transition, for a row
+///                                           // that defers the event (`/ bsc::defer`)
+///   void on_dispatch(auto const& event);    // dispatch(event) begins (not when refused)
+///   void on_cycle(bsc::duration now);       // step(now) begins, with the cycle's time
+///   void on_cycle_end();                    // that cycle's outputs are committed
+/// where `state`, `source` and `target` are bsc::state_tag<S> (target: state_tag<bsc::internal>
+/// for an internal transition) and `event` is the event: bsc::eventless for an eventless row,
+/// bsc::timeout_elapsed{delay} for a timeout row. A hook the observer lacks costs nothing.
+/// The time of a dispatch is the machine's clock, now(): the time of the last cycle (a machine
+/// that keeps no clock, policy keep_clock, has none: its on_cycle gets the caller's time).
+namespace detail {
+template <class O, class Tag>
+concept observes_entry = requires(O& o) {
+    o.on_entry(Tag{});
+};
+template <class O, class Tag>
+concept observes_exit = requires(O& o) {
+    o.on_exit(Tag{});
+};
+template <class O, class Src, class Dst, class E>
+concept observes_transition = requires(O& o, E const& e) {
+    o.on_transition(Src{}, Dst{}, e);
+};
+template <class O>
+concept observes_guards = requires(O& o, std::string_view text) {
+    o.on_guard(text);
+};
+template <class O, class Src, class E>
+concept observes_deferrals = requires(O& o, E const& e) {
+    o.on_defer(Src{}, e);
+};
+template <class O>
+concept observes_rows = requires(O& o) {
+    o.on_row(0);
+};
+template <class O, class E>
+concept observes_dispatch = requires(O& o, E const& e) {
+    o.on_dispatch(e);
+};
+template <class O>
+concept observes_cycles = requires(O& o) {
+    o.on_cycle(duration{});
+};
+template <class O>
+concept observes_cycle_ends = requires(O& o) {
+    o.on_cycle_end();
+};
+}  // namespace detail
+
+}  // namespace bsc
+// end include/bsc/observer.hpp
+// begin include/bsc/statechart.hpp
+// bsc::statechart: what a machine takes as its chart.
+
+#include <type_traits>
+
+
+namespace bsc {
+
+namespace detail {
+template <class T>
+inline constexpr bool is_chart = false;
+template <class Context, class Root, class... Rows>
+inline constexpr bool is_chart<chart<Context, Root, Rows...>> = true;
+}  // namespace detail
+
+/// The type of a chart that bsc::make_chart returned (`decltype(chart)`, const or not), or
+/// `bsc::chart_ref<chart>`: what bsc::machine and bsc::table::machine take as their Chart.
+/// `bsc::machine<int>` fails at its declaration, naming this concept. (A chart that failed its
+/// checks is one too: its machine compiles and does nothing, so that the chart's own errors are
+/// the only ones.)
+template <class T>
+concept statechart = detail::is_chart<std::remove_cv_t<T>> || detail::is_rejected_chart<std::remove_cv_t<T>> ||
+    detail::is_chart_ref<std::remove_cv_t<T>>;
+
+}  // namespace bsc
+// end include/bsc/statechart.hpp
+// begin include/bsc/detail/runtime/driver.hpp
+// The driver: what both back ends share, and the public interface of a machine (step, dispatch,
+// is<S>, halted, active_states, ...). It is built in layers, each a class template deriving
+// from the one below and doing one job (their headers say which):
+//
+//   machine_data       what a machine holds, and the chart's types and facts
+//   explorer_queries   what only the explorer asks (through detail::access)
+//   run_control        a run's bracket: reentrancy, guarded calls, failures, the recorded outcome
+//   deferral           deferred events, kept and retried
+//   done_raising       done<S> events, and the exits when the machine halts
+//   settling           run to completion; a cycle's components and raised events
+//   driver             the public interface, the construction and the BSC cycle's shell
+//
+// A back end (bsc::machine, bsc::table::machine) derives from the driver (CRTP) and supplies
+// the hooks of detail/runtime/backend.hpp, which the driver checks (machine_backend).
+
+#include <cstddef>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/detail/runtime/backend.hpp
+// The contract between the driver (detail/runtime/driver.hpp) and a back end. A back end derives
+// from the driver (CRTP) and supplies what differs between back ends: how a transition is
+// selected and fired, how states are entered and left, how a component takes its turn in a cycle.
+// The driver calls these hooks only through backend_hooks, the one class a back end befriends
+// for them, and checks the whole contract (machine_backend) when a machine is built.
+
+#include <concepts>
+
+
+namespace bsc::detail {
+
+// (Plain forwarding functions, which every optimising build inlines. Forced inline, they are
+// inlined before anything else, and GCC 12 then weighed the rest of the MCS workload's
+// dispatches differently: 7% more instructions per event, perf.instructions.)
+struct backend_hooks {
+    // Whether a dispatch marks the machine running only once it is about to run a guard or a
+    // transition (a back end that tells an ignored event without running anything).
+    template <class B>
+    static constexpr bool marks_running_lazily = B::marks_running_lazily;
+    // Enters the root and its default completion, entry actions and all; settles nothing.
+    template <class B>
+    static constexpr auto enter_initial(B& b) -> decltype(b.enter_initial()) {
+        b.enter_initial();
+    }
+    // Selects and fires the transitions that e enables (Trigger: the event's position in the
+    // chart, or eventless_id), without settling; true if one fired.
+    template <int Trigger, class B, class E>
+    static constexpr auto fire(B& b, E const& e) -> decltype(b.template fire<Trigger>(e)) {
+        return b.template fire<Trigger>(e);
+    }
+    // fire() for the event a dispatch takes (a back end may lay that call out differently).
+    template <int Trigger, class B, class E>
+    static constexpr auto fire_dispatched(B& b, E const& e) -> decltype(b.template fire_dispatched<Trigger>(e)) {
+        return b.template fire_dispatched<Trigger>(e);
+    }
+    // Component's turn in a BSC cycle (the root, or a region of a parallel state): at most one
+    // eventless or timeout transition; true if one fired.
+    template <int Component, class B>
+    static constexpr auto component_step(B& b) -> decltype(b.template component_step<Component>()) {
+        return b.template component_step<Component>();
+    }
+    // Whether state S (its index in the chart's model) is active.
+    template <int S, class B>
+    static constexpr auto is_active(B const& b) -> decltype(b.template is_active<S>()) {
+        return b.template is_active<S>();
+    }
+    // The machine halts: every active state's exit actions, innermost first.
+    template <class B>
+    static constexpr auto exit_all(B& b) -> decltype(b.exit_all()) {
+        b.exit_all();
+    }
+};
+
+// What a back end B supplies: each hook of backend_hooks, with its result type. Checked by the driver's
+// constructor, where B is complete: a back end that misses a hook fails there, naming this
+// concept and the hook.
+template <class B>
+concept machine_backend = requires(B& b, B const& const_b) {
+    { backend_hooks::marks_running_lazily<B> } -> std::convertible_to<bool>;
+    { backend_hooks::enter_initial(b) } -> std::same_as<void>;
+    { backend_hooks::fire<eventless_id>(b, eventless{}) } -> std::same_as<bool>;
+    { backend_hooks::fire_dispatched<eventless_id>(b, eventless{}) } -> std::same_as<bool>;
+    { backend_hooks::component_step<0>(b) } -> std::same_as<bool>;
+    { backend_hooks::is_active<0>(const_b) } -> std::same_as<bool>;
+    { backend_hooks::exit_all(b) } -> std::same_as<void>;
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/runtime/backend.hpp
+// begin include/bsc/detail/runtime/context_data.hpp
+// The machine's view of a context's data model: it latches input channels, commits output
+// channels and updates timers, wherever they are in the context (detail/members.hpp walks it:
+// members, aggregates, std::arrays, types described by bsc::fields, at any depth; transient
+// members too, since their channels and timers still run). Members that hold none cost
+// nothing, and a context with none is not visited at all.
+
+#include <type_traits>
+
 // begin include/bsc/detail/members.hpp
 // The member layer: the one description of what a context holds. Every part of bsc that walks a
 // machine's data goes through it: the machine itself (channels' latch and commit, timers'
@@ -6730,25 +6732,19 @@ inline T* never_read = nullptr;
 struct any_field {
     template <class T>
         requires(!std::is_same_v<T, any_field> && std::is_move_constructible_v<T>)
-    constexpr operator T&&() const&& {
-        return static_cast<T&&>(*never_read<T>);
-    }
+    constexpr operator T&&() const&& { return static_cast<T&&>(*never_read<T>); }
     template <class T>
         requires(!std::is_same_v<T, any_field> && !std::is_move_constructible_v<T>)
     constexpr operator T() &&;  // (nothing instantiates it: such a member has no constructor template to)
     template <class T>
         requires(!std::is_same_v<T, any_field>)
-    constexpr operator T&() const& {
-        return *never_read<T>;
-    }
+    constexpr operator T&() const& { return *never_read<T>; }
 };
 // As any_field, but to values only: it cannot initialise a member that is a non-const reference.
 struct any_value_field {
     template <class T>
         requires(!std::is_same_v<T, any_value_field> && std::is_move_constructible_v<T>)
-    constexpr operator T&&() const&& {
-        return static_cast<T&&>(*never_read<T>);
-    }
+    constexpr operator T&&() const&& { return static_cast<T&&>(*never_read<T>); }
     template <class T>
         requires(!std::is_same_v<T, any_value_field> && !std::is_move_constructible_v<T>)
     constexpr operator T() &&;
@@ -6801,8 +6797,8 @@ constexpr std::size_t field_count() {
 /// value, and shows as a const field): the retentive state refuses both, since what lies behind
 /// a reference is not the machine's.
 template <class T>
-inline constexpr bool has_reference_field =
-    !brace_constructible<T, any_value_field>(std::make_index_sequence<field_count<T>()>{});
+inline constexpr bool has_reference_field = !brace_constructible<T, any_value_field>(
+    std::make_index_sequence<field_count<T>()>{});
 
 // f(fields...) for the fields of an aggregate, each an lvalue; f() for a type that is not one
 // (after the error that says so). Clang 14 leaves the visit of a context's timers out of line
@@ -6810,8 +6806,7 @@ inline constexpr bool has_reference_field =
 // (bench/manufacturing_cell_bench.cpp: forced, its cycle took more instructions, not fewer;
 // docs/performance.md, rule "Fields visited without a tuple").
 template <class T, class F>
-BSC_DETAIL_VISIT_INLINE
-constexpr decltype(auto) apply_to_fields(T& t, F&& f) {
+BSC_DETAIL_VISIT_INLINE constexpr decltype(auto) apply_to_fields(T& t, F&& f) {
     using type = std::remove_const_t<T>;
     constexpr std::size_t n = field_count<type>();
     if constexpr (!std::is_aggregate_v<type>) {
@@ -6835,12 +6830,27 @@ constexpr auto tie_fields(T& t) {
 // Calls f(field) for each field of an aggregate, in declaration order.
 template <class T, class F>
 BSC_DETAIL_VISIT_INLINE  // as apply_to_fields
-constexpr void for_each_field(T& t, F&& f) {
+    constexpr void
+    for_each_field(T& t, F&& f) {
     detail::apply_to_fields(t, [&](auto&... field) { (f(field), ...); });
 }
 
 }  // namespace bsc::detail
 // end include/bsc/detail/fields.hpp
+// begin include/bsc/detail/machine_base.hpp
+// What every machine derives from, whatever its back end (an empty base: it costs nothing), so
+// that the member layer (detail/members.hpp) knows a machine held in a context.
+
+#include <type_traits>
+
+namespace bsc::detail {
+
+struct machine_base {};
+template <class T>
+inline constexpr bool is_machine = std::is_base_of_v<machine_base, T>;
+
+}  // namespace bsc::detail
+// end include/bsc/detail/machine_base.hpp
 // begin include/bsc/detail/member_names.hpp
 // The names of an aggregate's members as its definition spells them, at compile time, without
 // macros: the address of a member of an object that is declared but never defined is a constant
@@ -6908,9 +6918,11 @@ BSC_DETAIL_DECLARED_ONLY_END
 /// The names of T's members, in declaration order. Requirements: T is an aggregate that
 /// detail::tie_fields supports.
 template <class T>
+// clang-format off
 inline constexpr auto member_names = []<std::size_t... I>(std::index_sequence<I...>) {
     return std::array<std::string_view, sizeof...(I)>{member_name_of<T, I>()...};
 }(std::make_index_sequence<std::tuple_size_v<decltype(tie_fields(std::declval<T&>()))>>{});
+// clang-format on
 
 template <class Class, class Member>
 Class class_of_member(Member Class::*);
@@ -6922,6 +6934,7 @@ BSC_DETAIL_DECLARED_ONLY_BEGIN
 template <auto Member>
 constexpr std::size_t member_index() {
     using Class = decltype(class_of_member(Member));
+    // clang-format off
     return []<std::size_t... I>(std::index_sequence<I...>) {
         auto const& object = declared_only<Class>.value;
         void const* const target = &(object.*Member);
@@ -6930,6 +6943,7 @@ constexpr std::size_t member_index() {
         ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
         return found;
     }(std::make_index_sequence<member_names<Class>.size()>{});
+    // clang-format on
 }
 /// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
 /// `&axis::speed`.
@@ -6944,32 +6958,6 @@ BSC_DETAIL_DECLARED_ONLY_END
 
 }  // namespace bsc::detail
 // end include/bsc/detail/member_names.hpp
-// begin include/bsc/fields.hpp
-// bsc::fields<T>: what the members of a context type are, for a type that is not a plain
-// aggregate (a class with private members, constructors or base classes, or more than 128
-// members). Every part of bsc that walks a machine's state uses it: channels' latch and commit,
-// timers' update, retentive state, the explorer, the waveform and the network. Aggregates need
-// nothing: their members are found without it. <bsc/adapt/hana.hpp> specialises it for every
-// type adapted with Boost.Hana.
-
-namespace bsc {
-
-/// Specialise for a type whose members bsc cannot find by itself:
-///
-///     template <> struct bsc::fields<axis> {
-///         static constexpr std::array<std::string_view, 2> names{"speed", "limit"};
-///         template <class Self, class F>   // Self: axis or axis const
-///         static constexpr decltype(auto) apply(Self& self, F&& f) { return f(self.speed_, self.limit_); }
-///     };
-///
-/// Requirements: `names` holds one name per member, in the order in which `apply` passes them
-/// to `f`, each as an lvalue of the object. Members left out are not part of the machine's state
-/// (neither saved, explored nor recorded) and their channels and timers are not driven.
-template <class T>
-struct fields {};
-
-}  // namespace bsc
-// end include/bsc/fields.hpp
 // begin include/bsc/transient.hpp
 // bsc::transient<T> and bsc::transient_member<T>: data a context holds that is not part of the
 // machine's state (a log, a display buffer, statistics, a handle): not saved by bsc::save, not
@@ -6988,8 +6976,8 @@ template <class T>
 struct transient_member {
     T value{};
 
-    constexpr operator T&() & { return value; }                // NOLINT(google-explicit-constructor)
-    constexpr operator T const&() const& { return value; }    // NOLINT(google-explicit-constructor)
+    constexpr operator T&() & { return value; }             // NOLINT(google-explicit-constructor)
+    constexpr operator T const&() const& { return value; }  // NOLINT(google-explicit-constructor)
     constexpr transient_member& operator=(T const& v) {
         value = v;
         return *this;
@@ -7022,22 +7010,36 @@ inline constexpr bool is_chrono_duration<std::chrono::duration<Rep, Period>> = t
 // An enum whose every value of the underlying type is a value of the enum: a scoped enum, or one
 // declared with `: type` (only those can be list-initialised from an integer).
 template <class T>
-inline constexpr bool has_fixed_underlying_type = requires { T{std::underlying_type_t<T>{}}; };
+inline constexpr bool has_fixed_underlying_type = requires {
+    T{std::underlying_type_t<T>{}};
+};
 
 /// A type that bsc::fields<T> describes.
 template <class T>
-concept described_by_fields = requires { bsc::fields<T>::names; };
+concept described_by_fields = requires {
+    bsc::fields<T>::names;
+};
 
 /// A type adapted by BOOST_HANA_DEFINE_STRUCT (its nested accessors), told apart without Boost.
 template <class T>
-concept adapted_by_hana = requires { typename T::hana_accessors_impl; };
+concept adapted_by_hana = requires {
+    typename T::hana_accessors_impl;
+};
 
 enum class member_kind : std::uint8_t {
-    machine, channel, timer,                                                  // the machine's own
-    boolean, signed_integer, unsigned_integer, enumeration, floating, time,  // scalars
-    array, record,                                                            // walked into
-    opaque,                                                                   // a leaf bsc does not look into
-    unwalkable,                                                               // may hide state: an error
+    machine,
+    channel,
+    timer,  // the machine's own
+    boolean,
+    signed_integer,
+    unsigned_integer,
+    enumeration,
+    floating,
+    time,  // scalars
+    array,
+    record,      // walked into
+    opaque,      // a leaf bsc does not look into
+    unwalkable,  // may hide state: an error
 };
 
 // ---- aggregates bsc cannot walk ----------------------------------------------------------------
@@ -7180,7 +7182,8 @@ constexpr bool is_transient = bsc::transient<T>;
 // f(members...) for a record's members, each an lvalue (const for a const record).
 template <class T, class F>
 BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
-constexpr decltype(auto) apply_members(T& t, F&& f) {
+    constexpr decltype(auto)
+    apply_members(T& t, F&& f) {
     using type = std::remove_const_t<T>;
     if constexpr (described_by_fields<type>)
         return bsc::fields<type>::apply(t, static_cast<F&&>(f));
@@ -7199,7 +7202,9 @@ template <class T>
 using member_types = decltype(apply_members(std::declval<T&>(), list_member_types{}));
 
 template <class T>
+// clang-format off
 inline constexpr std::size_t member_count = []<class... M>(type_list<M...>) { return sizeof...(M); }(member_types<T>{});
+// clang-format on
 
 template <class T, int Depth>
 constexpr bool may_hold_state() {
@@ -7213,9 +7218,11 @@ constexpr bool may_hold_state() {
     } else if constexpr (described_by_fields<U> ||
                          (std::is_class_v<U> && std::is_aggregate_v<U> && !std::is_union_v<U> &&
                           problem_of_aggregate<U>() == aggregate_problem::none)) {
+        // clang-format off
         return []<class... M>(type_list<M...>) {
             return (may_hold_state<M, Depth - 1>() || ...);
         }(member_types<U>{});
+        // clang-format on
     } else if constexpr (std::is_class_v<U> && std::is_aggregate_v<U> && !std::is_union_v<U>) {
         // An aggregate bsc cannot walk is reported where it is a member; held by a template (a
         // std::vector of them) it is not taken to hide anything.
@@ -7298,7 +7305,9 @@ constexpr bool reaches() {
         else if constexpr (k == member_kind::array)
             return reaches<V, typename U::value_type>();
         else if constexpr (k == member_kind::record)
+            // clang-format off
             return []<class... M>(type_list<M...>) { return (reaches<V, M>() || ...); }(member_types<U>{});
+        // clang-format on
         else
             return visits_leaf<V, U>();
     }
@@ -7330,9 +7339,11 @@ constexpr bool check_reachable() {
     } else if constexpr (k == member_kind::array) {
         return check_reachable<typename U::value_type>();
     } else if constexpr (k == member_kind::record) {
+        // clang-format off
         return []<class... M, std::size_t... I>(type_list<M...>, std::index_sequence<I...>) {
             return ((check_member<U, I, M>() ? 0 : 1) + ... + 0) == 0;
         }(member_types<U>{}, std::make_index_sequence<member_count<U>>{});
+        // clang-format on
     } else if constexpr (k == member_kind::unwalkable) {
         report_unwalkable<void, 0, U>();  // the root itself
         return false;
@@ -7354,7 +7365,8 @@ constexpr auto const& names_of() {
 
 template <class V, class T, class Name>
 BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
-constexpr void walk_into(T& value, V& v, Name const& name) {
+    constexpr void
+    walk_into(T& value, V& v, Name const& name) {
     using U = std::remove_cv_t<T>;
     using visitor = std::remove_const_t<V>;
     constexpr member_kind k = kind_of<U>();
@@ -7386,7 +7398,8 @@ constexpr void walk_into(T& value, V& v, Name const& name) {
 /// each leaf it visits. Every member bsc cannot reach is a compile error.
 template <class V, class T, class Name = no_name>
 BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
-constexpr void walk(T& value, V& v, Name const& name = {}) {
+    constexpr void
+    walk(T& value, V& v, Name const& name = {}) {
     static_assert(reachable<T> || true);  // instantiates the check (its errors are the report)
     walk_into(value, v, name);
 }
@@ -7407,10 +7420,12 @@ constexpr typename F::result fold_type(F const& f) {
     } else if constexpr (k == member_kind::array) {
         return f.template array<U>(fold_type<F, typename U::value_type>(f));
     } else if constexpr (k == member_kind::record) {
+        // clang-format off
         return []<class... M>(F const& folder, type_list<M...>) {
             return folder.template record<U>(
                 std::array<typename F::result, sizeof...(M)>{fold_type<F, M>(folder)...});
         }(f, member_types<U>{});
+        // clang-format on
     } else {
         return f.template leaf<T>();  // (an unwalkable T is reported by check_reachable)
     }
@@ -7514,8 +7529,339 @@ constexpr void update_timers(Ctx& ctx, duration now) {
 }
 
 }  // namespace bsc::detail
-// end include/bsc/runtime/context_data.hpp
-// begin include/bsc/runtime/event_queue.hpp
+// end include/bsc/detail/runtime/context_data.hpp
+// begin include/bsc/detail/runtime/notify.hpp
+// The calls a machine makes to its observer, by state and row number: each hook is called
+// only if the observer has it, and a machine without observer generates nothing.
+
+#include <type_traits>
+
+// begin include/bsc/detail/guard_label.hpp
+// The label of a guard, as the exports draw it and the logger writes it: its name (bsc::named),
+// a composition of named guards with their operators, or "guard". Also the pieces the labels
+// of actions share (detail/export/model.hpp): has_name, expression, parenthesized.
+
+#include <string>
+#include <string_view>
+
+
+namespace bsc::detail {
+
+/// A guard or action that has a name (bsc::named, or any callable with a `name` member).
+template <class T>
+concept has_name = requires(T const& t) {
+    std::string_view{t.name};
+};
+
+template <class T>
+inline constexpr bool is_not_guard = false;
+template <class G>
+inline constexpr bool is_not_guard<not_guard<G>> = true;
+template <class T>
+inline constexpr bool is_and_guard = false;
+template <class L, class R>
+inline constexpr bool is_and_guard<and_guard<L, R>> = true;
+template <class T>
+inline constexpr bool is_or_guard = false;
+template <class L, class R>
+inline constexpr bool is_or_guard<or_guard<L, R>> = true;
+template <class T>
+inline constexpr bool is_guard_fn = false;
+template <class F>
+inline constexpr bool is_guard_fn<guard_fn<F>> = true;
+
+/// A label and whether any part of it was named; `precedence` places parentheses:
+/// 1 for ||, 2 for &&, 3 for a name or a negation.
+struct expression {
+    std::string text;
+    bool named = false;
+    int precedence = 3;
+};
+
+inline std::string parenthesized(expression const& e, int context) {
+    return e.precedence < context ? "(" + e.text + ")" : e.text;
+}
+
+template <class G>
+expression guard_expression(G const& g) {
+    if constexpr (has_name<G>) {
+        return {std::string(std::string_view{g.name}), true, 3};
+    } else if constexpr (is_not_guard<G>) {
+        auto const inner = guard_expression(g.g);
+        return {"!" + parenthesized(inner, 3), inner.named, 3};
+    } else if constexpr (is_and_guard<G> || is_or_guard<G>) {
+        int const precedence = is_and_guard<G> ? 2 : 1;
+        auto const l = guard_expression(g.l);
+        auto const r = guard_expression(g.r);
+        return {parenthesized(l, precedence) + (is_and_guard<G> ? " && " : " || ") + parenthesized(r, precedence),
+                l.named || r.named, precedence};
+    } else if constexpr (is_guard_fn<G>) {
+        return guard_expression(g.fn);
+    } else {
+        return {"guard", false, 3};
+    }
+}
+
+/// The label of a guard: its name, a composition of named guards ("!released && at_home", an
+/// unnamed part shown as "guard"), or "guard" when no part has a name.
+template <class G>
+std::string guard_label(G const& g) {
+    auto const e = guard_expression(g);
+    return e.named ? e.text : "guard";
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/guard_label.hpp
+
+namespace bsc::detail {
+
+template <class Model, class Observer>
+struct notify {
+    template <int S>
+    using tag = state_tag<typename Model::template tag_at<S>>;
+
+    template <int Row>
+    using source_tag = state_tag<typename Model::template row_at<Row>::source>;
+    template <int Row, class Target = typename Model::template row_at<Row>::target>
+    using target_tag = std::conditional_t<std::is_same_v<Target, no_target>, state_tag<internal>, state_tag<Target>>;
+
+    template <int S>
+    static constexpr bool observes_entry_of = S > 0 && observes_entry<Observer, tag<S>>;
+    template <int S>
+    static constexpr bool observes_exit_of = S > 0 && observes_exit<Observer, tag<S>>;
+    // The event on_transition receives for row Row taken on E: a timeout row's delay.
+    template <int Row, class E>
+    using reported_event = std::conditional_t<is_timeout_row<typename Model::template row_at<Row>>, timeout_elapsed, E>;
+    template <int Row, class E>
+    static constexpr bool observes_row =
+        observes_transition<Observer, source_tag<Row>, target_tag<Row>, reported_event<Row, E>> ||
+        observes_rows<Observer> || (Model::rows.guarded[Row] && observes_guards<Observer>) ||
+        (Model::rows.defers[Row] && observes_deferrals<Observer, source_tag<Row>, E>);
+
+    // After state S's entry actions.
+    template <int S>
+    static constexpr void entered(Observer& o) {
+        if constexpr (observes_entry_of<S>) o.on_entry(tag<S>{});
+    }
+    // After state S's exit actions.
+    template <int S>
+    static constexpr void exited(Observer& o) {
+        if constexpr (observes_exit_of<S>) o.on_exit(tag<S>{});
+    }
+    // Before the action of transition Row (the row object `row`), taken on event e; a timeout
+    // row reports timeout_elapsed with its delay instead (reported_event).
+    template <int Row, class RowObject, class E>
+    static constexpr void transition(Observer& o, RowObject const& row, E const& e) {
+        using reported = reported_event<Row, E>;
+        if constexpr (Model::rows.guarded[Row] && observes_guards<Observer>) o.on_guard(guard_label(row.guard));
+        if constexpr (Model::rows.defers[Row] && observes_deferrals<Observer, source_tag<Row>, E>)
+            o.on_defer(source_tag<Row>{}, e);
+        if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, reported>) {
+            if constexpr (std::is_same_v<reported, timeout_elapsed>)
+                o.on_transition(source_tag<Row>{}, target_tag<Row>{}, timeout_elapsed{row.trigger_value.delay});
+            else
+                o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
+        }
+        if constexpr (observes_rows<Observer>) o.on_row(Row);
+    }
+
+    // A dispatch of e begins; a cycle at time now begins; that cycle ends.
+    template <class E>
+    static constexpr void dispatching(Observer& o, E const& e) {
+        if constexpr (observes_dispatch<Observer, E>) o.on_dispatch(e);
+    }
+    static constexpr void cycle_begins(Observer& o, duration now) {
+        if constexpr (observes_cycles<Observer>) o.on_cycle(now);
+    }
+    static constexpr void cycle_ends(Observer& o) {
+        if constexpr (observes_cycle_ends<Observer>) o.on_cycle_end();
+    }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/runtime/notify.hpp
+// begin include/bsc/detail/runtime/settling.hpp
+// Run to completion: a dispatched event's microstep, then eventless transitions, raised events and
+// deferred events until none remains, within the policy's limits (outcome::livelock past them);
+// in a BSC cycle, the components' turns and the raised events without eventless settling. A
+// layer of the driver (detail/runtime/driver.hpp).
+
+#include <cstddef>
+#include <utility>
+
+// begin include/bsc/detail/runtime/done_raising.hpp
+// Completion (SCXML's done.state events; the rule is detail/model/completion.hpp): done<S> raised
+// when a final state is entered, and for a parallel state once all its regions are final, at the
+// moment SCXML raises it; and the exit of every state when the machine halts. Called by the back
+// ends as they enter states. A layer of the driver (detail/runtime/driver.hpp).
+
+#include <cstddef>
+#include <utility>
+
+// begin include/bsc/detail/runtime/deferral.hpp
+// Deferred events (`/ bsc::defer`): what the back ends report while a microstep selects and
+// fires (a deferring row, another transition), the event kept when only deferring rows took it,
+// and the retries, in the order the events came, after a transition changes the configuration.
+// A layer of the driver (detail/runtime/driver.hpp).
+
+#include <type_traits>
+
+// begin include/bsc/detail/runtime/run_control.hpp
+// A run's bracket and its failures: the mark of a run under way (the refusal of a reentrant
+// call), the guarded call of a guard or action, what a failure becomes (bsc::action_failed on
+// the queue, or kept for the caller), and the end of a run (the outcome recorded, a kept failure
+// rethrown or reported). A layer of the driver (detail/runtime/driver.hpp).
+
+#include <exception>
+#include <utility>
+
+// begin include/bsc/detail/assume.hpp
+// Tells the optimiser a fact the code keeps but cannot show it (a machine's status byte has no
+// failure bit set between runs; its queue is empty between runs), so that it drops the tests
+// the fact settles. The fact must hold: where it does not, the behaviour is undefined. GCC
+// follows what it is told through later tests; Clang drops it where paths join (driver.hpp says
+// what it does there instead). A build without NDEBUG tests the fact instead, and stops the
+// program where it does not hold. (The compilers' spellings: detail/config.hpp.)
+
+#include <cassert>
+
+
+namespace bsc::detail {
+
+BSC_DETAIL_ALWAYS_INLINE constexpr void assume(bool holds) {
+#if !defined(NDEBUG)
+    assert(holds &&
+           "bsc: a machine's invariant is broken: it was called back from inside its own run under a "
+           "policy that does not refuse it, or copied, assigned to or destroyed there");
+#else
+    BSC_DETAIL_ASSUME(holds);
+#endif
+}
+
+}  // namespace bsc::detail
+// end include/bsc/detail/assume.hpp
+// begin include/bsc/detail/runtime/explorer_queries.hpp
+// What only the explorer (bsc::verify, through detail::access) asks of a machine: its
+// configuration with the bytes that can no longer matter reset, whether a timeout's age still
+// matters, and the delays of the timeout rows. A layer of the driver (detail/runtime/driver.hpp).
+
+#include <array>
+#include <cstddef>
+
+// begin include/bsc/detail/runtime/timeouts.hpp
+// Timeouts (`after(delay)` rows): a state's timeouts count from its entry, a timeout is due once
+// its delay has elapsed at the time of the last cycle, a due timeout that leaves its state active
+// counts again from then, and of a state's timeouts due at once the first to come due fires. The
+// back ends say when (a state entered, a timeout row tried or fired); the rule is here, once.
+// Slots are numbered as detail/model/layout.hpp numbers them. A layer of the driver
+// (detail/runtime/driver.hpp).
+
+#include <cstddef>
+
+// begin include/bsc/detail/runtime/machine_data.hpp
+// What a machine holds, and where: the chart (or nothing, for a chart every machine shares), the
+// queue, the clock, the timeouts' entry times, the failures, the observer, the context, the
+// configuration bytes, the deferred events and the run's status; the types and facts of the
+// chart the rest of the driver reads; and the layout helpers that make a member take no room
+// where the chart does not need it. The bottom layer of the driver (detail/runtime/driver.hpp).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <type_traits>
+#include <utility>
+
+// begin include/bsc/detail/model/completion.hpp
+// Completion (SCXML 3.7.1): which states raise bsc::done<S>, and the flags a machine keeps
+// while it enters a parallel state. Computed only for a chart that can take a done event (it
+// names one, or takes bsc::any_event); for every other chart all of this is empty, and the
+// back ends generate nothing for it.
+
+#include <array>
+#include <cstddef>
+
+
+namespace bsc::detail {
+
+template <class E>
+inline constexpr bool is_done_event = false;
+template <class S>
+inline constexpr bool is_done_event<done<S>> = true;
+template <>
+inline constexpr bool is_done_event<any_event> = true;  // it takes done events too
+
+template <class Model>
+struct completion {
+    static constexpr int N = Model::N;
+    static constexpr auto const& tree = Model::tree;
+
+    // Whether a row of the chart can take a done event.
+    // clang-format off
+    static constexpr bool takes_any = []<class... Es>(type_list<Es...>) {
+        return (is_done_event<Es> || ...);
+    }(typename Model::events{});
+    // clang-format on
+
+    // trigger[s]: the trigger of bsc::done<S> for a composite or parallel state S other than
+    // the root, or -1 (no row takes it, or it is never raised).
+    static constexpr std::array<int, static_cast<std::size_t>(N)> trigger = [] {
+        std::array<int, static_cast<std::size_t>(N)> out{};
+        for (int& t : out) t = -1;
+        if constexpr (takes_any)
+            // clang-format off
+            [&]<class... Tags>(type_list<Tags...>) {
+                std::size_t s = 0;
+                ((out[s] = s > 1 && (tree.kinds[s] == kind::composite || tree.kinds[s] == kind::parallel)
+                               ? Model::template trigger_of<done<Tags>>
+                               : -1,
+                  ++s),
+                 ...);
+            }(typename Model::tags{});
+        // clang-format on
+        return out;
+    }();
+
+    // Whether the machine ever raises a done event: then it needs a queue.
+    static constexpr bool raises = [] {
+        for (int t : trigger)
+            if (t >= 0) return true;
+        return false;
+    }();
+
+    // The parallel states whose done event is taken, numbered: while one is being entered, a
+    // final state entered in one of its regions must not look at the regions not yet entered
+    // (their bytes are the history of an earlier visit).
+    static constexpr int parallel_count = [] {
+        int n = 0;
+        for (int s = 0; s < N; ++s)
+            n += tree.kinds[static_cast<std::size_t>(s)] == kind::parallel && trigger[static_cast<std::size_t>(s)] >= 0;
+        return n;
+    }();
+    static constexpr auto parallel_number = [] {
+        std::array<int, static_cast<std::size_t>(N)> out{};
+        int n = 0;
+        for (int s = 0; s < N; ++s)
+            out[static_cast<std::size_t>(s)] = tree.kinds[static_cast<std::size_t>(s)] == kind::parallel &&
+                                                       trigger[static_cast<std::size_t>(s)] >= 0
+                                                   ? n++
+                                                   : -1;
+        return out;
+    }();
+};
+
+// What a machine keeps for completion: one flag per parallel state whose done event is taken,
+// set while the state's regions are being entered. Nothing for other charts.
+template <int Parallels>
+struct entering_flags {
+    std::array<bool, static_cast<std::size_t>(Parallels)> flag{};
+};
+template <>
+struct entering_flags<0> {};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/model/completion.hpp
+// begin include/bsc/detail/runtime/event_queue.hpp
 // The bounded internal event queue: a ring buffer of the chart's event types. No heap;
 // a push onto a full queue is refused and remembered, never written out of bounds.
 
@@ -7541,16 +7887,14 @@ public:
     constexpr void clear() { head_ = size_ = 0; }
 
     // Between runs a machine's queue is empty, rewound and without overflow: every run ends so
-    // (runtime/driver.hpp: settled, abandon, end_run_by_exception). Said to the optimiser at
+    // (detail/runtime/settling.hpp: settled, abandon; run_control.hpp: end_run_by_exception). Said to the optimiser at
     // the start of a dispatch, so that it places the events a dispatch raises at known slots
     // and drops the tests of a queue it sees nothing raised into: a raise then costs about a
     // store, its processing a load (docs/performance.md,
     // rule "Tell the optimiser what a run guarantees"). A hidden friend, not a member: the
     // queue is the raise argument of every action, which should not be handed a promise it
     // can break.
-    friend constexpr void assume_idle(ring const& q) {
-        detail::assume(q.size_ == 0 && q.head_ == 0 && !q.overflowed_);
-    }
+    friend constexpr void assume_idle(ring const& q) { detail::assume(q.size_ == 0 && q.head_ == 0 && !q.overflowed_); }
     // Puts the oldest event back at the first slot; only for an empty queue (at the end of a
     // run), where it costs one store and no test.
     friend constexpr void rewind_empty(ring& q) { q.head_ = 0; }
@@ -7585,7 +7929,7 @@ private:
 };
 
 // The position among Events of the event an event E is queued as: E itself, or its nearest
-// family (model/event_families.hpp): the rows that take it see no more of it than that. -1: none.
+// family (detail/model/event_families.hpp): the rows that take it see no more of it than that. -1: none.
 template <class E, class... Es>
 constexpr int queued_index(type_list<Es...>) {
     if constexpr (position_in<E, type_list<Es...>>::value >= 0)
@@ -7619,7 +7963,7 @@ public:
     using value_type = std::variant<std::monostate, Es...>;
 
     /// Raises e: queues it for processing after the current step. False if the queue is full.
-    /// An event the chart does not name is queued as its nearest family (model/event_families.hpp):
+    /// An event the chart does not name is queued as its nearest family (detail/model/event_families.hpp):
     /// the rows that take it see no more of it than that.
     template <class E>
     constexpr bool operator()(E const& e) noexcept(std::is_nothrow_copy_constructible_v<E>) {
@@ -7763,11 +8107,11 @@ public:
 };
 
 }  // namespace bsc::detail
-// end include/bsc/runtime/event_queue.hpp
-// begin include/bsc/runtime/failures.hpp
+// end include/bsc/detail/runtime/event_queue.hpp
+// begin include/bsc/detail/runtime/failures.hpp
 // How a machine catches what its guards and actions throw. Each call of a guard or an action is
 // one block: if it throws, the rest of it is skipped and the failure goes to the machine
-// (detail::driver::fail), which raises bsc::action_failed or keeps it for the caller. Built
+// (detail::run_control::fail), which raises bsc::action_failed or keeps it for the caller. Built
 // without exceptions, these are plain calls.
 
 #include <exception>
@@ -7839,174 +8183,9 @@ constexpr void run_block(Block&& block, OnFailure&& on_failure) {
 }
 
 }  // namespace bsc::detail
-// end include/bsc/runtime/failures.hpp
-// begin include/bsc/runtime/notify.hpp
-// The calls a machine makes to its observer, by state and row number: each hook is called
-// only if the observer has it, and a machine without observer generates nothing.
-
-#include <type_traits>
-
-// begin include/bsc/detail/guard_label.hpp
-// The label of a guard, as the exports draw it and the logger writes it: its name (bsc::named),
-// a composition of named guards with their operators, or "guard". Also the pieces the labels
-// of actions share (export/model.hpp): has_name, expression, parenthesized.
-
-#include <string>
-#include <string_view>
-
+// end include/bsc/detail/runtime/failures.hpp
 
 namespace bsc::detail {
-
-/// A guard or action that has a name (bsc::named, or any callable with a `name` member).
-template <class T>
-concept has_name = requires(T const& t) { std::string_view{t.name}; };
-
-template <class T>
-inline constexpr bool is_not_guard = false;
-template <class G>
-inline constexpr bool is_not_guard<not_guard<G>> = true;
-template <class T>
-inline constexpr bool is_and_guard = false;
-template <class L, class R>
-inline constexpr bool is_and_guard<and_guard<L, R>> = true;
-template <class T>
-inline constexpr bool is_or_guard = false;
-template <class L, class R>
-inline constexpr bool is_or_guard<or_guard<L, R>> = true;
-template <class T>
-inline constexpr bool is_guard_fn = false;
-template <class F>
-inline constexpr bool is_guard_fn<guard_fn<F>> = true;
-
-/// A label and whether any part of it was named; `precedence` places parentheses:
-/// 1 for ||, 2 for &&, 3 for a name or a negation.
-struct expression {
-    std::string text;
-    bool named = false;
-    int precedence = 3;
-};
-
-inline std::string parenthesized(expression const& e, int context) {
-    return e.precedence < context ? "(" + e.text + ")" : e.text;
-}
-
-template <class G>
-expression guard_expression(G const& g) {
-    if constexpr (has_name<G>) {
-        return {std::string(std::string_view{g.name}), true, 3};
-    } else if constexpr (is_not_guard<G>) {
-        auto const inner = guard_expression(g.g);
-        return {"!" + parenthesized(inner, 3), inner.named, 3};
-    } else if constexpr (is_and_guard<G> || is_or_guard<G>) {
-        int const precedence = is_and_guard<G> ? 2 : 1;
-        auto const l = guard_expression(g.l);
-        auto const r = guard_expression(g.r);
-        return {parenthesized(l, precedence) + (is_and_guard<G> ? " && " : " || ") + parenthesized(r, precedence),
-                l.named || r.named, precedence};
-    } else if constexpr (is_guard_fn<G>) {
-        return guard_expression(g.fn);
-    } else {
-        return {"guard", false, 3};
-    }
-}
-
-/// The label of a guard: its name, a composition of named guards ("!released && at_home", an
-/// unnamed part shown as "guard"), or "guard" when no part has a name.
-template <class G>
-std::string guard_label(G const& g) {
-    auto const e = guard_expression(g);
-    return e.named ? e.text : "guard";
-}
-
-}  // namespace bsc::detail
-// end include/bsc/detail/guard_label.hpp
-
-namespace bsc::detail {
-
-template <class Model, class Observer>
-struct notify {
-    template <int S>
-    using tag = state_tag<typename Model::template tag_at<S>>;
-
-    template <int Row>
-    using source_tag = state_tag<typename Model::template row_at<Row>::source>;
-    template <int Row, class Target = typename Model::template row_at<Row>::target>
-    using target_tag = std::conditional_t<std::is_same_v<Target, no_target>, state_tag<internal>, state_tag<Target>>;
-
-    template <int S>
-    static constexpr bool observes_entry_of = S > 0 && observes_entry<Observer, tag<S>>;
-    template <int S>
-    static constexpr bool observes_exit_of = S > 0 && observes_exit<Observer, tag<S>>;
-    // The event on_transition receives for row Row taken on E: a timeout row's delay.
-    template <int Row, class E>
-    using reported_event =
-        std::conditional_t<is_timeout_row<typename Model::template row_at<Row>>, timeout_elapsed, E>;
-    template <int Row, class E>
-    static constexpr bool observes_row =
-        observes_transition<Observer, source_tag<Row>, target_tag<Row>, reported_event<Row, E>> ||
-        observes_rows<Observer> || (Model::rows.guarded[Row] && observes_guards<Observer>) ||
-        (Model::rows.defers[Row] && observes_deferrals<Observer, source_tag<Row>, E>);
-
-    // After state S's entry actions.
-    template <int S>
-    static constexpr void entered(Observer& o) {
-        if constexpr (observes_entry_of<S>) o.on_entry(tag<S>{});
-    }
-    // After state S's exit actions.
-    template <int S>
-    static constexpr void exited(Observer& o) {
-        if constexpr (observes_exit_of<S>) o.on_exit(tag<S>{});
-    }
-    // Before the action of transition Row (the row object `row`), taken on event e; a timeout
-    // row reports timeout_elapsed with its delay instead (reported_event).
-    template <int Row, class RowObject, class E>
-    static constexpr void transition(Observer& o, RowObject const& row, E const& e) {
-        using reported = reported_event<Row, E>;
-        if constexpr (Model::rows.guarded[Row] && observes_guards<Observer>) o.on_guard(guard_label(row.guard));
-        if constexpr (Model::rows.defers[Row] && observes_deferrals<Observer, source_tag<Row>, E>)
-            o.on_defer(source_tag<Row>{}, e);
-        if constexpr (observes_transition<Observer, source_tag<Row>, target_tag<Row>, reported>) {
-            if constexpr (std::is_same_v<reported, timeout_elapsed>)
-                o.on_transition(source_tag<Row>{}, target_tag<Row>{}, timeout_elapsed{row.trigger_value.delay});
-            else
-                o.on_transition(source_tag<Row>{}, target_tag<Row>{}, e);
-        }
-        if constexpr (observes_rows<Observer>) o.on_row(Row);
-    }
-
-    // A dispatch of e begins; a cycle at time now begins; that cycle ends.
-    template <class E>
-    static constexpr void dispatching(Observer& o, E const& e) {
-        if constexpr (observes_dispatch<Observer, E>) o.on_dispatch(e);
-    }
-    static constexpr void cycle_begins(Observer& o, duration now) {
-        if constexpr (observes_cycles<Observer>) o.on_cycle(now);
-    }
-    static constexpr void cycle_ends(Observer& o) {
-        if constexpr (observes_cycle_ends<Observer>) o.on_cycle_end();
-    }
-};
-
-}  // namespace bsc::detail
-// end include/bsc/runtime/notify.hpp
-
-namespace bsc::detail {
-
-// The observer type a machine's deduction guide takes from its constructor's arguments
-// (chart[, context[, observer]]): both back ends deduce through this one rule.
-template <class... Arguments>
-struct observer_argument {
-    using type = no_observer;
-};
-template <class Context, class Observer>
-struct observer_argument<Context, Observer> {
-    using type = Observer;
-};
-template <class... Arguments>
-using observer_argument_t = typename observer_argument<Arguments...>::type;
-
-// The decoder of dispatch_by_name when none is given: builds no event (each is default-constructed).
-struct no_decoder {};
 
 // Whether a row's guard or action can throw, called as a machine calls it: a transition's
 // guard with (context, event) and its action with (context, event, queue), an entry or exit
@@ -8028,9 +8207,11 @@ struct row_nothrow<Context, Queue, transition_row<S, Trigger, G, A, T>> {
 template <class Model, class Queue>
 constexpr bool chart_may_throw() {
 #if defined(__cpp_exceptions)
+    // clang-format off
     return []<class... Rows>(type_list<Rows...>) {
         return !(row_nothrow<typename Model::chart_context, Queue, Rows>::value && ...);
     }(typename Model::row_types{});
+    // clang-format on
 #else
     return false;
 #endif
@@ -8047,7 +8228,7 @@ inline constexpr bool is_shared_chart = false;
 template <class Chart, class... Rows>
 inline constexpr bool is_shared_chart<Chart, type_list<Rows...>> =
     is_chart_ref<Chart> ||
-    (((std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>) && ...) && std::is_default_constructible_v<Chart>);
+    (((std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>)&&...) && std::is_default_constructible_v<Chart>);
 template <class Chart>
 inline constexpr Chart shared_chart{};
 
@@ -8106,13 +8287,13 @@ struct no_failure_slot {
     static std::exception_ptr get() { return nullptr; }
 };
 
-// The clock and its started flag of a machine that keeps no clock (driver::keeps_clock): two
+// The clock and its started flag of a machine that keeps no clock (machine_data::keeps_clock): two
 // types, so that both members take no room.
 struct no_clock {};
 struct no_clock_start {};
 
 template <class Backend, class Chart, class Policy, class Observer, class Queue>
-class driver : public machine_base {
+class machine_data : public machine_base {
 protected:
     using model = chart_model<std::remove_cv_t<Chart>>;
     using layout = chart_layout<model>;
@@ -8135,200 +8316,8 @@ public:
     /// the compiled back end finds that no action of the chart can raise.
     static constexpr std::size_t queue_capacity = Queue::capacity();
 
-    /// One BSC execution cycle at time `now` (the BSC paper's execution cycle): timers are
-    /// updated, input channels latched; then each component (the root and every region of a
-    /// parallel state), in document order, fires at most one eventless or timeout transition,
-    /// its actions' writes visible at once to the components after it; events raised meanwhile
-    /// are processed; output channels are committed. Components entered during the cycle first
-    /// run in the next one. Time never runs backwards for the machine: an earlier `now` is
-    /// reported and ignored.
-    constexpr step_report step(duration now) {
-        step_report report;
-        if (running()) {
-            report.status = outcome::reentrant;
-            return report;
-        }
-        if (halted()) {
-            report.status = record(outcome::halted);
-            return report;
-        }
-        assume_idle_queue();
-        mark_running();
-        report.status = end_run(run_to_end([&] { return cycle(now, report); }));
-        return report;
-    }
-
-private:
-    // The cycle of step(now), which has marked the machine running; returns its outcome.
-    // Out of line, so that step stays small enough to be inlined where it is called: GCC 12,
-    // inlining the cycle into step instead, returns the report from a call, assembled in
-    // memory by narrow stores and read back by wider loads, which stall (docs/performance.md,
-    // rule "The cycle out of line").
-    BSC_DETAIL_NOINLINE constexpr outcome cycle(duration now, step_report& report) {
-        if constexpr (keeps_clock) {
-            if (!clock_started_) {
-                // The clock starts at the first cycle, wherever the caller's time starts; what was
-                // armed before it (at construction, by a dispatch) counts from this cycle too.
-                clock_started_ = true;
-                clock_ = now;
-                for (auto& armed : armed_) armed = now;
-                if constexpr (delays_events) queue_.start_clock(now);
-            } else if (now < clock_) {
-                report.clock_went_backwards = true;  // the cycle runs at the clock's time
-            } else {
-                clock_ = now;
-                if constexpr (delays_events) queue_.set_clock(now);
-            }
-            now = clock_;
-        }
-        notify<model, Observer>::cycle_begins(observer_.value, now);
-        update_timers(context_.value, now);
-        latch_inputs(context_.value);
-        if constexpr (layout::has_trigger(any_condition))
-            report.transitions = run_components();
-        // The delayed events due now, as raised events (bsc::raise_after).
-        if constexpr (delays_events) queue_.release_due(now);
-        outcome const drained = drain_queue(report.transitions > 0);
-        commit_outputs(context_.value);
-        notify<model, Observer>::cycle_ends(observer_.value);
-        return drained;
-    }
-
-public:
-    /// The time of the last cycle (the machine's clock; zero before the first cycle). A machine
-    /// keeps a clock when its chart has timeouts, timers or delayed events, or when its policy
-    /// says keep_clock (bsc::default_policy does; bsc::lean_policy does not).
-    constexpr duration now() const {
-        if constexpr (!keeps_clock) detail::report<error::clock_not_kept<Policy>>();
-        return cycle_time();
-    }
-
-    /// Processes e to completion: the transitions it enables, then eventless transitions and
-    /// raised events until none remain. Fails to compile if no transition handles E, or if E
-    /// is an event the environment cannot send (bsc::done<S>, bsc::action_failed,
-    /// bsc::any_event: bsc::error::event_not_dispatchable).
-    template <class E>
-    constexpr outcome dispatch(E const& e) {
-        constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (reserved_event<E>) {
-            detail::report<error::event_not_dispatchable<E>>();
-            return outcome::ignored;
-        } else if constexpr (trigger == -2) {
-            detail::report<error::event_in_two_families<E>>();
-            return outcome::ignored;
-        } else if constexpr (trigger < 0) {
-            detail::report<error::unhandled_event<E>>();
-            return outcome::ignored;
-        } else {
-            return process<trigger>(e);
-        }
-    }
-
-    /// As dispatch(e), but an event type that no transition handles is accepted and ignored.
-    template <class E>
-    constexpr outcome dispatch(E const& e, allow_unhandled_t) {
-        constexpr int trigger = model::template trigger_of<E>;
-        if constexpr (reserved_event<E>) {
-            detail::report<error::event_not_dispatchable<E>>();
-            return outcome::ignored;
-        } else if constexpr (trigger == -2) {
-            detail::report<error::event_in_two_families<E>>();
-            return outcome::ignored;
-        } else if constexpr (trigger < 0) {
-            if (running()) return outcome::ignored;  // inside a run: nothing to record
-            if (!halted()) notify<model, Observer>::dispatching(observer_.value, e);
-            return record(outcome::ignored);
-        } else {
-            return process<trigger>(e);
-        }
-    }
-
-    /// Dispatches the event of the chart called `name` (bsc::event_set: its static member
-    /// `name`, or its type's name), built by `decode(std::type_identity<E>{})` when the decoder
-    /// accepts that call and default-constructed otherwise. outcome::unknown_event, and nothing
-    /// processed, if no event of the chart the environment may send is so named (so for
-    /// "done.state.S" and "*": bsc::event_set leaves them out); outcome::reentrant, as dispatch,
-    /// from inside one of the machine's own guards or actions.
-    template <class Decode = no_decoder>
-    constexpr outcome dispatch_by_name(std::string_view name, Decode&& decode = {}) {
-        // An unknown name is a number past the last event: dispatch_by_number refuses both alike.
-        return dispatch_by_number(event_set<Chart>::find(name).value_or(event_set<Chart>::size), decode);
-    }
-
-    /// As dispatch_by_name, for the event numbered `number` (bsc::event_set<Chart>::number_of).
-    template <class Decode = no_decoder>
-    constexpr outcome dispatch_by_number(std::size_t number, Decode&& decode = {}) {
-        if (running()) return outcome::reentrant;
-        if (number >= event_set<Chart>::size) return record(outcome::unknown_event);
-        if constexpr (event_set<Chart>::size > 0)
-            return event_set<Chart>::visit(number, [&]<class E>(std::type_identity<E> event) {
-                if constexpr (std::is_invocable_r_v<E, Decode&, std::type_identity<E>>) {
-                    return dispatch(static_cast<E>(decode(event)));
-                } else if constexpr (std::is_default_constructible_v<E>) {
-                    return dispatch(E{});
-                } else {
-                    detail::report<error::event_not_constructible<E>>();
-                    return outcome::ignored;
-                }
-            });
-        else
-            return (void)decode, record(outcome::unknown_event);  // not reached: no number is below 0
-    }
-
-    /// True if state S is active.
-    template <class S>
-    constexpr bool is() const {
-        constexpr int s = model::template index_of_state<S>;
-        if constexpr (s < 0) {
-            detail::report<error::queried_state_not_in_chart<S>>();
-            return false;
-        } else {
-            return backend().template is_active<s>();
-        }
-    }
-
-    /// True once a final child of the root is active: the machine processes nothing more.
-    constexpr bool halted() const {
-        if constexpr (layout::can_halt)
-            return layout::final_root_children[config_.active[static_cast<std::size_t>(tree.slot[root])]];
-        else
-            return false;
-    }
-
-    /// The names of the active states, outermost first, in document order.
-    constexpr auto active_states() const {
-        bsc::state_names<state_count> names;
-        auto const active = active_flags();
-        for (std::size_t s = 1; s < state_count; ++s)
-            if (active[s]) names.push_back(state_names_of<model>[s]);
-        return names;
-    }
-
-    /// The outcome of the last dispatch (or of construction).
-    constexpr outcome last_outcome() const {
-        if constexpr (!Policy::keep_last_outcome) detail::report<error::last_outcome_not_kept<Policy>>();
-        return kept_outcome();
-    }
-
-    /// The exception of the last dispatch, cycle or construction whose outcome was
-    /// outcome::failed (a policy whose rethrow_failures is false); null otherwise.
-    std::exception_ptr last_failure() const {
-        if constexpr (!Policy::keep_last_outcome) detail::report<error::last_outcome_not_kept<Policy>>();
-        if constexpr (!Policy::rethrow_failures && may_throw)
-            if (kept_outcome() == outcome::failed) return reported_.get();
-        return nullptr;
-    }
-
-    /// The context as the environment sees it: const. Inputs are set through it (input::set is
-    /// const: the plant's wire), outputs and variables read; only the chart's actions write
-    /// outputs and variables (docs/api.md, "Data").
-    constexpr context_type const& context() const { return context_.value; }
-    constexpr configuration_type const& active_configuration() const { return config_; }
-    constexpr Observer& observer() { return observer_.value; }
-    constexpr Observer const& observer() const { return observer_.value; }
-
 protected:
-    constexpr driver(Chart const& chart, context_type context, Observer observer)
+    constexpr machine_data(Chart const& chart, context_type context, Observer observer)
         : chart_(stored_chart(chart)), observer_{std::move(observer)}, context_{std::move(context)} {}
 
     // The chart: the machine's copy, or, for a shared chart (is_shared_chart), the one every machine shares.
@@ -8339,29 +8328,15 @@ protected:
             return chart_;
     }
 
-    // Enters the initial configuration (entry actions run) and settles eventless transitions.
-    // Called by the back end's constructor, once the back end exists.
-    constexpr void start() {
-        mark_running();
-        end_run(run_to_end([&] {
-            if constexpr (tree.slots > 0)
-                config_.active = layout::initial_bytes;
-            latch_inputs(context_.value);
-            backend().enter_initial();
-            outcome const settled = finish(false);
-            commit_outputs(context_.value);
-            return settled;
-        }));
-    }
 
     // Whether the chart sends delayed events (bsc::raise_after): its queue keeps them.
-    static constexpr bool delays_events = requires(Queue& q) { q.release_due(duration{}); };
+    static constexpr bool delays_events = requires(Queue & q) { q.release_due(duration{}); };
     // Whether the machine keeps the time of its last cycle. Timeouts count from it (their entry
     // times are the clock's), and timers and delayed events run on it, so that a caller's time
     // that goes backwards does not reach them; without any of these, only now() and the report
     // of a clock that went backwards read it, and a policy may leave it out (keep_clock).
-    static constexpr bool keeps_clock =
-        Policy::keep_clock || layout::timeout_slots > 0 || has_timers<context_type> || delays_events;
+    static constexpr bool keeps_clock = Policy::keep_clock || layout::timeout_slots > 0 || has_timers<context_type> ||
+                                        delays_events;
 
     // The time of the last cycle: the clock, or zero for a machine that keeps none.
     constexpr duration cycle_time() const {
@@ -8386,117 +8361,231 @@ protected:
         }
     }
 
-    // ---- deferred events, called by the back ends ------------------------------------------
+    // Whether the chart defers events (`/ bsc::defer`): then the machine keeps them.
     static constexpr bool defers = model::has_deferral;
-
-    // A deferring row was selected: its event is kept at the end of the microstep, unless
-    // another transition fired in it.
-    constexpr void deferral_selected() {
-        if constexpr (defers) deferral_.requested = true;
-    }
-    // A transition that does not defer fired; `changes`: it has a target.
-    constexpr void transition_fired(bool changes) {
-        if constexpr (defers) {
-            deferral_.other_fired = true;
-            if (changes) deferral_.changed = true;
-        } else {
-            (void)changes;
-        }
-    }
-
-    // ---- completion (model/completion.hpp), called by the back ends ----------------------
     using completion = detail::completion<model>;
+    // Whether a guard or action of the chart can throw (detail::chart_may_throw).
+    static constexpr bool may_throw = chart_may_throw<model, Queue>();
 
-    // After the entry actions of final state f: raises done for its parent, and for the
-    // parallel state above the parent if every region of it is now in a final state (SCXML's
-    // enterStates). A final child of the root raises nothing: the machine halts.
-    constexpr void entered_final(int f) {
-        if constexpr (completion::raises) {
-            int const p = tree.parent[static_cast<std::size_t>(f)];
-            if (p == root) return;
-            raise_done(p);
-            int const g = tree.parent[static_cast<std::size_t>(p)];
-            if (tree.kinds[static_cast<std::size_t>(g)] == kind::parallel && !entering(g) && in_final(g)) raise_done(g);
-        } else {
-            (void)f;
-        }
+    // Row Row of the chart. (Read from the base that holds it, named directly: row_at would
+    // be one more function to instantiate per row.)
+    template <int Row>
+    constexpr auto const& row() const {
+        using slot = row_slot<static_cast<std::size_t>(Row), typename model::template row_at<Row>>;
+        return static_cast<slot const&>(chart().rows).row;
     }
 
-    // Enters the regions of parallel state g (enter_regions(), the back end's loop). While it
-    // does, a final state entered in a region does not look at the regions after its own, which
-    // are not entered yet; once they all are, done for g is raised if they are all final and
-    // the last was entered through a final state of its own (a composite region): where SCXML
-    // raises it, after the last final state entered.
-    template <class Enter>
-    constexpr void enter_parallel(int g, Enter&& enter_regions) {
-        if constexpr (completion::parallel_count > 0) {
-            int const n = completion::parallel_number[static_cast<std::size_t>(g)];
-            if (n >= 0) {
-                entering_.flag[static_cast<std::size_t>(n)] = true;
-                enter_regions();
-                entering_.flag[static_cast<std::size_t>(n)] = false;
-                if (tree.kinds[static_cast<std::size_t>(last_child(g))] == kind::composite && in_final(g)) raise_done(g);
-                return;
+    // Whether state s is active, read from the bytes; outermost first, so one pass suffices.
+    constexpr std::array<bool, state_count> active_flags() const {
+        std::array<bool, state_count> active{};
+        active[0] = true;
+        if constexpr (tree.slots > 0)
+            for (std::size_t s = 1; s < state_count; ++s) {
+                auto const p = static_cast<std::size_t>(tree.parent[s]);
+                active[s] = active[p] && (tree.slot[p] < 0 || config_.active[static_cast<std::size_t>(tree.slot[p])] ==
+                                                                  static_cast<std::uint8_t>(tree.ordinal[s]));
             }
-        }
-        enter_regions();
+        else
+            for (std::size_t s = 1; s < state_count; ++s) active[s] = true;
+        return active;
     }
 
-    // Runs the exit actions of every active state, innermost first, when the machine halts
-    // (SCXML's exitInterpreter).
-    constexpr void halt_if_final() {
+    // True once a final child of the root is active (the driver's halted()).
+    constexpr bool halted() const {
         if constexpr (layout::can_halt)
-            if (halted()) {
-                backend().exit_all();
-                queue_.clear();
-            }
+            return layout::final_root_children[config_.active[static_cast<std::size_t>(tree.slot[root])]];
+        else
+            return false;
     }
 
-private:
-    constexpr bool entering(int g) const {
-        if constexpr (completion::parallel_count > 0) {
-            int const n = completion::parallel_number[static_cast<std::size_t>(g)];
-            return n >= 0 && entering_.flag[static_cast<std::size_t>(n)];
-        } else {
-            return (void)g, false;
-        }
-    }
-    static constexpr int last_child(int s) {
-        int last = tree.first_child[static_cast<std::size_t>(s)];
-        while (tree.next_sibling[static_cast<std::size_t>(last)] >= 0) last = tree.next_sibling[static_cast<std::size_t>(last)];
-        return last;
-    }
-    // SCXML's isInFinalState: a composite whose active child is final, a parallel state all of
-    // whose regions are.
-    constexpr bool in_final(int s) const {
-        auto const i = static_cast<std::size_t>(s);
-        if (tree.kinds[i] == kind::composite) {
-            auto const ordinal = config_.active[static_cast<std::size_t>(tree.slot[i])];
-            for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
-                if (tree.ordinal[static_cast<std::size_t>(c)] == ordinal)
-                    return tree.kinds[static_cast<std::size_t>(c)] == kind::final_state;
-            return false;
-        }
-        if (tree.kinds[i] == kind::parallel) {
-            for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
-                if (!in_final(c)) return false;
-            return true;
-        }
-        return false;
-    }
-    // Queues done<S> for state s, if a row takes it.
-    constexpr void raise_done(int s) {
-        [&]<std::size_t... S>(std::index_sequence<S...>) {
-            (void)((s == static_cast<int>(S) ? (raise_done_of<S>(), true) : false) || ...);
-        }(std::make_index_sequence<state_count>{});
-    }
-    template <std::size_t S>
-    constexpr void raise_done_of() {
-        if constexpr (completion::trigger[S] >= 0) (void)queue_(done<typename model::template tag_at<static_cast<int>(S)>>{});
-    }
+    // The back end this driver is the base of.
+    constexpr Backend& backend() { return static_cast<Backend&>(*this); }
+    constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
+
+    friend struct access;
 
 protected:
-    // The machine counts as running from the start of a run to its end, or, in a dispatch on a
+    struct no_chart {};
+    using stored_chart_type = std::conditional_t<is_shared_chart<chart_type>, no_chart, chart_type>;
+    static constexpr stored_chart_type stored_chart(chart_type const& chart) {
+        if constexpr (is_shared_chart<chart_type>)
+            return (void)chart, no_chart{};
+        else
+            return chart;
+    }
+    // The members whose alignment is known to be large first, the context next to the bytes, so
+    // that a small machine has no padding inside.
+    [[no_unique_address]] stored_chart_type chart_;
+    [[no_unique_address]] Queue queue_{};
+    [[no_unique_address]] std::conditional_t<keeps_clock, duration, no_clock> clock_{};
+    [[no_unique_address]] timeout_slots<static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
+    // The first failure of the current run that no transition took.
+    [[no_unique_address]] std::conditional_t<may_throw, failure_slot, no_failure_slot> failure_;
+    // The failure of the last run, for last_failure(), under a policy that does not rethrow.
+    [[no_unique_address]] std::conditional_t<Policy::rethrow_failures || !may_throw, no_failure_slot, failure_slot>
+        reported_;
+    [[no_unique_address]] whole<Observer> observer_;
+    [[no_unique_address]] whole<context_type> context_;
+    configuration_type config_{};
+    [[no_unique_address]] entering_flags<completion::parallel_count> entering_;
+    // The events deferred (`/ bsc::defer`), oldest first, and the state of their retries.
+    [[no_unique_address]] std::conditional_t<
+        defers, event_queue<deferred_capacity_of<Policy, defers>, typename model::events>, no_deferral>
+        deferred_;
+    [[no_unique_address]] std::conditional_t<defers, deferral_state, no_deferral> deferral_;
+    // The outcome of the last run (low bits), the mark of a run under way (running_bit) and
+    // whether the run under way has kept a failure (failed_bit: failure_ holds it). An
+    // enumeration and not a std::uint8_t: a store through an unsigned char may alias any object,
+    // so the compiler would reload the context after every mark.
+    enum class run_status : std::uint8_t {};
+    static constexpr std::uint8_t running_bit = 0x80;
+    static constexpr std::uint8_t failed_bit = 0x40;
+    static constexpr std::uint8_t bits(run_status s) { return static_cast<std::uint8_t>(s); }
+    run_status status_ = static_cast<run_status>(outcome::ignored);
+    // A cycle has run: clock_ is the caller's time.
+    [[no_unique_address]] std::conditional_t<keeps_clock, bool, no_clock_start> clock_started_{};
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/runtime/machine_data.hpp
+
+namespace bsc::detail {
+
+template <class Backend, class Chart, class Policy, class Observer, class Queue>
+class timeouts : public machine_data<Backend, Chart, Policy, Observer, Queue> {
+    using base = machine_data<Backend, Chart, Policy, Observer, Queue>;
+
+protected:
+    using base::base;
+    using base::armed_;
+    using base::cycle_time;
+
+    // A state was entered: its timeouts, slots first_slot to first_slot + count - 1, count from
+    // now (the time of the last cycle).
+    constexpr void arm_timeouts(int first_slot, int count) {
+        for (int k = 0; k < count; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = cycle_time();
+    }
+
+    // Whether the timeout in `slot`, of `delay`, is due: its state has been active for the delay.
+    constexpr bool timeout_due(int slot, duration delay) const {
+        return has_elapsed(armed_[static_cast<std::size_t>(slot)], cycle_time(), delay);
+    }
+
+    // A timeout fired and its state stays active (layout.hpp, rearms): it counts again from now.
+    constexpr void rearm_timeout(int slot) { armed_[static_cast<std::size_t>(slot)] = cycle_time(); }
+
+    // Of two due timeouts of one state, whether the one in `slot` (of `delay`) came due before the
+    // one in `other_slot` (of `other_delay`), the one declared first: then it fires instead
+    // (detail::came_due_first says how a tie is broken).
+    constexpr bool came_due_before(int slot, duration delay, int other_slot, duration other_delay) const {
+        return came_due_first(armed_[static_cast<std::size_t>(slot)], delay,
+                              armed_[static_cast<std::size_t>(other_slot)], other_delay);
+    }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/runtime/timeouts.hpp
+
+namespace bsc::detail {
+
+template <class Backend, class Chart, class Policy, class Observer, class Queue>
+class explorer_queries : public timeouts<Backend, Chart, Policy, Observer, Queue> {
+    using base = timeouts<Backend, Chart, Policy, Observer, Queue>;
+
+protected:
+    using base::base;
+    using typename base::model;
+    using typename base::layout;
+    using typename base::configuration_type;
+    using base::tree;
+    using base::state_count;
+    using base::config_;
+    using base::active_flags;
+    using base::row;
+
+    // The configuration with every byte that can never matter again reset to its initial
+    // value: the byte of an inactive composite that neither has history (a marker or a history
+    // state) nor lies below a deep one. Two machines with equal canonical configurations behave
+    // the same.
+    constexpr configuration_type canonical_configuration() const {
+        configuration_type c = config_;
+        if constexpr (tree.slots > 0) {
+            auto const active = active_flags();
+            for (std::size_t s = 1; s < state_count; ++s) {
+                if (tree.slot[s] < 0 || active[s]) continue;
+                bool remembered = tree.hist[s] != history::none || layout::history_child[s] >= 0;
+                for (int a = tree.parent[s]; a > 0 && !remembered; a = tree.parent[static_cast<std::size_t>(a)])
+                    remembered = tree.hist[static_cast<std::size_t>(a)] == history::deep ||
+                                 layout::deep_history_child[static_cast<std::size_t>(a)];
+                if (!remembered)
+                    c.active[static_cast<std::size_t>(tree.slot[s])] =
+                        layout::initial_bytes[static_cast<std::size_t>(tree.slot[s])];
+            }
+        }
+        return c;
+    }
+
+    // A timeout slot's age matters only while its state is active.
+    constexpr bool timeout_armed(std::size_t slot) const {
+        auto const active = active_flags();
+        if constexpr (layout::timeout_slots > 0)
+            return slot < layout::timeout_slot_state.size() &&
+                   active[static_cast<std::size_t>(layout::timeout_slot_state[slot])];
+        else
+            return false;
+    }
+
+    // The longest delay of any timeout row: past it, a state's age no longer matters.
+    constexpr duration longest_timeout() const {
+        duration longest{};
+        for (duration delay : row_delays())
+            if (delay > longest) longest = delay;
+        return longest;
+    }
+
+    // Each row's delay: a timeout row's, zero for the others.
+    constexpr std::array<duration, static_cast<std::size_t>(model::R)> row_delays() const {
+        std::array<duration, static_cast<std::size_t>(model::R)> delays{};
+        // clang-format off
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (
+                [&] {
+                    if constexpr (layout::is_timeout_row(static_cast<int>(I)))
+                        delays[I] = this->template row<static_cast<int>(I)>().trigger_value.delay;
+                }(),
+                ...);
+        }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
+        // clang-format on
+        return delays;
+    }
+
+    friend struct access;
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/runtime/explorer_queries.hpp
+
+namespace bsc::detail {
+
+template <class Backend, class Chart, class Policy, class Observer, class Queue>
+class run_control : public explorer_queries<Backend, Chart, Policy, Observer, Queue> {
+    using base = explorer_queries<Backend, Chart, Policy, Observer, Queue>;
+
+protected:
+    using base::base;
+    using typename base::model;
+    using typename base::completion;
+    using typename base::run_status;
+    using base::may_throw;
+    using base::running_bit;
+    using base::failed_bit;
+    using base::bits;
+    using base::status_;
+    using base::queue_;
+    using base::failure_;
+    using base::reported_;
+    using base::entering_;
+
     // back end that says so (Backend::marks_running_lazily), from the first guard or transition
     // it is about to run (the back end calls mark_running() there): only guards, actions and
     // the observer can call the machine back, and a dispatch that runs none of them (an
@@ -8546,80 +8635,9 @@ protected:
     }
     // The same, for code that knows the machine only by address (the table engine's thunks).
     failure_sink sink() {
-        return {this, [](void* machine, std::exception_ptr error) { static_cast<driver*>(machine)->fail(std::move(error)); }};
-    }
-
-    // Row Row of the chart. (Read from the base that holds it, named directly: row_at would
-    // be one more function to instantiate per row.)
-    template <int Row>
-    constexpr auto const& row() const {
-        using slot = row_slot<static_cast<std::size_t>(Row), typename model::template row_at<Row>>;
-        return static_cast<slot const&>(chart().rows).row;
-    }
-
-    // Whether state s is active, read from the bytes; outermost first, so one pass suffices.
-    constexpr std::array<bool, state_count> active_flags() const {
-        std::array<bool, state_count> active{};
-        active[0] = true;
-        if constexpr (tree.slots > 0)
-            for (std::size_t s = 1; s < state_count; ++s) {
-                auto const p = static_cast<std::size_t>(tree.parent[s]);
-                active[s] = active[p] && (tree.slot[p] < 0 || config_.active[static_cast<std::size_t>(tree.slot[p])] ==
-                                                                  static_cast<std::uint8_t>(tree.ordinal[s]));
-            }
-        else
-            for (std::size_t s = 1; s < state_count; ++s) active[s] = true;
-        return active;
-    }
-
-private:
-    using driver_type = driver;  // what detail::access reaches a machine's data through
-
-    constexpr Backend& backend() { return static_cast<Backend&>(*this); }
-    constexpr Backend const& backend() const { return static_cast<Backend const&>(*this); }
-
-    // Fires the transitions an event (not the eventless pseudo-event) enables where the chart
-    // defers, and keeps the event if only deferring rows took it. (Elsewhere the callers go
-    // straight to the back end's fire, without a function between to instantiate per event.)
-    template <int Trigger, class E>
-    constexpr bool fire_or_defer(E const& e) {
-        deferral_.requested = false;
-        deferral_.other_fired = false;
-        bool const fired = backend().template fire<Trigger>(e);
-        if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
-        return fired;
-    }
-
-    // Processes one deferred event again, if a round of retries is under way, or if a
-    // transition has changed the configuration since the last round (which starts a round over
-    // every event kept, in the order they came). True if it processed one.
-    constexpr bool retry_deferred() {
-        if constexpr (defers) {
-            if (deferral_.retry == 0 && deferral_.changed) {
-                deferral_.changed = false;
-                deferral_.retry = deferred_.size();
-            }
-            if (deferral_.retry == 0) return false;
-            --deferral_.retry;
-            deferred_.pop([&](auto const& ev) { fire_queued(ev); });
-            return true;
-        } else {
-            return false;
-        }
-    }
-
-    // Fires the transitions an event taken from the queue or the deferred events enables,
-    // without settling; a failure that no transition takes is kept for the caller.
-    template <class E>
-    constexpr void fire_queued(E const& e) {
-        constexpr int trigger = model::template trigger_of<E>;
-        bool fired = false;
-        if constexpr (defers)
-            fired = fire_or_defer<trigger>(e);
-        else
-            fired = backend().template fire<trigger>(e);
-        if constexpr (std::is_same_v<E, action_failed>)
-            if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
+        return {this, [](void* machine, std::exception_ptr error) {
+                    static_cast<run_control*>(machine)->fail(std::move(error));
+                }};
     }
 
     // Whether the chart takes bsc::action_failed: then failures go on the internal queue.
@@ -8742,15 +8760,251 @@ private:
         if constexpr (completion::parallel_count > 0) entering_ = {};  // the run is over, whatever it was entering
     }
 
+    friend struct access;
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/runtime/run_control.hpp
+
+namespace bsc::detail {
+
+template <class Backend, class Chart, class Policy, class Observer, class Queue>
+class deferral : public run_control<Backend, Chart, Policy, Observer, Queue> {
+    using base = run_control<Backend, Chart, Policy, Observer, Queue>;
+
+protected:
+    using base::base;
+    using typename base::model;
+    using base::defers;
+    using base::deferral_;
+    using base::deferred_;
+    using base::backend;
+    using base::keep_failure;
+
+    // A deferring row was selected: its event is kept at the end of the microstep, unless
+    // another transition fired in it.
+    constexpr void deferral_selected() {
+        if constexpr (defers) deferral_.requested = true;
+    }
+    // A transition that does not defer fired; `changes`: it has a target.
+    constexpr void transition_fired(bool changes) {
+        if constexpr (defers) {
+            deferral_.other_fired = true;
+            if (changes) deferral_.changed = true;
+        } else {
+            (void)changes;
+        }
+    }
+
+    // Fires the transitions an event (not the eventless pseudo-event) enables where the chart
+    // defers, and keeps the event if only deferring rows took it. (Elsewhere the callers go
+    // straight to the back end's fire, without a function between to instantiate per event.)
+    template <int Trigger, class E>
+    constexpr bool fire_or_defer(E const& e) {
+        deferral_.requested = false;
+        deferral_.other_fired = false;
+        bool const fired = backend_hooks::fire<Trigger>(backend(), e);
+        if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
+        return fired;
+    }
+
+    // Processes one deferred event again, if a round of retries is under way, or if a
+    // transition has changed the configuration since the last round (which starts a round over
+    // every event kept, in the order they came). True if it processed one.
+    constexpr bool retry_deferred() {
+        if constexpr (defers) {
+            if (deferral_.retry == 0 && deferral_.changed) {
+                deferral_.changed = false;
+                deferral_.retry = deferred_.size();
+            }
+            if (deferral_.retry == 0) return false;
+            --deferral_.retry;
+            deferred_.pop([&](auto const& ev) { fire_queued(ev); });
+            return true;
+        } else {
+            return false;
+        }
+    }
+
+    // Fires the transitions an event taken from the queue or the deferred events enables,
+    // without settling; a failure that no transition takes is kept for the caller.
+    template <class E>
+    constexpr void fire_queued(E const& e) {
+        constexpr int trigger = model::template trigger_of<E>;
+        bool fired = false;
+        if constexpr (defers)
+            fired = fire_or_defer<trigger>(e);
+        else
+            fired = backend_hooks::fire<trigger>(backend(), e);
+        if constexpr (std::is_same_v<E, action_failed>)
+            if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
+    }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/runtime/deferral.hpp
+
+namespace bsc::detail {
+
+template <class Backend, class Chart, class Policy, class Observer, class Queue>
+class done_raising : public deferral<Backend, Chart, Policy, Observer, Queue> {
+    using base = deferral<Backend, Chart, Policy, Observer, Queue>;
+
+protected:
+    using base::base;
+    using typename base::model;
+    using typename base::layout;
+    using typename base::completion;
+    using base::tree;
+    using base::root;
+    using base::state_count;
+    using base::config_;
+    using base::queue_;
+    using base::entering_;
+    using base::backend;
+    using base::halted;
+
+    // After the entry actions of final state f: raises done for its parent, and for the
+    // parallel state above the parent if every region of it is now in a final state (SCXML's
+    // enterStates). A final child of the root raises nothing: the machine halts.
+    constexpr void entered_final(int f) {
+        if constexpr (completion::raises) {
+            int const p = tree.parent[static_cast<std::size_t>(f)];
+            if (p == root) return;
+            raise_done(p);
+            int const g = tree.parent[static_cast<std::size_t>(p)];
+            if (tree.kinds[static_cast<std::size_t>(g)] == kind::parallel && !entering(g) && in_final(g)) raise_done(g);
+        } else {
+            (void)f;
+        }
+    }
+
+    // The back end is about to enter the regions of parallel state g. Until it has entered them
+    // all (regions_entered), a final state entered in a region does not look at the regions
+    // after its own, which are not entered yet.
+    constexpr void regions_entering(int g) {
+        if constexpr (completion::parallel_count > 0) {
+            int const n = completion::parallel_number[static_cast<std::size_t>(g)];
+            if (n >= 0) entering_.flag[static_cast<std::size_t>(n)] = true;
+        } else {
+            (void)g;
+        }
+    }
+    // The back end has entered every region of parallel state g: done for g is raised if they are
+    // all final and the last was entered through a final state of its own (a composite region),
+    // where SCXML raises it, after the last final state entered.
+    constexpr void regions_entered(int g) {
+        if constexpr (completion::parallel_count > 0) {
+            int const n = completion::parallel_number[static_cast<std::size_t>(g)];
+            if (n >= 0) {
+                entering_.flag[static_cast<std::size_t>(n)] = false;
+                if (tree.kinds[static_cast<std::size_t>(last_child(g))] == kind::composite && in_final(g))
+                    raise_done(g);
+            }
+        } else {
+            (void)g;
+        }
+    }
+
+    // Runs the exit actions of every active state, innermost first, when the machine halts
+    // (SCXML's exitInterpreter).
+    constexpr void halt_if_final() {
+        if constexpr (layout::can_halt)
+            if (halted()) {
+                backend_hooks::exit_all(backend());
+                queue_.clear();
+            }
+    }
+
+private:
+    constexpr bool entering(int g) const {
+        if constexpr (completion::parallel_count > 0) {
+            int const n = completion::parallel_number[static_cast<std::size_t>(g)];
+            return n >= 0 && entering_.flag[static_cast<std::size_t>(n)];
+        } else {
+            return (void)g, false;
+        }
+    }
+    static constexpr int last_child(int s) {
+        int last = tree.first_child[static_cast<std::size_t>(s)];
+        while (tree.next_sibling[static_cast<std::size_t>(last)] >= 0)
+            last = tree.next_sibling[static_cast<std::size_t>(last)];
+        return last;
+    }
+    // SCXML's isInFinalState: a composite whose active child is final, a parallel state all of
+    // whose regions are.
+    constexpr bool in_final(int s) const {
+        auto const i = static_cast<std::size_t>(s);
+        if (tree.kinds[i] == kind::composite) {
+            auto const ordinal = config_.active[static_cast<std::size_t>(tree.slot[i])];
+            for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                if (tree.ordinal[static_cast<std::size_t>(c)] == ordinal)
+                    return tree.kinds[static_cast<std::size_t>(c)] == kind::final_state;
+            return false;
+        }
+        if (tree.kinds[i] == kind::parallel) {
+            for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+                if (!in_final(c)) return false;
+            return true;
+        }
+        return false;
+    }
+    // Queues done<S> for state s, if a row takes it.
+    constexpr void raise_done(int s) {
+        // clang-format off
+        [&]<std::size_t... S>(std::index_sequence<S...>) {
+            (void)((s == static_cast<int>(S) ? (raise_done_of<S>(), true) : false) || ...);
+        }(std::make_index_sequence<state_count>{});
+        // clang-format on
+    }
+    template <std::size_t S>
+    constexpr void raise_done_of() {
+        if constexpr (completion::trigger[S] >= 0)
+            (void)queue_(done<typename model::template tag_at<static_cast<int>(S)>>{});
+    }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/runtime/done_raising.hpp
+
+namespace bsc::detail {
+
+template <class Backend, class Chart, class Policy, class Observer, class Queue>
+class settling : public done_raising<Backend, Chart, Policy, Observer, Queue> {
+    using base = done_raising<Backend, Chart, Policy, Observer, Queue>;
+
+protected:
+    using base::base;
+    using typename base::model;
+    using typename base::layout;
+    using base::observed;
+    using base::defers;
+    using base::queue_;
+    using base::deferral_;
+    using base::deferred_;
+    using base::context_;
+    using base::observer_;
+    using base::backend;
+    using base::running;
+    using base::mark_running;
+    using base::start_without_failure;
+    using base::assume_idle_queue;
+    using base::record;
+    using base::end_run;
+    using base::end_run_by_exception;
+    using base::fire_or_defer;
+    using base::fire_queued;
+    using base::retry_deferred;
+    using base::halt_if_final;
+    using base::halted;
+
     template <int Trigger, class E>
     constexpr outcome process(E const& e) {
-        if (running())
-            return outcome::reentrant;
+        if (running()) return outcome::reentrant;
         start_without_failure();
-        if (halted())
-            return record(outcome::halted);
+        if (halted()) return record(outcome::halted);
         assume_idle_queue();
-        if (!Backend::marks_running_lazily || observed) mark_running();
+        if (!backend_hooks::marks_running_lazily<Backend> || observed) mark_running();
         // (As run_to_end, written out: a lambda holding the whole dispatch might not be inlined,
         // and a function for the body would be one more to instantiate per event type.)
         outcome settled = outcome::ignored;
@@ -8761,9 +9015,9 @@ private:
             latch_inputs(context_.value);
             bool fired = false;
             if constexpr (defers)
-                fired = fire_or_defer<Trigger>(e);
+                fired = this->template fire_or_defer<Trigger>(e);
             else
-                fired = backend().template fire_dispatched<Trigger>(e);
+                fired = backend_hooks::fire_dispatched<Trigger>(backend(), e);
             settled = finish(fired);
             commit_outputs(context_.value);
 #if defined(__cpp_exceptions)
@@ -8784,10 +9038,10 @@ private:
     template <std::size_t... I>
     constexpr int run_components(std::index_sequence<I...>) {
         constexpr auto const& components = layout::components;
-        bool const active_at_start[] = {backend().template is_active<components[I]>()...};
+        bool const active_at_start[] = {backend_hooks::is_active<components[I]>(backend())...};
         int fired = 0;
-        ((fired += active_at_start[I] && backend().template is_active<components[I]>() &&
-                   backend().template component_step<components[I]>()),
+        ((fired += active_at_start[I] && backend_hooks::is_active<components[I]>(backend()) &&
+                   backend_hooks::component_step<components[I]>(backend())),
          ...);
         return fired;
     }
@@ -8796,8 +9050,7 @@ private:
     // then the raised events one by one, each followed by its eventless transitions. Under a
     // scan policy eventless transitions are left to step(), and only raised events are processed.
     constexpr outcome finish(bool consumed) {
-        if constexpr (!Policy::settle_eventless)
-            return drain_queue(consumed);
+        if constexpr (!Policy::settle_eventless) return drain_queue(consumed);
         // The common case, kept inline: nothing raised, and no eventless transition to try.
         if constexpr (!layout::has_trigger(eventless_id) && !defers)
             if (queue_.empty() && !queue_.overflowed() && !(layout::can_halt && halted()))
@@ -8810,12 +9063,10 @@ private:
         for (;;) {
             if constexpr (layout::has_trigger(eventless_id)) {
                 // Up to max_eventless_steps transitions settle; one more means the chart cycles.
-                for (std::size_t steps = 0; !halted() && backend().template fire<eventless_id>(eventless{});)
-                    if (++steps > Policy::max_eventless_steps)
-                        return abandon();
+                for (std::size_t steps = 0; !halted() && backend_hooks::fire<eventless_id>(backend(), eventless{});)
+                    if (++steps > Policy::max_eventless_steps) return abandon();
             }
-            if (halted())
-                break;
+            if (halted()) break;
             if (queue_.empty()) {
                 // Then the deferred events, one at a time, each followed by its eventless
                 // transitions and what it raises.
@@ -8827,9 +9078,8 @@ private:
                 }
                 break;
             }
-            if (++internal_events > Policy::max_internal_events)
-                return abandon();
-            queue_.pop([&](auto const& ev) { fire_queued(ev); });
+            if (++internal_events > Policy::max_internal_events) return abandon();
+            queue_.pop([&](auto const& ev) { this->fire_queued(ev); });
         }
         return settled(consumed);
     }
@@ -8839,9 +9089,8 @@ private:
     constexpr outcome drain_queue(bool consumed) {
         std::size_t n = 0;
         for (; !queue_.empty() && !halted();) {
-            if (++n > Policy::max_internal_events)
-                return abandon();
-            queue_.pop([&](auto const& ev) { fire_queued(ev); });
+            if (++n > Policy::max_internal_events) return abandon();
+            queue_.pop([&](auto const& ev) { this->fire_queued(ev); });
         }
         if constexpr (defers) {
             // The deferred events a transition of this cycle released, each one microstep.
@@ -8850,7 +9099,7 @@ private:
                 if (!retry_deferred()) break;
                 for (; !queue_.empty() && !halted();) {
                     if (++n > Policy::max_internal_events) return abandon();
-                    queue_.pop([&](auto const& ev) { fire_queued(ev); });
+                    queue_.pop([&](auto const& ev) { this->fire_queued(ev); });
                 }
             }
         }
@@ -8883,212 +9132,454 @@ private:
         if constexpr (defers) deferral_.retry = 0;  // the deferred events stay, for a later change
         return outcome::livelock;
     }
-
-    // ---- for the explorer (through detail::access) -------------------------------------------
-    // The configuration with every byte that can never matter again reset to its initial
-    // value: the byte of an inactive composite that neither has history (a marker or a history
-    // state) nor lies below a deep one. Two machines with equal canonical configurations behave
-    // the same.
-    constexpr configuration_type canonical_configuration() const {
-        configuration_type c = config_;
-        if constexpr (tree.slots > 0) {
-            auto const active = active_flags();
-            for (std::size_t s = 1; s < state_count; ++s) {
-                if (tree.slot[s] < 0 || active[s]) continue;
-                bool remembered = tree.hist[s] != history::none || layout::history_child[s] >= 0;
-                for (int a = tree.parent[s]; a > 0 && !remembered; a = tree.parent[static_cast<std::size_t>(a)])
-                    remembered = tree.hist[static_cast<std::size_t>(a)] == history::deep ||
-                                 layout::deep_history_child[static_cast<std::size_t>(a)];
-                if (!remembered)
-                    c.active[static_cast<std::size_t>(tree.slot[s])] = layout::initial_bytes[static_cast<std::size_t>(tree.slot[s])];
-            }
-        }
-        return c;
-    }
-
-    // A timeout slot's age matters only while its state is active.
-    constexpr bool timeout_armed(std::size_t slot) const {
-        auto const active = active_flags();
-        if constexpr (layout::timeout_slots > 0)
-            return slot < layout::timeout_slot_state.size() &&
-                   active[static_cast<std::size_t>(layout::timeout_slot_state[slot])];
-        else
-            return false;
-    }
-
-    // The longest delay of any timeout row: past it, a state's age no longer matters.
-    constexpr duration longest_timeout() const {
-        duration longest{};
-        for (duration delay : row_delays())
-            if (delay > longest) longest = delay;
-        return longest;
-    }
-
-    // Each row's delay: a timeout row's, zero for the others.
-    constexpr std::array<duration, static_cast<std::size_t>(model::R)> row_delays() const {
-        std::array<duration, static_cast<std::size_t>(model::R)> delays{};
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (
-                [&] {
-                    if constexpr (layout::is_timeout_row(static_cast<int>(I)))
-                        delays[I] = row<static_cast<int>(I)>().trigger_value.delay;
-                }(),
-                ...);
-        }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
-        return delays;
-    }
-
-    friend struct access;
-
-protected:
-    struct no_chart {};
-    using stored_chart_type = std::conditional_t<is_shared_chart<chart_type>, no_chart, chart_type>;
-    static constexpr stored_chart_type stored_chart(chart_type const& chart) {
-        if constexpr (is_shared_chart<chart_type>)
-            return (void)chart, no_chart{};
-        else
-            return chart;
-    }
-    // The members whose alignment is known to be large first, the context next to the bytes, so
-    // that a small machine has no padding inside.
-    [[no_unique_address]] stored_chart_type chart_;
-    [[no_unique_address]] Queue queue_{};
-    [[no_unique_address]] std::conditional_t<keeps_clock, duration, no_clock> clock_{};
-    [[no_unique_address]] timeout_slots<static_cast<std::size_t>(layout::timeout_slots)> armed_{};  // entry times
-    // Whether a guard or action of the chart can throw (detail::chart_may_throw).
-    static constexpr bool may_throw = chart_may_throw<model, Queue>();
-    // The first failure of the current run that no transition took.
-    [[no_unique_address]] std::conditional_t<may_throw, failure_slot, no_failure_slot> failure_;
-    // The failure of the last run, for last_failure(), under a policy that does not rethrow.
-    [[no_unique_address]] std::conditional_t<Policy::rethrow_failures || !may_throw, no_failure_slot, failure_slot> reported_;
-    [[no_unique_address]] whole<Observer> observer_;
-    [[no_unique_address]] whole<context_type> context_;
-    configuration_type config_{};
-    [[no_unique_address]] entering_flags<completion::parallel_count> entering_;
-    // The events deferred (`/ bsc::defer`), oldest first, and the state of their retries.
-    [[no_unique_address]] std::conditional_t<
-        defers, event_queue<deferred_capacity_of<Policy, defers>, typename model::events>, no_deferral> deferred_;
-    [[no_unique_address]] std::conditional_t<defers, deferral_state, no_deferral> deferral_;
-    // The outcome of the last run (low bits), the mark of a run under way (running_bit) and
-    // whether the run under way has kept a failure (failed_bit: failure_ holds it). An
-    // enumeration and not a std::uint8_t: a store through an unsigned char may alias any object,
-    // so the compiler would reload the context after every mark.
-    enum class run_status : std::uint8_t {};
-    static constexpr std::uint8_t running_bit = 0x80;
-    static constexpr std::uint8_t failed_bit = 0x40;
-    static constexpr std::uint8_t bits(run_status s) { return static_cast<std::uint8_t>(s); }
-    run_status status_ = static_cast<run_status>(outcome::ignored);
-    // A cycle has run: clock_ is the caller's time.
-    [[no_unique_address]] std::conditional_t<keeps_clock, bool, no_clock_start> clock_started_{};
 };
 
 }  // namespace bsc::detail
-// end include/bsc/runtime/driver.hpp
-// begin include/bsc/runtime/queue_for.hpp
+// end include/bsc/detail/runtime/settling.hpp
+// begin include/bsc/event_set.hpp
+// bsc::event_set<Chart>: the events of a chart, named and numbered at compile time, so that a
+// program can dispatch an event it received as text (an operator panel, a command line) or as a
+// number (a field bus, a network message):
+//
+//   m.dispatch_by_name("ON_P");                      // outcome::unknown_event if no event is so named
+//   m.dispatch_by_number(3, decode);                 // decode(std::type_identity<E>{}) builds E
+//   bsc::event_set<decltype(chart)>::names           // {"ON_P", "OFF_P", ...}
+//
+// An event's name is its static member `name` when it has one (`static constexpr
+// std::string_view name = "ON_P";`), otherwise its type's unqualified name (bsc::name_of). Its
+// number is its position among the chart's events: the trigger events of the rows, in the order
+// in which they first appear, without those the environment cannot send (detail::reserved_event:
+// bsc::done<S> and bsc::action_failed, which only the machine raises, and bsc::any_event, a tag).
+// So "done.state.S" and "*" name no event here, and dispatch_by_name answers
+// outcome::unknown_event for them. Two events of a chart with the same name are an error
+// (bsc::error::duplicate_event_name).
+
+#include <array>
+#include <cassert>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+
+namespace bsc {
+
+namespace detail {
+
+// The first pair of events of Events with the same name, as positions (-1, -1 if none).
+template <class... Events>
+constexpr std::pair<int, int> duplicate_event_name() {
+    constexpr std::array<std::string_view, sizeof...(Events)> names{event_name<Events>...};
+    for (std::size_t i = 0; i < names.size(); ++i)
+        for (std::size_t j = i + 1; j < names.size(); ++j)
+            if (names[i] == names[j]) return {static_cast<int>(i), static_cast<int>(j)};
+    return {-1, -1};
+}
+
+// The events a chart may take that the environment cannot send: bsc::done<S>, raised by the
+// machine when S completes, bsc::action_failed, raised when one of its guards or actions throws,
+// and bsc::any_event, the tag that a row on every event receives instead of the event. A dispatch
+// of one from outside would fake what only the machine knows (bsc::error::event_not_dispatchable).
+template <class E>
+inline constexpr bool reserved_event = false;
+template <class S>
+inline constexpr bool reserved_event<done<S>> = true;
+template <>
+inline constexpr bool reserved_event<action_failed> = true;
+template <>
+inline constexpr bool reserved_event<any_event> = true;
+
+// The events that can be sent by name or number: the chart's, without the reserved ones.
+template <class Events>
+struct sendable_events;
+template <class... Events>
+struct sendable_events<type_list<Events...>> {
+    using type = concat_t<std::conditional_t<reserved_event<Events>, type_list<>, type_list<Events>>...>;
+};
+
+template <class Events>
+struct event_set_of;
+template <class... Events>
+struct event_set_of<type_list<Events...>> {
+    static constexpr std::size_t size = sizeof...(Events);
+    static constexpr std::array<std::string_view, size> names{event_name<Events>...};
+
+    // Calls f(std::type_identity<E>{}) for the event numbered `number` (< size).
+    template <class F>
+    static constexpr decltype(auto) visit(std::size_t number, F&& f) {
+        assert(number < size);
+        return visit_from<0>(number, f);
+    }
+
+private:
+    template <std::size_t I, class F>
+    static constexpr decltype(auto) visit_from(std::size_t number, F& f) {
+        if constexpr (I + 1 < size) {
+            if (number != I) return visit_from<I + 1>(number, f);
+        }
+        return f(std::type_identity<at<I, type_list<Events...>>>{});
+    }
+};
+
+// Reports the first two events of the list with the same name; true either way, so that the
+// static_assert that calls it adds no error of its own.
+template <class... Events>
+constexpr bool check_event_names(type_list<Events...>) {
+    constexpr auto duplicate = duplicate_event_name<Events...>();
+    if constexpr (duplicate.first >= 0)
+        report<error::duplicate_event_name<at<static_cast<std::size_t>(duplicate.first), type_list<Events...>>,
+                                           at<static_cast<std::size_t>(duplicate.second), type_list<Events...>>>>();
+    return true;
+}
+
+}  // namespace detail
+
+/// The events of Chart, named and numbered at compile time (see the top of this header).
+/// Requirements: no two events of the chart have the same event_name.
+template <class Chart>
+struct event_set {
+private:
+    using model = detail::chart_model<std::remove_cv_t<Chart>>;
+    using sendable = typename detail::sendable_events<typename model::events>::type;
+    using base = detail::event_set_of<sendable>;
+    static_assert(detail::check_event_names(sendable{}));
+
+public:
+    /// The events the environment may send, as a type list in number order: the chart's trigger
+    /// events without bsc::done<S>, bsc::action_failed and bsc::any_event.
+    using events = sendable;
+    /// How many they are.
+    static constexpr std::size_t size = base::size;
+    /// Their names, by number.
+    static constexpr std::array<std::string_view, size> names = base::names;
+
+    /// The number of event E (bsc::error::not_an_event_of_the_chart if E is none of `events`).
+    template <class E>
+    static constexpr std::size_t number_of = [] {
+        constexpr int n = detail::position_in<E, sendable>::value;
+        if constexpr (n < 0) detail::report<error::not_an_event_of_the_chart<E>>();
+        return static_cast<std::size_t>(n < 0 ? 0 : n);
+    }();
+
+    /// The number of the event called `name` (exactly, case included), or nothing.
+    static constexpr std::optional<std::size_t> find(std::string_view name) {
+        for (std::size_t i = 0; i < size; ++i)
+            if (names[i] == name) return i;
+        return std::nullopt;
+    }
+
+    /// Why `name` names no event: "no event of this chart is named 'X'; its events are A, B, C".
+    static std::string unknown(std::string_view name) {
+        std::string text = "no event of this chart is named '";
+        text.append(name).append(size == 0 ? "'; it has no events" : "'; its events are ");
+        for (std::size_t i = 0; i < size; ++i) text.append(i == 0 ? "" : ", ").append(names[i]);
+        return text;
+    }
+
+    /// Calls f(std::type_identity<E>{}) for the event numbered `number`.
+    /// Requirements: number < size.
+    template <class F>
+    static constexpr decltype(auto) visit(std::size_t number, F&& f) {
+        return base::visit(number, f);
+    }
+};
+
+}  // namespace bsc
+// end include/bsc/event_set.hpp
+
+namespace bsc::detail {
+
+// The observer type a machine's deduction guide takes from its constructor's arguments
+// (chart[, context[, observer]]): both back ends deduce through this one rule.
+template <class... Arguments>
+struct observer_argument {
+    using type = no_observer;
+};
+template <class Context, class Observer>
+struct observer_argument<Context, Observer> {
+    using type = Observer;
+};
+template <class... Arguments>
+using observer_argument_t = typename observer_argument<Arguments...>::type;
+
+// The decoder of dispatch_by_name when none is given: builds no event (each is default-constructed).
+struct no_decoder {};
+
+template <class Backend, class Chart, class Policy, class Observer, class Queue>
+class driver : public settling<Backend, Chart, Policy, Observer, Queue> {
+    using base = settling<Backend, Chart, Policy, Observer, Queue>;
+
+protected:
+    using typename base::model;
+    using typename base::layout;
+    using base::tree;
+    using base::root;
+    using base::state_count;
+    using base::observed;
+    using base::keeps_clock;
+    using base::delays_events;
+    using base::may_throw;
+    using base::config_;
+    using base::queue_;
+    using base::armed_;
+    using base::context_;
+    using base::observer_;
+    using base::reported_;
+    using base::clock_;
+    using base::clock_started_;
+    using base::backend;
+    using base::active_flags;
+    using base::cycle_time;
+    using base::running;
+    using base::mark_running;
+    using base::kept_outcome;
+    using base::record;
+    using base::end_run;
+    using base::run_to_end;
+    using base::assume_idle_queue;
+    using base::process;
+    using base::finish;
+    using base::drain_queue;
+    using base::run_components;
+
+public:
+    using typename base::chart_type;
+    using typename base::context_type;
+    using typename base::configuration_type;
+    using typename base::event_types;
+    using typename base::policy_type;
+    using typename base::observer_type;
+    using base::queue_capacity;
+
+    /// One BSC execution cycle at time `now` (the BSC paper's execution cycle): timers are
+    /// updated, input channels latched; then each component (the root and every region of a
+    /// parallel state), in document order, fires at most one eventless or timeout transition,
+    /// its actions' writes visible at once to the components after it; events raised meanwhile
+    /// are processed; output channels are committed. Components entered during the cycle first
+    /// run in the next one. Time never runs backwards for the machine: an earlier `now` is
+    /// reported and ignored.
+    constexpr step_report step(duration now) {
+        step_report report;
+        if (running()) {
+            report.status = outcome::reentrant;
+            return report;
+        }
+        if (halted()) {
+            report.status = record(outcome::halted);
+            return report;
+        }
+        assume_idle_queue();
+        mark_running();
+        report.status = end_run(run_to_end([&] { return cycle(now, report); }));
+        return report;
+    }
+
+private:
+    // The cycle of step(now), which has marked the machine running; returns its outcome.
+    // Out of line, so that step stays small enough to be inlined where it is called: GCC 12,
+    // inlining the cycle into step instead, returns the report from a call, assembled in
+    // memory by narrow stores and read back by wider loads, which stall (docs/performance.md,
+    // rule "The cycle out of line").
+    BSC_DETAIL_NOINLINE constexpr outcome cycle(duration now, step_report& report) {
+        if constexpr (keeps_clock) {
+            if (!clock_started_) {
+                // The clock starts at the first cycle, wherever the caller's time starts; what was
+                // armed before it (at construction, by a dispatch) counts from this cycle too.
+                clock_started_ = true;
+                clock_ = now;
+                for (auto& armed : armed_) armed = now;
+                if constexpr (delays_events) queue_.start_clock(now);
+            } else if (now < clock_) {
+                report.clock_went_backwards = true;  // the cycle runs at the clock's time
+            } else {
+                clock_ = now;
+                if constexpr (delays_events) queue_.set_clock(now);
+            }
+            now = clock_;
+        }
+        notify<model, Observer>::cycle_begins(observer_.value, now);
+        update_timers(context_.value, now);
+        latch_inputs(context_.value);
+        if constexpr (layout::has_trigger(any_condition)) report.transitions = run_components();
+        // The delayed events due now, as raised events (bsc::raise_after).
+        if constexpr (delays_events) queue_.release_due(now);
+        outcome const drained = drain_queue(report.transitions > 0);
+        commit_outputs(context_.value);
+        notify<model, Observer>::cycle_ends(observer_.value);
+        return drained;
+    }
+
+public:
+    /// The time of the last cycle (the machine's clock; zero before the first cycle). A machine
+    /// keeps a clock when its chart has timeouts, timers or delayed events, or when its policy
+    /// says keep_clock (bsc::default_policy does; bsc::lean_policy does not).
+    constexpr duration now() const {
+        if constexpr (!keeps_clock) detail::report<error::clock_not_kept<Policy>>();
+        return cycle_time();
+    }
+
+    /// Processes e to completion: the transitions it enables, then eventless transitions and
+    /// raised events until none remain. Fails to compile if no transition handles E, or if E
+    /// is an event the environment cannot send (bsc::done<S>, bsc::action_failed,
+    /// bsc::any_event: bsc::error::event_not_dispatchable).
+    template <class E>
+    constexpr outcome dispatch(E const& e) {
+        constexpr int trigger = model::template trigger_of<E>;
+        if constexpr (reserved_event<E>) {
+            detail::report<error::event_not_dispatchable<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger == -2) {
+            detail::report<error::event_in_two_families<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger < 0) {
+            detail::report<error::unhandled_event<E>>();
+            return outcome::ignored;
+        } else {
+            return this->template process<trigger>(e);
+        }
+    }
+
+    /// As dispatch(e), but an event type that no transition handles is accepted and ignored.
+    template <class E>
+    constexpr outcome dispatch(E const& e, allow_unhandled_t) {
+        constexpr int trigger = model::template trigger_of<E>;
+        if constexpr (reserved_event<E>) {
+            detail::report<error::event_not_dispatchable<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger == -2) {
+            detail::report<error::event_in_two_families<E>>();
+            return outcome::ignored;
+        } else if constexpr (trigger < 0) {
+            if (running()) return outcome::ignored;  // inside a run: nothing to record
+            if (!halted()) notify<model, Observer>::dispatching(observer_.value, e);
+            return record(outcome::ignored);
+        } else {
+            return this->template process<trigger>(e);
+        }
+    }
+
+    /// Dispatches the event of the chart called `name` (bsc::event_set: its static member
+    /// `name`, or its type's name), built by `decode(std::type_identity<E>{})` when the decoder
+    /// accepts that call and default-constructed otherwise. outcome::unknown_event, and nothing
+    /// processed, if no event of the chart the environment may send is so named (so for
+    /// "done.state.S" and "*": bsc::event_set leaves them out); outcome::reentrant, as dispatch,
+    /// from inside one of the machine's own guards or actions.
+    template <class Decode = no_decoder>
+    constexpr outcome dispatch_by_name(std::string_view name, Decode&& decode = {}) {
+        // An unknown name is a number past the last event: dispatch_by_number refuses both alike.
+        return dispatch_by_number(event_set<Chart>::find(name).value_or(event_set<Chart>::size), decode);
+    }
+
+    /// As dispatch_by_name, for the event numbered `number` (bsc::event_set<Chart>::number_of).
+    template <class Decode = no_decoder>
+    constexpr outcome dispatch_by_number(std::size_t number, Decode&& decode = {}) {
+        if (running()) return outcome::reentrant;
+        if (number >= event_set<Chart>::size) return record(outcome::unknown_event);
+        if constexpr (event_set<Chart>::size > 0)
+            return event_set<Chart>::visit(number, [&]<class E>(std::type_identity<E> event) {
+                if constexpr (std::is_invocable_r_v<E, Decode&, std::type_identity<E>>) {
+                    return dispatch(static_cast<E>(decode(event)));
+                } else if constexpr (std::is_default_constructible_v<E>) {
+                    return dispatch(E{});
+                } else {
+                    detail::report<error::event_not_constructible<E>>();
+                    return outcome::ignored;
+                }
+            });
+        else
+            return (void)decode, record(outcome::unknown_event);  // not reached: no number is below 0
+    }
+
+    /// True if state S is active.
+    template <class S>
+    constexpr bool is() const {
+        constexpr int s = model::template index_of_state<S>;
+        if constexpr (s < 0) {
+            detail::report<error::queried_state_not_in_chart<S>>();
+            return false;
+        } else {
+            return backend_hooks::is_active<s>(backend());
+        }
+    }
+
+    /// True once a final child of the root is active: the machine processes nothing more.
+    using base::halted;
+
+    /// The names of the active states, outermost first, in document order.
+    constexpr auto active_states() const {
+        bsc::state_names<state_count> names;
+        auto const active = active_flags();
+        for (std::size_t s = 1; s < state_count; ++s)
+            if (active[s]) names.push_back(state_names_of<model>[s]);
+        return names;
+    }
+
+    /// The outcome of the last dispatch (or of construction).
+    constexpr outcome last_outcome() const {
+        if constexpr (!Policy::keep_last_outcome) detail::report<error::last_outcome_not_kept<Policy>>();
+        return kept_outcome();
+    }
+
+    /// The exception of the last dispatch, cycle or construction whose outcome was
+    /// outcome::failed (a policy whose rethrow_failures is false); null otherwise.
+    std::exception_ptr last_failure() const {
+        if constexpr (!Policy::keep_last_outcome) detail::report<error::last_outcome_not_kept<Policy>>();
+        if constexpr (!Policy::rethrow_failures && may_throw)
+            if (kept_outcome() == outcome::failed) return reported_.get();
+        return nullptr;
+    }
+
+    /// The context as the environment sees it: const. Inputs are set through it (input::set is
+    /// const: the plant's wire), outputs and variables read; only the chart's actions write
+    /// outputs and variables (docs/api.md, "Data").
+    constexpr context_type const& context() const { return context_.value; }
+    constexpr configuration_type const& active_configuration() const { return config_; }
+    constexpr Observer& observer() { return observer_.value; }
+    constexpr Observer const& observer() const { return observer_.value; }
+
+protected:
+    // Checks the back end's side of the contract (detail/runtime/backend.hpp) where Backend is
+    // complete: a back end without a hook fails here, naming machine_backend and the hook.
+    constexpr driver(Chart const& chart, context_type context, Observer observer)
+        : base(chart, std::move(context), std::move(observer)) {
+        static_assert(machine_backend<Backend>, "a bsc back end supplies every hook of detail/runtime/backend.hpp");
+    }
+
+
+    // Enters the initial configuration (entry actions run) and settles eventless transitions.
+    // Called by the back end's constructor, once the back end exists.
+    constexpr void start() {
+        mark_running();
+        end_run(run_to_end([&] {
+            if constexpr (tree.slots > 0) config_.active = layout::initial_bytes;
+            latch_inputs(context_.value);
+            backend_hooks::enter_initial(backend());
+            outcome const settled = finish(false);
+            commit_outputs(context_.value);
+            return settled;
+        }));
+    }
+
+private:
+    using driver_type = driver;  // what detail::access reaches a machine's data through
+    friend struct access;
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/runtime/driver.hpp
+// begin include/bsc/detail/runtime/queue_for.hpp
 // The internal event queue a machine of a chart needs: none if no action of the chart can raise
 // an event (detail::raised_by_chart) and the chart takes neither bsc::action_failed nor a done
 // event; otherwise one that holds only the events that can be raised (detail::queued_events).
 
 #include <type_traits>
 
-// begin include/bsc/dsl/delayed.hpp
-// Delayed events to self: the actions bsc::raise_after and bsc::cancel_delayed. They reach the
-// machine's pending events (runtime/delayed_events.hpp) through the raise argument that every
-// action receives; a chart that uses them gets a queue with slots for them (runtime/queue_for.hpp).
-
-#include <cstdlib>
-#include <stdexcept>
-#include <type_traits>
-#include <utility>
-
-
-namespace bsc::detail {
-
-// bsc::raise_after and bsc::cancel_delayed: actions that reach the machine's delayed events
-// (runtime/delayed_events.hpp) through the raise argument.
-template <class E>
-struct delayed_raise : action_base {
-    duration delay;
-    E event;
-    int id;
-    template <class Ctx, class Ev, class Raise>
-    constexpr void operator()(Ctx&, Ev const&, Raise& raise) const noexcept(std::is_nothrow_copy_constructible_v<E>) {
-        (void)raise.schedule(delay, event, id);
-    }
-};
-struct cancel_delayed_action : action_base {
-    int id;
-    template <class Ctx, class Ev, class Raise>
-    constexpr void operator()(Ctx&, Ev const&, Raise& raise) const noexcept {
-        raise.cancel(id);
-    }
-};
-
-// Deliberately not constexpr (as bsc_after_negative_delay in dsl/row.hpp): in a constexpr chart,
-// reaching it is the compile error, and its name says what is wrong; a chart built at run time
-// throws (or aborts without exceptions). 0 is "no id": bsc::raise_after without an id sends
-// under it, and nothing can be cancelled by it.
-[[noreturn]] inline void bsc_cancel_delayed_id_zero_names_no_delayed_event() {
-#if defined(__cpp_exceptions)
-    throw std::invalid_argument(
-        "bsc::cancel_delayed: id 0 names no delayed event (it is the id of none); send with "
-        "bsc::raise_after(delay, e, id) and cancel with the same nonzero id");
-#else
-    std::abort();
-#endif
-}
-
-template <class A>
-inline constexpr bool is_delayed_raise = false;
-template <class E>
-inline constexpr bool is_delayed_raise<delayed_raise<E>> = true;
-
-// Whether an action sends or cancels delayed events: then the machine keeps slots for them.
-template <class A>
-inline constexpr bool sends_delayed = false;
-template <class E>
-inline constexpr bool sends_delayed<delayed_raise<E>> = true;
-template <>
-inline constexpr bool sends_delayed<cancel_delayed_action> = true;
-template <class... As>
-inline constexpr bool sends_delayed<action_seq<As...>> = (sends_delayed<As> || ...);
-template <class A>
-inline constexpr bool sends_delayed<state_action<A>> = sends_delayed<A>;
-
-}  // namespace bsc::detail
-
-namespace bsc {
-
-/// An action that raises `e` to the machine after `delay` (SCXML's `<send delay>` to itself):
-/// the first `step(now)` whose time is at least the machine's clock when the action ran plus
-/// `delay` processes it, after the components' turns, as a raised event. It is not tied to the
-/// state that sent it; `bsc::cancel_delayed(id)` cancels it while it is pending (an id of 0 is
-/// none). The machine keeps `Policy::delayed_capacity` pending events; one more is dropped and
-/// the run reports `outcome::queue_overflow`. An event whose due time would lie past
-/// bsc::duration::max() never comes due, and is not kept (runtime/delayed_events.hpp).
-/// Requirements: `e` is an event of the chart (or of a family of one); 0 <= delay <=
-/// bsc::duration::max() (as for bsc::after: otherwise a constexpr chart does not compile, and
-/// one built at run time throws std::invalid_argument / std::out_of_range).
-template <class Rep, class Period, class E>
-constexpr auto raise_after(std::chrono::duration<Rep, Period> delay, E e, int id = 0) {
-    return detail::delayed_raise<E>{{}, detail::checked_delay(delay), std::move(e), id};
-}
-
-/// An action that cancels the delayed events still pending under `id` (bsc::raise_after).
-/// Requirements: id != 0 (0 is no id; a constexpr chart with cancel_delayed(0) does not compile,
-/// the error naming bsc_cancel_delayed_id_zero_names_no_delayed_event, and one built at run time
-/// throws std::invalid_argument).
-constexpr auto cancel_delayed(int id) {
-    if (id == 0) detail::bsc_cancel_delayed_id_zero_names_no_delayed_event();
-    return detail::cancel_delayed_action{{}, id};
-}
-
-}  // namespace bsc
-// end include/bsc/dsl/delayed.hpp
-// begin include/bsc/runtime/delayed_events.hpp
+// begin include/bsc/detail/runtime/delayed_events.hpp
 // Delayed events to self (SCXML's <send delay> to the machine): bsc::raise_after(delay, e, id)
 // schedules e, bsc::cancel_delayed(id) cancels what was scheduled under id. The internal queue
-// of a chart that sends them (runtime/queue_for.hpp) is a delaying_queue: the ring of raised
+// of a chart that sends them (detail/runtime/queue_for.hpp) is a delaying_queue: the ring of raised
 // events plus a fixed number of slots, each an event with the time it comes due. step(now)
 // moves the events due into the ring, earliest first; a pending event does not belong to the
 // state that sent it, so leaving that state does not cancel it.
@@ -9174,7 +9665,8 @@ public:
         for (;;) {
             slot* next = nullptr;
             for (auto& s : slots_)
-                if (s.pending && s.due <= now && (next == nullptr || s.due < next->due || (s.due == next->due && s.order < next->order)))
+                if (s.pending && s.due <= now &&
+                    (next == nullptr || s.due < next->due || (s.due == next->due && s.order < next->order)))
                     next = &s;
             if (next == nullptr) return;
             next->pending = false;
@@ -9242,7 +9734,7 @@ private:
 };
 
 }  // namespace bsc::detail
-// end include/bsc/runtime/delayed_events.hpp
+// end include/bsc/detail/runtime/delayed_events.hpp
 
 namespace bsc::detail {
 // What the actions of the chart raise (detail::raised_by, one pass over the rows): type_list<>
@@ -9251,21 +9743,25 @@ namespace bsc::detail {
 // (A class, not an alias template: GCC 12 rejects the lambda in an alias template.)
 template <class Model>
 struct raised_by_chart {
+    // clang-format off
     using type = typename decltype([]<class... Rows>(type_list<Rows...>) {
         using context = typename Model::chart_context;
         // (Entry and exit rows see no event; raised_by ignores it for them.)
         return std::type_identity<join_raised<decltype(raised_by<context, row_event_t<Rows>, raise_stand_in>(
             static_cast<decltype(Rows::action) const*>(nullptr)))...>>{};
     }(typename Model::row_types{}))::type;
+    // clang-format on
 };
 
 // Whether an action of the chart sends or cancels delayed events (bsc::raise_after): then its
 // queue keeps slots for them.
 template <class Model>
 constexpr bool chart_sends_delayed() {
+    // clang-format off
     return []<class... Rows>(type_list<Rows...>) {
         return (sends_delayed<std::remove_cv_t<decltype(Rows::action)>> || ...);
     }(typename Model::row_types{});
+    // clang-format on
 }
 
 // The events the queue holds: those the actions raise, where each action says which
@@ -9280,12 +9776,14 @@ struct queued_events {
 template <class Model, class... Raised>
 struct queued_events<Model, type_list<Raised...>> {
     template <class E>
-    static constexpr bool kept = is_done_event<E> || BSC_DETAIL_IS_SAME(E, action_failed) ||
-                                 position_in<E, type_list<Raised...>>::value >= 0;
+    static constexpr bool kept =
+        is_done_event<E> || BSC_DETAIL_IS_SAME(E, action_failed) || position_in<E, type_list<Raised...>>::value >= 0;
     using type = std::conditional_t<(... && (position_in<Raised, typename Model::events>::value >= 0)),
+                                    // clang-format off
                                     decltype([]<class... Es>(type_list<Es...>) {
                                         return concat_t<std::conditional_t<kept<Es>, type_list<Es>, type_list<>>...>{};
                                     }(typename Model::events{})),
+                                    // clang-format on
                                     typename Model::events>;
 };
 
@@ -9294,7 +9792,9 @@ struct queued_events<Model, type_list<Raised...>> {
 // event whose default constructor is not constexpr would then keep a machine out of constant
 // expressions, or run code of its own where none ran before.
 template <class E>
-concept constant_default = requires { typename std::bool_constant<(static_cast<void>(E{}), true)>; };
+concept constant_default = requires {
+    typename std::bool_constant<(static_cast<void>(E{}), true)>;
+};
 
 // The queue of the events Events: a single_event_queue for one trivially copyable event type
 // whose default construction is a constant, an event_queue otherwise.
@@ -9335,8 +9835,8 @@ using queue_for = std::conditional_t<
                              completion<Model>::raises,
                          Model, Policy, Raised>::type>;
 }  // namespace bsc::detail
-// end include/bsc/runtime/queue_for.hpp
-// begin include/bsc/runtime/rejected.hpp
+// end include/bsc/detail/runtime/queue_for.hpp
+// begin include/bsc/detail/runtime/rejected.hpp
 // A machine declared on a chart that failed its checks (detail::rejected_chart): the chart's
 // errors are already reported where the chart is declared, so the machine accepts whatever
 // the program does with it and does nothing, instead of burying the chart's errors under
@@ -9353,7 +9853,7 @@ namespace bsc::detail {
 // type), alike: either way the chart's own errors are the only ones.
 template <class Chart>
 concept rejected = is_rejected_chart<std::remove_cv_t<Chart>> ||
-                   (is_chart_ref<std::remove_cv_t<Chart>> && is_rejected_chart<typename std::remove_cv_t<Chart>::chart_type>);
+    (is_chart_ref<std::remove_cv_t<Chart>>&& is_rejected_chart<typename std::remove_cv_t<Chart>::chart_type>);
 
 template <class Chart>
 class inert_machine {
@@ -9366,15 +9866,25 @@ public:
     constexpr explicit inert_machine(Arguments const&...) {}
 
     template <class... Arguments>
-    constexpr outcome dispatch(Arguments const&...) { return outcome::ignored; }
+    constexpr outcome dispatch(Arguments const&...) {
+        return outcome::ignored;
+    }
     template <class... Arguments>
-    constexpr outcome dispatch_by_name(Arguments const&...) { return outcome::ignored; }
+    constexpr outcome dispatch_by_name(Arguments const&...) {
+        return outcome::ignored;
+    }
     template <class... Arguments>
-    constexpr outcome dispatch_by_number(Arguments const&...) { return outcome::ignored; }
+    constexpr outcome dispatch_by_number(Arguments const&...) {
+        return outcome::ignored;
+    }
     template <class... Arguments>
-    constexpr auto step(Arguments const&...) { return 0; }
+    constexpr auto step(Arguments const&...) {
+        return 0;
+    }
     template <class... States>
-    constexpr bool is() const { return false; }
+    constexpr bool is() const {
+        return false;
+    }
     constexpr bool halted() const { return false; }
     constexpr outcome last_outcome() const { return outcome::ignored; }
     std::exception_ptr last_failure() const { return nullptr; }
@@ -9387,8 +9897,8 @@ private:
 };
 
 }  // namespace bsc::detail
-// end include/bsc/runtime/rejected.hpp
-// begin include/bsc/runtime/selection.hpp
+// end include/bsc/detail/runtime/rejected.hpp
+// begin include/bsc/detail/runtime/selection.hpp
 // The transitions one microstep selects in parallel regions, and SCXML's conflict resolution
 // over them (removeConflictingTransitions): both back ends select into this buffer and keep
 // what resolve_conflicts keeps.
@@ -9440,7 +9950,7 @@ constexpr selection<Capacity> resolve_conflicts(selection<Capacity> const& selec
 }
 
 }  // namespace bsc::detail
-// end include/bsc/runtime/selection.hpp
+// end include/bsc/detail/runtime/selection.hpp
 
 
 namespace bsc {
@@ -9450,13 +9960,15 @@ namespace bsc {
 /// event to completion; step(now) runs one BSC execution cycle. No heap, no virtual calls,
 /// no RTTI, no exceptions; usable in constant expressions.
 ///
-/// Requirements: `Chart` comes from bsc::make_chart; `Policy` has the members of
-/// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
-template <class Chart, class Policy = default_policy, class Observer = no_observer>
+/// Requirements: `Chart` is a bsc::statechart (the type of a chart from bsc::make_chart, or
+/// bsc::chart_ref); `Policy` is a bsc::machine_policy (bsc::default_policy, or a class derived from
+/// it); `Observer` implements any subset of the hooks in observer.hpp.
+template <statechart Chart, machine_policy Policy = default_policy, class Observer = no_observer>
 class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, Policy, Observer,
                                       detail::queue_for<Chart, Policy>> {
     using base = detail::driver<machine, Chart, Policy, Observer, detail::queue_for<Chart, Policy>>;
     friend base;
+    friend detail::backend_hooks;  // the driver calls the hooks through it (detail/runtime/backend.hpp)
     // A dispatch marks the machine running only where a guard or a transition is about to run
     // (guard_holds, fire_from), or, in a chart with parallel states, at each microstep: an
     // ignored event in a chart without parallel states writes nothing.
@@ -9469,7 +9981,6 @@ class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, P
     using base::context_;
     using base::config_;
     using base::queue_;
-    using base::armed_;
     using base::observer_;
     using notify = detail::notify<model, Observer>;
     using base::observed;
@@ -9478,7 +9989,8 @@ public:
     using typename base::context_type;
     /// Enters the initial configuration (entry actions run) and settles eventless transitions.
     /// (The chart parameter's type_identity leaves deduction to the guides below.)
-    constexpr explicit machine(std::type_identity_t<Chart> const& chart, context_type context = {}, Observer observer = {})
+    constexpr explicit machine(std::type_identity_t<Chart> const& chart, context_type context = {},
+                               Observer observer = {})
         : base(chart, std::move(context), std::move(observer)) {
         this->start();
     }
@@ -9515,7 +10027,8 @@ private:
     // (Where E is the row's own event, e is passed as it is: most rows of most charts, and no
     // conversion to instantiate.)
     template <int Row, class E>
-    static constexpr bool sees_itself = BSC_DETAIL_IS_SAME(E, detail::row_event_t<typename model::template row_at<Row>>);
+    static constexpr bool sees_itself = BSC_DETAIL_IS_SAME(E,
+                                                           detail::row_event_t<typename model::template row_at<Row>>);
     template <int Row, class E>
     static constexpr decltype(auto) seen_by(E const& e) {
         return detail::event_as<detail::row_event_t<typename model::template row_at<Row>>>(e);
@@ -9547,18 +10060,19 @@ private:
     template <detail::row_kind K, int S>
     constexpr void run_state_actions() {
         constexpr auto const& actions = plan::template rows_of<K, S>;
+        // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             (this->run(this->template row<actions[I]>().action, context_.value, queue_), ...);
         }(std::make_index_sequence<actions.size()>{});
+        // clang-format on
     }
 
     template <int S>
     constexpr void run_entry() {
         if constexpr (plan::count_rows(detail::row_kind::entry, S) > 0) run_state_actions<detail::row_kind::entry, S>();
         if constexpr (tree.kinds[S] == detail::kind::final_state) this->entered_final(S);
-        // Its timeouts count from its entry, at the time of the last cycle.
-        constexpr int first_slot = plan::timeout_slot[S];
-        for (int k = 0; k < plan::timeout_slot_count[S]; ++k) armed_[static_cast<std::size_t>(first_slot + k)] = this->cycle_time();
+        if constexpr (plan::timeout_slot_count[S] > 0)
+            this->arm_timeouts(plan::timeout_slot[S], plan::timeout_slot_count[S]);
         if constexpr (observed) notify::template entered<S>(observer_.value);
     }
 
@@ -9571,9 +10085,11 @@ private:
     template <int S, class F>
     static constexpr void for_each_child(F&& f) {
         constexpr auto const& children = plan::template children<S>;
+        // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             (f(detail::int_c<children[I]>{}), ...);
         }(std::make_index_sequence<children.size()>{});
+        // clang-format on
     }
 
     // Calls f(child) for the active child of composite S if it is one of the children the
@@ -9589,11 +10105,13 @@ private:
         // which an unconditional last arm prevents.)
         constexpr std::size_t n = children.size();
         constexpr bool every_child = n >= 4 && static_cast<int>(n) == tree.child_count[S];
+        // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) BSC_DETAIL_WALK_INLINE {
             return ((active == tree.ordinal[children[I]] || (every_child && I + 1 == n) ? (f(detail::int_c<children[I]>{}), true)
                                                                                           : false) ||
                     ...);
         }(std::make_index_sequence<n>{});
+        // clang-format on
     }
 
     template <int S, class F>
@@ -9643,7 +10161,9 @@ private:
                 with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
             }
         } else if constexpr (k == detail::kind::parallel) {
-            this->enter_parallel(S, [&] { for_each_child<S>([&](auto c) { enter_default<decltype(c)::value>(); }); });
+            this->regions_entering(S);
+            for_each_child<S>([&](auto c) { enter_default<decltype(c)::value>(); });
+            this->regions_entered(S);
         }
     }
 
@@ -9675,8 +10195,11 @@ private:
         constexpr auto k = tree.kinds[S];
         if constexpr (k == detail::kind::composite)
             with_active_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
-        else if constexpr (k == detail::kind::parallel)
-            this->enter_parallel(S, [&] { for_each_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); }); });
+        else if constexpr (k == detail::kind::parallel) {
+            this->regions_entering(S);
+            for_each_child<S>([&](auto c) { enter_restore<decltype(c)::value>(); });
+            this->regions_entered(S);
+        }
     }
 
     // Enters, below the active state D, the path to Target (and parallel siblings on the way).
@@ -9685,14 +10208,14 @@ private:
         constexpr int c = tree.child_toward(D, Target);
         if constexpr (tree.kinds[D] == detail::kind::parallel) {
             // (A parallel D is never a transition's domain: it has just been entered.)
-            this->enter_parallel(D, [&] {
-                for_each_child<D>([&](auto k) {
-                    if constexpr (decltype(k)::value == c)
-                        enter_path_node<c, Target>();
-                    else
-                        enter_default<decltype(k)::value>();
-                });
+            this->regions_entering(D);
+            for_each_child<D>([&](auto k) {
+                if constexpr (decltype(k)::value == c)
+                    enter_path_node<c, Target>();
+                else
+                    enter_default<decltype(k)::value>();
             });
+            this->regions_entered(D);
         } else if constexpr (tree.kinds[c] == detail::kind::history) {
             enter_history<c>();  // D, its composite, has been entered: now its history
         } else {
@@ -9718,10 +10241,11 @@ private:
             with_active_child<S>([&](auto c) { exit_subtree<decltype(c)::value>(); });
         } else if constexpr (k == detail::kind::parallel) {
             constexpr auto const& children = plan::template children<S>;
+            // clang-format off
             [&]<std::size_t... I>(std::index_sequence<I...>) {
                 (exit_subtree<children[children.size() - 1 - I]>(), ...);
-            }
-            (std::make_index_sequence<children.size()>{});
+            }(std::make_index_sequence<children.size()>{});
+            // clang-format on
         }
     }
     // Exits the active descendants of S, then S.
@@ -9755,8 +10279,9 @@ private:
 
     template <int Row, class E>
     constexpr void run_action(E const& e) {
-        if constexpr (rows.defers[Row]) {  // keeps the event (runtime/driver.hpp, fire_or_defer)
-            if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), seen_by<Row>(e));
+        if constexpr (rows.defers[Row]) {  // keeps the event (detail/runtime/deferral.hpp, fire_or_defer)
+            if constexpr (observed)
+                notify::template transition<Row>(observer_.value, this->template row<Row>(), seen_by<Row>(e));
             this->deferral_selected();
             return;
         } else if constexpr (base::defers) {
@@ -9764,11 +10289,14 @@ private:
         }
         if constexpr (sees_itself<Row, E>) {
             if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), e);
-            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(this->template row<Row>().action)>, detail::no_action>)
+            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(this->template row<Row>().action)>,
+                                          detail::no_action>)
                 this->run(this->template row<Row>().action, context_.value, e, queue_);
         } else {
-            if constexpr (observed) notify::template transition<Row>(observer_.value, this->template row<Row>(), seen_by<Row>(e));
-            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(this->template row<Row>().action)>, detail::no_action>)
+            if constexpr (observed)
+                notify::template transition<Row>(observer_.value, this->template row<Row>(), seen_by<Row>(e));
+            if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(this->template row<Row>().action)>,
+                                          detail::no_action>)
                 this->run(this->template row<Row>().action, context_.value, seen_by<Row>(e), queue_);
         }
     }
@@ -9784,9 +10312,10 @@ private:
 
     // ---- several targets: bsc::targets, bsc::initial<A, B> ------------------------------
     // A set of targets, by key: a row's (key >= 0), or the initial states of state s
-    // (key -1 - s). Every target set is orthogonal (checks/structure.hpp).
+    // (key -1 - s). Every target set is orthogonal (detail/checks/structure.hpp).
     static constexpr std::array<int, 4> target_set(int key) {
-        return key >= 0 ? rows.targets_of(static_cast<std::size_t>(key)) : tree.initial_states(static_cast<std::size_t>(-1 - key));
+        return key >= 0 ? rows.targets_of(static_cast<std::size_t>(key))
+                        : tree.initial_states(static_cast<std::size_t>(-1 - key));
     }
     // A target of the set below state s, -1 if none; whether s is one.
     static constexpr int target_below(int s, int key) {
@@ -9804,14 +10333,14 @@ private:
     template <int D, int Key>
     constexpr void enter_toward_all() {
         if constexpr (tree.kinds[D] == detail::kind::parallel) {
-            this->enter_parallel(D, [&] {
-                for_each_child<D>([&](auto k) {
-                    if constexpr (target_below(decltype(k)::value, Key) >= 0)
-                        enter_path_all<decltype(k)::value, Key>();
-                    else
-                        enter_default<decltype(k)::value>();
-                });
+            this->regions_entering(D);
+            for_each_child<D>([&](auto k) {
+                if constexpr (target_below(decltype(k)::value, Key) >= 0)
+                    enter_path_all<decltype(k)::value, Key>();
+                else
+                    enter_default<decltype(k)::value>();
             });
+            this->regions_entered(D);
         } else {
             constexpr int c = tree.child_toward(D, target_below(D, Key));
             if constexpr (tree.kinds[c] == detail::kind::history) {
@@ -9839,8 +10368,7 @@ private:
     constexpr void fire_from(E const& e) {
         if constexpr (!plan::has_parallel) this->mark_running();  // else select_and_fire has marked
         constexpr int d = rows.domain[Row];
-        if constexpr (d >= 0 && acts_on_exit_up(Leaf, d))
-            exit_up<Leaf, d>();
+        if constexpr (d >= 0 && acts_on_exit_up(Leaf, d)) exit_up<Leaf, d>();
         run_action<Row>(e);
         run_entries<Row>();
     }
@@ -9858,23 +10386,22 @@ private:
     // Transitions of such a trigger fire where they are selected, as outside parallel states,
     // when no observer could see the order of exits and entries change.
     template <int Trigger>
-    static constexpr bool fires_at_selection =
-        plan::template fires_at_selection<Trigger> && !observed;
+    static constexpr bool fires_at_selection = plan::template fires_at_selection<Trigger> && !observed;
 
     template <int Trigger>
-    using selection_for = std::conditional_t<
-        !plan::has_parallel || fires_at_selection<Trigger>, no_selection,
-        std::conditional_t<plan::template region_local<Trigger>, component_selection, selection>>;
+    using selection_for =
+        std::conditional_t<!plan::has_parallel || fires_at_selection<Trigger>, no_selection,
+                           std::conditional_t<plan::template region_local<Trigger>, component_selection, selection>>;
 
     template <int Leaf, int Trigger, int Row, class E, class Sel>
     BSC_DETAIL_WALK_INLINE constexpr bool try_row(E const& e, Sel& sel) {
         if constexpr (rows.guarded[Row])
-            if (!guard_holds<Row>(e))
-                return false;
+            if (!guard_holds<Row>(e)) return false;
         if constexpr (!tree.under_parallel(Leaf) || fires_at_selection<Trigger>)
             fire_from<Leaf, Row>(e);
         else if constexpr (plan::template region_local<Trigger>)
-            sel.chosen[static_cast<std::size_t>(plan::component_of[Leaf])] = static_cast<std::uint8_t>(plan::template component_code<Trigger, Row>);
+            sel.chosen[static_cast<std::size_t>(plan::component_of[Leaf])] = static_cast<std::uint8_t>(
+                plan::template component_code<Trigger, Row>);
         else
             sel.add(plan::template position_of<Trigger>(Row));
         return true;
@@ -9885,9 +10412,11 @@ private:
     template <int Leaf, int Trigger, class E, class Sel>
     BSC_DETAIL_WALK_INLINE constexpr bool try_leaf(E const& e, Sel& sel) {
         constexpr auto const& candidates = plan::template candidates<Leaf, Trigger>;
+        // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) BSC_DETAIL_WALK_INLINE {
             return (try_row<Leaf, Trigger, candidates[I]>(e, sel) || ...);
         }(std::make_index_sequence<candidates.size()>{});
+        // clang-format on
     }
 
     // Whether the states strictly below composite s can be left without a word: none is
@@ -9951,13 +10480,16 @@ private:
         constexpr auto const& on_trigger = plan::template transitions<Trigger>;
         selection const kept = detail::resolve_conflicts(
             sel,
-            [](std::size_t later, std::size_t earlier) { return plan::conflict(on_trigger[later], on_trigger[earlier]); },
-            [](std::size_t later, std::size_t earlier) { return plan::preempts(on_trigger[later], on_trigger[earlier]); });
+            [](std::size_t later, std::size_t earlier) {
+                return plan::conflict(on_trigger[later], on_trigger[earlier]);
+            },
+            [](std::size_t later, std::size_t earlier) {
+                return plan::preempts(on_trigger[later], on_trigger[earlier]);
+            });
         for (std::size_t i = kept.size; i-- > 0;)
             with_transition<Trigger>(kept.rows[i], [&](auto r) {
                 constexpr int d = rows.domain[decltype(r)::value];
-                if constexpr (d >= 0)
-                    exit_below<d>();
+                if constexpr (d >= 0) exit_below<d>();
             });
         for (std::size_t i = 0; i < kept.size; ++i)
             with_transition<Trigger>(kept.rows[i], [&](auto r) { run_action<decltype(r)::value>(e); });
@@ -9969,9 +10501,11 @@ private:
     template <int Trigger, int C, class F>
     static constexpr void with_chosen(std::uint8_t code, F&& f) {
         constexpr auto const& chosen_from = plan::template component_rows<Trigger, C>;
+        // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             (void)((code == I + 1 ? (f(detail::int_c<chosen_from[I]>{}), true) : false) || ...);
         }(std::make_index_sequence<chosen_from.size()>{});
+        // clang-format on
     }
 
     // A region-local trigger's transitions: none conflicts with another, so all fire; the
@@ -9981,6 +10515,7 @@ private:
     constexpr void fire_components(E const& e, component_selection const& sel) {
         constexpr auto const& selecting = plan::template selecting_components<Trigger>;
         constexpr std::size_t n = selecting.size();
+        // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             (with_chosen<Trigger, selecting[n - 1 - I]>(sel.chosen[static_cast<std::size_t>(selecting[n - 1 - I])], [&](auto r) {
                  constexpr int d = rows.domain[decltype(r)::value];
@@ -9995,6 +10530,7 @@ private:
                                             [&](auto r) { run_entries<decltype(r)::value>(); }),
              ...);
         }(std::make_index_sequence<n>{});
+        // clang-format on
     }
 
     // Selects and fires the transitions Trigger enables, without settling; true if a transition
@@ -10044,11 +10580,9 @@ private:
             // From the root: the top above it has no byte and no transitions.
             bool const any = select<root, Trigger>(e, sel);
             if constexpr (std::is_same_v<sel_type, component_selection>) {
-                if (any)
-                    fire_components<Trigger>(e, sel);
+                if (any) fire_components<Trigger>(e, sel);
             } else if constexpr (std::is_same_v<sel_type, selection>) {
-                if (sel.size > 0)
-                    fire_selected<Trigger>(e, sel);
+                if (sel.size > 0) fire_selected<Trigger>(e, sel);
             }
             return any;
         }
@@ -10058,8 +10592,7 @@ private:
     template <int Row>
     constexpr bool condition_holds() {
         if constexpr (rows.trigger[Row] <= detail::timeout_trigger_id(0)) {
-            constexpr auto slot = static_cast<std::size_t>(plan::row_timeout_slot[Row]);
-            if (!detail::has_elapsed(armed_[slot], this->cycle_time(), this->template row<Row>().trigger_value.delay))
+            if (!this->timeout_due(plan::row_timeout_slot[Row], this->template row<Row>().trigger_value.delay))
                 return false;
         }
         if constexpr (rows.guarded[Row])
@@ -10088,22 +10621,21 @@ private:
         if constexpr (later.size() == 0) {
             fire_condition<Row>();
         } else {
-            duration const now = this->cycle_time();
             std::size_t first = 0;  // 0: Row itself, k: later[k - 1]
-            duration since = this->armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])];
+            int slot = plan::row_timeout_slot[Row];
             duration delay = this->template row<Row>().trigger_value.delay;
+            // clang-format off
             [&]<std::size_t... K>(std::index_sequence<K...>) {
                 (
                     [&] {
                         constexpr int u = later[K];
-                        duration const u_since = this->armed_[static_cast<std::size_t>(plan::row_timeout_slot[u])];
+                        constexpr int u_slot = plan::row_timeout_slot[u];
                         duration const u_delay = this->template row<u>().trigger_value.delay;
-                        if (!detail::has_elapsed(u_since, now, u_delay) || !detail::came_due_first(u_since, u_delay, since, delay))
-                            return;
+                        if (!this->timeout_due(u_slot, u_delay) || !this->came_due_before(u_slot, u_delay, slot, delay)) return;
                         if constexpr (rows.guarded[u])
                             if (!guard_holds<u>(eventless{})) return;
                         first = K + 1;
-                        since = u_since;
+                        slot = u_slot;
                         delay = u_delay;
                     }(),
                     ...);
@@ -10112,27 +10644,28 @@ private:
                 else
                     (void)((first == K + 1 ? (fire_condition<later[K]>(), true) : false) || ...);
             }(std::make_index_sequence<later.size()>{});
+            // clang-format on
         }
     }
 
     template <int Row>
     constexpr void fire_condition() {
         constexpr int d = rows.domain[Row];
-        if constexpr (d >= 0)
-            exit_below<d>();
+        if constexpr (d >= 0) exit_below<d>();
         run_action<Row>(eventless{});
         run_entries<Row>();
         // A timeout that leaves its state active counts again from now (layout.hpp, rearms).
-        if constexpr (plan::rearms(Row))
-            armed_[static_cast<std::size_t>(plan::row_timeout_slot[Row])] = this->cycle_time();
+        if constexpr (plan::rearms(Row)) this->rearm_timeout(plan::row_timeout_slot[Row]);
     }
 
     template <int Frontier, int Component>
     constexpr bool try_component_candidates() {
         constexpr auto const& candidates = plan::template component_candidates<Frontier, Component>;
+        // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
             return ((condition_holds<candidates[I]>() && (fire_candidate<candidates[I]>(), true)) || ...);
         }(std::make_index_sequence<candidates.size()>{});
+        // clang-format on
     }
 
     // Walks a component from S down to its active frontier and fires its first enabled
@@ -10160,8 +10693,8 @@ private:
 
 // Charts are declared `constexpr`, so `machine{chart, ...}` and `machine<decltype(chart)>` name
 // the same type.
-// A machine of a chart that failed its checks does nothing (runtime/rejected.hpp).
-template <class Chart, class Policy, class Observer>
+// A machine of a chart that failed its checks does nothing (detail/runtime/rejected.hpp).
+template <statechart Chart, machine_policy Policy, class Observer>
     requires detail::rejected<Chart>
 class machine<Chart, Policy, Observer> : public detail::inert_machine<Chart> {
 public:
@@ -10172,7 +10705,7 @@ template <class C, class... A>
 machine(C const&, A...) -> machine<C const, default_policy, detail::observer_argument_t<A...>>;
 
 }  // namespace bsc
-// end include/bsc/compiled/machine.hpp
+// end include/bsc/machine.hpp
 // begin include/bsc/system.hpp
 // Systems of actors (the COMDES-II paper [COMDES]; the modules of the ECA paper [ECA]; see
 // docs/references.md): several machines — controllers and plant models — wired by typed signals
@@ -10363,12 +10896,16 @@ inline constexpr bool is_inout_channel<inout<T>> = true;
 
 // An actor of Actors that has a context (a machine), and the member Channel of that context.
 template <class Actors, auto Actor>
-concept actor_with_context = requires(Actors const& actors) { (actors.*Actor).context(); };
+concept actor_with_context = requires(Actors const& actors) {
+    (actors.*Actor).context();
+};
 template <class Actors, auto Actor>
 using context_of_actor = std::remove_cvref_t<decltype((std::declval<Actors const&>().*Actor).context())>;
 template <class Actors, auto Actor, auto Channel>
-concept actor_has_member =
-    actor_with_context<Actors, Actor> && requires(context_of_actor<Actors, Actor> const& context) { context.*Channel; };
+concept actor_has_member = actor_with_context<Actors, Actor> &&
+    requires(context_of_actor<Actors, Actor> const& context) {
+    context.*Channel;
+};
 template <class Actors, auto Actor, auto Channel>
 using member_of_actor = std::remove_cvref_t<decltype(std::declval<context_of_actor<Actors, Actor> const&>().*Channel)>;
 
@@ -10394,8 +10931,10 @@ constexpr bool written_from_outside() {
 }
 
 template <class Conversion, class From, class To>
-concept conversion_applies = requires(From const& value) { Conversion::function(value); } &&
-                             std::is_convertible_v<decltype(Conversion::function(std::declval<From const&>())), To>;
+concept conversion_applies = requires(From const& value) {
+    Conversion::function(value);
+}
+&&std::is_convertible_v<decltype(Conversion::function(std::declval<From const&>())), To>;
 
 // What an option of bsc::link is: 1 a staleness policy, 2 a conversion, 0 neither.
 template <class Option>
@@ -10423,9 +10962,11 @@ struct link_options_rules<type_list<Options...>> {
             return true;
     }
     static constexpr bool check() {
+        // clang-format off
         return []<std::size_t... I>(std::index_sequence<I...>) {
             return ((check_one<I, Options>() ? 0 : 1) + ... + 0) == 0;
         }(std::index_sequence_for<Options...>{});
+        // clang-format on
     }
 };
 
@@ -10463,16 +11004,20 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
     // Whether the order names its I-th actor for the first time there.
     template <std::size_t I>
     static constexpr bool first_in_order() {
+        // clang-format off
         return []<std::size_t... J>(std::index_sequence<J...>) {
             return !(same_member_pointer<step_at<J>, step_at<I>>() || ...);
         }(std::make_index_sequence<I>{});
+        // clang-format on
     }
     // Whether a link drives Channel of Actor.
     template <auto Actor, auto Channel>
     static constexpr bool linked() {
+        // clang-format off
         return []<class... L>(std::tuple<L...>*) {
             return ((same_member_pointer<L::to_actor, Actor>() && same_member_pointer<L::to_channel, Channel>()) || ...);
         }(static_cast<links*>(nullptr));
+        // clang-format on
     }
 
     template <std::size_t I>
@@ -10521,11 +11066,13 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
     template <std::size_t I>
     static constexpr bool check_driven_once() {
         using L = std::tuple_element_t<I, links>;
+        // clang-format off
         constexpr bool earlier = []<std::size_t... J>(std::index_sequence<J...>) {
             return ((same_member_pointer<std::tuple_element_t<J, links>::to_actor, L::to_actor>() &&
                      same_member_pointer<std::tuple_element_t<J, links>::to_channel, L::to_channel>()) ||
                     ...);
         }(std::make_index_sequence<I>{});
+        // clang-format on
         if constexpr (earlier)
             return report<error::input_driven_twice<L::to_actor, L::to_channel>>();
         else
@@ -10562,12 +11109,16 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
         auto mark = [&]<auto A, auto Channel>() {
             if constexpr (same_member_pointer<A, Actor>()) driven[member_index<Channel>()] = true;
         };
+        // clang-format off
         []<class... L>(std::tuple<L...>*, auto& m) {
             (m.template operator()<L::to_actor, L::to_channel>(), ...);
         }(static_cast<links*>(nullptr), mark);
+        // clang-format on
+        // clang-format off
         []<class... F>(std::tuple<F...>*, auto& m) {
             (m.template operator()<F::actor, F::channel>(), ...);
         }(static_cast<declared_outside*>(nullptr), mark);
+        // clang-format on
         return driven;
     }
     template <auto Actor, class Context>
@@ -10577,7 +11128,8 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
     static constexpr bool check_input_driven() {
         using member = std::tuple_element_t<K, typename tuple_of_list<member_types<Context>>::type>;
         if constexpr (is_input_channel<std::remove_cv_t<member>> && !driven_of<Actor, Context>[K])
-            return report<error::input_not_driven<Actor, error::member_number<K>, member_name_argument<Context, K>()>>();
+            return report<
+                error::input_not_driven<Actor, error::member_number<K>, member_name_argument<Context, K>()>>();
         else
             return true;
     }
@@ -10597,8 +11149,8 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
             return true;
         } else {
             using context = context_of_actor<Actors, actor>;
-            if constexpr (!std::is_class_v<context> || !std::is_aggregate_v<context> ||
-                          described_by_fields<context> || kind_of<context>() != member_kind::record)
+            if constexpr (!std::is_class_v<context> || !std::is_aggregate_v<context> || described_by_fields<context> ||
+                          kind_of<context>() != member_kind::record)
                 return true;
             else
                 return check_members_driven<actor, context>(std::make_index_sequence<member_count<context>>{});
@@ -10606,19 +11158,25 @@ struct system_rules<Actors, order<Steps...>, Entries...> {
     }
 
     static constexpr bool check() {
+        // clang-format off
         constexpr bool steps = []<std::size_t... I>(std::index_sequence<I...>) {
             return ((check_step<I>() ? 0 : 1) + ... + 0) == 0;
         }(std::index_sequence_for<decltype(Steps)...>{});
+        // clang-format on
         constexpr bool entries = ((check_entry<Entries>() ? 0 : 1) + ... + 0) == 0;
+        // clang-format off
         constexpr bool once = []<std::size_t... I>(std::index_sequence<I...>) {
             return ((check_driven_once<I>() ? 0 : 1) + ... + 0) == 0;
         }(std::make_index_sequence<std::tuple_size_v<links>>{});
+        // clang-format on
         if constexpr (!entries || !once) {
             return false;
         } else {
+            // clang-format off
             constexpr bool inputs = []<std::size_t... I>(std::index_sequence<I...>) {
                 return ((check_inputs_driven<I>() ? 0 : 1) + ... + 0) == 0;
             }(std::index_sequence_for<decltype(Steps)...>{});
+            // clang-format on
             return steps && inputs;
         }
     }
@@ -10663,9 +11221,11 @@ struct system<Actors, order<Steps...>, Links...> {
 private:
     template <auto Actor>
     constexpr void step_one(duration now, system_report& report) {
+        // clang-format off
         []<class... L>(std::tuple<L...>*, Actors& all) {
             ((L::template targets<Actor>() ? L::transfer(all) : void()), ...);
         }(static_cast<links_type*>(nullptr), actors);
+        // clang-format on
         auto const r = (actors.*Actor).step(now);
         report.transitions += r.transitions;
         report.queue_overflow = report.queue_overflow || r.status == outcome::queue_overflow;
@@ -10676,12 +11236,12 @@ private:
 
 }  // namespace bsc
 // end include/bsc/system.hpp
-// begin include/bsc/table/engine.hpp
+// begin include/bsc/table/machine.hpp
 // bsc::table::machine: the table-driven back end. A generic engine (the machine-tool paper
 // [MCS] in docs/references.md, section 3.3.2) interprets the two tables of
-// bsc/table/tables.hpp: it knows states and transitions only by their numbers, and reaches the
+// bsc/detail/table/tables.hpp: it knows states and transitions only by their numbers, and reaches the
 // chart's guards and actions through the tables' function pointers. Its public interface and
-// run to completion are the shared driver's (runtime/driver.hpp), so a program changes back end
+// run to completion are the shared driver's (detail/runtime/driver.hpp), so a program changes back end
 // by changing one type.
 //
 // The paper's engine and this one:
@@ -10703,7 +11263,7 @@ private:
 #include <type_traits>
 #include <utility>
 
-// begin include/bsc/table/tables.hpp
+// begin include/bsc/detail/table/tables.hpp
 // The operation rules of the table-driven runtime: a chart as the two constant tables of the
 // machine-tool paper [MCS] (docs/references.md, section 3.3.1), the topology table (the paper's
 // BSTATE, one row per state) and the transition table (BTRANS, one row per transition). The
@@ -10769,19 +11329,20 @@ struct state_row {
     state_id next_sibling = no_state;  ///< next sibling in document order (BSTATE's sibling)
     state_id parent = no_state;        ///< parent, 0 (the top) for the root (BSTATE's ancestor)
     state_status status{};
-    state_action entry = nullptr;  ///< null: no entry action
-    state_action exit = nullptr;   ///< null: no exit action
+    state_action entry = nullptr;           ///< null: no entry action
+    state_action exit = nullptr;            ///< null: no exit action
     state_action initial_action = nullptr;  ///< a composite's initial transition's actions (on_initial); null: none
 
     // Derived columns.
-    state_id initial = no_state;   ///< default child of a composite (of a history state: its default's path)
+    state_id initial = no_state;         ///< default child of a composite (of a history state: its default's path)
     state_id initial_target = no_state;  ///< its initial state: `initial`, or a descendant below it (a deep initial)
-    std::array<state_id, 3> more_initial{};  ///< its initial states after the first (`initial<A, B>`); no_state where fewer
-    std::uint8_t ordinal = 0;  ///< position among its siblings: the configuration byte that selects it
-    std::int16_t slot = -1;    ///< the byte of the configuration a composite owns, -1 for others
-    state_id end = 0;          ///< one past its last descendant: d is below s iff s < d < end
-    std::int16_t timeout_slot = -1;    ///< the first slot of its timeout rows (see transition_row), else -1
-    std::int16_t timeout_slots = 0;    ///< how many of its rows are timeouts: its slots follow the first
+    std::array<state_id, 3>
+        more_initial{};              ///< its initial states after the first (`initial<A, B>`); no_state where fewer
+    std::uint8_t ordinal = 0;        ///< position among its siblings: the configuration byte that selects it
+    std::int16_t slot = -1;          ///< the byte of the configuration a composite owns, -1 for others
+    state_id end = 0;                ///< one past its last descendant: d is below s iff s < d < end
+    std::int16_t timeout_slot = -1;  ///< the first slot of its timeout rows (see transition_row), else -1
+    std::int16_t timeout_slots = 0;  ///< how many of its rows are timeouts: its slots follow the first
 };
 
 /// One row of the transition table (the paper's BTRANS, Figure 8).
@@ -10796,12 +11357,12 @@ struct transition_row {
     /// delay is read from the chart like a guard.
     using delay_fn = duration (*)(Chart const& chart);
 
-    state_id from = no_state;           ///< origin state
+    state_id from = no_state;       ///< origin state
     event_id event = eventless_id;  ///< trigger, or `eventless_id` / `timeout_id`
-    state_id to = no_state;             ///< destination state; no_state: an internal transition
+    state_id to = no_state;         ///< destination state; no_state: an internal transition
     guard_fn guard = nullptr;       ///< null: unguarded
     action_fn action = nullptr;     ///< null: no action
-    state_id domain = no_state;         ///< the transition domain: the state whose active descendants it exits
+    state_id domain = no_state;     ///< the transition domain: the state whose active descendants it exits
     delay_fn delay = nullptr;       ///< a timeout's delay; null for the other transitions
     /// A timeout's slot: where the machine keeps the time its delay counts from (its origin's
     /// entry, or for an internal timeout the cycle it last fired in); -1 for the others.
@@ -10841,12 +11402,14 @@ private:
                             bsc::detail::failure_sink const& failures) {
         constexpr auto const& actions = layout::template rows_of<K, S>;
         auto const report = [&](std::exception_ptr error) { failures.report(failures.machine, std::move(error)); };
+        // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             (bsc::detail::run_block(
                  [&] { bsc::detail::row_at<static_cast<std::size_t>(actions[I])>(chart.rows).action(context, raise); },
                  report),
              ...);
         }(std::make_index_sequence<actions.size()>{});
+        // clang-format on
     }
 
     template <int Row>
@@ -10926,12 +11489,11 @@ private:
         using R = typename model::template row_at<r>;
         transition_row_type row{};
         row.from = id(rows.source[i]);
-        row.event = rows.trigger[i] >= 0                             ? static_cast<event_id>(rows.trigger[i])
+        row.event = rows.trigger[i] >= 0                           ? static_cast<event_id>(rows.trigger[i])
                     : rows.trigger[i] == bsc::detail::eventless_id ? eventless_id
-                                                                     : timeout_id;
+                                                                   : timeout_id;
         row.to = id(rows.target[i]);
-        if constexpr (rows.guarded[i])
-            row.guard = &guard_thunk<r>;
+        if constexpr (rows.guarded[i]) row.guard = &guard_thunk<r>;
         // (A deferring row keeps its event and runs nothing: no action either.)
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(std::declval<R const&>().action)>,
                                       bsc::detail::no_action> &&
@@ -10939,8 +11501,7 @@ private:
                                       bsc::detail::defer_action>)
             row.action = &action_thunk<r>;
         row.domain = id(rows.domain[i]);
-        if constexpr (bsc::detail::is_timeout_row<R>)
-            row.delay = &delay_thunk<r>;
+        if constexpr (bsc::detail::is_timeout_row<R>) row.delay = &delay_thunk<r>;
         row.timeout_slot = static_cast<std::int16_t>(layout::row_timeout_slot[i]);
         row.defers = rows.defers[i];
         row.rearms = layout::rearms(static_cast<int>(i));
@@ -10974,15 +11535,19 @@ public:
 
     /// The topology table (BSTATE), in document order: row s describes state s.
     static constexpr std::array<state_row_type, state_count> states =
+        // clang-format off
         []<std::size_t... S>(std::index_sequence<S...>) {
             return std::array<state_row_type, state_count>{make_state_row<static_cast<int>(S)>()...};
         }(std::make_index_sequence<state_count>{});
+    // clang-format on
 
     /// The transition table (BTRANS), in declaration order.
     static constexpr std::array<transition_row_type, transition_count> transitions =
+        // clang-format off
         []<std::size_t... K>(std::index_sequence<K...>) {
             return std::array<transition_row_type, transition_count>{make_transition_row<K>()...};
         }(std::make_index_sequence<transition_count>{});
+    // clang-format on
 
     /// The unqualified names of the states, by row (row 0, the top, has an internal name).
     static constexpr auto const& names = bsc::detail::state_names_of<model>;
@@ -10992,8 +11557,7 @@ public:
     static constexpr auto first_out = [] {
         std::array<std::int16_t, state_count> first{};
         for (auto& f : first) f = -1;
-        for (std::size_t t = transition_count; t-- > 0;)
-            first[transitions[t].from] = static_cast<std::int16_t>(t);
+        for (std::size_t t = transition_count; t-- > 0;) first[transitions[t].from] = static_cast<std::int16_t>(t);
         return first;
     }();
     static constexpr auto next_out = [] {
@@ -11054,7 +11618,7 @@ public:
 };
 
 }  // namespace bsc::table
-// end include/bsc/table/tables.hpp
+// end include/bsc/detail/table/tables.hpp
 
 namespace bsc::table {
 
@@ -11105,9 +11669,11 @@ private:
 
     template <class Hook, std::size_t N, class Make>
     static constexpr std::array<Hook, N> make(Make make_one) {
+        // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
             return std::array<Hook, N>{make_one(std::integral_constant<std::size_t, I>{})...};
         }(std::make_index_sequence<N>{});
+        // clang-format on
     }
 
 public:
@@ -11128,13 +11694,15 @@ struct observer_hooks<Chart, Policy, no_observer> {};
 /// bsc::machine; no heap, no virtual calls, no RTTI, no exceptions. Unlike bsc::machine it
 /// cannot run in constant expressions (its function pointers take the event as `void const*`).
 ///
-/// Requirements: `Chart` comes from bsc::make_chart; `Policy` has the members of
-/// bsc::default_policy; `Observer` implements any subset of the hooks in observer.hpp.
-template <class Chart, class Policy = default_policy, class Observer = no_observer>
+/// Requirements: `Chart` is a bsc::statechart (the type of a chart from bsc::make_chart, or
+/// bsc::chart_ref); `Policy` is a bsc::machine_policy (bsc::default_policy, or a class derived from
+/// it); `Observer` implements any subset of the hooks in observer.hpp.
+template <statechart Chart, machine_policy Policy = default_policy, class Observer = no_observer>
 class machine : public bsc::detail::driver<machine<Chart, Policy, Observer>, Chart, Policy, Observer,
                                            typename tables<Chart, Policy>::raise_type> {
     using base = bsc::detail::driver<machine, Chart, Policy, Observer, typename tables<Chart, Policy>::raise_type>;
     friend base;
+    friend bsc::detail::backend_hooks;  // the driver calls the hooks through it (detail/runtime/backend.hpp)
     static constexpr bool marks_running_lazily = false;  // a dispatch is marked running throughout
     using hooks = observer_hooks<Chart, Policy, Observer>;
     using base::observed;
@@ -11165,8 +11733,7 @@ private:
             return 0;
     }
     void set_byte(std::int16_t slot, std::uint8_t value) {
-        if constexpr (tables_type::slots > 0)
-            this->config_.active[static_cast<std::size_t>(slot)] = value;
+        if constexpr (tables_type::slots > 0) this->config_.active[static_cast<std::size_t>(slot)] = value;
     }
     // The child of a composite (or of the top) that its byte selects.
     state_id active_child(state_id s) const {
@@ -11199,8 +11766,7 @@ private:
             if (states[s].status.kind == state_kind::final_state) this->entered_final(s);
         // A state's timeouts count from its entry, at the time of the last cycle.
         if constexpr (tables_type::timeout_slots > 0)
-            for (std::int16_t k = 0; k < states[s].timeout_slots; ++k)
-                this->armed_[static_cast<std::size_t>(states[s].timeout_slot + k)] = this->cycle_time();
+            this->arm_timeouts(states[s].timeout_slot, states[s].timeout_slots);
         if constexpr (observed)
             if (auto const h = hooks::on_entry[s]) h(this->observer_.value);
     }
@@ -11227,7 +11793,8 @@ private:
             switch (row.status.history) {
                 case history_kind::none:
                     // The initial transition: its actions, then its target, a child or deeper.
-                    if (auto const f = row.initial_action) f(this->chart(), this->context_.value, this->queue_, this->sink());
+                    if (auto const f = row.initial_action)
+                        f(this->chart(), this->context_.value, this->queue_, this->sink());
                     if (states[row.initial].status.kind == state_kind::history) {
                         enter_history(row.initial);
                     } else if (row.more_initial[0] != no_state) {  // initial<A, B>: one state in each region
@@ -11244,9 +11811,9 @@ private:
                 case history_kind::deep: enter_restore(active_child(s)); break;
             }
         } else if (row.status.kind == state_kind::parallel) {
-            this->enter_parallel(s, [&] {
-                for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_default(c);
-            });
+            this->regions_entering(s);
+            for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_default(c);
+            this->regions_entered(s);
         }
     }
     // Enters history state h of composite p: p's remembered child (shallow) or remembered
@@ -11256,7 +11823,8 @@ private:
         state_id const p = states[h].parent;
         state_id const remembered = active_child(p);
         if (states[remembered].status.kind == state_kind::history) {
-            if (auto const f = states[h].initial_action) f(this->chart(), this->context_.value, this->queue_, this->sink());
+            if (auto const f = states[h].initial_action)
+                f(this->chart(), this->context_.value, this->queue_, this->sink());
             if (states[h].initial_target != states[h].initial) {
                 activate_path(p, states[h].initial_target);
             } else {
@@ -11276,10 +11844,11 @@ private:
         auto const& row = states[s];
         if (row.status.kind == state_kind::composite)
             enter_restore(active_child(s));
-        else if (row.status.kind == state_kind::parallel)
-            this->enter_parallel(s, [&] {
-                for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_restore(c);
-            });
+        else if (row.status.kind == state_kind::parallel) {
+            this->regions_entering(s);
+            for (state_id c = row.first_child; c != no_state; c = states[c].next_sibling) enter_restore(c);
+            this->regions_entered(s);
+        }
     }
 
     // The paper's activPath: enters, below the active state `domain`, the states on the path
@@ -11291,14 +11860,14 @@ private:
         while (states[c].parent != domain) c = states[c].parent;
         if (states[domain].status.kind == state_kind::parallel) {
             // (A parallel `domain` here has just been entered: no transition's domain is parallel.)
-            this->enter_parallel(domain, [&] {
-                for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
-                    if (k == c)
-                        enter_path_node(c, target);
-                    else
-                        enter_default(k);
-                }
-            });
+            this->regions_entering(domain);
+            for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
+                if (k == c)
+                    enter_path_node(c, target);
+                else
+                    enter_default(k);
+            }
+            this->regions_entered(domain);
         } else if (states[c].status.kind == state_kind::history) {
             enter_history(c);  // `domain`, its composite, has been entered: now its history
         } else {
@@ -11322,14 +11891,14 @@ private:
     }
     void activate_all(state_id domain, target_set const& targets) {
         if (states[domain].status.kind == state_kind::parallel) {
-            this->enter_parallel(domain, [&] {
-                for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
-                    if (holds_target(k, targets))
-                        enter_path_all(k, targets);
-                    else
-                        enter_default(k);
-                }
-            });
+            this->regions_entering(domain);
+            for (state_id k = states[domain].first_child; k != no_state; k = states[k].next_sibling) {
+                if (holds_target(k, targets))
+                    enter_path_all(k, targets);
+                else
+                    enter_default(k);
+            }
+            this->regions_entered(domain);
         } else {
             // The child of `domain` toward the targets it holds (they lie below one child).
             state_id c = no_state;
@@ -11408,10 +11977,12 @@ private:
     template <class E>
     static family_event as_families(E const& e) {
         family_event view;
+        // clang-format off
         [&]<class... Us>(bsc::detail::type_list<Us...>) {
             std::size_t u = 0;
             ((view.seen[u++] = address_as<Us>(e)), ...);
         }(typename base::event_types{});
+        // clang-format on
         return view;
     }
     template <class U, class E>
@@ -11434,7 +12005,8 @@ private:
     template <class Event>
     bool select_from(state_id leaf, event_id event, Event const& e, selection& sel) {
         for (state_id a = leaf; a != no_state; a = states[a].parent)
-            for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)]) {
+            for (std::int16_t t = tables_type::first_out[a]; t >= 0;
+                 t = tables_type::next_out[static_cast<std::size_t>(t)]) {
                 auto const on = transitions[static_cast<std::size_t>(t)].event;
                 if (tables_type::takes(on, event) && guard_holds(t, e.as(on))) {
                     sel.add(static_cast<std::size_t>(t));
@@ -11446,7 +12018,8 @@ private:
 
     void run_action(std::int16_t t, void const* e) {
         if constexpr (observed)
-            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)]) h(this->observer_.value, this->chart(), e);
+            if (auto const h = hooks::on_transition[static_cast<std::size_t>(t)])
+                h(this->observer_.value, this->chart(), e);
         if constexpr (base::defers) {
             if (transitions[static_cast<std::size_t>(t)].defers) {  // keeps the event (driver's fire_or_defer)
                 this->deferral_selected();
@@ -11471,8 +12044,10 @@ private:
         if constexpr (Trigger >= 0 && base::model::has_families)
             return select_and_fire(static_cast<event_id>(Trigger), as_families(e));
         else if constexpr (Trigger >= 0)  // E, or an event the chart does not name, as the trigger's type
-            return select_and_fire(static_cast<event_id>(Trigger),
-                                   plain_event{address_as<bsc::detail::at<static_cast<std::size_t>(Trigger), typename base::event_types>>(e)});
+            return select_and_fire(
+                static_cast<event_id>(Trigger),
+                plain_event{
+                    address_as<bsc::detail::at<static_cast<std::size_t>(Trigger), typename base::event_types>>(e)});
         else
             return select_and_fire(static_cast<event_id>(Trigger), plain_event{&e});
     }
@@ -11501,8 +12076,12 @@ private:
         using shared_layout = typename base::layout;
         selection const fired = bsc::detail::resolve_conflicts(
             sel,
-            [](std::size_t later, std::size_t earlier) { return shared_layout::conflict(chart_row[later], chart_row[earlier]); },
-            [](std::size_t later, std::size_t earlier) { return shared_layout::preempts(chart_row[later], chart_row[earlier]); });
+            [](std::size_t later, std::size_t earlier) {
+                return shared_layout::conflict(chart_row[later], chart_row[earlier]);
+            },
+            [](std::size_t later, std::size_t earlier) {
+                return shared_layout::preempts(chart_row[later], chart_row[earlier]);
+            });
 
         // 3. Deactivate the states the transitions leave, running their exit actions.
         for (std::size_t i = fired.size; i-- > 0;) {
@@ -11531,7 +12110,8 @@ private:
         state_id frontier = component;
         while (states[frontier].status.kind == state_kind::composite) frontier = active_child(frontier);
         for (state_id a = frontier;; a = states[a].parent) {
-            for (std::int16_t t = tables_type::first_out[a]; t >= 0; t = tables_type::next_out[static_cast<std::size_t>(t)])
+            for (std::int16_t t = tables_type::first_out[a]; t >= 0;
+                 t = tables_type::next_out[static_cast<std::size_t>(t)])
                 if (is_condition(transitions[static_cast<std::size_t>(t)].event) && condition_holds(t)) {
                     fire_condition(first_due(t));
                     return true;
@@ -11545,10 +12125,7 @@ private:
     bool condition_holds(std::int16_t t) {
         auto const& row = transitions[static_cast<std::size_t>(t)];
         if constexpr (tables_type::timeout_slots > 0)
-            if (row.event == timeout_id &&
-                !bsc::detail::has_elapsed(this->armed_[static_cast<std::size_t>(row.timeout_slot)], this->cycle_time(),
-                                          row.delay(this->chart())))
-                return false;
+            if (row.event == timeout_id && !this->timeout_due(row.timeout_slot, row.delay(this->chart()))) return false;
         return guard_holds(t, &no_event);
     }
 
@@ -11561,20 +12138,18 @@ private:
         if constexpr (tables_type::competing_timeouts) {
             auto const& row = transitions[static_cast<std::size_t>(t)];
             if (row.event == timeout_id && states[row.from].timeout_slots > 1) {
-                duration const now = this->cycle_time();
                 std::int16_t first = t;
-                duration since = this->armed_[static_cast<std::size_t>(row.timeout_slot)];
+                int slot = row.timeout_slot;
                 duration delay = row.delay(this->chart());
                 for (std::int16_t u = tables_type::next_out[static_cast<std::size_t>(t)]; u >= 0;
                      u = tables_type::next_out[static_cast<std::size_t>(u)]) {
                     auto const& other = transitions[static_cast<std::size_t>(u)];
                     if (other.event != timeout_id) continue;
-                    duration const u_since = this->armed_[static_cast<std::size_t>(other.timeout_slot)];
                     duration const u_delay = other.delay(this->chart());
-                    if (bsc::detail::has_elapsed(u_since, now, u_delay) &&
-                        bsc::detail::came_due_first(u_since, u_delay, since, delay) && guard_holds(u, &no_event)) {
+                    if (this->timeout_due(other.timeout_slot, u_delay) &&
+                        this->came_due_before(other.timeout_slot, u_delay, slot, delay) && guard_holds(u, &no_event)) {
                         first = u;
-                        since = u_since;
+                        slot = other.timeout_slot;
                         delay = u_delay;
                     }
                 }
@@ -11592,7 +12167,7 @@ private:
         enter_targets(row);
         // A timeout that leaves its state active counts again from now (layout.hpp, rearms).
         if constexpr (tables_type::timeout_slots > 0)
-            if (row.rearms) this->armed_[static_cast<std::size_t>(row.timeout_slot)] = this->cycle_time();
+            if (row.rearms) this->rearm_timeout(row.timeout_slot);
     }
 
     // The event that eventless and timeout transitions receive.
@@ -11600,8 +12175,8 @@ private:
 };
 
 // As for bsc::machine: `machine{chart, ...}` and `machine<decltype(chart)>` name the same type.
-// A machine of a chart that failed its checks does nothing (runtime/rejected.hpp).
-template <class Chart, class Policy, class Observer>
+// A machine of a chart that failed its checks does nothing (detail/runtime/rejected.hpp).
+template <statechart Chart, machine_policy Policy, class Observer>
     requires bsc::detail::rejected<Chart>
 class machine<Chart, Policy, Observer> : public bsc::detail::inert_machine<Chart> {
 public:
@@ -11612,7 +12187,7 @@ template <class C, class... A>
 machine(C const&, A...) -> machine<C const, default_policy, bsc::detail::observer_argument_t<A...>>;
 
 }  // namespace bsc::table
-// end include/bsc/table/engine.hpp
+// end include/bsc/table/machine.hpp
 // begin include/bsc/version.hpp
 // The version of bsc. CMakeLists.txt reads its project version from these three lines, so that
 // the header, the CMake package (bscConfigVersion.cmake) and the CHANGELOG name one version.

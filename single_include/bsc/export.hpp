@@ -32,7 +32,7 @@
 #include <string>
 #include <string_view>
 
-// begin include/bsc/export/model.hpp
+// begin include/bsc/detail/export/model.hpp
 // The chart as the diagram exports see it: its states in document order with their names,
 // identifiers, kinds, initial children, history and entry/exit actions, and its transitions
 // with the labels of their triggers, guards and actions. Built at run time from a chart object
@@ -170,14 +170,14 @@ struct state_info {
     history hist = history::none;
     int parent = -1;  ///< index in diagram::states; -1 for the root
     std::vector<int> children;
-    int initial = -1;  ///< a composite's initial state (a child, or deeper); a history state's default
+    int initial = -1;                ///< a composite's initial state (a child, or deeper); a history state's default
     std::vector<int> more_initials;  ///< a composite's initial states after the first (`initial<A, B>`)
     std::vector<std::string> entry;  ///< labels of the entry actions, in declaration order
     std::vector<std::string> exit;   ///< labels of the exit actions
     /// labels of the actions of its initial transition (a composite) or default transition (a
     /// history state): its on_initial rows
     std::vector<std::string> initial_actions;
-    std::vector<int> internal;       ///< internal transitions (indices in diagram::transitions)
+    std::vector<int> internal;  ///< internal transitions (indices in diagram::transitions)
 
     /// Drawn as a node, not a cluster: a basic or final state, or a history state.
     bool is_leaf() const {
@@ -186,16 +186,16 @@ struct state_info {
 };
 
 struct transition_info {
-    int row = 0;     ///< position of the row in make_chart
-    int source = 0;  ///< index in diagram::states
+    int row = 0;      ///< position of the row in make_chart
+    int source = 0;   ///< index in diagram::states
     int target = -1;  ///< -1: an internal transition (no target)
     trigger_kind trigger = trigger_kind::event;
-    std::string event;  ///< the event's name, "after(3s)" for a timeout, empty if eventless
-    std::string delay;  ///< a timeout's delay, "3s"
-    std::string guard;  ///< empty if unguarded
-    std::string action;  ///< empty if no action
-    bool local = false;  ///< a local transition (bsc::local): its source stays active
-    bool defers = false;  ///< a row that defers its event (`/ bsc::defer`)
+    std::string event;              ///< the event's name, "after(3s)" for a timeout, empty if eventless
+    std::string delay;              ///< a timeout's delay, "3s"
+    std::string guard;              ///< empty if unguarded
+    std::string action;             ///< empty if no action
+    bool local = false;             ///< a local transition (bsc::local): its source stays active
+    bool defers = false;            ///< a row that defers its event (`/ bsc::defer`)
     std::vector<int> more_targets;  ///< a transition with several targets (bsc::targets): the others
 
     /// Every target: none for an internal transition, else `target` and `more_targets`.
@@ -217,7 +217,7 @@ struct transition_info {
 };
 
 struct diagram {
-    std::vector<state_info> states;  ///< document order; states[0] is the root
+    std::vector<state_info> states;            ///< document order; states[0] is the root
     std::vector<transition_info> transitions;  ///< declaration order, internal ones included
 
     /// s is a or below a.
@@ -276,8 +276,7 @@ inline std::vector<std::string> unique_identifiers(std::vector<std::string> cons
     for (std::size_t i = 0; i < names.size(); ++i) {
         std::string id = identifier(names[i]);
         // A suffixed id may itself be taken ("A_B_2" next to "A_B" and "A<B>"): suffix again.
-        while (std::find(out.begin(), out.end(), id) != out.end())
-            id += "_" + std::to_string(i);
+        while (std::find(out.begin(), out.end(), id) != out.end()) id += "_" + std::to_string(i);
         out.push_back(id);
     }
     return out;
@@ -343,9 +342,11 @@ diagram model_of(Chart const& chart) {
             info.children.push_back(c - 1);
         m.states.push_back(std::move(info));
     }
+    // clang-format off
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         (add_row(m, detail::row_at<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), ...);
     }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
+    // clang-format on
     for (std::size_t k = 0; k < m.transitions.size(); ++k) {
         auto& t = m.transitions[k];
         t.target = model::rows.target[static_cast<std::size_t>(t.row)] >= 0
@@ -355,7 +356,8 @@ diagram model_of(Chart const& chart) {
         for (int const more : model::rows.more_targets[static_cast<std::size_t>(t.row)])
             if (more >= 0) t.more_targets.push_back(more - 1);
         // Local in effect: the domain is the source (bsc::local from a composite).
-        t.local = t.target >= 0 && model::rows.domain[static_cast<std::size_t>(t.row)] == model::rows.source[static_cast<std::size_t>(t.row)];
+        t.local = t.target >= 0 && model::rows.domain[static_cast<std::size_t>(t.row)] ==
+                                       model::rows.source[static_cast<std::size_t>(t.row)];
     }
     return m;
 }
@@ -410,7 +412,7 @@ inline std::vector<std::string> activity_lines(diagram const& m, int s) {
 }
 
 }  // namespace bsc::detail
-// end include/bsc/export/model.hpp
+// end include/bsc/detail/export/model.hpp
 
 namespace bsc::detail {
 
@@ -430,9 +432,7 @@ inline std::string dot_quoted(std::string_view text) {
 inline std::string dot_cluster(diagram const& m, int s) { return dot_quoted("cluster_" + m[s].id); }
 inline std::string dot_anchor(diagram const& m, int s) { return dot_quoted(m[s].id + ":anchor"); }
 /// The node an edge to or from state s attaches to.
-inline std::string dot_node(diagram const& m, int s) {
-    return m[s].is_leaf() ? dot_quoted(m[s].id) : dot_anchor(m, s);
-}
+inline std::string dot_node(diagram const& m, int s) { return m[s].is_leaf() ? dot_quoted(m[s].id) : dot_anchor(m, s); }
 
 inline std::string dot_label(diagram const& m, int s) {
     std::string label = m[s].label;
@@ -464,8 +464,8 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
         return;
     }
     out += pad + "subgraph " + dot_cluster(m, s) + " {\n";
-    out += pad + "    label=" + dot_quoted(dot_label(m, s)) + "; style=" +
-           (region ? "\"rounded,dashed\"" : "\"rounded\"") + ";\n";
+    out += pad + "    label=" + dot_quoted(dot_label(m, s)) +
+           "; style=" + (region ? "\"rounded,dashed\"" : "\"rounded\"") + ";\n";
     out += pad + "    " + dot_anchor(m, s) + " [shape=point, style=invis, width=0, height=0, label=\"\"];\n";
     if (st.initial >= 0) {
         auto const initial = dot_quoted(st.id + ":initial");
@@ -484,8 +484,9 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
         }
     }
     if (st.hist != history::none)
-        out += pad + "    " + dot_quoted(st.id + ":history") + " [shape=circle, label=" +
-               (st.hist == history::deep ? "\"H*\"" : "\"H\"") + ", width=0.3, fixedsize=true, fontsize=9];\n";
+        out += pad + "    " + dot_quoted(st.id + ":history") +
+               " [shape=circle, label=" + (st.hist == history::deep ? "\"H*\"" : "\"H\"") +
+               ", width=0.3, fixedsize=true, fontsize=9];\n";
     for (int const c : st.children) dot_state(m, c, level + 1, st.node_kind == kind::parallel, out);
     out += pad + "}\n";
 }
@@ -581,7 +582,8 @@ inline void mermaid_state(diagram const& m, int s, int level, std::string& out) 
     auto const activities = activity_lines(m, s);
     if (st.is_leaf()) {
         if (st.label != st.id || !activities.empty() || st.node_kind == kind::history)
-            out += indent(level) + "state \"" + mermaid_text(st.label + history_suffix(st.hist)) + "\" as " + st.id + "\n";
+            out += indent(level) + "state \"" + mermaid_text(st.label + history_suffix(st.hist)) + "\" as " + st.id +
+                   "\n";
         else
             out += indent(level) + st.id + "\n";
         for (auto const& line : activities) out += indent(level) + st.id + " : " + mermaid_text(line) + "\n";
@@ -594,7 +596,8 @@ inline void mermaid_state(diagram const& m, int s, int level, std::string& out) 
     std::string title = mermaid_text(st.label) + history_suffix(st.hist);
     for (auto const& line : activities) title += "<br/>" + mermaid_text(line);
     out += indent(level) + "state \"" + title + "\" as " + st.id + " {\n";
-    if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + with_label(initial_label(st)) + "\n";
+    if (st.initial >= 0)
+        out += indent(level + 1) + "[*] --> " + m[st.initial].id + with_label(initial_label(st)) + "\n";
     for (int const more : st.more_initials) out += indent(level + 1) + "[*] --> " + m[more].id + "\n";
     bool first = true;
     for (int const c : st.children) {
@@ -672,7 +675,8 @@ inline void plantuml_state(diagram const& m, int s, int level, std::string& out)
         out += " {\n";
         if (st.initial >= 0) {
             auto const label = initial_label(st);
-            out += indent(level + 1) + "[*] --> " + m[st.initial].id + (label.empty() ? "" : " : " + plantuml_text(label)) + "\n";
+            out += indent(level + 1) + "[*] --> " + m[st.initial].id +
+                   (label.empty() ? "" : " : " + plantuml_text(label)) + "\n";
             for (int const more : st.more_initials) out += indent(level + 1) + "[*] --> " + m[more].id + "\n";
         }
         bool first = true;
@@ -754,9 +758,7 @@ std::string to_plantuml(Chart const& chart) {
 namespace bsc::detail {
 
 /// Text inside an XML comment, which may not contain "--".
-inline std::string scxml_comment(std::string_view text) {
-    return replace_all(xml_escaped(text), "--", "- -");
-}
+inline std::string scxml_comment(std::string_view text) { return replace_all(xml_escaped(text), "--", "- -"); }
 
 inline std::string scxml_script(std::string_view action) {
     return "<script>/* " + xml_escaped(replace_all(std::string(action), "*/", "* /")) + " */</script>";
@@ -838,7 +840,8 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const pad = indent(level);
     if (st.node_kind == kind::history) {  // a history state and its default transition
-        out += pad + "<history id=\"" + st.id + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") + "\">\n";
+        out += pad + "<history id=\"" + st.id + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") +
+               "\">\n";
         out += pad + "    <transition target=\"" + m[st.initial].id + "\"";
         if (st.initial_actions.empty()) {
             out += "/>\n";
@@ -882,8 +885,8 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     if (st.initial >= 0 && st.hist != history::none) {
         auto const h = history_id(m, s);
         out += inner + "<initial>\n" + inner + "    <transition target=\"" + h + "\"/>\n" + inner + "</initial>\n";
-        out += inner + "<history id=\"" + h + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") +
-               "\">\n" + inner + "    <transition target=\"" + m[st.initial].id + "\"/>\n" + inner + "</history>\n";
+        out += inner + "<history id=\"" + h + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") + "\">\n" +
+               inner + "    <transition target=\"" + m[st.initial].id + "\"/>\n" + inner + "</history>\n";
     }
     for (auto const& a : st.entry) out += inner + "<onentry>" + scxml_script(a) + "</onentry>\n";
     for (auto const& a : st.exit) out += inner + "<onexit>" + scxml_script(a) + "</onexit>\n";

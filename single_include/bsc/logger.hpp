@@ -75,21 +75,13 @@ inline std::string to_string(log_record const& r) {
     if (r.cycle > 0) line += " #" + std::to_string(r.cycle);
     line += "] ";
     switch (r.what) {
-        case log_record::kind::dispatch:
-            line.append("dispatch ").append(r.trigger);
-            break;
-        case log_record::kind::exit:
-            line.append("exit ").append(r.state);
-            break;
+        case log_record::kind::dispatch: line.append("dispatch ").append(r.trigger); break;
+        case log_record::kind::exit: line.append("exit ").append(r.state); break;
         case log_record::kind::transition:
             line.append("transition ").append(r.state).append(" -> ").append(r.target).append(" on ").append(r.trigger);
             break;
-        case log_record::kind::entry:
-            line.append("entry ").append(r.state);
-            break;
-        case log_record::kind::deferral:
-            line.append("defer ").append(r.trigger).append(" in ").append(r.state);
-            break;
+        case log_record::kind::entry: line.append("entry ").append(r.state); break;
+        case log_record::kind::deferral: line.append("defer ").append(r.trigger).append(" in ").append(r.state); break;
     }
     return line;
 }
@@ -168,8 +160,8 @@ private:
     duration time_{};  // the last cycle's time: a dispatch's too
     std::uint64_t cycles_ = 0;
     bool in_cycle_ = false;
-    std::string trigger_;  // the text of the last transition's trigger, which a record views
-    std::string guard_;    // the guard of the transition about to be reported
+    std::string trigger_;     // the text of the last transition's trigger, which a record views
+    std::string guard_;       // the guard of the transition about to be reported
     bool guarded_ = false;    // it has a name to report
     bool deferring_ = false;  // the transition about to be reported defers its event
 };

@@ -292,8 +292,8 @@ constexpr std::size_t size_of() {
 // explorer's bits): bsc::action_failed never waits; an event that cannot be encoded is reported
 // (pending_events_encodable), and takes no room.
 template <class E>
-inline constexpr bool encoded_while_pending =
-    !std::is_same_v<E, action_failed> && encodable<E> && std::is_default_constructible_v<E>;
+inline constexpr bool encoded_while_pending = !std::is_same_v<E, action_failed> && encodable<E> &&
+                                              std::is_default_constructible_v<E>;
 
 template <class Chart, class E>
 constexpr bool pending_event_encodable() {
@@ -477,9 +477,11 @@ constexpr std::uint64_t layout_fingerprint() {
     if constexpr (pending::defers || pending::delays) {
         f.add(pending::deferred_capacity);
         f.add(pending::delayed_capacity);
+        // clang-format off
         [&]<class... Es>(type_list<Es...>) {
             ((f.add(name_of<Es>), f.add(std::is_same_v<Es, action_failed> ? 0 : describe<Es>())), ...);
         }(typename machine_model<Machine>::events{});
+        // clang-format on
     }
     return f.value;
 }
@@ -737,7 +739,7 @@ void get_pending(byte_reader& r, Machine& m, pass const& p, duration shift) {
             queue.clear_scheduled();
             queue.set_clock(shifted(clock, shift));
             // (Moved past duration::max() by resume_at, an event never comes due: not kept, as
-            // runtime/delayed_events.hpp keeps none such.)
+            // detail/runtime/delayed_events.hpp keeps none such.)
             for (std::size_t i = 0; i < count; ++i)
                 if (!shifted_past_max(items[i].due, shift))
                     (void)queue.put_scheduled(shifted(items[i].due, shift), items[i].id, items[i].item);
@@ -776,7 +778,7 @@ void get_machine(byte_reader& r, Machine& m, pass const& p) {
     for (std::size_t i = 0; i < armed.size(); ++i) access::armed(m)[i] = shifted(armed[i], own.shift);
     access::set_last_outcome(m, last);
     access::forget_failure(m);  // the exception of a last outcome `failed` is not saved
-    access::queue(m).clear();     // raised events: none between runs
+    access::queue(m).clear();   // raised events: none between runs
     access::queue(m).clear_overflow();
 }
 
@@ -813,14 +815,16 @@ struct restore_result {
 constexpr std::string_view to_string(restore_error e) {
     switch (e) {
         case restore_error::none: return "restored";
-        case restore_error::machine_running: return "the machine is running (restore was called from one of its guards or actions)";
+        case restore_error::machine_running:
+            return "the machine is running (restore was called from one of its guards or actions)";
         case restore_error::truncated: return "truncated: the bytes end before the saved state does";
         case restore_error::not_saved_state: return "not a saved bsc machine: the bytes do not begin with \"bscR\"";
         case restore_error::unsupported_version: return "saved in a format version this library does not read";
         case restore_error::trailing_bytes: return "more bytes follow the saved state";
         case restore_error::corrupted: return "corrupted: the checksum does not match";
         case restore_error::other_chart: return "saved from another chart (its states differ)";
-        case restore_error::other_layout: return "saved with another context layout (members, names, types or order differ)";
+        case restore_error::other_layout:
+            return "saved with another context layout (members, names, types or order differ)";
         case restore_error::invalid_value: return "a saved value is out of range";
     }
     return "unknown restore_error";
@@ -903,8 +907,8 @@ namespace bsc {
 /// with bsc::error::pending_events_not_encoded<Chart, Event> if the machine can keep an event
 /// pending that cannot be.
 template <class Machine>
-inline constexpr std::size_t saved_size =
-    detail::retain::header_size + detail::machine_size<Machine>() + detail::retain::trailer_size;
+inline constexpr std::size_t saved_size = detail::retain::header_size +
+                                          detail::machine_size<Machine>() + detail::retain::trailer_size;
 
 /// Saves the machine into `out`. Returns the bytes written (saved_size<Machine>), or 0 when
 /// `out` is shorter than that or the machine is running (save was called from one of its guards

@@ -8,7 +8,7 @@
 // checked on it. Not included by <bsc/bsc.hpp>: it uses the heap and the standard library's
 // strings and vectors, which the machines themselves never need.
 
-// begin include/bsc/verify/codec.hpp
+// begin include/bsc/detail/verify/codec.hpp
 // Fixed-size bit encodings of explored states, walked by the member layer (detail/members.hpp):
 // a machine's configuration bytes, its timeouts, the events it keeps pending (deferred, and
 // delayed with their ids and due times), its context member by member; time made relative to
@@ -285,8 +285,8 @@ constexpr std::size_t size_of() {
 // explorer's bits): bsc::action_failed never waits; an event that cannot be encoded is reported
 // (pending_events_encodable), and takes no room.
 template <class E>
-inline constexpr bool encoded_while_pending =
-    !std::is_same_v<E, action_failed> && encodable<E> && std::is_default_constructible_v<E>;
+inline constexpr bool encoded_while_pending = !std::is_same_v<E, action_failed> && encodable<E> &&
+                                              std::is_default_constructible_v<E>;
 
 template <class Chart, class E>
 constexpr bool pending_event_encodable() {
@@ -470,9 +470,11 @@ constexpr std::uint64_t layout_fingerprint() {
     if constexpr (pending::defers || pending::delays) {
         f.add(pending::deferred_capacity);
         f.add(pending::delayed_capacity);
+        // clang-format off
         [&]<class... Es>(type_list<Es...>) {
             ((f.add(name_of<Es>), f.add(std::is_same_v<Es, action_failed> ? 0 : describe<Es>())), ...);
         }(typename machine_model<Machine>::events{});
+        // clang-format on
     }
     return f.value;
 }
@@ -730,7 +732,7 @@ void get_pending(byte_reader& r, Machine& m, pass const& p, duration shift) {
             queue.clear_scheduled();
             queue.set_clock(shifted(clock, shift));
             // (Moved past duration::max() by resume_at, an event never comes due: not kept, as
-            // runtime/delayed_events.hpp keeps none such.)
+            // detail/runtime/delayed_events.hpp keeps none such.)
             for (std::size_t i = 0; i < count; ++i)
                 if (!shifted_past_max(items[i].due, shift))
                     (void)queue.put_scheduled(shifted(items[i].due, shift), items[i].id, items[i].item);
@@ -769,7 +771,7 @@ void get_machine(byte_reader& r, Machine& m, pass const& p) {
     for (std::size_t i = 0; i < armed.size(); ++i) access::armed(m)[i] = shifted(armed[i], own.shift);
     access::set_last_outcome(m, last);
     access::forget_failure(m);  // the exception of a last outcome `failed` is not saved
-    access::queue(m).clear();     // raised events: none between runs
+    access::queue(m).clear();   // raised events: none between runs
     access::queue(m).clear_overflow();
 }
 
@@ -897,7 +899,8 @@ constexpr auto slot_bits() {
     using model = bsc::detail::chart_model<typename M::chart_type>;
     std::array<unsigned, static_cast<std::size_t>(model::tree.slots)> bits{};
     for (std::size_t s = 0; s < static_cast<std::size_t>(model::N); ++s)
-        if (model::tree.slot[s] >= 0) bits[static_cast<std::size_t>(model::tree.slot[s])] = bits_for(model::tree.child_count[s]);
+        if (model::tree.slot[s] >= 0)
+            bits[static_cast<std::size_t>(model::tree.slot[s])] = bits_for(model::tree.child_count[s]);
     return bits;
 }
 
@@ -958,9 +961,11 @@ constexpr std::size_t pending_bits() {
     using slot = event_bits<typename machine_model<Machine>::events>;
     std::size_t bits = 0;
     if constexpr (pending::defers)
-        bits += 1 + bits_for(static_cast<int>(pending::deferred_capacity) + 1) + pending::deferred_capacity * slot::size;
+        bits += 1 + bits_for(static_cast<int>(pending::deferred_capacity) + 1) +
+                pending::deferred_capacity * slot::size;
     if constexpr (pending::delays)
-        bits += bits_for(static_cast<int>(pending::delayed_capacity) + 1) + pending::delayed_capacity * (64 + 32 + slot::size);
+        bits += bits_for(static_cast<int>(pending::delayed_capacity) + 1) +
+                pending::delayed_capacity * (64 + 32 + slot::size);
     return bits;
 }
 
@@ -1072,7 +1077,8 @@ void encode_event(Item const& item, bit_writer& out, time_frame frame) {
     out.put(item.index(), slot::index);
     std::visit(
         [&]<class E>(E const& e) {
-            if constexpr (!std::is_same_v<E, std::monostate> && !std::is_same_v<E, action_failed>) encode(e, out, frame);
+            if constexpr (!std::is_same_v<E, std::monostate> && !std::is_same_v<E, action_failed>)
+                encode(e, out, frame);
         },
         item);
     while (out.bits() < end) out.put(0, static_cast<unsigned>(std::min<std::size_t>(end - out.bits(), 32)));
@@ -1123,8 +1129,9 @@ void encode_pending(Machine const& value, bit_writer& out, time_frame own) {
             waiting[count] = {due, count, id, &item};
             ++count;
         });
-        std::sort(waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(count),
-                  [](scheduled const& a, scheduled const& b) { return a.due != b.due ? a.due < b.due : a.sent < b.sent; });
+        std::sort(
+            waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(count),
+            [](scheduled const& a, scheduled const& b) { return a.due != b.due ? a.due < b.due : a.sent < b.sent; });
         out.put(count, bits_for(static_cast<int>(pending::delayed_capacity) + 1));
         for (std::size_t i = 0; i < count; ++i) {
             auto const left = static_cast<std::uint64_t>((waiting[i].due - own.clock).count());  // the time left
@@ -1154,7 +1161,8 @@ auto timeout_periods(Machine& m, time_frame own) {
     for (std::size_t i = 0; i < slots; ++i) out[i] = access::timeout_armed(m, i) ? own.cycles(armed[i], longest) : 0;
     if constexpr (layout::has_competing_timeouts) {
         // The cap of a single count (time_frame::cycles, which has refused a cap that does not fit).
-        std::uint64_t const cap = own.period > duration::zero() ? static_cast<std::uint64_t>(longest / own.period) + 1 : 0;
+        std::uint64_t const cap = own.period > duration::zero() ? static_cast<std::uint64_t>(longest / own.period) + 1
+                                                                : 0;
         for (std::size_t s = 0; s < layout::timeout_slot_count.size(); ++s) {
             auto const count = static_cast<std::size_t>(layout::timeout_slot_count[s]);
             if (count < 2 || !access::timeout_armed(m, static_cast<std::size_t>(layout::timeout_slot[s]))) continue;
@@ -1262,7 +1270,7 @@ void decode_pending(Machine& m, bit_reader& in, time_frame frame) {
             auto const id = static_cast<int>(static_cast<std::uint32_t>(in.get(32)));
             auto const item = decode_event<events, item_type>(in, frame);
             // (Due past duration::max() from this clock: never, and not kept, as the queue keeps
-            // none such: runtime/delayed_events.hpp.)
+            // none such: detail/runtime/delayed_events.hpp.)
             if (left > static_cast<std::uint64_t>(duration::max().count()) ||
                 shifted_past_max(frame.clock, duration{static_cast<duration::rep>(left)}))
                 continue;
@@ -1302,7 +1310,7 @@ void decode_visitor::leaf(T& value, no_name) {
 }
 
 }  // namespace bsc::detail
-// end include/bsc/verify/codec.hpp
+// end include/bsc/detail/verify/codec.hpp
 // begin include/bsc/verify/coverage.hpp
 // Coverage of a chart by the explored state space: the states never active in any reachable
 // state and the transition rows never fired on any explored step. Unlike the static checks,
@@ -1380,7 +1388,8 @@ struct statistics {
         std::string out;
         for (auto const& w : widest) {
             std::string n = std::to_string(w.values);
-            for (auto i = static_cast<std::ptrdiff_t>(n.size()) - 3; i > 0; i -= 3) n.insert(static_cast<std::size_t>(i), ",");
+            for (auto i = static_cast<std::ptrdiff_t>(n.size()) - 3; i > 0; i -= 3)
+                n.insert(static_cast<std::size_t>(i), ",");
             out += (out.empty() ? "" : "; ") + w.name + ": " + n + " values";
         }
         return out;
@@ -1531,8 +1540,10 @@ private:
         for (std::size_t b = 0; b < n; ++b) {
             std::size_t const at = first + b;
             auto const bit = (static_cast<unsigned>(k[at / 8]) >> (at % 8)) & 1u;
-            if (n <= 64) value |= std::uint64_t{bit} << b;
-            else hash = (hash ^ bit ^ (b << 1)) * 0x100000001b3ull;
+            if (n <= 64)
+                value |= std::uint64_t{bit} << b;
+            else
+                hash = (hash ^ bit ^ (b << 1)) * 0x100000001b3ull;
         }
         return n <= 64 ? value : hash;
     }
@@ -1560,8 +1571,7 @@ private:
 
     std::size_t memory() const {
         return keys_.capacity() + table_.capacity() * 4 + parent_.capacity() * 4 + via_.capacity() * 2 +
-               edge_begin_.capacity() * 4 + edge_to_.capacity() * 4 +
-               edge_label_.capacity() * 2;
+               edge_begin_.capacity() * 4 + edge_to_.capacity() * 4 + edge_label_.capacity() * 2;
     }
 
     // What the containers may hold at the peak of the next state's expansion, which adds at
@@ -1656,6 +1666,7 @@ template <class Chart>
 std::vector<std::string> row_names() {
     using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
     std::vector<std::string> names(static_cast<std::size_t>(model::R));
+    // clang-format off
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         (
             [&] {
@@ -1671,6 +1682,7 @@ std::vector<std::string> row_names() {
             }(),
             ...);
     }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
+    // clang-format on
     return names;
 }
 
@@ -1701,7 +1713,8 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired, Ge
 /// Coverage for models whose state is the machine itself.
 template <class Model>
 coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired) {
-    return coverage(ex, fired, [](auto const& m) -> auto const& { return m; });
+    return coverage(
+        ex, fired, [](auto const& m) -> auto const& { return m; });
 }
 
 }  // namespace bsc::verify
@@ -1982,11 +1995,14 @@ struct verdict {
     /// line: "5-16. [500ms-1600ms] 12 steps, same inputs and configuration".
     std::string to_string() const {
         std::string out = property + ": " +
-                          (result == status::holds ? "holds" : result == status::fails ? "FAILS" : "inconclusive");
+                          (result == status::holds   ? "holds"
+                           : result == status::fails ? "FAILS"
+                                                     : "inconclusive");
         if (!detail.empty()) out += " (" + detail + ")";
         out += '\n';
         auto const repeats = [&](std::size_t k) {
-            return k > 0 && trace[k].label == trace[k - 1].label && trace[k].configuration == trace[k - 1].configuration;
+            return k > 0 && trace[k].label == trace[k - 1].label &&
+                   trace[k].configuration == trace[k - 1].configuration;
         };
         for (std::size_t i = 0; i < trace.size();) {
             std::size_t end = i + 1;
@@ -2032,7 +2048,8 @@ concept timed_model = requires(Model const& m) {
 };
 
 template <class Model>
-void append_step(verify::explorer<Model> const& ex, std::vector<verify::trace_step>& out, std::string label, std::size_t i) {
+void append_step(verify::explorer<Model> const& ex, std::vector<verify::trace_step>& out, std::string label,
+                 std::size_t i) {
     std::optional<duration> time;
     if constexpr (timed_model<Model>) time = static_cast<duration::rep>(out.size()) * ex.model().period();
     out.push_back({std::move(label), ex.model().describe(ex.at(i)), time});
@@ -2054,7 +2071,8 @@ std::vector<verify::trace_step> path_to(verify::explorer<Model> const& ex, std::
 template <class Model>
 verify::verdict incomplete(verify::explorer<Model> const& ex, std::string property) {
     std::string why = "exploration stopped by " + ex.stats().stopped_by;
-    if (!ex.stats().widest.empty()) why += "; the parts of the state with the most distinct values: " + ex.stats().widest_text();
+    if (!ex.stats().widest.empty())
+        why += "; the parts of the state with the most distinct values: " + ex.stats().widest_text();
     verify::verdict v{std::move(property), verify::verdict::status::inconclusive, {}, std::move(why)};
     return v;
 }
@@ -2173,7 +2191,8 @@ std::vector<std::size_t> steps_to(verify::explorer<Model> const& ex, std::vector
             std::uint32_t const i = g.from[e];
             if (slowest[i] != never || --unsettled[i] != 0) continue;
             std::size_t most = 0;  // every successor is settled, so finite
-            for (auto f = ex.edges_begin(i); f < ex.edges_end(i); ++f) most = std::max(most, slowest[ex.edge_target(f)]);
+            for (auto f = ex.edges_begin(i); f < ex.edges_end(i); ++f)
+                most = std::max(most, slowest[ex.edge_target(f)]);
             slowest[i] = most + 1;
             queue.push_back(i);
         }
@@ -2341,7 +2360,8 @@ verdict leads_to_within(explorer<Model>& ex, std::string name, P p, Q q, duratio
             s = next;
             previous = label;
         }
-        return {name, verdict::status::fails, std::move(trace), "p holds at step " + std::to_string(start) + "; " + how};
+        return {name, verdict::status::fails, std::move(trace),
+                "p holds at step " + std::to_string(start) + "; " + how};
     }
     return {name, verdict::status::holds, {}, {}};
 }

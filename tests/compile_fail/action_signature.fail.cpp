@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::at_row<1, bsc::error::in_row<cf::Idle, cf::go, cf::Busy, bsc::error::action_signature_not_supported<cf::bad_action> ?>.*bsc: an action must be callable as|bsc: an action must be callable as.*bsc::error::at_row<1, bsc::error::in_row<cf::Idle, cf::go, cf::Busy, bsc::error::action_signature_not_supported<cf::bad_action> ?>)
+// EXPECT: defect=at_row<1, in_row<cf::Idle, cf::go, cf::Busy, action_signature_not_supported<cf::bad_action> ?>
 // The action takes a cf::unrelated&, which is neither the context, the event nor the raise
 // queue. make_chart reports it with its row, bsc::error::in_row<cf::Idle, cf::go, cf::Busy, ...>.
 #include <bsc/bsc.hpp>
@@ -17,10 +17,9 @@ struct bad_action {
     void operator()(unrelated&) const {}
 };
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> / bad_action{} = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::event<go> / bad_action{} = bsc::state<Busy>,
+                                                   bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
 
 void run() {
     bsc::machine m{chart, ctx{}};

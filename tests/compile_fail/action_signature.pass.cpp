@@ -15,10 +15,9 @@ struct bad_action {
     void operator()(ctx&) const {}
 };
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> / bad_action{} = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::event<go> / bad_action{} = bsc::state<Busy>,
+                                                   bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
 
 void run() {
     bsc::machine m{chart, ctx{}};

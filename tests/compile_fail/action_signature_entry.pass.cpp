@@ -15,8 +15,6 @@ struct good_entry {
 };
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::on_entry / good_entry{},
-    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>), bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+    bsc::state<Busy> + bsc::on_entry / good_entry{}, bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
 }  // namespace cf

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::actor_twice_in_order<&cf::actors::first.*bsc: this Actor is named twice in the system's bsc::order|bsc: this Actor is named twice in the system's bsc::order.*bsc::error::actor_twice_in_order<&cf::actors::first)
+// EXPECT: defect=actor_twice_in_order<&cf::actors::first
 // The order steps the first relay twice in every system step.
 #include <bsc/bsc.hpp>
 

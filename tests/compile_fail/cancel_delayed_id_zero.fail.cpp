@@ -1,4 +1,4 @@
-// EXPECT: bsc_cancel_delayed_id_zero_names_no_delayed_event
+// EXPECT: defect=cancel_delayed_id_zero
 // bsc::cancel_delayed(0) does not compile in a constexpr chart: 0 is no id, and cancels nothing.
 #include <bsc/bsc.hpp>
 

@@ -1,4 +1,4 @@
-// EXPECT: bsc_chart_ref_made_from_another_chart
+// EXPECT: defect=chart_ref_from_another_chart
 // A machine of chart_ref<fast> runs the chart `fast` itself, whatever it is built from: built
 // from `slow`, a chart of the same type with another delay, it would silently run `fast`.
 #include <bsc/bsc.hpp>

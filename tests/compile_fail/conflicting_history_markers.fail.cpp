@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::conflicting_history_markers<cf::Busy>.*bsc: this composite state has more than one history marker|bsc: this composite state has more than one history marker.*bsc::error::conflicting_history_markers<cf::Busy>)
+// EXPECT: defect=conflicting_history_markers<cf::Busy>
 // Busy is marked with both shallow and deep history.
 #include <bsc/bsc.hpp>
 
@@ -15,7 +15,6 @@ struct ctx {};
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::composite<Busy>(bsc::shallow_history, bsc::deep_history,
                                                                   bsc::initial<Sub1>, bsc::state<Sub2>)),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>,
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>, bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>,
     bsc::state<Sub1> + bsc::event<go> = bsc::state<Sub2>);
 }  // namespace cf

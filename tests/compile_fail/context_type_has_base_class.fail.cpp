@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::context_type_has_base_class<cf::ctx>.*bsc: this struct of the context has a base class|bsc: this struct of the context has a base class.*bsc::error::context_type_has_base_class<cf::ctx>)
+// EXPECT: defect=context_type_has_base_class<cf::ctx>
 // ctx inherits its channels from axis_io: bsc finds the members of an aggregate, not of its bases.
 #include <bsc/bsc.hpp>
 

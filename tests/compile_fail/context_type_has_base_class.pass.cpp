@@ -31,10 +31,11 @@ struct bsc::fields<cf::ctx> {
 namespace cf {
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Homing>, bsc::state<Ready>),
-    bsc::state<Homing> + bsc::event<scan>[([](ctx const& c) { return c.at_home.get(); })] / [](ctx& c) {
-        c.motor.set(false);
-        ++c.homings;
-    } = bsc::state<Ready>,
+    bsc::state<Homing> + bsc::event<scan>[([](ctx const& c) { return c.at_home.get(); })] /
+                             [](ctx& c) {
+                                 c.motor.set(false);
+                                 ++c.homings;
+                             } = bsc::state<Ready>,
     bsc::state<Ready> + bsc::event<scan>[([](ctx const& c) { return !c.at_home.get(); })] /
                             [](ctx& c) { c.motor.set(true); } = bsc::state<Homing>);
 }  // namespace cf

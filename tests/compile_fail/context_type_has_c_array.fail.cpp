@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::context_type_has_c_array<cf::ctx>.*bsc: this struct of the context has a C array member|bsc: this struct of the context has a C array member.*bsc::error::context_type_has_c_array<cf::ctx>)
+// EXPECT: defect=context_type_has_c_array<cf::ctx>
 // sensors is a C array: bsc cannot walk it, so the machine would not latch these inputs.
 #include <bsc/bsc.hpp>
 

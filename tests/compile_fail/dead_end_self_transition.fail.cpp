@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::dead_end_state<cf::Estop>.*bsc: dead end|bsc: dead end.*bsc::error::dead_end_state<cf::Estop>)
+// EXPECT: defect=dead_end_state<cf::Estop>
 // Estop's only transition re-enters Estop: the machine can never come out (the machine-tool
 // paper [MCS] in docs/references.md, Figure 5).
 #include <bsc/bsc.hpp>

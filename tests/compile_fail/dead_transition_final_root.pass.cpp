@@ -13,6 +13,5 @@ struct ctx {};
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Run>, bsc::composite<Run>(bsc::initial<Idle>, bsc::final_state<Done>)),
-    bsc::state<Idle> + bsc::event<stop> = bsc::state<Done>,
-    bsc::state<Done> + bsc::event<go> = bsc::state<Idle>);
+    bsc::state<Idle> + bsc::event<stop> = bsc::state<Done>, bsc::state<Done> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace cf

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::duplicate_event_name<cf::panel::go, cf::remote::go>.*bsc: two events of this chart have the same name|bsc: two events of this chart have the same name.*bsc::error::duplicate_event_name<cf::panel::go, cf::remote::go>)
+// EXPECT: defect=duplicate_event_name<cf::panel::go, cf::remote::go>
 // Two event types are both called "go": dispatch_by_name could not tell which one is meant.
 #include <bsc/bsc.hpp>
 
@@ -16,10 +16,9 @@ struct Idle;
 struct Busy;
 struct ctx {};
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<panel::go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<remote::go> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::event<panel::go> = bsc::state<Busy>,
+                                                   bsc::state<Busy> + bsc::event<remote::go> = bsc::state<Idle>);
 
 void run() {
     bsc::machine m{chart, ctx{}};

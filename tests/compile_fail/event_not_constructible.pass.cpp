@@ -17,8 +17,7 @@ struct ctx {
 };
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>), bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
     bsc::state<Busy> + bsc::event<speed> / [](ctx& c, speed const& s) { c.speed = s.value; } = bsc::state<Idle>);
 
 void run() {

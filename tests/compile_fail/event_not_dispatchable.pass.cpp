@@ -16,8 +16,7 @@ struct ctx {};
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::composite<Work>(bsc::initial<Busy>, bsc::final_state<Finished>),
                          bsc::state<Next>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>,
-    bsc::state<Busy> + bsc::event<finish> = bsc::state<Finished>,
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>, bsc::state<Busy> + bsc::event<finish> = bsc::state<Finished>,
     bsc::state<Work> + bsc::event<bsc::done<Work>> = bsc::state<Next>,
     bsc::state<Next> + bsc::event<go> = bsc::state<Idle>);
 

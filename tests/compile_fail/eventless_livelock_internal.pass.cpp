@@ -14,8 +14,6 @@ struct ctx {
 inline constexpr auto counting = bsc::guard([](ctx const& c) { return c.ticks < 3; });
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>,
-    bsc::state<Busy>[counting] / [](ctx& c) { ++c.ticks; });
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>), bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>, bsc::state<Busy>[counting] / [](ctx& c) { ++c.ticks; });
 }  // namespace cf

@@ -16,6 +16,5 @@ struct ctx {
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<A>,
                          bsc::parallel<P>(bsc::composite<R1>(bsc::initial<Y>), bsc::composite<R2>(bsc::initial<X>))),
-    bsc::state<A> = bsc::state<P>,
-    bsc::state<X>[([](ctx const& c) { return c.leave; })] = bsc::state<A>);
+    bsc::state<A> = bsc::state<P>, bsc::state<X>[([](ctx const& c) { return c.leave; })] = bsc::state<A>);
 }  // namespace cf

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::from_outside_not_an_input<&cf::actors::first, &cf::io::out.*bsc: bsc::from_outside must name an input of its actor|bsc: bsc::from_outside must name an input of its actor.*bsc::error::from_outside_not_an_input<&cf::actors::first, &cf::io::out)
+// EXPECT: defect=from_outside_not_an_input<&cf::actors::first, &cf::io::out
 // bsc::from_outside names an output, which only the relay's chart writes.
 #include <bsc/bsc.hpp>
 
@@ -20,9 +20,9 @@ struct actors {
     bsc::machine<bsc::chart_ref<relay>> first{relay};
     bsc::machine<bsc::chart_ref<relay>> second{relay};
 };
-using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
-                          bsc::from_outside<&actors::first, &io::out>,
-                          bsc::link<&actors::first, &io::out, &actors::second, &io::in>>;
+using chain =
+    bsc::system<actors, bsc::order<&actors::first, &actors::second>, bsc::from_outside<&actors::first, &io::out>,
+                bsc::link<&actors::first, &io::out, &actors::second, &io::in>>;
 
 inline int run() {
     chain s{};

@@ -16,8 +16,7 @@ struct ctx {
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
                          bsc::composite<Work>(bsc::initial<Step1>, bsc::state<Step1>, bsc::state<Step2>)),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>,
-    bsc::state<Step1> + bsc::event<go> = bsc::state<Step2>,
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>, bsc::state<Step1> + bsc::event<go> = bsc::state<Step2>,
     bsc::state<Work> + bsc::on_initial / [](ctx& c) { ++c.starts; },
     bsc::state<Step2> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace cf

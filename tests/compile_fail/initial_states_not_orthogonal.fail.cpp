@@ -1,4 +1,4 @@
-// EXPECT: bsc::error::initial_states_not_orthogonal<cf::Work>.*bsc: initial states not orthogonal|bsc: initial states not orthogonal.*bsc::error::initial_states_not_orthogonal<cf::Work>
+// EXPECT: defect=initial_states_not_orthogonal<cf::Work>
 // Work's initial states A1 and A2 are both in region R1: entering Work cannot enter both.
 #include <bsc/bsc.hpp>
 
@@ -23,8 +23,7 @@ inline constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Work>(bsc::initial<A1, A2>,
                              bsc::parallel<P>(bsc::composite<R1>(bsc::initial<A1>, bsc::state<A1>, bsc::state<A2>),
                                               bsc::composite<R2>(bsc::initial<B1>, bsc::state<B1>, bsc::state<B2>)))),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>,
-    bsc::state<A1> + bsc::event<go> = bsc::state<A2>, bsc::state<B1> + bsc::event<go> = bsc::state<B2>,
-    bsc::state<A2> + bsc::event<go> = bsc::state<A1>, bsc::state<B2> + bsc::event<go> = bsc::state<B1>,
-    bsc::state<Work> + bsc::event<back> = bsc::state<Idle>);
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>, bsc::state<A1> + bsc::event<go> = bsc::state<A2>,
+    bsc::state<B1> + bsc::event<go> = bsc::state<B2>, bsc::state<A2> + bsc::event<go> = bsc::state<A1>,
+    bsc::state<B2> + bsc::event<go> = bsc::state<B1>, bsc::state<Work> + bsc::event<back> = bsc::state<Idle>);
 }  // namespace cf

@@ -22,8 +22,7 @@ inline constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Work>(bsc::initial<A2, B2>,
                              bsc::parallel<P>(bsc::composite<R1>(bsc::initial<A1>, bsc::state<A1>, bsc::state<A2>),
                                               bsc::composite<R2>(bsc::initial<B1>, bsc::state<B1>, bsc::state<B2>)))),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>,
-    bsc::state<A1> + bsc::event<go> = bsc::state<A2>, bsc::state<B1> + bsc::event<go> = bsc::state<B2>,
-    bsc::state<A2> + bsc::event<go> = bsc::state<A1>, bsc::state<B2> + bsc::event<go> = bsc::state<B1>,
-    bsc::state<Work> + bsc::event<back> = bsc::state<Idle>);
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>, bsc::state<A1> + bsc::event<go> = bsc::state<A2>,
+    bsc::state<B1> + bsc::event<go> = bsc::state<B2>, bsc::state<A2> + bsc::event<go> = bsc::state<A1>,
+    bsc::state<B2> + bsc::event<go> = bsc::state<B1>, bsc::state<Work> + bsc::event<back> = bsc::state<Idle>);
 }  // namespace cf

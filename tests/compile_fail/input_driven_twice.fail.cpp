@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::input_driven_twice<&cf::actors::second, &cf::io::in.*bsc: two links of the system drive this input|bsc: two links of the system drive this input.*bsc::error::input_driven_twice<&cf::actors::second, &cf::io::in)
+// EXPECT: defect=input_driven_twice<&cf::actors::second, &cf::io::in
 // Two links write the second relay's input: the later would overwrite the earlier.
 #include <bsc/bsc.hpp>
 
@@ -20,10 +20,10 @@ struct actors {
     bsc::machine<bsc::chart_ref<relay>> first{relay};
     bsc::machine<bsc::chart_ref<relay>> second{relay};
 };
-using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
-                          bsc::from_outside<&actors::first, &io::in>,
-                          bsc::link<&actors::first, &io::out, &actors::second, &io::in>,
-                          bsc::link<&actors::second, &io::out, &actors::second, &io::in>>;
+using chain =
+    bsc::system<actors, bsc::order<&actors::first, &actors::second>, bsc::from_outside<&actors::first, &io::in>,
+                bsc::link<&actors::first, &io::out, &actors::second, &io::in>,
+                bsc::link<&actors::second, &io::out, &actors::second, &io::in>>;
 
 inline int run() {
     chain s{};

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::input_linked_and_from_outside<&cf::actors::second, &cf::io::in.*bsc: this input \(Channel of Actor\) is declared bsc::from_outside, but a link|bsc: this input \(Channel of Actor\) is declared bsc::from_outside, but a link.*bsc::error::input_linked_and_from_outside<&cf::actors::second, &cf::io::in)
+// EXPECT: defect=input_linked_and_from_outside<&cf::actors::second, &cf::io::in
 // The second relay's input is declared bsc::from_outside, and a link drives it too.
 #include <bsc/bsc.hpp>
 
@@ -20,10 +20,9 @@ struct actors {
     bsc::machine<bsc::chart_ref<relay>> first{relay};
     bsc::machine<bsc::chart_ref<relay>> second{relay};
 };
-using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
-                          bsc::from_outside<&actors::first, &io::in>,
-                          bsc::link<&actors::first, &io::out, &actors::second, &io::in>,
-                          bsc::from_outside<&actors::second, &io::in>>;
+using chain = bsc::system<
+    actors, bsc::order<&actors::first, &actors::second>, bsc::from_outside<&actors::first, &io::in>,
+    bsc::link<&actors::first, &io::out, &actors::second, &io::in>, bsc::from_outside<&actors::second, &io::in>>;
 
 inline int run() {
     chain s{};

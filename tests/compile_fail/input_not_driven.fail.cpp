@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::input_not_driven<&cf::actors::first, bsc::error::member_number<0>.*bsc: no link of the system drives this input of Actor|bsc: no link of the system drives this input of Actor.*bsc::error::input_not_driven<&cf::actors::first, bsc::error::member_number<0>)
+// EXPECT: defect=input_not_driven<&cf::actors::first, member_number<0>
 // Nothing drives the first relay's input: no link, and no bsc::from_outside entry.
 #include <bsc/bsc.hpp>
 

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::input_written_by_the_chart<bool>.*bsc: an action writes an input channel|bsc: an action writes an input channel.*bsc::error::input_written_by_the_chart<bool>)
+// EXPECT: defect=input_written_by_the_chart<bool>
 // An action writes the chart's own input, which only the environment writes.
 #include <bsc/bsc.hpp>
 

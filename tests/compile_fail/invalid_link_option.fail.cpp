@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::invalid_link_option<bsc::lossless.*bsc: this Option of a bsc::link is none of|bsc: this Option of a bsc::link is none of.*bsc::error::invalid_link_option<bsc::lossless)
+// EXPECT: defect=invalid_link_option<bsc::lossless
 // A link with two staleness policies: it may read the last value or wait, not both.
 #include <bsc/bsc.hpp>
 
@@ -20,9 +20,9 @@ struct actors {
     bsc::machine<bsc::chart_ref<relay>> first{relay};
     bsc::machine<bsc::chart_ref<relay>> second{relay};
 };
-using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
-                          bsc::from_outside<&actors::first, &io::in>,
-                          bsc::link<&actors::first, &io::out, &actors::second, &io::in, bsc::hold_last, bsc::lossless>>;
+using chain =
+    bsc::system<actors, bsc::order<&actors::first, &actors::second>, bsc::from_outside<&actors::first, &io::in>,
+                bsc::link<&actors::first, &io::out, &actors::second, &io::in, bsc::hold_last, bsc::lossless>>;
 
 inline int run() {
     chain s{};

@@ -21,9 +21,9 @@ struct actors {
 };
 inline constexpr auto positive = [](int n) { return n > 0; };
 inline constexpr auto named = [](char const* name) { return name != nullptr; };
-using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
-                          bsc::from_outside<&actors::first, &io::in>,
-                          bsc::link<&actors::first, &io::count, &actors::second, &io::in, bsc::convert<positive>>>;
+using chain =
+    bsc::system<actors, bsc::order<&actors::first, &actors::second>, bsc::from_outside<&actors::first, &io::in>,
+                bsc::link<&actors::first, &io::count, &actors::second, &io::in, bsc::convert<positive>>>;
 
 inline int run() {
     chain s{};

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::link_source_not_an_output<&cf::actors::first, &cf::io::in.*bsc: the source of a bsc::link must be an output of its actor|bsc: the source of a bsc::link must be an output of its actor.*bsc::error::link_source_not_an_output<&cf::actors::first, &cf::io::in)
+// EXPECT: defect=link_source_not_an_output<&cf::actors::first, &cf::io::in
 // The link starts at an input of its source actor: a link carries what its source publishes.
 #include <bsc/bsc.hpp>
 
@@ -20,9 +20,9 @@ struct actors {
     bsc::machine<bsc::chart_ref<relay>> first{relay};
     bsc::machine<bsc::chart_ref<relay>> second{relay};
 };
-using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
-                          bsc::from_outside<&actors::first, &io::in>,
-                          bsc::link<&actors::first, &io::in, &actors::second, &io::in>>;
+using chain =
+    bsc::system<actors, bsc::order<&actors::first, &actors::second>, bsc::from_outside<&actors::first, &io::in>,
+                bsc::link<&actors::first, &io::in, &actors::second, &io::in>>;
 
 inline int run() {
     chain s{};

@@ -19,9 +19,9 @@ struct actors {
     bsc::machine<bsc::chart_ref<relay>> first{relay};
     bsc::machine<bsc::chart_ref<relay>> second{relay};
 };
-using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
-                          bsc::from_outside<&actors::first, &io::in>,
-                          bsc::link<&actors::first, &io::out, &actors::second, &io::in>>;
+using chain =
+    bsc::system<actors, bsc::order<&actors::first, &actors::second>, bsc::from_outside<&actors::first, &io::in>,
+                bsc::link<&actors::first, &io::out, &actors::second, &io::in>>;
 
 inline int run() {
     chain s{};

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::link_value_types_differ<&cf::io::count, &cf::io::in, int, bool.*bsc: this bsc::link carries a From into a channel of To|bsc: this bsc::link carries a From into a channel of To.*bsc::error::link_value_types_differ<&cf::io::count, &cf::io::in, int, bool)
+// EXPECT: defect=link_value_types_differ<&cf::io::count, &cf::io::in, int, bool
 // An int output linked to a bool input, which would convert 300 to true in silence.
 #include <bsc/bsc.hpp>
 
@@ -21,9 +21,9 @@ struct actors {
     bsc::machine<bsc::chart_ref<relay>> second{relay};
 };
 inline constexpr auto positive = [](int n) { return n > 0; };
-using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
-                          bsc::from_outside<&actors::first, &io::in>,
-                          bsc::link<&actors::first, &io::count, &actors::second, &io::in>>;
+using chain =
+    bsc::system<actors, bsc::order<&actors::first, &actors::second>, bsc::from_outside<&actors::first, &io::in>,
+                bsc::link<&actors::first, &io::count, &actors::second, &io::in>>;
 
 inline int run() {
     chain s{};

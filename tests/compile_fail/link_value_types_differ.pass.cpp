@@ -20,9 +20,9 @@ struct actors {
     bsc::machine<bsc::chart_ref<relay>> second{relay};
 };
 inline constexpr auto positive = [](int n) { return n > 0; };
-using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
-                          bsc::from_outside<&actors::first, &io::in>,
-                          bsc::link<&actors::first, &io::count, &actors::second, &io::in, bsc::convert<positive>>>;
+using chain =
+    bsc::system<actors, bsc::order<&actors::first, &actors::second>, bsc::from_outside<&actors::first, &io::in>,
+                bsc::link<&actors::first, &io::count, &actors::second, &io::in, bsc::convert<positive>>>;
 
 inline int run() {
     chain s{};

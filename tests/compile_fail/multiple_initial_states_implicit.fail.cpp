@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::multiple_initial_states<cf::Busy>.*bsc: this composite state has more than one bsc::initial marker|bsc: this composite state has more than one bsc::initial marker.*bsc::error::multiple_initial_states<cf::Busy>)
+// EXPECT: defect=multiple_initial_states<cf::Busy>
 // Two markers name the same child, which the markers alone declare: one child, two markers.
 #include <bsc/bsc.hpp>
 
@@ -13,6 +13,5 @@ struct ctx {};
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::composite<Busy>(bsc::initial<Sub1>, bsc::initial<Sub1>)),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>, bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
 }  // namespace cf

@@ -12,6 +12,5 @@ struct ctx {};
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::composite<Busy>(bsc::initial<Sub1>)),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>, bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
 }  // namespace cf

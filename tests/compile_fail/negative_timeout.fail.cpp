@@ -1,4 +1,4 @@
-// EXPECT: bsc_after_negative_delay
+// EXPECT: defect=negative_timeout
 // A timeout with a negative delay does not compile in a constexpr chart.
 #include <bsc/bsc.hpp>
 
@@ -13,8 +13,7 @@ struct Idle;
 struct Busy;
 struct ctx {};
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::after(-1s) = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::after(-1s) = bsc::state<Busy>,
+                                                   bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace cf

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::not_a_link<bsc::lossless.*bsc: after the actors and the order, every argument of bsc::system must be a|bsc: after the actors and the order, every argument of bsc::system must be a.*bsc::error::not_a_link<bsc::lossless)
+// EXPECT: defect=not_a_link<bsc::lossless
 // A link's option given to the system instead of to the link.
 #include <bsc/bsc.hpp>
 
@@ -20,10 +20,9 @@ struct actors {
     bsc::machine<bsc::chart_ref<relay>> first{relay};
     bsc::machine<bsc::chart_ref<relay>> second{relay};
 };
-using chain = bsc::system<actors, bsc::order<&actors::first, &actors::second>,
-                          bsc::from_outside<&actors::first, &io::in>,
-                          bsc::link<&actors::first, &io::out, &actors::second, &io::in>,
-                          bsc::lossless>;
+using chain =
+    bsc::system<actors, bsc::order<&actors::first, &actors::second>, bsc::from_outside<&actors::first, &io::in>,
+                bsc::link<&actors::first, &io::out, &actors::second, &io::in>, bsc::lossless>;
 
 inline int run() {
     chain s{};

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::not_a_state_declaration<cf::Root, int>.*bsc: an argument of this state's declaration is not a state or marker|bsc: an argument of this state's declaration is not a state or marker.*bsc::error::not_a_state_declaration<cf::Root, int>)
+// EXPECT: defect=not_a_state_declaration<cf::Root, int>
 // The declaration of Root is passed an int, which is neither a state nor a marker.
 #include <bsc/bsc.hpp>
 
@@ -9,8 +9,7 @@ struct Idle;
 struct Busy;
 struct ctx {};
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, 0, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, 0, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+                                                   bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace cf

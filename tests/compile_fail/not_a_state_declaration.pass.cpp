@@ -1,15 +1,2 @@
 // Twin of not_a_state_declaration.fail.cpp: the int argument is removed.
-#include <bsc/bsc.hpp>
-
-namespace cf {
-struct go {};
-struct Root;
-struct Idle;
-struct Busy;
-struct ctx {};
-
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
-}  // namespace cf
+#include "two_states.hpp"

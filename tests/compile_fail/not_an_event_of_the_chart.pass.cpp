@@ -12,10 +12,9 @@ struct Idle;
 struct Busy;
 struct ctx {};
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+                                                   bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
 
 inline constexpr std::size_t number = bsc::event_set<decltype(chart)>::number_of<stop>;
 }  // namespace cf

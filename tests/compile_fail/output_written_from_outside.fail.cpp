@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::output_written_from_outside<bool>.*bsc: an output channel is written from outside its chart|bsc: an output channel is written from outside its chart.*bsc::error::output_written_from_outside<bool>)
+// EXPECT: defect=output_written_from_outside<bool>
 // The environment writes the chart's output, which only the chart's actions write.
 #include <bsc/bsc.hpp>
 

@@ -17,16 +17,15 @@ struct ctx {
 };
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<start> = bsc::state<Busy>,
-    bsc::state<Idle> + bsc::event<job> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<job> / bsc::defer,
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>), bsc::state<Idle> + bsc::event<start> = bsc::state<Busy>,
+    bsc::state<Idle> + bsc::event<job> = bsc::state<Busy>, bsc::state<Busy> + bsc::event<job> / bsc::defer,
     bsc::state<Busy> + bsc::event<finish> / [](ctx& c) { c.done = (c.done + 1) % 2; } = bsc::state<Idle>);
 }  // namespace cf
 
 int main() {
-    bsc::verify::explorer ex{bsc::verify::event_model<bsc::machine<decltype(cf::chart)>, cf::start, cf::job, cf::finish>{
-        bsc::machine{cf::chart, cf::ctx{}}}};
+    bsc::verify::explorer ex{
+        bsc::verify::event_model<bsc::machine<decltype(cf::chart)>, cf::start, cf::job, cf::finish>{
+            bsc::machine{cf::chart, cf::ctx{}}}};
     auto const& stats = ex.run();
     // Idle, with done 0 or 1 (a job never waits there: Idle takes it), and Busy, with done 0 or 1
     // and 0 to 8 jobs deferred (the default policy's deferred_capacity): machines that differ only

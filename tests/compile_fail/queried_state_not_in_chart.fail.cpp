@@ -1,4 +1,4 @@
-// EXPECT: bsc::error::queried_state_not_in_chart<cf::Bsuy>
+// EXPECT: defect=queried_state_not_in_chart<cf::Bsuy>
 // is<Bsuy>() asks about a misspelt state that the chart does not declare.
 #include <bsc/bsc.hpp>
 
@@ -10,10 +10,9 @@ struct Busy;
 struct Bsuy;
 struct ctx {};
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+                                                   bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
 
 inline bool busy() {
     bsc::machine m{chart};

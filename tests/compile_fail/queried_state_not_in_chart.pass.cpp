@@ -9,10 +9,9 @@ struct Busy;
 struct Bsuy;
 struct ctx {};
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+                                                   bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
 
 inline bool busy() {
     bsc::machine m{chart};

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::raised_event_not_in_chart<cf::other>.*bsc: an action raises an event type that no transition of this chart handles|bsc: an action raises an event type that no transition of this chart handles.*bsc::error::raised_event_not_in_chart<cf::other>)
+// EXPECT: defect=raised_event_not_in_chart<cf::other>
 // The action of Idle -go-> Busy raises cf::other, which no transition handles. The action
 // is checked when the machine's dispatch of cf::go is instantiated.
 #include <bsc/bsc.hpp>

@@ -13,8 +13,7 @@ struct ctx {};
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
     bsc::state<Idle> + bsc::event<go> / bsc::raise(other{}) = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>,
-    bsc::state<Busy> + bsc::event<other> = bsc::state<Idle>);
+    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>, bsc::state<Busy> + bsc::event<other> = bsc::state<Idle>);
 
 void run() {
     bsc::machine m{chart, ctx{}};

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::root_must_be_composite<bsc::detail::state_ref<cf::Idle> ?>.*bsc: the first argument of make_chart is the root of the state tree|bsc: the first argument of make_chart is the root of the state tree.*bsc::error::root_must_be_composite<bsc::detail::state_ref<cf::Idle> ?>)
+// EXPECT: defect=root_must_be_composite<bsc::detail::state_ref<cf::Idle> ?>
 // The root of the state tree is a basic state, bsc::state<Idle>.
 #include <bsc/bsc.hpp>
 
@@ -8,7 +8,6 @@ struct Root;
 struct Idle;
 struct ctx {};
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::state<Idle>,
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::state<Idle>,
+                                                   bsc::state<Idle> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace cf

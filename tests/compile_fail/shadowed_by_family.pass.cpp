@@ -15,7 +15,6 @@ struct ctx {};
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Fault>, bsc::state<Retry>),
     bsc::state<Idle> + bsc::event<error_send> = bsc::state<Retry>,
-    bsc::state<Idle> + bsc::event<error> = bsc::state<Fault>,
-    bsc::state<Fault> + bsc::event<go> = bsc::state<Idle>,
+    bsc::state<Idle> + bsc::event<error> = bsc::state<Fault>, bsc::state<Fault> + bsc::event<go> = bsc::state<Idle>,
     bsc::state<Retry> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace cf

@@ -16,8 +16,8 @@ struct ctx {
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Heating>),
     bsc::state<Idle> + bsc::event<go> / [](ctx& c) { c.heat_timer.start(); } = bsc::state<Heating>,
-    bsc::state<Heating>[([](ctx const& c) { return c.heat_timer.tm(); })] / [](ctx& c) { ++c.cycles; } =
-        bsc::state<Idle>);
+    bsc::state<Heating>[([](ctx const& c) { return c.heat_timer.tm(); })] /
+        [](ctx& c) { ++c.cycles; } = bsc::state<Idle>);
 }  // namespace cf
 
 int main() {

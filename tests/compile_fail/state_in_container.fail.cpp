@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::state_out_of_reach<cf::ctx, bsc::error::member_number<0>, std::vector<bsc::input<bool>.*bsc: member Member of Owner|bsc: member Member of Owner.*bsc::error::state_out_of_reach<cf::ctx, bsc::error::member_number<0>, std::vector<bsc::input<bool>)
+// EXPECT: defect=state_out_of_reach<cf::ctx, member_number<0>, std::vector<bsc::input<bool>
 // The input channels are elements of a std::vector, which the machine does not look into.
 #include <bsc/bsc.hpp>
 #include <vector>

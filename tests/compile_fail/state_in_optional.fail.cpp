@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::state_out_of_reach<cf::ctx, bsc::error::member_number<1>, std::optional<bsc::timer> ?>.*bsc: member Member of Owner|bsc: member Member of Owner.*bsc::error::state_out_of_reach<cf::ctx, bsc::error::member_number<1>, std::optional<bsc::timer> ?>)
+// EXPECT: defect=state_out_of_reach<cf::ctx, member_number<1>, std::optional<bsc::timer> ?>
 // The timer is inside a std::optional, where the machine cannot reach it to update it.
 #include <bsc/bsc.hpp>
 #include <chrono>
@@ -16,8 +16,8 @@ struct ctx {
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> / [](ctx& c) { c.watchdog.emplace(std::chrono::milliseconds{50}).start(); } =
-        bsc::state<Busy>,
+    bsc::state<Idle> +
+        bsc::event<go> / [](ctx& c) { c.watchdog.emplace(std::chrono::milliseconds{50}).start(); } = bsc::state<Busy>,
     bsc::state<Busy>[([](ctx const& c) { return c.watchdog && c.watchdog->tm(); })] = bsc::state<Idle>);
 }  // namespace cf
 

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::state_out_of_reach<cf::axis, bsc::error::member_number<1>, std::optional<bsc::timer> ?>.*bsc: member Member of Owner|bsc: member Member of Owner.*bsc::error::state_out_of_reach<cf::axis, bsc::error::member_number<1>, std::optional<bsc::timer> ?>)
+// EXPECT: defect=state_out_of_reach<cf::axis, member_number<1>, std::optional<bsc::timer> ?>
 // The timer is in a std::optional inside cf::axis, a struct of the context: the error names axis.
 #include <bsc/bsc.hpp>
 #include <chrono>
@@ -20,8 +20,9 @@ struct ctx {
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Moving>),
-    bsc::state<Idle> + bsc::event<go> / [](ctx& c) { c.x.watchdog.emplace(std::chrono::milliseconds{50}).start(); } =
-        bsc::state<Moving>,
+    bsc::state<Idle> +
+        bsc::event<go> /
+            [](ctx& c) { c.x.watchdog.emplace(std::chrono::milliseconds{50}).start(); } = bsc::state<Moving>,
     bsc::state<Moving>[([](ctx const& c) { return c.x.watchdog && c.x.watchdog->tm(); })] = bsc::state<Idle>);
 }  // namespace cf
 

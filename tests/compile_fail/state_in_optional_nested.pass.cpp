@@ -20,8 +20,8 @@ struct ctx {
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Moving>),
     bsc::state<Idle> + bsc::event<go> / [](ctx& c) { c.x.watchdog.start(); } = bsc::state<Moving>,
-    bsc::state<Moving>[([](ctx const& c) { return c.x.watchdog.tm(); })] / [](ctx& c) { ++c.moves; } =
-        bsc::state<Idle>);
+    bsc::state<Moving>[([](ctx const& c) { return c.x.watchdog.tm(); })] /
+        [](ctx& c) { ++c.moves; } = bsc::state<Idle>);
 }  // namespace cf
 
 int main() {

@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::state_not_in_chart<cf::Ghost>.*bsc: a row names a state that the state tree does not declare|bsc: a row names a state that the state tree does not declare.*bsc::error::state_not_in_chart<cf::Ghost>)
+// EXPECT: defect=state_not_in_chart<cf::Ghost>
 // The source of the last row, Ghost, is not declared in the state tree.
 #include <bsc/bsc.hpp>
 
@@ -11,8 +11,7 @@ struct Busy;
 struct Ghost;
 struct ctx {};
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Ghost> + bsc::event<stop> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+                                                   bsc::state<Ghost> + bsc::event<stop> = bsc::state<Idle>);
 }  // namespace cf

@@ -10,8 +10,7 @@ struct Busy;
 struct Ghost;
 struct ctx {};
 
-inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+inline constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+                                                   bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
 }  // namespace cf

@@ -1,4 +1,4 @@
-// EXPECT: bsc_after_delay_beyond_bsc_duration
+// EXPECT: defect=timeout_beyond_duration
 // A delay beyond bsc::duration (nanoseconds, about 292 years) does not compile in a constexpr chart.
 #include <bsc/bsc.hpp>
 

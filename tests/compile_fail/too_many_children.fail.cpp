@@ -1,4 +1,4 @@
-// EXPECT: (bsc::error::too_many_children<cf::Root>.*bsc: a composite state may have at most 255 children|bsc: a composite state may have at most 255 children.*bsc::error::too_many_children<cf::Root>)
+// EXPECT: defect=too_many_children<cf::Root>
 // Root has 256 children, S<0> to S<255>; a composite's active child is kept in one byte.
 #include <bsc/bsc.hpp>
 

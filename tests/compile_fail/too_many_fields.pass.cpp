@@ -3,7 +3,8 @@
 #include <bsc/bsc.hpp>
 
 // Ten int members, p0 to p9.
-#define CF_TEN(p) int p##0 = 0, p##1 = 0, p##2 = 0, p##3 = 0, p##4 = 0, p##5 = 0, p##6 = 0, p##7 = 0, p##8 = 0, p##9 = 0;
+#define CF_TEN(p) \
+    int p##0 = 0, p##1 = 0, p##2 = 0, p##3 = 0, p##4 = 0, p##5 = 0, p##6 = 0, p##7 = 0, p##8 = 0, p##9 = 0;
 
 namespace cf {
 struct go {};
@@ -11,8 +12,7 @@ struct Root;
 struct Idle;
 struct Busy;
 struct first_half {
-    CF_TEN(a) CF_TEN(b) CF_TEN(c) CF_TEN(d) CF_TEN(e) CF_TEN(f)
-    int g0 = 0, g1 = 0, g2 = 0, g3 = 0, g4 = 0;
+    CF_TEN(a) CF_TEN(b) CF_TEN(c) CF_TEN(d) CF_TEN(e) CF_TEN(f) int g0 = 0, g1 = 0, g2 = 0, g3 = 0, g4 = 0;
 };
 struct second_half {
     int g5 = 0, g6 = 0, g7 = 0, g8 = 0, g9 = 0;

@@ -1,4 +1,4 @@
-// EXPECT: bsc::error::unreachable_state<cf::Other>.*bsc: unreachable state|bsc: unreachable state.*bsc::error::unreachable_state<cf::Other>
+// EXPECT: defect=unreachable_state<cf::Other>
 // Work's deep initial enters Mid on the way to Deep, without Mid's own initial transition: Other,
 // Mid's initial child, is entered by nothing.
 #include <bsc/bsc.hpp>
@@ -15,10 +15,10 @@ struct Deep;
 struct ctx {};
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
-                         bsc::composite<Work>(bsc::initial<Deep>,
-                                              bsc::composite<Mid>(bsc::initial<Other>, bsc::state<Other>, bsc::state<Deep>))),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>,
-    bsc::state<Other> + bsc::event<go> = bsc::state<Deep>,
+    bsc::composite<Root>(
+        bsc::initial<Idle>, bsc::state<Idle>,
+        bsc::composite<Work>(bsc::initial<Deep>,
+                             bsc::composite<Mid>(bsc::initial<Other>, bsc::state<Other>, bsc::state<Deep>))),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>, bsc::state<Other> + bsc::event<go> = bsc::state<Deep>,
     bsc::state<Work> + bsc::event<back> = bsc::state<Idle>);
 }  // namespace cf

@@ -14,11 +14,10 @@ struct Deep;
 struct ctx {};
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
-                         bsc::composite<Work>(bsc::initial<Deep>,
-                                              bsc::composite<Mid>(bsc::initial<Other>, bsc::state<Other>, bsc::state<Deep>))),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>,
-    bsc::state<Other> + bsc::event<go> = bsc::state<Deep>,
-    bsc::state<Deep> + bsc::event<go> = bsc::state<Mid>,
-    bsc::state<Work> + bsc::event<back> = bsc::state<Idle>);
+    bsc::composite<Root>(
+        bsc::initial<Idle>, bsc::state<Idle>,
+        bsc::composite<Work>(bsc::initial<Deep>,
+                             bsc::composite<Mid>(bsc::initial<Other>, bsc::state<Other>, bsc::state<Deep>))),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>, bsc::state<Other> + bsc::event<go> = bsc::state<Deep>,
+    bsc::state<Deep> + bsc::event<go> = bsc::state<Mid>, bsc::state<Work> + bsc::event<back> = bsc::state<Idle>);
 }  // namespace cf

@@ -12,7 +12,6 @@ struct ctx {};
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::final_state<Done>, bsc::state<Lost>),
-    bsc::state<Idle> + bsc::event<stop> = bsc::state<Done>,
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Lost>,
+    bsc::state<Idle> + bsc::event<stop> = bsc::state<Done>, bsc::state<Idle> + bsc::event<go> = bsc::state<Lost>,
     bsc::state<Lost> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace cf

@@ -16,13 +16,20 @@ before the fence says otherwise (the syntax is documented in tests/doc_samples.c
 
   <!-- sample: prelude -->        the block is put before every later block of the page
   <!-- sample: in NAME -->        the block is pasted into tests/doc_samples/NAME.cpp.in
-  <!-- sample: fails REGEX -->    the block shows an error and its fix, marked line by line
-  <!-- sample: in NAME; fails REGEX -->
+  <!-- sample: fails defect=TYPE -->
+                                 the block shows an error and its fix, marked line by line;
+                                 the error is a defect of tests/defects/catalogue.py, whose
+                                 regex it must match (`fails defect=dead_end_state<cf::Stuck>`)
+  <!-- sample: fails REGEX -->    the same, for a diagnostic that is no check's message
+  <!-- sample: in NAME; fails defect=TYPE -->
 """
 
 import re
 import sys
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "defects"))
+import catalogue  # noqa: E402
 
 FENCE = re.compile(r"^```(?P<info>[^\n`]*)\n(?P<code>.*?)^```[ \t]*$", re.S | re.M)
 MARKER = re.compile(r"^<!-- sample: (?P<options>.*?) -->$")
@@ -46,7 +53,8 @@ def blocks(text):
 
 
 def parse_options(options, page, line):
-    """The options of a marker: {'prelude': True} or {'in': NAME, 'fails': REGEX}."""
+    """The options of a marker: {'prelude': True} or {'in': NAME, 'fails': REGEX}, where
+    `fails defect=TYPE` gives the catalogue's regex for TYPE."""
     result = {}
     for part in (p.strip() for p in options.split(";")):
         word, _, value = part.partition(" ")
@@ -55,11 +63,16 @@ def parse_options(options, page, line):
             result["prelude"] = True
         elif word == "in" and re.fullmatch(r"[\w-]+", value):
             result["in"] = value
+        elif word == "fails" and value.startswith("defect="):
+            try:
+                result["fails"] = catalogue.regex(value[len("defect="):])
+            except catalogue.CatalogueError as e:
+                raise SampleError(f"{page}:{line - 2}: {e}") from None
         elif word == "fails" and value:
             result["fails"] = value
         else:
             raise SampleError(f"{page}:{line - 2}: unknown sample option `{part}` "
-                              "(expected `prelude`, `in NAME` or `fails REGEX`)")
+                              "(expected `prelude`, `in NAME`, `fails defect=TYPE` or `fails REGEX`)")
     if "prelude" in result and len(result) > 1:
         raise SampleError(f"{page}:{line - 2}: a prelude takes no other option")
     return result

@@ -35,8 +35,7 @@ void drive(char const* name, std::uint8_t const* data, std::size_t size) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size) {
-    if (size == 0)
-        return 0;
+    if (size == 0) return 0;
     std::uint8_t const* steps = data + 1;
     std::size_t const n = size - 1;
     switch (data[0] % 19) {

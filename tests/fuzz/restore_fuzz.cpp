@@ -86,7 +86,8 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
             break;
     }
     bool const resume = (mode & 0x80) != 0;
-    auto const resume_time = bsc::duration{static_cast<bsc::duration::rep>(n > 0 ? rest[0] : 0) * 7'000'000'000'000'000};
+    auto const resume_time = bsc::duration{static_cast<bsc::duration::rep>(n > 0 ? rest[0] : 0) *
+                                           7'000'000'000'000'000};
 
     machine m = running_machine();
     m.dispatch(retain_test::back{}, bsc::allow_unhandled);

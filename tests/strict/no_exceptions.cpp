@@ -14,7 +14,9 @@ using namespace std::chrono_literals;
 
 namespace no_exceptions {
 struct go {};
-struct Root; struct Idle; struct Busy;
+struct Root;
+struct Idle;
+struct Busy;
 struct ctx {
     int n = 0;
 };
@@ -31,7 +33,8 @@ int run_without_exceptions() {
     m.step(10ms);
     bsc::table::machine t{mcs::chart, mcs::panel{}};
     t.dispatch(mcs::on_p{});
-    auto model = bsc::verify::cycle_model{bsc::machine{no_exceptions::chart}, 1ms, 1, [](no_exceptions::ctx const&, std::size_t) {}};
+    auto model = bsc::verify::cycle_model{bsc::machine{no_exceptions::chart}, 1ms, 1,
+                                          [](no_exceptions::ctx const&, std::size_t) {}};
     bsc::verify::explorer ex{model};
     ex.run();
     return m.context().n + static_cast<int>(ex.count() + bsc::to_dot(no_exceptions::chart).size());

@@ -24,7 +24,15 @@ using namespace std::chrono_literals;
 namespace strict {
 struct go {};
 struct tick {};
-struct Root; struct Par; struct Left; struct L1; struct L2; struct Right; struct R1; struct R2; struct Done;
+struct Root;
+struct Par;
+struct Left;
+struct L1;
+struct L2;
+struct Right;
+struct R1;
+struct R2;
+struct Done;
 struct io {
     bsc::input<int> level{};
     bsc::output<bool> lamp{};
@@ -43,11 +51,15 @@ inline constexpr auto chart = bsc::make_chart<io>(
                          bsc::parallel<Par>(bsc::composite<Left>(bsc::deep_history, bsc::initial<L1>, bsc::state<L2>),
                                             bsc::composite<Right>(bsc::initial<R1>, bsc::state<R2>)),
                          bsc::final_state<Done>),
-    bsc::state<L1> + bsc::event<go> / [](io& d, go const&, auto& raise) { ++d.count; raise(tick{}); } = bsc::state<L2>,
+    bsc::state<L1> + bsc::event<go> /
+                         [](io& d, go const&, auto& raise) {
+                             ++d.count;
+                             raise(tick{});
+                         } = bsc::state<L2>,
     bsc::state<L2> + bsc::event<go> = bsc::state<L1>,
-    bsc::state<R1> + bsc::event<tick> [([](io const& d) { return d.count > 0; })] = bsc::state<R2>,
+    bsc::state<R1> + bsc::event<tick>[([](io const& d) { return d.count > 0; })] = bsc::state<R2>,
     bsc::state<R2> + bsc::after(20ms) / [](io& d) { d.lamp.set(true); } = bsc::state<R1>,
-    bsc::state<R1> [([](io const& d) { return d.level > 100; })] = bsc::state<Done>,
+    bsc::state<R1>[([](io const& d) { return d.level > 100; })] = bsc::state<Done>,
     bsc::state<L2> + bsc::on_entry / [](io& d) { d.t.start(); });
 }  // namespace strict
 

@@ -12,7 +12,7 @@
 #include <doctest/doctest.h>
 
 #include <bsc/bsc.hpp>
-#include <bsc/table/engine.hpp>
+#include <bsc/table/machine.hpp>
 
 namespace bsc_test {
 

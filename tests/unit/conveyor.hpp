@@ -18,7 +18,7 @@ struct controller_io {
 inline constexpr auto controller = bsc::make_chart<controller_io>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Running>),
     bsc::state<Idle>[([](controller_io const& c) { return c.request.get() && !c.arrived.get(); })] /
-            [](controller_io& c) { c.motor.set(true); } = bsc::state<Running>,
+        [](controller_io& c) { c.motor.set(true); } = bsc::state<Running>,
     bsc::state<Running>[([](controller_io const& c) { return c.arrived.get(); })] /
-            [](controller_io& c) { c.motor.set(false); } = bsc::state<Idle>);
+        [](controller_io& c) { c.motor.set(false); } = bsc::state<Idle>);
 }  // namespace conveyor

@@ -48,26 +48,28 @@ struct plant {
 
 // Three components; the first writes a variable and an output, the later ones read them.
 inline constexpr auto chart = bsc::make_chart<plant>(
-    bsc::composite<Root>(bsc::initial<P>,
-                         bsc::parallel<P>(bsc::composite<C1>(bsc::initial<Idle1>, bsc::state<Busy1>),
-                                          bsc::composite<C2>(bsc::initial<Idle2>, bsc::state<Busy2>),
-                                          bsc::composite<C3>(bsc::initial<Idle3>, bsc::state<Busy3>))),
-    bsc::state<Idle1>[([](plant const& p) { return p.start.get(); })] / [](plant& p) {
-        p.var = 1;
-        p.lamp.set(7);
-    } = bsc::state<Busy1>,
+    bsc::composite<Root>(bsc::initial<P>, bsc::parallel<P>(bsc::composite<C1>(bsc::initial<Idle1>, bsc::state<Busy1>),
+                                                           bsc::composite<C2>(bsc::initial<Idle2>, bsc::state<Busy2>),
+                                                           bsc::composite<C3>(bsc::initial<Idle3>, bsc::state<Busy3>))),
+    bsc::state<Idle1>[([](plant const& p) { return p.start.get(); })] /
+        [](plant& p) {
+            p.var = 1;
+            p.lamp.set(7);
+        } = bsc::state<Busy1>,
     bsc::state<Busy1>[([](plant const& p) { return !p.start.get(); })] = bsc::state<Idle1>,
-    bsc::state<Idle2>[([](plant const& p) { return p.var == 1; })] / [](plant& p) {
-        p.seen_lamp = p.lamp.get();  // published value: still the old one during the cycle
-        p.seen_var = p.var;
-    } = bsc::state<Busy2>,
+    bsc::state<Idle2>[([](plant const& p) { return p.var == 1; })] /
+        [](plant& p) {
+            p.seen_lamp = p.lamp.get();  // published value: still the old one during the cycle
+            p.seen_var = p.var;
+        } = bsc::state<Busy2>,
     bsc::state<Busy2>[([](plant const& p) { return p.var == 0; })] = bsc::state<Idle2>,
     bsc::state<Idle3>[([](plant const& p) { return p.var == 2; })] = bsc::state<Busy3>,
     bsc::state<Busy3>[([](plant const& p) { return p.var == 0; })] = bsc::state<Idle3>,
     bsc::state<Busy2> + bsc::event<kick> / [](plant& p) { p.var = 2; });
 }  // namespace cyc
 
-TEST_CASE_TEMPLATE("inputs written between cycles are latched at the start of the next cycle", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("inputs written between cycles are latched at the start of the next cycle", Backend, compiled,
+                   table) {
     machine_t<Backend, decltype(cyc::chart)> m{cyc::chart, cyc::plant{}};
     m.context().start.set(true);
     CHECK_FALSE(m.context().start.get());  // not yet latched
@@ -78,7 +80,8 @@ TEST_CASE_TEMPLATE("inputs written between cycles are latched at the start of th
     CHECK(r.transitions == 2);  // C1, then C2 which sees C1's variable at once
 }
 
-TEST_CASE_TEMPLATE("a variable written by a component is visible at once to the components after it", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a variable written by a component is visible at once to the components after it", Backend, compiled,
+                   table) {
     machine_t<Backend, decltype(cyc::chart)> m{cyc::chart, cyc::plant{}};
     m.context().start.set(true);
     m.step(0ms);
@@ -90,11 +93,12 @@ TEST_CASE_TEMPLATE("outputs are double-buffered: published at the end of the cyc
     machine_t<Backend, decltype(cyc::chart)> m{cyc::chart, cyc::plant{}};
     m.context().start.set(true);
     m.step(0ms);
-    CHECK(m.context().seen_lamp == 0);  // C2 read the published value during the cycle
+    CHECK(m.context().seen_lamp == 0);   // C2 read the published value during the cycle
     CHECK(m.context().lamp.get() == 7);  // published after it
 }
 
-TEST_CASE_TEMPLATE("each component fires at most one transition per cycle, in declaration order", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("each component fires at most one transition per cycle, in declaration order", Backend, compiled,
+                   table) {
     machine_t<Backend, decltype(cyc::chart)> m{cyc::chart, cyc::plant{}};
     m.context().start.set(true);
     m.step(0ms);
@@ -105,7 +109,8 @@ TEST_CASE_TEMPLATE("each component fires at most one transition per cycle, in de
     CHECK(m.template is<cyc::Busy2>());
 }
 
-TEST_CASE_TEMPLATE("dispatch settles eventless transitions at once, whatever the cycle rules", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("dispatch settles eventless transitions at once, whatever the cycle rules", Backend, compiled,
+                   table) {
     machine_t<Backend, decltype(cyc::chart)> m{cyc::chart, cyc::plant{}};
     m.context().start.set(true);
     m.step(0ms);
@@ -128,25 +133,27 @@ inline constexpr auto chain = bsc::make_chart<chain_data>(
     bsc::state<C> + bsc::after(100ms) = bsc::state<D>, bsc::state<D> + bsc::event<kick> = bsc::state<A>);
 }  // namespace cyc
 
-TEST_CASE_TEMPLATE("a state-scoped timeout fires at the first cycle at or after its delay, armed on entry", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a state-scoped timeout fires at the first cycle at or after its delay, armed on entry", Backend,
+                   compiled, table) {
     machine_t<Backend, decltype(cyc::chain)> m{cyc::chain, cyc::chain_data{}};
     m.step(0ms);
     m.step(50ms);
     m.dispatch(cyc::kick{});  // enters B at the machine's time, 50 ms
     CHECK(m.template is<cyc::B>());
     m.step(100ms);
-    CHECK(m.template is<cyc::B>());   // 50 ms in B
+    CHECK(m.template is<cyc::B>());  // 50 ms in B
     m.step(149ms);
     CHECK(m.template is<cyc::B>());
-    m.step(150ms);           // 100 ms in B
-    CHECK(m.template is<cyc::C>());   // entered at 150 ms
+    m.step(150ms);                   // 100 ms in B
+    CHECK(m.template is<cyc::C>());  // entered at 150 ms
     m.step(200ms);
     CHECK(m.template is<cyc::C>());
     m.step(250ms);
     CHECK(m.template is<cyc::D>());
 }
 
-TEST_CASE_TEMPLATE("a jump of many periods takes one transition per component, not the missed cycles", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a jump of many periods takes one transition per component, not the missed cycles", Backend,
+                   compiled, table) {
     machine_t<Backend, decltype(cyc::chain)> m{cyc::chain, cyc::chain_data{}};
     m.step(0ms);  // the clock starts at 0
     m.dispatch(cyc::kick{});
@@ -159,7 +166,8 @@ TEST_CASE_TEMPLATE("a jump of many periods takes one transition per component, n
     CHECK(m.template is<cyc::D>());
 }
 
-TEST_CASE_TEMPLATE("time never runs backwards for the machine: an earlier time is reported and ignored", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("time never runs backwards for the machine: an earlier time is reported and ignored", Backend,
+                   compiled, table) {
     machine_t<Backend, decltype(cyc::chain)> m{cyc::chain, cyc::chain_data{}};
     m.step(1s);
     m.dispatch(cyc::kick{});  // B armed at 1 s
@@ -183,17 +191,20 @@ struct drill_data {
 };
 inline constexpr auto drill = bsc::make_chart<drill_data>(
     bsc::composite<Root>(bsc::initial<Off>, bsc::state<On>),
-    bsc::state<Off>[([](drill_data const& d) { return d.piece.get(); })] / [](drill_data& d) {
-        d.motor.set(true);
-        d.t1.start();
-    } = bsc::state<On>,
-    bsc::state<On>[([](drill_data const& d) { return d.t1.tm(); })] / [](drill_data& d) {
-        d.motor.set(false);
-        d.t1.reset();
-    } = bsc::state<Off>);
+    bsc::state<Off>[([](drill_data const& d) { return d.piece.get(); })] /
+        [](drill_data& d) {
+            d.motor.set(true);
+            d.t1.start();
+        } = bsc::state<On>,
+    bsc::state<On>[([](drill_data const& d) { return d.t1.tm(); })] /
+        [](drill_data& d) {
+            d.motor.set(false);
+            d.t1.reset();
+        } = bsc::state<Off>);
 }  // namespace cyc
 
-TEST_CASE_TEMPLATE("a BSC timer starts timing at the cycle after start() and expires at the first cycle at its limit", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a BSC timer starts timing at the cycle after start() and expires at the first cycle at its limit",
+                   Backend, compiled, table) {
     machine_t<Backend, decltype(cyc::drill)> m{cyc::drill, cyc::drill_data{}};
     m.context().piece.set(true);
     m.step(0ms);  // cycle 0: start() requested
@@ -226,10 +237,11 @@ TEST_CASE_TEMPLATE("dispatch latches inputs at its start and commits outputs at 
     struct T;
     static constexpr auto chart = bsc::make_chart<io>(
         bsc::composite<cyc::Root>(bsc::initial<S>, bsc::state<T>),
-        bsc::state<S> + bsc::event<go> / [](io& x) {
-            x.seen = x.in.get();
-            x.out.set(x.in.get() * 2);
-        },
+        bsc::state<S> + bsc::event<go> /
+                            [](io& x) {
+                                x.seen = x.in.get();
+                                x.out.set(x.in.get() * 2);
+                            },
         bsc::state<S> + bsc::event<cyc::kick> = bsc::state<T>, bsc::state<T> + bsc::event<cyc::kick> = bsc::state<S>);
     machine_t<Backend, decltype(chart)> m{chart, io{}};
     m.context().in.set(21);
@@ -266,9 +278,8 @@ TEST_CASE_TEMPLATE("components entered during a cycle first run in the next cycl
     };
     using namespace cyc::turns;
     static constexpr auto chart = bsc::make_chart<data>(
-        bsc::composite<cyc::Root>(bsc::initial<X>,
-                                  bsc::parallel<Q>(bsc::composite<R1>(bsc::initial<Y>, bsc::state<W>),
-                                                   bsc::composite<R2>(bsc::initial<Z>))),
+        bsc::composite<cyc::Root>(bsc::initial<X>, bsc::parallel<Q>(bsc::composite<R1>(bsc::initial<Y>, bsc::state<W>),
+                                                                    bsc::composite<R2>(bsc::initial<Z>))),
         bsc::state<X>[([](data const& d) { return d.in.get(); })] = bsc::state<Q>,
         bsc::state<Y>[([](data const& d) { return d.in.get(); })] = bsc::state<W>,
         bsc::state<Q> + bsc::event<cyc::kick> = bsc::state<X>, bsc::state<W> + bsc::event<cyc::kick> = bsc::state<Y>);
@@ -281,7 +292,8 @@ TEST_CASE_TEMPLATE("components entered during a cycle first run in the next cycl
     CHECK(m.template is<W>());
 }
 
-TEST_CASE_TEMPLATE("a component that an earlier component leaves during a cycle loses its turn", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a component that an earlier component leaves during a cycle loses its turn", Backend, compiled,
+                   table) {
     struct data {
         bsc::input<bool> leave;
         bsc::input<bool> go;
@@ -290,10 +302,10 @@ TEST_CASE_TEMPLATE("a component that an earlier component leaves during a cycle 
     using namespace cyc::turns;
     // The root's component takes its turn first; R1's comes after.
     static constexpr auto chart = bsc::make_chart<data>(
-        bsc::composite<cyc::Root>(bsc::initial<Q>,
-                                  bsc::parallel<Q>(bsc::composite<R1>(bsc::initial<Y>, bsc::state<W>),
-                                                   bsc::composite<R2>(bsc::initial<Z>)),
-                                  bsc::state<X>),
+        bsc::composite<cyc::Root>(
+            bsc::initial<Q>,
+            bsc::parallel<Q>(bsc::composite<R1>(bsc::initial<Y>, bsc::state<W>), bsc::composite<R2>(bsc::initial<Z>)),
+            bsc::state<X>),
         bsc::state<Q>[([](data const& d) { return d.leave.get(); })] = bsc::state<X>,
         bsc::state<Y>[([](data const& d) { return d.go.get(); })] / [](data& d) { ++d.region_fired; } = bsc::state<W>,
         bsc::state<X> + bsc::event<cyc::kick> = bsc::state<Q>);
@@ -321,7 +333,8 @@ TEST_CASE_TEMPLATE("a component that an earlier component leaves during a cycle 
     CHECK(m.context().region_fired == 1);
 }
 
-TEST_CASE_TEMPLATE("events raised in a cycle are processed at its end, before the outputs are committed", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("events raised in a cycle are processed at its end, before the outputs are committed", Backend,
+                   compiled, table) {
     struct ping {};
     struct io {
         bsc::output<int> out;
@@ -330,8 +343,7 @@ TEST_CASE_TEMPLATE("events raised in a cycle are processed at its end, before th
     struct S;
     struct T;
     static constexpr auto chart = bsc::make_chart<io>(
-        bsc::composite<cyc::Root>(bsc::initial<S>, bsc::state<T>),
-        bsc::state<S> / bsc::raise(ping{}) = bsc::state<T>,
+        bsc::composite<cyc::Root>(bsc::initial<S>, bsc::state<T>), bsc::state<S> / bsc::raise(ping{}) = bsc::state<T>,
         bsc::state<T> + bsc::event<ping> / [](io& x) { x.out.set(x.got = 9); },
         bsc::state<T> + bsc::event<cyc::kick> = bsc::state<S>);
     machine_t<Backend, decltype(chart)> m{chart, io{}};  // construction settles S -> T and processes ping
@@ -368,7 +380,8 @@ inline constexpr auto ping_pong = bsc::make_chart<flags>(
     bsc::state<Both> + bsc::event<kick> / [](flags& c) { c.sets = 0; });
 }  // namespace cyc
 
-TEST_CASE_TEMPLATE("with bsc::scan_policy, eventless transitions run only in step, one per component per cycle", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("with bsc::scan_policy, eventless transitions run only in step, one per component per cycle",
+                   Backend, compiled, table) {
     machine_t<Backend, decltype(cyc::ping_pong), bsc::scan_policy> m{cyc::ping_pong, cyc::flags{}};
     CHECK(m.last_outcome() == bsc::outcome::ignored);  // construction settles nothing
     CHECK(m.active_states().joined() == "Both CA A1 CB B1");
@@ -405,20 +418,22 @@ inline constexpr auto raiser = bsc::make_chart<io>(
     bsc::state<U> + bsc::event<kick> = bsc::state<S>);
 }  // namespace cyc
 
-TEST_CASE_TEMPLATE("a cycle processes its raised events without settling, then commits the outputs", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a cycle processes its raised events without settling, then commits the outputs", Backend, compiled,
+                   table) {
     machine_t<Backend, decltype(cyc::raiser), bsc::scan_policy> m{cyc::raiser, cyc::io{}};
     CHECK(m.template is<cyc::S>());
     auto const r = m.step(0ms);
     CHECK(r.status == bsc::outcome::consumed);
     CHECK(r.transitions == 1);
     CHECK(m.context().out.get() == 9);  // ping handled in the cycle, the output published after it
-    CHECK(m.template is<cyc::T>());              // T -> U waits for the next cycle
+    CHECK(m.template is<cyc::T>());     // T -> U waits for the next cycle
     CHECK(m.step(1ms).transitions == 1);
     CHECK(m.template is<cyc::U>());
     CHECK(m.step(2ms).status == bsc::outcome::ignored);
 }
 
-TEST_CASE_TEMPLATE("a halted machine's cycle runs nothing, leaves the clock and reports halted", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a halted machine's cycle runs nothing, leaves the clock and reports halted", Backend, compiled,
+                   table) {
     machine_t<Backend, decltype(cyc::raiser), bsc::scan_policy> m{cyc::raiser, cyc::io{}};
     m.step(0ms);
     m.step(1ms);
@@ -448,8 +463,7 @@ inline constexpr auto competing = bsc::make_chart<order_data>(
     bsc::state<Q1>[([](order_data const& d) { return d.ready.get() && d.timeouts > d.counted.get(); })] = bsc::state<Z>,
     bsc::state<Q1> + bsc::after(100ms) / [](order_data& d) { ++d.timeouts; },  // internal: re-armed when it fires
     bsc::state<Q1>[([](order_data const& d) { return d.ready.get(); })] = bsc::state<Q2>,
-    bsc::state<Q> + bsc::after(150ms) = bsc::state<Z>,
-    bsc::state<Z> + bsc::event<kick> = bsc::state<Q>);
+    bsc::state<Q> + bsc::after(150ms) = bsc::state<Z>, bsc::state<Z> + bsc::event<kick> = bsc::state<Q>);
 
 struct row_log {  // the rows of the transitions fired, how many received bsc::eventless, and the timeouts' delays
     std::array<int, 16> rows{};
@@ -465,7 +479,9 @@ struct row_log {  // the rows of the transitions fired, how many received bsc::e
 };
 }  // namespace cyc
 
-TEST_CASE_TEMPLATE("a timeout competes with its state's eventless transitions in declaration order, deepest state first", Backend, compiled, table) {
+TEST_CASE_TEMPLATE(
+    "a timeout competes with its state's eventless transitions in declaration order, deepest state first", Backend,
+    compiled, table) {
     using cyc::Q1, cyc::Q2, cyc::Z;
     machine_t<Backend, decltype(cyc::competing), bsc::default_policy, cyc::row_log> m{cyc::competing, cyc::order_data{},
                                                                                       cyc::row_log{}};
@@ -525,41 +541,31 @@ inline constexpr auto let = [](log_data& d) { d.allow = true; };
 // An internal 1 s timeout declared before a leaving 3 s one: both come due at 3 s, and the
 // leaving one, counting from S's entry, was armed first.
 inline constexpr auto ticking_then_leaving = bsc::make_chart<log_data>(
-    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>),
-    bsc::state<S> + bsc::after(1s) / note<'i'>,
-    bsc::state<S> + bsc::after(3s) / note<'L'> = bsc::state<Left>,
-    bsc::state<Left> + bsc::event<kick> = bsc::state<S>);
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>), bsc::state<S> + bsc::after(1s) / note<'i'>,
+    bsc::state<S> + bsc::after(3s) / note<'L'> = bsc::state<Left>, bsc::state<Left> + bsc::event<kick> = bsc::state<S>);
 
 // The same with delays of zero.
 inline constexpr auto zero_delays = bsc::make_chart<log_data>(
-    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>),
-    bsc::state<S> + bsc::after(0s) / note<'i'>,
-    bsc::state<S> + bsc::after(0s) / note<'L'> = bsc::state<Left>,
-    bsc::state<Left> + bsc::event<kick> = bsc::state<S>);
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>), bsc::state<S> + bsc::after(0s) / note<'i'>,
+    bsc::state<S> + bsc::after(0s) / note<'L'> = bsc::state<Left>, bsc::state<Left> + bsc::event<kick> = bsc::state<S>);
 
 // Two internal timeouts of equal delay.
 inline constexpr auto twins = bsc::make_chart<log_data>(
-    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>),
-    bsc::state<S> + bsc::after(1s) / note<'a'>,
-    bsc::state<S> + bsc::after(1s) / note<'b'>,
-    bsc::state<S> + bsc::event<kick> = bsc::state<Left>,
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>), bsc::state<S> + bsc::after(1s) / note<'a'>,
+    bsc::state<S> + bsc::after(1s) / note<'b'>, bsc::state<S> + bsc::event<kick> = bsc::state<Left>,
     bsc::state<Left> + bsc::event<kick> = bsc::state<S>);
 
 // A leaving timeout declared before a guarded one that comes due earlier.
 inline constexpr auto guarded_earlier = bsc::make_chart<log_data>(
     bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>),
-    bsc::state<S> + bsc::after(3s) / note<'L'> = bsc::state<Left>,
-    bsc::state<S> + bsc::after(1s)[allowed] / note<'g'>,
+    bsc::state<S> + bsc::after(3s) / note<'L'> = bsc::state<Left>, bsc::state<S> + bsc::after(1s)[allowed] / note<'g'>,
     bsc::state<Left> + bsc::event<kick> = bsc::state<S>);
 
 // A longer internal timeout declared before a shorter one, with an eventless row between them.
 inline constexpr auto longer_first = bsc::make_chart<log_data>(
-    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>),
-    bsc::state<S> + bsc::after(2s) / note<'l'>,
-    bsc::state<S>[allowed] / note<'e'> = bsc::state<Left>,
-    bsc::state<S> + bsc::after(1s) / note<'s'>,
-    bsc::state<Left> + bsc::event<kick> = bsc::state<S>,
-    bsc::state<Root> + bsc::event<allow> / let);
+    bsc::composite<Root>(bsc::initial<S>, bsc::state<Left>), bsc::state<S> + bsc::after(2s) / note<'l'>,
+    bsc::state<S>[allowed] / note<'e'> = bsc::state<Left>, bsc::state<S> + bsc::after(1s) / note<'s'>,
+    bsc::state<Left> + bsc::event<kick> = bsc::state<S>, bsc::state<Root> + bsc::event<allow> / let);
 
 struct delays {  // the delays the observer sees, in the order the timeouts fired
     std::vector<bsc::duration> fired;
@@ -573,7 +579,8 @@ struct delays {  // the delays the observer sees, in the order the timeouts fire
 struct Busy;
 struct Step;
 inline constexpr auto local_then_leaving = bsc::make_chart<log_data>(
-    bsc::composite<Root>(bsc::initial<Busy>, bsc::composite<Busy>(bsc::initial<Step>, bsc::state<Step>), bsc::state<Left>),
+    bsc::composite<Root>(bsc::initial<Busy>, bsc::composite<Busy>(bsc::initial<Step>, bsc::state<Step>),
+                         bsc::state<Left>),
     bsc::state<Busy> + bsc::after(1s) / note<'l'> = bsc::local(bsc::state<Step>),
     bsc::state<Busy> + bsc::after(3500ms) / note<'L'> = bsc::state<Left>,
     bsc::state<Left> + bsc::event<kick> = bsc::state<Busy>);
@@ -589,9 +596,10 @@ TEST_CASE_TEMPLATE("a local timeout re-arms, and its state's other timeouts keep
     CHECK(m.template is<due::Left>());
 }
 
-TEST_CASE_TEMPLATE("of a state's timeouts due together, the one that came due first fires: a shorter internal "
-                   "timeout does not starve a longer one",
-                   Backend, compiled, table) {
+TEST_CASE_TEMPLATE(
+    "of a state's timeouts due together, the one that came due first fires: a shorter internal "
+    "timeout does not starve a longer one",
+    Backend, compiled, table) {
     SUBCASE("scanned every second: the leaving timeout fires at 3 s") {
         machine_t<Backend, decltype(due::ticking_then_leaving), bsc::scan_policy, due::delays> m{
             due::ticking_then_leaving, due::log_data{}, due::delays{}};
@@ -683,9 +691,10 @@ TEST_CASE_TEMPLATE("a timeout that came due first but whose guard is false does 
     }
 }
 
-TEST_CASE_TEMPLATE("a longer timeout declared first yields to a shorter one due earlier; eventless rows keep their "
-                   "place in declaration order",
-                   Backend, compiled, table) {
+TEST_CASE_TEMPLATE(
+    "a longer timeout declared first yields to a shorter one due earlier; eventless rows keep their "
+    "place in declaration order",
+    Backend, compiled, table) {
     SUBCASE("a jump past both: the shorter fires, then the longer") {
         machine_t<Backend, decltype(due::longer_first), bsc::scan_policy> m{due::longer_first, due::log_data{}};
         m.step(0s);

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include <bsc/bsc.hpp>
-#include <bsc/table/engine.hpp>
+#include <bsc/table/machine.hpp>
 #include "inside.hpp"
 
 namespace bsc_diff {
@@ -46,8 +46,7 @@ struct recorder {
     template <class E>
     void on_transition(auto source, auto target, E const& e) const {
         int data = 0;
-        if constexpr (requires { e.n; })
-            data = e.n;
+        if constexpr (requires { e.n; }) data = e.n;
         log->push_back({'>', source.name, target.name, bsc::name_of<E>, data});
     }
     void on_row(int row) const { log->push_back({'#', {}, {}, {}, row}); }
@@ -57,8 +56,7 @@ struct recorder {
 inline std::string text(std::vector<record> const& trace) {
     std::string out;
     for (auto const& r : trace) {
-        if (!out.empty())
-            out += ' ';
+        if (!out.empty()) out += ' ';
         if (r.what == '#') {
             out += '#' + std::to_string(r.data);
         } else if (r.what == '>') {
@@ -104,12 +102,9 @@ struct tally {
 inline std::pair<bsc::duration, bool> next_time(bsc::duration now, std::uint32_t arg) {
     using std::chrono::milliseconds;
     std::uint32_t const k = arg & 0xffu;
-    if (k == 0xffu)
-        return {now - milliseconds{1 + (arg >> 8) % 50}, true};
-    if (k < 40)
-        return {now, false};
-    if (k < 236)
-        return {now + milliseconds{1 + (k - 40) % 40}, false};
+    if (k == 0xffu) return {now - milliseconds{1 + (arg >> 8) % 50}, true};
+    if (k < 40) return {now, false};
+    if (k < 236) return {now + milliseconds{1 + (k - 40) % 40}, false};
     return {now + milliseconds{250} * (k - 235), false};
 }
 
@@ -139,7 +134,8 @@ public:
     /// Number of choices step() maps a random number onto: the dispatched events, an unhandled
     /// event, a write to the context by the environment, and as many (at least two) execution
     /// cycles as events, so that about half the steps are cycles.
-    static constexpr std::uint32_t cycle_choices = dispatched::size > 2 ? static_cast<std::uint32_t>(dispatched::size) : 2;
+    static constexpr std::uint32_t cycle_choices = dispatched::size > 2 ? static_cast<std::uint32_t>(dispatched::size)
+                                                                        : 2;
     static constexpr std::uint32_t choices = static_cast<std::uint32_t>(dispatched::size) + 2 + cycle_choices;
 
     twin() = default;
@@ -159,15 +155,13 @@ public:
     /// One step chosen by `choice` (below `choices`), with `arg` as the event's data or the
     /// environment's write. A halted pair is restarted one time in four instead.
     std::string step(std::uint32_t choice, std::uint32_t arg) {
-        if (!compiled_)
-            return start();
+        if (!compiled_) return start();
         ++tally_.steps;
         if (compiled_->halted() && table_->halted() && arg % 4 == 0) {
             ++tally_.restarts;
             return start();
         }
-        if (choice < dispatched::size)
-            return dispatch_at(choice, static_cast<int>(arg % 8));
+        if (choice < dispatched::size) return dispatch_at(choice, static_cast<int>(arg % 8));
         if (choice == dispatched::size) {
             auto const a = compiled_->dispatch(stray{}, bsc::allow_unhandled);
             auto const b = table_->dispatch(stray{}, bsc::allow_unhandled);
@@ -184,8 +178,7 @@ public:
     /// One execution cycle of both machines at the time next_time(now, arg) gives.
     std::string cycle(std::uint32_t arg) {
         auto const [t, backwards] = next_time(now_, arg);
-        if (!backwards)
-            now_ = t;
+        if (!backwards) now_ = t;
         ++tally_.cycles;
         tally_.backwards += backwards;
         bsc::step_report const a = compiled_->step(t);
@@ -193,11 +186,12 @@ public:
         tally_.cycle_transitions += static_cast<std::size_t>(a.transitions);
         std::string report;
         if (a.transitions != b.transitions)
-            report += " transitions (" + std::to_string(a.transitions) + " against " + std::to_string(b.transitions) + ")";
-        if (a.clock_went_backwards != b.clock_went_backwards)
-            report += " clock_went_backwards";
-        return compare("step(" + std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(t).count()) + "ms)",
-                       a.status, b.status, report);
+            report += " transitions (" + std::to_string(a.transitions) + " against " + std::to_string(b.transitions) +
+                      ")";
+        if (a.clock_went_backwards != b.clock_went_backwards) report += " clock_went_backwards";
+        return compare(
+            "step(" + std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(t).count()) + "ms)",
+            a.status, b.status, report);
     }
 
     compiled_type const& compiled() const { return *compiled_; }
@@ -216,8 +210,7 @@ private:
     template <std::size_t I = 0>
     std::string dispatch_at(std::uint32_t choice, int n) {
         if constexpr (I < dispatched::size) {
-            if (choice != I)
-                return dispatch_at<I + 1>(choice, n);
+            if (choice != I) return dispatch_at<I + 1>(choice, n);
             using E = inside::at<I, dispatched>;
             E const e = make_event<E>(n);
             auto const a = compiled_->dispatch(e);
@@ -266,24 +259,15 @@ private:
         std::string report;
         if (!same) {
             std::string diff = differences;
-            if (a != b)
-                diff += " outcome";
-            if (compiled_->now() != table_->now())
-                diff += " now";
-            if (compiled_->last_outcome() != table_->last_outcome())
-                diff += " last_outcome";
-            if (!(compiled_->active_configuration() == table_->active_configuration()))
-                diff += " configuration";
-            if (!same_states)
-                diff += " active_states";
-            if (compiled_->halted() != table_->halted())
-                diff += " halted";
-            if (inside::queue(*compiled_).size() != inside::queue(*table_).size())
-                diff += " queue";
-            if (!same_context(compiled_->context(), table_->context()))
-                diff += " context";
-            if (compiled_trace_ != table_trace_)
-                diff += " trace";
+            if (a != b) diff += " outcome";
+            if (compiled_->now() != table_->now()) diff += " now";
+            if (compiled_->last_outcome() != table_->last_outcome()) diff += " last_outcome";
+            if (!(compiled_->active_configuration() == table_->active_configuration())) diff += " configuration";
+            if (!same_states) diff += " active_states";
+            if (compiled_->halted() != table_->halted()) diff += " halted";
+            if (inside::queue(*compiled_).size() != inside::queue(*table_).size()) diff += " queue";
+            if (!same_context(compiled_->context(), table_->context())) diff += " context";
+            if (compiled_trace_ != table_trace_) diff += " trace";
             diff += is_differences(tags{});
             report = "after " + std::string(what) + " (step " + std::to_string(tally_.steps) + "), differ:" + diff +
                      "\n  compiled: " + name(a) + " [" + states_c.joined() + "] " + text(compiled_trace_) +

@@ -39,16 +39,16 @@ std::string run_differential(std::uint32_t seed, char const* label, int steps = 
     INFO(std::string(label));
     CHECK_MESSAGE(t.outcomes[static_cast<std::size_t>(bsc::outcome::consumed)] > 0, "nothing fired");
     using tables = bsc::table::tables<typename bsc_diff::twin<Fixture>::chart_type, typename Fixture::policy>;
-    if constexpr (tables::has_conditions)
-        CHECK_MESSAGE(t.cycle_transitions > 0, "no cycle fired a transition");
+    if constexpr (tables::has_conditions) CHECK_MESSAGE(t.cycle_transitions > 0, "no cycle fired a transition");
     CHECK_MESSAGE(t.backwards > 0, "time never went backwards");
     // BSC_DIFF_STATS=1 prints what each run exercised.
     if (std::getenv("BSC_DIFF_STATS"))
-        std::printf("%-20s consumed %5zu ignored %5zu overflow %4zu livelock %5zu halted %4zu restarts %4zu "
-                    "cycles %5zu (transitions %5zu, backwards %2zu)  %5.0f ms\n",
-                    label, t.outcomes[0], t.outcomes[1], t.outcomes[2], t.outcomes[3], t.outcomes[4], t.restarts,
-                    t.cycles, t.cycle_transitions, t.backwards,
-                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        std::printf(
+            "%-20s consumed %5zu ignored %5zu overflow %4zu livelock %5zu halted %4zu restarts %4zu "
+            "cycles %5zu (transitions %5zu, backwards %2zu)  %5.0f ms\n",
+            label, t.outcomes[0], t.outcomes[1], t.outcomes[2], t.outcomes[3], t.outcomes[4], t.restarts, t.cycles,
+            t.cycle_transitions, t.backwards,
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     return diff;
 }
 
@@ -58,8 +58,7 @@ void run_generated(char const* what) {
         [what] {
             std::string const label = what + std::to_string(Seeds);
             INFO(label);
-            std::string const diff =
-                run_differential<Fixture<Seeds>>(static_cast<std::uint32_t>(Seeds), label.c_str());
+            std::string const diff = run_differential<Fixture<Seeds>>(static_cast<std::uint32_t>(Seeds), label.c_str());
             CHECK_MESSAGE(diff.empty(), diff);
         }(),
         ...);

@@ -294,7 +294,8 @@ TEST_CASE("eca_cell, section 4, rule 6: a pause while the robot is idle lights t
     CHECK_FALSE(c.context().env.light);
 }
 
-TEST_CASE("eca_cell, section 4: on every run of up to 9 inputs, the light is on while the robot works or the cell is paused") {
+TEST_CASE(
+    "eca_cell, section 4: on every run of up to 9 inputs, the light is on while the robot works or the cell is paused") {
     long scans = 0;
     explore_next(extended(), plant{}, 9, scans);
     CHECK(scans > 1000);
@@ -312,8 +313,8 @@ void compare(eca::controller const& a, eca::extended_controller const& b, int de
         ++scans;
         bool const same = same_outcome && sent(a2) == sent(b2) && a2.context().env.light == b2.context().env.light &&
                           state_of(a2.context().button) == state_of(b2.context().button) &&
-                          state_of(a2.context().robot) == state_of(b2.context().robot) &&
-                          a2.template is<eca::Idle>() && b2.template is<eca::Idle>();
+                          state_of(a2.context().robot) == state_of(b2.context().robot) && a2.template is<eca::Idle>() &&
+                          b2.template is<eca::Idle>();
         if (!same) {
             FAIL_CHECK("the variants differ after " << std::remove_cvref_t<decltype(input)>::name);
             return;
@@ -339,7 +340,7 @@ struct rows_fired {
     void on_row(int row) { mask |= std::uint64_t{1} << row; }
 };
 template <class Rows>
-constexpr std::uint64_t all_rows = (std::uint64_t{1} << std::tuple_size_v<std::remove_cv_t<Rows>>) - 1;
+constexpr std::uint64_t all_rows = (std::uint64_t{1} << std::tuple_size_v<std::remove_cv_t<Rows>>)-1;
 }  // namespace
 
 TEST_CASE("eca_cell: every row of both Mains fires in the situations the paper gives") {
@@ -347,7 +348,8 @@ TEST_CASE("eca_cell: every row of both Mains fires in the situations the paper g
     scan_all(a, press{}, release{}, press{}, release{}, done{});
     CHECK(a.observer().mask == all_rows<decltype(eca::main_rules)>);
 
-    bsc::machine<decltype(eca::extended_main_chart), bsc::default_policy, rows_fired> b{eca::extended_main_chart, {}, {}};
+    bsc::machine<decltype(eca::extended_main_chart), bsc::default_policy, rows_fired> b{
+        eca::extended_main_chart, {}, {}};
     scan_all(b, press{}, release{}, press{}, release{}, pause{}, done{}, press{}, release{}, continue_{}, pause{},
              continue_{}, press{}, pause{}, continue_{}, done{});
     CHECK(b.observer().mask == all_rows<decltype(eca::extended_rules)>);

@@ -38,7 +38,8 @@ std::string drive(M& m, int k) {
     }
     m.step(bsc::duration{std::chrono::milliseconds{700 * k}});
     return m.active_states().joined() + " floor=" + std::to_string(m.context().floor) +
-           " target=" + std::to_string(m.context().target) + " outcome=" + std::to_string(static_cast<int>(m.last_outcome()));
+           " target=" + std::to_string(m.context().target) +
+           " outcome=" + std::to_string(static_cast<int>(m.last_outcome()));
 }
 
 template <class M>
@@ -107,7 +108,7 @@ TEST_CASE("retain: the two back ends save the same bytes with events pending, an
     REQUIRE(bsc::restore(restarted, bytes));
     CHECK(deferred(restarted) == 1);
     CHECK(delayed(restarted) == 1);  // the travel time
-    restarted.step(2s);               // arrived at floor 1: the door opens
+    restarted.step(2s);              // arrived at floor 1: the door opens
     CHECK(restarted.is<elevator::DoorOpen>());
     CHECK(restarted.context().floor == 1);
     restarted.step(5s);  // the dwell time is over: the door closes, the deferred call is taken
@@ -129,7 +130,8 @@ TEST_CASE("verify: the explorer follows deferred and delayed events, finds the d
     using namespace elevator_test;
     {
         bsc::verify::explorer ex{elevator::closed_car<elevator::flawed_machine, elevator::flawed>()};
-        auto const v = bsc::verify::always_reachable(ex, "door closed", elevator::door_closed<elevator::flawed_machine>);
+        auto const v = bsc::verify::always_reachable(ex, "door closed",
+                                                     elevator::door_closed<elevator::flawed_machine>);
         REQUIRE(v.fails());
         // A shortest counterexample: the door opens, the car is overloaded when the dwell time ends.
         REQUIRE(v.trace.size() == 4);
@@ -140,7 +142,8 @@ TEST_CASE("verify: the explorer follows deferred and delayed events, finds the d
     }
     {
         bsc::verify::explorer ex{elevator::closed_car<elevator::deferring_machine, elevator::deferring>()};
-        auto const v = bsc::verify::always_reachable(ex, "door closed", elevator::door_closed<elevator::deferring_machine>);
+        auto const v = bsc::verify::always_reachable(ex, "door closed",
+                                                     elevator::door_closed<elevator::deferring_machine>);
         REQUIRE(v.fails());
         // Two calls deferred while the door is open fill the room the dwell event would need.
         std::size_t calls = 0;
@@ -174,8 +177,8 @@ struct Idle;
 struct Open;
 inline constexpr auto counting = bsc::make_chart<counted>(
     bsc::composite<Car>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Open>),
-    bsc::state<Idle> + bsc::event<elevator::call> / [](counted& c, elevator::call const& e) { c.floor = e.floor; } =
-        bsc::state<Open>,
+    bsc::state<Idle> +
+        bsc::event<elevator::call> / [](counted& c, elevator::call const& e) { c.floor = e.floor; } = bsc::state<Open>,
     bsc::state<Open> + bsc::on_entry / [](counted& c) { ++c.served; },
     bsc::state<Open> + bsc::event<elevator::dwell_over> = bsc::state<Idle>);
 }  // namespace elevator_test

@@ -37,8 +37,7 @@ struct ctx {
 };
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Off>, bsc::state<On>),
-    bsc::state<Off> + bsc::event<on_p> = bsc::state<On>,
+    bsc::composite<Root>(bsc::initial<Off>, bsc::state<On>), bsc::state<Off> + bsc::event<on_p> = bsc::state<On>,
     bsc::state<On> + bsc::event<speed> / [](ctx& c, speed const& s) { c.speed = s.value; },
     bsc::state<On> + bsc::event<off_p> = bsc::state<Off>,
     bsc::state<Root> + bsc::event<reset> / [](ctx& c) { ++c.resets; });

@@ -66,20 +66,19 @@ inline constexpr auto reset = bsc::named<"reset">([](ctx& c) {  // a plain calla
 });
 
 inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<a::Idle>, bsc::state<b::Idle>,
-                         bsc::composite<Work>(bsc::shallow_history, bsc::initial<Slot<1>>, bsc::state<Slot<2>>,
-                                              bsc::parallel<Both>(bsc::composite<Left>(bsc::initial<L1>, bsc::state<L2>),
-                                                                  bsc::state<Right>)),
-                         bsc::final_state<Done>),
+    bsc::composite<Root>(
+        bsc::initial<a::Idle>, bsc::state<b::Idle>,
+        bsc::composite<Work>(
+            bsc::shallow_history, bsc::initial<Slot<1>>, bsc::state<Slot<2>>,
+            bsc::parallel<Both>(bsc::composite<Left>(bsc::initial<L1>, bsc::state<L2>), bsc::state<Right>)),
+        bsc::final_state<Done>),
     bsc::state<a::Idle> + bsc::event<go>[ready && !positive] / (count_up, reset) = bsc::state<Work>,
     bsc::state<a::Idle> + bsc::event<stop> = bsc::state<Done>,
     bsc::state<b::Idle>[below_ten || ready] = bsc::state<a::Idle>,
-    bsc::state<Slot<1>> + bsc::after(1500ms) = bsc::state<Slot<2>>,
-    bsc::state<Slot<2>> + bsc::event<tick> / count_up,
+    bsc::state<Slot<1>> + bsc::after(1500ms) = bsc::state<Slot<2>>, bsc::state<Slot<2>> + bsc::event<tick> / count_up,
     bsc::state<Slot<2>> + bsc::event<go> = bsc::state<Both>,
     bsc::state<L1> + bsc::event<tick>[positive] = bsc::state<L2>,
-    bsc::state<Work> + bsc::event<stop> / reset = bsc::state<b::Idle>,
-    bsc::state<Work> + bsc::on_entry / count_up,
+    bsc::state<Work> + bsc::event<stop> / reset = bsc::state<b::Idle>, bsc::state<Work> + bsc::on_entry / count_up,
     bsc::state<Slot<1>> + bsc::on_exit / [](ctx& c) { c.ready.set(false); });
 
 }  // namespace export_test
@@ -107,9 +106,11 @@ struct expected {
     int history = 0;
 
     expected() {
+        // clang-format off
         states = []<class... Tags>(inside::type_list<Tags...>) {
             return std::vector<std::string>{std::string(bsc::name_of<Tags>)...};
         }(typename model::tags{});
+        // clang-format on
         states.erase(states.begin());  // the implicit top
         for (int s = 1; s < model::N; ++s) {
             auto const i = static_cast<std::size_t>(s);
@@ -271,13 +272,11 @@ TEST_CASE("state identifiers are valid in every format and unique") {
     CHECK(identifier("<>") == "unnamed");
     // Two states with one unqualified name are told apart by their enclosing scopes.
     auto const names = inside::unique_names({"Idle", "Idle", "Busy", "A_B", "A<B>"},
-                                                            {"x::a::Idle", "x::b::Idle", "x::Busy", "A_B", "A<B>"});
+                                            {"x::a::Idle", "x::b::Idle", "x::Busy", "A_B", "A<B>"});
     CHECK(names == std::vector<std::string>{"a::Idle", "b::Idle", "Busy", "A_B", "A<B>"});
-    CHECK(inside::unique_identifiers(names) ==
-          std::vector<std::string>{"a_Idle", "b_Idle", "Busy", "A_B", "A_B_4"});
+    CHECK(inside::unique_identifiers(names) == std::vector<std::string>{"a_Idle", "b_Idle", "Busy", "A_B", "A_B_4"});
     // A name that looks like a suffixed id does not make two states share one.
-    CHECK(inside::unique_identifiers({"A_B_2", "A_B", "A<B>"}) ==
-          std::vector<std::string>{"A_B_2", "A_B", "A_B_2_2"});
+    CHECK(inside::unique_identifiers({"A_B_2", "A_B", "A<B>"}) == std::vector<std::string>{"A_B_2", "A_B", "A_B_2_2"});
     CHECK(inside::last_scopes("n::Pair<n::A, n::B>", 1) == "Pair<n::A, n::B>");
     CHECK(inside::last_scopes("m::n::Pair<n::A>", 2) == "n::Pair<n::A>");
 }
@@ -290,8 +289,8 @@ TEST_CASE("Graphviz: clusters, regions as dashed clusters, edges to and from clu
     CHECK(has(dot, "subgraph \"cluster_Work\" {\n"));
     CHECK(has(dot, "label=\"Work\\nentry / count_up\"; style=\"rounded\";"));
     CHECK(has(dot, "subgraph \"cluster_Left\" {\n"));
-    CHECK(has(dot, "label=\"Left\"; style=\"rounded,dashed\";"));           // a region
-    CHECK(has(dot, "subgraph \"cluster_region_Right\" {\n"));               // a basic region
+    CHECK(has(dot, "label=\"Left\"; style=\"rounded,dashed\";"));  // a region
+    CHECK(has(dot, "subgraph \"cluster_region_Right\" {\n"));      // a basic region
     CHECK(has(dot, "\"Work:history\" [shape=circle, label=\"H\""));
     CHECK(has(dot, "\"Done\" [label=\"Done\", peripheries=2];"));
     CHECK(has(dot, "\"Slot_1\" [label=\"Slot<1>\\nexit / action\"];"));
@@ -299,9 +298,11 @@ TEST_CASE("Graphviz: clusters, regions as dashed clusters, edges to and from clu
     CHECK(has(dot, "\"Work:initial\" -> \"Slot_1\";"));
     // Labels padded so that neighbouring ones never run together; an edge clipped at a
     // cluster's border is tied to its label.
-    CHECK(has(dot, "\"a_Idle\" -> \"Work:anchor\" [label=\"  go [ready && !positive] / count_up, reset  \", "
-                   "lhead=\"cluster_Work\", decorate=true];"));
-    CHECK(has(dot, "\"Work:anchor\" -> \"b_Idle\" [label=\"  stop / reset  \", ltail=\"cluster_Work\", decorate=true];"));
+    CHECK(has(dot,
+              "\"a_Idle\" -> \"Work:anchor\" [label=\"  go [ready && !positive] / count_up, reset  \", "
+              "lhead=\"cluster_Work\", decorate=true];"));
+    CHECK(
+        has(dot, "\"Work:anchor\" -> \"b_Idle\" [label=\"  stop / reset  \", ltail=\"cluster_Work\", decorate=true];"));
     CHECK(has(dot, "\"b_Idle\" -> \"a_Idle\" [label=\"  [guard || ready]  \"];"));
 }
 
@@ -323,20 +324,23 @@ TEST_CASE("SCXML: states, history with its default, eventless, timeout and inter
     CAPTURE(scxml);
     CHECK(scxml.starts_with("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"));
     CHECK(has(scxml, "<state id=\"Root\" initial=\"a_Idle\">"));
-    CHECK(has(scxml, "<transition event=\"go\" cond=\"ready &amp;&amp; !positive\" target=\"Work\">\n"
-                     "                <script>/* count_up, reset */</script>\n"
-                     "            </transition>"));
+    CHECK(has(scxml,
+              "<transition event=\"go\" cond=\"ready &amp;&amp; !positive\" target=\"Work\">\n"
+              "                <script>/* count_up, reset */</script>\n"
+              "            </transition>"));
     CHECK(has(scxml, "<transition cond=\"guard || ready\" target=\"a_Idle\"/>"));  // eventless
-    CHECK(has(scxml, "<state id=\"Work\">\n"
-                     "            <initial>\n"
-                     "                <transition target=\"Work_history\"/>\n"
-                     "            </initial>\n"
-                     "            <history id=\"Work_history\" type=\"shallow\">\n"
-                     "                <transition target=\"Slot_1\"/>\n"
-                     "            </history>\n"
-                     "            <onentry><script>/* count_up */</script></onentry>\n"));
-    CHECK(has(scxml, "<!-- after(1500ms): a timeout, enabled once Slot&lt;1&gt; has been active for 1500ms -->\n"
-                     "                <transition event=\"after(1500ms)\" target=\"Slot_2\"/>"));
+    CHECK(has(scxml,
+              "<state id=\"Work\">\n"
+              "            <initial>\n"
+              "                <transition target=\"Work_history\"/>\n"
+              "            </initial>\n"
+              "            <history id=\"Work_history\" type=\"shallow\">\n"
+              "                <transition target=\"Slot_1\"/>\n"
+              "            </history>\n"
+              "            <onentry><script>/* count_up */</script></onentry>\n"));
+    CHECK(has(scxml,
+              "<!-- after(1500ms): a timeout, enabled once Slot&lt;1&gt; has been active for 1500ms -->\n"
+              "                <transition event=\"after(1500ms)\" target=\"Slot_2\"/>"));
     CHECK(has(scxml, "<onexit><script>/* action */</script></onexit>"));
     CHECK(has(scxml, "<transition event=\"tick\" type=\"internal\">"));
     CHECK(has(scxml, "<parallel id=\"Both\">"));
@@ -388,8 +392,10 @@ TEST_CASE("exports of the examples: every state and transition, and the structur
         CHECK(has(robot, "state \"On [H*]<br/>exit / turn=stop, arm1=stop, arm2=stop\" as On {\n"));
         CHECK(has(robot, "    TuIdle --> TuTurn : [arm2_full && belt_ready] / task=deposit, target=arm2_to_belt\n"));
         CHECK(has(bsc::to_mermaid(pcell::feed_belt_chart), "FbFed : entry / motor=0, fed=1\n"));
-        CHECK(has(bsc::to_mermaid(pcell::press_chart), "    PsWaitLoad --> PsForge : [loaded && load_ready && arm1_ext == 0] / load_ready=0\n"));
-        CHECK(has(bsc::to_mermaid(pcell::press_chart_variant<false>), "    PsWaitLoad --> PsForge : [loaded && load_ready] / load_ready=0\n"));
+        CHECK(has(bsc::to_mermaid(pcell::press_chart),
+                  "    PsWaitLoad --> PsForge : [loaded && load_ready && arm1_ext == 0] / load_ready=0\n"));
+        CHECK(has(bsc::to_mermaid(pcell::press_chart_variant<false>),
+                  "    PsWaitLoad --> PsForge : [loaded && load_ready] / load_ready=0\n"));
         auto const deposit = bsc::to_scxml(pcell::deposit_belt_chart);
         CHECK(has(deposit, "event=\"after("));
         CHECK(has(deposit, "cond=\"!dropped\""));
@@ -461,7 +467,8 @@ TEST_CASE("a row's text as errors show it: names, composed guards, sequences, ti
           "Idle + go [!(ready || hot) && guard] / (start, stop)");
     CHECK(kept_text(bsc::state<Idle> + bsc::event<go>[ready && (hot || !cold)] = bsc::state<Busy>) ==
           "Idle + go [ready && (hot || !guard)] = Busy");
-    CHECK(kept_text(bsc::state<Busy> + bsc::after(std::chrono::seconds(3)) / [](ctx&) {}) == "Busy + after(...) / action");
+    CHECK(kept_text(bsc::state<Busy> + bsc::after(std::chrono::seconds(3)) / [](ctx&) {}) ==
+          "Busy + after(...) / action");
     CHECK(kept_text(bsc::state<Busy>[hot] = bsc::state<Idle>) == "Busy [hot] = Idle");
     CHECK(kept_text(bsc::state<Idle> + bsc::on_entry / start) == "Idle + on_entry / start");
     CHECK(kept_text(bsc::state<Idle> + bsc::on_exit / stop) == "Idle + on_exit / stop");

@@ -78,15 +78,13 @@ bool legal(Machine const& m) {
     for (std::size_t s = 1; s < n; ++s) {
         auto const& row = tables::states[s];
         if (on[s] && s != tables::root && !on[row.parent]) return false;
-        if (!on[s] || (row.status.kind != state_kind::composite && row.status.kind != state_kind::parallel))
-            continue;
+        if (!on[s] || (row.status.kind != state_kind::composite && row.status.kind != state_kind::parallel)) continue;
         std::size_t children = 0, active_children = 0;
         for (auto c = row.first_child; c != bsc::table::no_state; c = tables::states[c].next_sibling) {
             ++children;
             active_children += on[c];
         }
-        if (row.status.kind == state_kind::composite ? active_children != 1 : active_children != children)
-            return false;
+        if (row.status.kind == state_kind::composite ? active_children != 1 : active_children != children) return false;
     }
     return true;
 }

@@ -21,7 +21,8 @@ faults::totals inject_into_draws() {
     for (std::uint64_t d = 0; d < draws_per_skeleton; ++d) {
         gen::draw<gen::first_skeleton + K>(d);
         INFO("skeleton " << K << ", draw " << d);
-        auto const t = faults::inject_everywhere<Backend, gen::skeleton<K, Policy>>(steps_per_draw, static_cast<std::uint32_t>(d));
+        auto const t = faults::inject_everywhere<Backend, gen::skeleton<K, Policy>>(steps_per_draw,
+                                                                                    static_cast<std::uint32_t>(d));
         CHECK(t.violations == 0);
         CHECK(t.thrown == t.sites);
         all += t;

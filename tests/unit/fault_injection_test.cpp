@@ -47,7 +47,7 @@ struct robot_fixture {
     static pcell::robot_ctl initial() { return {}; }
     static void perturb(pcell::robot_ctl const& c, std::uint32_t r) {
         bsc::input<bool> const* const flags[] = {&c.on, &c.table_ready, &c.press_load_ready, &c.press_unload_ready,
-                                           &c.belt_ready};
+                                                 &c.belt_ready};
         bsc::input<std::uint8_t> const* const sensors[] = {&c.angle, &c.ext1, &c.ext2};
         if (r % 2 == 0)
             toggle(*flags[(r >> 1) % 5]);

@@ -6,7 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <bsc/bsc.hpp>
-#include <bsc/table/engine.hpp>
+#include <bsc/table/machine.hpp>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -32,23 +32,22 @@ struct count {
 };
 
 // The smallest useful chart: three states, empty context, no action.
-inline constexpr auto bare = bsc::make_chart<none>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
-                                                   bsc::state<A> + bsc::event<go> = bsc::state<B>,
-                                                   bsc::state<B> + bsc::event<go> = bsc::state<C>,
-                                                   bsc::state<C> + bsc::event<back> = bsc::state<A>);
+inline constexpr auto bare = bsc::make_chart<none>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>), bsc::state<A> + bsc::event<go> = bsc::state<B>,
+    bsc::state<B> + bsc::event<go> = bsc::state<C>, bsc::state<C> + bsc::event<back> = bsc::state<A>);
 
 // The same with actions and a guard that cannot throw (noexcept), and with ones that can.
 inline constexpr auto quiet = bsc::make_chart<count>(
     bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
     bsc::state<A> + bsc::event<go>[([](count const& c) noexcept { return c.n < 100; })] /
-                            [](count& c) noexcept { ++c.n; } = bsc::state<B>,
+                        [](count& c) noexcept { ++c.n; } = bsc::state<B>,
     bsc::state<B> + bsc::on_entry / [](count& c) noexcept { c.n += 10; },
     bsc::state<B> + bsc::event<go> / [](count& c) noexcept { ++c.n; } = bsc::state<C>,
     bsc::state<C> + bsc::event<back> = bsc::state<A>);
 inline constexpr auto loud = bsc::make_chart<count>(
     bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
-    bsc::state<A> + bsc::event<go>[([](count const& c) { return c.n < 100; })] / [](count& c) { ++c.n; } =
-        bsc::state<B>,
+    bsc::state<A> +
+        bsc::event<go>[([](count const& c) { return c.n < 100; })] / [](count& c) { ++c.n; } = bsc::state<B>,
     bsc::state<B> + bsc::on_entry / [](count& c) { c.n += 10; },
     bsc::state<B> + bsc::event<go> / [](count& c) { ++c.n; } = bsc::state<C>,
     bsc::state<C> + bsc::event<back> = bsc::state<A>);
@@ -189,7 +188,8 @@ TEST_CASE_TEMPLATE("a dispatch from the machine's own guard or entry action is r
     machine m{fp::calls_back};
     m.context().self.set(&m);
     m.context().poke.set([](void* self) { return static_cast<machine*>(self)->dispatch(fp::back{}); });
-    CHECK(m.dispatch(fp::back{}) == bsc::outcome::ignored);  // no guard or action ran: a plain dispatch (it latches both)
+    CHECK(m.dispatch(fp::back{}) ==
+          bsc::outcome::ignored);  // no guard or action ran: a plain dispatch (it latches both)
     CHECK(m.dispatch(fp::go{}) == bsc::outcome::consumed);
     CHECK(m.context().from_guard == bsc::outcome::reentrant);
     CHECK(m.context().from_entry == bsc::outcome::reentrant);
@@ -238,11 +238,10 @@ namespace fp {
 // or the machine keeps the record of a failure, as `loud` above), and a context with a timer: a
 // machine keeps a clock for the timer even where its policy keeps none.
 inline constexpr auto nothing = []() noexcept {};
-inline constexpr auto empty_actions =
-    bsc::make_chart<none>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
-                          bsc::state<A> + bsc::event<go> / nothing = bsc::state<B>,
-                          bsc::state<B> + bsc::event<go> / nothing = bsc::state<C>,
-                          bsc::state<C> + bsc::event<back> / nothing = bsc::state<A>);
+inline constexpr auto empty_actions = bsc::make_chart<none>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
+    bsc::state<A> + bsc::event<go> / nothing = bsc::state<B>, bsc::state<B> + bsc::event<go> / nothing = bsc::state<C>,
+    bsc::state<C> + bsc::event<back> / nothing = bsc::state<A>);
 struct timing {
     bsc::timer wait{3ms};
 };
@@ -322,15 +321,13 @@ inline constexpr auto raises_small = bsc::make_chart<count>(
     bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
     bsc::state<A> + bsc::event<large> / bsc::raise(small{5}) = bsc::state<B>,
     bsc::state<B> + bsc::event<small> / [](count& c, small const& s) noexcept { c.n += s.n; } = bsc::state<C>,
-    bsc::state<C> + bsc::on_exit / bsc::raise(small{1}),
-    bsc::state<C> + bsc::event<go> = bsc::state<A>);
+    bsc::state<C> + bsc::on_exit / bsc::raise(small{1}), bsc::state<C> + bsc::event<go> = bsc::state<A>);
 inline constexpr auto raises_anything = bsc::make_chart<count>(
     bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
-    bsc::state<A> + bsc::event<large> / [](count&, large const&, auto& raise) noexcept { (void)raise(small{5}); } =
-        bsc::state<B>,
+    bsc::state<A> +
+        bsc::event<large> / [](count&, large const&, auto& raise) noexcept { (void)raise(small{5}); } = bsc::state<B>,
     bsc::state<B> + bsc::event<small> / [](count& c, small const& s) noexcept { c.n += s.n; } = bsc::state<C>,
-    bsc::state<C> + bsc::on_exit / bsc::raise(small{1}),
-    bsc::state<C> + bsc::event<go> = bsc::state<A>);
+    bsc::state<C> + bsc::on_exit / bsc::raise(small{1}), bsc::state<C> + bsc::event<go> = bsc::state<A>);
 }  // namespace fp
 
 namespace fp {
@@ -338,10 +335,11 @@ namespace fp {
 // choice of its queue see an action that raises, and the machine's queue answers it.
 inline constexpr auto asks_for_room = bsc::make_chart<count>(
     bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
-    bsc::state<A> + bsc::event<go> / [](count& c, go const&, auto& raise) {
-        c.n = static_cast<int>(raise.capacity() - raise.size());
-        if (raise.empty() && !raise.overflowed()) raise(back{});
-    } = bsc::state<B>,
+    bsc::state<A> + bsc::event<go> /
+                        [](count& c, go const&, auto& raise) {
+                            c.n = static_cast<int>(raise.capacity() - raise.size());
+                            if (raise.empty() && !raise.overflowed()) raise(back{});
+                        } = bsc::state<B>,
     bsc::state<B> + bsc::event<back> = bsc::state<C>, bsc::state<C> + bsc::event<go> = bsc::state<A>);
 }  // namespace fp
 
@@ -419,8 +417,9 @@ inline constexpr auto raises_ticks = bsc::make_chart<log>(
     bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), bsc::state<A> + bsc::on_exit / bsc::raise(tick{1}),
     bsc::state<A> + bsc::on_exit / bsc::raise(tick{2}), bsc::state<A> + bsc::on_exit / bsc::raise(tick{3}),
     bsc::state<A> + bsc::event<burst> = bsc::state<B>,
-    bsc::state<B> + bsc::event<tick> /
-                        [](log& l, tick const& t) noexcept { l.seen[static_cast<std::size_t>(l.count++ % 32)] = t.value; },
+    bsc::state<B> +
+        bsc::event<tick> /
+            [](log& l, tick const& t) noexcept { l.seen[static_cast<std::size_t>(l.count++ % 32)] = t.value; },
     bsc::state<B> + bsc::event<go> = bsc::state<A>);
 // One empty event: the queue keeps how many, nothing else. A leaves with 8 raises, which fit;
 // C with 9, one too many.
@@ -456,15 +455,17 @@ constexpr int late_total() {
 }
 }  // namespace fp
 
-TEST_CASE("an event whose default construction is not a constant keeps the general queue, usable in constant expressions") {
+TEST_CASE(
+    "an event whose default construction is not a constant keeps the general queue, usable in constant expressions") {
     static_assert(!std::is_same_v<inside::queue_for<decltype(fp::raises_late), bsc::default_policy>,
                                   inside::single_event_queue<8, fp::late>>);
     static_assert(fp::late_total() == 6);
     CHECK(fp::late_total() == 6);
 }
 
-TEST_CASE_TEMPLATE("a chart that raises one event type keeps the events in order, without an index, or only their count",
-                   Backend, bsc_test::compiled, bsc_test::table) {
+TEST_CASE_TEMPLATE(
+    "a chart that raises one event type keeps the events in order, without an index, or only their count", Backend,
+    bsc_test::compiled, bsc_test::table) {
     using tick_queue = inside::queue_for<decltype(fp::raises_ticks), bsc::default_policy>;
     using ping_queue = inside::queue_for<decltype(fp::raises_pings), bsc::default_policy>;
     static_assert(std::is_same_v<tick_queue, inside::single_event_queue<8, fp::tick>>);

@@ -69,14 +69,12 @@ struct spec {
     }
     constexpr int child_at(int s, int k) const {
         for (int i = 0; i < n; ++i)
-            if (nodes[static_cast<std::size_t>(i)].parent == s && k-- == 0)
-                return i;
+            if (nodes[static_cast<std::size_t>(i)].parent == s && k-- == 0) return i;
         return -1;
     }
     constexpr bool contains(int a, int d) const {
         for (; d >= 0; d = nodes[static_cast<std::size_t>(d)].parent)
-            if (d == a)
-                return true;
+            if (d == a) return true;
         return false;
     }
     constexpr int lca(int a, int b) const {
@@ -91,26 +89,24 @@ struct spec {
     // The domain (SCXML) of from -> to: the nearest composite proper ancestor of `from` that
     // is a proper ancestor of `to`; -1 stands for the implicit top.
     constexpr int domain(int from, int to) const {
-        for (int a = nodes[static_cast<std::size_t>(from)].parent; a >= 0; a = nodes[static_cast<std::size_t>(a)].parent)
-            if (kind(a) == node_kind::composite && a != to && contains(a, to))
-                return a;
+        for (int a = nodes[static_cast<std::size_t>(from)].parent; a >= 0;
+             a = nodes[static_cast<std::size_t>(a)].parent)
+            if (kind(a) == node_kind::composite && a != to && contains(a, to)) return a;
         return -1;
     }
     // Adding a row on (from, event) with this guardedness keeps the chart deterministic. Each
     // timeout is a trigger of its own.
     constexpr bool may_add(int from, int event, bool guarded) const {
-        if (event == timeout)
-            return true;
+        if (event == timeout) return true;
         for (int i = 0; i < r; ++i) {
             auto const& x = rows[static_cast<std::size_t>(i)];
-            if (x.kind == row_kind::transition && x.from == from && x.event == event && !x.guarded)
-                return false;
+            if (x.kind == row_kind::transition && x.from == from && x.event == event && !x.guarded) return false;
         }
         return guarded || event >= 0;
     }
     constexpr void add(row x) { rows[static_cast<std::size_t>(r++)] = x; }
 
-    // bsc's dead transitions (checks/dead_transitions.hpp). A row leaving a final child of a
+    // bsc's dead transitions (detail/checks/dead_transitions.hpp). A row leaving a final child of a
     // composite root never fires (the machine halts there); a row on an event leaving a state
     // with children never fires when every leaf below takes the event first with an unguarded
     // row of its own or of an ancestor below that state.
@@ -122,8 +118,7 @@ struct spec {
         for (int b = leaf; b != above; b = nodes[static_cast<std::size_t>(b)].parent)
             for (int i = 0; i < r; ++i) {
                 auto const& x = rows[static_cast<std::size_t>(i)];
-                if (x.kind == row_kind::transition && x.from == b && x.event == event && !x.guarded)
-                    return i;
+                if (x.kind == row_kind::transition && x.from == b && x.event == event && !x.guarded) return i;
             }
         return -1;
     }
@@ -143,17 +138,14 @@ struct spec {
         r = kept;
         for (int i = 0; i < r; ++i) {
             auto const x = rows[static_cast<std::size_t>(i)];
-            if (x.kind != row_kind::transition || x.event < 0 || child_count(x.from) == 0)
-                continue;
+            if (x.kind != row_kind::transition || x.event < 0 || child_count(x.from) == 0) continue;
             int cover = -1;
             bool all = true;
             for (int a = 0; a < n && all; ++a) {
-                if (a == x.from || !contains(x.from, a) || child_count(a) != 0)
-                    continue;
+                if (a == x.from || !contains(x.from, a) || child_count(a) != 0) continue;
                 int const c = covering_row(a, x.from, x.event);
                 all = c >= 0;
-                if (cover < 0)
-                    cover = c;
+                if (cover < 0) cover = c;
             }
             if (all && cover >= 0) {
                 rows[static_cast<std::size_t>(cover)].guarded = true;
@@ -166,8 +158,7 @@ struct spec {
         // whenever the other is. Guard the shorter one in all these cases (more than bsc needs).
         for (int i = 0; i < r; ++i) {
             auto& x = rows[static_cast<std::size_t>(i)];
-            if (x.kind != row_kind::transition || x.event != timeout || x.guarded || x.to < 0)
-                continue;
+            if (x.kind != row_kind::transition || x.event != timeout || x.guarded || x.to < 0) continue;
             for (int j = 0; j < r; ++j) {
                 auto const& y = rows[static_cast<std::size_t>(j)];
                 bool const same = y.from == x.from;
@@ -186,7 +177,8 @@ struct spec {
     // Whether two different states can be active at once with clocks that start together: one
     // is below the other, or their nearest common ancestor is a parallel state.
     constexpr bool related(int a, int b) const {
-        return contains(a, b) || contains(b, a) || nodes[static_cast<std::size_t>(lca(a, b))].kind == node_kind::parallel;
+        return contains(a, b) || contains(b, a) ||
+               nodes[static_cast<std::size_t>(lca(a, b))].kind == node_kind::parallel;
     }
 
     // bsc's reachability (guards ignored): default entries, then the targets of transitions
@@ -205,8 +197,7 @@ struct spec {
             int const p = nodes[static_cast<std::size_t>(a)].parent;
             if (p >= 0 && kind(p) == node_kind::parallel)
                 for (int k = 0; k < child_count(p); ++k)
-                    if (child_at(p, k) != a)
-                        mark_default(m, child_at(p, k));
+                    if (child_at(p, k) != a) mark_default(m, child_at(p, k));
         }
         mark_default(m, target);
     }
@@ -233,18 +224,14 @@ struct spec {
     // Entering `target` necessarily enters x again: x itself, or an ancestor whose initial
     // children (or history, which remembers x) lead back down to x.
     constexpr bool reenters(int target, int x) const {
-        if (target == x)
-            return true;
-        if (!contains(target, x))
-            return false;
+        if (target == x) return true;
+        if (!contains(target, x)) return false;
         for (int c = target; c != x;) {
             auto const& nd = nodes[static_cast<std::size_t>(c)];
             int const toward = child_toward(c, x);
             if (nd.kind == node_kind::composite) {
-                if (nd.history == 2)
-                    return true;
-                if (nd.history == 0 && nd.initial != toward)
-                    return false;
+                if (nd.history == 2) return true;
+                if (nd.history == 0 && nd.initial != toward) return false;
             }
             c = toward;
         }
@@ -258,12 +245,10 @@ struct spec {
     constexpr bool can_leave(int x) const {
         for (int i = 0; i < r; ++i) {
             auto const& t = rows[static_cast<std::size_t>(i)];
-            if (t.kind != row_kind::transition || t.to < 0 || reenters(t.to, x))
-                continue;
+            if (t.kind != row_kind::transition || t.to < 0 || reenters(t.to, x)) continue;
             int const d = domain(t.from, t.to);
             if (contains(t.from, x)) {
-                if (above(d, x))
-                    return true;
+                if (above(d, x)) return true;
             } else if (int const l = lca(t.from, x); kind(l) == node_kind::parallel && above(d, l)) {
                 return true;
             }
@@ -310,18 +295,15 @@ constexpr spec make_spec(std::uint64_t seed, bool skeleton = false) {
             s.nodes[static_cast<std::size_t>(i)].kind = g.chance(8) ? node_kind::final_state : node_kind::basic;
     for (int i = 0; i < s.n; ++i) {
         auto& nd = s.nodes[static_cast<std::size_t>(i)];
-        if (s.child_count(i) == 0)
-            continue;
-        if (i > 0)
-            nd.kind = g.chance(22) ? node_kind::parallel : node_kind::composite;
+        if (s.child_count(i) == 0) continue;
+        if (i > 0) nd.kind = g.chance(22) ? node_kind::parallel : node_kind::composite;
         if (nd.kind == node_kind::composite) {
             int const h = g.below(10);
             nd.history = h < 6 ? 0 : h < 8 ? 1 : 2;
             // The initial child is never final: the machine would halt or stop at once.
             int const k = g.below(s.child_count(i));
             int const c = s.child_at(i, k);
-            if (s.kind(c) == node_kind::final_state)
-                s.nodes[static_cast<std::size_t>(c)].kind = node_kind::basic;
+            if (s.kind(c) == node_kind::final_state) s.nodes[static_cast<std::size_t>(c)].kind = node_kind::basic;
             nd.initial = c;
         }
     }
@@ -330,16 +312,14 @@ constexpr spec make_spec(std::uint64_t seed, bool skeleton = false) {
         // Mostly basic states, sometimes any state.
         for (int tries = 0; tries < 8; ++tries) {
             int const x = g.below(s.n);
-            if (s.child_count(x) == 0 || g.chance(30))
-                return x;
+            if (s.child_count(x) == 0 || g.chance(30)) return x;
         }
         return g.below(s.n);
     };
     auto pick_target = [&](int from) {
         for (int tries = 0; tries < 6; ++tries) {
             int const t = g.below(s.n);
-            if (!s.orthogonal(from, t))
-                return t;
+            if (!s.orthogonal(from, t)) return t;
         }
         return from;
     };
@@ -358,10 +338,8 @@ constexpr spec make_spec(std::uint64_t seed, bool skeleton = false) {
         x.to = x.event != eventless && g.chance(12) ? -1 : pick_target(x.from);
         bool const acts = x.event == eventless || g.chance(65);
         x.acts = skeleton || acts;
-        if (x.event == timeout)
-            x.delay = 5 * (1 + g.below(12));
-        if (s.may_add(x.from, x.event, x.guarded))
-            s.add(x);
+        if (x.event == timeout) x.delay = 5 * (1 + g.below(12));
+        if (s.may_add(x.from, x.event, x.guarded)) s.add(x);
     }
     // No dead row, every state reachable, every basic state a way out; each repair may undo
     // another (a state made final strands its rows), so repeat until none changes anything.
@@ -373,17 +351,14 @@ constexpr spec make_spec(std::uint64_t seed, bool skeleton = false) {
         for (int e = 0; e < s.events; ++e) {
             bool used = false;
             for (int i = 0; i < s.r; ++i) used = used || s.rows[static_cast<std::size_t>(i)].event == e;
-            if (!used)
-                s.add(row{row_kind::transition, 0, e, -1, true, true});
+            if (!used) s.add(row{row_kind::transition, 0, e, -1, true, true});
         }
         // Every state reachable.
         for (auto m = s.reachable();; m = s.reachable()) {
             int t = -1;
             for (int i = 0; i < s.n && t < 0; ++i)
-                if (!m[static_cast<std::size_t>(i)])
-                    t = i;
-            if (t < 0)
-                break;
+                if (!m[static_cast<std::size_t>(i)]) t = i;
+            if (t < 0) break;
             int from = 0;
             for (int tries = 0; tries < 12; ++tries) {
                 int const c = g.below(s.n);
@@ -394,26 +369,22 @@ constexpr spec make_spec(std::uint64_t seed, bool skeleton = false) {
             }
             int event = -1;
             for (int e = 0; e < s.events; ++e)
-                if (s.may_add(from, e, true))
-                    event = e;
+                if (s.may_add(from, e, true)) event = e;
             bool const acts = event < 0 || g.chance(50);
             s.add(row{row_kind::transition, from, event, t, true, skeleton || acts});
         }
         // Every basic state has a way out: a transition to a state that does not lead back to it
         // (or, failing that, the state becomes final).
         for (int x = 0; x < s.n; ++x) {
-            if (s.kind(x) != node_kind::basic || s.can_leave(x))
-                continue;
+            if (s.kind(x) != node_kind::basic || s.can_leave(x)) continue;
             // A timeout (one time in three), else an event, else an eventless transition.
             int event = g.chance(33) ? timeout : eventless;
             for (int e = 0; e < s.events && event != timeout; ++e)
-                if (s.may_add(x, e, false))
-                    event = e;
+                if (s.may_add(x, e, false)) event = e;
             int to = -1;
             for (int tries = 0; tries < 24 && to < 0; ++tries) {
                 int const c = g.below(s.n);
-                if (!s.orthogonal(x, c) && !s.reenters(c, x))
-                    to = c;
+                if (!s.orthogonal(x, c) && !s.reenters(c, x)) to = c;
             }
             if (to < 0) {
                 s.nodes[static_cast<std::size_t>(x)].kind = node_kind::final_state;
@@ -425,15 +396,12 @@ constexpr spec make_spec(std::uint64_t seed, bool skeleton = false) {
                           event == timeout ? 5 * (1 + g.below(12)) : 0});
             }
         }
-        if (!fixed && !became_final && s.r == rows_before)
-            break;
+        if (!fixed && !became_final && s.r == rows_before) break;
     }
     // Entry and exit actions.
     for (int x = 0; x < s.n && s.r < max_rows - 1; ++x) {
-        if (g.chance(45) || skeleton)
-            s.add(row{row_kind::entry, x, -1, -1, false, true});
-        if ((g.chance(45) || skeleton) && s.r < max_rows)
-            s.add(row{row_kind::exit, x, -1, -1, false, true});
+        if (g.chance(45) || skeleton) s.add(row{row_kind::entry, x, -1, -1, false, true});
+        if ((g.chance(45) || skeleton) && s.r < max_rows) s.add(row{row_kind::exit, x, -1, -1, false, true});
     }
     return s;
 }
@@ -514,8 +482,8 @@ constexpr int payload(E const& e) {
 }
 
 template <std::uint64_t Seed, int Row>
-inline constexpr behaviour behaviour_at =
-    behaviour_of(Seed, spec_of<Seed>.rows[static_cast<std::size_t>(Row)], Row, spec_of<Seed>.events);
+inline constexpr behaviour behaviour_at = behaviour_of(Seed, spec_of<Seed>.rows[static_cast<std::size_t>(Row)], Row,
+                                                       spec_of<Seed>.events);
 
 // What a guard reads: the variable, the latched input or the timer that b names.
 constexpr int read_var(behaviour const& b, gctx const& c) {
@@ -560,8 +528,7 @@ template <std::uint64_t Seed, int Row>
 constexpr void act_on(gctx& c, int data, auto& raise) {
     constexpr behaviour b = behaviour_at<Seed, Row>;
     int const written = apply(b, Row, c, data);
-    if constexpr (b.raise >= 0)
-        raise(ev<Seed, b.raise>{written % 8});
+    if constexpr (b.raise >= 0) raise(ev<Seed, b.raise>{written % 8});
 }
 
 template <std::uint64_t Seed, int Row>
@@ -635,9 +602,11 @@ void drawn_act(gctx& c, int row, int data, auto& raise) {
     auto const& b = l.what;
     int const written = apply(b, row, c, data);
     if (b.raise >= 0)
+        // clang-format off
         [&]<int... K>(std::integer_sequence<int, K...>) {
             ((b.raise == K ? static_cast<void>(raise(ev<Seed, K>{written % 8})) : void()), ...);
         }(std::make_integer_sequence<int, spec_of<Seed>.events>{});
+    // clang-format on
 }
 
 template <std::uint64_t Seed, int Row>
@@ -674,6 +643,7 @@ constexpr auto make_node() {
     } else if constexpr (nd.kind == node_kind::final_state) {
         return bsc::final_state<self>;
     } else {
+        // clang-format off
         return []<std::size_t... K>(std::index_sequence<K...>) {
             constexpr node n = spec_of<Seed>.nodes[static_cast<std::size_t>(I)];
             using init = S<Seed, n.initial>;
@@ -689,6 +659,7 @@ constexpr auto make_node() {
                 return bsc::composite<self>(bsc::deep_history, bsc::initial<init>,
                                             make_node<Seed, spec_of<Seed>.child_at(I, static_cast<int>(K))>()...);
         }(std::make_index_sequence<static_cast<std::size_t>(spec_of<Seed>.child_count(I))>{});
+        // clang-format on
     }
 }
 
@@ -731,9 +702,11 @@ constexpr auto make_row() {
 }
 
 template <std::uint64_t Seed>
+// clang-format off
 inline constexpr auto chart = []<std::size_t... J>(std::index_sequence<J...>) {
     return bsc::make_chart<gctx>(make_node<Seed, 0>(), make_row<Seed, static_cast<int>(J)>()...);
 }(std::make_index_sequence<static_cast<std::size_t>(spec_of<Seed>.r)>{});
+// clang-format on
 
 /// Low limits: a generated chart may well raise events in a cycle, and then each dispatch
 /// runs up to the limit.

@@ -75,8 +75,7 @@ static_assert(bsc::fields<press>::names[0] == "start" && bsc::fields<press>::nam
 
 inline constexpr auto press_chart = bsc::make_chart<press>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle>[([](press const& p) { return p.may_stroke(); })] / [](press& p) { p.stroke(); } =
-        bsc::state<Busy>,
+    bsc::state<Idle>[([](press const& p) { return p.may_stroke(); })] / [](press& p) { p.stroke(); } = bsc::state<Busy>,
     bsc::state<Busy>[([](press const& p) { return p.dwelt(); })] / [](press& p) { p.release(); } = bsc::state<Idle>);
 
 // ---- a class with a base class: BOOST_HANA_ADAPT_STRUCT ---------------------------------------------
@@ -126,10 +125,9 @@ static_assert(bsc::fields<station>::names[0] == "enable" && bsc::fields<station>
 
 inline constexpr auto station_chart = bsc::make_chart<station>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle>[([](station const& s) { return s.enabled(); })] / [](station& s) { s.light(); } =
-        bsc::state<Busy>,
-    bsc::state<Busy>[([](station const& s) { return s.lit_long_enough(); })] / [](station& s) { s.dark(); } =
-        bsc::state<Idle>);
+    bsc::state<Idle>[([](station const& s) { return s.enabled(); })] / [](station& s) { s.light(); } = bsc::state<Busy>,
+    bsc::state<Busy>[([](station const& s) { return s.lit_long_enough(); })] /
+        [](station& s) { s.dark(); } = bsc::state<Idle>);
 
 // ---- 150 members, more than an aggregate's 128: accessors of its own ----------------------------
 
@@ -147,15 +145,19 @@ struct big {
 
 // Hana's own way to adapt a type: its accessors, (name, function to the member) pairs.
 #define HANA_TEST_ACCESSOR(z, n, data) \
-    boost::hana::make_pair(BOOST_HANA_STRING("m" BOOST_PP_STRINGIZE(n)), [](auto& b) -> auto& { return b.m##n; })
+    boost::hana::make_pair(            \
+        BOOST_HANA_STRING("m" BOOST_PP_STRINGIZE(n)), [](auto& b) -> auto& { return b.m##n; })
 template <>
 struct boost::hana::accessors_impl<hana_test::big> {
     static constexpr auto apply() {
         namespace hana = boost::hana;
         return hana::make_tuple(BOOST_PP_ENUM(147, HANA_TEST_ACCESSOR, ~),
-                                hana::make_pair(BOOST_HANA_STRING("in"), [](auto& b) -> auto& { return b.in; }),
-                                hana::make_pair(BOOST_HANA_STRING("out"), [](auto& b) -> auto& { return b.out; }),
-                                hana::make_pair(BOOST_HANA_STRING("wait"), [](auto& b) -> auto& { return b.wait; }));
+                                hana::make_pair(
+                                    BOOST_HANA_STRING("in"), [](auto& b) -> auto& { return b.in; }),
+                                hana::make_pair(
+                                    BOOST_HANA_STRING("out"), [](auto& b) -> auto& { return b.out; }),
+                                hana::make_pair(
+                                    BOOST_HANA_STRING("wait"), [](auto& b) -> auto& { return b.wait; }));
     }
 };
 #undef HANA_TEST_ACCESSOR
@@ -167,10 +169,11 @@ static_assert(bsc::fields<big>::names[146] == "m146" && bsc::fields<big>::names[
 
 inline constexpr auto big_chart = bsc::make_chart<big>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle>[([](big const& b) { return b.in.get() > 0; })] / [](big& b) {
-        b.out.set(b.in.get() + b.m146);
-        b.wait.start();
-    } = bsc::state<Busy>,
+    bsc::state<Idle>[([](big const& b) { return b.in.get() > 0; })] /
+        [](big& b) {
+            b.out.set(b.in.get() + b.m146);
+            b.wait.start();
+        } = bsc::state<Busy>,
     bsc::state<Busy>[([](big const& b) { return b.wait.tm(); })] = bsc::state<Idle>);
 
 // ---- the explorer's chart: A -go/n=(n+1)%3-> B -go[n==2]-> C; back returns to A --------------------
@@ -381,10 +384,9 @@ TEST_CASE("hana: the VCD recorder writes the members by their Hana names") {
         p.step(0ms);
         vcd.sample();
     }
-    CHECK(data_variables(out.str()) == std::vector<std::string>{"wire 1 start", "integer 32 shown", "dwell",
-                                                                  "wire 1 running", "wire 1 expired",
-                                                                  "integer 64 elapsed", "upscope",
-                                                                  "integer 32 strokes", "integer 32 limit"});
+    CHECK(data_variables(out.str()) ==
+          std::vector<std::string>{"wire 1 start", "integer 32 shown", "dwell", "wire 1 running", "wire 1 expired",
+                                   "integer 64 elapsed", "upscope", "integer 32 strokes", "integer 32 limit"});
 
     bsc::machine<decltype(station_chart), bsc::scan_policy> s{station_chart, station{200ms}};
     std::ostringstream wave;
@@ -394,9 +396,8 @@ TEST_CASE("hana: the VCD recorder writes the members by their Hana names") {
         vcd.sample();
     }
     CHECK(data_variables(wave.str()) == std::vector<std::string>{"wire 1 enable", "integer 32 faults", "wire 1 lamp",
-                                                                   "blink", "wire 1 running", "wire 1 expired",
-                                                                   "integer 64 elapsed", "upscope",
-                                                                   "integer 32 cycles"});
+                                                                 "blink", "wire 1 running", "wire 1 expired",
+                                                                 "integer 64 elapsed", "upscope", "integer 32 cycles"});
 
     bsc::machine<decltype(big_chart), bsc::scan_policy> b{big_chart, big{}};
     std::ostringstream big_wave;

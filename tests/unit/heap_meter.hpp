@@ -5,7 +5,7 @@
 #include <cstddef>
 
 namespace heap_meter {
-std::size_t live();   ///< bytes held now
-std::size_t peak();   ///< the most held since the last reset_peak()
+std::size_t live();  ///< bytes held now
+std::size_t peak();  ///< the most held since the last reset_peak()
 void reset_peak();
 }  // namespace heap_meter

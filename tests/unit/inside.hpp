@@ -10,7 +10,7 @@
 
 
 #include <bsc/bsc.hpp>
-#include <bsc/compiled/plan.hpp>
+#include <bsc/detail/compiled/plan.hpp>
 #include <bsc/detail/access.hpp>
 #include <bsc/export.hpp>
 #include <bsc/retain.hpp>
@@ -78,13 +78,13 @@ using bsc::detail::last_scopes;
 using bsc::detail::unique_identifiers;
 using bsc::detail::unique_names;
 
-// A row's text as bsc's errors write it (checks/row_text.hpp).
+// A row's text as bsc's errors write it (detail/checks/row_text.hpp).
 template <class Row>
 constexpr auto row_text() {
     return bsc::detail::row_text<Row>();
 }
 
-// The queue a chart's machine gets (runtime/queue_for.hpp), and its one-event kind.
+// The queue a chart's machine gets (detail/runtime/queue_for.hpp), and its one-event kind.
 template <class Chart, class Policy>
 using queue_for = bsc::detail::queue_for<Chart, Policy>;
 template <std::size_t Capacity, class E>
@@ -164,8 +164,8 @@ constexpr auto faulty_row(Row const& row) {
         }();
         auto const action = faulty_transition_action<Injector>(row.action);
         return transition_row<typename Row::source, typename Row::trigger, std::remove_cvref_t<decltype(guard)>,
-                              std::remove_cvref_t<decltype(action)>, typename Row::target>{{}, row.trigger_value, guard,
-                                                                                          action};
+                              std::remove_cvref_t<decltype(action)>, typename Row::target>{
+            {}, row.trigger_value, guard, action};
     } else if constexpr (is_entry_row<Row>) {
         auto const action = faulty_action<Injector, std::remove_cvref_t<decltype(row.action)>>{row.action};
         return entry_row<typename Row::source, std::remove_cvref_t<decltype(action)>>{{}, action};

@@ -1,4 +1,4 @@
-// The public interface both back ends share (include/bsc/runtime/driver.hpp), tested once
+// The public interface both back ends share (include/bsc/detail/runtime/driver.hpp), tested once
 // against each: construction and the deduction guides, copies, the configuration and the
 // queries on it, observers, unhandled events, the queue's capacity. What only one back end
 // has is tested in machine_test.cpp (compiled) and table_test.cpp (table-driven).
@@ -80,8 +80,8 @@ struct two_events : bsc::default_policy {
 
 using namespace api;
 
-TEST_CASE_TEMPLATE("machine{chart, context, observer} deduces machine<decltype(chart), default_policy, Observer>", Backend,
-                   compiled, table) {
+TEST_CASE_TEMPLATE("machine{chart, context, observer} deduces machine<decltype(chart), default_policy, Observer>",
+                   Backend, compiled, table) {
     using machine = machine_t<Backend, decltype(chart)>;
     static_assert(std::is_same_v<decltype(Backend::deduce(chart)), machine>);
     static_assert(std::is_same_v<decltype(Backend::deduce(chart, counter{})), machine>);
@@ -154,7 +154,8 @@ TEST_CASE_TEMPLATE("a machine is a value: copies run independently", Backend, co
 TEST_CASE_TEMPLATE("observers see entries, exits and transitions in order; a machine without one stores nothing for it",
                    Backend, compiled, table) {
     std::string trace;
-    machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> m{chart, counter{}, trace_observer{&trace}};
+    machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> m{chart, counter{},
+                                                                               trace_observer{&trace}};
     CHECK(trace == "+Root +A +A1");
     trace.clear();
     m.dispatch(go{});

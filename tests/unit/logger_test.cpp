@@ -95,10 +95,8 @@ inline constexpr auto is_done = bsc::named("done", bsc::guard([](jobs const& c) 
 inline constexpr auto guarded_chart = bsc::make_chart<jobs>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>, bsc::state<Done>),
     bsc::state<Idle> + bsc::event<go>[is_ready] = bsc::state<Busy>,
-    bsc::state<Idle> + bsc::event<job> / [](jobs& c) { ++c.taken; },
-    bsc::state<Busy> + bsc::event<job> / bsc::defer,
-    bsc::state<Busy>[is_done && !is_ready] = bsc::state<Done>,
-    bsc::state<Done> + bsc::event<job> / bsc::defer,
+    bsc::state<Idle> + bsc::event<job> / [](jobs& c) { ++c.taken; }, bsc::state<Busy> + bsc::event<job> / bsc::defer,
+    bsc::state<Busy>[is_done && !is_ready] = bsc::state<Done>, bsc::state<Done> + bsc::event<job> / bsc::defer,
     bsc::state<Done> + bsc::event<finish> = bsc::state<Idle>);
 }  // namespace logger_test
 
@@ -143,7 +141,9 @@ struct guards_and_deferrals {
     std::vector<std::string> seen;
     void on_guard(std::string_view guard) { seen.emplace_back(guard); }
     template <class State, class E>
-    void on_defer(State, E const&) { seen.emplace_back("defer"); }
+    void on_defer(State, E const&) {
+        seen.emplace_back("defer");
+    }
 };
 
 TEST_CASE_TEMPLATE("an observer of guards and deferrals alone is called", Backend, compiled, table) {
@@ -168,12 +168,11 @@ TEST_CASE_TEMPLATE("the logger's records go to a callback, with the cycle's numb
         bool operator==(seen const&) const = default;
     };
     std::vector<seen> records;
-    logged_machine<Backend> m{chart, ctx{}, bsc::logger{[&](bsc::log_record const& r) {
-                                  records.push_back({r.what,
-                                                     std::chrono::duration_cast<std::chrono::milliseconds>(r.time).count(),
-                                                     r.cycle, std::string(r.state), std::string(r.target),
-                                                     std::string(r.trigger)});
-                              }}};
+    logged_machine<Backend> m{
+        chart, ctx{}, bsc::logger{[&](bsc::log_record const& r) {
+            records.push_back({r.what, std::chrono::duration_cast<std::chrono::milliseconds>(r.time).count(), r.cycle,
+                               std::string(r.state), std::string(r.target), std::string(r.trigger)});
+        }}};
     using kind = bsc::log_record::kind;
     records.clear();
     m.step(100ms);

@@ -75,14 +75,15 @@ template <int R>
 constexpr auto region_rows() {
     return bsc::rows(bsc::state<Off<R>> + bsc::event<tick> / note<R> = bsc::state<On<R>>,
                      bsc::state<On<R>> + bsc::event<tick> / note<R> = bsc::state<Off<R>>,
-                     bsc::state<On<R>> + bsc::on_exit / exit_note<R>, bsc::state<On<R>> + bsc::on_entry / entry_note<R>);
+                     bsc::state<On<R>> + bsc::on_exit / exit_note<R>,
+                     bsc::state<On<R>> + bsc::on_entry / entry_note<R>);
 }
 // tick stays inside each region; go leaves the parallel state from region 1, so its transition
 // conflicts with region 0's, and SCXML keeps the one earlier in document order.
-inline constexpr auto wide = bsc::make_chart<log_ctx>(
-    bsc::parallel<W>(region<0>(), region<1>(), region<2>()), region_rows<0>(), region_rows<1>(), region_rows<2>(),
-    bsc::state<On<0>> + bsc::event<go> / note<7> = bsc::state<Off<0>>,
-    bsc::state<On<1>> + bsc::event<go> / note<8> = bsc::state<W>);
+inline constexpr auto wide = bsc::make_chart<log_ctx>(bsc::parallel<W>(region<0>(), region<1>(), region<2>()),
+                                                      region_rows<0>(), region_rows<1>(), region_rows<2>(),
+                                                      bsc::state<On<0>> + bsc::event<go> / note<7> = bsc::state<Off<0>>,
+                                                      bsc::state<On<1>> + bsc::event<go> / note<8> = bsc::state<W>);
 
 inline constexpr auto raising = bsc::make_chart<log_ctx>(
     bsc::composite<struct RRoot>(bsc::initial<Off<0>>, bsc::state<On<0>>),
@@ -181,31 +182,28 @@ struct entries {
     void on_entry(auto state) { *out += state.name; }
 };
 // No guards and no entry or exit actions: tick and reset fire in each region as it is selected.
-inline constexpr auto plain = bsc::make_chart<log_ctx>(bsc::parallel<W>(plain_region<0>(), plain_region<1>(), plain_region<2>()),
-                                                       plain_rows<0>(), plain_rows<1>(), plain_rows<2>(),
-                                                       bsc::state<Mid<1>> + bsc::event<go> / note<9>);
+inline constexpr auto plain = bsc::make_chart<log_ctx>(
+    bsc::parallel<W>(plain_region<0>(), plain_region<1>(), plain_region<2>()), plain_rows<0>(), plain_rows<1>(),
+    plain_rows<2>(), bsc::state<Mid<1>> + bsc::event<go> / note<9>);
 }  // namespace mt2
 
-TEST_CASE("without guards, entry or exit actions, parallel transitions fire as they are selected, with the same effects") {
+TEST_CASE(
+    "without guards, entry or exit actions, parallel transitions fire as they are selected, with the same effects") {
     using plan = inside::plan<decltype(mt2::plain)>;
     static_assert(plan::fires_at_selection<inside::trigger_of<decltype(mt2::plain), mt2::tick>>);
     static_assert(plan::fires_at_selection<inside::trigger_of<decltype(mt2::plain), mt2::reset>>);
-    static_assert(!inside::plan<decltype(mt2::wide)>::fires_at_selection<inside::trigger_of<decltype(mt2::wide), mt2::tick>>);  // entry/exit notes
+    static_assert(!inside::plan<decltype(mt2::wide)>::fires_at_selection<
+                  inside::trigger_of<decltype(mt2::wide), mt2::tick>>);  // entry/exit notes
     bsc::machine fast{mt2::plain};
     bsc::table::machine reference{mt2::plain};
     std::uint32_t seed = 7;
     for (int i = 0; i < 600; ++i) {
         seed = seed * 1664525u + 1013904223u;
         switch ((seed >> 16) % 4) {
-        case 0:
-        case 1:
-            CHECK(fast.dispatch(mt2::tick{}) == reference.dispatch(mt2::tick{}));
-            break;
-        case 2:
-            CHECK(fast.dispatch(mt2::reset{}) == reference.dispatch(mt2::reset{}));
-            break;
-        default:
-            CHECK(fast.dispatch(mt2::go{}) == reference.dispatch(mt2::go{}));
+            case 0:
+            case 1: CHECK(fast.dispatch(mt2::tick{}) == reference.dispatch(mt2::tick{})); break;
+            case 2: CHECK(fast.dispatch(mt2::reset{}) == reference.dispatch(mt2::reset{})); break;
+            default: CHECK(fast.dispatch(mt2::go{}) == reference.dispatch(mt2::go{}));
         }
         REQUIRE(fast.active_configuration() == reference.active_configuration());
         REQUIRE(fast.context().log == reference.context().log);
@@ -213,7 +211,8 @@ TEST_CASE("without guards, entry or exit actions, parallel transitions fire as t
     CHECK(fast.context().log.size() > 1000);
     // With an observer, the same chart takes the select-then-fire path, and agrees.
     std::string trace;
-    bsc::machine<decltype(mt2::plain), bsc::default_policy, mt2::entries> observed{mt2::plain, {}, mt2::entries{&trace}};
+    bsc::machine<decltype(mt2::plain), bsc::default_policy, mt2::entries> observed{
+        mt2::plain, {}, mt2::entries{&trace}};
     observed.dispatch(mt2::tick{});
     observed.dispatch(mt2::reset{});
     CHECK(trace == "WG<0>Off<0>G<1>Off<1>G<2>Off<2>Mid<0>Mid<1>Mid<2>Off<0>Off<1>Off<2>");

@@ -232,8 +232,8 @@ TEST_CASE("manufacturing cell: without pieces nothing moves and E1..E4 alternate
     };
     for (std::size_t i = 2; i + 1 < fired.size(); i += 2) {
         INFO("cycles " << i << " and " << i + 1);
-        for (char const* t : {"BeltOff>BeltDone", "DrillOff>internal", "TestOff>internal",
-                                     "RobotOff>internal", "CylinderReturned>internal", "BeltDone>BeltOff"})
+        for (char const* t : {"BeltOff>BeltDone", "DrillOff>internal", "TestOff>internal", "RobotOff>internal",
+                              "CylinderReturned>internal", "BeltDone>BeltOff"})
             CHECK(count(i, t) + count(i + 1, t) == 1);
         CHECK(fired[i].size() + fired[i + 1].size() == 6);
     }

@@ -16,8 +16,8 @@ bool device(Loop const& s, bsc::output<bool> cell::data::*actuator) {
 }
 
 // Constraint 3 dropped: the table may turn with nothing at P1..P3.
-inline constexpr auto g13_without_constraint_3 =
-    bsc::guard([](cell::data const& d) { return d.E1 && d.E2 && d.E3 && d.E4; });
+inline constexpr auto g13_without_constraint_3 = bsc::guard(
+    [](cell::data const& d) { return d.E1 && d.E2 && d.E3 && d.E4; });
 inline constexpr auto broken = cell::make_controller(cell::g4, g13_without_constraint_3);
 }  // namespace
 
@@ -25,9 +25,8 @@ TEST_CASE("manufacturing cell: deadlock-free, reinitiable and live, as the BSC p
     bsc::verify::explorer ex{cell::finite::model(cell::chart)};
     auto const& st = ex.run();
     REQUIRE(st.complete);
-    MESSAGE("manufacturing cell: " << st.states << " states, " << st.transitions << " transitions, depth "
-                                   << st.depth << ", " << st.key_bytes << " bytes per state key, " << st.seconds
-                                   << " s");
+    MESSAGE("manufacturing cell: " << st.states << " states, " << st.transitions << " transitions, depth " << st.depth
+                                   << ", " << st.key_bytes << " bytes per state key, " << st.seconds << " s");
     CHECK(st.key_bytes <= 64);
     CHECK(bsc::verify::deadlock_free(ex).holds());
     // Reinitiability as [BSC] means it, over configurations: the components' states and an
@@ -39,12 +38,21 @@ TEST_CASE("manufacturing cell: deadlock-free, reinitiable and live, as the BSC p
                      s.plant.at == initial.plant.at && !s.plant.waiting && !s.plant.carrying;
           }).holds());
     // Vivacity: every device can operate again, from every reachable state.
-    CHECK(bsc::verify::always_reachable(ex, "belt on", [](auto const& s) { return device(s, &cell::data::belt); }).holds());
-    CHECK(bsc::verify::always_reachable(ex, "drill on", [](auto const& s) { return device(s, &cell::data::drill); }).holds());
-    CHECK(bsc::verify::always_reachable(ex, "test on", [](auto const& s) { return device(s, &cell::data::test); }).holds());
-    CHECK(bsc::verify::always_reachable(ex, "robot on", [](auto const& s) { return device(s, &cell::data::robot); }).holds());
-    CHECK(bsc::verify::always_reachable(ex, "table turning", [](auto const& s) { return device(s, &cell::data::valve); })
-              .holds());
+    CHECK(bsc::verify::always_reachable(ex, "belt on", [](auto const& s) {
+              return device(s, &cell::data::belt);
+          }).holds());
+    CHECK(bsc::verify::always_reachable(ex, "drill on", [](auto const& s) {
+              return device(s, &cell::data::drill);
+          }).holds());
+    CHECK(bsc::verify::always_reachable(ex, "test on", [](auto const& s) {
+              return device(s, &cell::data::test);
+          }).holds());
+    CHECK(bsc::verify::always_reachable(ex, "robot on", [](auto const& s) {
+              return device(s, &cell::data::robot);
+          }).holds());
+    CHECK(bsc::verify::always_reachable(ex, "table turning", [](auto const& s) {
+              return device(s, &cell::data::valve);
+          }).holds());
     // Constraint 2: no device works without a piece at its position.
     CHECK(bsc::verify::always(ex, "drill only on a piece", [](auto const& s) {
               return !device(s, &cell::data::drill) || s.plant.at[1];

@@ -35,10 +35,10 @@ struct mode {
     std::string_view config;
 };
 constexpr std::tuple modes{
-    mode<mcs::mem_p>{"MCS On Auto Mem"},      mode<mcs::mdi_p>{"MCS On Auto Mdi"},
-    mode<mcs::tape_p>{"MCS On Auto Tape"},    mode<mcs::hnd_p>{"MCS On Manual Handle"},
-    mode<mcs::jog_p>{"MCS On Manual Jog"},    mode<mcs::rpd_p>{"MCS On Manual Rpd"},
-    mode<mcs::zrn_p>{"MCS On Manual Zrn"},    mode<mcs::edit_p>{"MCS On Edit"},
+    mode<mcs::mem_p>{"MCS On Auto Mem"},   mode<mcs::mdi_p>{"MCS On Auto Mdi"},
+    mode<mcs::tape_p>{"MCS On Auto Tape"}, mode<mcs::hnd_p>{"MCS On Manual Handle"},
+    mode<mcs::jog_p>{"MCS On Manual Jog"}, mode<mcs::rpd_p>{"MCS On Manual Rpd"},
+    mode<mcs::zrn_p>{"MCS On Manual Zrn"}, mode<mcs::edit_p>{"MCS On Edit"},
     mode<mcs::setup_p>{"MCS On Setup"},
 };
 

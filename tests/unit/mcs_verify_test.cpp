@@ -16,9 +16,9 @@ inline constexpr bool bsc::transient<mcs::display> = true;
 
 namespace {
 template <class Machine>
-using panel_model = bsc::verify::event_model<Machine, mcs::on_p, mcs::off_p, mcs::estop_p, mcs::reset_p, mcs::mem_p,
-                                             mcs::mdi_p, mcs::tape_p, mcs::hnd_p, mcs::jog_p, mcs::rpd_p, mcs::zrn_p,
-                                             mcs::edit_p, mcs::setup_p>;
+using panel_model =
+    bsc::verify::event_model<Machine, mcs::on_p, mcs::off_p, mcs::estop_p, mcs::reset_p, mcs::mem_p, mcs::mdi_p,
+                             mcs::tape_p, mcs::hnd_p, mcs::jog_p, mcs::rpd_p, mcs::zrn_p, mcs::edit_p, mcs::setup_p>;
 
 template <class S>
 constexpr auto in = [](auto const& m) { return m.template is<S>(); };
@@ -67,9 +67,8 @@ TEST_CASE("MCS: every state and every transition is exercised by some run") {
 TEST_CASE("MCS: a variant whose cond always holds is caught with a shortest counterexample") {
     using broken = bsc::machine<decltype(broken_chart)>;
     bsc::verify::explorer ex{panel_model<broken>{broken{broken_chart, mcs::panel{}}}};
-    auto const v = bsc::verify::always(ex, "error only in Estop", [](auto const& m) {
-        return m.context().error == 0 || m.template is<mcs::Estop>();
-    });
+    auto const v = bsc::verify::always(
+        ex, "error only in Estop", [](auto const& m) { return m.context().error == 0 || m.template is<mcs::Estop>(); });
     REQUIRE(v.fails());
     REQUIRE(v.trace.size() == 3);
     CHECK(v.trace[1].label == "ESTOP_P");  // the events by their bsc::event_name

@@ -39,8 +39,8 @@ inline constexpr auto plant = bsc::make_chart<plant_io>(
     bsc::state<Still>[([](plant_io const& p) { return p.motor.get(); })] = bsc::state<Moving>,
     bsc::state<Moving>[([](plant_io const& p) { return !p.motor.get(); })] = bsc::state<Still>,
     bsc::state<Moving> + bsc::after(300ms) / [](plant_io& p) { p.arrived.set(true); } = bsc::state<At>,
-    bsc::state<At>[([](plant_io const& p) { return !p.motor.get(); })] / [](plant_io& p) { p.arrived.set(false); } =
-        bsc::state<Still>);
+    bsc::state<At>[([](plant_io const& p) { return !p.motor.get(); })] /
+        [](plant_io& p) { p.arrived.set(false); } = bsc::state<Still>);
 
 struct actors {
     bsc::machine<decltype(controller)> control{controller};
@@ -48,11 +48,11 @@ struct actors {
 };
 
 template <class MotorPolicy, class ArrivedPolicy = bsc::hold_last>
-using line = bsc::system<actors, bsc::order<&actors::control, &actors::belt>,
-                         bsc::link<&actors::control, &controller_io::motor, &actors::belt, &plant_io::motor, MotorPolicy>,
-                         bsc::link<&actors::belt, &plant_io::arrived, &actors::control, &controller_io::arrived,
-                                   ArrivedPolicy>,
-                         bsc::from_outside<&actors::control, &controller_io::request>>;
+using line =
+    bsc::system<actors, bsc::order<&actors::control, &actors::belt>,
+                bsc::link<&actors::control, &controller_io::motor, &actors::belt, &plant_io::motor, MotorPolicy>,
+                bsc::link<&actors::belt, &plant_io::arrived, &actors::control, &controller_io::arrived, ArrivedPolicy>,
+                bsc::from_outside<&actors::control, &controller_io::request>>;
 
 // Two nodes, one actor each, on one bus, with the test's clock.
 template <class System>
@@ -226,8 +226,8 @@ TEST_CASE("messages from another chart, malformed or older than the applied ones
     // The right fingerprint, but a bool that is neither 0 nor 1.
     using system = net_test::line<bsc::hold_last>;
     using machine = std::remove_cvref_t<decltype(std::declval<actors&>().belt)>;
-    auto bad = bsc::net::wire::encode_value(1000, bsc::net::wire::value_fingerprint<machine, &net_test::plant_io::arrived>(),
-                                            true);
+    auto bad = bsc::net::wire::encode_value(
+        1000, bsc::net::wire::value_fingerprint<machine, &net_test::plant_io::arrived>(), true);
     bad.back() = std::byte{7};
     intruder.publish(topic, bad);
     d.control_node.run_once(0ms);
@@ -236,7 +236,8 @@ TEST_CASE("messages from another chart, malformed or older than the applied ones
 
     // A value for an old step, with the right fingerprint: counted, not applied.
     auto const old_before = d.control_node.stats().old;
-    intruder.publish(topic, bsc::net::wire::encode_value(0, bsc::net::wire::value_fingerprint<machine, &net_test::plant_io::arrived>(), true));
+    intruder.publish(topic, bsc::net::wire::encode_value(
+                                0, bsc::net::wire::value_fingerprint<machine, &net_test::plant_io::arrived>(), true));
     d.control_node.run_once(0ms);
     CHECK(d.control_node.stats().old == old_before + 1);
     CHECK(d.control_node.stats().refused == 3);
@@ -245,7 +246,8 @@ TEST_CASE("messages from another chart, malformed or older than the applied ones
 
 TEST_CASE("a node started again resumes its actors from their saved state and rejoins the others") {
     auto const dir = std::filesystem::temp_directory_path() /
-                     ("bsc_net_node_test_" + std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+                     ("bsc_net_node_test_" +
+                      std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     using system = net_test::line<bsc::fail_safe<false>>;
@@ -278,7 +280,7 @@ TEST_CASE("a node started again resumes its actors from their saved state and re
         restarted.run_once(0ms);
         d.belt_node.run_once(0ms);
     }
-    CHECK(restarted.stats().jumps == 1);  // it rejoined the belt at step 9 instead of replaying 3 to 8
+    CHECK(restarted.stats().jumps == 1);   // it rejoined the belt at step 9 instead of replaying 3 to 8
     CHECK(restarted.stats().steps == 12);  // 9 to 20
     CHECK(restarted.completed(0) == 20);
     CHECK(d.belt_node.completed(1) == 20);  // the belt waited for it again, and went on with it
@@ -287,7 +289,8 @@ TEST_CASE("a node started again resumes its actors from their saved state and re
 
 TEST_CASE("a node does not start from a damaged saved state") {
     auto const dir = std::filesystem::temp_directory_path() /
-                     ("bsc_net_node_damaged_" + std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+                     ("bsc_net_node_damaged_" +
+                      std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
     std::filesystem::create_directories(dir);
     using system = net_test::line<bsc::hold_last>;
     {
@@ -349,7 +352,8 @@ TEST_CASE("a node that cannot connect says so, and names a peer never heard from
     CHECK(n.run_once(0ms) == 0);
     auto const why = n.waiting();
     INFO(why);
-    CHECK(why == "cannot reach the MQTT broker at 192.0.2.1:1883; control waits for belt to start (not heard from yet)");
+    CHECK(why ==
+          "cannot reach the MQTT broker at 192.0.2.1:1883; control waits for belt to start (not heard from yet)");
     CHECK(why.find("-9223372036854775808") == std::string::npos);
     CHECK(n.completed(1) == std::numeric_limits<std::int64_t>::min());
 }
@@ -412,9 +416,9 @@ TEST_CASE("across nodes a link's bsc::convert applies as in one process, and its
     for (int i = 0; i < 1000; ++i)
         if (meter_node.run_once(0ms) + reader_node.run_once(0ms) == 0) break;
     REQUIRE(reader_node.completed(1) == 3);
-    CHECK(meter_side.actors.meter.context().level.get() == 3);     // one more in each of steps 1 to 3
+    CHECK(meter_side.actors.meter.context().level.get() == 3);      // one more in each of steps 1 to 3
     CHECK(reader_side.actors.reader.context().doubled.get() == 6);  // step 3's level (the meter steps first), doubled
-    to_meter.disconnect();  // the meter's will: stale at once
+    to_meter.disconnect();                                          // the meter's will: stale at once
     reader_node.stop_after(4);
     now += 100ms;
     reader_node.run_once(0ms);

@@ -55,8 +55,8 @@ static_assert(robot_cycle == 14400ms && alone == 17900ms);
 // ---- A checked run ------------------------------------------------------------------------------
 
 struct findings {
-    std::string violation;  // the first requirement violated, with the step, or empty
-    bool done = false;      // every brick left the cell
+    std::string violation;   // the first requirement violated, with the step, or empty
+    bool done = false;       // every brick left the cell
     bool both_arms = false;  // some step had a brick on arm1 and another on arm2
     bool all_off = false;    // some step had every controller in Off
     bsc::duration longest_stay{};
@@ -140,8 +140,8 @@ void check(findings const& f) {
     CHECK(f.violation.empty());
     CHECK(f.done);
     CHECK(f.worst_margin > 0s);
-    MESSAGE("longest stay " << seconds(f.longest_stay) << " s, smallest margin to the bound "
-                            << seconds(f.worst_margin) << " s");
+    MESSAGE("longest stay " << seconds(f.longest_stay) << " s, smallest margin to the bound " << seconds(f.worst_margin)
+                            << " s");
 }
 
 /// `n` offers with gaps drawn from [0, max_gap) in steps of one period, from a fixed seed.
@@ -195,7 +195,8 @@ TEST_CASE("production cell: switched off and on again in the middle of the work,
     }
 }
 
-TEST_CASE("production cell: any one controller switched off and on again at any moment, the cell stays safe and resumes") {
+TEST_CASE(
+    "production cell: any one controller switched off and on again at any moment, the cell stays safe and resumes") {
     // Off stops a controller's motors and leaves its handshake signals as they are: a partner
     // waits for it rather than reading a lowered signal as the handshake's next phase. (A
     // distributed cell switches a controller off whenever it loses its supervisor.)
@@ -258,26 +259,23 @@ TEST_CASE("production cell: exploration with bsc::verify::system_model, the arri
     bsc::verify::system_model model{initial, pcell::period, 2, step, describe, label};
     bsc::verify::explorer ex{model, bsc::verify::limits{300'000, std::size_t{1} << 30}};
     auto const& st = ex.run();
-    MESSAGE("states " << st.states << ", transitions " << st.transitions << ", depth " << st.depth << ", "
-                      << st.seconds << " s, " << st.key_bytes << " bytes per state");
+    MESSAGE("states " << st.states << ", transitions " << st.transitions << ", depth " << st.depth << ", " << st.seconds
+                      << " s, " << st.key_bytes << " bytes per state");
     REQUIRE(st.complete);
 
     auto const r1 = bsc::verify::always(ex, "R1: one brick per place, none lost", [](pcell::cell const& s) {
         std::array<int, bricks + 1> seen{};
         bool ok = true;
-        pcell::for_each_brick(s, [&](pcell::brick b, pcell::place) {
-            ok = ok && b.id <= bricks && ++seen[b.id] == 1;
-        });
+        pcell::for_each_brick(s, [&](pcell::brick b, pcell::place) { ok = ok && b.id <= bricks && ++seen[b.id] == 1; });
         auto const& out = s.actors.env_deposit_belt.context();
         int in_cell = 0;
         for (int k = 1; k <= bricks; ++k) in_cell += seen[static_cast<std::size_t>(k)];
         return ok && in_cell + out.delivered == s.actors.env_feed_belt.context().fed;
     });
-    auto const r2 = bsc::verify::always(ex, "R2: no arm in the press area while the plate moves",
-                                        [](pcell::cell const& s) {
-                                            return !(pcell::press_moving(s) && (pcell::arm_in_press_area(s, 1) ||
-                                                                                pcell::arm_in_press_area(s, 2)));
-                                        });
+    auto const r2 = bsc::verify::always(
+        ex, "R2: no arm in the press area while the plate moves", [](pcell::cell const& s) {
+            return !(pcell::press_moving(s) && (pcell::arm_in_press_area(s, 1) || pcell::arm_in_press_area(s, 2)));
+        });
     auto const r3 = bsc::verify::always(ex, "R3: not Env_FeedBelt/Table/Robot/Press/DepositBelt.Damage",
                                         [](pcell::cell const& s) { return pcell::no_damage(s); });
     CHECK_MESSAGE(r1.holds(), r1.to_string());

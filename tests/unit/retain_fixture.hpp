@@ -93,8 +93,9 @@ inline constexpr auto work = [](ctx& c) {
 
 // Deep history, a parallel state, timeouts and a final root child: everything save keeps.
 inline constexpr auto chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Hold>, bsc::composite<Work>(bsc::deep_history, bsc::initial<Setup>,
-                                                                   bsc::composite<Run>(bsc::initial<Fast>, bsc::state<Slow>)),
+    bsc::composite<Root>(bsc::initial<Hold>,
+                         bsc::composite<Work>(bsc::deep_history, bsc::initial<Setup>,
+                                              bsc::composite<Run>(bsc::initial<Fast>, bsc::state<Slow>)),
                          bsc::parallel<Panel>(bsc::composite<Lamp>(bsc::initial<LampOff>, bsc::state<LampOn>),
                                               bsc::composite<Horn>(bsc::initial<Quiet>, bsc::state<Loud>)),
                          bsc::final_state<Done>),
@@ -103,19 +104,17 @@ inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::state<Setup> + bsc::after(300ms) / work = bsc::state<Run>,
     bsc::state<Fast> + bsc::event<next> / work = bsc::state<Slow>,
     bsc::state<Slow> + bsc::after(1s) / work = bsc::state<Fast>,
-    bsc::state<Work> + bsc::event<leave> = bsc::state<Hold>,
-    bsc::state<Hold> + bsc::event<back> = bsc::state<Panel>,
+    bsc::state<Work> + bsc::event<leave> = bsc::state<Hold>, bsc::state<Hold> + bsc::event<back> = bsc::state<Panel>,
     bsc::state<LampOff> + bsc::after(200ms) = bsc::state<LampOn>,
     bsc::state<LampOn> + bsc::event<go> = bsc::state<LampOff>,
     bsc::state<Quiet>[([](ctx const& c) { return c.settle.tm(); })] = bsc::state<Loud>,
-    bsc::state<Loud> + bsc::event<next> = bsc::state<Done>,
-    bsc::state<Panel> + bsc::event<leave> = bsc::state<Hold>);
+    bsc::state<Loud> + bsc::event<next> = bsc::state<Done>, bsc::state<Panel> + bsc::event<leave> = bsc::state<Hold>);
 
 // A chart with the same context and other states.
 struct Other;
-inline constexpr auto other_chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Hold>, bsc::state<Other>),
-    bsc::state<Hold> + bsc::event<go> = bsc::state<Other>, bsc::state<Other> + bsc::event<back> = bsc::state<Hold>);
+inline constexpr auto other_chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<Hold>, bsc::state<Other>),
+                                                         bsc::state<Hold> + bsc::event<go> = bsc::state<Other>,
+                                                         bsc::state<Other> + bsc::event<back> = bsc::state<Hold>);
 
 template <class M>
 std::string describe(M const& m) {

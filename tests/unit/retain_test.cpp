@@ -91,11 +91,11 @@ TEST_CASE("retain: the two back ends save the same bytes") {
 TEST_CASE("retain: history, timeouts and timers survive the restart") {
     bsc::machine m{chart, ctx{}};
     m.step(0ms);
-    m.dispatch(go{});      // Hold -> Work (Setup); the timer `settle` starts
-    m.step(400ms);         // Setup -> Run (Fast) after 300 ms
-    m.dispatch(next{});    // Fast -> Slow: the 1 s timeout starts at 400 ms
+    m.dispatch(go{});    // Hold -> Work (Setup); the timer `settle` starts
+    m.step(400ms);       // Setup -> Run (Fast) after 300 ms
+    m.dispatch(next{});  // Fast -> Slow: the 1 s timeout starts at 400 ms
     m.step(500ms);
-    m.dispatch(leave{});   // Work is left: deep history keeps Run/Slow
+    m.dispatch(leave{});  // Work is left: deep history keeps Run/Slow
     REQUIRE(m.is<Hold>());
     auto const bytes = bsc::save(m);
 
@@ -117,8 +117,8 @@ TEST_CASE("retain: history, timeouts and timers survive the restart") {
 TEST_CASE("retain: resume_at moves every time the machine keeps, so the downtime does not count") {
     bsc::machine m{chart, ctx{}};
     m.step(10s);
-    m.dispatch(go{});           // Setup; its 300 ms timeout is armed at 10 s; settle starts
-    m.step(10s + 100ms);        // settle times from here
+    m.dispatch(go{});     // Setup; its 300 ms timeout is armed at 10 s; settle starts
+    m.step(10s + 100ms);  // settle times from here
     auto const bytes = bsc::save(m);
 
     bsc::machine resumed{chart, ctx{}};
@@ -127,7 +127,7 @@ TEST_CASE("retain: resume_at moves every time the machine keeps, so the downtime
     CHECK(resumed.step(2s + 150ms).transitions == 0);
     CHECK(resumed.is<Setup>());
     CHECK(resumed.context().settle.elapsed() == 150ms);  // timing since 10.1 s, now since 2 s
-    CHECK(resumed.step(2s + 200ms).transitions >= 1);  // 300 ms after the timeout was armed
+    CHECK(resumed.step(2s + 200ms).transitions >= 1);    // 300 ms after the timeout was armed
     CHECK(resumed.is<Fast>());
 
     // Without resume_at the saved clock stands, and an earlier time is reported.
@@ -221,7 +221,7 @@ TEST_CASE("retain: bytes that are not this machine's state are refused with the 
 // The same chart over contexts that differ in one way each.
 enum class signed_level : std::int8_t { low = -1, high = 1 };
 enum class unsigned_level : std::uint8_t { low = 1, high = 2 };
-enum legacy_color { red, green };                 // no fixed underlying type: cannot be restored
+enum legacy_color { red, green };                   // no fixed underlying type: cannot be restored
 enum fixed_color : std::uint8_t { cyan, magenta };  // can
 static_assert(!inside::has_fixed_underlying_type<legacy_color>);
 static_assert(inside::has_fixed_underlying_type<fixed_color>);
@@ -258,9 +258,10 @@ struct output_instead {
     unsigned b = 0;
 };
 template <class Context>
-inline constexpr auto layout_chart = bsc::make_chart<Context>(
-    bsc::composite<Root>(bsc::initial<Hold>, bsc::state<Work>), bsc::state<Hold> + bsc::event<go> = bsc::state<Work>,
-    bsc::state<Work> + bsc::event<back> = bsc::state<Hold>);
+inline constexpr auto layout_chart = bsc::make_chart<Context>(bsc::composite<Root>(bsc::initial<Hold>,
+                                                                                   bsc::state<Work>),
+                                                              bsc::state<Hold> + bsc::event<go> = bsc::state<Work>,
+                                                              bsc::state<Work> + bsc::event<back> = bsc::state<Hold>);
 template <class Context>
 using layout_machine = bsc::machine<decltype(layout_chart<Context>)>;
 
@@ -270,9 +271,9 @@ TEST_CASE("retain: the layout fingerprint tells members' names, order, types and
     // The same states: the chart's fingerprint is the same.
     CHECK(chart_fingerprint<layout_machine<renamed>>() == chart_fingerprint<layout_machine<original_layout>>());
     constexpr std::array<std::uint64_t, 7> layouts = {
-        layout_fingerprint<layout_machine<original_layout>>(),  layout_fingerprint<layout_machine<renamed>>(),
-        layout_fingerprint<layout_machine<reordered>>(),        layout_fingerprint<layout_machine<retyped>>(),
-        layout_fingerprint<layout_machine<output_instead>>(),   layout_fingerprint<layout_machine<with_signed_enum>>(),
+        layout_fingerprint<layout_machine<original_layout>>(),   layout_fingerprint<layout_machine<renamed>>(),
+        layout_fingerprint<layout_machine<reordered>>(),         layout_fingerprint<layout_machine<retyped>>(),
+        layout_fingerprint<layout_machine<output_instead>>(),    layout_fingerprint<layout_machine<with_signed_enum>>(),
         layout_fingerprint<layout_machine<with_unsigned_enum>>()};
     for (std::size_t i = 0; i < layouts.size(); ++i)
         for (std::size_t j = i + 1; j < layouts.size(); ++j) CHECK(layouts[i] != layouts[j]);
@@ -329,8 +330,10 @@ TEST_CASE("retain: a timer's state that no timer can come to is refused") {
     std::size_t const timer_at = inside::retain_header_size + 1 + 8 + 1 + 1;
     machine target{timer_chart};
     refused_unchanged(target, patched(idle, timer_at + 7, 0x80), bsc::restore_error::invalid_value, timer_at);
-    refused_unchanged(target, patched(idle, timer_at + 25, 1), bsc::restore_error::invalid_value, timer_at);  // idle, expired
-    refused_unchanged(target, patched(idle, timer_at + 16, 5), bsc::restore_error::invalid_value, timer_at);  // idle, elapsed
+    refused_unchanged(target, patched(idle, timer_at + 25, 1), bsc::restore_error::invalid_value,
+                      timer_at);  // idle, expired
+    refused_unchanged(target, patched(idle, timer_at + 16, 5), bsc::restore_error::invalid_value,
+                      timer_at);  // idle, elapsed
     refused_unchanged(target, patched(idle, timer_at + 24, 3), bsc::restore_error::invalid_value, timer_at + 24);
     CHECK(bsc::restore(target, patched(idle, timer_at, 7)));  // another limit, not below zero
     CHECK(target.context().t.limit() == std::chrono::nanoseconds{(2'000'000'000 & ~0xff) | 7});
@@ -352,9 +355,10 @@ struct fail_ctx {
 };
 inline constexpr auto failing_chart = bsc::make_chart<fail_ctx>(
     bsc::composite<Root>(bsc::initial<Hold>, bsc::state<Work>),
-    bsc::state<Hold> + bsc::event<go> / [](fail_ctx& c) {
-        if (c.fail) throw std::runtime_error("jammed");
-    } = bsc::state<Work>,
+    bsc::state<Hold> + bsc::event<go> /
+                           [](fail_ctx& c) {
+                               if (c.fail) throw std::runtime_error("jammed");
+                           } = bsc::state<Work>,
     bsc::state<Work> + bsc::event<back> = bsc::state<Hold>);
 
 TEST_CASE("retain: a restored machine does not report the exception of its own earlier run") {
@@ -424,10 +428,11 @@ struct step_sub {  // the supervisor steps its sub-controller at `now`
 };
 inline constexpr auto supervisor_chart = bsc::make_chart<supervisor_ctx>(
     bsc::composite<Root>(bsc::initial<Hold>, bsc::state<Work>),
-    bsc::state<Hold> + bsc::event<go> / [](supervisor_ctx& c) {
-        ++c.orders;
-        c.sub.dispatch(go{});
-    } = bsc::state<Work>,
+    bsc::state<Hold> + bsc::event<go> /
+                           [](supervisor_ctx& c) {
+                               ++c.orders;
+                               c.sub.dispatch(go{});
+                           } = bsc::state<Work>,
     bsc::state<Work> + bsc::event<back> = bsc::state<Hold>,
     bsc::state<Root> + bsc::event<step_sub> / [](supervisor_ctx& c, step_sub const& s) { c.sub.step(s.now); });
 
@@ -504,9 +509,9 @@ std::vector<std::string> run_cell(long restart_at) {
         }
         cell::cycle_record const r = loop.cycle();
         auto const& d = m.context();
-        trace.push_back(std::to_string(r.time.count()) + " " + m.active_states().joined() + " " +
-                        std::to_string(d.E1) + std::to_string(d.E2) + std::to_string(d.E3) + std::to_string(d.E4) +
-                        " " + std::to_string(d.T1.elapsed().count()) + " " + std::to_string(d.T3.tm()));
+        trace.push_back(std::to_string(r.time.count()) + " " + m.active_states().joined() + " " + std::to_string(d.E1) +
+                        std::to_string(d.E2) + std::to_string(d.E3) + std::to_string(d.E4) + " " +
+                        std::to_string(d.T1.elapsed().count()) + " " + std::to_string(d.T3.tm()));
     }
     CHECK(loop.done());
     CHECK(loop.monitor().ok());

@@ -29,7 +29,9 @@ using bsc_test::table;
 
 namespace rob {
 struct go {};
-struct Root; struct Idle; struct Busy;
+struct Root;
+struct Idle;
+struct Busy;
 
 // ---- channels and timers at any depth --------------------------------------------------------
 struct panel {
@@ -42,22 +44,22 @@ struct panel {
 // More members than fit a flat context before, and the I/O in nested structs and arrays.
 struct cell_io {
     panel front;
-    int v0, v1, v2, v3, v4, v5, v6, v7, v8, v9, v10, v11, v12, v13, v14, v15, v16, v17, v18, v19,
-        v20, v21, v22, v23, v24, v25, v26, v27, v28, v29, v30, v31, v32, v33, v34, v35, v36, v37, v38, v39;
+    int v0, v1, v2, v3, v4, v5, v6, v7, v8, v9, v10, v11, v12, v13, v14, v15, v16, v17, v18, v19, v20, v21, v22, v23,
+        v24, v25, v26, v27, v28, v29, v30, v31, v32, v33, v34, v35, v36, v37, v38, v39;
     std::array<panel, 2> stations;
     std::array<std::array<bsc::output<bool>, 2>, 3> valves;
 };
 inline constexpr auto nested = bsc::make_chart<cell_io>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
     bsc::state<Idle>[([](cell_io const& c) { return c.front.buttons[2].get() && c.stations[1].buttons[3].get(); })] /
-            [](cell_io& c) {
-                c.front.lamp.set(7);
-                c.stations[1].lamp.set(9);
-                c.valves[2][1].set(true);
-                c.stations[0].timers.settle.start();
-            } = bsc::state<Busy>,
+        [](cell_io& c) {
+            c.front.lamp.set(7);
+            c.stations[1].lamp.set(9);
+            c.valves[2][1].set(true);
+            c.stations[0].timers.settle.start();
+        } = bsc::state<Busy>,
     bsc::state<Busy>[([](cell_io const& c) { return c.stations[0].timers.settle.tm(); })] /
-            [](cell_io& c) { c.valves[2][1].set(false); } = bsc::state<Idle>);
+        [](cell_io& c) { c.valves[2][1].set(false); } = bsc::state<Idle>);
 }  // namespace rob
 
 TEST_CASE_TEMPLATE("channels and timers inside nested structs and std::arrays are latched, published and updated",
@@ -69,7 +71,7 @@ TEST_CASE_TEMPLATE("channels and timers inside nested structs and std::arrays ar
     CHECK_FALSE(io.front.buttons[2].get());  // not latched before a cycle
     m.step(0ms);
     CHECK(m.template is<rob::Busy>());
-    CHECK(io.front.lamp.get() == 7);         // published at the end of the cycle
+    CHECK(io.front.lamp.get() == 7);  // published at the end of the cycle
     CHECK(io.stations[1].lamp.get() == 9);
     CHECK(io.valves[2][1].get());
     m.step(5ms);  // the timer in stations[0] starts timing in the cycle after start()
@@ -95,10 +97,11 @@ struct referencing_io {
 };
 inline constexpr auto referencing = bsc::make_chart<referencing_io>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle>[([](referencing_io const& c) { return c.start.get(); })] / [](referencing_io& c) {
-        c.motor.set(true);
-        ++c.plant.pieces;
-    } = bsc::state<Busy>,
+    bsc::state<Idle>[([](referencing_io const& c) { return c.start.get(); })] /
+        [](referencing_io& c) {
+            c.motor.set(true);
+            ++c.plant.pieces;
+        } = bsc::state<Busy>,
     bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
 static_assert(inside::field_count<referencing_io>() == 4);
 }  // namespace rob
@@ -157,11 +160,12 @@ struct handles_io {
 };
 inline constexpr auto handles = bsc::make_chart<handles_io>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
-    bsc::state<Idle> + bsc::event<tag> / [](handles_io& c) {
-        c.total.set(c.levels.items[0].get() + c.levels.items[1].get());
-        c.last = c.total.pending();
-        if (c.peer != nullptr) c.peer->dispatch(go{});
-    } = bsc::state<Busy>,
+    bsc::state<Idle> + bsc::event<tag> /
+                           [](handles_io& c) {
+                               c.total.set(c.levels.items[0].get() + c.levels.items[1].get());
+                               c.last = c.total.pending();
+                               if (c.peer != nullptr) c.peer->dispatch(go{});
+                           } = bsc::state<Busy>,
     bsc::state<Busy> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace rob
 
@@ -189,9 +193,9 @@ struct Other;
 // The machine and the calls it makes on itself are given by the environment, as inputs.
 struct reentrant_ctx {
     bsc::input<void*> self;
-    bsc::input<bsc::outcome (*)(void*)> dispatch_go;               // calls self->dispatch(go{})
-    bsc::input<bsc::outcome (*)(void*)> step_now;                  // calls self->step(...)
-    bsc::input<bsc::outcome (*)(void*, char const*)> by_name;      // calls self->dispatch_by_name(name)
+    bsc::input<bsc::outcome (*)(void*)> dispatch_go;           // calls self->dispatch(go{})
+    bsc::input<bsc::outcome (*)(void*)> step_now;              // calls self->step(...)
+    bsc::input<bsc::outcome (*)(void*, char const*)> by_name;  // calls self->dispatch_by_name(name)
     bsc::outcome inner = bsc::outcome::consumed;
     bsc::outcome inner_step = bsc::outcome::consumed;
     bsc::outcome inner_by_name = bsc::outcome::consumed;
@@ -203,28 +207,28 @@ inline constexpr auto reentrant = bsc::make_chart<reentrant_ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>, bsc::state<Other>),
     bsc::state<Idle> + bsc::on_exit / [](reentrant_ctx& c) { ++c.idle_exits; },
     bsc::state<Busy> + bsc::on_entry / [](reentrant_ctx& c) { ++c.busy_entries; },
-    bsc::state<Idle> + bsc::event<poke> /
+    bsc::state<Idle> +
+        bsc::event<poke> /
             [](reentrant_ctx& c) {
                 c.inner = c.dispatch_go.get()(c.self.get());  // a dispatch from inside the machine's own action
                 c.inner_step = c.step_now.get()(c.self.get());
                 c.inner_by_name = c.by_name.get()(c.self.get(), "go");
                 c.inner_unknown = c.by_name.get()(c.self.get(), "no such event");
             } = bsc::state<Busy>,
-    bsc::state<Busy> + bsc::event<go> = bsc::state<Other>,
-    bsc::state<Other> + bsc::event<go> = bsc::state<Idle>);
+    bsc::state<Busy> + bsc::event<go> = bsc::state<Other>, bsc::state<Other> + bsc::event<go> = bsc::state<Idle>);
 }  // namespace rob
 
-TEST_CASE_TEMPLATE("a dispatch, by type or by name, or a step from inside the machine's own action is refused and "
-                   "changes nothing",
-                   Backend, compiled, table) {
+TEST_CASE_TEMPLATE(
+    "a dispatch, by type or by name, or a step from inside the machine's own action is refused and "
+    "changes nothing",
+    Backend, compiled, table) {
     using machine = bsc_test::machine_t<Backend, decltype(rob::reentrant)>;
     machine m{rob::reentrant};
     m.context().self.set(&m);
     m.context().dispatch_go.set([](void* self) { return static_cast<machine*>(self)->dispatch(rob::go{}); });
     m.context().step_now.set([](void* self) { return static_cast<machine*>(self)->step(1ms).status; });
-    m.context().by_name.set([](void* self, char const* name) {
-        return static_cast<machine*>(self)->dispatch_by_name(name);
-    });
+    m.context().by_name.set(
+        [](void* self, char const* name) { return static_cast<machine*>(self)->dispatch_by_name(name); });
     CHECK(m.dispatch(rob::poke{}) == bsc::outcome::consumed);
     CHECK(m.context().inner == bsc::outcome::reentrant);
     CHECK(m.context().inner_step == bsc::outcome::reentrant);
@@ -243,7 +247,8 @@ TEST_CASE_TEMPLATE("a dispatch, by type or by name, or a step from inside the ma
 
 namespace rob {
 // ---- timeouts and the clock ------------------------------------------------------------------
-struct Heating; struct Done;
+struct Heating;
+struct Done;
 struct oven_ctx {
     int ticks = 0;
 };
@@ -252,8 +257,7 @@ struct oven_ctx {
 inline constexpr auto oven = bsc::make_chart<oven_ctx>(
     bsc::composite<Root>(bsc::initial<Heating>, bsc::state<Done>),
     bsc::state<Heating> + bsc::after(500ms) / [](oven_ctx& c) { ++c.ticks; },
-    bsc::state<Heating> + bsc::after(2s) = bsc::state<Done>,
-    bsc::state<Done> + bsc::event<go> = bsc::state<Heating>);
+    bsc::state<Heating> + bsc::after(2s) = bsc::state<Done>, bsc::state<Done> + bsc::event<go> = bsc::state<Heating>);
 }  // namespace rob
 
 TEST_CASE_TEMPLATE("an internal timeout fires every period while its state is active, and blocks no other timeout",
@@ -300,9 +304,10 @@ TEST_CASE_TEMPLATE("times far apart do not overflow: a delay counts exactly acro
 
 TEST_CASE("a chart built at run time with a negative or too long delay throws instead of running") {
     auto const build = [](bsc::duration delay) {
-        return bsc::make_chart<rob::oven_ctx>(bsc::composite<rob::Root>(bsc::initial<rob::Heating>, bsc::state<rob::Done>),
-                                              bsc::state<rob::Heating> + bsc::after(delay) = bsc::state<rob::Done>,
-                                              bsc::state<rob::Done> + bsc::event<rob::go> = bsc::state<rob::Heating>);
+        return bsc::make_chart<rob::oven_ctx>(
+            bsc::composite<rob::Root>(bsc::initial<rob::Heating>, bsc::state<rob::Done>),
+            bsc::state<rob::Heating> + bsc::after(delay) = bsc::state<rob::Done>,
+            bsc::state<rob::Done> + bsc::event<rob::go> = bsc::state<rob::Heating>);
     };
     CHECK_THROWS_AS(build(-1ms), std::invalid_argument);
     CHECK_NOTHROW(build(0ms));
@@ -314,23 +319,26 @@ TEST_CASE("a chart built at run time with a timeout that can never fire throws, 
     // Row 2 (after first) always leaves Heating before row 3 (after second) is due, unless
     // row 3's delay is the shorter one.
     auto const build = [](bsc::duration first, bsc::duration second) {
-        return bsc::make_chart<rob::oven_ctx>(bsc::composite<rob::Root>(bsc::initial<rob::Heating>, bsc::state<rob::Done>),
-                                              bsc::state<rob::Done> + bsc::event<rob::go> = bsc::state<rob::Heating>,
-                                              bsc::state<rob::Heating> + bsc::after(first) = bsc::state<rob::Done>,
-                                              bsc::state<rob::Heating> + bsc::after(second) = bsc::state<rob::Done>);
+        return bsc::make_chart<rob::oven_ctx>(
+            bsc::composite<rob::Root>(bsc::initial<rob::Heating>, bsc::state<rob::Done>),
+            bsc::state<rob::Done> + bsc::event<rob::go> = bsc::state<rob::Heating>,
+            bsc::state<rob::Heating> + bsc::after(first) = bsc::state<rob::Done>,
+            bsc::state<rob::Heating> + bsc::after(second) = bsc::state<rob::Done>);
     };
-    CHECK_THROWS_WITH_AS(build(1s, 2s),
-                         "bsc::make_chart: the timeout row at position 3 can never fire: the unguarded timeout row at "
-                         "position 2 leaves its state first, every time, with a shorter (or equal) delay, from the same "
-                         "state or from a state below it that is active whenever it is",
-                         std::invalid_argument);
+    CHECK_THROWS_WITH_AS(
+        build(1s, 2s),
+        "bsc::make_chart: the timeout row at position 3 can never fire: the unguarded timeout row at "
+        "position 2 leaves its state first, every time, with a shorter (or equal) delay, from the same "
+        "state or from a state below it that is active whenever it is",
+        std::invalid_argument);
     CHECK_THROWS_WITH_AS(build(1s, 1s), doctest::Contains("row at position 3 can never fire"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(build(3s, 2s), doctest::Contains("row at position 2 can never fire"), std::invalid_argument);
 }
 
 namespace rob {
 // ---- the explorer's verdicts agree with the machine ------------------------------------------
-struct Waiting; struct Expired;
+struct Waiting;
+struct Expired;
 struct nothing {};
 // One chart type; each model gives it another delay (after() keeps it in the chart object).
 inline auto timed_chart(bsc::duration delay) {
@@ -354,7 +362,8 @@ inline std::uint64_t simulated_expiry(bsc::duration delay, bsc::duration period)
 }
 
 inline auto explore(bsc::duration delay, bsc::duration period, std::size_t max_states) {
-    auto model = bsc::verify::cycle_model{timed_machine{timed_chart(delay)}, period, 1, [](nothing const&, std::size_t) {}};
+    auto model = bsc::verify::cycle_model{timed_machine{timed_chart(delay)}, period, 1,
+                                          [](nothing const&, std::size_t) {}};
     return bsc::verify::explorer{model, bsc::verify::limits{max_states, std::size_t{1} << 30}};
 }
 }  // namespace rob
@@ -368,13 +377,16 @@ TEST_CASE("the explorer's verdicts on a timeout agree with the machine for delay
         // Log-uniform over 1 .. 10^7 periods, plus a random part of a period.
         double const exponent = std::uniform_real_distribution<double>{0.0, 7.0}(random);
         auto const whole = static_cast<bsc::duration::rep>(std::pow(10.0, exponent));
-        auto const delay = whole * period + bsc::duration{static_cast<bsc::duration::rep>(random() % static_cast<std::uint64_t>(period.count()))};
+        auto const delay = whole * period + bsc::duration{static_cast<bsc::duration::rep>(
+                                                random() % static_cast<std::uint64_t>(period.count()))};
         std::uint64_t const expiry = rob::simulated_expiry(delay, period);
         REQUIRE(expiry != ~std::uint64_t{0});
         auto ex = rob::explore(delay, period, 256);
         ex.run();
-        auto const reached = bsc::verify::reachable(ex, "Expired", [](auto const& m) { return m.template is<rob::Expired>(); });
-        auto const never = bsc::verify::always(ex, "not Expired", [](auto const& m) { return !m.template is<rob::Expired>(); });
+        auto const reached = bsc::verify::reachable(ex, "Expired",
+                                                    [](auto const& m) { return m.template is<rob::Expired>(); });
+        auto const never = bsc::verify::always(ex, "not Expired",
+                                               [](auto const& m) { return !m.template is<rob::Expired>(); });
         if (ex.stats().complete) {
             ++complete;
             // Reached after exactly `expiry` cycles, and the invariant fails there.
@@ -397,7 +409,8 @@ TEST_CASE("beyond 16 bits of periods the explorer still counts exactly; beyond i
     auto ex = rob::explore(70s, 1ms, 100'000);
     ex.run();
     REQUIRE(ex.stats().complete);
-    auto const reached = bsc::verify::reachable(ex, "Expired", [](auto const& m) { return m.template is<rob::Expired>(); });
+    auto const reached = bsc::verify::reachable(ex, "Expired",
+                                                [](auto const& m) { return m.template is<rob::Expired>(); });
     REQUIRE(reached.holds());
     CHECK(reached.trace.size() == 70'001);
     CHECK(bsc::verify::always(ex, "not Expired", [](auto const& m) { return !m.template is<rob::Expired>(); }).fails());
@@ -408,8 +421,9 @@ TEST_CASE("beyond 16 bits of periods the explorer still counts exactly; beyond i
 
 TEST_CASE("an exploration stopped by its memory bound never held more than the bound") {
     std::size_t const bound = std::size_t{4} << 20;
-    auto model = bsc::verify::cycle_model{rob::timed_machine{rob::timed_chart(std::chrono::hours{24})}, 1ms, 1,
-                                          [](rob::nothing const&, std::size_t) {}};  // 86.4 million cycles: far too many
+    auto model = bsc::verify::cycle_model{
+        rob::timed_machine{rob::timed_chart(std::chrono::hours{24})}, 1ms, 1,
+        [](rob::nothing const&, std::size_t) {}};  // 86.4 million cycles: far too many
     std::size_t const before = heap_meter::live();
     heap_meter::reset_peak();
     bsc::verify::explorer limited{model, bsc::verify::limits{100'000'000, bound}};
@@ -427,7 +441,9 @@ namespace rob {
 struct boom : std::runtime_error {
     boom() : std::runtime_error("boom") {}
 };
-struct Fault; struct Outer; struct Inner;
+struct Fault;
+struct Outer;
+struct Inner;
 struct fault_ctx {
     bsc::input<bool> throw_in_action;  // where to throw: the environment's switches
     bsc::input<bool> throw_in_entry;
@@ -442,13 +458,20 @@ struct raised {};
 // Without a row on bsc::action_failed: the caller gets the exception.
 inline constexpr auto throwing_rows = bsc::rows(
     bsc::state<Idle> + bsc::on_exit / [](fault_ctx& c) { ++c.idle_exits; },
-    bsc::state<Outer> + bsc::on_entry / [](fault_ctx& c) { ++c.outer_entries; if (c.throw_in_entry.get()) throw boom{}; },
+    bsc::state<Outer> + bsc::on_entry /
+                            [](fault_ctx& c) {
+                                ++c.outer_entries;
+                                if (c.throw_in_entry.get()) throw boom{};
+                            },
     bsc::state<Inner> + bsc::on_entry / [](fault_ctx& c) { ++c.inner_entries; },
-    bsc::state<Idle> + bsc::event<go> [([](fault_ctx const& c) { if (c.throw_in_guard.get()) throw boom{}; return true; })] /
-            [](fault_ctx& c, go const&, auto& raise) {
-                raise(raised{});  // queued before the throw: still processed in this dispatch
-                if (c.throw_in_action.get()) throw boom{};
-            } = bsc::state<Outer>,
+    bsc::state<Idle> + bsc::event<go>[([](fault_ctx const& c) {
+                           if (c.throw_in_guard.get()) throw boom{};
+                           return true;
+                       })] /
+                           [](fault_ctx& c, go const&, auto& raise) {
+                               raise(raised{});  // queued before the throw: still processed in this dispatch
+                               if (c.throw_in_action.get()) throw boom{};
+                           } = bsc::state<Outer>,
     bsc::state<Outer> + bsc::event<raised> / [](fault_ctx& c) { ++c.raised_seen; },
     bsc::state<Outer> + bsc::event<poke> = bsc::state<Idle>);
 inline constexpr auto unhandled = bsc::make_chart<fault_ctx>(
@@ -458,13 +481,13 @@ inline constexpr auto handled = bsc::make_chart<fault_ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::composite<Outer>(bsc::initial<Inner>), bsc::state<Fault>),
     throwing_rows,
     bsc::state<Outer> + bsc::event<bsc::action_failed> /
-            [](fault_ctx& c, bsc::action_failed const& f) {
-                try {
-                    std::rethrow_exception(f.error);
-                } catch (std::exception const& e) {
-                    c.caught = e.what();
-                }
-            } = bsc::state<Fault>,
+                            [](fault_ctx& c, bsc::action_failed const& f) {
+                                try {
+                                    std::rethrow_exception(f.error);
+                                } catch (std::exception const& e) {
+                                    c.caught = e.what();
+                                }
+                            } = bsc::state<Fault>,
     bsc::state<Fault> + bsc::event<poke> = bsc::state<Idle>);
 struct reporting : bsc::default_policy {
     static constexpr bool rethrow_failures = false;
@@ -551,7 +574,8 @@ struct entry_thrower {
 }  // namespace rob
 
 TEST_CASE_TEMPLATE("a failure kept by a run that an exception ends goes with that run", Backend, compiled, table) {
-    bsc_test::machine_t<Backend, decltype(rob::unhandled), rob::reporting, rob::entry_thrower<rob::Outer>> m{rob::unhandled};
+    bsc_test::machine_t<Backend, decltype(rob::unhandled), rob::reporting, rob::entry_thrower<rob::Outer>> m{
+        rob::unhandled};
     m.context().throw_in_action.set(true);
     m.observer().armed = true;
     // The action's failure is kept, then the observer's exception ends the run: that is what escapes.
@@ -599,7 +623,10 @@ struct start_ctx {
 };
 inline constexpr auto failing_start = bsc::make_chart<start_ctx>(
     bsc::composite<Root>(bsc::initial<Start>, bsc::state<Idle>),
-    bsc::state<Start> + bsc::on_entry / [](start_ctx& c) { if (c.fail) throw boom{}; },
+    bsc::state<Start> + bsc::on_entry /
+                            [](start_ctx& c) {
+                                if (c.fail) throw boom{};
+                            },
     bsc::state<Start> + bsc::event<go> = bsc::state<Idle>, bsc::state<Idle> + bsc::event<go> = bsc::state<Start>);
 }  // namespace rob
 
@@ -613,7 +640,9 @@ TEST_CASE_TEMPLATE("an entry action that throws during construction: the constru
 
 namespace rob {
 struct ping {};
-struct Armed; struct Other; struct Hit;
+struct Armed;
+struct Other;
+struct Hit;
 // go raises ping on the way to Armed; an observer may end that run by throwing on entering Armed,
 // before the machine processes ping. Other takes ping too: a ping left over from that run would
 // show as Hit after the next dispatch.
@@ -651,8 +680,10 @@ TEST_CASE_TEMPLATE("events raised by a run that an exception ends never reach a 
             }
         }
     };
-    bsc_test::machine_t<Backend, decltype(rob::raising), bsc::default_policy, rob::entry_thrower<rob::Armed>> m{rob::raising};
+    bsc_test::machine_t<Backend, decltype(rob::raising), bsc::default_policy, rob::entry_thrower<rob::Armed>> m{
+        rob::raising};
     check(m);
-    bsc_test::machine_t<Backend, decltype(rob::raising), bsc::lean_policy, rob::entry_thrower<rob::Armed>> lean{rob::raising};
+    bsc_test::machine_t<Backend, decltype(rob::raising), bsc::lean_policy, rob::entry_thrower<rob::Armed>> lean{
+        rob::raising};
     check(lean);
 }

@@ -52,8 +52,7 @@ namespace beyond {
 inline constexpr auto local_chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
                          bsc::composite<Work>(bsc::initial<Step1>, bsc::state<Step1>, bsc::state<Step2>)),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>,
-    bsc::state<Step1> + bsc::event<go> = bsc::state<Step2>,
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>, bsc::state<Step1> + bsc::event<go> = bsc::state<Step2>,
     bsc::state<Work> + bsc::event<restart> / log("restart") = bsc::local(bsc::state<Step1>),
     bsc::state<Work> + bsc::event<back> / log("back") = bsc::state<Step1>,
     bsc::state<Work> + bsc::on_entry / log("enter Work"), bsc::state<Work> + bsc::on_exit / log("exit Work"),
@@ -99,11 +98,11 @@ struct Fault;
 struct Sent;
 struct Caught;
 inline constexpr auto family_chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Sent>, bsc::state<Fault>,
-                         bsc::state<Caught>),
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Sent>, bsc::state<Fault>, bsc::state<Caught>),
     bsc::state<Idle> + bsc::event<error_send>[([](ctx const&, error_send const& e) { return e.code > 0; })] /
-                           bsc::action([](ctx& c, error_send const& e) { c.log += "send " + std::to_string(e.code); }) =
-        bsc::state<Sent>,
+                           bsc::action([](ctx& c, error_send const& e) {
+                               c.log += "send " + std::to_string(e.code);
+                           }) = bsc::state<Sent>,
     bsc::state<Idle> + bsc::event<error> / log("error") = bsc::state<Fault>,
     bsc::state<Idle> + bsc::event<bsc::any_event> / log("any") = bsc::state<Caught>,
     bsc::state<Sent> + bsc::event<go> = bsc::state<Idle>, bsc::state<Fault> + bsc::event<go> = bsc::state<Idle>,
@@ -120,7 +119,7 @@ TEST_CASE_TEMPLATE("a row on an event takes the events derived from it; the firs
     CHECK(m.template is<Sent>());
     m.dispatch(go{});
     std::size_t mark = m.context().log.size();  // what the chart logs from here
-    failed.code = 0;  // the first row's guard fails: the row on the family `error` is next
+    failed.code = 0;                            // the first row's guard fails: the row on the family `error` is next
     CHECK(m.dispatch(failed) == bsc::outcome::consumed);
     CHECK(logged_since(m, mark) == "error");
     CHECK(m.template is<Fault>());
@@ -154,17 +153,17 @@ inline constexpr auto deepest_chart = bsc::make_chart<ctx>(
     bsc::state<Caught> + bsc::event<back> = bsc::state<Outer>,
     // Raised as error_send_failed, which the chart does not name: queued as error_send.
     bsc::state<Elsewhere> + bsc::event<restart> / bsc::action([](ctx&, restart const&, auto& raise) {
-        error_send_failed e;
-        e.code = 3;
-        raise(e);
-    }),
+                                error_send_failed e;
+                                e.code = 3;
+                                raise(e);
+                            }),
     bsc::state<Elsewhere> + bsc::event<error_send> / bsc::action([](ctx& c, error_send const& e) {
-        c.log += " raised " + std::to_string(e.code);
-    }) = bsc::state<Inner>);
+                                c.log += " raised " + std::to_string(e.code);
+                            }) = bsc::state<Inner>);
 }  // namespace beyond
 
-TEST_CASE_TEMPLATE("bsc::any_event has the priority of its row: a deeper state's row on the event wins", Backend, compiled,
-                   table) {
+TEST_CASE_TEMPLATE("bsc::any_event has the priority of its row: a deeper state's row on the event wins", Backend,
+                   compiled, table) {
     machine_t<Backend, decltype(deepest_chart)> m{deepest_chart, ctx{}};
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(m.context().log == "inner go");
@@ -190,8 +189,8 @@ inline constexpr auto done_chart = bsc::make_chart<ctx>(
                          bsc::state<Next>),
     bsc::state<Step1> + bsc::event<go> / log("go") = bsc::state<Finished>,
     bsc::state<Work> + bsc::event<bsc::done<Work>> / log("done Work") = bsc::state<Next>,
-    bsc::state<Next> + bsc::event<back> = bsc::state<Work>,
-    bsc::state<Step1> + bsc::on_exit / log("exit Step1"), bsc::state<Finished> + bsc::on_entry / log("enter Finished"),
+    bsc::state<Next> + bsc::event<back> = bsc::state<Work>, bsc::state<Step1> + bsc::on_exit / log("exit Step1"),
+    bsc::state<Finished> + bsc::on_entry / log("enter Finished"),
     bsc::state<Finished> + bsc::on_exit / log("exit Finished"), bsc::state<Work> + bsc::on_exit / log("exit Work"),
     bsc::state<Next> + bsc::on_entry / log("enter Next"));
 }  // namespace beyond
@@ -230,8 +229,9 @@ inline constexpr auto parallel_done_chart = bsc::make_chart<ctx>(
     bsc::state<Next> + bsc::event<go> = bsc::state<P>);
 }  // namespace beyond
 
-TEST_CASE_TEMPLATE("when every region of a parallel state is in a final state, done for the parallel state follows the region's",
-                   Backend, compiled, table) {
+TEST_CASE_TEMPLATE(
+    "when every region of a parallel state is in a final state, done for the parallel state follows the region's",
+    Backend, compiled, table) {
     machine_t<Backend, decltype(parallel_done_chart)> m{parallel_done_chart, ctx{}};
     CHECK(m.dispatch(a{}) == bsc::outcome::consumed);
     CHECK(m.context().log == "done R1");
@@ -257,8 +257,7 @@ inline constexpr auto entered_complete_chart = bsc::make_chart<ctx>(
                          bsc::parallel<Q>(bsc::composite<Q1>(bsc::initial<F1>, bsc::final_state<F1>),
                                           bsc::composite<Q2>(bsc::initial<F2>, bsc::final_state<F2>)),
                          bsc::state<Next>),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Q>,
-    bsc::state<Q1> + bsc::event<bsc::done<Q1>> / log("done Q1"),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Q>, bsc::state<Q1> + bsc::event<bsc::done<Q1>> / log("done Q1"),
     bsc::state<Q2> + bsc::event<bsc::done<Q2>> / log("done Q2"),
     bsc::state<Q> + bsc::event<bsc::done<Q>> / log("done Q") = bsc::state<Next>,
     bsc::state<Next> + bsc::event<go> = bsc::state<Idle>);
@@ -288,8 +287,9 @@ inline constexpr auto halting_chart = bsc::make_chart<ctx>(
     bsc::state<Work> + bsc::event<back> / log("back") = bsc::state<Work>);
 }  // namespace beyond
 
-TEST_CASE_TEMPLATE("reaching a final child of the root runs every active state's exit actions, innermost first, and halts",
-                   Backend, compiled, table) {
+TEST_CASE_TEMPLATE(
+    "reaching a final child of the root runs every active state's exit actions, innermost first, and halts", Backend,
+    compiled, table) {
     machine_t<Backend, decltype(halting_chart)> m{halting_chart, ctx{}};
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     // The raised `back` is dropped: the machine halted before it was processed (SCXML).
@@ -321,17 +321,17 @@ struct Deep;
 struct Mid;
 struct Other;
 inline constexpr auto initial_chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
-                         bsc::composite<Work>(bsc::initial<Deep>, bsc::state<Step1>,
-                                              bsc::composite<Mid>(bsc::initial<Other>, bsc::state<Other>, bsc::state<Deep>))),
-    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>,
-    bsc::state<Work> + bsc::event<back> = bsc::state<Idle>,
-    bsc::state<Idle> + bsc::event<restart> = bsc::state<Step1>,
-    bsc::state<Step1> + bsc::event<go> = bsc::state<Other>, bsc::state<Other> + bsc::event<go> = bsc::state<Deep>,
-    bsc::state<Deep> + bsc::event<go> = bsc::state<Step1>, bsc::state<Step1> + bsc::event<back> = bsc::state<Mid>,
-    bsc::state<Work> + bsc::on_entry / log("enter Work"), bsc::state<Work> + bsc::on_initial / log("initial Work"),
-    bsc::state<Mid> + bsc::on_entry / log("enter Mid"), bsc::state<Mid> + bsc::on_initial / log("initial Mid"),
-    bsc::state<Deep> + bsc::on_entry / log("enter Deep"), bsc::state<Step1> + bsc::on_entry / log("enter Step1"));
+    bsc::composite<Root>(
+        bsc::initial<Idle>, bsc::state<Idle>,
+        bsc::composite<Work>(bsc::initial<Deep>, bsc::state<Step1>,
+                             bsc::composite<Mid>(bsc::initial<Other>, bsc::state<Other>, bsc::state<Deep>))),
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Work>, bsc::state<Work> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<Idle> + bsc::event<restart> = bsc::state<Step1>, bsc::state<Step1> + bsc::event<go> = bsc::state<Other>,
+    bsc::state<Other> + bsc::event<go> = bsc::state<Deep>, bsc::state<Deep> + bsc::event<go> = bsc::state<Step1>,
+    bsc::state<Step1> + bsc::event<back> = bsc::state<Mid>, bsc::state<Work> + bsc::on_entry / log("enter Work"),
+    bsc::state<Work> + bsc::on_initial / log("initial Work"), bsc::state<Mid> + bsc::on_entry / log("enter Mid"),
+    bsc::state<Mid> + bsc::on_initial / log("initial Mid"), bsc::state<Deep> + bsc::on_entry / log("enter Deep"),
+    bsc::state<Step1> + bsc::on_entry / log("enter Step1"));
 }  // namespace beyond
 
 TEST_CASE_TEMPLATE("an initial transition runs its actions after its state's entry, and may target a deeper state",
@@ -366,20 +366,21 @@ struct SubB;
 inline constexpr auto history_chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(
         bsc::initial<Idle>, bsc::state<Idle>,
-        bsc::composite<Work>(bsc::initial<Step1>, bsc::shallow_history_state<Hs, Sub>, bsc::deep_history_state<Hd, SubB>,
-                             bsc::state<Step1>, bsc::composite<Sub>(bsc::initial<SubA>, bsc::state<SubA>, bsc::state<SubB>))),
+        bsc::composite<Work>(bsc::initial<Step1>, bsc::shallow_history_state<Hs, Sub>,
+                             bsc::deep_history_state<Hd, SubB>, bsc::state<Step1>,
+                             bsc::composite<Sub>(bsc::initial<SubA>, bsc::state<SubA>, bsc::state<SubB>))),
     bsc::state<Idle> + bsc::event<go> = bsc::state<Hs>, bsc::state<Idle> + bsc::event<resume> = bsc::state<Hd>,
-    bsc::state<Idle> + bsc::event<restart> = bsc::state<Work>,
-    bsc::state<SubA> + bsc::event<go> = bsc::state<SubB>, bsc::state<SubB> + bsc::event<go> = bsc::state<Step1>,
-    bsc::state<Step1> + bsc::event<go> = bsc::state<Sub>, bsc::state<Work> + bsc::event<back> = bsc::state<Idle>,
-    bsc::state<Hs> + bsc::on_initial / log("Hs default"),
+    bsc::state<Idle> + bsc::event<restart> = bsc::state<Work>, bsc::state<SubA> + bsc::event<go> = bsc::state<SubB>,
+    bsc::state<SubB> + bsc::event<go> = bsc::state<Step1>, bsc::state<Step1> + bsc::event<go> = bsc::state<Sub>,
+    bsc::state<Work> + bsc::event<back> = bsc::state<Idle>, bsc::state<Hs> + bsc::on_initial / log("Hs default"),
     bsc::state<Work> + bsc::on_entry / log("enter Work"), bsc::state<Sub> + bsc::on_entry / log("enter Sub"),
     bsc::state<SubA> + bsc::on_entry / log("enter SubA"), bsc::state<SubB> + bsc::on_entry / log("enter SubB"),
     bsc::state<Step1> + bsc::on_entry / log("enter Step1"));
 }  // namespace beyond
 
-TEST_CASE_TEMPLATE("a history state restores its composite, or takes its default transition if the composite was never active",
-                   Backend, compiled, table) {
+TEST_CASE_TEMPLATE(
+    "a history state restores its composite, or takes its default transition if the composite was never active",
+    Backend, compiled, table) {
     SUBCASE("shallow, never active: the default, with its action; then the remembered child, entered by default") {
         machine_t<Backend, decltype(history_chart)> m{history_chart, ctx{}};
         CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
@@ -442,8 +443,8 @@ TEST_CASE("the explorer covers history states and done events") {
 
     std::vector<bool> fired_done(64, false);
     using D = bsc::machine<decltype(parallel_done_chart), bsc::default_policy, bsc::verify::row_recorder>;
-    bsc::verify::explorer done_ex{bsc::verify::event_model<D, a, b, go>{
-        D{parallel_done_chart, ctx{}, bsc::verify::row_recorder{&fired_done}}}};
+    bsc::verify::explorer done_ex{
+        bsc::verify::event_model<D, a, b, go>{D{parallel_done_chart, ctx{}, bsc::verify::row_recorder{&fired_done}}}};
     auto const done_report = bsc::verify::coverage(done_ex, fired_done);
     CHECK(done_report.dead_states.empty());
     CHECK(done_report.dead_transitions.empty());
@@ -465,13 +466,10 @@ inline constexpr auto record_job = bsc::action([](ctx& c, job const& j) {
 });
 inline constexpr auto defer_chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Busy>, bsc::state<Busy2>),
-    bsc::state<Idle> + bsc::event<start> = bsc::state<Busy>,
-    bsc::state<Idle> + bsc::event<job> / record_job,
-    bsc::state<Busy> + bsc::event<job> / bsc::defer,
-    bsc::state<Busy> + bsc::event<go> = bsc::state<Busy2>,
+    bsc::state<Idle> + bsc::event<start> = bsc::state<Busy>, bsc::state<Idle> + bsc::event<job> / record_job,
+    bsc::state<Busy> + bsc::event<job> / bsc::defer, bsc::state<Busy> + bsc::event<go> = bsc::state<Busy2>,
     bsc::state<Busy2> + bsc::event<job>[([](ctx const&, job const& j) { return j.n > 1; })] / bsc::defer,
-    bsc::state<Busy2> + bsc::event<job> / record_job,
-    bsc::state<Busy> + bsc::event<finish> = bsc::state<Idle>,
+    bsc::state<Busy2> + bsc::event<job> / record_job, bsc::state<Busy> + bsc::event<finish> = bsc::state<Idle>,
     bsc::state<Busy2> + bsc::event<finish> = bsc::state<Idle>);
 }  // namespace beyond
 
@@ -536,8 +534,9 @@ TEST_CASE_TEMPLATE("an event another region takes with a transition is not defer
 
 TEST_CASE("a deferring row is drawn with / defer, and is a comment in SCXML, which has no deferral") {
     CHECK(bsc::to_mermaid(defer_chart).find("Busy : job / defer") != std::string::npos);
-    CHECK(bsc::to_scxml(defer_chart).find("<!-- job / defer: the event is deferred (UML), which SCXML cannot say -->") !=
-          std::string::npos);
+    CHECK(
+        bsc::to_scxml(defer_chart).find("<!-- job / defer: the event is deferred (UML), which SCXML cannot say -->") !=
+        std::string::npos);
 }
 
 // ---- delayed events to self ------------------------------------------------------------------
@@ -553,8 +552,7 @@ inline constexpr auto delayed_chart = bsc::make_chart<ctx>(
     bsc::state<Idle> + bsc::event<start_again> / bsc::raise_after(std::chrono::seconds{1}, tick{}) = bsc::state<Wait>,
     bsc::state<Wait> + bsc::event<tick> / log("tick") = bsc::state<Rang>,
     bsc::state<Wait> + bsc::event<finish> / bsc::cancel_delayed(1) = bsc::state<Idle>,
-    bsc::state<Wait> + bsc::event<back> = bsc::state<Idle>,
-    bsc::state<Rang> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<Wait> + bsc::event<back> = bsc::state<Idle>, bsc::state<Rang> + bsc::event<back> = bsc::state<Idle>,
     bsc::state<Idle> + bsc::event<tick> / log("late tick"));
 }  // namespace beyond
 
@@ -615,12 +613,11 @@ namespace beyond {
 // A delay near bsc::duration::max(): from a clock far from zero, due past the end of time.
 inline constexpr auto far_chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>, bsc::state<Wait>, bsc::state<Rang>),
-    bsc::state<Idle> + bsc::event<start> / bsc::raise_after(bsc::duration::max() - std::chrono::seconds{5}, tick{}, 1) =
-        bsc::state<Wait>,
+    bsc::state<Idle> + bsc::event<start> / bsc::raise_after(bsc::duration::max() - std::chrono::seconds{5}, tick{},
+                                                            1) = bsc::state<Wait>,
     bsc::state<Idle> + bsc::event<start_again> / bsc::raise_after(std::chrono::seconds{1}, tick{}) = bsc::state<Wait>,
     bsc::state<Wait> + bsc::event<tick> / log("tick") = bsc::state<Rang>,
-    bsc::state<Wait> + bsc::event<back> = bsc::state<Idle>,
-    bsc::state<Rang> + bsc::event<back> = bsc::state<Idle>,
+    bsc::state<Wait> + bsc::event<back> = bsc::state<Idle>, bsc::state<Rang> + bsc::event<back> = bsc::state<Idle>,
     bsc::state<Idle> + bsc::event<tick> / log("late tick"));
 struct one_delayed_slot : bsc::default_policy {
     static constexpr std::size_t delayed_capacity = 1;
@@ -699,11 +696,10 @@ struct QR2;
 struct QM1;
 struct QM2;
 inline constexpr auto targets_chart = bsc::make_chart<ctx>(
-    bsc::composite<Root>(
-        bsc::initial<Idle>, bsc::state<Idle>,
-        bsc::parallel<Q3>(bsc::composite<QL>(bsc::initial<QL1>, bsc::state<QL1>, bsc::state<QL2>),
-                          bsc::composite<QM>(bsc::initial<QM1>, bsc::state<QM1>, bsc::state<QM2>),
-                          bsc::composite<QR>(bsc::initial<QR1>, bsc::state<QR1>, bsc::state<QR2>))),
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Idle>,
+                         bsc::parallel<Q3>(bsc::composite<QL>(bsc::initial<QL1>, bsc::state<QL1>, bsc::state<QL2>),
+                                           bsc::composite<QM>(bsc::initial<QM1>, bsc::state<QM1>, bsc::state<QM2>),
+                                           bsc::composite<QR>(bsc::initial<QR1>, bsc::state<QR1>, bsc::state<QR2>))),
     bsc::state<Idle> + bsc::event<go> = bsc::targets(bsc::state<QL2>, bsc::state<QR2>),
     bsc::state<QL1> + bsc::event<go> = bsc::state<QL2>, bsc::state<QM1> + bsc::event<go> = bsc::state<QM2>,
     bsc::state<QR1> + bsc::event<go> = bsc::state<QR2>, bsc::state<Q3> + bsc::event<back> = bsc::state<Idle>,
@@ -739,7 +735,8 @@ inline constexpr auto initial_set_chart = bsc::make_chart<ctx>(
     bsc::state<QR2> + bsc::on_entry / log("enter QR2"));
 }  // namespace beyond
 
-TEST_CASE_TEMPLATE("an initial transition may name one state in each region (initial<A, B>)", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("an initial transition may name one state in each region (initial<A, B>)", Backend, compiled,
+                   table) {
     machine_t<Backend, decltype(initial_set_chart)> m{initial_set_chart, ctx{}};
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(m.context().log == "initial Outer3 enter QL2 enter QM1 enter QR2");
@@ -817,9 +814,11 @@ struct After;
 inline constexpr auto region_takes_done_chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(
         bsc::initial<Both>, bsc::state<After>,
-        bsc::parallel<Both>(bsc::composite<Left>(bsc::initial<LeftWork>, bsc::state<LeftWork>, bsc::final_state<LeftDone>),
-                            bsc::composite<Right>(bsc::initial<RightWork>, bsc::state<RightWork>, bsc::final_state<RightDone>))),
-    bsc::state<LeftWork> + bsc::event<go> = bsc::state<LeftDone>, bsc::state<RightWork> + bsc::event<next> = bsc::state<RightDone>,
+        bsc::parallel<Both>(
+            bsc::composite<Left>(bsc::initial<LeftWork>, bsc::state<LeftWork>, bsc::final_state<LeftDone>),
+            bsc::composite<Right>(bsc::initial<RightWork>, bsc::state<RightWork>, bsc::final_state<RightDone>))),
+    bsc::state<LeftWork> + bsc::event<go> = bsc::state<LeftDone>,
+    bsc::state<RightWork> + bsc::event<next> = bsc::state<RightDone>,
     bsc::state<Left> + bsc::event<bsc::done<Both>> / log("Left takes done.state.Both") = bsc::state<After>,
     bsc::state<After> + bsc::event<back> = bsc::state<Both>);
 }  // namespace beyond

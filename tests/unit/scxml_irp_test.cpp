@@ -52,8 +52,8 @@ inline constexpr auto chart = bsc::make_chart<vars>(
     bsc::state<S0> + bsc::event<bsc::done<S0>> = bsc::state<Fail>);
 }  // namespace irp372
 
-TEST_CASE_TEMPLATE("IRP 372: done.state.id follows the final state's onentry and precedes its onexit", Backend, compiled,
-                   table) {
+TEST_CASE_TEMPLATE("IRP 372: done.state.id follows the final state's onentry and precedes its onexit", Backend,
+                   compiled, table) {
     machine_t<Backend, decltype(irp372::chart)> m{irp372::chart, vars{}};
     expect_pass(m);
 }
@@ -70,8 +70,7 @@ inline constexpr auto chart = bsc::make_chart<vars>(
                          bsc::composite<S1>(bsc::initial<S11>, bsc::composite<S11>(bsc::initial<S111>, bsc::state<S111>,
                                                                                    bsc::final_state<S11Final>)),
                          bsc::final_state<Pass>, bsc::final_state<Fail>),
-    bsc::state<S111> = bsc::state<S11Final>,
-    bsc::state<S11> + bsc::event<bsc::done<S11>> = bsc::state<Pass>,
+    bsc::state<S111> = bsc::state<S11Final>, bsc::state<S11> + bsc::event<bsc::done<S11>> = bsc::state<Pass>,
     bsc::state<S1> + bsc::event<timeout> = bsc::state<Fail>);
 }  // namespace irp416
 
@@ -95,11 +94,11 @@ struct timeout {};
 inline constexpr auto chart = bsc::make_chart<vars>(
     bsc::composite<Root>(
         bsc::initial<S1>,
-        bsc::composite<S1>(bsc::initial<S1P1>,
-                           bsc::parallel<S1P1>(bsc::composite<S1P11>(bsc::initial<S1P11A>, bsc::state<S1P11A>,
-                                                                     bsc::final_state<S1P11Final>),
-                                               bsc::composite<S1P12>(bsc::initial<S1P12A>, bsc::state<S1P12A>,
-                                                                     bsc::final_state<S1P12Final>))),
+        bsc::composite<S1>(
+            bsc::initial<S1P1>,
+            bsc::parallel<S1P1>(
+                bsc::composite<S1P11>(bsc::initial<S1P11A>, bsc::state<S1P11A>, bsc::final_state<S1P11Final>),
+                bsc::composite<S1P12>(bsc::initial<S1P12A>, bsc::state<S1P12A>, bsc::final_state<S1P12Final>))),
         bsc::final_state<Pass>, bsc::final_state<Fail>),
     bsc::state<S1P11A> = bsc::state<S1P11Final>, bsc::state<S1P12A> = bsc::state<S1P12Final>,
     bsc::state<S1> + bsc::event<bsc::done<S1P1>> = bsc::state<Pass>,
@@ -125,12 +124,11 @@ struct P0S2;
 struct P0S21;
 struct P0S2Final;
 inline constexpr auto chart = bsc::make_chart<vars>(
-    bsc::composite<Root>(bsc::initial<P0>,
-                         bsc::parallel<P0>(bsc::composite<P0S1>(bsc::initial<P0S11>, bsc::state<P0S11>,
-                                                                bsc::final_state<P0S1Final>),
-                                           bsc::composite<P0S2>(bsc::initial<P0S21>, bsc::state<P0S21>,
-                                                                bsc::final_state<P0S2Final>)),
-                         bsc::final_state<Pass>, bsc::final_state<Fail>),
+    bsc::composite<Root>(
+        bsc::initial<P0>,
+        bsc::parallel<P0>(bsc::composite<P0S1>(bsc::initial<P0S11>, bsc::state<P0S11>, bsc::final_state<P0S1Final>),
+                          bsc::composite<P0S2>(bsc::initial<P0S21>, bsc::state<P0S21>, bsc::final_state<P0S2Final>)),
+        bsc::final_state<Pass>, bsc::final_state<Fail>),
     bsc::state<P0> + bsc::on_entry / (bsc::raise(e1{}), bsc::raise(e2{})),
     bsc::state<P0S11> + bsc::event<e1> = bsc::state<P0S1Final>,
     bsc::state<P0S21> + bsc::event<e2> = bsc::state<P0S2Final>,
@@ -141,8 +139,8 @@ inline constexpr auto chart = bsc::make_chart<vars>(
     bsc::state<P0> + bsc::event<bsc::done<P0>> = bsc::state<Fail>);
 }  // namespace irp570
 
-TEST_CASE_TEMPLATE("IRP 570: done.state of each region as it becomes final, then of the parallel state", Backend, compiled,
-                   table) {
+TEST_CASE_TEMPLATE("IRP 570: done.state of each region as it becomes final, then of the parallel state", Backend,
+                   compiled, table) {
     machine_t<Backend, decltype(irp570::chart)> m{irp570::chart, vars{}};
     expect_pass(m);
 }
@@ -162,8 +160,7 @@ inline constexpr auto chart = bsc::make_chart<vars>(
                          bsc::final_state<Pass>, bsc::final_state<Fail>),
     bsc::state<S> + bsc::on_exit / bsc::action([](vars& v) { ++v.var1; }),
     bsc::state<S1> + bsc::on_exit / bsc::action([](vars& v) { ++v.var2; }),
-    bsc::state<S1> + bsc::event<go> = bsc::state<S2>,
-    bsc::state<S> + bsc::event<again> = bsc::state<S1>,
+    bsc::state<S1> + bsc::event<go> = bsc::state<S2>, bsc::state<S> + bsc::event<again> = bsc::state<S1>,
     bsc::state<S1> + bsc::event<check>[([](vars const& v) { return v.var1 == 1 && v.var2 == 1; })] = bsc::state<Pass>,
     bsc::state<S> + bsc::event<check> = bsc::state<Fail>);
 }  // namespace irp504
@@ -189,13 +186,12 @@ inline constexpr auto chart = bsc::make_chart<vars>(
                          bsc::final_state<Pass>, bsc::final_state<Fail>),
     bsc::state<S1> + bsc::on_exit / bsc::action([](vars& v) { ++v.var1; }),
     bsc::state<S11> + bsc::on_exit / bsc::action([](vars& v) { ++v.var2; }),
-    bsc::state<S1> + bsc::on_entry / bsc::raise(foo{}),
-    bsc::state<S1> + bsc::event<foo> = bsc::local(bsc::state<S11>),
+    bsc::state<S1> + bsc::on_entry / bsc::raise(foo{}), bsc::state<S1> + bsc::event<foo> = bsc::local(bsc::state<S11>),
     bsc::state<S1> + bsc::event<bar>[([](vars const& v) { return v.var1 == 0 && v.var2 == 1; })] = bsc::state<Pass>,
     bsc::state<S1> + bsc::event<bar> = bsc::state<Fail>,
     bsc::state<S11> + bsc::on_entry / bsc::action([](vars& v, auto const& /*change*/, auto& raise) {
-        if (v.var2 == 1) raise(bar{});
-    }));
+                          if (v.var2 == 1) raise(bar{});
+                      }));
 }  // namespace irp505
 
 TEST_CASE_TEMPLATE("IRP 505: a local transition does not exit its compound source", Backend, compiled, table) {
@@ -221,9 +217,11 @@ inline constexpr auto chart = bsc::make_chart<vars>(
                          bsc::final_state<Pass>, bsc::final_state<Fail>),
     bsc::state<P> + bsc::on_exit / bsc::action([](vars& v) { ++v.var1; }),
     bsc::state<P> + bsc::on_entry / bsc::action([](vars& v, auto const& /*change*/, auto& raise) {
-        if (v.var1 == 0) raise(foo{});
-        else raise(bar{});
-    }),
+                        if (v.var1 == 0)
+                            raise(foo{});
+                        else
+                            raise(bar{});
+                    }),
     bsc::state<P> + bsc::event<foo> = bsc::local(bsc::state<PS1A>),
     bsc::state<P> + bsc::event<bar>[([](vars const& v) { return v.var1 == 1; })] = bsc::state<Pass>,
     bsc::state<P> + bsc::event<bar> = bsc::state<Fail>);
@@ -297,22 +295,20 @@ struct S011;
 struct S0111;
 struct S02;
 inline constexpr auto chart = bsc::make_chart<vars>(
-    bsc::composite<Root>(bsc::initial<S0>,
-                         bsc::composite<S0>(bsc::initial<S01>,
-                                            bsc::composite<S01>(bsc::initial<S011>,
-                                                                bsc::composite<S011>(bsc::initial<S0111>, bsc::state<S0111>)),
-                                            bsc::state<S02>),
-                         bsc::final_state<Pass>, bsc::final_state<Fail>),
-    bsc::state<S011> + bsc::on_entry / bsc::raise(event1{}),
-    bsc::state<S011> + bsc::on_initial / bsc::raise(event2{}),
+    bsc::composite<Root>(
+        bsc::initial<S0>,
+        bsc::composite<S0>(
+            bsc::initial<S01>,
+            bsc::composite<S01>(bsc::initial<S011>, bsc::composite<S011>(bsc::initial<S0111>, bsc::state<S0111>)),
+            bsc::state<S02>),
+        bsc::final_state<Pass>, bsc::final_state<Fail>),
+    bsc::state<S011> + bsc::on_entry / bsc::raise(event1{}), bsc::state<S011> + bsc::on_initial / bsc::raise(event2{}),
     bsc::state<S0111> + bsc::on_entry / bsc::action([](vars&, auto const&, auto& raise) { raise(event1{}); }),
     // event1 (onentry of S011), then event2 (its initial transition), then event1 (S0111's onentry).
-    bsc::state<S0111> + bsc::event<event1> = bsc::state<S02>,
-    bsc::state<S02> + bsc::event<event2> = bsc::state<S0>,
+    bsc::state<S0111> + bsc::event<event1> = bsc::state<S02>, bsc::state<S02> + bsc::event<event2> = bsc::state<S0>,
     bsc::state<S0> + bsc::on_entry / bsc::action([](vars& v) { ++v.var1; }),
     bsc::state<S0> + bsc::event<event1>[([](vars const& v) { return v.var1 == 2; })] = bsc::state<Pass>,
-    bsc::state<S0> + bsc::event<event1> = bsc::state<Fail>,
-    bsc::state<S0> + bsc::event<event2> = bsc::state<Fail>);
+    bsc::state<S0> + bsc::event<event1> = bsc::state<Fail>, bsc::state<S0> + bsc::event<event2> = bsc::state<Fail>);
 }  // namespace irp412
 
 TEST_CASE_TEMPLATE("IRP 412: an initial transition's content runs between its parent's and its target's onentry",
@@ -335,13 +331,14 @@ struct back {};
 inline constexpr auto chart = bsc::make_chart<vars>(
     bsc::composite<Root>(
         bsc::initial<S2>,
-        bsc::composite<S2>(bsc::initial<S2P12>,
-                           bsc::parallel<S2P>(bsc::composite<S2P1>(bsc::initial<S2P11>, bsc::state<S2P11>, bsc::state<S2P12>),
-                                              bsc::composite<S2P2>(bsc::initial<S2P21>, bsc::state<S2P21>))),
+        bsc::composite<S2>(
+            bsc::initial<S2P12>,
+            bsc::parallel<S2P>(bsc::composite<S2P1>(bsc::initial<S2P11>, bsc::state<S2P11>, bsc::state<S2P12>),
+                               bsc::composite<S2P2>(bsc::initial<S2P21>, bsc::state<S2P21>))),
         bsc::final_state<Pass>, bsc::final_state<Fail>),
-    bsc::state<S2P> [([](vars const&) { return true; })] = bsc::state<Fail>,
-    bsc::state<S2P12> [([](vars const&) { return true; })] = bsc::state<Pass>,
-    bsc::state<S2P11> = bsc::state<S2P12>, bsc::state<S2P12> + bsc::event<back> = bsc::state<S2P11>,
+    bsc::state<S2P>[([](vars const&) { return true; })] = bsc::state<Fail>,
+    bsc::state<S2P12>[([](vars const&) { return true; })] = bsc::state<Pass>, bsc::state<S2P11> = bsc::state<S2P12>,
+    bsc::state<S2P12> + bsc::event<back> = bsc::state<S2P11>,
     bsc::state<S2P21> + bsc::on_entry / bsc::action([](vars& v) { ++v.var1; }));
 }  // namespace irp413
 
@@ -376,9 +373,9 @@ inline constexpr auto chart = bsc::make_chart<vars>(
     bsc::state<S0> + bsc::event<enter_shallow> = bsc::state<S1HShallow>,
     bsc::state<S0> + bsc::event<enter_deep> = bsc::state<S1HDeep>,
     bsc::state<S0> + bsc::event<enter_121> = bsc::state<S121>,
-    bsc::state<S11>[([](vars const& v) { return v.var1 == 0; })] / bsc::action([](vars& v) { v.var1 = 1; }) = bsc::state<S0>,
-    bsc::state<S122> = bsc::state<Pass>, bsc::state<S121> = bsc::state<Fail>,
-    bsc::state<S11> = bsc::state<Fail>);
+    bsc::state<S11>[([](vars const& v) { return v.var1 == 0; })] /
+        bsc::action([](vars& v) { v.var1 = 1; }) = bsc::state<S0>,
+    bsc::state<S122> = bsc::state<Pass>, bsc::state<S121> = bsc::state<Fail>, bsc::state<S11> = bsc::state<Fail>);
 }  // namespace irp387
 
 TEST_CASE_TEMPLATE("IRP 387: a history state of a never-active composite takes its default, shallow or deep", Backend,
@@ -408,12 +405,12 @@ struct S0HDeep;
 struct S1;
 struct S2;
 inline constexpr auto chart = bsc::make_chart<vars>(
-    bsc::composite<Root>(
-        bsc::initial<S012>,
-        bsc::composite<S0>(bsc::initial<S01>, bsc::shallow_history_state<S0HShallow, S01>,
-                           bsc::deep_history_state<S0HDeep, S02>,
-                           bsc::composite<S01>(bsc::initial<S011>, bsc::state<S011>, bsc::state<S012>), bsc::state<S02>),
-        bsc::state<S1>, bsc::state<S2>, bsc::final_state<Pass>, bsc::final_state<Fail>),
+    bsc::composite<Root>(bsc::initial<S012>,
+                         bsc::composite<S0>(bsc::initial<S01>, bsc::shallow_history_state<S0HShallow, S01>,
+                                            bsc::deep_history_state<S0HDeep, S02>,
+                                            bsc::composite<S01>(bsc::initial<S011>, bsc::state<S011>, bsc::state<S012>),
+                                            bsc::state<S02>),
+                         bsc::state<S1>, bsc::state<S2>, bsc::final_state<Pass>, bsc::final_state<Fail>),
     bsc::state<S0> + bsc::on_entry / bsc::action([](vars& v) { ++v.var1; }),
     // The first visit (from S012, the deep initial), leaves for S1, which returns through the
     // shallow history: S01 again, by default S011.
@@ -452,16 +449,14 @@ inline constexpr auto chart = bsc::make_chart<vars>(
                          bsc::composite<S0>(bsc::initial<S02>, bsc::shallow_history_state<S0H, S02>, bsc::state<S02>,
                                             bsc::state<S03>, bsc::state<S04>),
                          bsc::final_state<Pass>, bsc::final_state<Fail>),
-    bsc::state<S1> + bsc::on_entry / bsc::raise(event4{}),
-    bsc::state<S1> + bsc::event<event4> = bsc::state<S0H>,
+    bsc::state<S1> + bsc::on_entry / bsc::raise(event4{}), bsc::state<S1> + bsc::event<event4> = bsc::state<S0H>,
     bsc::state<S0> + bsc::on_entry / bsc::raise(event1{}),
     bsc::state<S0H> + bsc::on_initial / bsc::action([](vars& v, auto const&, auto& raise) {
-        ++v.var1;
-        raise(event2{});
-    }),
-    bsc::state<S02> + bsc::on_entry / bsc::raise(event3{}),
-    bsc::state<S02> + bsc::event<event1> = bsc::state<S03>, bsc::state<S03> + bsc::event<event2> = bsc::state<S04>,
-    bsc::state<S04> + bsc::event<event3> = bsc::state<Pass>,
+                          ++v.var1;
+                          raise(event2{});
+                      }),
+    bsc::state<S02> + bsc::on_entry / bsc::raise(event3{}), bsc::state<S02> + bsc::event<event1> = bsc::state<S03>,
+    bsc::state<S03> + bsc::event<event2> = bsc::state<S04>, bsc::state<S04> + bsc::event<event3> = bsc::state<Pass>,
     bsc::state<S0> + bsc::event<bsc::any_event> = bsc::state<Fail>);
 }  // namespace irp579
 
@@ -482,9 +477,9 @@ struct S02;
 struct S0H;
 struct S1;
 inline constexpr auto chart = bsc::make_chart<vars>(
-    bsc::composite<Root>(bsc::initial<S1>, bsc::state<S1>,
-                         bsc::composite<S0>(bsc::initial<S01>, bsc::deep_history_state<S0H, S02>, bsc::state<S01>,
-                                            bsc::state<S02>)),
+    bsc::composite<Root>(
+        bsc::initial<S1>, bsc::state<S1>,
+        bsc::composite<S0>(bsc::initial<S01>, bsc::deep_history_state<S0H, S02>, bsc::state<S01>, bsc::state<S02>)),
     bsc::state<S1> + bsc::event<go> = bsc::state<S0H>, bsc::state<S02> + bsc::event<go> = bsc::state<S01>,
     bsc::state<S01> + bsc::event<go> = bsc::state<S0H>, bsc::state<S0> + bsc::event<out> = bsc::state<S1>);
 }  // namespace irp580
@@ -535,9 +530,9 @@ struct event2 {};
 struct S0;
 inline constexpr auto chart = bsc::make_chart<vars>(
     bsc::composite<Root>(bsc::initial<S0>, bsc::state<S0>, bsc::final_state<Pass>, bsc::final_state<Fail>),
-    bsc::state<S0> + bsc::on_entry /
-                         (bsc::raise_after(std::chrono::seconds{1}, event1{}, 1),
-                          bsc::raise_after(std::chrono::milliseconds{1500}, event2{}, 2), bsc::cancel_delayed(1)),
+    bsc::state<S0> + bsc::on_entry / (bsc::raise_after(std::chrono::seconds{1}, event1{}, 1),
+                                      bsc::raise_after(std::chrono::milliseconds{1500}, event2{}, 2),
+                                      bsc::cancel_delayed(1)),
     bsc::state<S0> + bsc::event<event2> = bsc::state<Pass>, bsc::state<S0> + bsc::event<event1> = bsc::state<Fail>);
 }  // namespace irp208
 

@@ -49,16 +49,16 @@ std::string logged_since(Machine const& m, std::size_t mark) {
 
 using namespace sem;
 
-TEST_CASE_TEMPLATE("a transition exits innermost first, runs its action, then enters outermost first", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a transition exits innermost first, runs its action, then enters outermost first", Backend,
+                   compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
-        bsc::composite<Root>(bsc::initial<A>,
-                             bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A2>)),
+        bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A2>)),
                              bsc::composite<B>(bsc::initial<B1>, bsc::composite<B1>(bsc::initial<B2>))),
         bsc::state<A2> + bsc::event<go> / log("action") = bsc::state<B>,
-        bsc::state<B> + bsc::event<back> = bsc::state<A>,
-        bsc::state<A> + bsc::on_exit / log("exit A"), bsc::state<A1> + bsc::on_exit / log("exit A1"),
-        bsc::state<A2> + bsc::on_exit / log("exit A2"), bsc::state<B> + bsc::on_entry / log("enter B"),
-        bsc::state<B1> + bsc::on_entry / log("enter B1"), bsc::state<B2> + bsc::on_entry / log("enter B2"));
+        bsc::state<B> + bsc::event<back> = bsc::state<A>, bsc::state<A> + bsc::on_exit / log("exit A"),
+        bsc::state<A1> + bsc::on_exit / log("exit A1"), bsc::state<A2> + bsc::on_exit / log("exit A2"),
+        bsc::state<B> + bsc::on_entry / log("enter B"), bsc::state<B1> + bsc::on_entry / log("enter B1"),
+        bsc::state<B2> + bsc::on_entry / log("enter B2"));
     machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK(m.active_states().joined() == "Root A A1 A2");
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
@@ -70,19 +70,19 @@ namespace sem {
 struct B3;
 }  // namespace sem
 
-TEST_CASE_TEMPLATE("states with nothing to do on entry or exit are passed over, and the others on the path run in order", Backend, compiled, table) {
+TEST_CASE_TEMPLATE(
+    "states with nothing to do on entry or exit are passed over, and the others on the path run in order", Backend,
+    compiled, table) {
     // Quiet and acting states alternate on every path, so that a state passed over in the
     // middle of a path neither stops the path nor loses its byte.
     static constexpr auto chart = bsc::make_chart<ctx>(
-        bsc::composite<Root>(bsc::initial<A>,
-                             bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A2>)),
+        bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A2>)),
                              bsc::composite<B>(bsc::initial<B1>, bsc::composite<B1>(bsc::initial<B2>), bsc::state<B3>)),
         bsc::state<A2> + bsc::event<go> / log("action") = bsc::state<B2>,
-        bsc::state<B2> + bsc::event<back> = bsc::state<A>,
-        bsc::state<B> + bsc::event<tick> = bsc::state<B3>,
-        bsc::state<B3> + bsc::event<ping> = bsc::state<B1>,
-        bsc::state<A> + bsc::on_exit / log("exit A"), bsc::state<A2> + bsc::on_exit / log("exit A2"),
-        bsc::state<B1> + bsc::on_entry / log("enter B1"), bsc::state<B3> + bsc::on_entry / log("enter B3"));
+        bsc::state<B2> + bsc::event<back> = bsc::state<A>, bsc::state<B> + bsc::event<tick> = bsc::state<B3>,
+        bsc::state<B3> + bsc::event<ping> = bsc::state<B1>, bsc::state<A> + bsc::on_exit / log("exit A"),
+        bsc::state<A2> + bsc::on_exit / log("exit A2"), bsc::state<B1> + bsc::on_entry / log("enter B1"),
+        bsc::state<B3> + bsc::on_entry / log("enter B3"));
     machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK(m.active_states().joined() == "Root A A1 A2");
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
@@ -100,22 +100,23 @@ TEST_CASE_TEMPLATE("states with nothing to do on entry or exit are passed over, 
 
     // An observer sees every state, quiet or not.
     std::string trace;
-    machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> observed{chart, ctx{}, trace_observer{&trace}};
+    machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> observed{chart, ctx{},
+                                                                                      trace_observer{&trace}};
     CHECK(trace == "+Root +A +A1 +A2");
     trace.clear();
     CHECK(observed.dispatch(go{}) == bsc::outcome::consumed);
     CHECK(trace == "-A2 -A1 -A A2>B2 +B +B1 +B2");
 }
 
-TEST_CASE_TEMPLATE("a composite's transition exits its active descendants, innermost first, whichever of them is active",
-                   Backend, compiled, table) {
+TEST_CASE_TEMPLATE(
+    "a composite's transition exits its active descendants, innermost first, whichever of them is active", Backend,
+    compiled, table) {
     // The two charts differ by one exit action two levels below the source: without it, the
     // compiled back end does not look below the source at all (docs/design.md, "Dispatch").
-    static constexpr auto common = bsc::rows(bsc::state<A2> + bsc::event<tick> = bsc::state<B3>,
-                                             bsc::state<B3> + bsc::event<tick> = bsc::state<A2>,
-                                             bsc::state<A> + bsc::event<go> / log("go") = bsc::state<B>,
-                                             bsc::state<B> + bsc::event<back> = bsc::state<A>,
-                                             bsc::state<A> + bsc::on_exit / log("exit A"));
+    static constexpr auto common = bsc::rows(
+        bsc::state<A2> + bsc::event<tick> = bsc::state<B3>, bsc::state<B3> + bsc::event<tick> = bsc::state<A2>,
+        bsc::state<A> + bsc::event<go> / log("go") = bsc::state<B>, bsc::state<B> + bsc::event<back> = bsc::state<A>,
+        bsc::state<A> + bsc::on_exit / log("exit A"));
     static constexpr auto tree = bsc::composite<Root>(
         bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::composite<A1>(bsc::initial<A2>, bsc::state<B3>)),
         bsc::state<B>);
@@ -148,11 +149,12 @@ struct C2;
 struct D;
 }  // namespace sem
 
-TEST_CASE_TEMPLATE("the deepest source wins; among equals, the first enabled in declaration order", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("the deepest source wins; among equals, the first enabled in declaration order", Backend, compiled,
+                   table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>), bsc::state<B>,
                              bsc::state<C>),
-        bsc::state<A> + bsc::event<go> = bsc::state<B>,                                   // ancestor
+        bsc::state<A> + bsc::event<go> = bsc::state<B>,  // ancestor
         bsc::state<A1> + bsc::event<go>[([](ctx const& c) { return c.value == 1; })] = bsc::state<C>,
         bsc::state<A1> + bsc::event<go>[([](ctx const& c) { return c.value >= 1; })] = bsc::state<A2>,
         bsc::state<B> + bsc::event<back> = bsc::state<A>, bsc::state<C> + bsc::event<back> = bsc::state<A>,
@@ -189,14 +191,15 @@ TEST_CASE_TEMPLATE("an event that enables no transition is ignored and changes n
     CHECK(m.template is<B>());
 }
 
-TEST_CASE_TEMPLATE("the transition domain: siblings keep their parent, self and ancestor/descendant targets re-enter", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("the transition domain: siblings keep their parent, self and ancestor/descendant targets re-enter",
+                   Backend, compiled, table) {
     std::string trace;
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>), bsc::state<B>),
-        bsc::state<A1> + bsc::event<go> = bsc::state<A2>,    // siblings: A stays
-        bsc::state<A2> + bsc::event<go> = bsc::state<A2>,    // external self-transition
-        bsc::state<A2> + bsc::event<back> = bsc::state<A>,   // to an ancestor: A re-entered
-        bsc::state<A> + bsc::event<tick> = bsc::state<A2>,   // to a descendant: A re-entered
+        bsc::state<A1> + bsc::event<go> = bsc::state<A2>,   // siblings: A stays
+        bsc::state<A2> + bsc::event<go> = bsc::state<A2>,   // external self-transition
+        bsc::state<A2> + bsc::event<back> = bsc::state<A>,  // to an ancestor: A re-entered
+        bsc::state<A> + bsc::event<tick> = bsc::state<A2>,  // to a descendant: A re-entered
         bsc::state<A> + bsc::event<ping> = bsc::state<B>, bsc::state<B> + bsc::event<ping> = bsc::state<A>);
     machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
     trace.clear();
@@ -213,12 +216,13 @@ TEST_CASE_TEMPLATE("the transition domain: siblings keep their parent, self and 
     CHECK(trace == "-A1 -A A>A2 +A +A2");
 }
 
-TEST_CASE_TEMPLATE("an internal transition (no target) runs its action and exits and enters nothing", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("an internal transition (no target) runs its action and exits and enters nothing", Backend, compiled,
+                   table) {
     std::string trace;
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::composite<A>(bsc::initial<A1>, bsc::state<A2>)),
-        bsc::state<A> + bsc::event<go> / [](ctx& c) { ++c.value; },
-        bsc::state<A1> + bsc::event<back> = bsc::state<A2>, bsc::state<A2> + bsc::event<back> = bsc::state<A1>);
+        bsc::state<A> + bsc::event<go> / [](ctx& c) { ++c.value; }, bsc::state<A1> + bsc::event<back> = bsc::state<A2>,
+        bsc::state<A2> + bsc::event<back> = bsc::state<A1>);
     machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
     trace.clear();
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
@@ -227,12 +231,12 @@ TEST_CASE_TEMPLATE("an internal transition (no target) runs its action and exits
     CHECK(m.active_states().joined() == "Root A A1");
 }
 
-TEST_CASE_TEMPLATE("shallow history restores the last active child; its own children take their defaults", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("shallow history restores the last active child; its own children take their defaults", Backend,
+                   compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>,
                              bsc::composite<A>(bsc::shallow_history, bsc::initial<A1>,
-                                               bsc::composite<A1>(bsc::initial<C1>, bsc::state<C2>),
-                                               bsc::state<A2>),
+                                               bsc::composite<A1>(bsc::initial<C1>, bsc::state<C2>), bsc::state<A2>),
                              bsc::state<B>),
         bsc::state<C1> + bsc::event<tick> = bsc::state<C2>, bsc::state<C2> + bsc::event<tick> = bsc::state<C1>,
         bsc::state<A1> + bsc::event<ping> = bsc::state<A2>, bsc::state<A2> + bsc::event<ping> = bsc::state<A1>,
@@ -243,7 +247,7 @@ TEST_CASE_TEMPLATE("shallow history restores the last active child; its own chil
     m.dispatch(go{});
     m.dispatch(back{});
     CHECK(m.active_states().joined() == "Root A A1 C1");  // A1 remembered, C default
-    m.dispatch(ping{});                                    // A2
+    m.dispatch(ping{});                                   // A2
     m.dispatch(go{});
     m.dispatch(back{});
     CHECK(m.active_states().joined() == "Root A A2");
@@ -258,8 +262,7 @@ TEST_CASE_TEMPLATE("deep history restores the whole last active sub-configuratio
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>,
                              bsc::composite<A>(bsc::deep_history, bsc::initial<A1>,
-                                               bsc::composite<A1>(bsc::initial<C1>, bsc::state<C2>),
-                                               bsc::state<A2>),
+                                               bsc::composite<A1>(bsc::initial<C1>, bsc::state<C2>), bsc::state<A2>),
                              bsc::state<B>),
         bsc::state<C1> + bsc::event<tick> = bsc::state<C2>, bsc::state<C2> + bsc::event<tick> = bsc::state<C1>,
         bsc::state<A1> + bsc::event<ping> = bsc::state<A2>, bsc::state<A2> + bsc::event<ping> = bsc::state<A1>,
@@ -286,7 +289,8 @@ struct e1 {};
 struct e2 {};
 }  // namespace sem
 
-TEST_CASE_TEMPLATE("a parallel state: entered region by region, events broadcast to every region", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a parallel state: entered region by region, events broadcast to every region", Backend, compiled,
+                   table) {
     std::string trace;
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<P>,
@@ -326,7 +330,7 @@ TEST_CASE_TEMPLATE("a parallel state: entered region by region, events broadcast
         CHECK(m.context().log == "x2");
         m.dispatch(go{});
         std::size_t const mark = m.context().log.size();  // what the chart logs from here
-        m.dispatch(pong{});  // X2 -> Out leaves P; Y2 -> Y1 conflicts with it: dropped
+        m.dispatch(pong{});                               // X2 -> Out leaves P; Y2 -> Y1 conflicts with it: dropped
         CHECK(m.active_states().joined() == "Root Out");
         CHECK(logged_since(m, mark) == "x2");
     }
@@ -339,13 +343,14 @@ TEST_CASE_TEMPLATE("a parallel state: entered region by region, events broadcast
     SUBCASE("internal transitions have empty exit sets and never conflict") {
         m.dispatch(ping{});
         std::size_t const mark = m.context().log.size();  // what the chart logs from here
-        m.dispatch(e2{});  // X1 -> X2 and Y2's internal transition both fire
+        m.dispatch(e2{});                                 // X1 -> X2 and Y2's internal transition both fire
         CHECK(logged_since(m, mark) == "y2");
         CHECK(m.active_states().joined() == "Root P R1 X2 R2 Y2");
     }
 }
 
-TEST_CASE_TEMPLATE("guards compose with !, && and ||; actions run in sequence; event data reaches both", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("guards compose with !, && and ||; actions run in sequence; event data reaches both", Backend,
+                   compiled, table) {
     struct number {
         int n;
     };
@@ -395,12 +400,13 @@ namespace sem {
 inline constexpr auto common_rules = bsc::rows(bsc::state<A> + bsc::event<go> = bsc::state<B>,
                                                bsc::rows(bsc::state<B> + bsc::event<back> = bsc::state<A>));
 inline constexpr auto base = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), common_rules);
-inline constexpr auto extended = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
-                                                      common_rules,
-                                                      bsc::state<B> + bsc::event<go> / [](ctx& c) { ++c.value; });
+inline constexpr auto extended = bsc::make_chart<ctx>(
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), common_rules,
+    bsc::state<B> + bsc::event<go> / [](ctx& c) { ++c.value; });
 }  // namespace sem
 
-TEST_CASE_TEMPLATE("groups of rows (bsc::rows) are flattened into the chart, so rules can be shared", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("groups of rows (bsc::rows) are flattened into the chart, so rules can be shared", Backend, compiled,
+                   table) {
     machine_t<Backend, decltype(sem::base)> b{sem::base, ctx{}};
     machine_t<Backend, decltype(sem::extended)> e{sem::extended, ctx{}};
     b.dispatch(go{});
@@ -422,11 +428,11 @@ TEST_CASE_TEMPLATE("rows keep their declaration order through groups and nested 
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::rows(bsc::state<A> + bsc::event<number>[([](ctx const&, number const& e) { return e.n >= 3; })] /
-                      [](ctx& c) { c.value = c.value * 10 + 3; }),
+                                      [](ctx& c) { c.value = c.value * 10 + 3; }),
         bsc::state<A> + bsc::event<number>[([](ctx const&, number const& e) { return e.n >= 2; })] /
-            [](ctx& c) { c.value = c.value * 10 + 2; },
+                            [](ctx& c) { c.value = c.value * 10 + 2; },
         bsc::rows(bsc::rows(bsc::state<A> + bsc::event<number>[([](ctx const&, number const& e) { return e.n >= 1; })] /
-                                [](ctx& c) { c.value = c.value * 10 + 1; }),
+                                                [](ctx& c) { c.value = c.value * 10 + 1; }),
                   bsc::state<A> + bsc::event<back> = bsc::state<B>),
         bsc::state<B> + bsc::event<back> = bsc::state<A>);
     machine_t<Backend, decltype(chart)> m{chart, ctx{}};
@@ -436,7 +442,8 @@ TEST_CASE_TEMPLATE("rows keep their declaration order through groups and nested 
     CHECK(m.template is<B>());
 }
 
-TEST_CASE_TEMPLATE("eventless transitions run after each microstep until none is enabled, and at construction", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("eventless transitions run after each microstep until none is enabled, and at construction", Backend,
+                   compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>, bsc::state<D>),
         bsc::state<A>[([](ctx const& c) { return c.value > 0 || c.ready.get(); })] / log("A>B") = bsc::state<B>,
@@ -462,7 +469,8 @@ TEST_CASE_TEMPLATE("eventless transitions run after each microstep until none is
     }
 }
 
-TEST_CASE_TEMPLATE("an eventless transition is also evaluated when the dispatched event fired nothing", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("an eventless transition is also evaluated when the dispatched event fired nothing", Backend,
+                   compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A>[([](ctx const& c) { return c.ready.get(); })] = bsc::state<B>,
@@ -473,7 +481,8 @@ TEST_CASE_TEMPLATE("an eventless transition is also evaluated when the dispatche
     CHECK(m.template is<B>());
 }
 
-TEST_CASE_TEMPLATE("a guarded eventless cycle that stays enabled is stopped and reported as a livelock", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a guarded eventless cycle that stays enabled is stopped and reported as a livelock", Backend,
+                   compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A>[([](ctx const& c) { return c.flag; })] / [](ctx& c) { ++c.value; } = bsc::state<B>,
@@ -486,17 +495,18 @@ TEST_CASE_TEMPLATE("a guarded eventless cycle that stays enabled is stopped and 
     CHECK(m.last_outcome() == bsc::outcome::livelock);
 }
 
-TEST_CASE_TEMPLATE("raised events are queued and processed in order after the current step, before dispatch returns", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("raised events are queued and processed in order after the current step, before dispatch returns",
+                   Backend, compiled, table) {
     std::string trace;
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<C>),
         bsc::state<A> + bsc::event<go> / (bsc::raise(ping{}), bsc::raise(pong{}), log("go")) = bsc::state<B>,
-        bsc::state<B> + bsc::on_entry / log("enter B"),
-        bsc::state<B> + bsc::event<ping> / log("ping") = bsc::state<C>,
-        bsc::state<C> + bsc::event<pong> / [](ctx& c, pong const&, auto& raise) {
-            c.log += " pong";
-            raise(back{});
-        },
+        bsc::state<B> + bsc::on_entry / log("enter B"), bsc::state<B> + bsc::event<ping> / log("ping") = bsc::state<C>,
+        bsc::state<C> + bsc::event<pong> /
+                            [](ctx& c, pong const&, auto& raise) {
+                                c.log += " pong";
+                                raise(back{});
+                            },
         bsc::state<C> + bsc::event<back> / log("back") = bsc::state<A>);
     machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
@@ -511,7 +521,8 @@ struct tiny_queue : bsc::default_policy {
 };
 }  // namespace sem
 
-TEST_CASE_TEMPLATE("queue overflow is reported, the extra event is dropped and the rest is processed", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("queue overflow is reported, the extra event is dropped and the rest is processed", Backend,
+                   compiled, table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A> + bsc::event<go> / (bsc::raise(ping{}), bsc::raise(ping{}), bsc::raise(ping{})),
@@ -525,7 +536,8 @@ TEST_CASE_TEMPLATE("queue overflow is reported, the extra event is dropped and t
     CHECK(m.dispatch(back{}) == bsc::outcome::consumed);  // the overflow is reported once, not forever
 }
 
-TEST_CASE_TEMPLATE("events that keep raising each other are stopped and reported as a livelock", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("events that keep raising each other are stopped and reported as a livelock", Backend, compiled,
+                   table) {
     static constexpr auto chart = bsc::make_chart<ctx>(
         bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
         bsc::state<A> + bsc::event<ping> / (bsc::raise(pong{}), bsc::action([](ctx& c) { ++c.value; })),
@@ -538,9 +550,9 @@ TEST_CASE_TEMPLATE("events that keep raising each other are stopped and reported
 }
 
 TEST_CASE_TEMPLATE("a final child of the root halts the machine", Backend, compiled, table) {
-    static constexpr auto chart = bsc::make_chart<ctx>(
-        bsc::composite<Root>(bsc::initial<A>, bsc::final_state<B>),
-        bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<A> + bsc::event<back> / log("back"));
+    static constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<A>, bsc::final_state<B>),
+                                                       bsc::state<A> + bsc::event<go> = bsc::state<B>,
+                                                       bsc::state<A> + bsc::event<back> / log("back"));
     machine_t<Backend, decltype(chart)> m{chart, ctx{}};
     CHECK_FALSE(m.halted());
     CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
@@ -549,11 +561,12 @@ TEST_CASE_TEMPLATE("a final child of the root halts the machine", Backend, compi
     CHECK(m.context().log.empty());
 }
 
-TEST_CASE_TEMPLATE("a transition from the root to a descendant exits and re-enters the root", Backend, compiled, table) {
+TEST_CASE_TEMPLATE("a transition from the root to a descendant exits and re-enters the root", Backend, compiled,
+                   table) {
     std::string trace;
-    static constexpr auto chart = bsc::make_chart<ctx>(
-        bsc::composite<Root>(bsc::initial<A>, bsc::state<B>), bsc::state<Root> + bsc::event<go> = bsc::state<B>,
-        bsc::state<B> + bsc::event<back> = bsc::state<A>);
+    static constexpr auto chart = bsc::make_chart<ctx>(bsc::composite<Root>(bsc::initial<A>, bsc::state<B>),
+                                                       bsc::state<Root> + bsc::event<go> = bsc::state<B>,
+                                                       bsc::state<B> + bsc::event<back> = bsc::state<A>);
     machine_t<Backend, decltype(chart), bsc::default_policy, trace_observer> m{chart, ctx{}, trace_observer{&trace}};
     trace.clear();
     m.dispatch(go{});

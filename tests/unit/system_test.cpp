@@ -40,8 +40,8 @@ inline constexpr auto plant = bsc::make_chart<plant_io>(
     bsc::state<Still>[([](plant_io const& p) { return p.motor.get(); })] = bsc::state<Moving>,
     bsc::state<Moving>[([](plant_io const& p) { return !p.motor.get(); })] = bsc::state<Still>,
     bsc::state<Moving> + bsc::after(300ms) / [](plant_io& p) { p.arrived.set(true); } = bsc::state<At>,
-    bsc::state<At>[([](plant_io const& p) { return p.reset.get(); })] / [](plant_io& p) { p.arrived.set(false); } =
-        bsc::state<Still>);
+    bsc::state<At>[([](plant_io const& p) { return p.reset.get(); })] /
+        [](plant_io& p) { p.arrived.set(false); } = bsc::state<Still>);
 
 template <class ControlBackend, class BeltBackend>
 struct actors {
@@ -107,7 +107,9 @@ TEST_CASE_TEMPLATE("a closed-loop system is explored like a single machine", Bac
     auto describe = [](cell const& s) {
         return s.actors.control.active_states().joined() + " | " + s.actors.belt.active_states().joined();
     };
-    auto label = [](std::uint16_t c) { return "request=" + std::to_string(c & 1) + " reset=" + std::to_string(c >> 1); };
+    auto label = [](std::uint16_t c) {
+        return "request=" + std::to_string(c & 1) + " reset=" + std::to_string(c >> 1);
+    };
     bsc::verify::system_model model{cell{}, 100ms, 4, step, describe, label};
     bsc::verify::explorer ex{model};
     auto const& st = ex.run();
@@ -121,7 +123,8 @@ TEST_CASE_TEMPLATE("a closed-loop system is explored like a single machine", Bac
                  s.actors.control.template is<sys::Idle>());
     });
     CHECK(safe.holds());
-    auto const witness = bsc::verify::reachable(ex, "At", [](cell const& s) { return s.actors.belt.template is<sys::At>(); });
+    auto const witness = bsc::verify::reachable(ex, "At",
+                                                [](cell const& s) { return s.actors.belt.template is<sys::At>(); });
     REQUIRE(witness.holds());
     CHECK(witness.trace.back().configuration == "Root Running | Root At");
 }
@@ -171,9 +174,9 @@ struct counter_io {
 inline constexpr auto counter_chart = bsc::make_chart<counter_io>(
     bsc::composite<Root>(bsc::initial<Even>, bsc::state<Odd>),
     bsc::state<Even>[([](counter_io const& c) { return c.enable.get(); })] /
-            [](counter_io& c) { c.count.set(c.count.pending() + 1); } = bsc::state<Odd>,
+        [](counter_io& c) { c.count.set(c.count.pending() + 1); } = bsc::state<Odd>,
     bsc::state<Odd>[([](counter_io const& c) { return c.enable.get(); })] /
-            [](counter_io& c) { c.count.set(c.count.pending() + 1); } = bsc::state<Even>);
+        [](counter_io& c) { c.count.set(c.count.pending() + 1); } = bsc::state<Even>);
 
 struct display_io {
     bsc::input<int> raw;
@@ -183,13 +186,13 @@ struct display_io {
 };
 inline constexpr auto display_chart = bsc::make_chart<display_io>(
     bsc::composite<Root>(bsc::initial<Dark>, bsc::state<Lit>),
-    bsc::state<Dark>[([](display_io const& d) { return d.odd.get(); })] / [](display_io& d) { d.lamp.set(true); } =
-        bsc::state<Lit>,
-    bsc::state<Lit>[([](display_io const& d) { return !d.odd.get(); })] / [](display_io& d) { d.lamp.set(false); } =
-        bsc::state<Dark>);
+    bsc::state<Dark>[([](display_io const& d) { return d.odd.get(); })] /
+        [](display_io& d) { d.lamp.set(true); } = bsc::state<Lit>,
+    bsc::state<Lit>[([](display_io const& d) { return !d.odd.get(); })] /
+        [](display_io& d) { d.lamp.set(false); } = bsc::state<Dark>);
 
 inline constexpr auto is_odd = [](int n) { return n % 2 != 0; };  // a captureless lambda
-constexpr double to_tenths(int n) { return n / 10.0; }              // a function
+constexpr double to_tenths(int n) { return n / 10.0; }            // a function
 
 template <class CounterBackend, class DisplayBackend>
 struct counting_actors {
@@ -199,8 +202,7 @@ struct counting_actors {
 template <class CounterBackend, class DisplayBackend = other_backend<CounterBackend>,
           class Actors = counting_actors<CounterBackend, DisplayBackend>>
 using counting = bsc::system<
-    Actors, bsc::order<&Actors::counter, &Actors::display>,
-    bsc::from_outside<&Actors::counter, &counter_io::enable>,
+    Actors, bsc::order<&Actors::counter, &Actors::display>, bsc::from_outside<&Actors::counter, &counter_io::enable>,
     bsc::link<&Actors::counter, &counter_io::count, &Actors::display, &display_io::raw>,
     bsc::link<&Actors::counter, &counter_io::count, &Actors::display, &display_io::tenths, bsc::convert<&to_tenths>>,
     bsc::link<&Actors::counter, &counter_io::count, &Actors::display, &display_io::odd, bsc::lossless,

@@ -10,7 +10,7 @@
 #include <chrono>
 #include <string>
 
-#include <bsc/table/engine.hpp>
+#include <bsc/table/machine.hpp>
 
 #include "trace.hpp"
 
@@ -77,10 +77,8 @@ inline constexpr auto chart = [] {
         state<On> + on_entry / show_entry<On>, state<On> + on_exit / show_exit<On>,
         state<Auto> + on_entry / show_entry<Auto>, state<MEM> + on_exit / show_exit<MEM>,
         // Figure 13
-        state<Off> + event<on_p> = state<On>,
-        state<Estop> + event<reset_p> / set_error0 = state<Estop>,
-        state<Estop> + event<off_p>[cond] = state<Off>,
-        state<On> + event<off_p> = state<Off>,
+        state<Off> + event<on_p> = state<On>, state<Estop> + event<reset_p> / set_error0 = state<Estop>,
+        state<Estop> + event<off_p>[cond] = state<Off>, state<On> + event<off_p> = state<Off>,
         state<On> + event<estop_p> / set_error1 = state<Estop>,
         // mode changes
         state<MEM> + event<mdi_p> = state<MDI>, state<MDI> + event<mem_p> = state<MEM>,
@@ -111,11 +109,13 @@ TEST_CASE("table: the topology table of the MCS holds the rows of Figure 12") {
     static_assert(st[0].status.kind == state_kind::top && st[0].first_child == id<MCS>);
     // { MCS, Off, 0, 0, _noHist, Show, Show }
     static_assert(id<MCS> == 1 && st[1].state == 1);
-    static_assert(st[id<MCS>].first_child == id<Off> && st[id<MCS>].next_sibling == no_state && st[id<MCS>].parent == 0);
+    static_assert(st[id<MCS>].first_child == id<Off> && st[id<MCS>].next_sibling == no_state &&
+                  st[id<MCS>].parent == 0);
     static_assert(st[id<MCS>].status == bsc::table::state_status{state_kind::composite, history_kind::none});
     CHECK((set(st[id<MCS>].entry) && set(st[id<MCS>].exit)));
     // { Off, 0, Estop, MCS, _noHist, Show, Show }, { Estop, 0, On, MCS, _noHist, Show, Show }
-    static_assert(st[id<Off>].first_child == no_state && st[id<Off>].next_sibling == id<Estop> && st[id<Off>].parent == id<MCS>);
+    static_assert(st[id<Off>].first_child == no_state && st[id<Off>].next_sibling == id<Estop> &&
+                  st[id<Off>].parent == id<MCS>);
     static_assert(st[id<Off>].status.kind == state_kind::basic);
     static_assert(st[id<Estop>].next_sibling == id<On> && st[id<On>].next_sibling == no_state);
     // { On, Auto, 0, MCS, _Hist, Show, Show }, { Auto, MEM, Manual, On, _noHist, Show, 0 }

@@ -52,14 +52,15 @@ struct ctx {
 inline constexpr auto chart = bsc::make_chart<ctx>(
     bsc::composite<Root>(bsc::initial<Idle>, bsc::composite<Work>(bsc::initial<Feed>, bsc::state<Cut>),
                          bsc::state<Mode<1, 2>>),
-    bsc::state<Idle>[([](ctx const& c) { return c.start.get(); })] / [](ctx& c) {
-        c.count.set(c.count.pending() + 2);
-        c.light.set(lamp::red);
-        c.s.rpm = 1.5;
-        c.s.limits[1] = true;
-        c.dwell.start();
-        c.note = "started";
-    } = bsc::state<Work>,
+    bsc::state<Idle>[([](ctx const& c) { return c.start.get(); })] /
+        [](ctx& c) {
+            c.count.set(c.count.pending() + 2);
+            c.light.set(lamp::red);
+            c.s.rpm = 1.5;
+            c.s.limits[1] = true;
+            c.dwell.start();
+            c.note = "started";
+        } = bsc::state<Work>,
     bsc::state<Feed>[([](ctx const& c) { return c.dwell.tm(); })] = bsc::state<Cut>,
     bsc::state<Work> + bsc::event<stop> / [](ctx& c) { c.dwell.reset(); } = bsc::state<Mode<1, 2>>,
     bsc::state<Mode<1, 2>> + bsc::event<go> = bsc::state<Idle>);

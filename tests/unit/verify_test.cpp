@@ -42,8 +42,8 @@ TEST_CASE("the explorer visits each reachable state once, breadth first") {
     bsc::verify::explorer ex{ver::model()};
     auto const& st = ex.run();
     CHECK(st.complete);
-    CHECK(st.states == 7);       // (A,0) (B,1) (A,1) (B,2) (A,2) (C,2) (B,0)
-    CHECK(st.transitions == 14);  // two events offered in each state
+    CHECK(st.states == 7);                                 // (A,0) (B,1) (A,1) (B,2) (A,2) (C,2) (B,0)
+    CHECK(st.transitions == 14);                           // two events offered in each state
     CHECK(st.key_bytes == (2 + 8 * sizeof(int) + 7) / 8);  // the root byte in 2 bits (3 children), n
     CHECK(st.depth == 5);
 }
@@ -78,8 +78,9 @@ TEST_CASE("deadlock freedom, reinitiability and leads-to") {
     CHECK(v.fails());
     CHECK(v.trace.back().configuration == "Root B");
     CHECK(v.detail.find("loops") != std::string::npos);
-    CHECK(bsc::verify::leads_to(ex, "C --> A", ver::in_c, [](auto const& m) { return !m.template is<ver::C>(); })
-              .fails());  // C can ignore `go` forever
+    CHECK(bsc::verify::leads_to(ex, "C --> A", ver::in_c, [](auto const& m) {
+              return !m.template is<ver::C>();
+          }).fails());  // C can ignore `go` forever
 }
 
 namespace ver {
@@ -96,9 +97,8 @@ inline constexpr auto trap = bsc::make_chart<ctx>(
 }  // namespace ver
 
 TEST_CASE("a state with no way out is a deadlock unless it is final; reinitiability fails there") {
-    bsc::verify::explorer ex{
-        bsc::verify::event_model<bsc::machine<decltype(ver::trap)>, ver::go, ver::back, ver::halt>{
-            bsc::machine{ver::trap, ver::ctx{}}}};
+    bsc::verify::explorer ex{bsc::verify::event_model<bsc::machine<decltype(ver::trap)>, ver::go, ver::back, ver::halt>{
+        bsc::machine{ver::trap, ver::ctx{}}}};
     auto const v = bsc::verify::deadlock_free(ex, [](auto const& m) { return m.halted(); });
     REQUIRE(v.fails());
     CHECK(v.trace.back().configuration == "Root D");
@@ -125,14 +125,16 @@ struct blink_data {
 // A lamp that blinks with a BSC timer while enabled, and a timeout that switches it off.
 inline constexpr auto blink = bsc::make_chart<blink_data>(
     bsc::composite<Root>(bsc::initial<Off>, bsc::state<On>),
-    bsc::state<Off>[([](blink_data const& d) { return d.enable.get(); })] / [](blink_data& d) {
-        d.lamp.set(true);
-        d.t.start();
-    } = bsc::state<On>,
-    bsc::state<On>[([](blink_data const& d) { return d.t.tm(); })] / [](blink_data& d) {
-        d.lamp.set(false);
-        d.t.reset();
-    } = bsc::state<Off>,
+    bsc::state<Off>[([](blink_data const& d) { return d.enable.get(); })] /
+        [](blink_data& d) {
+            d.lamp.set(true);
+            d.t.start();
+        } = bsc::state<On>,
+    bsc::state<On>[([](blink_data const& d) { return d.t.tm(); })] /
+        [](blink_data& d) {
+            d.lamp.set(false);
+            d.t.reset();
+        } = bsc::state<Off>,
     bsc::state<On> + bsc::after(1s) = bsc::state<Off>);
 }  // namespace ver
 
@@ -146,12 +148,12 @@ TEST_CASE("cycle models: absolute time is abstracted, so a periodic behaviour ha
     CHECK(bsc::verify::deadlock_free(ex).holds());
     CHECK(bsc::verify::reinitiable(ex).holds());
     // The lamp is never on for more than the timer allows: On lasts 1 + 3 cycles at most.
-    auto const on_long = bsc::verify::reachable(ex, "t.tm while On", [](auto const& m) {
-        return m.template is<ver::On>() && m.context().t.tm();
-    });
+    auto const on_long = bsc::verify::reachable(
+        ex, "t.tm while On", [](auto const& m) { return m.template is<ver::On>() && m.context().t.tm(); });
     CHECK_FALSE(on_long.holds());  // the guard fires in the very cycle tm turns true
-    CHECK(bsc::verify::leads_to(ex, "On --> Off", [](auto const& m) { return m.template is<ver::On>(); },
-                                [](auto const& m) { return m.template is<ver::Off>(); })
+    CHECK(bsc::verify::leads_to(
+              ex, "On --> Off", [](auto const& m) { return m.template is<ver::On>(); },
+              [](auto const& m) { return m.template is<ver::Off>(); })
               .holds());
 }
 
@@ -167,8 +169,7 @@ inline constexpr auto enabled = [](two_data const& d) { return d.enable.get(); }
 // came due, long after the longest delay.
 inline constexpr auto two_timeouts = bsc::make_chart<two_data>(
     bsc::composite<Root>(bsc::initial<Ticking>, bsc::state<Halted>),
-    bsc::state<Ticking> + bsc::after(1s)[enabled] / [] {},
-    bsc::state<Ticking> + bsc::after(2s)[enabled] / [] {},
+    bsc::state<Ticking> + bsc::after(1s)[enabled] / [] {}, bsc::state<Ticking> + bsc::after(2s)[enabled] / [] {},
     bsc::state<Ticking> + bsc::event<stop> = bsc::state<Halted>,
     bsc::state<Halted> + bsc::event<stop> = bsc::state<Ticking>);
 struct rows_fired {
@@ -261,9 +262,8 @@ TEST_CASE("leads_to_within fails on a cycle or a deadlock that avoids q, and q i
 
 TEST_CASE("a trace report folds runs of repeated steps and shows only the inputs that changed") {
     bsc::verify::verdict v{"A[] p", bsc::verify::verdict::status::fails, {}, {}};
-    v.trace = {{"(initial)", "Root Idle", 0ms},          {"a=0 b=1", "Root Idle", 10ms},
-               {"a=0 b=1", "Root Idle", 20ms},           {"a=0 b=1", "Root Idle", 30ms},
-               {"a=1 b=1", "Root Busy", 40ms},           {"a=1 b=1", "Root Busy Sub", 50ms}};
+    v.trace = {{"(initial)", "Root Idle", 0ms}, {"a=0 b=1", "Root Idle", 10ms}, {"a=0 b=1", "Root Idle", 20ms},
+               {"a=0 b=1", "Root Idle", 30ms},  {"a=1 b=1", "Root Busy", 40ms}, {"a=1 b=1", "Root Busy Sub", 50ms}};
     CHECK(v.to_string() ==
           "A[] p: FAILS\n"
           "  0. [0s] (initial) -> Root Idle\n"
@@ -300,8 +300,8 @@ namespace ver {
 struct E;
 // A row whose guard can never hold: the static checks accept it, coverage reports it.
 inline constexpr auto dead = bsc::make_chart<ctx>(
-    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<E>),
-    bsc::state<A> + bsc::event<go> = bsc::state<B>, bsc::state<B> + bsc::event<back> = bsc::state<A>,
+    bsc::composite<Root>(bsc::initial<A>, bsc::state<B>, bsc::state<E>), bsc::state<A> + bsc::event<go> = bsc::state<B>,
+    bsc::state<B> + bsc::event<back> = bsc::state<A>,
     bsc::state<B> + bsc::event<go>[([](ctx const& c) { return c.n > 100; })] = bsc::state<E>,
     bsc::state<E> + bsc::event<back> = bsc::state<A>);
 }  // namespace ver

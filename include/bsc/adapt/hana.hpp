@@ -77,8 +77,7 @@ namespace bsc {
 
 /// Every Boost.Hana Struct: its members are its accessors', named by their keys, in order.
 template <class T>
-    requires boost::hana::Struct<T>::value
-struct fields<T> {
+requires boost::hana::Struct<T>::value struct fields<T> {
     static constexpr auto names = boost::hana::unpack(boost::hana::accessors<T>(), [](auto const&... accessor) {
         return std::array<std::string_view, sizeof...(accessor)>{
             detail::hana_key_name(boost::hana::first(accessor))...};
@@ -86,10 +85,11 @@ struct fields<T> {
 
     template <class Self, class F>
     BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
-    static constexpr decltype(auto) apply(Self& self, F&& f) {
+        static constexpr decltype(auto)
+        apply(Self& self, F&& f) {
         return boost::hana::unpack(boost::hana::accessors<T>(), [&](auto const&... accessor) -> decltype(auto) {
-            constexpr bool references =
-                (std::is_lvalue_reference_v<decltype(boost::hana::second(accessor)(self))> && ...);
+            constexpr bool references = (std::is_lvalue_reference_v<decltype(boost::hana::second(accessor)(self))> &&
+                                         ...);
             if constexpr (references) {
                 return static_cast<F&&>(f)(boost::hana::second(accessor)(self)...);
             } else {

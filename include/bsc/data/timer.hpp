@@ -42,8 +42,8 @@ public:
     constexpr duration elapsed() const { return elapsed_; }
 
     friend constexpr bool operator==(timer const& a, timer const& b) {
-        return a.limit_ == b.limit_ && a.started_ == b.started_ && a.elapsed_ == b.elapsed_ &&
-               a.phase_ == b.phase_ && a.expired_ == b.expired_;
+        return a.limit_ == b.limit_ && a.started_ == b.started_ && a.elapsed_ == b.elapsed_ && a.phase_ == b.phase_ &&
+               a.expired_ == b.expired_;
     }
 
 private:

@@ -66,7 +66,7 @@ struct access {
         if constexpr (requires { typename std::remove_const_t<M>::driver_type; })
             return driver_of(m).context_.value;
         else
-            return m.context_;  // a machine of a rejected chart (runtime/rejected.hpp)
+            return m.context_;  // a machine of a rejected chart (detail/runtime/rejected.hpp)
     }
     template <class M>
     static constexpr auto& configuration(M& m) {

@@ -14,8 +14,9 @@ namespace bsc::detail {
 
 BSC_DETAIL_ALWAYS_INLINE constexpr void assume(bool holds) {
 #if !defined(NDEBUG)
-    assert(holds && "bsc: a machine's invariant is broken: it was called back from inside its own run under a "
-                    "policy that does not refuse it, or copied, assigned to or destroyed there");
+    assert(holds &&
+           "bsc: a machine's invariant is broken: it was called back from inside its own run under a "
+           "policy that does not refuse it, or copied, assigned to or destroyed there");
 #else
     BSC_DETAIL_ASSUME(holds);
 #endif

@@ -44,14 +44,14 @@
 //   detail::assume (detail/assume.hpp), which checks cond instead in builds without NDEBUG.
 // BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS: 1 where the optimiser follows an assumption through
 //   later tests, past the joins of paths (GCC); 0 where it drops it at the first join (Clang),
-//   or is not known to keep it: there bsc stores what it would have assumed (runtime/driver.hpp).
+//   or is not known to keep it: there bsc stores what it would have assumed (detail/runtime/run_control.hpp).
 #if defined(__clang__)
 #define BSC_DETAIL_ASSUME(cond) __builtin_assume(cond)
 #define BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS 0
 #elif defined(__GNUC__)
-#define BSC_DETAIL_ASSUME(cond)                  \
-    do {                                         \
-        if (!(cond)) __builtin_unreachable();    \
+#define BSC_DETAIL_ASSUME(cond)               \
+    do {                                      \
+        if (!(cond)) __builtin_unreachable(); \
     } while (false)
 #define BSC_DETAIL_ASSUMPTION_SURVIVES_JOINS 1
 #elif defined(_MSC_VER)
@@ -113,10 +113,9 @@
 #define BSC_DETAIL_PRINTS_STRING_ARGUMENTS 0
 #endif
 #if defined(__clang__)
-#define BSC_DETAIL_DECLARED_ONLY_BEGIN                                 \
-    _Pragma("clang diagnostic push")                                   \
-    _Pragma("clang diagnostic ignored \"-Wundefined-var-template\"")   \
-    _Pragma("clang diagnostic ignored \"-Wundefined-internal\"")
+#define BSC_DETAIL_DECLARED_ONLY_BEGIN                                                                \
+    _Pragma("clang diagnostic push") _Pragma("clang diagnostic ignored \"-Wundefined-var-template\"") \
+        _Pragma("clang diagnostic ignored \"-Wundefined-internal\"")
 #define BSC_DETAIL_DECLARED_ONLY_END _Pragma("clang diagnostic pop")
 #else
 #define BSC_DETAIL_DECLARED_ONLY_BEGIN

@@ -33,25 +33,19 @@ inline T* never_read = nullptr;
 struct any_field {
     template <class T>
         requires(!std::is_same_v<T, any_field> && std::is_move_constructible_v<T>)
-    constexpr operator T&&() const&& {
-        return static_cast<T&&>(*never_read<T>);
-    }
+    constexpr operator T&&() const&& { return static_cast<T&&>(*never_read<T>); }
     template <class T>
         requires(!std::is_same_v<T, any_field> && !std::is_move_constructible_v<T>)
     constexpr operator T() &&;  // (nothing instantiates it: such a member has no constructor template to)
     template <class T>
         requires(!std::is_same_v<T, any_field>)
-    constexpr operator T&() const& {
-        return *never_read<T>;
-    }
+    constexpr operator T&() const& { return *never_read<T>; }
 };
 // As any_field, but to values only: it cannot initialise a member that is a non-const reference.
 struct any_value_field {
     template <class T>
         requires(!std::is_same_v<T, any_value_field> && std::is_move_constructible_v<T>)
-    constexpr operator T&&() const&& {
-        return static_cast<T&&>(*never_read<T>);
-    }
+    constexpr operator T&&() const&& { return static_cast<T&&>(*never_read<T>); }
     template <class T>
         requires(!std::is_same_v<T, any_value_field> && !std::is_move_constructible_v<T>)
     constexpr operator T() &&;
@@ -104,8 +98,8 @@ constexpr std::size_t field_count() {
 /// value, and shows as a const field): the retentive state refuses both, since what lies behind
 /// a reference is not the machine's.
 template <class T>
-inline constexpr bool has_reference_field =
-    !brace_constructible<T, any_value_field>(std::make_index_sequence<field_count<T>()>{});
+inline constexpr bool has_reference_field = !brace_constructible<T, any_value_field>(
+    std::make_index_sequence<field_count<T>()>{});
 
 // f(fields...) for the fields of an aggregate, each an lvalue; f() for a type that is not one
 // (after the error that says so). Clang 14 leaves the visit of a context's timers out of line
@@ -113,8 +107,7 @@ inline constexpr bool has_reference_field =
 // (bench/manufacturing_cell_bench.cpp: forced, its cycle took more instructions, not fewer;
 // docs/performance.md, rule "Fields visited without a tuple").
 template <class T, class F>
-BSC_DETAIL_VISIT_INLINE
-constexpr decltype(auto) apply_to_fields(T& t, F&& f) {
+BSC_DETAIL_VISIT_INLINE constexpr decltype(auto) apply_to_fields(T& t, F&& f) {
     using type = std::remove_const_t<T>;
     constexpr std::size_t n = field_count<type>();
     if constexpr (!std::is_aggregate_v<type>) {
@@ -138,7 +131,8 @@ constexpr auto tie_fields(T& t) {
 // Calls f(field) for each field of an aggregate, in declaration order.
 template <class T, class F>
 BSC_DETAIL_VISIT_INLINE  // as apply_to_fields
-constexpr void for_each_field(T& t, F&& f) {
+    constexpr void
+    for_each_field(T& t, F&& f) {
     detail::apply_to_fields(t, [&](auto&... field) { (f(field), ...); });
 }
 

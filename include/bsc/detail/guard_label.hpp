@@ -1,7 +1,7 @@
 #pragma once
 // The label of a guard, as the exports draw it and the logger writes it: its name (bsc::named),
 // a composition of named guards with their operators, or "guard". Also the pieces the labels
-// of actions share (export/model.hpp): has_name, expression, parenthesized.
+// of actions share (detail/export/model.hpp): has_name, expression, parenthesized.
 
 #include <string>
 #include <string_view>
@@ -12,7 +12,9 @@ namespace bsc::detail {
 
 /// A guard or action that has a name (bsc::named, or any callable with a `name` member).
 template <class T>
-concept has_name = requires(T const& t) { std::string_view{t.name}; };
+concept has_name = requires(T const& t) {
+    std::string_view{t.name};
+};
 
 template <class T>
 inline constexpr bool is_not_guard = false;

@@ -12,21 +12,21 @@
 namespace bsc::detail {
 
 // Whether a callable has one of the signatures below: what make_chart checks
-// (checks/signatures.hpp) and what these helpers call.
+// (detail/checks/signatures.hpp) and what these helpers call.
 template <class G, class Ctx, class E>
 inline constexpr bool guard_callable = std::is_invocable_r_v<bool, G const&, Ctx const&, E const&> ||
                                        std::is_invocable_r_v<bool, G const&, Ctx const&> ||
                                        std::is_invocable_r_v<bool, G const&>;
 template <class A, class Ctx, class E, class Raise>
-inline constexpr bool action_callable =
-    std::is_invocable_v<A const&, Ctx&, E const&, Raise&> || std::is_invocable_v<A const&, Ctx&, E const&> ||
-    std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+inline constexpr bool action_callable = std::is_invocable_v<A const&, Ctx&, E const&, Raise&> ||
+                                        std::is_invocable_v<A const&, Ctx&, E const&> ||
+                                        std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
 template <class A, class Ctx, class Raise>
-inline constexpr bool state_action_callable =
-    std::is_invocable_v<A const&, Ctx&, Raise&> || std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+inline constexpr bool state_action_callable = std::is_invocable_v<A const&, Ctx&, Raise&> ||
+                                              std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
 
 // Whether the call these helpers make cannot throw: the form they pick is noexcept. A chart
-// none of whose guards and actions can throw needs no record of failures (runtime/driver.hpp).
+// none of whose guards and actions can throw needs no record of failures (detail/runtime/machine_data.hpp, may_throw).
 template <class G, class Ctx, class E>
 constexpr bool guard_nothrow() {
     if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&, E const&>)
@@ -70,7 +70,8 @@ constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) noexcept(guard
 }
 
 template <class A, class Ctx, class E, class Raise>
-constexpr void call_action(A const& a, Ctx& ctx, E const& e, Raise& raise) noexcept(action_nothrow<A, Ctx, E, Raise>()) {
+constexpr void call_action(A const& a, Ctx& ctx, E const& e,
+                           Raise& raise) noexcept(action_nothrow<A, Ctx, E, Raise>()) {
     if constexpr (std::is_invocable_v<A const&, Ctx&, E const&, Raise&>)
         a(ctx, e, raise);
     else if constexpr (std::is_invocable_v<A const&, Ctx&, E const&>)

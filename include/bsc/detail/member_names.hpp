@@ -67,9 +67,11 @@ BSC_DETAIL_DECLARED_ONLY_END
 /// The names of T's members, in declaration order. Requirements: T is an aggregate that
 /// detail::tie_fields supports.
 template <class T>
+// clang-format off
 inline constexpr auto member_names = []<std::size_t... I>(std::index_sequence<I...>) {
     return std::array<std::string_view, sizeof...(I)>{member_name_of<T, I>()...};
 }(std::make_index_sequence<std::tuple_size_v<decltype(tie_fields(std::declval<T&>()))>>{});
+// clang-format on
 
 template <class Class, class Member>
 Class class_of_member(Member Class::*);
@@ -81,6 +83,7 @@ BSC_DETAIL_DECLARED_ONLY_BEGIN
 template <auto Member>
 constexpr std::size_t member_index() {
     using Class = decltype(class_of_member(Member));
+    // clang-format off
     return []<std::size_t... I>(std::index_sequence<I...>) {
         auto const& object = declared_only<Class>.value;
         void const* const target = &(object.*Member);
@@ -89,6 +92,7 @@ constexpr std::size_t member_index() {
         ((static_cast<void const*>(&std::get<I>(fields)) == target ? (found = I, 0) : 0), ...);
         return found;
     }(std::make_index_sequence<member_names<Class>.size()>{});
+    // clang-format on
 }
 /// The name of the member that the pointer to member `Member` designates, e.g. "speed" for
 /// `&axis::speed`.

@@ -52,22 +52,36 @@ inline constexpr bool is_chrono_duration<std::chrono::duration<Rep, Period>> = t
 // An enum whose every value of the underlying type is a value of the enum: a scoped enum, or one
 // declared with `: type` (only those can be list-initialised from an integer).
 template <class T>
-inline constexpr bool has_fixed_underlying_type = requires { T{std::underlying_type_t<T>{}}; };
+inline constexpr bool has_fixed_underlying_type = requires {
+    T{std::underlying_type_t<T>{}};
+};
 
 /// A type that bsc::fields<T> describes.
 template <class T>
-concept described_by_fields = requires { bsc::fields<T>::names; };
+concept described_by_fields = requires {
+    bsc::fields<T>::names;
+};
 
 /// A type adapted by BOOST_HANA_DEFINE_STRUCT (its nested accessors), told apart without Boost.
 template <class T>
-concept adapted_by_hana = requires { typename T::hana_accessors_impl; };
+concept adapted_by_hana = requires {
+    typename T::hana_accessors_impl;
+};
 
 enum class member_kind : std::uint8_t {
-    machine, channel, timer,                                                  // the machine's own
-    boolean, signed_integer, unsigned_integer, enumeration, floating, time,  // scalars
-    array, record,                                                            // walked into
-    opaque,                                                                   // a leaf bsc does not look into
-    unwalkable,                                                               // may hide state: an error
+    machine,
+    channel,
+    timer,  // the machine's own
+    boolean,
+    signed_integer,
+    unsigned_integer,
+    enumeration,
+    floating,
+    time,  // scalars
+    array,
+    record,      // walked into
+    opaque,      // a leaf bsc does not look into
+    unwalkable,  // may hide state: an error
 };
 
 // ---- aggregates bsc cannot walk ----------------------------------------------------------------
@@ -210,7 +224,8 @@ constexpr bool is_transient = bsc::transient<T>;
 // f(members...) for a record's members, each an lvalue (const for a const record).
 template <class T, class F>
 BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
-constexpr decltype(auto) apply_members(T& t, F&& f) {
+    constexpr decltype(auto)
+    apply_members(T& t, F&& f) {
     using type = std::remove_const_t<T>;
     if constexpr (described_by_fields<type>)
         return bsc::fields<type>::apply(t, static_cast<F&&>(f));
@@ -229,7 +244,9 @@ template <class T>
 using member_types = decltype(apply_members(std::declval<T&>(), list_member_types{}));
 
 template <class T>
+// clang-format off
 inline constexpr std::size_t member_count = []<class... M>(type_list<M...>) { return sizeof...(M); }(member_types<T>{});
+// clang-format on
 
 template <class T, int Depth>
 constexpr bool may_hold_state() {
@@ -243,9 +260,11 @@ constexpr bool may_hold_state() {
     } else if constexpr (described_by_fields<U> ||
                          (std::is_class_v<U> && std::is_aggregate_v<U> && !std::is_union_v<U> &&
                           problem_of_aggregate<U>() == aggregate_problem::none)) {
+        // clang-format off
         return []<class... M>(type_list<M...>) {
             return (may_hold_state<M, Depth - 1>() || ...);
         }(member_types<U>{});
+        // clang-format on
     } else if constexpr (std::is_class_v<U> && std::is_aggregate_v<U> && !std::is_union_v<U>) {
         // An aggregate bsc cannot walk is reported where it is a member; held by a template (a
         // std::vector of them) it is not taken to hide anything.
@@ -328,7 +347,9 @@ constexpr bool reaches() {
         else if constexpr (k == member_kind::array)
             return reaches<V, typename U::value_type>();
         else if constexpr (k == member_kind::record)
+            // clang-format off
             return []<class... M>(type_list<M...>) { return (reaches<V, M>() || ...); }(member_types<U>{});
+        // clang-format on
         else
             return visits_leaf<V, U>();
     }
@@ -360,9 +381,11 @@ constexpr bool check_reachable() {
     } else if constexpr (k == member_kind::array) {
         return check_reachable<typename U::value_type>();
     } else if constexpr (k == member_kind::record) {
+        // clang-format off
         return []<class... M, std::size_t... I>(type_list<M...>, std::index_sequence<I...>) {
             return ((check_member<U, I, M>() ? 0 : 1) + ... + 0) == 0;
         }(member_types<U>{}, std::make_index_sequence<member_count<U>>{});
+        // clang-format on
     } else if constexpr (k == member_kind::unwalkable) {
         report_unwalkable<void, 0, U>();  // the root itself
         return false;
@@ -384,7 +407,8 @@ constexpr auto const& names_of() {
 
 template <class V, class T, class Name>
 BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
-constexpr void walk_into(T& value, V& v, Name const& name) {
+    constexpr void
+    walk_into(T& value, V& v, Name const& name) {
     using U = std::remove_cv_t<T>;
     using visitor = std::remove_const_t<V>;
     constexpr member_kind k = kind_of<U>();
@@ -416,7 +440,8 @@ constexpr void walk_into(T& value, V& v, Name const& name) {
 /// each leaf it visits. Every member bsc cannot reach is a compile error.
 template <class V, class T, class Name = no_name>
 BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
-constexpr void walk(T& value, V& v, Name const& name = {}) {
+    constexpr void
+    walk(T& value, V& v, Name const& name = {}) {
     static_assert(reachable<T> || true);  // instantiates the check (its errors are the report)
     walk_into(value, v, name);
 }
@@ -437,10 +462,12 @@ constexpr typename F::result fold_type(F const& f) {
     } else if constexpr (k == member_kind::array) {
         return f.template array<U>(fold_type<F, typename U::value_type>(f));
     } else if constexpr (k == member_kind::record) {
+        // clang-format off
         return []<class... M>(F const& folder, type_list<M...>) {
             return folder.template record<U>(
                 std::array<typename F::result, sizeof...(M)>{fold_type<F, M>(folder)...});
         }(f, member_types<U>{});
+        // clang-format on
     } else {
         return f.template leaf<T>();  // (an unwalkable T is reported by check_reachable)
     }

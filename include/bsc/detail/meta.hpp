@@ -93,8 +93,8 @@ struct scan_for<T, type_list<Ts...>> {
 template <class T, class List, class = void>
 struct position_in : scan_for<T, List> {};  // absent, or present twice (the base is ambiguous)
 template <class T, class List>
-struct position_in<T, List,
-                   std::void_t<decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr)))>>
+struct position_in<
+    T, List, std::void_t<decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr)))>>
     : decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr))) {};
 
 template <std::size_t I, class List>

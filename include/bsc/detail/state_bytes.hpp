@@ -27,18 +27,18 @@
 #include <type_traits>
 #include <variant>
 
-#include <bsc/action_failed.hpp>
+#include <bsc/events.hpp>
 #include <bsc/detail/access.hpp>
 #include <bsc/detail/bytes.hpp>
 #include <bsc/detail/members.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/duration.hpp>
 #include <bsc/error.hpp>
-#include <bsc/model/chart_model.hpp>
-#include <bsc/model/layout.hpp>
+#include <bsc/detail/model/chart_model.hpp>
+#include <bsc/detail/model/layout.hpp>
 #include <bsc/outcome.hpp>
-#include <bsc/runtime/driver.hpp>
-#include <bsc/runtime/queue_for.hpp>
+#include <bsc/detail/runtime/driver.hpp>
+#include <bsc/detail/runtime/queue_for.hpp>
 
 namespace bsc::detail {
 
@@ -140,8 +140,8 @@ constexpr std::size_t size_of() {
 // explorer's bits): bsc::action_failed never waits; an event that cannot be encoded is reported
 // (pending_events_encodable), and takes no room.
 template <class E>
-inline constexpr bool encoded_while_pending =
-    !std::is_same_v<E, action_failed> && encodable<E> && std::is_default_constructible_v<E>;
+inline constexpr bool encoded_while_pending = !std::is_same_v<E, action_failed> && encodable<E> &&
+                                              std::is_default_constructible_v<E>;
 
 template <class Chart, class E>
 constexpr bool pending_event_encodable() {
@@ -325,9 +325,11 @@ constexpr std::uint64_t layout_fingerprint() {
     if constexpr (pending::defers || pending::delays) {
         f.add(pending::deferred_capacity);
         f.add(pending::delayed_capacity);
+        // clang-format off
         [&]<class... Es>(type_list<Es...>) {
             ((f.add(name_of<Es>), f.add(std::is_same_v<Es, action_failed> ? 0 : describe<Es>())), ...);
         }(typename machine_model<Machine>::events{});
+        // clang-format on
     }
     return f.value;
 }
@@ -585,7 +587,7 @@ void get_pending(byte_reader& r, Machine& m, pass const& p, duration shift) {
             queue.clear_scheduled();
             queue.set_clock(shifted(clock, shift));
             // (Moved past duration::max() by resume_at, an event never comes due: not kept, as
-            // runtime/delayed_events.hpp keeps none such.)
+            // detail/runtime/delayed_events.hpp keeps none such.)
             for (std::size_t i = 0; i < count; ++i)
                 if (!shifted_past_max(items[i].due, shift))
                     (void)queue.put_scheduled(shifted(items[i].due, shift), items[i].id, items[i].item);
@@ -624,7 +626,7 @@ void get_machine(byte_reader& r, Machine& m, pass const& p) {
     for (std::size_t i = 0; i < armed.size(); ++i) access::armed(m)[i] = shifted(armed[i], own.shift);
     access::set_last_outcome(m, last);
     access::forget_failure(m);  // the exception of a last outcome `failed` is not saved
-    access::queue(m).clear();     // raised events: none between runs
+    access::queue(m).clear();   // raised events: none between runs
     access::queue(m).clear_overflow();
 }
 

@@ -20,14 +20,10 @@ constexpr std::string_view type_from_signature(std::string_view sig) {
     int depth = 0;
     for (; end < sig.size(); ++end) {
         const char c = sig[end];
-        if (c == '<' || c == '(' || c == '[')
-            ++depth;
-        if (c == '>' || c == ')')
-            --depth;
-        if (depth < 0 || (depth == 0 && (c == ';' || c == ']')))
-            break;
-        if (c == ']')
-            --depth;
+        if (c == '<' || c == '(' || c == '[') ++depth;
+        if (c == '>' || c == ')') --depth;
+        if (depth < 0 || (depth == 0 && (c == ';' || c == ']'))) break;
+        if (c == ']') --depth;
     }
     return sig.substr(start, end - start);
 }
@@ -37,12 +33,9 @@ constexpr std::string_view unqualified(std::string_view name) {
     std::size_t cut = 0;
     int depth = 0;
     for (std::size_t i = 0; i + 1 < name.size(); ++i) {
-        if (name[i] == '<')
-            ++depth;
-        if (name[i] == '>')
-            --depth;
-        if (depth == 0 && name[i] == ':' && name[i + 1] == ':')
-            cut = i + 2;
+        if (name[i] == '<') ++depth;
+        if (name[i] == '>') --depth;
+        if (depth == 0 && name[i] == ':' && name[i + 1] == ':') cut = i + 2;
     }
     return name.substr(cut);
 }

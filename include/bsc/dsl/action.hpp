@@ -10,6 +10,7 @@
 #include <bsc/detail/invoke.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/outcome.hpp>
+#include <bsc/policies.hpp>
 
 namespace bsc::detail {
 
@@ -29,7 +30,8 @@ template <class F>
 struct action_fn : action_base {
     [[no_unique_address]] F fn;
     template <class Ctx, class E, class Raise>
-    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const noexcept(noexcept(call_action(fn, ctx, e, raise))) {
+    constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const
+        noexcept(noexcept(call_action(fn, ctx, e, raise))) {
         call_action(fn, ctx, e, raise);
     }
 };
@@ -70,9 +72,7 @@ constexpr auto make_seq(std::tuple<As...> t) {
 
 template <class L, class R>
     requires(bsc_action<L> || bsc_action<R>)
-constexpr auto operator,(L l, R r) {
-    return make_seq(std::tuple_cat(as_tuple(std::move(l)), as_tuple(std::move(r))));
-}
+constexpr auto operator,(L l, R r) { return make_seq(std::tuple_cat(as_tuple(std::move(l)), as_tuple(std::move(r)))); }
 
 struct no_action {
     template <class Ctx, class E, class Raise>
@@ -104,7 +104,7 @@ struct state_action {
 };
 
 // What the chart's analysis hands an action as its raise argument, to learn whether it takes one
-// (may_raise below) and whether it can be called at all (checks/signatures.hpp): callable with
+// (may_raise below) and whether it can be called at all (detail/checks/signatures.hpp): callable with
 // any event, as a machine's queue is with the chart's events (an event the chart does not take
 // is reported where the machine calls the action: bsc::error::raised_event_not_in_chart). Not a
 // machine's queue, whose type spells every event of the chart and holds a std::variant of
@@ -177,12 +177,13 @@ using join_raised = typename join_raised_of<(std::is_same_v<Lists, raises_anythi
 // (A sequence, and an entry or exit action wrapping one of bsc's, are looked into; any other
 // action raises anything if may_raise says it can raise at all.)
 template <class Ctx, class E, class Raise, class A>
-auto raised_by(A const*) -> std::conditional_t<may_raise<Ctx, E, Raise>(static_cast<A const*>(nullptr)), raises_anything,
-                                               type_list<>>;
+auto raised_by(A const*)
+    -> std::conditional_t<may_raise<Ctx, E, Raise>(static_cast<A const*>(nullptr)), raises_anything, type_list<>>;
 template <class Ctx, class E, class Raise, class Ev>
 auto raised_by(action_fn<raise_fn<Ev>> const*) -> type_list<Ev>;
 template <class Ctx, class E, class Raise, class... As>
-auto raised_by(action_seq<As...> const*) -> join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>;
+auto raised_by(action_seq<As...> const*)
+    -> join_raised<decltype(raised_by<Ctx, E, Raise>(static_cast<As const*>(nullptr)))...>;
 template <class Ctx, class E, class Raise, class A>
     requires bsc_action<A>
 auto raised_by(state_action<A> const*) -> decltype(raised_by<Ctx, state_change, Raise>(static_cast<A const*>(nullptr)));

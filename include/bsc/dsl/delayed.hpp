@@ -1,7 +1,7 @@
 #pragma once
 // Delayed events to self: the actions bsc::raise_after and bsc::cancel_delayed. They reach the
-// machine's pending events (runtime/delayed_events.hpp) through the raise argument that every
-// action receives; a chart that uses them gets a queue with slots for them (runtime/queue_for.hpp).
+// machine's pending events (detail/runtime/delayed_events.hpp) through the raise argument that every
+// action receives; a chart that uses them gets a queue with slots for them (detail/runtime/queue_for.hpp).
 
 #include <cstdlib>
 #include <stdexcept>
@@ -16,7 +16,7 @@
 namespace bsc::detail {
 
 // bsc::raise_after and bsc::cancel_delayed: actions that reach the machine's delayed events
-// (runtime/delayed_events.hpp) through the raise argument.
+// (detail/runtime/delayed_events.hpp) through the raise argument.
 template <class E>
 struct delayed_raise : action_base {
     duration delay;
@@ -76,7 +76,7 @@ namespace bsc {
 /// state that sent it; `bsc::cancel_delayed(id)` cancels it while it is pending (an id of 0 is
 /// none). The machine keeps `Policy::delayed_capacity` pending events; one more is dropped and
 /// the run reports `outcome::queue_overflow`. An event whose due time would lie past
-/// bsc::duration::max() never comes due, and is not kept (runtime/delayed_events.hpp).
+/// bsc::duration::max() never comes due, and is not kept (detail/runtime/delayed_events.hpp).
 /// Requirements: `e` is an event of the chart (or of a family of one); 0 <= delay <=
 /// bsc::duration::max() (as for bsc::after: otherwise a constexpr chart does not compile, and
 /// one built at run time throws std::invalid_argument / std::out_of_range).

@@ -14,6 +14,7 @@
 #include <bsc/error.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
+#include <bsc/events.hpp>
 
 namespace bsc::detail {
 
@@ -24,8 +25,6 @@ struct local_ref;
 template <class... S>
 struct targets_ref;
 
-/// The trigger of a transition taken without an event, when its guard holds.
-struct eventless_trigger {};
 template <class E>
 struct event_trigger {
     using event = E;
@@ -33,7 +32,7 @@ struct event_trigger {
 // Deliberately not constexpr (as bsc_after_negative_delay below): in a constexpr chart, reaching
 // it is the compile error, and its name says what is wrong; a chart built at run time throws.
 [[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(std::size_t row,
-                                                                                         std::size_t fires_first) {
+                                                                                        std::size_t fires_first) {
 #if defined(__cpp_exceptions)
     throw std::invalid_argument(
         "bsc::make_chart: the timeout row at position " + std::to_string(row) +
@@ -194,7 +193,7 @@ struct transition_row : row_base<transition_row<S, Trigger, G, A, T>> {
         return transition_row<S, Trigger, G, A, several_targets<T2...>>{{}, trigger_value, guard, action};
     }
     template <class A2>
-        requires(std::is_same_v<A, no_action> && std::is_same_v<T, no_target>)
+        requires(std::is_same_v<A, no_action>&& std::is_same_v<T, no_target>)
     constexpr auto operator/(A2 a) const {
         using action_t = decltype(as_action(std::move(a)));
         return transition_row<S, Trigger, G, action_t, T>{{}, trigger_value, guard, as_action(std::move(a))};
@@ -292,8 +291,7 @@ constexpr bool is_event_type() {
 
 template <class E>
 constexpr event_ref<E> checked_event_ref() {
-    if constexpr (!is_event_type<E>())
-        detail::report<error::not_an_event<E>>();
+    if constexpr (!is_event_type<E>()) detail::report<error::not_an_event<E>>();
     return {};
 }
 
@@ -319,23 +317,6 @@ inline constexpr detail::exit_keyword on_exit{};
 /// Requirements: S is a composite without a history marker
 /// (bsc::error::initial_action_without_initial_transition).
 inline constexpr detail::initial_keyword on_initial{};
-
-/// The tag used in diagnostics and observers for a transition without an event.
-using eventless = detail::eventless_trigger;
-
-/// The trigger every event matches: `state<S> + event<bsc::any_event> = state<T>` takes any
-/// event that no deeper state and no earlier row of S takes first (SCXML's event="*",
-/// Boost.SML's event<_>). Its guard and action receive this tag, not the event.
-struct any_event {};
-
-/// The completion event of state S (SCXML's done.state.S): raised when a final child of the
-/// composite S is entered, or, for a parallel S, when every region of S has entered a final
-/// state. A row takes it like any event: `state<Work> + event<bsc::done<Work>> = state<Next>`.
-/// (A final child of the root raises nothing: the machine halts.)
-template <class S>
-struct done {
-    using state = S;
-};
 
 namespace detail {
 // Deliberately not constexpr: in a constexpr chart, reaching one of these is the compile error

@@ -255,10 +255,12 @@ constexpr auto composite(A...) {
                                  detail::is_history_marker<A>)&&...);
     constexpr int history_markers = (0 + ... + int{detail::is_history_marker<A>});
     if constexpr (!all_valid) {
-        constexpr int bad =
-            detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
-                                                detail::is_initial_marker<A> || detail::is_history_marker<A>>...>>::value;
-        detail::report<error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
+        constexpr int bad = detail::position_in<
+            std::false_type, detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
+                                                                  detail::is_initial_marker<A> ||
+                                                                  detail::is_history_marker<A>>...>>::value;
+        detail::report<
+            error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
     } else if constexpr (history_markers > 1) {
         detail::report<error::conflicting_history_markers<S>>();
     }
@@ -275,9 +277,11 @@ template <class S, class... A>
 constexpr auto parallel(A...) {
     constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A>)&&...);
     if constexpr (!all_valid) {
-        constexpr int bad =
-            detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>>::value;
-        detail::report<error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
+        constexpr int bad = detail::position_in<
+            std::false_type,
+            detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A>>...>>::value;
+        detail::report<
+            error::not_a_state_declaration<S, detail::at<static_cast<std::size_t>(bad), detail::type_list<A...>>>>();
     } else if constexpr (sizeof...(A) == 0) {
         detail::report<error::empty_parallel_state<S>>();
     }

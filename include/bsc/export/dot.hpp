@@ -16,7 +16,7 @@
 #include <string>
 #include <string_view>
 
-#include <bsc/export/model.hpp>
+#include <bsc/detail/export/model.hpp>
 
 namespace bsc::detail {
 
@@ -36,9 +36,7 @@ inline std::string dot_quoted(std::string_view text) {
 inline std::string dot_cluster(diagram const& m, int s) { return dot_quoted("cluster_" + m[s].id); }
 inline std::string dot_anchor(diagram const& m, int s) { return dot_quoted(m[s].id + ":anchor"); }
 /// The node an edge to or from state s attaches to.
-inline std::string dot_node(diagram const& m, int s) {
-    return m[s].is_leaf() ? dot_quoted(m[s].id) : dot_anchor(m, s);
-}
+inline std::string dot_node(diagram const& m, int s) { return m[s].is_leaf() ? dot_quoted(m[s].id) : dot_anchor(m, s); }
 
 inline std::string dot_label(diagram const& m, int s) {
     std::string label = m[s].label;
@@ -70,8 +68,8 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
         return;
     }
     out += pad + "subgraph " + dot_cluster(m, s) + " {\n";
-    out += pad + "    label=" + dot_quoted(dot_label(m, s)) + "; style=" +
-           (region ? "\"rounded,dashed\"" : "\"rounded\"") + ";\n";
+    out += pad + "    label=" + dot_quoted(dot_label(m, s)) +
+           "; style=" + (region ? "\"rounded,dashed\"" : "\"rounded\"") + ";\n";
     out += pad + "    " + dot_anchor(m, s) + " [shape=point, style=invis, width=0, height=0, label=\"\"];\n";
     if (st.initial >= 0) {
         auto const initial = dot_quoted(st.id + ":initial");
@@ -90,8 +88,9 @@ inline void dot_state(diagram const& m, int s, int level, bool region, std::stri
         }
     }
     if (st.hist != history::none)
-        out += pad + "    " + dot_quoted(st.id + ":history") + " [shape=circle, label=" +
-               (st.hist == history::deep ? "\"H*\"" : "\"H\"") + ", width=0.3, fixedsize=true, fontsize=9];\n";
+        out += pad + "    " + dot_quoted(st.id + ":history") +
+               " [shape=circle, label=" + (st.hist == history::deep ? "\"H*\"" : "\"H\"") +
+               ", width=0.3, fixedsize=true, fontsize=9];\n";
     for (int const c : st.children) dot_state(m, c, level + 1, st.node_kind == kind::parallel, out);
     out += pad + "}\n";
 }

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-#include <bsc/export/model.hpp>
+#include <bsc/detail/export/model.hpp>
 
 namespace bsc::detail {
 
@@ -42,7 +42,8 @@ inline void mermaid_state(diagram const& m, int s, int level, std::string& out) 
     auto const activities = activity_lines(m, s);
     if (st.is_leaf()) {
         if (st.label != st.id || !activities.empty() || st.node_kind == kind::history)
-            out += indent(level) + "state \"" + mermaid_text(st.label + history_suffix(st.hist)) + "\" as " + st.id + "\n";
+            out += indent(level) + "state \"" + mermaid_text(st.label + history_suffix(st.hist)) + "\" as " + st.id +
+                   "\n";
         else
             out += indent(level) + st.id + "\n";
         for (auto const& line : activities) out += indent(level) + st.id + " : " + mermaid_text(line) + "\n";
@@ -55,7 +56,8 @@ inline void mermaid_state(diagram const& m, int s, int level, std::string& out) 
     std::string title = mermaid_text(st.label) + history_suffix(st.hist);
     for (auto const& line : activities) title += "<br/>" + mermaid_text(line);
     out += indent(level) + "state \"" + title + "\" as " + st.id + " {\n";
-    if (st.initial >= 0) out += indent(level + 1) + "[*] --> " + m[st.initial].id + with_label(initial_label(st)) + "\n";
+    if (st.initial >= 0)
+        out += indent(level + 1) + "[*] --> " + m[st.initial].id + with_label(initial_label(st)) + "\n";
     for (int const more : st.more_initials) out += indent(level + 1) + "[*] --> " + m[more].id + "\n";
     bool first = true;
     for (int const c : st.children) {

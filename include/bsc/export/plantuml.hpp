@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include <bsc/export/model.hpp>
+#include <bsc/detail/export/model.hpp>
 
 namespace bsc::detail {
 
@@ -39,7 +39,8 @@ inline void plantuml_state(diagram const& m, int s, int level, std::string& out)
         out += " {\n";
         if (st.initial >= 0) {
             auto const label = initial_label(st);
-            out += indent(level + 1) + "[*] --> " + m[st.initial].id + (label.empty() ? "" : " : " + plantuml_text(label)) + "\n";
+            out += indent(level + 1) + "[*] --> " + m[st.initial].id +
+                   (label.empty() ? "" : " : " + plantuml_text(label)) + "\n";
             for (int const more : st.more_initials) out += indent(level + 1) + "[*] --> " + m[more].id + "\n";
         }
         bool first = true;

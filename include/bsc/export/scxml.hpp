@@ -30,14 +30,12 @@
 #include <string>
 #include <string_view>
 
-#include <bsc/export/model.hpp>
+#include <bsc/detail/export/model.hpp>
 
 namespace bsc::detail {
 
 /// Text inside an XML comment, which may not contain "--".
-inline std::string scxml_comment(std::string_view text) {
-    return replace_all(xml_escaped(text), "--", "- -");
-}
+inline std::string scxml_comment(std::string_view text) { return replace_all(xml_escaped(text), "--", "- -"); }
 
 inline std::string scxml_script(std::string_view action) {
     return "<script>/* " + xml_escaped(replace_all(std::string(action), "*/", "* /")) + " */</script>";
@@ -119,7 +117,8 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     auto const& st = m[s];
     auto const pad = indent(level);
     if (st.node_kind == kind::history) {  // a history state and its default transition
-        out += pad + "<history id=\"" + st.id + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") + "\">\n";
+        out += pad + "<history id=\"" + st.id + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") +
+               "\">\n";
         out += pad + "    <transition target=\"" + m[st.initial].id + "\"";
         if (st.initial_actions.empty()) {
             out += "/>\n";
@@ -163,8 +162,8 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     if (st.initial >= 0 && st.hist != history::none) {
         auto const h = history_id(m, s);
         out += inner + "<initial>\n" + inner + "    <transition target=\"" + h + "\"/>\n" + inner + "</initial>\n";
-        out += inner + "<history id=\"" + h + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") +
-               "\">\n" + inner + "    <transition target=\"" + m[st.initial].id + "\"/>\n" + inner + "</history>\n";
+        out += inner + "<history id=\"" + h + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") + "\">\n" +
+               inner + "    <transition target=\"" + m[st.initial].id + "\"/>\n" + inner + "</history>\n";
     }
     for (auto const& a : st.entry) out += inner + "<onentry>" + scxml_script(a) + "</onentry>\n";
     for (auto const& a : st.exit) out += inner + "<onexit>" + scxml_script(a) + "</onexit>\n";

@@ -26,9 +26,9 @@ namespace bsc::net {
 struct mqtt_endpoint {
     std::string host = "127.0.0.1";
     int port = 1883;
-    std::string client_id;                     ///< unique per node; the node's name will do
-    int keepalive_seconds = 5;                 ///< the broker publishes the will after 1.5 times this without traffic
-    std::chrono::milliseconds retry{100};      ///< pause between connection attempts
+    std::string client_id;                 ///< unique per node; the node's name will do
+    int keepalive_seconds = 5;             ///< the broker publishes the will after 1.5 times this without traffic
+    std::chrono::milliseconds retry{100};  ///< pause between connection attempts
 };
 
 /// A transport over an MQTT broker.
@@ -40,12 +40,10 @@ public:
         client_ = mosquitto_new(endpoint_.client_id.empty() ? nullptr : endpoint_.client_id.c_str(), true, this);
         if (client_ == nullptr) throw std::runtime_error("bsc::net::mosquitto_transport: cannot create a client");
         mosquitto_int_option(client_, MOSQ_OPT_TCP_NODELAY, 1);
-        mosquitto_connect_callback_set(client_, [](mosquitto*, void* self, int rc) {
-            static_cast<mosquitto_transport*>(self)->on_connect(rc);
-        });
-        mosquitto_disconnect_callback_set(client_, [](mosquitto*, void* self, int) {
-            static_cast<mosquitto_transport*>(self)->connected_ = false;
-        });
+        mosquitto_connect_callback_set(
+            client_, [](mosquitto*, void* self, int rc) { static_cast<mosquitto_transport*>(self)->on_connect(rc); });
+        mosquitto_disconnect_callback_set(
+            client_, [](mosquitto*, void* self, int) { static_cast<mosquitto_transport*>(self)->connected_ = false; });
         mosquitto_message_callback_set(client_, [](mosquitto*, void* self, mosquitto_message const* m) {
             // No exception may cross the C library's frames: a message that cannot be stored is lost,
             // as the network may lose one, and the heartbeat sends it again.
@@ -96,8 +94,10 @@ public:
                     std::this_thread::sleep_for(std::min<std::chrono::steady_clock::duration>(left, endpoint_.retry));
                 continue;
             }
-            auto const left = std::chrono::duration_cast<std::chrono::milliseconds>(until - std::chrono::steady_clock::now());
-            if (mosquitto_loop(client_, static_cast<int>(std::max<long long>(left.count(), 0)), 1) != MOSQ_ERR_SUCCESS) {
+            auto const left = std::chrono::duration_cast<std::chrono::milliseconds>(until -
+                                                                                    std::chrono::steady_clock::now());
+            if (mosquitto_loop(client_, static_cast<int>(std::max<long long>(left.count(), 0)), 1) !=
+                MOSQ_ERR_SUCCESS) {
                 drop_connection();
                 continue;
             }

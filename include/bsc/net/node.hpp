@@ -53,16 +53,16 @@ namespace bsc::net {
 
 /// How a node runs. Every node of a system must agree on `prefix` and `period`.
 struct node_options {
-    std::string prefix = "bsc";         ///< the system's topics start with it
-    std::string name = "node";          ///< the node's name, unique in the system (its will's topic)
-    std::vector<std::string> actors{};  ///< names of the actors this node runs; empty: all of them
+    std::string prefix = "bsc";                        ///< the system's topics start with it
+    std::string name = "node";                         ///< the node's name, unique in the system (its will's topic)
+    std::vector<std::string> actors{};                 ///< names of the actors this node runs; empty: all of them
     duration period = std::chrono::milliseconds{100};  ///< step n runs at time n * period
     std::int64_t last_step = std::numeric_limits<std::int64_t>::max();  ///< the actors stop after it
-    std::chrono::milliseconds deadline{300};   ///< silence after which a peer is stale
+    std::chrono::milliseconds deadline{300};                            ///< silence after which a peer is stale
     std::chrono::milliseconds startup{10000};  ///< how long a peer never heard of is waited for
     std::chrono::milliseconds heartbeat{50};   ///< the last messages are sent again this often
-    std::chrono::microseconds pace{0};  ///< at least this much wall time per step (0: as fast as inputs allow)
-    std::filesystem::path state_dir{};  ///< where each actor is saved after each step; empty: nowhere
+    std::chrono::microseconds pace{0};         ///< at least this much wall time per step (0: as fast as inputs allow)
+    std::filesystem::path state_dir{};         ///< where each actor is saved after each step; empty: nowhere
     std::function<std::chrono::steady_clock::time_point()> clock = [] { return std::chrono::steady_clock::now(); };
 };
 
@@ -91,7 +91,8 @@ struct nth_member<I, First, Rest...> : nth_member<I - 1, Rest...> {};
 
 template <class System>
 struct deployment {
-    static_assert(sizeof(System) == 0, "bsc::net::node<System>: System must be a bsc::system<Actors, bsc::order<...>, links...>");
+    static_assert(sizeof(System) == 0,
+                  "bsc::net::node<System>: System must be a bsc::system<Actors, bsc::order<...>, links...>");
 };
 
 template <class Actors, auto... Steps, class... Entries>
@@ -116,23 +117,29 @@ struct deployment<system<Actors, order<Steps...>, Entries...>> {
     // What link L carries over the network: the source's value, as its publisher published it
     // (the consumer's side applies the link's bsc::convert).
     template <class L>
-    using value_of = bsc::detail::channel_value<std::remove_cvref_t<
-        decltype(((std::declval<Actors&>().*L::from_actor).context()).*L::from_channel)>>;
+    using value_of = bsc::detail::channel_value<
+        std::remove_cvref_t<decltype(((std::declval<Actors&>().*L::from_actor).context()).*L::from_channel)>>;
     // What the consumer of link L reads: its input's value type.
     template <class L>
-    using target_value_of = bsc::detail::channel_value<std::remove_cvref_t<
-        decltype(((std::declval<Actors&>().*L::to_actor).context()).*L::to_channel)>>;
+    using target_value_of = bsc::detail::channel_value<
+        std::remove_cvref_t<decltype(((std::declval<Actors&>().*L::to_actor).context()).*L::to_channel)>>;
 
     // (Every actor a link names is in the order: bsc::system checks it.)
+    // clang-format off
     static constexpr std::array<std::size_t, link_count> from = []<class... L>(std::tuple<L...>*) {
         return std::array<std::size_t, link_count>{place<L::from_actor>()...};
     }(static_cast<links*>(nullptr));
+    // clang-format on
+    // clang-format off
     static constexpr std::array<std::size_t, link_count> to = []<class... L>(std::tuple<L...>*) {
         return std::array<std::size_t, link_count>{place<L::to_actor>()...};
     }(static_cast<links*>(nullptr));
+    // clang-format on
+    // clang-format off
     static constexpr std::array<bool, link_count> lossless = []<class... L>(std::tuple<L...>*) {
         return std::array<bool, link_count>{std::is_same_v<typename L::when_stale, bsc::lossless>...};
     }(static_cast<links*>(nullptr));
+    // clang-format on
 };
 
 }  // namespace detail
@@ -160,8 +167,9 @@ public:
 
     node(System& sys, transport& t, node_options options) : system_(sys), net_(t), options_(std::move(options)) {
         if (!valid_topic_part(options_.prefix, true) || !valid_topic_part(options_.name, false))
-            throw std::invalid_argument("bsc::net::node: the prefix and the node's name must not be empty nor hold "
-                                        "'+', '#' or NUL, and the name no '/'");
+            throw std::invalid_argument(
+                "bsc::net::node: the prefix and the node's name must not be empty nor hold "
+                "'+', '#' or NUL, and the name no '/'");
         if (options_.period <= duration::zero())
             throw std::invalid_argument("bsc::net::node: the period must be positive");
         // Far beyond any use, and far from the clock's overflow.
@@ -172,8 +180,8 @@ public:
         options_.last_step = std::clamp<std::int64_t>(options_.last_step, -1, max_step);
         if (!options_.state_dir.empty()) std::filesystem::create_directories(options_.state_dir);
         for (std::size_t a = 0; a < N; ++a) {
-            local_[a] = options_.actors.empty() ||
-                        std::find(options_.actors.begin(), options_.actors.end(), plan::names[a]) != options_.actors.end();
+            local_[a] = options_.actors.empty() || std::find(options_.actors.begin(), options_.actors.end(),
+                                                             plan::names[a]) != options_.actors.end();
         }
         for (auto const& name : options_.actors)
             if (std::find(plan::names.begin(), plan::names.end(), name) == plan::names.end())
@@ -313,18 +321,22 @@ private:
 
     static constexpr std::uint64_t system_fingerprint() {
         bsc::detail::fingerprint f;
+        // clang-format off
         [&]<std::size_t... A>(std::index_sequence<A...>) {
             ((f.add(plan::names[A]),
               f.add(bsc::detail::chart_fingerprint<typename plan::template machine_at<A>>())),
              ...);
         }(std::make_index_sequence<N>{});
+        // clang-format on
         // The wiring too: the same charts linked otherwise are another system.
+        // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             ((f.add(plan::from[I]), f.add(plan::to[I]), f.add(plan::lossless[I] ? 1u : 0u),
               f.add(bsc::detail::member_name<std::tuple_element_t<I, links>::from_channel>()),
               f.add(bsc::detail::member_name<std::tuple_element_t<I, links>::to_channel>())),
              ...);
         }(std::make_index_sequence<L>{});
+        // clang-format on
         return f.value;
     }
 
@@ -332,9 +344,11 @@ private:
     static constexpr std::uint64_t actor_fingerprint() {
         return bsc::detail::chart_fingerprint<typename plan::template machine_at<A>>();
     }
+    // clang-format off
     static constexpr std::array<std::uint64_t, N> actor_fingerprints = []<std::size_t... A>(std::index_sequence<A...>) {
         return std::array<std::uint64_t, N>{actor_fingerprint<A>()...};
     }(std::make_index_sequence<N>{});
+    // clang-format on
 
     template <std::size_t I>
     static constexpr std::uint64_t link_fingerprint() {
@@ -343,11 +357,13 @@ private:
     }
 
     void link_topics() {
+        // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             ((value_topic_[I] = options_.prefix + "/value/" + std::string(plan::names[plan::from[I]]) + "/" +
                                 std::string(bsc::detail::member_name<std::tuple_element_t<I, links>::from_channel>())),
              ...);
         }(std::make_index_sequence<L>{});
+        // clang-format on
         // One message per channel, whatever the number of links that read it.
         for (std::size_t i = 0; i < L; ++i) {
             first_reader_[i] = i;
@@ -627,9 +643,11 @@ private:
     // reads a stale value, at least the pace or else the period: an actor that goes on without a
     // peer runs on its own clock, not as fast as the processor allows.
     bool paced(std::size_t a, std::int64_t n, bool stale_input, time_point now) {
-        auto const gap = stale_input ? (options_.pace.count() > 0 ? std::chrono::duration_cast<std::chrono::steady_clock::duration>(options_.pace)
-                                                                   : std::chrono::duration_cast<std::chrono::steady_clock::duration>(options_.period))
-                                     : std::chrono::duration_cast<std::chrono::steady_clock::duration>(options_.pace);
+        auto const gap = stale_input
+                             ? (options_.pace.count() > 0
+                                    ? std::chrono::duration_cast<std::chrono::steady_clock::duration>(options_.pace)
+                                    : std::chrono::duration_cast<std::chrono::steady_clock::duration>(options_.period))
+                             : std::chrono::duration_cast<std::chrono::steady_clock::duration>(options_.pace);
         (void)n;
         if (gap.count() == 0 || !last_step_at_[a]) return true;
         auto const due = *last_step_at_[a] + gap;
@@ -699,14 +717,13 @@ private:
         for (std::size_t i = 0; i < L; ++i) {
             if (plan::from[i] != a || first_reader_[i] != i) continue;
             bool remote = false;
-            for (std::size_t j = i; j < L; ++j)
-                remote = remote || (first_reader_[j] == i && !local_[plan::to[j]]);
+            for (std::size_t j = i; j < L; ++j) remote = remote || (first_reader_[j] == i && !local_[plan::to[j]]);
             if (!remote) continue;
             for_link(i, [&](auto I) {
                 using link = std::tuple_element_t<I, links>;
                 auto const& channel = (system_.actors.*link::from_actor).context().*link::from_channel;
-                out.emplace_back(value_topic_[I], wire::encode_value(peers_[a].completed, link_fingerprint<I>(),
-                                                                      channel.get()));
+                out.emplace_back(value_topic_[I],
+                                 wire::encode_value(peers_[a].completed, link_fingerprint<I>(), channel.get()));
             });
         }
         bool remote_peer = false;
@@ -730,15 +747,19 @@ private:
 
     template <class F>
     static void for_actor(std::size_t a, F&& f) {
+        // clang-format off
         [&]<std::size_t... A>(std::index_sequence<A...>) {
             ((a == A ? (f(std::integral_constant<std::size_t, A>{}), 0) : 0), ...);
         }(std::make_index_sequence<N>{});
+        // clang-format on
     }
     template <class F>
     static void for_link(std::size_t i, F&& f) {
+        // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             ((i == I ? (f(std::integral_constant<std::size_t, I>{}), 0) : 0), ...);
         }(std::make_index_sequence<L>{});
+        // clang-format on
     }
 
     System& system_;

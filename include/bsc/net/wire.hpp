@@ -57,8 +57,7 @@ inline std::optional<header> read_header(std::span<std::byte const> bytes) {
     auto const what = static_cast<kind>(p[3]);
     if (what != kind::value && what != kind::progress && what != kind::will) return std::nullopt;
     if (static_cast<std::uint8_t>(p[4]) != format_version) return std::nullopt;
-    return header{what, static_cast<std::int64_t>(detail::read_le(p + 5, 8)),
-                  detail::read_le(p + 13, 8)};
+    return header{what, static_cast<std::int64_t>(detail::read_le(p + 5, 8)), detail::read_le(p + 13, 8)};
 }
 
 /// The fingerprint of actor `Machine`'s output channel `Channel`: its chart, its name, its value's type.

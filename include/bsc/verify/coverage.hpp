@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include <bsc/compiled/machine.hpp>
+#include <bsc/machine.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/verify/explorer.hpp>
 
@@ -58,6 +58,7 @@ template <class Chart>
 std::vector<std::string> row_names() {
     using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
     std::vector<std::string> names(static_cast<std::size_t>(model::R));
+    // clang-format off
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         (
             [&] {
@@ -73,6 +74,7 @@ std::vector<std::string> row_names() {
             }(),
             ...);
     }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
+    // clang-format on
     return names;
 }
 
@@ -103,7 +105,8 @@ coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired, Ge
 /// Coverage for models whose state is the machine itself.
 template <class Model>
 coverage_report coverage(explorer<Model>& ex, std::vector<bool> const& fired) {
-    return coverage(ex, fired, [](auto const& m) -> auto const& { return m; });
+    return coverage(
+        ex, fired, [](auto const& m) -> auto const& { return m; });
 }
 
 }  // namespace bsc::verify

@@ -66,7 +66,8 @@ struct statistics {
         std::string out;
         for (auto const& w : widest) {
             std::string n = std::to_string(w.values);
-            for (auto i = static_cast<std::ptrdiff_t>(n.size()) - 3; i > 0; i -= 3) n.insert(static_cast<std::size_t>(i), ",");
+            for (auto i = static_cast<std::ptrdiff_t>(n.size()) - 3; i > 0; i -= 3)
+                n.insert(static_cast<std::size_t>(i), ",");
             out += (out.empty() ? "" : "; ") + w.name + ": " + n + " values";
         }
         return out;
@@ -217,8 +218,10 @@ private:
         for (std::size_t b = 0; b < n; ++b) {
             std::size_t const at = first + b;
             auto const bit = (static_cast<unsigned>(k[at / 8]) >> (at % 8)) & 1u;
-            if (n <= 64) value |= std::uint64_t{bit} << b;
-            else hash = (hash ^ bit ^ (b << 1)) * 0x100000001b3ull;
+            if (n <= 64)
+                value |= std::uint64_t{bit} << b;
+            else
+                hash = (hash ^ bit ^ (b << 1)) * 0x100000001b3ull;
         }
         return n <= 64 ? value : hash;
     }
@@ -246,8 +249,7 @@ private:
 
     std::size_t memory() const {
         return keys_.capacity() + table_.capacity() * 4 + parent_.capacity() * 4 + via_.capacity() * 2 +
-               edge_begin_.capacity() * 4 + edge_to_.capacity() * 4 +
-               edge_label_.capacity() * 2;
+               edge_begin_.capacity() * 4 + edge_to_.capacity() * 4 + edge_label_.capacity() * 2;
     }
 
     // What the containers may hold at the peak of the next state's expansion, which adds at

@@ -20,7 +20,7 @@
 
 #include <bsc/detail/type_name.hpp>
 #include <bsc/event_name.hpp>
-#include <bsc/verify/codec.hpp>
+#include <bsc/detail/verify/codec.hpp>
 
 namespace bsc::detail {
 // The clock every explored state is decoded at; far enough from zero that relative times fit.

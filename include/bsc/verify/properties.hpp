@@ -75,11 +75,14 @@ struct verdict {
     /// line: "5-16. [500ms-1600ms] 12 steps, same inputs and configuration".
     std::string to_string() const {
         std::string out = property + ": " +
-                          (result == status::holds ? "holds" : result == status::fails ? "FAILS" : "inconclusive");
+                          (result == status::holds   ? "holds"
+                           : result == status::fails ? "FAILS"
+                                                     : "inconclusive");
         if (!detail.empty()) out += " (" + detail + ")";
         out += '\n';
         auto const repeats = [&](std::size_t k) {
-            return k > 0 && trace[k].label == trace[k - 1].label && trace[k].configuration == trace[k - 1].configuration;
+            return k > 0 && trace[k].label == trace[k - 1].label &&
+                   trace[k].configuration == trace[k - 1].configuration;
         };
         for (std::size_t i = 0; i < trace.size();) {
             std::size_t end = i + 1;
@@ -125,7 +128,8 @@ concept timed_model = requires(Model const& m) {
 };
 
 template <class Model>
-void append_step(verify::explorer<Model> const& ex, std::vector<verify::trace_step>& out, std::string label, std::size_t i) {
+void append_step(verify::explorer<Model> const& ex, std::vector<verify::trace_step>& out, std::string label,
+                 std::size_t i) {
     std::optional<duration> time;
     if constexpr (timed_model<Model>) time = static_cast<duration::rep>(out.size()) * ex.model().period();
     out.push_back({std::move(label), ex.model().describe(ex.at(i)), time});
@@ -147,7 +151,8 @@ std::vector<verify::trace_step> path_to(verify::explorer<Model> const& ex, std::
 template <class Model>
 verify::verdict incomplete(verify::explorer<Model> const& ex, std::string property) {
     std::string why = "exploration stopped by " + ex.stats().stopped_by;
-    if (!ex.stats().widest.empty()) why += "; the parts of the state with the most distinct values: " + ex.stats().widest_text();
+    if (!ex.stats().widest.empty())
+        why += "; the parts of the state with the most distinct values: " + ex.stats().widest_text();
     verify::verdict v{std::move(property), verify::verdict::status::inconclusive, {}, std::move(why)};
     return v;
 }
@@ -266,7 +271,8 @@ std::vector<std::size_t> steps_to(verify::explorer<Model> const& ex, std::vector
             std::uint32_t const i = g.from[e];
             if (slowest[i] != never || --unsettled[i] != 0) continue;
             std::size_t most = 0;  // every successor is settled, so finite
-            for (auto f = ex.edges_begin(i); f < ex.edges_end(i); ++f) most = std::max(most, slowest[ex.edge_target(f)]);
+            for (auto f = ex.edges_begin(i); f < ex.edges_end(i); ++f)
+                most = std::max(most, slowest[ex.edge_target(f)]);
             slowest[i] = most + 1;
             queue.push_back(i);
         }
@@ -434,7 +440,8 @@ verdict leads_to_within(explorer<Model>& ex, std::string name, P p, Q q, duratio
             s = next;
             previous = label;
         }
-        return {name, verdict::status::fails, std::move(trace), "p holds at step " + std::to_string(start) + "; " + how};
+        return {name, verdict::status::fails, std::move(trace),
+                "p holds at step " + std::to_string(start) + "; " + how};
     }
     return {name, verdict::status::holds, {}, {}};
 }

@@ -38,8 +38,8 @@ private:
 inline constexpr auto chart = bsc::make_chart<panel>(
     bsc::composite<Lamp>(bsc::initial<Off>, bsc::state<On>),
     bsc::state<Off>[([](panel const& p) { return p.pressed(); })] / [](panel& p) { p.light(true); } = bsc::state<On>,
-    bsc::state<On>[([](panel const& p) { return p.timed_out(); })] / [](panel& p) { p.light(false); } =
-        bsc::state<Off>);
+    bsc::state<On>[([](panel const& p) { return p.timed_out(); })] /
+        [](panel& p) { p.light(false); } = bsc::state<Off>);
 }  // namespace lamp
 
 int main() {
