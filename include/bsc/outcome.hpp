@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include <bsc/policies.hpp>  // the policies, which bsc 0.1 declared here
+
 namespace bsc {
 
 /// The result of dispatching one event (run to completion, internal events included).
