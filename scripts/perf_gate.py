@@ -28,6 +28,7 @@ script exits 77 (ctest counts the test as skipped). Exit 0: within the baseline;
 """
 
 import argparse
+import concurrent.futures
 import json
 import os
 import re
@@ -82,7 +83,7 @@ def compile_object(cxx, source, out, extra=()):
 
 
 def callgrind_total(cmd, work):
-    out = work / "callgrind.out"
+    out = work / ("callgrind." + "_".join(Path(str(c)).name for c in cmd) + ".out")  # one per run: runs overlap
     run = subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", *map(str, cmd)],
                          capture_output=True, text=True)
     if run.returncode != 0:
@@ -93,29 +94,41 @@ def callgrind_total(cmd, work):
     raise RuntimeError("no totals in callgrind output")
 
 
-def measure_instructions(cxx, work):
+def measure_workload(cxx, work, w, directory, extra):
+    """Builds workload w and counts its instructions per event; returns (w, counts, report line)."""
+    exe = work / f"{w}_insns"
+    if directory is None:  # the cell
+        subprocess.run([cxx, *flags(), "-DBENCH_CELL_INSNS=1", str(ROOT / "bench" / "manufacturing_cell_bench.cpp"),
+                        "-lbenchmark", "-lpthread", "-o", str(exe)], check=True)
+    else:
+        objects = []
+        for impl in ("bsc", "hand"):
+            obj = work / f"{w}_{impl}.o"
+            compile_object(cxx, ROOT / "bench" / directory / f"{directory}_{impl}.cpp", obj, extra)
+            objects.append(str(obj))
+        subprocess.run([cxx, *flags(), f'-DBENCH_WORKLOAD_HEADER="{directory}/{directory}_workload.hpp"',
+                        f"-DBENCH_WORKLOAD={directory}_bench::workload", str(ROOT / "bench" / "insns_main.cpp"),
+                        *objects, "-lbenchmark", "-lpthread", "-o", str(exe)], check=True)
     counts = {}
-    for w, directory, extra in WORKLOADS:
-        exe = work / f"{w}_insns"
-        if directory is None:  # the cell
-            subprocess.run([cxx, *flags(), "-DBENCH_CELL_INSNS=1", str(ROOT / "bench" / "manufacturing_cell_bench.cpp"),
-                            "-lbenchmark", "-lpthread", "-o", str(exe)], check=True)
-        else:
-            objects = []
-            for impl in ("bsc", "hand"):
-                obj = work / f"{w}_{impl}.o"
-                compile_object(cxx, ROOT / "bench" / directory / f"{directory}_{impl}.cpp", obj, extra)
-                objects.append(str(obj))
-            subprocess.run([cxx, *flags(), f'-DBENCH_WORKLOAD_HEADER="{directory}/{directory}_workload.hpp"',
-                            f"-DBENCH_WORKLOAD={directory}_bench::workload", str(ROOT / "bench" / "insns_main.cpp"),
-                            *objects, "-lbenchmark", "-lpthread", "-o", str(exe)], check=True)
-        counts[w] = {}
-        for impl in IMPLEMENTATIONS:
-            with_events = callgrind_total([exe, impl, EVENTS], work)
-            without = callgrind_total([exe, impl, 0], work)
-            counts[w][impl] = round((with_events - without) / EVENTS, 2)
-        print(f"{w}: " + ", ".join(f"{impl} {counts[w][impl]:.2f}" for impl in IMPLEMENTATIONS) +
-              f" instructions/event (bsc / hand {counts[w]['bsc_compiled'] / counts[w]['hand_written']:.3f})")
+    for impl in IMPLEMENTATIONS:
+        with_events = callgrind_total([exe, impl, EVENTS], work)
+        without = callgrind_total([exe, impl, 0], work)
+        counts[impl] = round((with_events - without) / EVENTS, 2)
+    line = (f"{w}: " + ", ".join(f"{impl} {counts[impl]:.2f}" for impl in IMPLEMENTATIONS) +
+            f" instructions/event (bsc / hand {counts['bsc_compiled'] / counts['hand_written']:.3f})")
+    return w, counts, line
+
+
+def measure_instructions(cxx, work):
+    # The workloads are built and counted side by side, one per core (the test runs alone:
+    # RUN_SERIAL). Callgrind counts instructions, not time, so the load does not change them.
+    jobs = max(1, len(os.sched_getaffinity(0)))
+    with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+        results = list(pool.map(lambda spec: measure_workload(cxx, work, *spec), WORKLOADS))
+    counts = {}
+    for w, workload_counts, line in results:
+        counts[w] = workload_counts
+        print(line)
     return counts
 
 

@@ -42,7 +42,15 @@ class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, P
                                       detail::queue_for<Chart, Policy>> {
     using base = detail::driver<machine, Chart, Policy, Observer, detail::queue_for<Chart, Policy>>;
     friend base;
-    friend detail::backend_hooks;  // the driver calls the hooks through it (detail/runtime/backend.hpp)
+    // The driver's layers that call the hooks (detail/runtime/backend.hpp), and backend_hooks,
+    // through which the driver checks them.
+    friend detail::backend_hooks;
+    template <class, class, class, class, class>
+    friend class detail::settling;
+    template <class, class, class, class, class>
+    friend class detail::deferral;
+    template <class, class, class, class, class>
+    friend class detail::done_raising;
     // A dispatch marks the machine running only where a guard or a transition is about to run
     // (guard_holds, fire_from), or, in a chart with parallel states, at each microstep: an
     // ignored event in a chart without parallel states writes nothing.

@@ -10,8 +10,14 @@ class toy : public bsc::detail::driver<toy<Chart>, Chart, bsc::default_policy, b
                                        bsc::detail::queue_for<Chart, bsc::default_policy>> {
     using base = bsc::detail::driver<toy, Chart, bsc::default_policy, bsc::no_observer,
                                      bsc::detail::queue_for<Chart, bsc::default_policy>>;
-    friend base;
+    friend base;  // the driver's layers that call the hooks, and backend_hooks
     friend bsc::detail::backend_hooks;
+    template <class, class, class, class, class>
+    friend class bsc::detail::settling;
+    template <class, class, class, class, class>
+    friend class bsc::detail::deferral;
+    template <class, class, class, class, class>
+    friend class bsc::detail::done_raising;
     static constexpr bool marks_running_lazily = false;
     constexpr void enter_initial() {}
     template <int Trigger, class E>

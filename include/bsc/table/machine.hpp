@@ -118,7 +118,15 @@ class machine : public bsc::detail::driver<machine<Chart, Policy, Observer>, Cha
                                            typename tables<Chart, Policy>::raise_type> {
     using base = bsc::detail::driver<machine, Chart, Policy, Observer, typename tables<Chart, Policy>::raise_type>;
     friend base;
-    friend bsc::detail::backend_hooks;  // the driver calls the hooks through it (detail/runtime/backend.hpp)
+    // The driver's layers that call the hooks (detail/runtime/backend.hpp), and backend_hooks,
+    // through which the driver checks them.
+    friend bsc::detail::backend_hooks;
+    template <class, class, class, class, class>
+    friend class bsc::detail::settling;
+    template <class, class, class, class, class>
+    friend class bsc::detail::deferral;
+    template <class, class, class, class, class>
+    friend class bsc::detail::done_raising;
     static constexpr bool marks_running_lazily = false;  // a dispatch is marked running throughout
     using hooks = observer_hooks<Chart, Policy, Observer>;
     using base::observed;

@@ -47,7 +47,7 @@ protected:
     constexpr bool fire_or_defer(E const& e) {
         deferral_.requested = false;
         deferral_.other_fired = false;
-        bool const fired = backend_hooks::fire<Trigger>(backend(), e);
+        bool const fired = backend().template fire<Trigger>(e);
         if (deferral_.requested && !deferral_.other_fired) (void)deferred_(e);
         return fired;
     }
@@ -79,7 +79,7 @@ protected:
         if constexpr (defers)
             fired = fire_or_defer<trigger>(e);
         else
-            fired = backend_hooks::fire<trigger>(backend(), e);
+            fired = backend().template fire<trigger>(e);
         if constexpr (std::is_same_v<E, action_failed>)
             if (!fired) keep_failure(e.error);  // raised, but no transition takes it here
     }

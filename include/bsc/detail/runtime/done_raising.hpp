@@ -78,7 +78,7 @@ protected:
     constexpr void halt_if_final() {
         if constexpr (layout::can_halt)
             if (halted()) {
-                backend_hooks::exit_all(backend());
+                backend().exit_all();
                 queue_.clear();
             }
     }

@@ -243,7 +243,7 @@ public:
             detail::report<error::queried_state_not_in_chart<S>>();
             return false;
         } else {
-            return backend_hooks::is_active<s>(backend());
+            return backend().template is_active<s>();
         }
     }
 
@@ -298,7 +298,7 @@ protected:
         end_run(run_to_end([&] {
             if constexpr (tree.slots > 0) config_.active = layout::initial_bytes;
             latch_inputs(context_.value);
-            backend_hooks::enter_initial(backend());
+            backend().enter_initial();
             outcome const settled = finish(false);
             commit_outputs(context_.value);
             return settled;

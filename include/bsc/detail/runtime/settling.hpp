@@ -64,7 +64,7 @@ protected:
             if constexpr (defers)
                 fired = this->template fire_or_defer<Trigger>(e);
             else
-                fired = backend_hooks::fire_dispatched<Trigger>(backend(), e);
+                fired = backend().template fire_dispatched<Trigger>(e);
             settled = finish(fired);
             commit_outputs(context_.value);
 #if defined(__cpp_exceptions)
@@ -85,10 +85,10 @@ protected:
     template <std::size_t... I>
     constexpr int run_components(std::index_sequence<I...>) {
         constexpr auto const& components = layout::components;
-        bool const active_at_start[] = {backend_hooks::is_active<components[I]>(backend())...};
+        bool const active_at_start[] = {backend().template is_active<components[I]>()...};
         int fired = 0;
-        ((fired += active_at_start[I] && backend_hooks::is_active<components[I]>(backend()) &&
-                   backend_hooks::component_step<components[I]>(backend())),
+        ((fired += active_at_start[I] && backend().template is_active<components[I]>() &&
+                   backend().template component_step<components[I]>()),
          ...);
         return fired;
     }
@@ -110,7 +110,7 @@ protected:
         for (;;) {
             if constexpr (layout::has_trigger(eventless_id)) {
                 // Up to max_eventless_steps transitions settle; one more means the chart cycles.
-                for (std::size_t steps = 0; !halted() && backend_hooks::fire<eventless_id>(backend(), eventless{});)
+                for (std::size_t steps = 0; !halted() && backend().template fire<eventless_id>(eventless{});)
                     if (++steps > Policy::max_eventless_steps) return abandon();
             }
             if (halted()) break;
