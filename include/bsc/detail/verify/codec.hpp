@@ -435,7 +435,7 @@ auto timeout_periods(Machine& m, time_frame own) {
             }
             // (The slot is the tie-break, though sort_few keeps equal slots in order anyway.)
             sort_few(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count),
-                      [&](std::size_t a, std::size_t b) { return raw[a] < raw[b] || (raw[a] == raw[b] && a < b); });
+                     [&](std::size_t a, std::size_t b) { return raw[a] < raw[b] || (raw[a] == raw[b] && a < b); });
             std::uint64_t kept = 0;
             for (std::size_t k = 0; k < count; ++k) {
                 std::uint64_t const step = k == 0 ? raw[order[0]] : raw[order[k]] - raw[order[k - 1]];
