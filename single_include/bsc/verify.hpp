@@ -1183,9 +1183,9 @@ auto timeout_periods(Machine& m, time_frame own) {
                 order[k] = first + k;
                 raw[first + k] = own.periods(armed[first + k]);
             }
-            // (The slot is the tie-break, though sort_few keeps equal slots in order anyway.)
+            // (Equal ages stay in slot order: sort_few is stable, and the slots start in order.)
             sort_few(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count),
-                     [&](std::size_t a, std::size_t b) { return raw[a] < raw[b] || (raw[a] == raw[b] && a < b); });
+                     [&](std::size_t a, std::size_t b) { return raw[a] < raw[b]; });
             std::uint64_t kept = 0;
             for (std::size_t k = 0; k < count; ++k) {
                 std::uint64_t const step = k == 0 ? raw[order[0]] : raw[order[k]] - raw[order[k - 1]];
