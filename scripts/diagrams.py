@@ -38,6 +38,7 @@ PAGES = {
         ("eca_cell", "Main (Figure 5)"),
         ("eca_cell_extended", "Main extended with Pause (Figure 7b)"),
     ],
+    "docs/examples/filling_station.md": [("filling_station", "The station's controller (parent first)")],
     "docs/composition.md": [
         ("production_cell_feed_belt", "Feed belt actor"),
         ("production_cell_table", "Table actor"),

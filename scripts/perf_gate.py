@@ -43,11 +43,14 @@ ROOT = Path(__file__).resolve().parent.parent
 BASELINES = ROOT / "bench" / "baselines.json"
 # (name, bench/ directory, extra compile flags): flat_noexcept is the flat workload with its
 # actions declared noexcept, where the machine keeps no record of failures; *_lean also runs the
-# machine under bsc::lean_policy (no reentrancy test, no record of the last outcome).
+# machine under bsc::lean_policy (no reentrancy test, no record of the last outcome); deep_parent_first
+# declares the deep chart with parent-first priority (bench/bsc_variant.hpp), which must cost
+# what child first does.
 WORKLOADS = [("flat", "flat", []), ("flat_noexcept", "flat", ["-DBENCH_NOEXCEPT_ACTIONS=1"]),
              ("flat_lean", "flat", ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"]),
              ("mcs", "mcs", []), ("deep", "deep", []),
-             ("deep_lean", "deep", ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"]), ("wide", "wide", []),
+             ("deep_lean", "deep", ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"]),
+             ("deep_parent_first", "deep", ["-DBENCH_PARENT_FIRST=1"]), ("wide", "wide", []),
              ("wide_lean", "wide", ["-DBENCH_NOEXCEPT_ACTIONS=1", "-DBENCH_LEAN_POLICY=1"])]
 # The peers' own workloads, ported (Boost.SML's benchmark/ charts, fsm-benchmark's Large and
 # Deep), as users write them and lean.

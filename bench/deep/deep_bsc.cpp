@@ -48,7 +48,7 @@ constexpr auto level() {
 
 template <int... K>
 constexpr auto make_chart(std::integer_sequence<int, K...>) {
-    return bsc::make_chart<counters>(
+    return bsc::make_chart<counters, bench::priority>(  // child first, or parent first (bench/bsc_variant.hpp)
         bsc::composite<R>(bsc::initial<D<1>>, level<1>(), bsc::state<P<1>>),
         (bsc::state<D<K + 1>> + bsc::on_entry / entered)...,
         (bsc::state<D<K + 1>> + bsc::event<L<K + 1>> / leave<K + 1> = bsc::state<P<K + 1>>)...,

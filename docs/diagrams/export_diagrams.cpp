@@ -17,6 +17,7 @@
 #include <system_error>
 
 #include "../../examples/eca_cell/pause.hpp"
+#include "../../examples/filling_station/station.hpp"
 #include "../../examples/manufacturing_cell/controller.hpp"
 #include "../../examples/mcs/mcs.hpp"
 #include "../../examples/production_cell/controllers.hpp"
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
     ok = export_chart(dir, "production_cell_robot", pcell::robot_chart) && ok;
     ok = export_chart(dir, "production_cell_press", pcell::press_chart) && ok;
     ok = export_chart(dir, "production_cell_deposit_belt", pcell::deposit_belt_chart) && ok;
+    ok = export_chart(dir, "filling_station", filling::controller_chart) && ok;
     // Not an example: the constructs beyond the core, for the exports.* tests only.
     if (all_formats) ok = export_chart(dir, "beyond_core", beyond_core::chart) && ok;
     return ok ? 0 : 1;

@@ -12,6 +12,7 @@
 #include <bsc/detail/row_storage.hpp>
 #include <bsc/duration.hpp>
 #include <bsc/dsl/row.hpp>
+#include <bsc/priority.hpp>
 #include <bsc/dsl/tree.hpp>
 
 namespace bsc::detail {
@@ -88,12 +89,14 @@ constexpr bool is_compound_root() {
 
 namespace bsc {
 
-/// A statechart over the context type `Context`: the state tree `Root` and the rows.
+/// A statechart over the context type `Context`: the state tree `Root`, the priority `Order`
+/// among nested transitions (bsc/priority.hpp) and the rows.
 /// Obtain one with make_chart; run it with bsc::machine.
-template <class Context, class Root, class... Rows>
+template <class Context, class Root, priority Order, class... Rows>
 struct chart {
     using context_type = Context;
     using root_type = Root;
+    static constexpr priority order = Order;
     using row_types = detail::type_list<Rows...>;
     detail::row_storage<Rows...> rows;
 };
@@ -106,7 +109,8 @@ namespace detail {
 // composite between them has C's branch as its only child, and no row whose domain lies inside
 // P exits C) leaves, with its clock, every state D below P that is likewise active with P. A
 // timeout row of such a D with a longer delay never fires; with an equal delay, neither does
-// one of C declared later, or one of an ancestor of C (the deeper state's row is tried first).
+// one of C declared later, or one of an ancestor of C (child first: the deeper state's row is
+// tried first), or one of a descendant of C (parent first: the outer state's row is).
 // (make_chart reports it through the dead row's copy: dsl/row.hpp, timeout_trigger.) Returns
 // the positions (from 1) of the first dead row found and of the row that beats it; {0, 0} if
 // there is none.
@@ -136,7 +140,7 @@ constexpr bool active_with(topology<N> const& t, row_table<Count> const& r, int 
 
 template <std::size_t N, std::size_t Count>
 constexpr dead_timeout find_dead_timeout(topology<N> const& t, row_table<Count> const& r,
-                                         std::array<duration, Count> const& delay) {
+                                         std::array<duration, Count> const& delay, priority order) {
     std::array<std::size_t, Count> timeouts{};
     std::size_t count = 0;
     for (std::size_t i = 0; i < Count; ++i)
@@ -151,8 +155,10 @@ constexpr dead_timeout find_dead_timeout(topology<N> const& t, row_table<Count> 
                 std::size_t const j = timeouts[b];
                 int const d = r.source[j];
                 if (j == first || !t.contains(p, d) || (d != p && !active_with(t, r, p, d))) continue;
-                bool const beaten = delay[first] < delay[j] ||
-                                    (delay[first] == delay[j] && (d == c ? first < j : t.is_proper_ancestor(d, c)));
+                bool const tried_first = d == c                           ? first < j
+                                         : order == priority::child_first ? t.is_proper_ancestor(d, c)
+                                                                          : t.is_proper_ancestor(c, d);
+                bool const beaten = delay[first] < delay[j] || (delay[first] == delay[j] && tried_first);
                 if (beaten) return {j + 1, first + 1};
             }
         }
@@ -203,13 +209,18 @@ constexpr auto rows(Rows... rows) {
     return detail::flatten_rows(std::move(rows)...);
 }
 
-template <class Context, class Root, class... Rows>
+/// `make_chart<Context, bsc::parent_first>(tree, rows...)` declares a chart whose outer
+/// transitions have priority over inner ones (bsc/priority.hpp); `make_chart<Context>` is
+/// `make_chart<Context, bsc::child_first>`.
+// (One function, the priority a defaulted parameter: a forwarding overload would move the rows
+// into a second call, whose frame, spelling every row, a dead timeout's error would then carry.)
+template <class Context, priority Order = priority::child_first, class Root, class... Rows>
 constexpr auto make_chart(Root root, Rows... rows) {
     if constexpr ((detail::is_row_group<Rows> || ...)) {
         auto group = detail::flatten_rows(std::move(rows)...);
         // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return make_chart<Context>(std::move(root), detail::take_row<I>(group.rows)...);
+            return make_chart<Context, Order>(std::move(root), detail::take_row<I>(group.rows)...);
         }(std::make_index_sequence<detail::rows_in<decltype(group)>>{});
         // clang-format on
     } else if constexpr (!detail::is_compound_root<Root>()) {
@@ -222,13 +233,13 @@ constexpr auto make_chart(Root root, Rows... rows) {
     } else {
         // The chart, or, when its checks find errors, the rejected_chart whose destruction
         // reports them.
-        using chart_type = chart<Context, Root, Rows...>;
+        using chart_type = chart<Context, Root, Order, Rows...>;
         using errors = decltype(detail::check_chart<chart_type>());
         if constexpr (errors::size == 0) {
             if constexpr ((detail::is_timeout_row<Rows> || ...)) {
                 auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree,
                                                             detail::chart_model<chart_type>::rows,
-                                                            detail::delays_of(rows...));
+                                                            detail::delays_of(rows...), Order);
                 if (dead.row != 0) {
                     if (!std::is_constant_evaluated())
                         detail::bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(dead.row,

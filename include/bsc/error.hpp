@@ -69,6 +69,17 @@ struct dead_transition {
     }
 };
 
+template <class Source, class Trigger, class Target, class Outer>
+struct dead_transition_behind_outer {
+    constexpr ~dead_transition_behind_outer() {
+        static_assert(detail::dependent_false<dead_transition_behind_outer>,
+                      "bsc: dead transition under parent-first priority: Outer, an ancestor of this row's source, "
+                      "has an unguarded row on the same event (or on a family of it), which is tried first "
+                      "whenever the source is active; remove the row, guard the outer row, or declare the chart "
+                      "child-first (Target is bsc::detail::no_target for an internal row)");
+    }
+};
+
 template <class Event>
 struct event_in_two_families {
     constexpr ~event_in_two_families() {
@@ -177,6 +188,27 @@ struct state_not_in_chart {
         static_assert(detail::dependent_false<state_not_in_chart>,
                       "bsc: a row names a state that the state tree does not declare; declare it in the tree "
                       "(bsc::state, bsc::composite, bsc::parallel or bsc::final_state) or fix the row");
+    }
+};
+
+// bsc::in<S> in a row's guard: S must be a state the tree declares, and one that can be active.
+template <class State>
+struct in_of_state_not_in_chart {
+    constexpr ~in_of_state_not_in_chart() {
+        static_assert(detail::dependent_false<in_of_state_not_in_chart>,
+                      "bsc: a row's guard tests bsc::in<State>, but State is not a state of this chart (a misspelt "
+                      "name, or a state of another chart), so whether it is active means nothing; name a state "
+                      "that the tree declares");
+    }
+};
+
+template <class State>
+struct in_of_history_state {
+    constexpr ~in_of_history_state() {
+        static_assert(detail::dependent_false<in_of_history_state>,
+                      "bsc: a row's guard tests bsc::in<State>, but State is a history pseudo-state "
+                      "(shallow_history_state, deep_history_state), which is never active, so the test would "
+                      "always be false; test the composite the history state belongs to, or one of its children");
     }
 };
 

@@ -16,6 +16,7 @@
 #include <bsc/detail/compiled/plan.hpp>
 #include <bsc/detail/config.hpp>
 #include <bsc/detail/meta.hpp>
+#include <bsc/detail/model/configuration_view.hpp>
 #include <bsc/observer.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/policies.hpp>
@@ -349,14 +350,34 @@ private:
     // ---- transitions -------------------------------------------------------------------
     // Whether the guard of row Row holds. (Called for guarded rows only: an unguarded row holds,
     // and a call would instantiate a function for nothing.)
+    // A guard with bsc::in<S> is called with a view of the configuration bytes, whose tests are
+    // resolved at compile time (detail/model/configuration_view.hpp: only the bytes between S
+    // and its lowest common ancestor with the row's source, active while the guard is evaluated;
+    // one compare for S in another region); every other guard as g(context, event), as before.
     template <int Row, class E>
     constexpr bool guard_holds(E const& e) {
         static_assert(rows.guarded[Row]);
         if constexpr (!plan::has_parallel) this->mark_running();
-        if constexpr (sees_itself<Row, E>)
+        if constexpr (detail::tests_configuration<std::remove_cvref_t<decltype(this->template row<Row>().guard)>>)
+            return guard_holds_in<Row>(e);
+        else if constexpr (sees_itself<Row, E>)
             return this->test(this->template row<Row>().guard, std::as_const(context_.value), e);
         else
             return this->test(this->template row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e));
+    }
+    template <int Row, class E>
+    constexpr bool guard_holds_in(E const& e) {
+        detail::configuration_view<model, rows.source[Row]> const active{configuration_bytes()};
+        if constexpr (sees_itself<Row, E>)
+            return this->test(this->template row<Row>().guard, std::as_const(context_.value), e, active);
+        else
+            return this->test(this->template row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e), active);
+    }
+    constexpr std::uint8_t const* configuration_bytes() const {
+        if constexpr (tree.slots > 0)
+            return config_.active.data();
+        else
+            return nullptr;  // no composite: no test reads a byte
     }
 
     template <int Row, class E>

@@ -12,8 +12,8 @@ namespace bsc {
 namespace detail {
 template <class T>
 inline constexpr bool is_chart = false;
-template <class Context, class Root, class... Rows>
-inline constexpr bool is_chart<chart<Context, Root, Rows...>> = true;
+template <class Context, class Root, priority Order, class... Rows>
+inline constexpr bool is_chart<chart<Context, Root, Order, Rows...>> = true;
 }  // namespace detail
 
 /// The type of a chart that bsc::make_chart returned (`decltype(chart)`, const or not), or

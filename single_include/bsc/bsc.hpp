@@ -366,6 +366,17 @@ struct dead_transition {
     }
 };
 
+template <class Source, class Trigger, class Target, class Outer>
+struct dead_transition_behind_outer {
+    constexpr ~dead_transition_behind_outer() {
+        static_assert(detail::dependent_false<dead_transition_behind_outer>,
+                      "bsc: dead transition under parent-first priority: Outer, an ancestor of this row's source, "
+                      "has an unguarded row on the same event (or on a family of it), which is tried first "
+                      "whenever the source is active; remove the row, guard the outer row, or declare the chart "
+                      "child-first (Target is bsc::detail::no_target for an internal row)");
+    }
+};
+
 template <class Event>
 struct event_in_two_families {
     constexpr ~event_in_two_families() {
@@ -474,6 +485,27 @@ struct state_not_in_chart {
         static_assert(detail::dependent_false<state_not_in_chart>,
                       "bsc: a row names a state that the state tree does not declare; declare it in the tree "
                       "(bsc::state, bsc::composite, bsc::parallel or bsc::final_state) or fix the row");
+    }
+};
+
+// bsc::in<S> in a row's guard: S must be a state the tree declares, and one that can be active.
+template <class State>
+struct in_of_state_not_in_chart {
+    constexpr ~in_of_state_not_in_chart() {
+        static_assert(detail::dependent_false<in_of_state_not_in_chart>,
+                      "bsc: a row's guard tests bsc::in<State>, but State is not a state of this chart (a misspelt "
+                      "name, or a state of another chart), so whether it is active means nothing; name a state "
+                      "that the tree declares");
+    }
+};
+
+template <class State>
+struct in_of_history_state {
+    constexpr ~in_of_history_state() {
+        static_assert(detail::dependent_false<in_of_history_state>,
+                      "bsc: a row's guard tests bsc::in<State>, but State is a history pseudo-state "
+                      "(shallow_history_state, deep_history_state), which is never active, so the test would "
+                      "always be false; test the composite the history state belongs to, or one of its children");
     }
 };
 
@@ -1086,10 +1118,13 @@ inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = tr
 // structure alone, guards ignored:
 //   - a row leaving a final child of a composite root: the machine halts there, and dispatch
 //     only ever answers outcome::halted;
-//   - a row on an event leaving a composite or parallel state S when every basic or final state
-//     below S takes that event first with an unguarded row of its own or of an ancestor below S
-//     (on the event or on a family of it):
-//     the event is consumed below S in every configuration, so it never reaches S's row.
+//   - child first (the default priority): a row on an event leaving a composite or parallel
+//     state S when every basic or final state below S takes that event first with an unguarded
+//     row of its own or of an ancestor below S (on the event or on a family of it): the event
+//     is consumed below S in every configuration, so it never reaches S's row;
+//   - parent first: a row on an event leaving S when a proper ancestor of S has an unguarded
+//     row on that event or on a family of it: that row is tried first whenever S is active;
+//     likewise an eventless row, below an unguarded eventless row of the same component.
 // Reachability and dead ends (reachability.hpp) then follow only the rows that can fire.
 // A timeout row behind a shorter unguarded timeout of the same state is found where the
 // delays are known, in make_chart's constant evaluation (chart.hpp).
@@ -1712,7 +1747,8 @@ constexpr auto raise(E e) {
 // end include/bsc/dsl/action.hpp
 // begin include/bsc/dsl/guard.hpp
 // Guards: conditions on the context (and the event) that enable a transition.
-// Wrap a callable with bsc::guard to compose it with !, && and ||.
+// Wrap a callable with bsc::guard to compose it with !, && and ||. bsc::in<S>, SCXML's In(S),
+// is a guard on the machine's configuration: whether state S is active.
 
 #include <type_traits>
 #include <utility>
@@ -1725,6 +1761,25 @@ struct guard_base {};  // marks bsc guard wrappers, so the operators below apply
 template <class G>
 concept bsc_guard = std::is_base_of_v<guard_base, G>;
 
+// Whether a guard tests the configuration: it is, or has a part that is, a bsc::in<S>. Such a
+// guard is called as g(ctx, e, active), where `active` answers active.is_active<S>() (a
+// configuration view of the back end, detail/model/configuration_view.hpp); every other guard
+// as before, g(ctx, e), so that a chart without bsc::in compiles and runs as it did. (A member
+// of the guard types, reads_configuration, so that a named guard inherits it from its guard.)
+template <class G>
+inline constexpr bool tests_configuration = false;
+template <class G>
+    requires(G::reads_configuration)
+inline constexpr bool tests_configuration<G> = true;
+
+// What the checks hand a guard that tests the configuration: a view whose every state is active.
+struct any_configuration {
+    template <class S>
+    constexpr bool is_active() const noexcept {
+        return true;
+    }
+};
+
 template <class F>
 struct guard_fn : guard_base {
     [[no_unique_address]] F fn;
@@ -1732,14 +1787,38 @@ struct guard_fn : guard_base {
     constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(call_guard(fn, ctx, e))) {
         return call_guard(fn, ctx, e);
     }
+    // Called so when another part of the guard tests the configuration, which this one ignores.
+    template <class Ctx, class E, class Active>
+    constexpr bool operator()(Ctx const& ctx, E const& e, Active const&) const
+        noexcept(noexcept(call_guard(fn, ctx, e))) {
+        return call_guard(fn, ctx, e);
+    }
+};
+
+/// bsc::in<S>: whether state S is active (SCXML's In). Only callable with a configuration view.
+template <class S>
+struct in_guard : guard_base {
+    using state = S;
+    static constexpr bool reads_configuration = true;
+    template <class Ctx, class E, class Active>
+    constexpr bool operator()(Ctx const&, E const&, Active const& active) const
+        noexcept(noexcept(active.template is_active<S>())) {
+        return active.template is_active<S>();
+    }
 };
 
 template <class G>
 struct not_guard : guard_base {
     [[no_unique_address]] G g;
+    static constexpr bool reads_configuration = tests_configuration<G>;
     template <class Ctx, class E>
     constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(!g(ctx, e))) {
         return !g(ctx, e);
+    }
+    template <class Ctx, class E, class Active>
+    constexpr bool operator()(Ctx const& ctx, E const& e, Active const& active) const
+        noexcept(noexcept(!g(ctx, e, active))) {
+        return !g(ctx, e, active);
     }
 };
 
@@ -1747,9 +1826,15 @@ template <class L, class R>
 struct and_guard : guard_base {
     [[no_unique_address]] L l;
     [[no_unique_address]] R r;
+    static constexpr bool reads_configuration = tests_configuration<L> || tests_configuration<R>;
     template <class Ctx, class E>
     constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(l(ctx, e) && r(ctx, e))) {
         return l(ctx, e) && r(ctx, e);
+    }
+    template <class Ctx, class E, class Active>
+    constexpr bool operator()(Ctx const& ctx, E const& e, Active const& active) const
+        noexcept(noexcept(l(ctx, e, active) && r(ctx, e, active))) {
+        return l(ctx, e, active) && r(ctx, e, active);
     }
 };
 
@@ -1757,9 +1842,15 @@ template <class L, class R>
 struct or_guard : guard_base {
     [[no_unique_address]] L l;
     [[no_unique_address]] R r;
+    static constexpr bool reads_configuration = tests_configuration<L> || tests_configuration<R>;
     template <class Ctx, class E>
     constexpr bool operator()(Ctx const& ctx, E const& e) const noexcept(noexcept(l(ctx, e) || r(ctx, e))) {
         return l(ctx, e) || r(ctx, e);
+    }
+    template <class Ctx, class E, class Active>
+    constexpr bool operator()(Ctx const& ctx, E const& e, Active const& active) const
+        noexcept(noexcept(l(ctx, e, active) || r(ctx, e, active))) {
+        return l(ctx, e, active) || r(ctx, e, active);
     }
 };
 
@@ -1816,6 +1907,15 @@ template <class F>
 constexpr auto guard(F f) {
     return detail::guard_fn<F>{{}, std::move(f)};
 }
+
+/// SCXML's In(S): a guard that holds while state S is active, as the configuration is when the
+/// guard is evaluated (before the exits of the microstep it selects for). Composes with `!`,
+/// `&&`, `||` like any bsc guard: `state<B1> + event<go> [bsc::in<A2>] = state<B2>`,
+/// `[!bsc::in<A2> && ready]`.
+/// Requirements: S is a state of the chart's tree (bsc::error::in_of_state_not_in_chart), not a
+/// history pseudo-state (bsc::error::in_of_history_state), which is never active.
+template <class S>
+inline constexpr detail::in_guard<S> in{};
 
 }  // namespace bsc
 // end include/bsc/dsl/guard.hpp
@@ -2127,6 +2227,17 @@ template <class R>
 inline constexpr bool is_initial_row = false;
 template <class S, class A>
 inline constexpr bool is_initial_row<initial_row<S, A>> = true;
+
+// Whether a row's guard tests the configuration (bsc::in<S>), and whether any of a list of rows'
+// does: a back end calls such guards with a view of the configuration (dsl/guard.hpp).
+template <class R>
+inline constexpr bool row_tests_configuration = false;
+template <class S, class Tr, class G, class A, class T>
+inline constexpr bool row_tests_configuration<transition_row<S, Tr, G, A, T>> = tests_configuration<G>;
+template <class Rows>
+inline constexpr bool any_row_tests_configuration = false;
+template <class... Rows>
+inline constexpr bool any_row_tests_configuration<type_list<Rows...>> = (row_tests_configuration<Rows> || ...);
 
 }  // namespace bsc::detail
 
@@ -2614,6 +2725,32 @@ constexpr auto parallel(A...) {
 
 }  // namespace bsc
 // end include/bsc/dsl/tree.hpp
+// begin include/bsc/priority.hpp
+// bsc::priority: which of two enabled transitions a state takes when one leaves an ancestor of
+// the other's source (docs/semantics.md, "Selection").
+
+#include <cstdint>
+
+namespace bsc {
+
+/// The order in which a basic state's candidate transitions are tried, chosen once per chart:
+/// `bsc::make_chart<Context, bsc::parent_first>(tree, rows...)`.
+/// - `child_first` (the default; SCXML, UML): the rows of the state itself first, then its
+///   parent's, up to the root. An inner row overrides an outer one.
+/// - `parent_first` (Stateflow, STATEMATE, IEC 61131-3 interlocks): the root's rows first, down
+///   to the state's own. An outer row, an emergency stop for example, wins over every row
+///   below it on the same event.
+/// Among the rows of one state, declaration order either way. The choice is made at compile
+/// time: dispatch tries the candidates in a fixed order, and neither order costs an instruction.
+enum class priority : std::uint8_t { child_first, parent_first };
+
+/// `bsc::make_chart<Context, bsc::child_first>`: the default, written out.
+inline constexpr priority child_first = priority::child_first;
+/// `bsc::make_chart<Context, bsc::parent_first>`: outer transitions first.
+inline constexpr priority parent_first = priority::parent_first;
+
+}  // namespace bsc
+// end include/bsc/priority.hpp
 // begin include/bsc/detail/model/event_families.hpp
 // Event families: a row on event U also takes every event E derived from U, and a row on
 // bsc::any_event takes every event (SCXML's event descriptors, which match by prefix, written
@@ -3049,6 +3186,8 @@ struct chart_model {
 
     static constexpr int N = static_cast<int>(nodes::size);
     static constexpr int R = static_cast<int>(row_types::size);
+    // Which of a state's candidate rows are tried first: its own or its ancestors'.
+    static constexpr priority order = Chart::order;
 
     static constexpr topology<nodes::size> tree = [] {
         topology<nodes::size> t{};
@@ -3162,10 +3301,11 @@ template <std::size_t R>
 struct row_liveness {
     std::array<bool, R> dead{};
     int first_dead = -1;  // the first dead row in declaration order, or -1
+    int outer = -1;       // parent first: the ancestor whose row always beats first_dead; else -1
 };
 
 template <std::size_t N, std::size_t R>
-constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<R> const& r) {
+constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<R> const& r, priority order) {
     row_liveness<R> found;
     constexpr int root = 1;
     bool const root_halts = N > 1 && t.kinds[root] == kind::composite;
@@ -3183,8 +3323,19 @@ constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<
         int const s = r.source[i];
         auto const si = static_cast<std::size_t>(s);
         bool dead = false;
+        int outer = -1;
         if (root_halts && t.kinds[si] == kind::final_state && t.parent[si] == root) {
             dead = true;
+        } else if (order == priority::parent_first) {
+            // An eventless row is tried within its [BSC] component only, under a scan policy:
+            // the ancestors above the nearest parallel state take their turn in another one.
+            bool const eventless = r.trigger[i] == eventless_id;
+            if (r.trigger[i] >= 0 || eventless)
+                for (int a = t.parent[si]; a >= 0 && outer < 0; a = t.parent[static_cast<std::size_t>(a)]) {
+                    if (eventless && t.kinds[static_cast<std::size_t>(a)] == kind::parallel) break;
+                    if (takes_unguarded(a, r.trigger[i])) outer = a;
+                }
+            dead = outer >= 0;
         } else if (r.trigger[i] >= 0 && !t.is_leaf(s) && t.end[si] > s + 1) {
             dead = true;
             for (int a = s + 1; a < t.end[si] && dead; ++a) {
@@ -3196,7 +3347,10 @@ constexpr row_liveness<R> find_dead_transitions(topology<N> const& t, row_table<
             }
         }
         found.dead[i] = dead;
-        if (dead && found.first_dead < 0) found.first_dead = static_cast<int>(i);
+        if (dead && found.first_dead < 0) {
+            found.first_dead = static_cast<int>(i);
+            found.outer = outer;
+        }
     }
     return found;
 }
@@ -3353,7 +3507,10 @@ constexpr std::array<int, sizeof...(Events)> completed_states(type_list<Events..
 // begin include/bsc/detail/checks/livelock.hpp
 // Eventless livelock: a cycle of unguarded eventless transitions, which dispatch would
 // follow forever. Nodes are basic states; u -> v when an unguarded eventless transition
-// enabled in u (its source is u or an ancestor) enters v.
+// enabled in u (its source is u or an ancestor) enters v, and no other unguarded eventless
+// transition enabled in u is tried before it (bsc/priority.hpp): with child-first priority,
+// one whose source lies between u and the row's; with parent-first, one of an ancestor of the
+// row's source.
 
 // begin include/bsc/detail/checks/reachability.hpp
 // Reachability (structure only, guards ignored) and dead ends. Both follow only the rows
@@ -3525,14 +3682,26 @@ constexpr bool has_unguarded_eventless(row_table<R> const& r) {
 // Calls f(u, v, source) for each edge u -> v between basic states that an unguarded eventless
 // transition (from `source`, enabled in u) makes.
 template <std::size_t N, std::size_t R, class F>
-constexpr void for_each_eventless_edge(topology<N> const& t, row_table<R> const& r, F&& f) {
+constexpr void for_each_eventless_edge(topology<N> const& t, row_table<R> const& r, priority order, F&& f) {
+    std::array<bool, N> has_unguarded{};  // the states with an unguarded eventless row
+    for (std::size_t i = 0; i < R; ++i)
+        if (r.kinds[i] == row_kind::transition && !r.guarded[i] && r.trigger[i] == eventless_id)
+            has_unguarded[static_cast<std::size_t>(r.source[i])] = true;
+    // Whether a state from `below` up to `above` (exclusive) has one.
+    auto const taken_between = [&](int below, int above) {
+        for (int a = below; a != above && a >= 0; a = t.parent[static_cast<std::size_t>(a)])
+            if (has_unguarded[static_cast<std::size_t>(a)]) return true;
+        return false;
+    };
     for (std::size_t i = 0; i < R; ++i) {
         if (r.kinds[i] != row_kind::transition || r.guarded[i] || r.trigger[i] != eventless_id) continue;
         int const s = r.source[i];
+        if (order == priority::parent_first && taken_between(t.parent[static_cast<std::size_t>(s)], -1)) continue;
         std::array<bool, N> entered{};
         if (r.target[i] >= 0) mark_entry(t, entered, r.domain[i], r.target[i]);
         for (int u = s; u < t.end[static_cast<std::size_t>(s)]; ++u) {
             if (!t.is_leaf(u)) continue;
+            if (order == priority::child_first && taken_between(u, s)) continue;
             if (r.target[i] < 0) {
                 f(u, u, s);  // internal: it stays in the same states and fires again
                 continue;
@@ -3544,16 +3713,16 @@ constexpr void for_each_eventless_edge(topology<N> const& t, row_table<R> const&
 }
 
 template <std::size_t N, std::size_t R>
-constexpr std::size_t count_eventless_edges(topology<N> const& t, row_table<R> const& r) {
+constexpr std::size_t count_eventless_edges(topology<N> const& t, row_table<R> const& r, priority order) {
     std::size_t n = 0;
-    if (has_unguarded_eventless(r)) for_each_eventless_edge(t, r, [&](int, int, int) { ++n; });
+    if (has_unguarded_eventless(r)) for_each_eventless_edge(t, r, order, [&](int, int, int) { ++n; });
     return n;
 }
 
 // Returns the source of an unguarded eventless transition on a cycle, or -1. E is the number
 // of edges (count_eventless_edges); zero in the common case, which then costs nothing more.
 template <std::size_t E, std::size_t N, std::size_t R>
-constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) {
+constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r, priority order) {
     if constexpr (E == 0) {
         return -1;
     } else {
@@ -3562,7 +3731,7 @@ constexpr int find_eventless_cycle(topology<N> const& t, row_table<R> const& r) 
         };
         std::array<edge, E> edges{};
         std::size_t count = 0;
-        for_each_eventless_edge(t, r, [&](int u, int v, int s) { edges[count++] = {u, v, s}; });
+        for_each_eventless_edge(t, r, order, [&](int u, int v, int s) { edges[count++] = {u, v, s}; });
         // Peel off states without incoming or without outgoing edges among the rest: what remains
         // is the union of the cycles.
         std::array<bool, N> removed{};
@@ -3799,6 +3968,15 @@ struct guard_words {
         out(static_name_of<G>().empty() ? std::string_view{"guard"} : static_name_of<G>());
     }
 };
+template <class S>
+struct guard_words<in_guard<S>> {  // bsc::in<S>: "In(S)", as the exports write it
+    template <class Out>
+    static constexpr void write(Out& out, guard_precedence) {
+        out("In(");
+        out(name_of<S>);
+        out(")");
+    }
+};
 template <class G>
 struct guard_words<not_guard<G>> {
     template <class Out>
@@ -3996,6 +4174,30 @@ struct bad_guard<and_guard<L, R>, Ctx, E> {
 template <class L, class R, class Ctx, class E>
 struct bad_guard<or_guard<L, R>, Ctx, E> {
     using type = concat_t<typename bad_guard<L, Ctx, E>::type, typename bad_guard<R, Ctx, E>::type>;
+};
+
+// The states a guard tests with bsc::in<S>, in order, as a list: what make_chart checks are
+// states of the chart that can be active (detail/checks/checks.hpp, check_in_guards). A guard
+// with bsc::in<S> is called with the configuration (dsl/guard.hpp): its signature is valid.
+template <class G>
+struct in_states {
+    using type = type_list<>;
+};
+template <class S>
+struct in_states<in_guard<S>> {
+    using type = type_list<S>;
+};
+template <class Name, class G>
+struct in_states<named_guard<Name, G>> : in_states<G> {};
+template <class G>
+struct in_states<not_guard<G>> : in_states<G> {};
+template <class L, class R>
+struct in_states<and_guard<L, R>> {
+    using type = concat_t<typename in_states<L>::type, typename in_states<R>::type>;
+};
+template <class L, class R>
+struct in_states<or_guard<L, R>> {
+    using type = concat_t<typename in_states<L>::type, typename in_states<R>::type>;
 };
 
 // The same for actions; Raise is what the checks hand them as the raise argument
@@ -4443,7 +4645,8 @@ constexpr auto check_done_events() {
 }
 
 template <class Chart>
-inline constexpr auto liveness_of = find_dead_transitions(chart_model<Chart>::tree, chart_model<Chart>::rows);
+inline constexpr auto liveness_of = find_dead_transitions(chart_model<Chart>::tree, chart_model<Chart>::rows,
+                                                          chart_model<Chart>::order);
 
 template <class Chart>
 constexpr auto check_dead_transitions() {
@@ -4451,9 +4654,16 @@ constexpr auto check_dead_transitions() {
     constexpr int row = liveness_of<Chart>.first_dead;
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return type_list<row_error<
-            Chart, row,
-            error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>>{};
+        constexpr int outer = liveness_of<Chart>.outer;
+        if constexpr (outer >= 0)
+            return type_list<row_error<
+                Chart, row,
+                error::dead_transition_behind_outer<typename R::source, typename trigger_type<R>::type,
+                                                    typename R::target, typename model::template tag_at<outer>>>>{};
+        else
+            return type_list<row_error<
+                Chart, row,
+                error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -4479,8 +4689,8 @@ constexpr auto check_reachability() {
 template <class Chart>
 constexpr auto check_livelock() {
     using model = chart_model<Chart>;
-    constexpr std::size_t edges = count_eventless_edges(model::tree, model::rows);
-    constexpr int source = find_eventless_cycle<edges>(model::tree, model::rows);
+    constexpr std::size_t edges = count_eventless_edges(model::tree, model::rows, model::order);
+    constexpr int source = find_eventless_cycle<edges>(model::tree, model::rows, model::order);
     if constexpr (source >= 0)
         return type_list<error::eventless_livelock<typename model::template tag_at<source>>>{};
     else
@@ -4498,6 +4708,57 @@ constexpr auto check_signatures() {
         return type_list<>{};
 }
 
+// bsc::in<S> in a guard: S must be a state of the chart, and not a history state (never
+// active). The first such S of each row's guard, as its error; nothing for a chart without
+// bsc::in, which is most.
+template <class Model, class S>
+constexpr auto in_state_errors() {
+    constexpr int s = state_index<S, typename Model::tags>::value;
+    if constexpr (s < 0)
+        return type_list<error::in_of_state_not_in_chart<S>>{};
+    else if constexpr (Model::tree.kinds[static_cast<std::size_t>(s)] == kind::history)
+        return type_list<error::in_of_history_state<S>>{};
+    else
+        return type_list<>{};
+}
+template <class Model, class Row>
+constexpr auto in_guard_errors(Row const*) {
+    if constexpr (row_tests_configuration<Row>) {
+        using states = typename in_states<std::remove_cv_t<decltype(Row::guard)>>::type;
+        // clang-format off
+        return []<class... S>(type_list<S...>) {
+            return concat_t<decltype(in_state_errors<Model, S>())...>{};
+        }(states{});
+        // clang-format on
+    } else {
+        return type_list<>{};
+    }
+}
+template <class Model, class... Rows>
+constexpr int first_in_guard_error(type_list<Rows...>) {
+    constexpr bool bad[] = {(decltype(in_guard_errors<Model>(static_cast<Rows const*>(nullptr)))::size > 0)..., false};
+    for (std::size_t i = 0; i < sizeof...(Rows); ++i)
+        if (bad[i]) return static_cast<int>(i);
+    return -1;
+}
+
+template <class Chart>
+constexpr auto check_in_guards() {
+    using model = chart_model<Chart>;
+    if constexpr (!any_row_tests_configuration<typename Chart::row_types>) {
+        return type_list<>{};
+    } else {
+        constexpr int row = first_in_guard_error<model>(typename Chart::row_types{});
+        if constexpr (row >= 0) {
+            using errors = decltype(in_guard_errors<model>(
+                static_cast<typename model::template row_at<row> const*>(nullptr)));
+            return type_list<row_error<Chart, row, at<0, errors>>>{};
+        } else {
+            return type_list<>{};
+        }
+    }
+}
+
 // The errors of a chart, as a type_list; empty for a well-formed chart.
 template <class Chart>
 constexpr auto check_chart() {
@@ -4510,7 +4771,8 @@ constexpr auto check_chart() {
                         decltype(check_deferrals<Chart>()), decltype(check_event_families<Chart>()),
                         decltype(check_determinism<Chart>()), decltype(check_done_events<Chart>()),
                         decltype(check_dead_transitions<Chart>()), decltype(check_reachability<Chart>()),
-                        decltype(check_livelock<Chart>()), decltype(check_signatures<Chart>())>{};
+                        decltype(check_livelock<Chart>()), decltype(check_signatures<Chart>()),
+                        decltype(check_in_guards<Chart>())>{};
 }
 
 }  // namespace bsc::detail
@@ -4636,12 +4898,14 @@ constexpr bool is_compound_root() {
 
 namespace bsc {
 
-/// A statechart over the context type `Context`: the state tree `Root` and the rows.
+/// A statechart over the context type `Context`: the state tree `Root`, the priority `Order`
+/// among nested transitions (bsc/priority.hpp) and the rows.
 /// Obtain one with make_chart; run it with bsc::machine.
-template <class Context, class Root, class... Rows>
+template <class Context, class Root, priority Order, class... Rows>
 struct chart {
     using context_type = Context;
     using root_type = Root;
+    static constexpr priority order = Order;
     using row_types = detail::type_list<Rows...>;
     detail::row_storage<Rows...> rows;
 };
@@ -4654,7 +4918,8 @@ namespace detail {
 // composite between them has C's branch as its only child, and no row whose domain lies inside
 // P exits C) leaves, with its clock, every state D below P that is likewise active with P. A
 // timeout row of such a D with a longer delay never fires; with an equal delay, neither does
-// one of C declared later, or one of an ancestor of C (the deeper state's row is tried first).
+// one of C declared later, or one of an ancestor of C (child first: the deeper state's row is
+// tried first), or one of a descendant of C (parent first: the outer state's row is).
 // (make_chart reports it through the dead row's copy: dsl/row.hpp, timeout_trigger.) Returns
 // the positions (from 1) of the first dead row found and of the row that beats it; {0, 0} if
 // there is none.
@@ -4684,7 +4949,7 @@ constexpr bool active_with(topology<N> const& t, row_table<Count> const& r, int 
 
 template <std::size_t N, std::size_t Count>
 constexpr dead_timeout find_dead_timeout(topology<N> const& t, row_table<Count> const& r,
-                                         std::array<duration, Count> const& delay) {
+                                         std::array<duration, Count> const& delay, priority order) {
     std::array<std::size_t, Count> timeouts{};
     std::size_t count = 0;
     for (std::size_t i = 0; i < Count; ++i)
@@ -4699,8 +4964,10 @@ constexpr dead_timeout find_dead_timeout(topology<N> const& t, row_table<Count> 
                 std::size_t const j = timeouts[b];
                 int const d = r.source[j];
                 if (j == first || !t.contains(p, d) || (d != p && !active_with(t, r, p, d))) continue;
-                bool const beaten = delay[first] < delay[j] ||
-                                    (delay[first] == delay[j] && (d == c ? first < j : t.is_proper_ancestor(d, c)));
+                bool const tried_first = d == c                           ? first < j
+                                         : order == priority::child_first ? t.is_proper_ancestor(d, c)
+                                                                          : t.is_proper_ancestor(c, d);
+                bool const beaten = delay[first] < delay[j] || (delay[first] == delay[j] && tried_first);
                 if (beaten) return {j + 1, first + 1};
             }
         }
@@ -4751,13 +5018,18 @@ constexpr auto rows(Rows... rows) {
     return detail::flatten_rows(std::move(rows)...);
 }
 
-template <class Context, class Root, class... Rows>
+/// `make_chart<Context, bsc::parent_first>(tree, rows...)` declares a chart whose outer
+/// transitions have priority over inner ones (bsc/priority.hpp); `make_chart<Context>` is
+/// `make_chart<Context, bsc::child_first>`.
+// (One function, the priority a defaulted parameter: a forwarding overload would move the rows
+// into a second call, whose frame, spelling every row, a dead timeout's error would then carry.)
+template <class Context, priority Order = priority::child_first, class Root, class... Rows>
 constexpr auto make_chart(Root root, Rows... rows) {
     if constexpr ((detail::is_row_group<Rows> || ...)) {
         auto group = detail::flatten_rows(std::move(rows)...);
         // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return make_chart<Context>(std::move(root), detail::take_row<I>(group.rows)...);
+            return make_chart<Context, Order>(std::move(root), detail::take_row<I>(group.rows)...);
         }(std::make_index_sequence<detail::rows_in<decltype(group)>>{});
         // clang-format on
     } else if constexpr (!detail::is_compound_root<Root>()) {
@@ -4770,13 +5042,13 @@ constexpr auto make_chart(Root root, Rows... rows) {
     } else {
         // The chart, or, when its checks find errors, the rejected_chart whose destruction
         // reports them.
-        using chart_type = chart<Context, Root, Rows...>;
+        using chart_type = chart<Context, Root, Order, Rows...>;
         using errors = decltype(detail::check_chart<chart_type>());
         if constexpr (errors::size == 0) {
             if constexpr ((detail::is_timeout_row<Rows> || ...)) {
                 auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree,
                                                             detail::chart_model<chart_type>::rows,
-                                                            detail::delays_of(rows...));
+                                                            detail::delays_of(rows...), Order);
                 if (dead.row != 0) {
                     if (!std::is_constant_evaluated())
                         detail::bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(dead.row,
@@ -5437,8 +5709,8 @@ struct fields {};
 
 // begin include/bsc/detail/compiled/plan.hpp
 // Compile-time dispatch plans: for a trigger, which states lead to a transition and, for each
-// basic state, which transitions are its candidates in SCXML order (deepest source first,
-// then declaration order). The compiled machine expands these into switches and straight-line
+// basic state, which transitions are its candidates in the chart's priority order (deepest
+// source first, or outermost first; then declaration order). The compiled machine expands these into switches and straight-line
 // code; nothing here exists at run time.
 
 #include <array>
@@ -5869,50 +6141,59 @@ struct plan : chart_layout<Model> {
         }
     }();
 
-    static constexpr int candidate_count(int leaf, int trigger) {
+    // Calls f(a) for each state a from `leaf` up to `top`, in the order their rows are tried:
+    // `leaf` first under child-first priority, `top` first under parent-first (bsc/priority.hpp).
+    // Fixed here, so that either order is the same straight-line code.
+    template <class F>
+    static constexpr void for_each_tried(int leaf, int top, F&& f) {
+        if constexpr (Model::order == priority::child_first) {
+            for (int a = leaf;; a = tree.parent[static_cast<std::size_t>(a)]) {
+                f(static_cast<std::size_t>(a));
+                if (a == top) break;
+            }
+        } else {
+            int const levels = tree.depth[static_cast<std::size_t>(leaf)] - tree.depth[static_cast<std::size_t>(top)];
+            for (int k = levels; k >= 0; --k) {
+                int a = leaf;
+                for (int i = 0; i < k; ++i) a = tree.parent[static_cast<std::size_t>(a)];
+                f(static_cast<std::size_t>(a));
+            }
+        }
+    }
+
+    // The rows on `trigger` a state in `leaf` tries, up to `top`, in priority order.
+    static constexpr int candidate_count(int leaf, int top, int trigger) {
         int n = 0;
-        for (int a = leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
-            for (int i = from_source_begin[static_cast<std::size_t>(a)];
-                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+        for_each_tried(leaf, top, [&](std::size_t a) {
+            for (int i = from_source_begin[a]; i < from_source_begin[a + 1]; ++i)
                 n += is_transition_on(from_source[static_cast<std::size_t>(i)], trigger) ? 1 : 0;
+        });
         return n;
     }
+    template <std::size_t Count>
+    static constexpr std::array<int, Count> candidate_rows(int leaf, int top, int trigger) {
+        std::array<int, Count> out{};
+        std::size_t n = 0;
+        for_each_tried(leaf, top, [&](std::size_t a) {
+            for (int i = from_source_begin[a]; i < from_source_begin[a + 1]; ++i)
+                if (is_transition_on(from_source[static_cast<std::size_t>(i)], trigger))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
+        });
+        return out;
+    }
 
+    // The candidates of basic state Leaf on the trigger: its rows and its ancestors'.
     template <int Leaf, int Trigger>
-    static constexpr auto candidates = [] {
-        std::array<int, static_cast<std::size_t>(candidate_count(Leaf, Trigger))> out{};
-        std::size_t n = 0;
-        for (int a = Leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
-            for (int i = from_source_begin[static_cast<std::size_t>(a)];
-                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
-                if (is_transition_on(from_source[static_cast<std::size_t>(i)], Trigger))
-                    out[n++] = from_source[static_cast<std::size_t>(i)];
-        return out;
-    }();
+    static constexpr auto candidates =
+        candidate_rows<static_cast<std::size_t>(candidate_count(Leaf, 0, Trigger))>(Leaf, 0, Trigger);
 
-    static constexpr int component_candidate_count(int frontier, int component) {
-        int n = 0;
-        for (int a = frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
-            for (int i = from_source_begin[static_cast<std::size_t>(a)];
-                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
-                n += is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition) ? 1 : 0;
-            if (a == component) break;
-        }
-        return n;
-    }
+    // The condition-driven rows a component's turn tries from its active frontier up to the
+    // component itself ([BSC]: one transition per component per cycle).
     template <int Frontier, int Component>
-    static constexpr auto component_candidates = [] {
-        std::array<int, static_cast<std::size_t>(component_candidate_count(Frontier, Component))> out{};
-        std::size_t n = 0;
-        for (int a = Frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
-            for (int i = from_source_begin[static_cast<std::size_t>(a)];
-                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
-                if (is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition))
-                    out[n++] = from_source[static_cast<std::size_t>(i)];
-            if (a == Component) break;
-        }
-        return out;
-    }();
+    static constexpr auto component_candidates =
+        candidate_rows<static_cast<std::size_t>(candidate_count(Frontier, Component, any_condition))>(Frontier,
+                                                                                                      Component,
+                                                                                                      any_condition);
 
     // The timeout rows of the source of timeout row `row` declared after it, in declaration
     // order: those it competes with by due time when its condition holds (the earlier ones did
@@ -6064,6 +6345,90 @@ struct plan : chart_layout<Model> {
 
 }  // namespace bsc::detail
 // end include/bsc/detail/compiled/plan.hpp
+// begin include/bsc/detail/model/configuration_view.hpp
+// What a guard that tests the configuration (bsc::in<S>, dsl/guard.hpp) sees of it: a view of the
+// configuration bytes that answers is_active<S>(), for the guard of one row. Both back ends hand
+// it to such guards (the compiled machine's guard_holds, the table's guard thunks).
+//
+// The test is resolved at compile time. A guard is evaluated only while its row's source is
+// active (it is one of the candidates of an active state, or of an active component), so every
+// common ancestor of S and the source is known to be active: only the states from S up to, not
+// including, their lowest common ancestor remain, and of those only the ones whose parent is a
+// composite need a byte compared (a region of a parallel state is active with its parent). For S
+// in another region of a parallel state above the source that is one compare; for S the source
+// or one of its ancestors, none (true); for S below another child of a composite above the
+// source, none either (false: the composite's active child is the source's).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+namespace bsc::detail {
+
+// One compare: the byte at `slot` selects the child at `ordinal`.
+struct byte_test {
+    int slot = 0;
+    int ordinal = 0;
+};
+
+// Whether state s can never be active while state `known` is: they lie below different children
+// of a composite, whose byte selects one (the states with a byte; a parallel state has none).
+template <class Tree>
+constexpr bool exclusive_states(Tree const& tree, int s, int known) {
+    int const top = tree.lca(s, known);
+    return top != s && top != known && tree.slot[static_cast<std::size_t>(top)] >= 0;
+}
+
+// The compares that tell whether state s is active while state `known` is: one per composite
+// on the path from s up to, not including, their lowest common ancestor; innermost first.
+template <class Tree>
+constexpr int in_test_count(Tree const& tree, int s, int known) {
+    int const top = tree.lca(s, known);
+    int n = 0;
+    for (int x = s; x != top; x = tree.parent[static_cast<std::size_t>(x)])
+        n += tree.slot[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(x)])] >= 0;
+    return n;
+}
+template <class Model, int S, int Known>
+inline constexpr auto in_tests = [] {
+    constexpr auto const& tree = Model::tree;
+    std::array<byte_test, static_cast<std::size_t>(in_test_count(tree, S, Known))> out{};
+    std::size_t n = 0;
+    for (int x = S; x != tree.lca(S, Known); x = tree.parent[static_cast<std::size_t>(x)]) {
+        int const slot = tree.slot[static_cast<std::size_t>(tree.parent[static_cast<std::size_t>(x)])];
+        if (slot >= 0) out[n++] = {slot, tree.ordinal[static_cast<std::size_t>(x)]};
+    }
+    return out;
+}();
+
+/// The configuration as the guard of a row from state Source sees it: `active` points at the
+/// configuration bytes (bsc::configuration::active; null for a chart without composites, where
+/// no test reads a byte).
+template <class Model, int Source>
+struct configuration_view {
+    std::uint8_t const* active;
+
+    template <class S>
+    constexpr bool is_active() const noexcept {
+        constexpr int s = Model::template index_of_state<S>;
+        static_assert(s > 0, "bsc::in<S>: S is not a state of the chart (bsc::error::in_of_state_not_in_chart)");
+        if constexpr (exclusive_states(Model::tree, s, Source)) {
+            return false;
+        } else {
+            constexpr auto const& tests = in_tests<Model, s, Source>;
+            // clang-format off
+            return [&]<std::size_t... I>(std::index_sequence<I...>) {
+                return ((active[static_cast<std::size_t>(tests[I].slot)] ==
+                         static_cast<std::uint8_t>(tests[I].ordinal)) && ...);
+            }(std::make_index_sequence<tests.size()>{});
+            // clang-format on
+        }
+    }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/model/configuration_view.hpp
 // begin include/bsc/observer.hpp
 // Observer hooks: entry, exit and transition notifications for traces and tests. An
 // observer implements any subset of the hooks; a machine without one pays nothing.
@@ -6156,8 +6521,8 @@ namespace bsc {
 namespace detail {
 template <class T>
 inline constexpr bool is_chart = false;
-template <class Context, class Root, class... Rows>
-inline constexpr bool is_chart<chart<Context, Root, Rows...>> = true;
+template <class Context, class Root, priority Order, class... Rows>
+inline constexpr bool is_chart<chart<Context, Root, Order, Rows...>> = true;
 }  // namespace detail
 
 /// The type of a chart that bsc::make_chart returned (`decltype(chart)`, const or not), or
@@ -7541,11 +7906,13 @@ constexpr void update_timers(Ctx& ctx, duration now) {
 
 // begin include/bsc/detail/guard_label.hpp
 // The label of a guard, as the exports draw it and the logger writes it: its name (bsc::named),
-// a composition of named guards with their operators, or "guard". Also the pieces the labels
-// of actions share (detail/export/model.hpp): has_name, expression, parenthesized.
+// a composition of named guards with their operators, or "guard"; bsc::in<S> is "In(S)". Also
+// the pieces the labels of actions share (detail/export/model.hpp): has_name, expression,
+// parenthesized.
 
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 
 namespace bsc::detail {
@@ -7572,6 +7939,19 @@ template <class T>
 inline constexpr bool is_guard_fn = false;
 template <class F>
 inline constexpr bool is_guard_fn<guard_fn<F>> = true;
+template <class T>
+inline constexpr bool is_in_guard = false;
+template <class S>
+inline constexpr bool is_in_guard<in_guard<S>> = true;
+
+// How a label writes bsc::in<S>: "In(S)" with S's unqualified name. The exports pass their own,
+// which names S as their diagrams do (detail/export/model.hpp).
+struct in_by_name {
+    template <class S>
+    std::string operator()(std::type_identity<S>) const {
+        return "In(" + std::string(name_of<S>) + ")";
+    }
+};
 
 /// A label and whether any part of it was named; `precedence` places parentheses:
 /// 1 for ||, 2 for &&, 3 for a name or a negation.
@@ -7585,31 +7965,34 @@ inline std::string parenthesized(expression const& e, int context) {
     return e.precedence < context ? "(" + e.text + ")" : e.text;
 }
 
-template <class G>
-expression guard_expression(G const& g) {
+template <class G, class InText = in_by_name>
+expression guard_expression(G const& g, InText const& in_text = {}) {
     if constexpr (has_name<G>) {
         return {std::string(std::string_view{g.name}), true, 3};
+    } else if constexpr (is_in_guard<G>) {
+        return {in_text(std::type_identity<typename G::state>{}), true, 3};
     } else if constexpr (is_not_guard<G>) {
-        auto const inner = guard_expression(g.g);
+        auto const inner = guard_expression(g.g, in_text);
         return {"!" + parenthesized(inner, 3), inner.named, 3};
     } else if constexpr (is_and_guard<G> || is_or_guard<G>) {
         int const precedence = is_and_guard<G> ? 2 : 1;
-        auto const l = guard_expression(g.l);
-        auto const r = guard_expression(g.r);
+        auto const l = guard_expression(g.l, in_text);
+        auto const r = guard_expression(g.r, in_text);
         return {parenthesized(l, precedence) + (is_and_guard<G> ? " && " : " || ") + parenthesized(r, precedence),
                 l.named || r.named, precedence};
     } else if constexpr (is_guard_fn<G>) {
-        return guard_expression(g.fn);
+        return guard_expression(g.fn, in_text);
     } else {
         return {"guard", false, 3};
     }
 }
 
 /// The label of a guard: its name, a composition of named guards ("!released && at_home", an
-/// unnamed part shown as "guard"), or "guard" when no part has a name.
-template <class G>
-std::string guard_label(G const& g) {
-    auto const e = guard_expression(g);
+/// unnamed part shown as "guard"), or "guard" when no part has a name. bsc::in<S> counts as
+/// named: "In(S)", or as `in_text(std::type_identity<S>{})` writes it.
+template <class G, class InText = in_by_name>
+std::string guard_label(G const& g, InText const& in_text = {}) {
+    auto const e = guard_expression(g, in_text);
     return e.named ? e.text : "guard";
 }
 
@@ -8191,16 +8574,22 @@ constexpr void run_block(Block&& block, OnFailure&& on_failure) {
 namespace bsc::detail {
 
 // Whether a row's guard or action can throw, called as a machine calls it: a transition's
-// guard with (context, event) and its action with (context, event, queue), an entry or exit
-// action with (context, queue).
+// guard with (context, event), or (context, event, configuration) if it tests the configuration
+// (bsc::in<S>), and its action with (context, event, queue), an entry or exit action with
+// (context, queue).
 template <class Context, class Queue, class Row>
 struct row_nothrow {  // an entry or exit row
     static constexpr bool value = std::is_nothrow_invocable_v<decltype(Row::action) const&, Context&, Queue&>;
 };
+template <class G, class Context, class E, bool = tests_configuration<G>>
+inline constexpr bool guard_call_nothrow = std::is_nothrow_invocable_v<G const&, Context const&, E const&>;
+template <class G, class Context, class E>
+inline constexpr bool guard_call_nothrow<G, Context, E, true> =
+    std::is_nothrow_invocable_v<G const&, Context const&, E const&, any_configuration const&>;
 template <class Context, class Queue, class S, class Trigger, class G, class A, class T>
 struct row_nothrow<Context, Queue, transition_row<S, Trigger, G, A, T>> {
     using event = row_event_t<transition_row<S, Trigger, G, A, T>>;
-    static constexpr bool value = std::is_nothrow_invocable_v<G const&, Context const&, event const&> &&
+    static constexpr bool value = guard_call_nothrow<G, Context, event> &&
                                   std::is_nothrow_invocable_v<A const&, Context&, event const&, Queue&>;
 };
 
@@ -10278,14 +10667,34 @@ private:
     // ---- transitions -------------------------------------------------------------------
     // Whether the guard of row Row holds. (Called for guarded rows only: an unguarded row holds,
     // and a call would instantiate a function for nothing.)
+    // A guard with bsc::in<S> is called with a view of the configuration bytes, whose tests are
+    // resolved at compile time (detail/model/configuration_view.hpp: only the bytes between S
+    // and its lowest common ancestor with the row's source, active while the guard is evaluated;
+    // one compare for S in another region); every other guard as g(context, event), as before.
     template <int Row, class E>
     constexpr bool guard_holds(E const& e) {
         static_assert(rows.guarded[Row]);
         if constexpr (!plan::has_parallel) this->mark_running();
-        if constexpr (sees_itself<Row, E>)
+        if constexpr (detail::tests_configuration<std::remove_cvref_t<decltype(this->template row<Row>().guard)>>)
+            return guard_holds_in<Row>(e);
+        else if constexpr (sees_itself<Row, E>)
             return this->test(this->template row<Row>().guard, std::as_const(context_.value), e);
         else
             return this->test(this->template row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e));
+    }
+    template <int Row, class E>
+    constexpr bool guard_holds_in(E const& e) {
+        detail::configuration_view<model, rows.source[Row]> const active{configuration_bytes()};
+        if constexpr (sees_itself<Row, E>)
+            return this->test(this->template row<Row>().guard, std::as_const(context_.value), e, active);
+        else
+            return this->test(this->template row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e), active);
+    }
+    constexpr std::uint8_t const* configuration_bytes() const {
+        if constexpr (tree.slots > 0)
+            return config_.active.data();
+        else
+            return nullptr;  // no composite: no test reads a byte
     }
 
     template <int Row, class E>
@@ -11360,9 +11769,18 @@ struct state_row {
 template <class Chart, class Raise>
 struct transition_row {
     using context_type = typename Chart::context_type;
+    /// Whether a guard of the chart tests the configuration (bsc::in<S>): then every guard
+    /// receives the configuration bytes too (bsc::configuration::active, null for a chart without
+    /// composites), and the guards of other charts do not.
+    static constexpr bool guards_read_configuration =
+        bsc::detail::any_row_tests_configuration<typename Chart::row_types>;
     /// The guard, called with the event the transition is triggered by (bsc::eventless{} for
-    /// eventless transitions) passed as `event`.
-    using guard_fn = bool (*)(Chart const& chart, context_type const& context, void const* event);
+    /// eventless transitions) passed as `event`, and in a chart with bsc::in<S> with the
+    /// configuration bytes as `active`.
+    using guard_fn = std::conditional_t<guards_read_configuration,
+                                        bool (*)(Chart const& chart, context_type const& context, void const* event,
+                                                 std::uint8_t const* active),
+                                        bool (*)(Chart const& chart, context_type const& context, void const* event)>;
     using action_fn = void (*)(Chart const& chart, context_type& context, void const* event, Raise& raise);
     /// The delay of a timeout. `after(d)` stores d in the chart object, not in its type, so the
     /// delay is read from the chart like a guard.
@@ -11427,6 +11845,20 @@ private:
     static bool guard_thunk(chart_type const& chart, context_type const& context, void const* event) {
         return static_cast<bool>(bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows)
                                      .guard(context, *static_cast<event_type_of<Row> const*>(event)));
+    }
+    // The thunk of a guard in a chart with bsc::in<S>: a guard that tests the configuration sees
+    // it through the view of its row (detail/model/configuration_view.hpp, tests resolved at
+    // compile time), the others ignore it.
+    template <int Row>
+    static bool configuration_guard_thunk(chart_type const& chart, context_type const& context, void const* event,
+                                          [[maybe_unused]] std::uint8_t const* active) {
+        auto const& guard = bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows).guard;
+        auto const& e = *static_cast<event_type_of<Row> const*>(event);
+        using view = bsc::detail::configuration_view<model, rows.source[Row]>;
+        if constexpr (bsc::detail::tests_configuration<std::remove_cvref_t<decltype(guard)>>)
+            return static_cast<bool>(guard(context, e, view{active}));
+        else
+            return static_cast<bool>(guard(context, e));
     }
 
     template <int Row>
@@ -11504,7 +11936,10 @@ private:
                     : rows.trigger[i] == bsc::detail::eventless_id ? eventless_id
                                                                    : timeout_id;
         row.to = id(rows.target[i]);
-        if constexpr (rows.guarded[i]) row.guard = &guard_thunk<r>;
+        if constexpr (rows.guarded[i] && transition_row_type::guards_read_configuration)
+            row.guard = &configuration_guard_thunk<r>;
+        else if constexpr (rows.guarded[i])
+            row.guard = &guard_thunk<r>;
         // (A deferring row keeps its event and runs nothing: no action either.)
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(std::declval<R const&>().action)>,
                                       bsc::detail::no_action> &&
@@ -11537,6 +11972,16 @@ public:
     static constexpr std::size_t slots = static_cast<std::size_t>(tree.slots);
     /// The root of the chart (row 1; row 0 is the implicit top).
     static constexpr state_id root = layout::root;
+    /// The chart's priority among nested transitions (bsc/priority.hpp): whether a basic
+    /// state tries its own transitions before its ancestors' (child_first) or after
+    /// (parent_first).
+    static constexpr bsc::priority order = model::order;
+    /// The most states on one path from the top down: the longest list of origins a state tries.
+    static constexpr std::size_t levels = [] {
+        int deepest = 0;
+        for (int d : tree.depth) deepest = d > deepest ? d : deepest;
+        return static_cast<std::size_t>(deepest) + 1;
+    }();
     /// The number of state S (its row in `states`).
     template <class S>
     static constexpr state_id state_of = id(model::template index_of_state<S>);
@@ -11976,9 +12421,20 @@ private:
     // ---- transitions ----------------------------------------------------------------------
     using selection = bsc::detail::selection<tables_type::max_active_leaves>;
 
+    // (In a chart with bsc::in<S>, every guard receives the configuration bytes as well:
+    // tables.hpp, guards_read_configuration.)
     bool guard_holds(std::int16_t t, void const* e) {
         auto const g = transitions[static_cast<std::size_t>(t)].guard;
-        return g == nullptr || this->test(g, this->chart(), this->context_.value, e);
+        if constexpr (transition_row_type::guards_read_configuration)
+            return g == nullptr || this->test(g, this->chart(), this->context_.value, e, configuration_bytes());
+        else
+            return g == nullptr || this->test(g, this->chart(), this->context_.value, e);
+    }
+    std::uint8_t const* configuration_bytes() const {
+        if constexpr (tables_type::slots > 0)
+            return this->config_.active.data();
+        else
+            return nullptr;  // no composite: no test reads a byte
     }
 
     // The event a microstep processes, as the thunks of a transition receive it. Without
@@ -12018,12 +12474,12 @@ private:
     static constexpr bsc::any_event any_event_value{};
 
     // Step 2 for one active basic state: its candidates are the transitions on the event (or on
-    // a family of it) from the state itself, then from its parent, and so on up to the root
-    // (deepest first); among those of one origin, declaration order. The first whose guard
-    // holds is selected.
+    // a family of it) from the state itself and from each of its ancestors up to the root, in
+    // the chart's priority order (tables::order: the state first, or the root first); among
+    // those of one origin, declaration order. The first whose guard holds is selected.
     template <class Event>
     bool select_from(state_id leaf, event_id event, Event const& e, selection& sel) {
-        for (state_id a = leaf; a != no_state; a = states[a].parent)
+        return for_each_tried(leaf, tables_type::root, [&](state_id a) {
             for (std::int16_t t = tables_type::first_out[a]; t >= 0;
                  t = tables_type::next_out[static_cast<std::size_t>(t)]) {
                 auto const on = transitions[static_cast<std::size_t>(t)].event;
@@ -12032,7 +12488,30 @@ private:
                     return true;
                 }
             }
-        return false;
+            return false;
+        });
+    }
+
+    // Calls try_state(a) for each state a from `from` up to `top` (an ancestor of it, or
+    // itself) in the chart's priority order, until one returns true; returns whether one did.
+    template <class F>
+    static bool for_each_tried(state_id from, state_id top, F&& try_state) {
+        if constexpr (tables_type::order == bsc::priority::child_first) {
+            for (state_id a = from;; a = states[a].parent) {
+                if (try_state(a)) return true;
+                if (a == top) return false;
+            }
+        } else {
+            std::array<state_id, tables_type::levels> path{};
+            std::size_t n = 0;
+            for (state_id a = from;; a = states[a].parent) {
+                path[n++] = a;
+                if (a == top) break;
+            }
+            while (n > 0)
+                if (try_state(path[--n])) return true;
+            return false;
+        }
     }
 
     void run_action(std::int16_t t, void const* e) {
@@ -12123,20 +12602,20 @@ private:
 
     // One component's turn: from its active frontier (the active basic state below it, or a
     // parallel state whose regions are components of their own) up to the component itself,
-    // deepest origin first and table order among one origin's, the first condition-driven
-    // transition whose condition holds fires.
+    // in the chart's priority order and table order among one origin's, the first
+    // condition-driven transition whose condition holds fires.
     bool run_component(state_id component) {
         state_id frontier = component;
         while (states[frontier].status.kind == state_kind::composite) frontier = active_child(frontier);
-        for (state_id a = frontier;; a = states[a].parent) {
+        return for_each_tried(frontier, component, [&](state_id a) {
             for (std::int16_t t = tables_type::first_out[a]; t >= 0;
                  t = tables_type::next_out[static_cast<std::size_t>(t)])
                 if (is_condition(transitions[static_cast<std::size_t>(t)].event) && condition_holds(t)) {
                     fire_condition(first_due(t));
                     return true;
                 }
-            if (a == component) return false;
-        }
+            return false;
+        });
     }
 
     // A timeout's condition: its origin has been active for its delay (the origin is active: it

@@ -40,6 +40,7 @@
 // values in the chart); each format of <bsc/export.hpp> is a walk over this model.
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -193,10 +194,15 @@ struct transition_info {
     std::string event;              ///< the event's name, "after(3s)" for a timeout, empty if eventless
     std::string delay;              ///< a timeout's delay, "3s"
     std::string guard;              ///< empty if unguarded
+    std::string cond;               ///< the guard as SCXML's cond: bsc::in<S> as In('id'); empty if unguarded
     std::string action;             ///< empty if no action
     bool local = false;             ///< a local transition (bsc::local): its source stays active
     bool defers = false;            ///< a row that defers its event (`/ bsc::defer`)
     std::vector<int> more_targets;  ///< a transition with several targets (bsc::targets): the others
+    /// Under parent-first priority, the transitions of its source's ancestors (indices in
+    /// diagram::transitions) that take every event it takes and are tried before it: it fires
+    /// only when none of them is enabled. Empty under child-first.
+    std::vector<int> tried_before;
 
     /// Every target: none for an internal transition, else `target` and `more_targets`.
     std::vector<int> targets() const {
@@ -219,6 +225,7 @@ struct transition_info {
 struct diagram {
     std::vector<state_info> states;            ///< document order; states[0] is the root
     std::vector<transition_info> transitions;  ///< declaration order, internal ones included
+    priority order = priority::child_first;    ///< the chart's priority among nested transitions
 
     /// s is a or below a.
     bool contains(int a, int s) const {
@@ -282,7 +289,22 @@ inline std::vector<std::string> unique_identifiers(std::vector<std::string> cons
     return out;
 }
 
-template <class Row>
+// How a label writes bsc::in<S> (detail/guard_label.hpp): In(S) with S's label, as the diagrams
+// name it, or for SCXML In('id') with the id of S's element.
+template <class Model>
+auto in_state_text(diagram const& m, bool scxml) {
+    return [&m, scxml]<class S>(std::type_identity<S>) {
+        constexpr int s = Model::template index_of_state<S>;
+        if constexpr (s < 1) {  // not a state of the chart (which make_chart rejects)
+            return "In(" + std::string(name_of<S>) + ")";
+        } else {
+            auto const& st = m[s - 1];
+            return scxml ? "In('" + st.id + "')" : "In(" + st.label + ")";
+        }
+    };
+}
+
+template <class Model, class Row>
 void add_row(diagram& m, Row const& row, int index, int source) {
     if constexpr (is_entry_row<Row>) {
         m.states[static_cast<std::size_t>(source)].entry.push_back(action_label(row.action));
@@ -305,12 +327,49 @@ void add_row(diagram& m, Row const& row, int index, int source) {
             t.trigger = trigger_kind::event;
             t.event = std::string(event_name<typename trigger::event>);  // as dispatch_by_name knows it
         }
-        if constexpr (Row::guarded) t.guard = guard_label(row.guard);
+        if constexpr (Row::guarded) {
+            t.guard = guard_label(row.guard, in_state_text<Model>(m, false));
+            if constexpr (tests_configuration<std::remove_cvref_t<decltype(row.guard)>>)
+                t.cond = guard_label(row.guard, in_state_text<Model>(m, true));
+            else
+                t.cond = t.guard;
+        }
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row.action)>, no_action>)
             t.action = action_label(row.action);
         t.defers = Row::defers;
         m.transitions.push_back(std::move(t));
     }
+}
+
+/// Under parent-first priority, whether transition row `outer` is tried before row `inner` on
+/// every event `inner` takes: it leaves a proper ancestor of inner's source, on the same trigger
+/// or on a family of it. (A timeout's trigger is its own.)
+template <std::size_t N, std::size_t R>
+constexpr bool outer_tried_first(topology<N> const& tree, row_table<R> const& rows, int outer, int inner) {
+    auto const o = static_cast<std::size_t>(outer);
+    auto const i = static_cast<std::size_t>(inner);
+    return rows.kinds[o] == row_kind::transition && tree.is_proper_ancestor(rows.source[o], rows.source[i]) &&
+           rows.takes(rows.trigger[o], rows.trigger[i]);
+}
+
+/// Under parent-first priority, a row of an ancestor that takes some of the events of a row
+/// below it but not all (its trigger derives from the inner row's): it is tried first for
+/// those events only, which SCXML's conditions cannot say. {-1, -1} if there is none.
+template <class Model>
+constexpr std::array<int, 2> outer_row_narrower() {
+    if constexpr (Model::order == priority::parent_first && Model::has_families) {
+        for (int o = 0; o < Model::R; ++o)
+            for (int i = 0; i < Model::R; ++i) {
+                auto const oi = static_cast<std::size_t>(o);
+                auto const ii = static_cast<std::size_t>(i);
+                if (Model::rows.kinds[oi] == row_kind::transition && Model::rows.kinds[ii] == row_kind::transition &&
+                    Model::tree.is_proper_ancestor(Model::rows.source[oi], Model::rows.source[ii]) &&
+                    Model::rows.trigger[oi] != Model::rows.trigger[ii] &&
+                    Model::rows.takes(Model::rows.trigger[ii], Model::rows.trigger[oi]))
+                    return {o, i};
+            }
+    }
+    return {-1, -1};
 }
 
 /// The model of a chart (a bsc::make_chart result).
@@ -344,7 +403,7 @@ diagram model_of(Chart const& chart) {
     }
     // clang-format off
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (add_row(m, detail::row_at<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), ...);
+        (add_row<model>(m, detail::row_at<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), ...);
     }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
     // clang-format on
     for (std::size_t k = 0; k < m.transitions.size(); ++k) {
@@ -359,10 +418,20 @@ diagram model_of(Chart const& chart) {
         t.local = t.target >= 0 && model::rows.domain[static_cast<std::size_t>(t.row)] ==
                                        model::rows.source[static_cast<std::size_t>(t.row)];
     }
+    m.order = model::order;
+    if constexpr (model::order == priority::parent_first)
+        for (auto& t : m.transitions)
+            for (std::size_t k = 0; k < m.transitions.size(); ++k)
+                if (outer_tried_first(model::tree, model::rows, m.transitions[k].row, t.row))
+                    t.tried_before.push_back(static_cast<int>(k));
     return m;
 }
 
 // ---- Text helpers shared by the formats ----------------------------------------------------
+
+/// What a diagram of a parent-first chart says of its priority (child first, SCXML's and UML's,
+/// goes without saying).
+inline constexpr std::string_view parent_first_note = "priority: parent first (outer transitions before inner ones)";
 
 inline std::string indent(int level) { return std::string(static_cast<std::size_t>(level) * 4, ' '); }
 
@@ -495,6 +564,7 @@ inline std::string to_dot(diagram const& m) {
     std::string out = "digraph " + dot_quoted(m[0].label) + " {\n";
     out += "    compound=true; nodesep=0.6; ranksep=0.8; forcelabels=true;\n";
     out += "    fontname=\"Helvetica\"; fontsize=11;\n";
+    if (m.order == priority::parent_first) out += "    label=" + dot_quoted(parent_first_note) + "; labelloc=t;\n";
     out += "    node [shape=box, style=rounded, fontname=\"Helvetica\", fontsize=11];\n";
     out += "    edge [fontname=\"Helvetica\", fontsize=9];\n";
     out += "    \":start\" [shape=point, width=0.12, label=\"\"];\n";
@@ -609,7 +679,10 @@ inline void mermaid_state(diagram const& m, int s, int level, std::string& out) 
 }
 
 inline std::string to_mermaid(diagram const& m) {
-    std::string out = "stateDiagram-v2\n";
+    std::string out;
+    // (The title quoted: front matter is YAML, where the note's colon would start a mapping.)
+    if (m.order == priority::parent_first) out += "---\ntitle: \"" + std::string(parent_first_note) + "\"\n---\n";
+    out += "stateDiagram-v2\n";
     out += indent(1) + "[*] --> " + m[0].id + "\n";
     mermaid_state(m, 0, 1, out);
     for (auto const& t : m.transitions) {
@@ -697,6 +770,7 @@ inline void plantuml_state(diagram const& m, int s, int level, std::string& out)
 
 inline std::string to_plantuml(diagram const& m) {
     std::string out = "@startuml\nhide empty description\n";
+    if (m.order == priority::parent_first) out += "title " + std::string(parent_first_note) + "\n";
     out += "[*] --> " + m[0].id + "\n";
     plantuml_state(m, 0, 0, out);
     for (auto const& t : m.transitions) {
@@ -733,7 +807,9 @@ std::string to_plantuml(Chart const& chart) {
 //   - `event` is the event's bsc::event_name, made a valid token; eventless transitions have none;
 //   - a state-scoped timeout `after(3s)` is a transition on the event "after(3s)", with a
 //     comment: SCXML has no timeouts, a platform would send that event delayed from <onentry>;
-//   - `cond` is the guard's name (bsc::named), or "guard";
+//   - `cond` is the guard's name (bsc::named), or "guard", with bsc::in<S> as In('id') (the id
+//     of S's element) and the operators of composed guards; under parent-first priority
+//     (bsc/priority.hpp) it also negates the guards of the outer transitions tried first;
 //   - an internal transition (a row without a target) is type="internal" without a target, and
 //     a local one (bsc::local) type="internal" with its target;
 //   - bsc::done<S> is the event done.state.S, bsc::any_event the descriptor "*", and an event
@@ -753,6 +829,7 @@ std::string to_plantuml(Chart const& chart) {
 
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 
 namespace bsc::detail {
@@ -799,6 +876,25 @@ inline std::string event_descriptor(std::string_view name) {
     return out.empty() ? "unnamed" : out;
 }
 
+// The transition's cond: its guard, and under parent-first priority (SCXML's is child first)
+// the negated guards of the outer transitions tried before it, so that the document selects
+// what the chart does. An unguarded outer transition (possible only for an eventless one across
+// a parallel state: otherwise the chart is rejected) makes it "false".
+inline std::string scxml_condition(diagram const& m, transition_info const& t) {
+    std::string cond;
+    for (int const k : t.tried_before) {
+        auto const& outer = m.transitions[static_cast<std::size_t>(k)];
+        if (outer.cond.empty()) return "false";
+        cond += (cond.empty() ? "!(" : " && !(") + outer.cond + ")";
+    }
+    if (t.cond.empty()) return cond;
+    return cond.empty() ? t.cond : cond + " && (" + t.cond + ")";
+}
+
+// A cond as an attribute value: escaped, but for the quotes of In('id'), which an attribute in
+// double quotes holds as they are.
+inline std::string scxml_cond_attribute(std::string_view cond) { return replace_all(xml_escaped(cond), "&apos;", "'"); }
+
 inline void scxml_transition(diagram const& m, transition_info const& t, int level, std::string& out) {
     auto const pad = indent(level);
     if (t.defers) {  // SCXML has no deferral: a comment in its place
@@ -813,7 +909,7 @@ inline void scxml_transition(diagram const& m, transition_info const& t, int lev
         out += " event=\"" + xml_escaped(t.event) + "\"";
     else if (t.trigger == trigger_kind::event)
         out += " event=\"" + event_descriptor(t.event) + "\"";
-    if (!t.guard.empty()) out += " cond=\"" + xml_escaped(t.guard) + "\"";
+    if (auto const cond = scxml_condition(m, t); !cond.empty()) out += " cond=\"" + scxml_cond_attribute(cond) + "\"";
     if (t.target >= 0) {
         out += " target=\"";
         for (int const target : t.targets()) out += (target == t.target ? "" : " ") + m[target].id;
@@ -902,6 +998,10 @@ inline std::string to_scxml(diagram const& m) {
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     out += "<!-- The chart " + scxml_comment(m[0].label) +
            ": cond names the guard, the <script> comments name the actions. -->\n";
+    if (m.order == priority::parent_first)
+        out +=
+            "<!-- Parent-first priority: a transition's cond also negates the guards of its source's ancestors' "
+            "transitions on the same event, which the chart tries first. -->\n";
     out += "<scxml xmlns=\"http://www.w3.org/2005/07/scxml\" version=\"1.0\" name=\"" + m[0].id + "\" initial=\"" +
            m[0].id + "\">\n";
     scxml_state(m, 0, 1, out);
@@ -914,8 +1014,16 @@ inline std::string to_scxml(diagram const& m) {
 namespace bsc {
 
 /// The chart as a W3C SCXML document.
+/// A chart with parent-first priority is written with conditions that say it (each transition
+/// negates the guards of the outer ones tried first); one whose outer row takes only some of an
+/// inner row's events (an event derived from the inner row's) cannot be, and does not compile.
 template <class Chart>
 std::string to_scxml(Chart const& chart) {
+    using model = detail::chart_model<std::remove_cv_t<Chart>>;
+    static_assert(detail::outer_row_narrower<model>()[0] < 0,
+                  "bsc::to_scxml: under parent-first priority a row of an ancestor takes an event derived from "
+                  "the event of a row below it: it is tried first for that event only, which SCXML's cond cannot "
+                  "say without the event's name; give the rows the same event, or export a child-first chart");
     return detail::to_scxml(detail::model_of(chart));
 }
 

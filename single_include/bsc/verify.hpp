@@ -1850,11 +1850,12 @@ class cycle_model : public detail::encoded_model<Machine> {
 public:
     using state = Machine;
 
-    cycle_model(Machine initial, duration period, std::size_t choices, Apply apply, Label label = {})
+    // (The parameter is not `label`: a function pointer of that name shadows label() for -Wshadow.)
+    cycle_model(Machine initial, duration period, std::size_t choices, Apply apply, Label choice_label = {})
         : detail::encoded_model<Machine>(std::move(initial), period),
           choices_(choices),
           apply_(std::move(apply)),
-          label_(std::move(label)) {}
+          label_(std::move(choice_label)) {}
 
     template <class Emit>
     void successors(state const& s, Emit&& emit) const {
@@ -1884,12 +1885,12 @@ class system_model : public detail::encoded_model<System> {
 public:
     using state = System;
 
-    system_model(System initial, duration period, std::size_t choices, Step step, Describe describe, Label label)
+    system_model(System initial, duration period, std::size_t choices, Step step, Describe describe, Label choice_label)
         : detail::encoded_model<System>(std::move(initial), period),
           choices_(choices),
           step_(std::move(step)),
           describe_(std::move(describe)),
-          label_(std::move(label)) {}
+          label_(std::move(choice_label)) {}
 
     template <class Emit>
     void successors(state const& s, Emit&& emit) const {

@@ -228,6 +228,7 @@ DEFECTS = {
             *(row(f"{s(f'S12_{j}')} + {ev('e9')} = {s('C13' if j == 1 else f'S12_{(j + 2) % 9}')}")
               for j in range(1, 9)),  # C13 stays reachable
         ))),
+    "dead_transition_behind_outer": Defect(r"bsc: dead transition under parent-first priority"),
     "empty_parallel_state": Defect(
         r"bsc: this parallel state has no regions",
         big_chart=BigChart("empty_parallel_state<big::Empty>", ("Empty",), items=(
@@ -336,6 +337,9 @@ DEFECTS = {
             row(f"{s('S7_3')} + {ev('bsc::done<C7>')} = {s('C8')}", "defect"),  # S7_3 is inactive then
             row(f"{s('C7')} + {ev('bsc::done<C7>')} = {s('C8')}", "fix"),
         ))),
+    # bsc::in<S> in a guard (tests/compile_fail/in_of_*.fail.cpp)
+    "in_of_state_not_in_chart": Defect(r"bsc: a row's guard tests bsc::in<State>, but State is not a state"),
+    "in_of_history_state": Defect(r"bsc: a row's guard tests bsc::in<State>, but State is a history pseudo-state"),
     "too_many_children": Defect(r"bsc: a composite state may have at most 255 children"),
     "root_must_be_composite": Defect(r"bsc: the first argument of make_chart is the root of the state tree"),
     "not_a_state_declaration": Defect(r"bsc: an argument of this state's declaration is not a state or marker"),

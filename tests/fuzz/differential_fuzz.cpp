@@ -38,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
     if (size == 0) return 0;
     std::uint8_t const* steps = data + 1;
     std::size_t const n = size - 1;
-    switch (data[0] % 19) {
+    switch (data[0] % 23) {
         case 0: drive<fx::hierarchy>("hierarchy", steps, n); break;
         case 1: drive<fx::parallel>("parallel", steps, n); break;
         case 2: drive<fx::history>("history", steps, n); break;
@@ -57,6 +57,10 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
         case 15: drive<gen::generated_scan<5>>("generated 5, scan policy", steps, n); break;
         case 16: drive<gen::generated_scan<9>>("generated 9, scan policy", steps, n); break;
         case 17: drive<fx::beyond_core>("beyond the core", steps, n); break;
+        case 18: drive<gen::parent_first<1>>("parent-first generated 1", steps, n); break;
+        case 19: drive<gen::parent_first<3>>("parent-first generated 3", steps, n); break;
+        case 20: drive<gen::parent_first_scan<5>>("parent-first generated 5, scan policy", steps, n); break;
+        case 21: drive<gen::parent_first_scan<9>>("parent-first generated 9, scan policy", steps, n); break;
         default: drive<gen::generated_scan<11>>("generated 11, scan policy", steps, n); break;
     }
     return 0;

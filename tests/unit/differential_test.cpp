@@ -92,3 +92,8 @@ TEST_CASE("differential: charts generated from seeds, 10,000 random events and c
     run_generated<generated, 2, 4, 7, 9>("generated chart ");
     run_generated<gen::generated_scan, 5, 11>("generated chart, scan policy, ");
 }
+
+TEST_CASE("differential: parent-first charts generated from seeds, 10,000 random events and cycles each") {
+    run_generated<gen::parent_first, 2, 4, 7>("parent-first generated chart ");
+    run_generated<gen::parent_first_scan, 5, 11>("parent-first generated chart, scan policy, ");
+}

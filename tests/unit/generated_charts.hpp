@@ -13,7 +13,10 @@
 //   - every basic state has a way out (one is added where missing);
 //   - no row is dead: none leaves a final child of the root, no row on a state with children
 //     is taken first below it in every leaf (a covering row is guarded), and no timeout
-//     follows a shorter unguarded one with a target (that one is guarded).
+//     follows a shorter unguarded one with a target (that one is guarded);
+//   - a seed with gen::parent_first_bit set draws a chart with parent-first priority
+//     (bsc/priority.hpp), whose dead rows are the other way round: there an unguarded row on an
+//     event hides every row on it below its source (that row is guarded).
 // gen::generated<Seed> wraps a chart as a fixture for differential.hpp, gen::generated_scan<Seed>
 // the same chart under a scan policy. gen::skeleton<K> is a chart whose rows are drawn again at
 // run time by gen::draw (see "skeletons" below): one compiled chart that stands for many.
@@ -56,6 +59,7 @@ inline constexpr int eventless = -1;
 inline constexpr int timeout = -2;
 
 struct spec {
+    bool parent_first = false;  // the chart's priority (bsc::parent_first, or the default)
     int n = 0;
     std::array<node, max_states> nodes{};
     int events = 0;
@@ -136,7 +140,23 @@ struct spec {
             rows[static_cast<std::size_t>(kept++)] = x;
         }
         r = kept;
-        for (int i = 0; i < r; ++i) {
+        // Parent first: an unguarded outer row on x's event hides x; child first: the rows below
+        // a state that take its event first in every leaf hide its row.
+        int const hidden_by_outer = parent_first ? r : 0;
+        int const hidden_by_inner = parent_first ? 0 : r;
+        for (int i = 0; i < hidden_by_outer; ++i) {
+            auto const x = rows[static_cast<std::size_t>(i)];
+            if (x.kind != row_kind::transition || x.event < 0) continue;
+            for (int j = 0; j < r; ++j) {
+                auto& y = rows[static_cast<std::size_t>(j)];
+                if (y.kind == row_kind::transition && y.event == x.event && !y.guarded && y.from != x.from &&
+                    contains(y.from, x.from)) {
+                    y.guarded = true;
+                    changed = true;
+                }
+            }
+        }
+        for (int i = 0; i < hidden_by_inner; ++i) {
             auto const x = rows[static_cast<std::size_t>(i)];
             if (x.kind != row_kind::transition || x.event < 0 || child_count(x.from) == 0) continue;
             int cover = -1;
@@ -273,9 +293,13 @@ struct rng {
 // A skeleton (see drawn_charts below) draws the same tree and rows from its seed, but every
 // transition row has a guard and an action and every entry and exit row is there; the draws
 // that would have left them out are still made, so the random sequence is the same.
+/// Seeds with this bit draw parent-first charts (their rows drawn afresh, like any other seed's).
+inline constexpr std::uint64_t parent_first_bit = std::uint64_t{1} << 30;
+
 constexpr spec make_spec(std::uint64_t seed, bool skeleton = false) {
     rng g{seed * 0x2545f4914f6cdd1dull + 17};
     spec s{};
+    s.parent_first = (seed & parent_first_bit) != 0;
     s.n = 8 + g.below(max_states - 8 + 1);
     s.events = 3 + g.below(max_events - 3 + 1);
 
@@ -704,7 +728,8 @@ constexpr auto make_row() {
 template <std::uint64_t Seed>
 // clang-format off
 inline constexpr auto chart = []<std::size_t... J>(std::index_sequence<J...>) {
-    return bsc::make_chart<gctx>(make_node<Seed, 0>(), make_row<Seed, static_cast<int>(J)>()...);
+    constexpr auto order = spec_of<Seed>.parent_first ? bsc::parent_first : bsc::child_first;
+    return bsc::make_chart<gctx, order>(make_node<Seed, 0>(), make_row<Seed, static_cast<int>(J)>()...);
 }(std::make_index_sequence<static_cast<std::size_t>(spec_of<Seed>.r)>{});
 // clang-format on
 
@@ -741,5 +766,12 @@ using generated_scan = generated<Seed, scan_limits>;
 /// The K-th skeleton.
 template <std::uint64_t K, class Policy = limits>
 using skeleton = generated<first_skeleton + K, Policy>;
+
+/// The chart of seed K drawn with parent-first priority. (One parameter each, to be a template
+/// template argument for Clang 14 too.)
+template <std::uint64_t K>
+using parent_first = generated<parent_first_bit + K>;
+template <std::uint64_t K>
+using parent_first_scan = generated<parent_first_bit + K, scan_limits>;
 
 }  // namespace gen

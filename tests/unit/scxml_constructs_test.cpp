@@ -8,6 +8,8 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <bsc/export.hpp>
@@ -830,4 +832,208 @@ TEST_CASE_TEMPLATE("a region of a parallel state takes the parallel state's done
     m.dispatch(next{});
     CHECK(m.context().log == "Left takes done.state.Both");
     CHECK(m.active_states().joined() == "Root After");
+}
+
+// ---- In: guards on the configuration (bsc::in<S>) ---------------------------------------------
+
+namespace within {
+struct flip {};
+struct go {
+    bool ready = true;
+};
+struct probe {};
+struct same {};
+struct leave {};
+struct P;
+struct A;
+struct A1;
+struct A2;
+struct A3;
+struct A31;
+struct A32;
+struct A321;
+struct A322;
+struct B;
+struct B1;
+struct B2;
+struct B3;
+struct B4;
+struct B5;
+struct ctx {
+    std::string log;
+};
+inline constexpr auto log = bsc_test::log_action<ctx>;
+inline constexpr auto ready = bsc::guard([](ctx const&, go const& e) { return e.ready; });
+inline constexpr auto a2 = bsc::named<"a2">(bsc::in<A2>);
+// Region A goes A1, A2, A3 (A31), A32 (A321), A322 and back to A1 on flip; region B's guards read
+// where it is: a state of the other region, one several levels down, a composite, and states of
+// B's own region.
+inline constexpr auto chart = bsc::make_chart<ctx>(
+    bsc::parallel<P>(
+        bsc::composite<A>(
+            bsc::initial<A1>, bsc::state<A2>,
+            bsc::composite<A3>(bsc::initial<A31>, bsc::composite<A32>(bsc::initial<A321>, bsc::state<A322>))),
+        bsc::composite<B>(bsc::initial<B1>, bsc::state<B2>, bsc::state<B3>, bsc::state<B4>, bsc::state<B5>)),
+    bsc::state<A1> + bsc::event<flip> = bsc::state<A2>, bsc::state<A2> + bsc::event<flip> = bsc::state<A3>,
+    bsc::state<A31> + bsc::event<flip> = bsc::state<A32>, bsc::state<A321> + bsc::event<flip> = bsc::state<A322>,
+    bsc::state<A322> + bsc::event<flip> = bsc::state<A1>, bsc::state<A2> + bsc::event<leave> = bsc::state<A1>,
+    bsc::state<B1> + bsc::event<go>[bsc::in<A2>] / log("B1>B2") = bsc::state<B2>,
+    bsc::state<B2> + bsc::event<go>[!bsc::in<A2> && ready] / log("B2>B1") = bsc::state<B1>,
+    bsc::state<B1> + bsc::event<probe>[bsc::in<A322>] / log("deep") = bsc::state<B3>,
+    bsc::state<B1> + bsc::event<probe>[bsc::in<A3> || a2] / log("composite") = bsc::state<B4>,
+    bsc::state<B1> + bsc::event<same>[bsc::in<B2>] / log("never") = bsc::state<B5>,
+    bsc::state<B1> + bsc::event<same>[bsc::in<B1> && bsc::in<B> && bsc::in<P>] / log("self"),
+    bsc::state<B2> + bsc::event<leave>[bsc::in<A2>] / log("B2>B5") = bsc::state<B5>,
+    bsc::state<B3> + bsc::event<go> = bsc::state<B1>, bsc::state<B4> + bsc::event<go> = bsc::state<B1>,
+    bsc::state<B5> + bsc::event<go> = bsc::state<B1>);
+
+// Eventless: B follows A, one step behind, and a plain guard composed with In.
+struct Follow;
+struct Lead;
+struct L1;
+struct L2;
+struct F1;
+struct F2;
+struct count_ctx {
+    int moves = 0;
+};
+inline constexpr auto counted = bsc::action([](count_ctx& c) { ++c.moves; });
+inline constexpr auto few = [](count_ctx const& c) { return c.moves < 100; };
+inline constexpr auto follow_chart = bsc::make_chart<count_ctx>(
+    bsc::parallel<P>(bsc::composite<Lead>(bsc::initial<L1>, bsc::state<L2>),
+                     bsc::composite<Follow>(bsc::initial<F1>, bsc::state<F2>)),
+    bsc::state<L1> + bsc::event<flip> = bsc::state<L2>, bsc::state<L2> + bsc::event<flip> = bsc::state<L1>,
+    bsc::state<F1>[bsc::guard(few) && bsc::in<L2>] / counted = bsc::state<F2>,
+    bsc::state<F2>[few && bsc::in<L1>] / counted = bsc::state<F1>);
+
+
+// A cycle: the regions are components that fire in document order, Before, Lead, After.
+struct Before;
+struct After;
+struct G1;
+struct G2;
+inline constexpr auto cycle_chart = bsc::make_chart<count_ctx>(
+    bsc::parallel<P>(bsc::composite<Before>(bsc::initial<G1>, bsc::state<G2>),
+                     bsc::composite<Lead>(bsc::initial<L1>, bsc::state<L2>),
+                     bsc::composite<Follow>(bsc::initial<F1>, bsc::state<F2>)),
+    bsc::state<G1>[bsc::in<L2>] = bsc::state<G2>, bsc::state<G2> + bsc::event<flip> = bsc::state<G1>,
+    bsc::state<L1> = bsc::state<L2>, bsc::state<L2> + bsc::event<flip> = bsc::state<L1>,
+    bsc::state<F1>[bsc::in<L2>] = bsc::state<F2>, bsc::state<F2> + bsc::event<flip> = bsc::state<F1>);
+}  // namespace within
+
+TEST_CASE_TEMPLATE("In(S) holds while S is active: a region's guard reads another region's configuration", Backend,
+                   compiled, table) {
+    using within::flip;
+    using within::go;
+    machine_t<Backend, decltype(within::chart)> m{within::chart, within::ctx{}};
+    CHECK(m.dispatch(go{}) == bsc::outcome::ignored);  // A1: In(A2) is false
+    m.dispatch(flip{});
+    REQUIRE(m.active_states().joined() == "P A A2 B B1");
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);  // In(A2)
+    CHECK(m.context().log == "B1>B2");
+    CHECK(m.dispatch(go{}) == bsc::outcome::ignored);       // !In(A2) && ready: In(A2)
+    m.dispatch(flip{});                                     // A3
+    CHECK(m.dispatch(go{false}) == bsc::outcome::ignored);  // !In(A2), but not ready
+    CHECK(m.dispatch(go{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "B1>B2 B2>B1");
+    CHECK(m.active_states().joined() == "P A A3 A31 B B1");
+}
+
+TEST_CASE_TEMPLATE("In(S) of a state several levels down, of a composite, and of states of the guard's own region",
+                   Backend, compiled, table) {
+    using within::flip;
+    using within::go;
+    using within::probe;
+    using within::same;
+    machine_t<Backend, decltype(within::chart)> m{within::chart, within::ctx{}};
+    CHECK(m.dispatch(probe{}) == bsc::outcome::ignored);  // A1: none of A322, A3, A2
+    m.dispatch(flip{});                                   // A2: the named In(A2)
+    CHECK(m.dispatch(probe{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "composite");
+    m.dispatch(go{});
+    m.dispatch(flip{});  // A3, A31: the composite A3
+    CHECK(m.dispatch(probe{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "composite composite");
+    m.dispatch(go{});
+    m.dispatch(flip{});
+    m.dispatch(flip{});  // A322, three levels below A: In(A322), the first row, holds
+    REQUIRE(m.active_states().joined() == "P A A3 A32 A322 B B1");
+    CHECK(m.dispatch(probe{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "composite composite deep");
+    m.dispatch(go{});
+    // The guard's own region: In(B2) never holds where B1 is active, In(B1), In(B), In(P) always.
+    CHECK(m.dispatch(same{}) == bsc::outcome::consumed);
+    CHECK(m.context().log == "composite composite deep self");
+    CHECK(m.active_states().joined() == "P A A3 A32 A322 B B1");
+}
+
+TEST_CASE_TEMPLATE("In(S) sees the configuration before the microstep's exits: the regions select first", Backend,
+                   compiled, table) {
+    using within::flip;
+    using within::go;
+    using within::leave;
+    machine_t<Backend, decltype(within::chart)> m{within::chart, within::ctx{}};
+    m.dispatch(flip{});
+    m.dispatch(go{});
+    REQUIRE(m.active_states().joined() == "P A A2 B B2");
+    // leave: A2 -> A1 in region A, and B2's In(A2) in region B, both selected before either fires.
+    CHECK(m.dispatch(leave{}) == bsc::outcome::consumed);
+    CHECK(m.active_states().joined() == "P A A1 B B5");
+}
+
+TEST_CASE_TEMPLATE("eventless rows guarded by In(S) follow another region, composed with a plain guard", Backend,
+                   compiled, table) {
+    machine_t<Backend, decltype(within::follow_chart)> m{within::follow_chart, within::count_ctx{}};
+    CHECK(m.active_states().joined() == "P Lead L1 Follow F1");
+    m.dispatch(within::flip{});
+    CHECK(m.active_states().joined() == "P Lead L2 Follow F2");
+    m.dispatch(within::flip{});
+    CHECK(m.active_states().joined() == "P Lead L1 Follow F1");
+    CHECK(m.context().moves == 2);
+}
+
+TEST_CASE_TEMPLATE("in step(), a component's In(S) sees the transitions of the components before it in the cycle",
+                   Backend, compiled, table) {
+    using namespace std::chrono_literals;
+    machine_t<Backend, decltype(within::cycle_chart), bsc::scan_policy> m{within::cycle_chart, within::count_ctx{}};
+    REQUIRE(m.active_states().joined() == "P Before G1 Lead L1 Follow F1");
+    m.step(0ms);  // Lead takes L2; Follow, after it, sees it; Before, first, saw L1
+    CHECK(m.active_states().joined() == "P Before G1 Lead L2 Follow F2");
+    m.step(1ms);
+    CHECK(m.active_states().joined() == "P Before G2 Lead L2 Follow F2");
+}
+
+TEST_CASE("In(S) runs in constant expressions, and only charts with it pass the configuration to their guards") {
+    static_assert([] {
+        bsc::machine m{within::follow_chart, within::count_ctx{}};
+        m.dispatch(within::flip{});
+        m.dispatch(within::flip{});
+        return m.context().moves;
+    }() == 2);
+    // The table's guards take the configuration bytes in a chart with bsc::in only.
+    using with_in = bsc::table::tables<decltype(within::chart)>::transition_row_type;
+    using without = bsc::table::tables<decltype(beyond::family_chart)>::transition_row_type;
+    static_assert(with_in::guards_read_configuration && !without::guards_read_configuration);
+    static_assert(std::is_same_v<without::guard_fn,
+                                 bool (*)(decltype(beyond::family_chart) const&, beyond::ctx const&, void const*)>);
+    static_assert(bsc::detail::tests_configuration<std::remove_cvref_t<decltype(!bsc::in<within::A2>)>>);
+    static_assert(bsc::detail::tests_configuration<std::remove_cvref_t<decltype(within::a2)>>);
+    static_assert(!bsc::detail::tests_configuration<std::remove_cvref_t<decltype(within::ready)>>);
+    CHECK(true);
+}
+
+TEST_CASE("In(S) is labelled In(S) in the diagrams and the row text, and written In('id') in SCXML's cond") {
+    auto const scxml = bsc::to_scxml(within::chart);
+    CHECK(scxml.find("<transition event=\"go\" cond=\"In('A2')\" target=\"B2\">") != std::string::npos);
+    CHECK(scxml.find("cond=\"!In('A2') &amp;&amp; guard\"") != std::string::npos);
+    CHECK(scxml.find("cond=\"In('A3') || a2\"") != std::string::npos);
+    CHECK(scxml.find("cond=\"In('B1') &amp;&amp; In('B') &amp;&amp; In('P')\"") != std::string::npos);
+    CHECK(scxml.find("<state id=\"A322\"") != std::string::npos);  // the id In names
+    auto const mermaid = bsc::to_mermaid(within::chart);
+    CHECK(mermaid.find("B1 --> B3 : probe [In(A322)] / action") != std::string::npos);
+    CHECK(mermaid.find("B2 --> B1 : go [!In(A2) && guard] / action") != std::string::npos);
+    CHECK(bsc::to_dot(within::chart).find("[In(A3) || a2]") != std::string::npos);
+    CHECK(bsc::to_plantuml(within::chart).find("[!In(A2) && guard]") != std::string::npos);
+    using row = bsc::detail::chart_model<decltype(within::chart)>::row_at<7>;
+    CHECK(std::string_view{bsc::detail::row_text<row>().view()} == "B2 + go [!In(A2) && guard] / action = B1");
 }

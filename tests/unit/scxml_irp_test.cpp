@@ -1,6 +1,7 @@
 // Translations of W3C SCXML 1.0 Implementation Report Plan (IRP) tests for the constructs
 // beyond the core: done events (372, 416, 417, 570), initial transitions (412, 413, 576), history states (387, 388, 579, 580), local ("internal") transitions (504, 505, 533),
-// event descriptors (399, 403a) and delayed sends to self (175, 208). Each follows the published description of the test:
+// event descriptors (399, 403a), delayed sends to self (175, 208) and In() (310, and 413's
+// conditions). Each follows the published description of the test:
 // the same states, the same events in the same order, and the same verdict, which the IRP
 // gives as a final state named pass or fail; here Pass and Fail are final children of the root,
 // and a test passes when the machine halts in Pass. Run on both back ends.
@@ -337,7 +338,8 @@ inline constexpr auto chart = bsc::make_chart<vars>(
                                bsc::composite<S2P2>(bsc::initial<S2P21>, bsc::state<S2P21>))),
         bsc::final_state<Pass>, bsc::final_state<Fail>),
     bsc::state<S2P>[([](vars const&) { return true; })] = bsc::state<Fail>,
-    bsc::state<S2P12>[([](vars const&) { return true; })] = bsc::state<Pass>, bsc::state<S2P11> = bsc::state<S2P12>,
+    // In('S2P21'), as the IRP test's condition: the other region entered by default.
+    bsc::state<S2P12>[bsc::in<S2P21>] = bsc::state<Pass>, bsc::state<S2P11> = bsc::state<S2P12>,
     bsc::state<S2P12> + bsc::event<back> = bsc::state<S2P11>,
     bsc::state<S2P21> + bsc::on_entry / bsc::action([](vars& v) { ++v.var1; }));
 }  // namespace irp413
@@ -347,6 +349,22 @@ TEST_CASE_TEMPLATE("IRP 413: a deep initial enters its target and the other regi
     machine_t<Backend, decltype(irp413::chart)> m{irp413::chart, vars{}};
     expect_pass(m);
     CHECK(m.context().var1 == 1);
+}
+
+// 310: In() of a state of another region of the same parallel state is true.
+namespace irp310 {
+struct P;
+struct S0;
+struct S1;
+inline constexpr auto chart = bsc::make_chart<vars>(
+    bsc::composite<Root>(bsc::initial<P>, bsc::parallel<P>(bsc::state<S0>, bsc::state<S1>), bsc::final_state<Pass>,
+                         bsc::final_state<Fail>),
+    bsc::state<S0>[bsc::in<S1>] = bsc::state<Pass>, bsc::state<S0> = bsc::state<Fail>);
+}  // namespace irp310
+
+TEST_CASE_TEMPLATE("IRP 310: In() of a state of another region is true", Backend, compiled, table) {
+    machine_t<Backend, decltype(irp310::chart)> m{irp310::chart, vars{}};
+    expect_pass(m);
 }
 
 // 387: a history state of a composite never active takes its default transition, shallow or

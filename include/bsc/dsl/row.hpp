@@ -274,6 +274,17 @@ inline constexpr bool is_initial_row = false;
 template <class S, class A>
 inline constexpr bool is_initial_row<initial_row<S, A>> = true;
 
+// Whether a row's guard tests the configuration (bsc::in<S>), and whether any of a list of rows'
+// does: a back end calls such guards with a view of the configuration (dsl/guard.hpp).
+template <class R>
+inline constexpr bool row_tests_configuration = false;
+template <class S, class Tr, class G, class A, class T>
+inline constexpr bool row_tests_configuration<transition_row<S, Tr, G, A, T>> = tests_configuration<G>;
+template <class Rows>
+inline constexpr bool any_row_tests_configuration = false;
+template <class... Rows>
+inline constexpr bool any_row_tests_configuration<type_list<Rows...>> = (row_tests_configuration<Rows> || ...);
+
 }  // namespace bsc::detail
 
 namespace bsc::detail {

@@ -99,6 +99,7 @@ inline std::string to_dot(diagram const& m) {
     std::string out = "digraph " + dot_quoted(m[0].label) + " {\n";
     out += "    compound=true; nodesep=0.6; ranksep=0.8; forcelabels=true;\n";
     out += "    fontname=\"Helvetica\"; fontsize=11;\n";
+    if (m.order == priority::parent_first) out += "    label=" + dot_quoted(parent_first_note) + "; labelloc=t;\n";
     out += "    node [shape=box, style=rounded, fontname=\"Helvetica\", fontsize=11];\n";
     out += "    edge [fontname=\"Helvetica\", fontsize=9];\n";
     out += "    \":start\" [shape=point, width=0.12, label=\"\"];\n";

@@ -69,7 +69,10 @@ inline void mermaid_state(diagram const& m, int s, int level, std::string& out) 
 }
 
 inline std::string to_mermaid(diagram const& m) {
-    std::string out = "stateDiagram-v2\n";
+    std::string out;
+    // (The title quoted: front matter is YAML, where the note's colon would start a mapping.)
+    if (m.order == priority::parent_first) out += "---\ntitle: \"" + std::string(parent_first_note) + "\"\n---\n";
+    out += "stateDiagram-v2\n";
     out += indent(1) + "[*] --> " + m[0].id + "\n";
     mermaid_state(m, 0, 1, out);
     for (auto const& t : m.transitions) {

@@ -61,6 +61,7 @@ inline void plantuml_state(diagram const& m, int s, int level, std::string& out)
 
 inline std::string to_plantuml(diagram const& m) {
     std::string out = "@startuml\nhide empty description\n";
+    if (m.order == priority::parent_first) out += "title " + std::string(parent_first_note) + "\n";
     out += "[*] --> " + m[0].id + "\n";
     plantuml_state(m, 0, 0, out);
     for (auto const& t : m.transitions) {

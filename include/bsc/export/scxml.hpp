@@ -9,7 +9,9 @@
 //   - `event` is the event's bsc::event_name, made a valid token; eventless transitions have none;
 //   - a state-scoped timeout `after(3s)` is a transition on the event "after(3s)", with a
 //     comment: SCXML has no timeouts, a platform would send that event delayed from <onentry>;
-//   - `cond` is the guard's name (bsc::named), or "guard";
+//   - `cond` is the guard's name (bsc::named), or "guard", with bsc::in<S> as In('id') (the id
+//     of S's element) and the operators of composed guards; under parent-first priority
+//     (bsc/priority.hpp) it also negates the guards of the outer transitions tried first;
 //   - an internal transition (a row without a target) is type="internal" without a target, and
 //     a local one (bsc::local) type="internal" with its target;
 //   - bsc::done<S> is the event done.state.S, bsc::any_event the descriptor "*", and an event
@@ -29,6 +31,7 @@
 
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 #include <bsc/detail/export/model.hpp>
 
@@ -76,6 +79,25 @@ inline std::string event_descriptor(std::string_view name) {
     return out.empty() ? "unnamed" : out;
 }
 
+// The transition's cond: its guard, and under parent-first priority (SCXML's is child first)
+// the negated guards of the outer transitions tried before it, so that the document selects
+// what the chart does. An unguarded outer transition (possible only for an eventless one across
+// a parallel state: otherwise the chart is rejected) makes it "false".
+inline std::string scxml_condition(diagram const& m, transition_info const& t) {
+    std::string cond;
+    for (int const k : t.tried_before) {
+        auto const& outer = m.transitions[static_cast<std::size_t>(k)];
+        if (outer.cond.empty()) return "false";
+        cond += (cond.empty() ? "!(" : " && !(") + outer.cond + ")";
+    }
+    if (t.cond.empty()) return cond;
+    return cond.empty() ? t.cond : cond + " && (" + t.cond + ")";
+}
+
+// A cond as an attribute value: escaped, but for the quotes of In('id'), which an attribute in
+// double quotes holds as they are.
+inline std::string scxml_cond_attribute(std::string_view cond) { return replace_all(xml_escaped(cond), "&apos;", "'"); }
+
 inline void scxml_transition(diagram const& m, transition_info const& t, int level, std::string& out) {
     auto const pad = indent(level);
     if (t.defers) {  // SCXML has no deferral: a comment in its place
@@ -90,7 +112,7 @@ inline void scxml_transition(diagram const& m, transition_info const& t, int lev
         out += " event=\"" + xml_escaped(t.event) + "\"";
     else if (t.trigger == trigger_kind::event)
         out += " event=\"" + event_descriptor(t.event) + "\"";
-    if (!t.guard.empty()) out += " cond=\"" + xml_escaped(t.guard) + "\"";
+    if (auto const cond = scxml_condition(m, t); !cond.empty()) out += " cond=\"" + scxml_cond_attribute(cond) + "\"";
     if (t.target >= 0) {
         out += " target=\"";
         for (int const target : t.targets()) out += (target == t.target ? "" : " ") + m[target].id;
@@ -179,6 +201,10 @@ inline std::string to_scxml(diagram const& m) {
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     out += "<!-- The chart " + scxml_comment(m[0].label) +
            ": cond names the guard, the <script> comments name the actions. -->\n";
+    if (m.order == priority::parent_first)
+        out +=
+            "<!-- Parent-first priority: a transition's cond also negates the guards of its source's ancestors' "
+            "transitions on the same event, which the chart tries first. -->\n";
     out += "<scxml xmlns=\"http://www.w3.org/2005/07/scxml\" version=\"1.0\" name=\"" + m[0].id + "\" initial=\"" +
            m[0].id + "\">\n";
     scxml_state(m, 0, 1, out);
@@ -191,8 +217,16 @@ inline std::string to_scxml(diagram const& m) {
 namespace bsc {
 
 /// The chart as a W3C SCXML document.
+/// A chart with parent-first priority is written with conditions that say it (each transition
+/// negates the guards of the outer ones tried first); one whose outer row takes only some of an
+/// inner row's events (an event derived from the inner row's) cannot be, and does not compile.
 template <class Chart>
 std::string to_scxml(Chart const& chart) {
+    using model = detail::chart_model<std::remove_cv_t<Chart>>;
+    static_assert(detail::outer_row_narrower<model>()[0] < 0,
+                  "bsc::to_scxml: under parent-first priority a row of an ancestor takes an event derived from "
+                  "the event of a row below it: it is tried first for that event only, which SCXML's cond cannot "
+                  "say without the event's name; give the rows the same event, or export a child-first chart");
     return detail::to_scxml(detail::model_of(chart));
 }
 

@@ -381,9 +381,20 @@ private:
     // ---- transitions ----------------------------------------------------------------------
     using selection = bsc::detail::selection<tables_type::max_active_leaves>;
 
+    // (In a chart with bsc::in<S>, every guard receives the configuration bytes as well:
+    // tables.hpp, guards_read_configuration.)
     bool guard_holds(std::int16_t t, void const* e) {
         auto const g = transitions[static_cast<std::size_t>(t)].guard;
-        return g == nullptr || this->test(g, this->chart(), this->context_.value, e);
+        if constexpr (transition_row_type::guards_read_configuration)
+            return g == nullptr || this->test(g, this->chart(), this->context_.value, e, configuration_bytes());
+        else
+            return g == nullptr || this->test(g, this->chart(), this->context_.value, e);
+    }
+    std::uint8_t const* configuration_bytes() const {
+        if constexpr (tables_type::slots > 0)
+            return this->config_.active.data();
+        else
+            return nullptr;  // no composite: no test reads a byte
     }
 
     // The event a microstep processes, as the thunks of a transition receive it. Without
@@ -423,12 +434,12 @@ private:
     static constexpr bsc::any_event any_event_value{};
 
     // Step 2 for one active basic state: its candidates are the transitions on the event (or on
-    // a family of it) from the state itself, then from its parent, and so on up to the root
-    // (deepest first); among those of one origin, declaration order. The first whose guard
-    // holds is selected.
+    // a family of it) from the state itself and from each of its ancestors up to the root, in
+    // the chart's priority order (tables::order: the state first, or the root first); among
+    // those of one origin, declaration order. The first whose guard holds is selected.
     template <class Event>
     bool select_from(state_id leaf, event_id event, Event const& e, selection& sel) {
-        for (state_id a = leaf; a != no_state; a = states[a].parent)
+        return for_each_tried(leaf, tables_type::root, [&](state_id a) {
             for (std::int16_t t = tables_type::first_out[a]; t >= 0;
                  t = tables_type::next_out[static_cast<std::size_t>(t)]) {
                 auto const on = transitions[static_cast<std::size_t>(t)].event;
@@ -437,7 +448,30 @@ private:
                     return true;
                 }
             }
-        return false;
+            return false;
+        });
+    }
+
+    // Calls try_state(a) for each state a from `from` up to `top` (an ancestor of it, or
+    // itself) in the chart's priority order, until one returns true; returns whether one did.
+    template <class F>
+    static bool for_each_tried(state_id from, state_id top, F&& try_state) {
+        if constexpr (tables_type::order == bsc::priority::child_first) {
+            for (state_id a = from;; a = states[a].parent) {
+                if (try_state(a)) return true;
+                if (a == top) return false;
+            }
+        } else {
+            std::array<state_id, tables_type::levels> path{};
+            std::size_t n = 0;
+            for (state_id a = from;; a = states[a].parent) {
+                path[n++] = a;
+                if (a == top) break;
+            }
+            while (n > 0)
+                if (try_state(path[--n])) return true;
+            return false;
+        }
     }
 
     void run_action(std::int16_t t, void const* e) {
@@ -528,20 +562,20 @@ private:
 
     // One component's turn: from its active frontier (the active basic state below it, or a
     // parallel state whose regions are components of their own) up to the component itself,
-    // deepest origin first and table order among one origin's, the first condition-driven
-    // transition whose condition holds fires.
+    // in the chart's priority order and table order among one origin's, the first
+    // condition-driven transition whose condition holds fires.
     bool run_component(state_id component) {
         state_id frontier = component;
         while (states[frontier].status.kind == state_kind::composite) frontier = active_child(frontier);
-        for (state_id a = frontier;; a = states[a].parent) {
+        return for_each_tried(frontier, component, [&](state_id a) {
             for (std::int16_t t = tables_type::first_out[a]; t >= 0;
                  t = tables_type::next_out[static_cast<std::size_t>(t)])
                 if (is_condition(transitions[static_cast<std::size_t>(t)].event) && condition_holds(t)) {
                     fire_condition(first_due(t));
                     return true;
                 }
-            if (a == component) return false;
-        }
+            return false;
+        });
     }
 
     // A timeout's condition: its origin has been active for its delay (the origin is active: it

@@ -226,7 +226,8 @@ constexpr auto check_done_events() {
 }
 
 template <class Chart>
-inline constexpr auto liveness_of = find_dead_transitions(chart_model<Chart>::tree, chart_model<Chart>::rows);
+inline constexpr auto liveness_of = find_dead_transitions(chart_model<Chart>::tree, chart_model<Chart>::rows,
+                                                          chart_model<Chart>::order);
 
 template <class Chart>
 constexpr auto check_dead_transitions() {
@@ -234,9 +235,16 @@ constexpr auto check_dead_transitions() {
     constexpr int row = liveness_of<Chart>.first_dead;
     if constexpr (row >= 0) {
         using R = typename model::template row_at<row>;
-        return type_list<row_error<
-            Chart, row,
-            error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>>{};
+        constexpr int outer = liveness_of<Chart>.outer;
+        if constexpr (outer >= 0)
+            return type_list<row_error<
+                Chart, row,
+                error::dead_transition_behind_outer<typename R::source, typename trigger_type<R>::type,
+                                                    typename R::target, typename model::template tag_at<outer>>>>{};
+        else
+            return type_list<row_error<
+                Chart, row,
+                error::dead_transition<typename R::source, typename trigger_type<R>::type, typename R::target>>>{};
     } else {
         return type_list<>{};
     }
@@ -262,8 +270,8 @@ constexpr auto check_reachability() {
 template <class Chart>
 constexpr auto check_livelock() {
     using model = chart_model<Chart>;
-    constexpr std::size_t edges = count_eventless_edges(model::tree, model::rows);
-    constexpr int source = find_eventless_cycle<edges>(model::tree, model::rows);
+    constexpr std::size_t edges = count_eventless_edges(model::tree, model::rows, model::order);
+    constexpr int source = find_eventless_cycle<edges>(model::tree, model::rows, model::order);
     if constexpr (source >= 0)
         return type_list<error::eventless_livelock<typename model::template tag_at<source>>>{};
     else
@@ -281,6 +289,57 @@ constexpr auto check_signatures() {
         return type_list<>{};
 }
 
+// bsc::in<S> in a guard: S must be a state of the chart, and not a history state (never
+// active). The first such S of each row's guard, as its error; nothing for a chart without
+// bsc::in, which is most.
+template <class Model, class S>
+constexpr auto in_state_errors() {
+    constexpr int s = state_index<S, typename Model::tags>::value;
+    if constexpr (s < 0)
+        return type_list<error::in_of_state_not_in_chart<S>>{};
+    else if constexpr (Model::tree.kinds[static_cast<std::size_t>(s)] == kind::history)
+        return type_list<error::in_of_history_state<S>>{};
+    else
+        return type_list<>{};
+}
+template <class Model, class Row>
+constexpr auto in_guard_errors(Row const*) {
+    if constexpr (row_tests_configuration<Row>) {
+        using states = typename in_states<std::remove_cv_t<decltype(Row::guard)>>::type;
+        // clang-format off
+        return []<class... S>(type_list<S...>) {
+            return concat_t<decltype(in_state_errors<Model, S>())...>{};
+        }(states{});
+        // clang-format on
+    } else {
+        return type_list<>{};
+    }
+}
+template <class Model, class... Rows>
+constexpr int first_in_guard_error(type_list<Rows...>) {
+    constexpr bool bad[] = {(decltype(in_guard_errors<Model>(static_cast<Rows const*>(nullptr)))::size > 0)..., false};
+    for (std::size_t i = 0; i < sizeof...(Rows); ++i)
+        if (bad[i]) return static_cast<int>(i);
+    return -1;
+}
+
+template <class Chart>
+constexpr auto check_in_guards() {
+    using model = chart_model<Chart>;
+    if constexpr (!any_row_tests_configuration<typename Chart::row_types>) {
+        return type_list<>{};
+    } else {
+        constexpr int row = first_in_guard_error<model>(typename Chart::row_types{});
+        if constexpr (row >= 0) {
+            using errors = decltype(in_guard_errors<model>(
+                static_cast<typename model::template row_at<row> const*>(nullptr)));
+            return type_list<row_error<Chart, row, at<0, errors>>>{};
+        } else {
+            return type_list<>{};
+        }
+    }
+}
+
 // The errors of a chart, as a type_list; empty for a well-formed chart.
 template <class Chart>
 constexpr auto check_chart() {
@@ -293,7 +352,8 @@ constexpr auto check_chart() {
                         decltype(check_deferrals<Chart>()), decltype(check_event_families<Chart>()),
                         decltype(check_determinism<Chart>()), decltype(check_done_events<Chart>()),
                         decltype(check_dead_transitions<Chart>()), decltype(check_reachability<Chart>()),
-                        decltype(check_livelock<Chart>()), decltype(check_signatures<Chart>())>{};
+                        decltype(check_livelock<Chart>()), decltype(check_signatures<Chart>()),
+                        decltype(check_in_guards<Chart>())>{};
 }
 
 }  // namespace bsc::detail

@@ -54,6 +54,15 @@ struct guard_words {
         out(static_name_of<G>().empty() ? std::string_view{"guard"} : static_name_of<G>());
     }
 };
+template <class S>
+struct guard_words<in_guard<S>> {  // bsc::in<S>: "In(S)", as the exports write it
+    template <class Out>
+    static constexpr void write(Out& out, guard_precedence) {
+        out("In(");
+        out(name_of<S>);
+        out(")");
+    }
+};
 template <class G>
 struct guard_words<not_guard<G>> {
     template <class Out>

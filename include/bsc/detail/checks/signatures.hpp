@@ -13,6 +13,7 @@
 #include <bsc/detail/meta.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
+#include <bsc/dsl/named.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/error.hpp>
 
@@ -36,6 +37,30 @@ struct bad_guard<and_guard<L, R>, Ctx, E> {
 template <class L, class R, class Ctx, class E>
 struct bad_guard<or_guard<L, R>, Ctx, E> {
     using type = concat_t<typename bad_guard<L, Ctx, E>::type, typename bad_guard<R, Ctx, E>::type>;
+};
+
+// The states a guard tests with bsc::in<S>, in order, as a list: what make_chart checks are
+// states of the chart that can be active (detail/checks/checks.hpp, check_in_guards). A guard
+// with bsc::in<S> is called with the configuration (dsl/guard.hpp): its signature is valid.
+template <class G>
+struct in_states {
+    using type = type_list<>;
+};
+template <class S>
+struct in_states<in_guard<S>> {
+    using type = type_list<S>;
+};
+template <class Name, class G>
+struct in_states<named_guard<Name, G>> : in_states<G> {};
+template <class G>
+struct in_states<not_guard<G>> : in_states<G> {};
+template <class L, class R>
+struct in_states<and_guard<L, R>> {
+    using type = concat_t<typename in_states<L>::type, typename in_states<R>::type>;
+};
+template <class L, class R>
+struct in_states<or_guard<L, R>> {
+    using type = concat_t<typename in_states<L>::type, typename in_states<R>::type>;
 };
 
 // The same for actions; Raise is what the checks hand them as the raise argument

@@ -1,12 +1,13 @@
 #pragma once
 // Compile-time dispatch plans: for a trigger, which states lead to a transition and, for each
-// basic state, which transitions are its candidates in SCXML order (deepest source first,
-// then declaration order). The compiled machine expands these into switches and straight-line
+// basic state, which transitions are its candidates in the chart's priority order (deepest
+// source first, or outermost first; then declaration order). The compiled machine expands these into switches and straight-line
 // code; nothing here exists at run time.
 
 #include <array>
 
 #include <bsc/detail/model/layout.hpp>
+#include <bsc/priority.hpp>
 
 namespace bsc::detail {
 
@@ -144,50 +145,59 @@ struct plan : chart_layout<Model> {
         }
     }();
 
-    static constexpr int candidate_count(int leaf, int trigger) {
+    // Calls f(a) for each state a from `leaf` up to `top`, in the order their rows are tried:
+    // `leaf` first under child-first priority, `top` first under parent-first (bsc/priority.hpp).
+    // Fixed here, so that either order is the same straight-line code.
+    template <class F>
+    static constexpr void for_each_tried(int leaf, int top, F&& f) {
+        if constexpr (Model::order == priority::child_first) {
+            for (int a = leaf;; a = tree.parent[static_cast<std::size_t>(a)]) {
+                f(static_cast<std::size_t>(a));
+                if (a == top) break;
+            }
+        } else {
+            int const levels = tree.depth[static_cast<std::size_t>(leaf)] - tree.depth[static_cast<std::size_t>(top)];
+            for (int k = levels; k >= 0; --k) {
+                int a = leaf;
+                for (int i = 0; i < k; ++i) a = tree.parent[static_cast<std::size_t>(a)];
+                f(static_cast<std::size_t>(a));
+            }
+        }
+    }
+
+    // The rows on `trigger` a state in `leaf` tries, up to `top`, in priority order.
+    static constexpr int candidate_count(int leaf, int top, int trigger) {
         int n = 0;
-        for (int a = leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
-            for (int i = from_source_begin[static_cast<std::size_t>(a)];
-                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
+        for_each_tried(leaf, top, [&](std::size_t a) {
+            for (int i = from_source_begin[a]; i < from_source_begin[a + 1]; ++i)
                 n += is_transition_on(from_source[static_cast<std::size_t>(i)], trigger) ? 1 : 0;
+        });
         return n;
     }
+    template <std::size_t Count>
+    static constexpr std::array<int, Count> candidate_rows(int leaf, int top, int trigger) {
+        std::array<int, Count> out{};
+        std::size_t n = 0;
+        for_each_tried(leaf, top, [&](std::size_t a) {
+            for (int i = from_source_begin[a]; i < from_source_begin[a + 1]; ++i)
+                if (is_transition_on(from_source[static_cast<std::size_t>(i)], trigger))
+                    out[n++] = from_source[static_cast<std::size_t>(i)];
+        });
+        return out;
+    }
 
+    // The candidates of basic state Leaf on the trigger: its rows and its ancestors'.
     template <int Leaf, int Trigger>
-    static constexpr auto candidates = [] {
-        std::array<int, static_cast<std::size_t>(candidate_count(Leaf, Trigger))> out{};
-        std::size_t n = 0;
-        for (int a = Leaf; a >= 0; a = tree.parent[static_cast<std::size_t>(a)])
-            for (int i = from_source_begin[static_cast<std::size_t>(a)];
-                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
-                if (is_transition_on(from_source[static_cast<std::size_t>(i)], Trigger))
-                    out[n++] = from_source[static_cast<std::size_t>(i)];
-        return out;
-    }();
+    static constexpr auto candidates =
+        candidate_rows<static_cast<std::size_t>(candidate_count(Leaf, 0, Trigger))>(Leaf, 0, Trigger);
 
-    static constexpr int component_candidate_count(int frontier, int component) {
-        int n = 0;
-        for (int a = frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
-            for (int i = from_source_begin[static_cast<std::size_t>(a)];
-                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
-                n += is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition) ? 1 : 0;
-            if (a == component) break;
-        }
-        return n;
-    }
+    // The condition-driven rows a component's turn tries from its active frontier up to the
+    // component itself ([BSC]: one transition per component per cycle).
     template <int Frontier, int Component>
-    static constexpr auto component_candidates = [] {
-        std::array<int, static_cast<std::size_t>(component_candidate_count(Frontier, Component))> out{};
-        std::size_t n = 0;
-        for (int a = Frontier;; a = tree.parent[static_cast<std::size_t>(a)]) {
-            for (int i = from_source_begin[static_cast<std::size_t>(a)];
-                 i < from_source_begin[static_cast<std::size_t>(a) + 1]; ++i)
-                if (is_transition_on(from_source[static_cast<std::size_t>(i)], any_condition))
-                    out[n++] = from_source[static_cast<std::size_t>(i)];
-            if (a == Component) break;
-        }
-        return out;
-    }();
+    static constexpr auto component_candidates =
+        candidate_rows<static_cast<std::size_t>(candidate_count(Frontier, Component, any_condition))>(Frontier,
+                                                                                                      Component,
+                                                                                                      any_condition);
 
     // The timeout rows of the source of timeout row `row` declared after it, in declaration
     // order: those it competes with by due time when its condition holds (the earlier ones did

@@ -6,6 +6,7 @@
 // values in the chart); each format of <bsc/export.hpp> is a walk over this model.
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -27,6 +28,7 @@
 #include <bsc/dsl/row.hpp>
 #include <bsc/dsl/tree.hpp>
 #include <bsc/event_name.hpp>
+#include <bsc/priority.hpp>
 
 namespace bsc::detail {
 
@@ -148,10 +150,15 @@ struct transition_info {
     std::string event;              ///< the event's name, "after(3s)" for a timeout, empty if eventless
     std::string delay;              ///< a timeout's delay, "3s"
     std::string guard;              ///< empty if unguarded
+    std::string cond;               ///< the guard as SCXML's cond: bsc::in<S> as In('id'); empty if unguarded
     std::string action;             ///< empty if no action
     bool local = false;             ///< a local transition (bsc::local): its source stays active
     bool defers = false;            ///< a row that defers its event (`/ bsc::defer`)
     std::vector<int> more_targets;  ///< a transition with several targets (bsc::targets): the others
+    /// Under parent-first priority, the transitions of its source's ancestors (indices in
+    /// diagram::transitions) that take every event it takes and are tried before it: it fires
+    /// only when none of them is enabled. Empty under child-first.
+    std::vector<int> tried_before;
 
     /// Every target: none for an internal transition, else `target` and `more_targets`.
     std::vector<int> targets() const {
@@ -174,6 +181,7 @@ struct transition_info {
 struct diagram {
     std::vector<state_info> states;            ///< document order; states[0] is the root
     std::vector<transition_info> transitions;  ///< declaration order, internal ones included
+    priority order = priority::child_first;    ///< the chart's priority among nested transitions
 
     /// s is a or below a.
     bool contains(int a, int s) const {
@@ -237,7 +245,22 @@ inline std::vector<std::string> unique_identifiers(std::vector<std::string> cons
     return out;
 }
 
-template <class Row>
+// How a label writes bsc::in<S> (detail/guard_label.hpp): In(S) with S's label, as the diagrams
+// name it, or for SCXML In('id') with the id of S's element.
+template <class Model>
+auto in_state_text(diagram const& m, bool scxml) {
+    return [&m, scxml]<class S>(std::type_identity<S>) {
+        constexpr int s = Model::template index_of_state<S>;
+        if constexpr (s < 1) {  // not a state of the chart (which make_chart rejects)
+            return "In(" + std::string(name_of<S>) + ")";
+        } else {
+            auto const& st = m[s - 1];
+            return scxml ? "In('" + st.id + "')" : "In(" + st.label + ")";
+        }
+    };
+}
+
+template <class Model, class Row>
 void add_row(diagram& m, Row const& row, int index, int source) {
     if constexpr (is_entry_row<Row>) {
         m.states[static_cast<std::size_t>(source)].entry.push_back(action_label(row.action));
@@ -260,12 +283,49 @@ void add_row(diagram& m, Row const& row, int index, int source) {
             t.trigger = trigger_kind::event;
             t.event = std::string(event_name<typename trigger::event>);  // as dispatch_by_name knows it
         }
-        if constexpr (Row::guarded) t.guard = guard_label(row.guard);
+        if constexpr (Row::guarded) {
+            t.guard = guard_label(row.guard, in_state_text<Model>(m, false));
+            if constexpr (tests_configuration<std::remove_cvref_t<decltype(row.guard)>>)
+                t.cond = guard_label(row.guard, in_state_text<Model>(m, true));
+            else
+                t.cond = t.guard;
+        }
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(row.action)>, no_action>)
             t.action = action_label(row.action);
         t.defers = Row::defers;
         m.transitions.push_back(std::move(t));
     }
+}
+
+/// Under parent-first priority, whether transition row `outer` is tried before row `inner` on
+/// every event `inner` takes: it leaves a proper ancestor of inner's source, on the same trigger
+/// or on a family of it. (A timeout's trigger is its own.)
+template <std::size_t N, std::size_t R>
+constexpr bool outer_tried_first(topology<N> const& tree, row_table<R> const& rows, int outer, int inner) {
+    auto const o = static_cast<std::size_t>(outer);
+    auto const i = static_cast<std::size_t>(inner);
+    return rows.kinds[o] == row_kind::transition && tree.is_proper_ancestor(rows.source[o], rows.source[i]) &&
+           rows.takes(rows.trigger[o], rows.trigger[i]);
+}
+
+/// Under parent-first priority, a row of an ancestor that takes some of the events of a row
+/// below it but not all (its trigger derives from the inner row's): it is tried first for
+/// those events only, which SCXML's conditions cannot say. {-1, -1} if there is none.
+template <class Model>
+constexpr std::array<int, 2> outer_row_narrower() {
+    if constexpr (Model::order == priority::parent_first && Model::has_families) {
+        for (int o = 0; o < Model::R; ++o)
+            for (int i = 0; i < Model::R; ++i) {
+                auto const oi = static_cast<std::size_t>(o);
+                auto const ii = static_cast<std::size_t>(i);
+                if (Model::rows.kinds[oi] == row_kind::transition && Model::rows.kinds[ii] == row_kind::transition &&
+                    Model::tree.is_proper_ancestor(Model::rows.source[oi], Model::rows.source[ii]) &&
+                    Model::rows.trigger[oi] != Model::rows.trigger[ii] &&
+                    Model::rows.takes(Model::rows.trigger[ii], Model::rows.trigger[oi]))
+                    return {o, i};
+            }
+    }
+    return {-1, -1};
 }
 
 /// The model of a chart (a bsc::make_chart result).
@@ -299,7 +359,7 @@ diagram model_of(Chart const& chart) {
     }
     // clang-format off
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (add_row(m, detail::row_at<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), ...);
+        (add_row<model>(m, detail::row_at<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), ...);
     }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
     // clang-format on
     for (std::size_t k = 0; k < m.transitions.size(); ++k) {
@@ -314,10 +374,20 @@ diagram model_of(Chart const& chart) {
         t.local = t.target >= 0 && model::rows.domain[static_cast<std::size_t>(t.row)] ==
                                        model::rows.source[static_cast<std::size_t>(t.row)];
     }
+    m.order = model::order;
+    if constexpr (model::order == priority::parent_first)
+        for (auto& t : m.transitions)
+            for (std::size_t k = 0; k < m.transitions.size(); ++k)
+                if (outer_tried_first(model::tree, model::rows, m.transitions[k].row, t.row))
+                    t.tried_before.push_back(static_cast<int>(k));
     return m;
 }
 
 // ---- Text helpers shared by the formats ----------------------------------------------------
+
+/// What a diagram of a parent-first chart says of its priority (child first, SCXML's and UML's,
+/// goes without saying).
+inline constexpr std::string_view parent_first_note = "priority: parent first (outer transitions before inner ones)";
 
 inline std::string indent(int level) { return std::string(static_cast<std::size_t>(level) * 4, ' '); }
 

@@ -12,6 +12,7 @@
 #include <bsc/detail/type_name.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/dsl/tree.hpp>
+#include <bsc/priority.hpp>
 #include <bsc/detail/model/event_families.hpp>
 
 namespace bsc::detail {
@@ -325,6 +326,8 @@ struct chart_model {
 
     static constexpr int N = static_cast<int>(nodes::size);
     static constexpr int R = static_cast<int>(row_types::size);
+    // Which of a state's candidate rows are tried first: its own or its ancestors'.
+    static constexpr priority order = Chart::order;
 
     static constexpr topology<nodes::size> tree = [] {
         topology<nodes::size> t{};

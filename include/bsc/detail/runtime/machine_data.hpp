@@ -29,16 +29,22 @@
 namespace bsc::detail {
 
 // Whether a row's guard or action can throw, called as a machine calls it: a transition's
-// guard with (context, event) and its action with (context, event, queue), an entry or exit
-// action with (context, queue).
+// guard with (context, event), or (context, event, configuration) if it tests the configuration
+// (bsc::in<S>), and its action with (context, event, queue), an entry or exit action with
+// (context, queue).
 template <class Context, class Queue, class Row>
 struct row_nothrow {  // an entry or exit row
     static constexpr bool value = std::is_nothrow_invocable_v<decltype(Row::action) const&, Context&, Queue&>;
 };
+template <class G, class Context, class E, bool = tests_configuration<G>>
+inline constexpr bool guard_call_nothrow = std::is_nothrow_invocable_v<G const&, Context const&, E const&>;
+template <class G, class Context, class E>
+inline constexpr bool guard_call_nothrow<G, Context, E, true> =
+    std::is_nothrow_invocable_v<G const&, Context const&, E const&, any_configuration const&>;
 template <class Context, class Queue, class S, class Trigger, class G, class A, class T>
 struct row_nothrow<Context, Queue, transition_row<S, Trigger, G, A, T>> {
     using event = row_event_t<transition_row<S, Trigger, G, A, T>>;
-    static constexpr bool value = std::is_nothrow_invocable_v<G const&, Context const&, event const&> &&
+    static constexpr bool value = guard_call_nothrow<G, Context, event> &&
                                   std::is_nothrow_invocable_v<A const&, Context&, event const&, Queue&>;
 };
 

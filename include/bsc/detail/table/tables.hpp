@@ -19,6 +19,7 @@
 #include <bsc/detail/row_storage.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/dsl/row.hpp>
+#include <bsc/detail/model/configuration_view.hpp>
 #include <bsc/detail/model/layout.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/policies.hpp>
@@ -94,9 +95,18 @@ struct state_row {
 template <class Chart, class Raise>
 struct transition_row {
     using context_type = typename Chart::context_type;
+    /// Whether a guard of the chart tests the configuration (bsc::in<S>): then every guard
+    /// receives the configuration bytes too (bsc::configuration::active, null for a chart without
+    /// composites), and the guards of other charts do not.
+    static constexpr bool guards_read_configuration =
+        bsc::detail::any_row_tests_configuration<typename Chart::row_types>;
     /// The guard, called with the event the transition is triggered by (bsc::eventless{} for
-    /// eventless transitions) passed as `event`.
-    using guard_fn = bool (*)(Chart const& chart, context_type const& context, void const* event);
+    /// eventless transitions) passed as `event`, and in a chart with bsc::in<S> with the
+    /// configuration bytes as `active`.
+    using guard_fn = std::conditional_t<guards_read_configuration,
+                                        bool (*)(Chart const& chart, context_type const& context, void const* event,
+                                                 std::uint8_t const* active),
+                                        bool (*)(Chart const& chart, context_type const& context, void const* event)>;
     using action_fn = void (*)(Chart const& chart, context_type& context, void const* event, Raise& raise);
     /// The delay of a timeout. `after(d)` stores d in the chart object, not in its type, so the
     /// delay is read from the chart like a guard.
@@ -161,6 +171,20 @@ private:
     static bool guard_thunk(chart_type const& chart, context_type const& context, void const* event) {
         return static_cast<bool>(bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows)
                                      .guard(context, *static_cast<event_type_of<Row> const*>(event)));
+    }
+    // The thunk of a guard in a chart with bsc::in<S>: a guard that tests the configuration sees
+    // it through the view of its row (detail/model/configuration_view.hpp, tests resolved at
+    // compile time), the others ignore it.
+    template <int Row>
+    static bool configuration_guard_thunk(chart_type const& chart, context_type const& context, void const* event,
+                                          [[maybe_unused]] std::uint8_t const* active) {
+        auto const& guard = bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows).guard;
+        auto const& e = *static_cast<event_type_of<Row> const*>(event);
+        using view = bsc::detail::configuration_view<model, rows.source[Row]>;
+        if constexpr (bsc::detail::tests_configuration<std::remove_cvref_t<decltype(guard)>>)
+            return static_cast<bool>(guard(context, e, view{active}));
+        else
+            return static_cast<bool>(guard(context, e));
     }
 
     template <int Row>
@@ -238,7 +262,10 @@ private:
                     : rows.trigger[i] == bsc::detail::eventless_id ? eventless_id
                                                                    : timeout_id;
         row.to = id(rows.target[i]);
-        if constexpr (rows.guarded[i]) row.guard = &guard_thunk<r>;
+        if constexpr (rows.guarded[i] && transition_row_type::guards_read_configuration)
+            row.guard = &configuration_guard_thunk<r>;
+        else if constexpr (rows.guarded[i])
+            row.guard = &guard_thunk<r>;
         // (A deferring row keeps its event and runs nothing: no action either.)
         if constexpr (!std::is_same_v<std::remove_cvref_t<decltype(std::declval<R const&>().action)>,
                                       bsc::detail::no_action> &&
@@ -271,6 +298,16 @@ public:
     static constexpr std::size_t slots = static_cast<std::size_t>(tree.slots);
     /// The root of the chart (row 1; row 0 is the implicit top).
     static constexpr state_id root = layout::root;
+    /// The chart's priority among nested transitions (bsc/priority.hpp): whether a basic
+    /// state tries its own transitions before its ancestors' (child_first) or after
+    /// (parent_first).
+    static constexpr bsc::priority order = model::order;
+    /// The most states on one path from the top down: the longest list of origins a state tries.
+    static constexpr std::size_t levels = [] {
+        int deepest = 0;
+        for (int d : tree.depth) deepest = d > deepest ? d : deepest;
+        return static_cast<std::size_t>(deepest) + 1;
+    }();
     /// The number of state S (its row in `states`).
     template <class S>
     static constexpr state_id state_of = id(model::template index_of_state<S>);
