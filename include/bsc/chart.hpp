@@ -109,8 +109,12 @@ namespace detail {
 // composite between them has C's branch as its only child, and no row whose domain lies inside
 // P exits C) leaves, with its clock, every state D below P that is likewise active with P. A
 // timeout row of such a D with a longer delay never fires; with an equal delay, neither does
-// one of C declared later, or one of an ancestor of C (child first: the deeper state's row is
-// tried first), or one of a descendant of C (parent first: the outer state's row is).
+// one of C declared later, or one of an ancestor of C in C's [BSC] component (child first: the
+// deeper state's row is tried first), or one of a descendant of C (parent first, or across a
+// parallel state: the outer row is tried first, or its component takes its turn first). For D
+// other than C, only where no other condition-driven row is tried before C's in C's component:
+// one that fires in the cycle C's row comes due holds it back, one transition per component per
+// cycle, and D's may come due meanwhile. (C's own timeouts compete by due time.)
 // (make_chart reports it through the dead row's copy: dsl/row.hpp, timeout_trigger.) Returns
 // the positions (from 1) of the first dead row found and of the row that beats it; {0, 0} if
 // there is none.
@@ -138,6 +142,33 @@ constexpr bool active_with(topology<N> const& t, row_table<Count> const& r, int 
     return true;
 }
 
+// The [BSC] component of state s: the root, or the child of a parallel state that s lies in.
+template <std::size_t N>
+constexpr int component_of(topology<N> const& t, int s) {
+    for (int a = s; a > 1; a = t.parent[static_cast<std::size_t>(a)])
+        if (t.kinds[static_cast<std::size_t>(t.parent[static_cast<std::size_t>(a)])] == kind::parallel) return a;
+    return 1;
+}
+
+// Whether a condition-driven row other than `first` and `other` is tried before `first` in its
+// component: a guarded or internal one could fire in the cycle `first` comes due instead of it.
+template <std::size_t N, std::size_t Count>
+constexpr bool held_back(topology<N> const& t, row_table<Count> const& r, std::size_t first, std::size_t other,
+                         priority order) {
+    int const c = r.source[first];
+    for (std::size_t k = 0; k < Count; ++k) {
+        int const s = r.source[k];
+        if (k == first || k == other || r.kinds[k] != row_kind::transition || r.trigger[k] >= 0) continue;
+        if (s == c) {
+            if (r.trigger[k] == eventless_id && k < first) return true;  // its timeouts compete by due time
+        } else if (component_of(t, s) == component_of(t, c) &&
+                   (order == priority::child_first ? t.is_proper_ancestor(c, s) : t.is_proper_ancestor(s, c))) {
+            return true;
+        }
+    }
+    return false;
+}
+
 template <std::size_t N, std::size_t Count>
 constexpr dead_timeout find_dead_timeout(topology<N> const& t, row_table<Count> const& r,
                                          std::array<duration, Count> const& delay, priority order) {
@@ -155,9 +186,11 @@ constexpr dead_timeout find_dead_timeout(topology<N> const& t, row_table<Count> 
                 std::size_t const j = timeouts[b];
                 int const d = r.source[j];
                 if (j == first || !t.contains(p, d) || (d != p && !active_with(t, r, p, d))) continue;
-                bool const tried_first = d == c                           ? first < j
-                                         : order == priority::child_first ? t.is_proper_ancestor(d, c)
-                                                                          : t.is_proper_ancestor(c, d);
+                if (d != c && held_back(t, r, first, j, order)) continue;
+                bool const inner_first = order == priority::child_first && component_of(t, c) == component_of(t, d);
+                bool const tried_first = d == c        ? first < j
+                                         : inner_first ? t.is_proper_ancestor(d, c)
+                                                       : t.is_proper_ancestor(c, d);
                 bool const beaten = delay[first] < delay[j] || (delay[first] == delay[j] && tried_first);
                 if (beaten) return {j + 1, first + 1};
             }

@@ -353,7 +353,7 @@ private:
     // A guard with bsc::in<S> is called with a view of the configuration bytes, whose tests are
     // resolved at compile time (detail/model/configuration_view.hpp: only the bytes between S
     // and its lowest common ancestor with the row's source, active while the guard is evaluated;
-    // one compare for S in another region); every other guard as g(context, event), as before.
+    // one compare for a child of another region); every other guard as g(context, event), as before.
     template <int Row, class E>
     constexpr bool guard_holds(E const& e) {
         static_assert(rows.guarded[Row]);

@@ -1,6 +1,6 @@
 #pragma once
 // bsc::priority: which of two enabled transitions a state takes when one leaves an ancestor of
-// the other's source (docs/semantics.md, "Selection").
+// the other's source (docs/semantics.md, "Selecting transitions", "Priority").
 
 #include <cstdint>
 

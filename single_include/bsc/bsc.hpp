@@ -2727,7 +2727,7 @@ constexpr auto parallel(A...) {
 // end include/bsc/dsl/tree.hpp
 // begin include/bsc/priority.hpp
 // bsc::priority: which of two enabled transitions a state takes when one leaves an ancestor of
-// the other's source (docs/semantics.md, "Selection").
+// the other's source (docs/semantics.md, "Selecting transitions", "Priority").
 
 #include <cstdint>
 
@@ -4918,8 +4918,12 @@ namespace detail {
 // composite between them has C's branch as its only child, and no row whose domain lies inside
 // P exits C) leaves, with its clock, every state D below P that is likewise active with P. A
 // timeout row of such a D with a longer delay never fires; with an equal delay, neither does
-// one of C declared later, or one of an ancestor of C (child first: the deeper state's row is
-// tried first), or one of a descendant of C (parent first: the outer state's row is).
+// one of C declared later, or one of an ancestor of C in C's [BSC] component (child first: the
+// deeper state's row is tried first), or one of a descendant of C (parent first, or across a
+// parallel state: the outer row is tried first, or its component takes its turn first). For D
+// other than C, only where no other condition-driven row is tried before C's in C's component:
+// one that fires in the cycle C's row comes due holds it back, one transition per component per
+// cycle, and D's may come due meanwhile. (C's own timeouts compete by due time.)
 // (make_chart reports it through the dead row's copy: dsl/row.hpp, timeout_trigger.) Returns
 // the positions (from 1) of the first dead row found and of the row that beats it; {0, 0} if
 // there is none.
@@ -4947,6 +4951,33 @@ constexpr bool active_with(topology<N> const& t, row_table<Count> const& r, int 
     return true;
 }
 
+// The [BSC] component of state s: the root, or the child of a parallel state that s lies in.
+template <std::size_t N>
+constexpr int component_of(topology<N> const& t, int s) {
+    for (int a = s; a > 1; a = t.parent[static_cast<std::size_t>(a)])
+        if (t.kinds[static_cast<std::size_t>(t.parent[static_cast<std::size_t>(a)])] == kind::parallel) return a;
+    return 1;
+}
+
+// Whether a condition-driven row other than `first` and `other` is tried before `first` in its
+// component: a guarded or internal one could fire in the cycle `first` comes due instead of it.
+template <std::size_t N, std::size_t Count>
+constexpr bool held_back(topology<N> const& t, row_table<Count> const& r, std::size_t first, std::size_t other,
+                         priority order) {
+    int const c = r.source[first];
+    for (std::size_t k = 0; k < Count; ++k) {
+        int const s = r.source[k];
+        if (k == first || k == other || r.kinds[k] != row_kind::transition || r.trigger[k] >= 0) continue;
+        if (s == c) {
+            if (r.trigger[k] == eventless_id && k < first) return true;  // its timeouts compete by due time
+        } else if (component_of(t, s) == component_of(t, c) &&
+                   (order == priority::child_first ? t.is_proper_ancestor(c, s) : t.is_proper_ancestor(s, c))) {
+            return true;
+        }
+    }
+    return false;
+}
+
 template <std::size_t N, std::size_t Count>
 constexpr dead_timeout find_dead_timeout(topology<N> const& t, row_table<Count> const& r,
                                          std::array<duration, Count> const& delay, priority order) {
@@ -4964,9 +4995,11 @@ constexpr dead_timeout find_dead_timeout(topology<N> const& t, row_table<Count> 
                 std::size_t const j = timeouts[b];
                 int const d = r.source[j];
                 if (j == first || !t.contains(p, d) || (d != p && !active_with(t, r, p, d))) continue;
-                bool const tried_first = d == c                           ? first < j
-                                         : order == priority::child_first ? t.is_proper_ancestor(d, c)
-                                                                          : t.is_proper_ancestor(c, d);
+                if (d != c && held_back(t, r, first, j, order)) continue;
+                bool const inner_first = order == priority::child_first && component_of(t, c) == component_of(t, d);
+                bool const tried_first = d == c        ? first < j
+                                         : inner_first ? t.is_proper_ancestor(d, c)
+                                                       : t.is_proper_ancestor(c, d);
                 bool const beaten = delay[first] < delay[j] || (delay[first] == delay[j] && tried_first);
                 if (beaten) return {j + 1, first + 1};
             }
@@ -6355,7 +6388,7 @@ struct plan : chart_layout<Model> {
 // common ancestor of S and the source is known to be active: only the states from S up to, not
 // including, their lowest common ancestor remain, and of those only the ones whose parent is a
 // composite need a byte compared (a region of a parallel state is active with its parent). For S
-// in another region of a parallel state above the source that is one compare; for S the source
+// a child of another region of a parallel state above the source that is one compare; for S the source
 // or one of its ancestors, none (true); for S below another child of a composite above the
 // source, none either (false: the composite's active child is the source's).
 
@@ -10670,7 +10703,7 @@ private:
     // A guard with bsc::in<S> is called with a view of the configuration bytes, whose tests are
     // resolved at compile time (detail/model/configuration_view.hpp: only the bytes between S
     // and its lowest common ancestor with the row's source, active while the guard is evaluated;
-    // one compare for S in another region); every other guard as g(context, event), as before.
+    // one compare for a child of another region); every other guard as g(context, event), as before.
     template <int Row, class E>
     constexpr bool guard_holds(E const& e) {
         static_assert(rows.guarded[Row]);

@@ -225,6 +225,40 @@ TEST_CASE_TEMPLATE("parent first, the livelock check's twin runs: the outer even
     CHECK(m.template is<cf::Done>());
 }
 
+namespace prio {
+// A longer outer timeout beside a shorter inner one that leaves it, with a guarded row of the root
+// tried first, parent first, in the same component: while the root's row fires, one transition
+// per cycle, the inner timeout waits, and the outer one comes due. make_chart accepts the chart
+// (the outer timeout is not dead), and it fires.
+struct monitor {
+    int scans = 0;
+};
+struct Busy;
+struct Step;
+struct Retry;
+inline constexpr auto held_back = bsc::make_chart<monitor, bsc::parent_first>(
+    bsc::composite<Station>(bsc::initial<Idle>, bsc::state<Idle>,
+                            bsc::composite<Busy>(bsc::initial<Step>, bsc::state<Step>), bsc::state<Retry>),
+    bsc::state<Station>[([](monitor const& m) { return m.scans < 15; })] / [](monitor& m) { ++m.scans; },
+    bsc::state<Idle> + bsc::event<go> = bsc::state<Busy>,
+    bsc::state<Busy> + bsc::after(std::chrono::milliseconds(1200)) = bsc::state<Idle>,
+    bsc::state<Step> + bsc::after(std::chrono::seconds(1)) = bsc::state<Retry>,
+    bsc::state<Retry> + bsc::event<go> = bsc::state<Idle>);
+}  // namespace prio
+
+TEST_CASE_TEMPLATE("parent first, an outer timeout longer than an inner one fires while the inner one is held back",
+                   Backend, compiled, table) {
+    using namespace prio;
+    machine_t<Backend, decltype(held_back), bsc::scan_policy> m{held_back, monitor{}};
+    m.step(0ms);
+    m.dispatch(go{});
+    REQUIRE(m.template is<Step>());
+    int scan = 1;
+    for (; scan <= 20 && m.template is<Step>(); ++scan) m.step(std::chrono::milliseconds(100 * scan));
+    CHECK(m.template is<Idle>());  // Busy's 1.2 s timeout, not Step's 1 s one
+    CHECK(scan - 1 == 15);         // the first scan after the root's row stops firing
+}
+
 TEST_CASE("the priority is the chart's, known at compile time, and the default is child first") {
     using namespace prio;
     static_assert(decltype(parent_first_station)::order == bsc::priority::parent_first);

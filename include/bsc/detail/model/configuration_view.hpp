@@ -8,7 +8,7 @@
 // common ancestor of S and the source is known to be active: only the states from S up to, not
 // including, their lowest common ancestor remain, and of those only the ones whose parent is a
 // composite need a byte compared (a region of a parallel state is active with its parent). For S
-// in another region of a parallel state above the source that is one compare; for S the source
+// a child of another region of a parallel state above the source that is one compare; for S the source
 // or one of its ancestors, none (true); for S below another child of a composite above the
 // source, none either (false: the composite's active child is the source's).
 
