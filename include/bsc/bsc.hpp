@@ -1,6 +1,7 @@
 #pragma once
 // bsc: Basic Statecharts for C++20. Include this header to get the whole library.
 
+#include <bsc/allow.hpp>
 #include <bsc/chart.hpp>
 #include <bsc/chart_ref.hpp>
 #include <bsc/configuration.hpp>

@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <utility>
 
+#include <bsc/allow.hpp>
 #include <bsc/error.hpp>
 #include <bsc/detail/checks/checks.hpp>
 #include <bsc/detail/meta.hpp>
@@ -242,18 +243,22 @@ constexpr auto rows(Rows... rows) {
     return detail::flatten_rows(std::move(rows)...);
 }
 
+/// `make_chart<Context, Priority, bsc::allow<Findings...>>(tree, rows...)` declares a chart that
+/// allows the findings named (bsc/allow.hpp): the checks run, and those findings are dropped.
 /// `make_chart<Context, bsc::parent_first>(tree, rows...)` declares a chart whose outer
 /// transitions have priority over inner ones (bsc/priority.hpp); `make_chart<Context>` is
 /// `make_chart<Context, bsc::child_first>`.
 // (One function, the priority a defaulted parameter: a forwarding overload would move the rows
 // into a second call, whose frame, spelling every row, a dead timeout's error would then carry.)
-template <class Context, priority Order = priority::child_first, class Root, class... Rows>
+template <class Context, priority Order = priority::child_first, class Allowed = allow<>, class Root, class... Rows>
 constexpr auto make_chart(Root root, Rows... rows) {
-    if constexpr ((detail::is_row_group<Rows> || ...)) {
+    if constexpr (!detail::is_allow<Allowed> || !detail::all_allowable<Allowed>) {
+        return detail::rejected_chart<Context, error::finding_not_allowable<Allowed>>{};
+    } else if constexpr ((detail::is_row_group<Rows> || ...)) {
         auto group = detail::flatten_rows(std::move(rows)...);
         // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return make_chart<Context, Order>(std::move(root), detail::take_row<I>(group.rows)...);
+            return make_chart<Context, Order, Allowed>(std::move(root), detail::take_row<I>(group.rows)...);
         }(std::make_index_sequence<detail::rows_in<decltype(group)>>{});
         // clang-format on
     } else if constexpr (!detail::is_compound_root<Root>()) {
@@ -267,7 +272,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
         // The chart, or, when its checks find errors, the rejected_chart whose destruction
         // reports them.
         using chart_type = chart<Context, Root, Order, Rows...>;
-        using errors = decltype(detail::check_chart<chart_type>());
+        using errors = typename detail::without_allowed<Allowed, decltype(detail::check_chart<chart_type>())>::type;
         if constexpr (errors::size == 0) {
             if constexpr ((detail::is_timeout_row<Rows> || ...)) {
                 auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree,

@@ -404,6 +404,18 @@ struct event_not_dispatchable {
 
 // ---- the arguments of bsc::make_chart ----------------------------------------------------
 
+template <class Allowance>
+struct finding_not_allowable {
+    constexpr ~finding_not_allowable() {
+        static_assert(detail::dependent_false<finding_not_allowable>,
+                      "bsc: make_chart's third argument must be bsc::allow<...> of findings a chart may allow: "
+                      "unreachable_state, dead_end_state, shadowed_transition, dead_transition, "
+                      "dead_transition_behind_outer, conflicting_transitions, done_never_raised, "
+                      "eventless_livelock (bsc::error::...); a malformed tree or an error in a row is never "
+                      "allowed");
+    }
+};
+
 template <class Argument>
 struct not_a_row {
     constexpr ~not_a_row() {

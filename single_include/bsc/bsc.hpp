@@ -5,52 +5,13 @@
 // begin include/bsc/bsc.hpp
 // bsc: Basic Statecharts for C++20. Include this header to get the whole library.
 
-// begin include/bsc/chart.hpp
-// bsc::make_chart: a chart is its state tree and its rows, checked when it is declared.
-
-#include <array>
-#include <cstddef>
-#include <type_traits>
-#include <utility>
-
-// begin include/bsc/error.hpp
-// Every error bsc reports at compile time, in one place. Each is a class template whose
-// arguments are the culprits (states, events, callables); the static_assert in its destructor
-// says what is wrong and how to fix it, and its condition, dependent_false<the error type>,
-// makes the compiler print the error's name with the culprits. The assertion sits in the
-// destructor so that it fires where an error object is destroyed, not where the class is
-// named: make_chart returns its findings as an object (detail::rejected_chart) whose
-// destructor raises them from a function the compiler instantiates at the end of the
-// translation unit, so the error's context is not make_chart<...the whole chart type...>.
-// detail::report<E>() raises one anywhere else. docs/checks.md lists them all with an example
-// each.
+// begin include/bsc/allow.hpp
+// bsc::allow: a chart's explicit allowance of findings of the static checks that it accepts by
+// design, as a chart compiled from an SCXML document does (SCXML accepts states never entered
+// and transitions that never fire).
 
 #include <cstddef>
-#include <type_traits>
 
-// begin include/bsc/detail/fixed_string.hpp
-// A string as a template argument: the names of bsc::named<"released"> and the rows that
-// errors reproduce (bsc::error::as_written).
-
-#include <cstddef>
-#include <string_view>
-
-namespace bsc::detail {
-
-/// N characters including the terminating zero, usable as a non-type template argument.
-template <std::size_t N>
-struct fixed_string {
-    char chars[N]{};
-    constexpr fixed_string() = default;
-    // Implicit, so that a string literal converts to it as a template argument.
-    constexpr fixed_string(char const (&text)[N]) {  // NOLINT(google-explicit-constructor)
-        for (std::size_t i = 0; i < N; ++i) chars[i] = text[i];
-    }
-    constexpr std::string_view view() const { return {chars, N - 1}; }
-};
-
-}  // namespace bsc::detail
-// end include/bsc/detail/fixed_string.hpp
 // begin include/bsc/detail/meta.hpp
 // Small type-level toolkit: type lists, lookup by type and by position.
 // Everything heavier than this is done by constexpr functions over arrays.
@@ -312,6 +273,44 @@ constexpr void visit_index(int i, F&& f) {
 
 }  // namespace bsc::detail
 // end include/bsc/detail/meta.hpp
+// begin include/bsc/error.hpp
+// Every error bsc reports at compile time, in one place. Each is a class template whose
+// arguments are the culprits (states, events, callables); the static_assert in its destructor
+// says what is wrong and how to fix it, and its condition, dependent_false<the error type>,
+// makes the compiler print the error's name with the culprits. The assertion sits in the
+// destructor so that it fires where an error object is destroyed, not where the class is
+// named: make_chart returns its findings as an object (detail::rejected_chart) whose
+// destructor raises them from a function the compiler instantiates at the end of the
+// translation unit, so the error's context is not make_chart<...the whole chart type...>.
+// detail::report<E>() raises one anywhere else. docs/checks.md lists them all with an example
+// each.
+
+#include <cstddef>
+#include <type_traits>
+
+// begin include/bsc/detail/fixed_string.hpp
+// A string as a template argument: the names of bsc::named<"released"> and the rows that
+// errors reproduce (bsc::error::as_written).
+
+#include <cstddef>
+#include <string_view>
+
+namespace bsc::detail {
+
+/// N characters including the terminating zero, usable as a non-type template argument.
+template <std::size_t N>
+struct fixed_string {
+    char chars[N]{};
+    constexpr fixed_string() = default;
+    // Implicit, so that a string literal converts to it as a template argument.
+    constexpr fixed_string(char const (&text)[N]) {  // NOLINT(google-explicit-constructor)
+        for (std::size_t i = 0; i < N; ++i) chars[i] = text[i];
+    }
+    constexpr std::string_view view() const { return {chars, N - 1}; }
+};
+
+}  // namespace bsc::detail
+// end include/bsc/detail/fixed_string.hpp
 
 namespace bsc::error {
 
@@ -700,6 +699,18 @@ struct event_not_dispatchable {
 };
 
 // ---- the arguments of bsc::make_chart ----------------------------------------------------
+
+template <class Allowance>
+struct finding_not_allowable {
+    constexpr ~finding_not_allowable() {
+        static_assert(detail::dependent_false<finding_not_allowable>,
+                      "bsc: make_chart's third argument must be bsc::allow<...> of findings a chart may allow: "
+                      "unreachable_state, dead_end_state, shadowed_transition, dead_transition, "
+                      "dead_transition_behind_outer, conflicting_transitions, done_never_raised, "
+                      "eventless_livelock (bsc::error::...); a malformed tree or an error in a row is never "
+                      "allowed");
+    }
+};
 
 template <class Argument>
 struct not_a_row {
@@ -1106,6 +1117,86 @@ inline constexpr bool is_rejected_chart<rejected_chart<Context, Errors...>> = tr
 
 }  // namespace bsc::detail
 // end include/bsc/error.hpp
+
+namespace bsc {
+
+/// The findings a chart allows: `bsc::make_chart<Context, bsc::child_first,
+/// bsc::allow<bsc::error::unreachable_state, bsc::error::dead_end_state>>(tree, rows...)`
+/// compiles although a state is never entered or has no way out; every other check still
+/// holds. Only findings after which the machine still runs as the chart says can be allowed:
+/// unreachable_state, dead_end_state, shadowed_transition, dead_transition,
+/// dead_transition_behind_outer, conflicting_transitions, done_never_raised and
+/// eventless_livelock (bsc::error::finding_not_allowable names any other).
+template <template <class...> class... Findings>
+struct allow {};
+
+}  // namespace bsc
+
+namespace bsc::detail {
+
+template <template <class...> class A, template <class...> class B>
+inline constexpr bool same_template = false;
+template <template <class...> class A>
+inline constexpr bool same_template<A, A> = true;
+
+template <template <class...> class F>
+inline constexpr bool allowable_finding = same_template<F, error::unreachable_state> ||
+                                          same_template<F, error::dead_end_state> ||
+                                          same_template<F, error::shadowed_transition> ||
+                                          same_template<F, error::dead_transition> ||
+                                          same_template<F, error::dead_transition_behind_outer> ||
+                                          same_template<F, error::conflicting_transitions> ||
+                                          same_template<F, error::done_never_raised> ||
+                                          same_template<F, error::eventless_livelock>;
+
+// The finding inside the wrappers that say which row it concerns.
+template <class E>
+struct finding_of {
+    using type = E;
+};
+template <std::size_t Position, class E, class AsWritten>
+struct finding_of<error::at_row<Position, E, AsWritten>> : finding_of<E> {};
+template <class S, class T, class G, class E>
+struct finding_of<error::in_row<S, T, G, E>> : finding_of<E> {};
+
+template <class E, template <class...> class F>
+inline constexpr bool is_finding = false;
+template <template <class...> class F, class... Args>
+inline constexpr bool is_finding<F<Args...>, F> = true;
+
+template <class Allowed, class E>
+inline constexpr bool allowed_finding = false;
+template <template <class...> class... Fs, class E>
+inline constexpr bool allowed_finding<allow<Fs...>, E> = (is_finding<typename finding_of<E>::type, Fs> || ...);
+
+// The errors that remain once the allowed findings are taken out.
+template <class Allowed, class Errors>
+struct without_allowed;
+template <class Allowed, class... Errors>
+struct without_allowed<Allowed, type_list<Errors...>> {
+    using type = concat_t<std::conditional_t<allowed_finding<Allowed, Errors>, type_list<>, type_list<Errors>>...>;
+};
+
+template <class Allowed>
+inline constexpr bool all_allowable = false;
+template <template <class...> class... Fs>
+inline constexpr bool all_allowable<allow<Fs...>> = (allowable_finding<Fs> && ...);
+
+template <class T>
+inline constexpr bool is_allow = false;
+template <template <class...> class... Fs>
+inline constexpr bool is_allow<allow<Fs...>> = true;
+
+}  // namespace bsc::detail
+// end include/bsc/allow.hpp
+// begin include/bsc/chart.hpp
+// bsc::make_chart: a chart is its state tree and its rows, checked when it is declared.
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
 // begin include/bsc/detail/checks/checks.hpp
 // Runs every static check of a chart and turns each finding into the error type that names
 // it. A check returns its findings as a type_list of bsc::error types (empty: nothing found);
@@ -5051,18 +5142,22 @@ constexpr auto rows(Rows... rows) {
     return detail::flatten_rows(std::move(rows)...);
 }
 
+/// `make_chart<Context, Priority, bsc::allow<Findings...>>(tree, rows...)` declares a chart that
+/// allows the findings named (bsc/allow.hpp): the checks run, and those findings are dropped.
 /// `make_chart<Context, bsc::parent_first>(tree, rows...)` declares a chart whose outer
 /// transitions have priority over inner ones (bsc/priority.hpp); `make_chart<Context>` is
 /// `make_chart<Context, bsc::child_first>`.
 // (One function, the priority a defaulted parameter: a forwarding overload would move the rows
 // into a second call, whose frame, spelling every row, a dead timeout's error would then carry.)
-template <class Context, priority Order = priority::child_first, class Root, class... Rows>
+template <class Context, priority Order = priority::child_first, class Allowed = allow<>, class Root, class... Rows>
 constexpr auto make_chart(Root root, Rows... rows) {
-    if constexpr ((detail::is_row_group<Rows> || ...)) {
+    if constexpr (!detail::is_allow<Allowed> || !detail::all_allowable<Allowed>) {
+        return detail::rejected_chart<Context, error::finding_not_allowable<Allowed>>{};
+    } else if constexpr ((detail::is_row_group<Rows> || ...)) {
         auto group = detail::flatten_rows(std::move(rows)...);
         // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return make_chart<Context, Order>(std::move(root), detail::take_row<I>(group.rows)...);
+            return make_chart<Context, Order, Allowed>(std::move(root), detail::take_row<I>(group.rows)...);
         }(std::make_index_sequence<detail::rows_in<decltype(group)>>{});
         // clang-format on
     } else if constexpr (!detail::is_compound_root<Root>()) {
@@ -5076,7 +5171,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
         // The chart, or, when its checks find errors, the rejected_chart whose destruction
         // reports them.
         using chart_type = chart<Context, Root, Order, Rows...>;
-        using errors = decltype(detail::check_chart<chart_type>());
+        using errors = typename detail::without_allowed<Allowed, decltype(detail::check_chart<chart_type>())>::type;
         if constexpr (errors::size == 0) {
             if constexpr ((detail::is_timeout_row<Rows> || ...)) {
                 auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree,

@@ -40,8 +40,15 @@ namespace bsc::detail {
 /// Text inside an XML comment, which may not contain "--".
 inline std::string scxml_comment(std::string_view text) { return replace_all(xml_escaped(text), "--", "- -"); }
 
-inline std::string scxml_script(std::string_view action) {
-    return "<script>/* " + xml_escaped(replace_all(std::string(action), "*/", "* /")) + " */</script>";
+// With a row position (annotated documents, below), the script says which row's action it is.
+inline std::string scxml_script(std::string_view action, int row = 0) {
+    std::string const open = row > 0 ? "<script bsc:row=\"" + std::to_string(row) + "\">" : "<script>";
+    return open + "/* " + xml_escaped(replace_all(std::string(action), "*/", "* /")) + " */</script>";
+}
+
+// What an annotated document (bsc::scxml_annotated) says of a state: its C++ type.
+inline std::string scxml_state_annotation(diagram const& m, state_info const& st, bool annotated) {
+    return annotated && !m.context.empty() ? " bsc:type=\"" + xml_escaped(st.type) + "\"" : "";
 }
 
 /// The id of the <history> pseudo-state of a composite: "<id>_history", unique among the states.
@@ -98,10 +105,13 @@ inline std::string scxml_condition(diagram const& m, transition_info const& t) {
 // double quotes holds as they are.
 inline std::string scxml_cond_attribute(std::string_view cond) { return replace_all(xml_escaped(cond), "&apos;", "'"); }
 
-inline void scxml_transition(diagram const& m, transition_info const& t, int level, std::string& out) {
+inline void scxml_transition(diagram const& m, transition_info const& t, int level, std::string& out, bool annotated) {
     auto const pad = indent(level);
     if (t.defers) {  // SCXML has no deferral: a comment in its place
         out += pad + "<!-- " + scxml_comment(t.label()) + ": the event is deferred (UML), which SCXML cannot say -->\n";
+        if (annotated)  // an element of bsc's namespace, which SCXML processors ignore
+            out += pad + "<bsc:defer event=\"" + event_descriptor(t.event) + "\" bsc:row=\"" +
+                   std::to_string(t.row + 1) + "\" bsc:event=\"" + xml_escaped(t.event_type) + "\"/>\n";
         return;
     }
     if (t.trigger == trigger_kind::timeout)
@@ -119,10 +129,16 @@ inline void scxml_transition(diagram const& m, transition_info const& t, int lev
         out += "\"";
     }
     if (t.target < 0 || t.local) out += " type=\"internal\"";
+    int const row = annotated ? t.row + 1 : 0;
+    if (annotated) {
+        out += " bsc:row=\"" + std::to_string(row) + "\"";
+        if (!t.event_type.empty() && t.trigger == trigger_kind::event)
+            out += " bsc:event=\"" + xml_escaped(t.event_type) + "\"";
+    }
     if (t.action.empty())
         out += "/>\n";
     else
-        out += ">\n" + pad + "    " + scxml_script(t.action) + "\n" + pad + "</transition>\n";
+        out += ">\n" + pad + "    " + scxml_script(t.action, row) + "\n" + pad + "</transition>\n";
 }
 
 // Whether the chart halts: its root is a composite with a final child. In SCXML the root is a
@@ -135,18 +151,22 @@ inline bool halts(diagram const& m) {
     return false;
 }
 
-inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
+inline void scxml_state(diagram const& m, int s, int level, std::string& out, bool annotated) {
     auto const& st = m[s];
     auto const pad = indent(level);
+    auto const row_of = [annotated](std::vector<int> const& rows, std::size_t k) {
+        return annotated && k < rows.size() ? rows[k] : 0;
+    };
     if (st.node_kind == kind::history) {  // a history state and its default transition
-        out += pad + "<history id=\"" + st.id + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") +
-               "\">\n";
+        out += pad + "<history id=\"" + st.id + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") + "\"" +
+               scxml_state_annotation(m, st, annotated) + ">\n";
         out += pad + "    <transition target=\"" + m[st.initial].id + "\"";
         if (st.initial_actions.empty()) {
             out += "/>\n";
         } else {
             out += ">\n";
-            for (auto const& a : st.initial_actions) out += pad + "        " + scxml_script(a) + "\n";
+            for (std::size_t k = 0; k < st.initial_actions.size(); ++k)
+                out += pad + "        " + scxml_script(st.initial_actions[k], row_of(st.initial_rows, k)) + "\n";
             out += pad + "    </transition>\n";
         }
         out += pad + "</history>\n";
@@ -157,7 +177,7 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
     std::string element = "state";
     if (st.node_kind == kind::parallel) element = "parallel";
     if (st.node_kind == kind::final_state && !has_transitions) element = "final";
-    out += pad + "<" + element + " id=\"" + st.id + "\"";
+    out += pad + "<" + element + " id=\"" + st.id + "\"" + scxml_state_annotation(m, st, annotated);
     // An initial transition with actions is an <initial> element; without, the attribute.
     bool const initial_element = st.initial >= 0 && st.hist == history::none && !st.initial_actions.empty();
     if (st.initial >= 0 && st.hist == history::none && !initial_element) {
@@ -178,7 +198,8 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
         std::string targets = m[st.initial].id;
         for (int const more : st.more_initials) targets += " " + m[more].id;
         out += inner + "<initial>\n" + inner + "    <transition target=\"" + targets + "\">\n";
-        for (auto const& a : st.initial_actions) out += inner + "        " + scxml_script(a) + "\n";
+        for (std::size_t k = 0; k < st.initial_actions.size(); ++k)
+            out += inner + "        " + scxml_script(st.initial_actions[k], row_of(st.initial_rows, k)) + "\n";
         out += inner + "    </transition>\n" + inner + "</initial>\n";
     }
     if (st.initial >= 0 && st.hist != history::none) {
@@ -187,17 +208,19 @@ inline void scxml_state(diagram const& m, int s, int level, std::string& out) {
         out += inner + "<history id=\"" + h + "\" type=\"" + (st.hist == history::deep ? "deep" : "shallow") + "\">\n" +
                inner + "    <transition target=\"" + m[st.initial].id + "\"/>\n" + inner + "</history>\n";
     }
-    for (auto const& a : st.entry) out += inner + "<onentry>" + scxml_script(a) + "</onentry>\n";
-    for (auto const& a : st.exit) out += inner + "<onexit>" + scxml_script(a) + "</onexit>\n";
+    for (std::size_t k = 0; k < st.entry.size(); ++k)
+        out += inner + "<onentry>" + scxml_script(st.entry[k], row_of(st.entry_rows, k)) + "</onentry>\n";
+    for (std::size_t k = 0; k < st.exit.size(); ++k)
+        out += inner + "<onexit>" + scxml_script(st.exit[k], row_of(st.exit_rows, k)) + "</onexit>\n";
     for (auto const& t : m.transitions)
-        if (t.source == s) scxml_transition(m, t, level + 1, out);
+        if (t.source == s) scxml_transition(m, t, level + 1, out, annotated);
     if (s == 0 && halts(m))
         out += inner + "<transition event=\"done.state." + m[0].id + "\" target=\"" + m[0].id + "_halted\"/>\n";
-    for (int const c : st.children) scxml_state(m, c, level + 1, out);
+    for (int const c : st.children) scxml_state(m, c, level + 1, out, annotated);
     out += pad + "</" + element + ">\n";
 }
 
-inline std::string to_scxml(diagram const& m) {
+inline std::string to_scxml(diagram const& m, bool annotated) {
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     out += "<!-- The chart " + scxml_comment(m[0].label) +
            ": cond names the guard, the <script> comments name the actions. -->\n";
@@ -205,9 +228,13 @@ inline std::string to_scxml(diagram const& m) {
         out +=
             "<!-- Parent-first priority: a transition's cond also negates the guards of its source's ancestors' "
             "transitions on the same event, which the chart tries first. -->\n";
-    out += "<scxml xmlns=\"http://www.w3.org/2005/07/scxml\" version=\"1.0\" name=\"" + m[0].id + "\" initial=\"" +
-           m[0].id + "\">\n";
-    scxml_state(m, 0, 1, out);
+    out += "<scxml xmlns=\"http://www.w3.org/2005/07/scxml\"";
+    if (annotated) {
+        out += " xmlns:bsc=\"urn:bsc:scxml\" bsc:context=\"" + xml_escaped(m.context) + "\"";
+        if (m.order == priority::parent_first) out += " bsc:priority=\"parent_first\"";
+    }
+    out += " version=\"1.0\" name=\"" + m[0].id + "\" initial=\"" + m[0].id + "\">\n";
+    scxml_state(m, 0, 1, out, annotated);
     if (halts(m)) out += "    <final id=\"" + m[0].id + "_halted\"/>\n";
     return out + "</scxml>\n";
 }
@@ -227,7 +254,22 @@ std::string to_scxml(Chart const& chart) {
                   "bsc::to_scxml: under parent-first priority a row of an ancestor takes an event derived from "
                   "the event of a row below it: it is tried first for that event only, which SCXML's cond cannot "
                   "say without the event's name; give the rows the same event, or export a child-first chart");
-    return detail::to_scxml(detail::model_of(chart));
+    return detail::to_scxml(detail::model_of(chart), false);
+}
+
+/// The chart as an SCXML document annotated for bsc-scxml (docs/scxml.md, "Round trip"): the
+/// same document as to_scxml, whose elements also say, in the namespace urn:bsc:scxml, which
+/// C++ type each state and event is, which row of the chart each transition and action comes
+/// from (`bsc:row`, counted from 1), the context, and the priority. `bsc-scxml --chart ns::chart`
+/// compiles it back into a chart of the same types whose rows reuse the guards and actions of
+/// `ns::chart`'s: the same machine, built from the document's structure.
+template <class Chart>
+std::string to_scxml_annotated(Chart const& chart) {
+    using model = detail::chart_model<std::remove_cv_t<Chart>>;
+    static_assert(detail::outer_row_narrower<model>()[0] < 0,
+                  "bsc::to_scxml_annotated: under parent-first priority a row of an ancestor takes an event derived "
+                  "from the event of a row below it, which SCXML's cond cannot say; export a child-first chart");
+    return detail::to_scxml(detail::model_of(chart), true);
 }
 
 }  // namespace bsc

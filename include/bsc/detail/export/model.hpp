@@ -135,6 +135,12 @@ struct state_info {
     /// history state): its on_initial rows
     std::vector<std::string> initial_actions;
     std::vector<int> internal;  ///< internal transitions (indices in diagram::transitions)
+    std::string type;           ///< the state's C++ type: bsc::qualified_name<S>
+    /// The positions (from 1, in make_chart's order) of the rows of `entry`, `exit` and
+    /// `initial_actions`, one for one.
+    std::vector<int> entry_rows;
+    std::vector<int> exit_rows;
+    std::vector<int> initial_rows;
 
     /// Drawn as a node, not a cluster: a basic or final state, or a history state.
     bool is_leaf() const {
@@ -143,11 +149,12 @@ struct state_info {
 };
 
 struct transition_info {
-    int row = 0;      ///< position of the row in make_chart
+    int row = 0;      ///< position of the row in make_chart, from 0
     int source = 0;   ///< index in diagram::states
     int target = -1;  ///< -1: an internal transition (no target)
     trigger_kind trigger = trigger_kind::event;
     std::string event;              ///< the event's name, "after(3s)" for a timeout, empty if eventless
+    std::string event_type;         ///< the event's C++ type (bsc::qualified_name), empty if none
     std::string delay;              ///< a timeout's delay, "3s"
     std::string guard;              ///< empty if unguarded
     std::string cond;               ///< the guard as SCXML's cond: bsc::in<S> as In('id'); empty if unguarded
@@ -182,6 +189,7 @@ struct diagram {
     std::vector<state_info> states;            ///< document order; states[0] is the root
     std::vector<transition_info> transitions;  ///< declaration order, internal ones included
     priority order = priority::child_first;    ///< the chart's priority among nested transitions
+    std::string context;                       ///< the chart's context type: bsc::qualified_name
 
     /// s is a or below a.
     bool contains(int a, int s) const {
@@ -262,12 +270,16 @@ auto in_state_text(diagram const& m, bool scxml) {
 
 template <class Model, class Row>
 void add_row(diagram& m, Row const& row, int index, int source) {
+    auto& st = m.states[static_cast<std::size_t>(source)];
     if constexpr (is_entry_row<Row>) {
-        m.states[static_cast<std::size_t>(source)].entry.push_back(action_label(row.action));
+        st.entry.push_back(action_label(row.action));
+        st.entry_rows.push_back(index + 1);
     } else if constexpr (is_exit_row<Row>) {
-        m.states[static_cast<std::size_t>(source)].exit.push_back(action_label(row.action));
+        st.exit.push_back(action_label(row.action));
+        st.exit_rows.push_back(index + 1);
     } else if constexpr (is_initial_row<Row>) {
-        m.states[static_cast<std::size_t>(source)].initial_actions.push_back(action_label(row.action));
+        st.initial_actions.push_back(action_label(row.action));
+        st.initial_rows.push_back(index + 1);
     } else {
         transition_info t;
         t.row = index;
@@ -282,6 +294,7 @@ void add_row(diagram& m, Row const& row, int index, int source) {
         } else {
             t.trigger = trigger_kind::event;
             t.event = std::string(event_name<typename trigger::event>);  // as dispatch_by_name knows it
+            t.event_type = std::string(qualified_name<typename trigger::event>);
         }
         if constexpr (Row::guarded) {
             t.guard = guard_label(row.guard, in_state_text<Model>(m, false));
@@ -334,6 +347,7 @@ diagram model_of(Chart const& chart) {
     using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
     constexpr auto const& tree = model::tree;
     diagram m;
+    m.context = std::string(qualified_name<typename model::chart_context>);
     auto const names = state_name_list<typename model::tags>::unqualified();
     auto const qualified = state_name_list<typename model::tags>::qualified();
     // Index 0 of the analysis is the implicit top above the root; the model starts at the root.
@@ -346,6 +360,7 @@ diagram model_of(Chart const& chart) {
         state_info info;
         info.id = ids[i - 1];
         info.label = labels[i - 1];
+        info.type = std::string(own_qualified[i - 1]);
         info.node_kind = tree.kinds[i];
         info.hist = tree.hist[i];
         info.parent = tree.parent[i] - 1;
