@@ -10,7 +10,7 @@
 # The compiler is tools/bsc-scxml (a Python 3 script of the standard library only).
 
 include_guard(GLOBAL)
-find_package(Python3 COMPONENTS Interpreter REQUIRED)
+find_package(Python3 3.9 COMPONENTS Interpreter REQUIRED)  # str.removeprefix
 
 if(NOT DEFINED BSC_SCXML_COMPILER)
   set(BSC_SCXML_COMPILER "${CMAKE_CURRENT_LIST_DIR}/../tools/bsc-scxml")

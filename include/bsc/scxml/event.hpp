@@ -28,19 +28,41 @@ struct event {
     value data;
 };
 
+/// A system variable (`_sessionid`, `_name`, `_ioprocessors`): read like a value, and an
+/// assignment to it fails with error.execution, as SCXML says.
+class system_variable : public value {
+public:
+    using value::value;
+    system_variable(value v) : value(std::move(v)) {}
+    system_variable(system_variable const&) = default;
+    system_variable& operator=(system_variable const&) = default;
+    template <class T>
+        requires(!std::is_same_v<std::remove_cvref_t<T>, system_variable>)
+    system_variable& operator=(T&&) { throw execution_error("a system variable is read-only"); }
+};
+
 /// `_event`: the event being processed, as the document reads it (`_event.name`,
-/// `_event.data`, ...). A document cannot assign it: `<assign location="_event">` fails with
-/// error.execution.
+/// `_event.data`, ...). A document cannot assign it or its fields (`<assign location="_event">`,
+/// `location="_event.name"`): that fails with error.execution.
 struct event_fields {
-    value name;
-    value type;
-    value sendid;
-    value origin;
-    value origintype;
-    value invokeid;
-    value data;
+    system_variable name;
+    system_variable type;
+    system_variable sendid;
+    system_variable origin;
+    system_variable origintype;
+    system_variable invokeid;
+    system_variable data;
 
     event_fields() = default;
+    event_fields(value name_, value type_, value sendid_, value origin_, value origintype_, value invokeid_,
+                 value data_)
+        : name(std::move(name_)),
+          type(std::move(type_)),
+          sendid(std::move(sendid_)),
+          origin(std::move(origin_)),
+          origintype(std::move(origintype_)),
+          invokeid(std::move(invokeid_)),
+          data(std::move(data_)) {}
     event_fields(event_fields const&) = default;
     event_fields& operator=(event_fields const&) = default;
     template <class T>
@@ -67,18 +89,5 @@ struct event_fields {
 constexpr bool has_event_fields(event_fields const&) noexcept {
     return requires(event_fields f) { f.name, f.type, f.sendid, f.origin, f.origintype, f.invokeid, f.data; };
 }
-
-/// A system variable (`_sessionid`, `_name`, `_ioprocessors`): read like a value, and an
-/// assignment to it fails with error.execution, as SCXML says.
-class system_variable : public value {
-public:
-    using value::value;
-    system_variable(value v) : value(std::move(v)) {}
-    system_variable(system_variable const&) = default;
-    system_variable& operator=(system_variable const&) = default;
-    template <class T>
-        requires(!std::is_same_v<std::remove_cvref_t<T>, system_variable>)
-    system_variable& operator=(T&&) { throw execution_error("a system variable is read-only"); }
-};
 
 }  // namespace bsc::scxml

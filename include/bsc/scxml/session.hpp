@@ -57,6 +57,7 @@ inline value appended(value array, value item) {
 
 /// A CSS2 time ("2s", "500ms", ".5s") as a duration; throws execution_error for anything else.
 inline duration parse_delay(std::string_view text) {
+    // (A delay beyond bsc::duration is refused before the conversion, which would be undefined.)
     while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
     while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
     std::size_t digits = 0;
@@ -70,6 +71,8 @@ inline duration parse_delay(std::string_view text) {
     std::chrono::duration<double, std::nano> const length =
         unit == "s" ? std::chrono::duration<double, std::nano>(std::chrono::duration<double>(amount))
                     : std::chrono::duration<double, std::nano>(std::chrono::duration<double, std::milli>(amount));
+    if (!(length.count() < static_cast<double>(duration::max().count())))
+        throw execution_error("a delay longer than bsc::duration holds: '" + std::string(text) + "'");
     return std::chrono::duration_cast<duration>(length);
 }
 /// A delay read from the datamodel (`delayexpr`): a string in CSS2 notation.
@@ -99,8 +102,11 @@ enum class route : std::uint8_t { external, internal, other_session };
 class session {
 public:
     /// The number under which a `<send>` with this id (`id`, `idlocation`, `sendidexpr`) is
-    /// scheduled and cancelled: the same for the same id, never 0.
+    /// scheduled and cancelled: the same for the same id, never 0. The ids `fresh_id` made are
+    /// numbered by themselves (negative); the others the session keeps, one entry per distinct
+    /// id a document sends under.
     int number_of(value const& id) {
+        if (int const fresh = fresh_number(id); fresh != 0) return fresh;
         std::string const key = id.to_string();
         for (std::size_t i = 0; i < ids_.size(); ++i)
             if (ids_[i] == key) return static_cast<int>(i) + 1;
@@ -108,7 +114,10 @@ public:
         return static_cast<int>(ids_.size());
     }
     /// A fresh id for a `<send idlocation>`: "send.N".
-    value fresh_id() { return value("send." + std::to_string(++fresh_)); }
+    value fresh_id() {
+        fresh_ = fresh_ == max_fresh ? 1 : fresh_ + 1;
+        return value("send." + std::to_string(fresh_));
+    }
 
     /// Sends `e` where `to` says: the internal queue (`<raise>`, `<send target="#_internal">`),
     /// or the external one, after `delay` (`<send>`), under `id` if it is bound.
@@ -128,10 +137,14 @@ public:
         e.type = "internal";
         raise(std::move(e));
     }
-    /// Cancels the pending `<send>` with this id (`<cancel>`); one that is not pending: nothing.
+    /// Cancels the pending `<send>` with this id (`<cancel>`); one that is not pending: nothing
+    /// (and an id never sent under is not kept).
     template <class Raise>
     void cancel(Raise& raise, value const& id) {
-        raise.cancel(number_of(id));
+        if (int const fresh = fresh_number(id); fresh != 0) return raise.cancel(fresh);
+        std::string const key = id.to_string();
+        for (std::size_t i = 0; i < ids_.size(); ++i)
+            if (ids_[i] == key) return raise.cancel(static_cast<int>(i) + 1);
     }
     /// Where a `<send>`'s target (`target`, `targetexpr`) leads; throws execution_error (with
     /// the send's id) for a target that is not an SCXML session's.
@@ -152,6 +165,20 @@ public:
     void set_id(value id) { id_ = std::move(id); }
 
 private:
+    static constexpr int max_fresh = 1 << 30;
+    // -N for "send.N", an id fresh_id made; 0 for any other.
+    static int fresh_number(value const& id) {
+        if (!id.is_string()) return 0;
+        std::string const& text = id.string();
+        if (text.rfind("send.", 0) != 0 || text.size() == 5 || text.size() > 15) return 0;
+        long long n = 0;
+        for (std::size_t i = 5; i < text.size(); ++i) {
+            if (text[i] < '0' || text[i] > '9') return 0;
+            n = n * 10 + (text[i] - '0');
+        }
+        return n >= 1 && n <= max_fresh ? -static_cast<int>(n) : 0;
+    }
+
     value id_ = value("bsc");
     std::vector<std::string> ids_;
     int fresh_ = 0;
