@@ -10,7 +10,14 @@
 # The compiler is tools/bsc-scxml (a Python 3 script of the standard library only).
 
 include_guard(GLOBAL)
-find_package(Python3 3.9 COMPONENTS Interpreter REQUIRED)  # str.removeprefix
+# Python 3.9 (str.removeprefix) is needed only by a project that calls bsc_add_scxml: one that
+# does not builds without Python.
+# Kept as global properties: a project that adds bsc as a subdirectory calls the function from
+# its own directory, where bsc's variables are not seen.
+find_package(Python3 3.9 COMPONENTS Interpreter QUIET)
+if(Python3_Interpreter_FOUND)
+  set_property(GLOBAL PROPERTY BSC_SCXML_PYTHON "${Python3_EXECUTABLE}")
+endif()
 
 if(NOT DEFINED BSC_SCXML_COMPILER)
   set(BSC_SCXML_COMPILER "${CMAKE_CURRENT_LIST_DIR}/../tools/bsc-scxml")
@@ -24,6 +31,10 @@ function(bsc_add_scxml target)
   endif()
   if(NOT arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "bsc_add_scxml(${target} ...): name at least one SCXML document")
+  endif()
+  get_property(python GLOBAL PROPERTY BSC_SCXML_PYTHON)
+  if(NOT python)
+    message(FATAL_ERROR "bsc_add_scxml(${target} ...): bsc-scxml needs Python 3.9 or later, which CMake did not find")
   endif()
   get_property(compiler GLOBAL PROPERTY BSC_SCXML_COMPILER)
   set(out_dir "${CMAKE_CURRENT_BINARY_DIR}/${target}_scxml")
@@ -42,7 +53,7 @@ function(bsc_add_scxml target)
     get_filename_component(name "${document}" NAME_WE)
     set(header "${out_dir}/${name}.hpp")
     add_custom_command(OUTPUT "${header}"
-      COMMAND "${Python3_EXECUTABLE}" "${compiler}" "${document}" -o "${header}" ${options}
+      COMMAND "${python}" "${compiler}" "${document}" -o "${header}" ${options}
       DEPENDS "${document}" "${compiler}"
       COMMENT "bsc-scxml ${name}.scxml"
       VERBATIM)
