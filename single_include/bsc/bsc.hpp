@@ -1176,6 +1176,11 @@ template <class Allowed, class... Errors>
 struct without_allowed<Allowed, type_list<Errors...>> {
     using type = concat_t<std::conditional_t<allowed_finding<Allowed, Errors>, type_list<>, type_list<Errors>>...>;
 };
+// A chart that allows nothing, nearly every chart, keeps its errors without a look at each.
+template <class... Errors>
+struct without_allowed<allow<>, type_list<Errors...>> {
+    using type = type_list<Errors...>;
+};
 
 template <class Allowed>
 inline constexpr bool all_allowable = false;

@@ -43,6 +43,18 @@ def compile_cpp(name, header):
                           capture_output=True, text=True)
 
 
+def build_and_run(name, source):
+    """Builds name_main.cpp with `source` against the headers of WORK and runs it: (the
+    compiler's result, the run's result or None if it did not build)."""
+    main = os.path.join(WORK, name + "_main.cpp")
+    with open(main, "w") as f:
+        f.write(source)
+    program = os.path.join(WORK, name + "_main")
+    c = subprocess.run([CXX, "-std=c++20", "-I", INCLUDE, "-I", WORK, main, "-o", program], capture_output=True,
+                       text=True)
+    return c, subprocess.run([program]) if c.returncode == 0 else None
+
+
 def expect(case, condition, detail):
     if not condition:
         failures.append(f"{case}: {detail}")
@@ -111,17 +123,12 @@ r, header = compile_document("hooked", HEAD + ' bsc:hooks="app::hooks" bsc:inclu
                              '</state>\n<state id="opened">\n  <onentry><script>hooks.run_motor();</script></onentry>\n'
                              '  <transition event="close" target="closed"/>\n</state>\n</scxml>\n')
 expect("hooks compile", r.returncode == 0, r.stderr)
-main = os.path.join(WORK, "hooked_main.cpp")
-with open(main, "w") as f:
-    f.write('#include "hooked.hpp"\nint main() {\n    app::panel panel{true, 0};\n    hooked::datamodel d;\n'
+c, run = build_and_run("hooked", '#include "hooked.hpp"\nint main() {\n    app::panel panel{true, 0};\n    hooked::datamodel d;\n'
             '    d.hooks.p = &panel;\n    hooked::machine m{hooked::chart, d};\n'
             '    m.dispatch(hooked::events::open{});  // an obstacle: the guard holds the door\n'
             '    bool ok = m.is<hooked::states::closed>();\n    panel.obstacle = false;\n'
             '    m.dispatch(hooked::events::open{});\n'
-            '    return ok && m.is<hooked::states::opened>() && panel.motor_runs == 1 ? 0 : 1;\n}\n')
-program = os.path.join(WORK, "hooked_main")
-c = subprocess.run([CXX, "-std=c++20", "-I", INCLUDE, "-I", WORK, main, "-o", program], capture_output=True, text=True)
-run = subprocess.run([program]) if c.returncode == 0 else None
+                      '    return ok && m.is<hooked::states::opened>() && panel.motor_runs == 1 ? 0 : 1;\n}\n')
 expect("hooks called", run is not None and run.returncode == 0, c.stderr[:2000])
 
 # What a document means survives the compiler: a cond with || is evaluated whole (C++'s
@@ -134,14 +141,9 @@ r, header = compile_document("meaning", HEAD + ' name="door" initial="door" bsc:
                              '    <transition event="go" cond="n == 0 || n == 1 &amp;&amp; n &gt; 5" target="b"/>\n'
                              '  </state>\n  <state id="b"/>\n</state>\n</scxml>\n')
 expect("meaning compiles", r.returncode == 0, r.stderr)
-main = os.path.join(WORK, "meaning_main.cpp")
-with open(main, "w") as f:
-    f.write('#include "meaning.hpp"\nint main() {\n    meaning::machine m{meaning::chart};\n'
+c, run = build_and_run("meaning", '#include "meaning.hpp"\nint main() {\n    meaning::machine m{meaning::chart};\n'
             '    m.dispatch(meaning::events::go{});\n'
-            '    return m.is<meaning::states::b>() && m.context().seen == "go" ? 0 : 1;\n}\n')
-program = os.path.join(WORK, "meaning_main")
-c = subprocess.run([CXX, "-std=c++20", "-I", INCLUDE, "-I", WORK, main, "-o", program], capture_output=True, text=True)
-run = subprocess.run([program]) if c.returncode == 0 else None
+                      '    return m.is<meaning::states::b>() && m.context().seen == "go" ? 0 : 1;\n}\n')
 expect("|| in a cond, _event in <onexit>, a state named as the root", run is not None and run.returncode == 0,
        c.stderr[:2000])
 

@@ -106,11 +106,8 @@ public:
     /// numbered by themselves (negative); the others the session keeps, one entry per distinct
     /// id a document sends under.
     int number_of(value const& id) {
-        if (int const fresh = fresh_number(id); fresh != 0) return fresh;
-        std::string const key = id.to_string();
-        for (std::size_t i = 0; i < ids_.size(); ++i)
-            if (ids_[i] == key) return static_cast<int>(i) + 1;
-        ids_.push_back(key);
+        if (int const known = find(id); known != 0) return known;
+        ids_.push_back(id.to_string());
         return static_cast<int>(ids_.size());
     }
     /// A fresh id for a `<send idlocation>`: "send.N".
@@ -141,10 +138,7 @@ public:
     /// (and an id never sent under is not kept).
     template <class Raise>
     void cancel(Raise& raise, value const& id) {
-        if (int const fresh = fresh_number(id); fresh != 0) return raise.cancel(fresh);
-        std::string const key = id.to_string();
-        for (std::size_t i = 0; i < ids_.size(); ++i)
-            if (ids_[i] == key) return raise.cancel(static_cast<int>(i) + 1);
+        if (int const known = find(id); known != 0) raise.cancel(known);
     }
     /// Where a `<send>`'s target (`target`, `targetexpr`) leads; throws execution_error (with
     /// the send's id) for a target that is not an SCXML session's.
@@ -166,6 +160,14 @@ public:
 
 private:
     static constexpr int max_fresh = 1 << 30;
+    // The number of an id sent under before (or made by fresh_id); 0 for one never seen.
+    [[nodiscard]] int find(value const& id) const {
+        if (int const fresh = fresh_number(id); fresh != 0) return fresh;
+        std::string const key = id.to_string();
+        for (std::size_t i = 0; i < ids_.size(); ++i)
+            if (ids_[i] == key) return static_cast<int>(i) + 1;
+        return 0;
+    }
     // -N for "send.N", an id fresh_id made; 0 for any other.
     static int fresh_number(value const& id) {
         if (!id.is_string()) return 0;
