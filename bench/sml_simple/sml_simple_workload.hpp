@@ -18,11 +18,9 @@
 #include <string>
 
 #include "../harness.hpp"
+#include "cd_player_switch.hpp"  // the states and events, numbered
 
 namespace sml_simple_bench {
-
-enum state : std::uint8_t { empty_s, open_s, stopped_s, playing_s, pause_s };
-enum event : std::uint8_t { play_e, end_pause_e, stop_e, pause_e, open_close_e, cd_detected_e, event_count };
 
 struct workload {
     static constexpr char const* name = "sml_simple";

@@ -49,18 +49,23 @@ struct loop {
     finite::plant plant;
 };
 
-/// One cycle: the plant presents its sensors, the controller steps, the plant follows the
-/// actuators; then a piece arrives at the input buffer if `arrival` says so.
-template <class Chart>
-void cycle(loop<Chart>& s, bool arrival, bsc::duration now) {
-    auto& d = s.controller.context();
-    auto& p = s.plant;
+/// The plant's sensors, written into the controller's inputs (read at its next cycle).
+inline void present(plant const& p, data const& d) {
     d.IN.set(p.waiting);
     d.P1.set(p.at[0]);
     d.P2.set(p.at[1]);
     d.P3.set(p.at[2]);
     d.P4.set(p.at[3]);
     d.S1.set(p.advanced);
+}
+
+/// One cycle: the plant presents its sensors, the controller steps, the plant follows the
+/// actuators; then a piece arrives at the input buffer if `arrival` says so.
+template <class Chart>
+void cycle(loop<Chart>& s, bool arrival, bsc::duration now) {
+    auto& d = s.controller.context();
+    auto& p = s.plant;
+    present(p, d);
     s.controller.step(now);
     if (d.belt.get()) {
         if (!p.carrying && p.waiting) {

@@ -36,6 +36,9 @@
 // BSC_DETAIL_NOINLINE: the function is never inlined.
 // BSC_DETAIL_FLATTEN: every call in the function's body is inlined into it, whatever the
 //   inlining budget (GCC: and every call below those; Clang: only the calls written in the body).
+//   Nothing where the build optimises for size (-Os, __OPTIMIZE_SIZE__): a flattened firing copies
+//   every exit and entry path into each event's function (docs/performance.md, "A firing is one
+//   flattened function").
 // BSC_DETAIL_WALK_INLINE: on the functions and lambdas of the compiled back end's walk of the
 //   configuration, which a flattened firing is made of. Under GCC, whose `flatten` reaches
 //   every call below, it adds nothing; under Clang the walk's functions are always inlined
@@ -47,7 +50,11 @@
 #if defined(__GNUC__) || defined(__clang__)
 #define BSC_DETAIL_ALWAYS_INLINE [[gnu::always_inline]]
 #define BSC_DETAIL_NOINLINE [[gnu::noinline]]
+#if defined(__OPTIMIZE_SIZE__)
+#define BSC_DETAIL_FLATTEN
+#else
 #define BSC_DETAIL_FLATTEN [[gnu::flatten]]
+#endif
 #else
 #define BSC_DETAIL_ALWAYS_INLINE
 #define BSC_DETAIL_NOINLINE
@@ -5407,6 +5414,12 @@ struct access {
             return driver_of(m).context_.value;
         else
             return m.context_;  // a machine of a rejected chart (detail/runtime/rejected.hpp)
+    }
+    // The chart a machine runs: to build another machine of it (bsc/benchmark.hpp replays a
+    // dispatch with a logger).
+    template <class M>
+    static constexpr auto const& chart(M const& m) {
+        return driver_of(m).chart();
     }
     template <class M>
     static constexpr auto& configuration(M& m) {

@@ -53,6 +53,16 @@ std::size_t delayed(M const& m) {
 
 }  // namespace elevator_test
 
+namespace {
+// A machine whose chart defers and sends delayed events, in a global: constant-initialised.
+constinit elevator::deferring_machine global_car{elevator::deferring};
+}  // namespace
+
+TEST_CASE("elevator: a machine that defers and delays, in a global, is constant-initialised (constinit)") {
+    CHECK(global_car.active_states().joined() ==
+          elevator::deferring_machine{elevator::deferring}.active_states().joined());
+}
+
 TEST_CASE_TEMPLATE("retain: a machine saved with deferred and delayed events pending continues exactly as the original",
                    Backend, bsc_test::compiled, bsc_test::table) {
     using namespace elevator_test;

@@ -172,6 +172,20 @@ void check_outcome(scenario const& s, run_result const& r) {
 
 }  // namespace
 
+namespace {
+// A scan machine with BSC timers in its context, in a global: constant-initialised (constinit).
+constinit cell::machine global_cell{cell::chart};
+}  // namespace
+
+TEST_CASE("manufacturing cell: a controller in a global is constant-initialised (constinit) and runs") {
+    CHECK(global_cell.active_states().joined() ==
+          "Cell Belt BeltOff Drill DrillOff Test TestOff Robot RobotOff Table CylinderReturned");
+    global_cell.context().IN.set(true);
+    global_cell.step(std::chrono::milliseconds{0});
+    global_cell.step(std::chrono::milliseconds{10});
+    CHECK(global_cell.context().belt.get());
+}
+
 TEST_CASE("manufacturing cell: the expected on-time follows the BSC timer semantics") {
     // Started in cycle k, timing from cycle k+1, expired at the first cycle at least the limit
     // after that: on for 1 + ceil(limit / period) cycles.

@@ -103,6 +103,21 @@ using mode_buttons = mcs::button_list<mcs::mem_p, mcs::mdi_p, mcs::tape_p, mcs::
 
 }  // namespace
 
+namespace {
+// Machines in globals, constant-initialised: no constructor runs at startup (constinit does not
+// compile otherwise), so a bare-metal startup that skips .init_array finds them entered.
+constinit mcs::machine global_mcs{mcs::chart};
+constinit bsc::machine<bsc::chart_ref<mcs::chart>, bsc::lean_policy> global_lean_mcs{mcs::chart};
+}  // namespace
+
+TEST_CASE("mcs: a machine in a global is constant-initialised (constinit), entered and working") {
+    CHECK(config(global_mcs) == "MCS Off");
+    CHECK(global_mcs.context().display.text() == "+MCS +Off");
+    CHECK(global_lean_mcs.is<mcs::Off>());
+    global_lean_mcs.dispatch(mcs::on_p{});
+    CHECK(global_lean_mcs.is<mcs::Mem>());
+}
+
 TEST_CASE("mcs: power-up: Off, error 0, Show for MCS and Off") {
     mcs::machine m{mcs::chart};
     CHECK(config(m) == "MCS Off");

@@ -68,6 +68,12 @@ struct access {
         else
             return m.context_;  // a machine of a rejected chart (detail/runtime/rejected.hpp)
     }
+    // The chart a machine runs: to build another machine of it (bsc/benchmark.hpp replays a
+    // dispatch with a logger).
+    template <class M>
+    static constexpr auto const& chart(M const& m) {
+        return driver_of(m).chart();
+    }
     template <class M>
     static constexpr auto& configuration(M& m) {
         return driver_of(m).config_;

@@ -86,14 +86,20 @@ public:
 
     template <class Emit>
     void successors(state const& s, Emit&& emit) const {
-        std::uint16_t label = 0;
-        (
-            [&] {
-                state next = s;
-                next.dispatch(Es{});
-                emit(label++, next);
-            }(),
-            ...);
+        for (std::uint16_t label = 0; label < labels(); ++label) {
+            state next = s;
+            advance(next, label);
+            emit(label, next);
+        }
+    }
+    /// The number of alternatives offered in every state: the events.
+    static constexpr std::size_t labels() { return sizeof...(Es); }
+    /// Takes alternative `label` in place: dispatches the label-th event. `M` is the machine
+    /// type or the same chart with another observer (bsc/benchmark.hpp replays with a logger).
+    template <class M>
+    void advance(M& s, std::uint16_t label) const {
+        std::uint16_t k = 0;
+        ((k++ == label ? static_cast<void>(s.dispatch(Es{})) : static_cast<void>(0)), ...);
     }
     std::string label(std::uint16_t i) const {
         constexpr std::string_view names[] = {event_name<Es>...};
@@ -129,10 +135,18 @@ public:
     void successors(state const& s, Emit&& emit) const {
         for (std::size_t c = 0; c < choices_; ++c) {
             state next = s;
-            apply_(next.context(), c);
-            next.step(detail::origin + period());
+            advance(next, static_cast<std::uint16_t>(c));
             emit(static_cast<std::uint16_t>(c), next);
         }
+    }
+    /// The number of alternatives offered in every state: the choices of inputs.
+    std::size_t labels() const { return choices_; }
+    /// Takes alternative `choice` in place: sets its inputs, then steps one period on. `M` is
+    /// the machine type or the same chart with another observer.
+    template <class M>
+    void advance(M& s, std::uint16_t choice) const {
+        apply_(s.context(), choice);
+        s.step(detail::origin + period());
     }
     std::string label(std::uint16_t i) const { return label_(i); }
     std::string describe(state const& s) const { return s.active_states().joined(); }
@@ -164,10 +178,14 @@ public:
     void successors(state const& s, Emit&& emit) const {
         for (std::size_t c = 0; c < choices_; ++c) {
             state next = s;
-            step_(next, c, detail::origin + period());
+            advance(next, static_cast<std::uint16_t>(c));
             emit(static_cast<std::uint16_t>(c), next);
         }
     }
+    /// The number of alternatives offered in every state.
+    std::size_t labels() const { return choices_; }
+    /// Takes alternative `choice` in place: one step of the system.
+    void advance(state& s, std::uint16_t choice) const { step_(s, choice, detail::origin + period()); }
     std::string label(std::uint16_t i) const { return label_(i); }
     std::string describe(state const& s) const { return describe_(s); }
     /// The time between two steps: a trace's step k is at k periods.
