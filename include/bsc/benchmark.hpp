@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -73,6 +74,7 @@ struct pair_latency {
     std::size_t exited = 0;       ///< states exited
     std::size_t entered = 0;      ///< states entered
     std::size_t transitions = 0;  ///< transitions fired (deferrals included)
+    bool explained = false;       ///< the account is filled (the pair was replayed with a logger)
 };
 
 /// What bsc::measure_latency found.
@@ -106,15 +108,16 @@ struct latency_report {
             out += "  bound from the chart: " + std::to_string(bound->states_at_once) +
                    " states active at once; one transition exits and enters at most " +
                    std::to_string(bound->states_per_transition) +
-                   (bound->widest_transition.empty() ? "" : " (" + bound->widest_transition + ")") + "; " +
-                   std::to_string(bound->components) + " component(s); at most " + std::to_string(bound->microsteps) +
-                   " microsteps: " + bound->microsteps_from + "\n";
+                   (bound->widest_transition.empty() ? "" : " (" + bound->widest_transition + ")") + "; at most " +
+                   std::to_string(bound->transitions_per_microstep) + " transition(s) per microstep, " +
+                   std::to_string(bound->microsteps) + " microstep(s) (" + bound->microsteps_from + "), " +
+                   std::to_string(bound->states_per_run) + " states exited and entered per run\n";
         }
         for (std::size_t k = 0; k < worst.size(); ++k) {
             auto const& p = worst[k];
             out += "  #" + std::to_string(k + 1) + " " + figure(p.median) + " " + unit + " (min " + figure(p.min) +
                    ", max " + figure(p.max) + "): " + p.event + " in " + p.configuration + "\n";
-            if (!bound) continue;  // no account: the state is not a machine
+            if (!p.explained) continue;
             if (p.account.empty()) {
                 out += "     nothing fired\n";
                 continue;
@@ -144,6 +147,14 @@ concept bsc_machine = requires(S const& s) {
     s.active_states();
 };
 
+// The alternatives a model offers, as the labels its advance takes (the explorer's are 16 bits).
+template <class Model>
+std::uint16_t label_count(Model const& model) {
+    std::size_t const n = model.labels();
+    if (n > 0xffff) throw std::length_error("bsc::measure_latency: more than 65,535 events or input choices");
+    return static_cast<std::uint16_t>(n);
+}
+
 template <class Model>
 class latency_run {
 public:
@@ -153,11 +164,13 @@ public:
 
     latency_report measure(std::vector<state> const& starts, bool complete) {
         latency_report report;
+        std::uint16_t const labels = label_count(model_);
         report.states = starts.size();
-        report.labels = model_.labels();
+        report.labels = labels;
         report.pairs = report.states * report.labels;
         report.complete = complete;
-        if constexpr (requires { model_.period(); }) report.offered = "inputs";
+        if constexpr (stepped) report.offered = "inputs";
+        if constexpr (bsc_machine<state>) report.bound = bound_of<state>(stepped);
         callgrind_counter counter{options_.callgrind_out_file};
         bool counting = options_.count_instructions && callgrind_counter::available();
         std::vector<pair_latency> pairs;
@@ -169,7 +182,7 @@ public:
             pairs.clear();
             where.clear();
             for (std::size_t i = 0; i < starts.size() && !again; ++i) {
-                for (std::uint16_t label = 0; label < report.labels; ++label) {
+                for (std::uint16_t label = 0; label < labels; ++label) {
                     pair_latency p;
                     if (counting && !count(counter, starts[i], label, p)) {
                         counting = false;
@@ -188,7 +201,8 @@ public:
         for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
         std::stable_sort(order.begin(), order.end(),
                          [&](std::size_t a, std::size_t b) { return pairs[a].median > pairs[b].median; });
-        auto const at_rank = [&](double q) {  // of the medians, slowest first; q of 0 is the fastest
+        // The pairs' medians at quantile q, nearest rank: q * (n - 1) places above the fastest.
+        auto const at_rank = [&](double q) {
             auto const rank = static_cast<std::size_t>(q * static_cast<double>(order.size() - 1) + 0.5);
             return pairs[order[order.size() - 1 - rank]].median;
         };
@@ -212,11 +226,12 @@ public:
             explain(starts[i], label, p);
             report.worst.push_back(std::move(p));
         }
-        if constexpr (bsc_machine<state>) report.bound = bound_of<state>();
         return report;
     }
 
 private:
+    static constexpr bool stepped = requires(Model const& m) { m.period(); };
+
     bool count(callgrind_counter& counter, state const& from, std::uint16_t label, pair_latency& p) {
         state s = from;
         auto const n = counter.count([&] {
@@ -228,12 +243,25 @@ private:
         return true;
     }
 
+    // The time of the two clock reads around a batch, least of a few: taken off each batch.
+    static double clock_cost() {
+        double least = 1e300;
+        for (int k = 0; k < 16; ++k) {
+            auto const start = std::chrono::steady_clock::now();
+            auto const stop = std::chrono::steady_clock::now();
+            least = std::min(least, std::chrono::duration<double, std::nano>(stop - start).count());
+        }
+        return least;
+    }
+
     void time(state const& from, std::uint16_t label, pair_latency& p) {
-        std::size_t const batch = options_.batch == 0 ? 1 : options_.batch;
+        std::size_t const batch = std::max<std::size_t>(options_.batch, 1);
+        std::size_t const repetitions = std::max<std::size_t>(options_.repetitions, 1);
+        if (clock_ < 0) clock_ = clock_cost();
         std::vector<state> copies(batch, from);
         std::vector<double> per_dispatch;
         // One batch untimed first: the code and the state's memory are then warm.
-        for (std::size_t r = 0; r <= options_.repetitions; ++r) {
+        for (std::size_t r = 0; r <= repetitions; ++r) {
             std::fill(copies.begin(), copies.end(), from);
             auto const start = std::chrono::steady_clock::now();
             for (auto& s : copies) {
@@ -241,11 +269,9 @@ private:
                 ::benchmark::DoNotOptimize(s);
             }
             auto const stop = std::chrono::steady_clock::now();
-            if (r > 0)
-                per_dispatch.push_back(std::chrono::duration<double, std::nano>(stop - start).count() /
-                                       static_cast<double>(batch));
+            double const batch_ns = std::chrono::duration<double, std::nano>(stop - start).count() - clock_;
+            if (r > 0) per_dispatch.push_back(std::max(batch_ns, 0.0) / static_cast<double>(batch));
         }
-        if (per_dispatch.empty()) per_dispatch.push_back(0);
         std::sort(per_dispatch.begin(), per_dispatch.end());
         p.min = per_dispatch.front();
         p.median = per_dispatch[per_dispatch.size() / 2];
@@ -253,40 +279,54 @@ private:
     }
 
     // Replays the pair on the same machine with a bsc::logger: its state moved across through
-    // the explorer's encoding (the observer is not part of it).
+    // the explorer's encoding (the observer is not part of it), its context copied whole (the
+    // members the encoding leaves out included).
     void explain(state const& from, std::uint16_t label, pair_latency& p) {
         if constexpr (bsc_machine<state>) {
             using traced = typename with_observer<state, logger>::type;
-            duration const period = [&] {
-                if constexpr (requires { model_.period(); })
-                    return model_.period();
-                else
-                    return duration{};
-            }();
-            codec<state> const from_codec{period};
-            codec<traced> const to_codec{period};
-            std::vector<std::byte> key(codec<state>::key_size);
-            from_codec.encode(from, key.data());
-            traced prototype{access::chart(from), from.context(), logger{[](log_record const&) {}}};
-            traced replay = to_codec.decode(std::move(prototype), key.data());
-            // (A record's views are valid during the callback only: it is written out there.)
-            replay.observer() = logger{[&](log_record const& r) {
-                if (r.what == log_record::kind::dispatch) return;
-                p.exited += r.what == log_record::kind::exit;
-                p.entered += r.what == log_record::kind::entry;
-                p.transitions += r.what == log_record::kind::transition || r.what == log_record::kind::deferral;
-                std::string line = to_string(r);
-                // The record's time and cycle, which say nothing here, are left out.
-                if (auto const at = line.find("] "); line.front() == '[' && at != std::string::npos)
-                    line.erase(0, at + 2);
-                p.account.push_back(std::move(line));
-            }};
-            model_.advance(replay, label);
+            if constexpr (requires(traced & t) { model_.advance(t, label); }) {
+                duration period{};
+                if constexpr (stepped) period = model_.period();
+                std::vector<std::byte> key(codec<state>::key_size);
+                codec<state>{period}.encode(from, key.data());
+                // The prototype's construction runs the chart's initial entry actions, on a copy
+                // of the context: once per measurement.
+                if (!prototype_)
+                    prototype_.emplace(access::chart(from), from.context(), logger{[](log_record const&) {}});
+                traced replay = codec<traced>{period}.decode(*prototype_, key.data());
+                access::context(replay) = from.context();
+                // (A record's views are valid during the callback only: it is written out there.)
+                replay.observer() = logger{[&](log_record const& r) {
+                    if (r.what == log_record::kind::dispatch) return;
+                    p.exited += r.what == log_record::kind::exit;
+                    p.entered += r.what == log_record::kind::entry;
+                    p.transitions += r.what == log_record::kind::transition || r.what == log_record::kind::deferral;
+                    std::string line = to_string(r);
+                    // The record's time and cycle, which say nothing here, are left out.
+                    if (auto const at = line.find("] "); line.front() == '[' && at != std::string::npos)
+                        line.erase(0, at + 2);
+                    p.account.push_back(std::move(line));
+                }};
+                model_.advance(replay, label);
+                p.explained = true;
+            }
         }
     }
 
+    // The machine a pair is replayed on, with a logger (for a model whose state is a machine).
+    template <class S>
+    struct traced_of {
+        using type = int;
+    };
+    template <bsc_machine S>
+    struct traced_of<S> {
+        using type = typename with_observer<S, logger>::type;
+    };
+
     Model const& model_;
     latency_options const& options_;
+    double clock_ = -1;
+    std::optional<typename traced_of<state>::type> prototype_;
 };
 
 }  // namespace detail
@@ -307,17 +347,28 @@ latency_report measure_latency(Model const& model, latency_options const& option
 
 /// Measures every (state, event) pair of the given states: for a chart too large to explore,
 /// the states the user's own scenarios pass through (copies of a machine taken along a run).
+/// Each is first brought to the explorer's clock through the explorer's encoding (its times
+/// made relative, as an explored state's), so that a model that steps measures one period on
+/// from it; the members the encoding leaves out (bsc::transient) take the model's initial
+/// values, as in an explored state.
 template <class Model>
 latency_report measure_latency(Model const& model, std::span<typename Model::state const> starts,
                                latency_options const& options = {}) {
-    return detail::latency_run<Model>{model, options}.measure({starts.begin(), starts.end()},
-                                                              options.starts_are_every_state);
+    std::vector<typename Model::state> relative;
+    relative.reserve(starts.size());
+    std::vector<std::byte> key(Model::key_size);
+    for (auto const& s : starts) {
+        model.encode(s, key.data());
+        relative.push_back(model.decode(key.data()));
+    }
+    return detail::latency_run<Model>{model, options}.measure(relative, options.starts_are_every_state);
 }
 
 /// Registers one Google Benchmark per pair of `report.worst`, named
 /// "<prefix>/<event> in <configuration>", which times that pair's dispatch by Google
-/// Benchmark's own rules (its repetitions, statistics and output formats); the counter
-/// "dispatch" is the time of one. `report` comes from measure_latency(model) with the same
+/// Benchmark's own rules (its repetitions, statistics and output formats); the time reported
+/// is that of one dispatch (manual time: each iteration times a batch of dispatches from fresh
+/// copies, the copying left out). `report` comes from measure_latency(model) with the same
 /// max_states: each pair is found again by name, from the first explored state of its
 /// configuration.
 template <class Model>
@@ -325,32 +376,33 @@ void register_latency_benchmarks(std::string const& prefix, Model const& model, 
                                  std::size_t max_states = latency_options{}.max_states) {
     verify::explorer<Model> ex{model, verify::limits{.max_states = max_states}};
     ex.run();
+    std::uint16_t const labels = detail::label_count(model);
     for (auto const& p : report.worst) {
-        for (std::size_t i = 0; i < ex.count(); ++i) {
+        bool registered = false;
+        for (std::size_t i = 0; i < ex.count() && !registered; ++i) {
             auto const s = ex.at(i);
             if (model.describe(s) != p.configuration) continue;
-            for (std::uint16_t label = 0; label < model.labels(); ++label) {
+            for (std::uint16_t label = 0; label < labels && !registered; ++label) {
                 if (model.label(label) != p.event) continue;
+                registered = true;
                 ::benchmark::RegisterBenchmark(
                     (prefix + "/" + p.event + " in " + p.configuration).c_str(),
                     [model, s, label](::benchmark::State& st) {
                         constexpr std::size_t batch = 32;
                         std::vector<typename Model::state> copies(batch, s);
                         for (auto _ : st) {
-                            st.PauseTiming();
                             std::fill(copies.begin(), copies.end(), s);
-                            st.ResumeTiming();
+                            auto const start = std::chrono::steady_clock::now();
                             for (auto& c : copies) {
                                 model.advance(c, label);
                                 ::benchmark::DoNotOptimize(c);
                             }
+                            auto const stop = std::chrono::steady_clock::now();
+                            st.SetIterationTime(std::chrono::duration<double>(stop - start).count() /
+                                                static_cast<double>(batch));
                         }
-                        st.counters["dispatch"] = ::benchmark::Counter(
-                            static_cast<double>(st.iterations()) * static_cast<double>(batch),
-                            ::benchmark::Counter::kIsRate | ::benchmark::Counter::kInvert);
-                    });
-                i = ex.count() - 1;  // the first state of that configuration
-                break;
+                    })
+                    ->UseManualTime();
             }
         }
     }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <optional>
 #include <string>
 
@@ -52,26 +53,45 @@ private:
         CALLGRIND_ZERO_STATS;
         run();
         CALLGRIND_DUMP_STATS_AT("bsc latency");
-        return read(prefix_ + "." + std::to_string(++dumps()));
+        // Callgrind numbers a process's dumps from 1, whoever asks for them (the program itself,
+        // callgrind_control, --dump-every-bb): this one is the first after the last one read
+        // that says it is ours. A file that is not ours is left as it is.
+        for (unsigned k = dumps() + 1;; ++k) {
+            dump const d = read(prefix_ + "." + std::to_string(k));
+            if (!d.exists) return std::nullopt;
+            if (d.ours) {
+                dumps() = k;
+                return d.total;
+            }
+        }
 #else
         return std::nullopt;
 #endif
     }
 
-    // "totals: N" (or "summary: N"), the first event of which is the instructions (Ir).
-    static std::optional<std::uint64_t> read(std::string const& path) {
-        std::FILE* f = std::fopen(path.c_str(), "r");
-        if (!f) return std::nullopt;
+    struct dump {
+        bool exists = false;
+        bool ours = false;  // its description is our request's
         std::optional<std::uint64_t> total;
+    };
+
+    // "totals: N" (or "summary: N"), the first event of which is the instructions (Ir). A dump
+    // of ours is removed once read.
+    static dump read(std::string const& path) {
+        dump d;
+        std::FILE* f = std::fopen(path.c_str(), "r");
+        if (!f) return d;
+        d.exists = true;
         char line[512];
         while (std::fgets(line, sizeof line, f)) {
             unsigned long long n = 0;
+            if (std::strncmp(line, "desc: Trigger: Client Request: bsc latency", 42) == 0) d.ours = true;
             if (std::sscanf(line, "totals: %llu", &n) == 1 || std::sscanf(line, "summary: %llu", &n) == 1)
-                total = static_cast<std::uint64_t>(n);
+                d.total = static_cast<std::uint64_t>(n);
         }
         std::fclose(f);
-        std::remove(path.c_str());
-        return total;
+        if (d.ours) std::remove(path.c_str());
+        return d;
     }
 
     static std::string expand(std::string const& pattern) {

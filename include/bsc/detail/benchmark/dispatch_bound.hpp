@@ -1,13 +1,12 @@
 #pragma once
-// The most work one dispatch (or one cycle) of a machine can do, read from its chart and its
-// policy alone: what bsc::latency_report::bound holds (bsc/benchmark.hpp).
+// The most work one run to completion of a machine (a dispatch, or a cycle) can do, read from
+// its chart and its policy alone: what bsc::latency_report::bound holds (bsc/benchmark.hpp).
 
 #include <cstddef>
 #include <string>
 #include <type_traits>
 
 #include <bsc/detail/model/chart_model.hpp>
-#include <bsc/detail/type_name.hpp>
 
 namespace bsc {
 
@@ -20,60 +19,73 @@ struct dispatch_bound {
     std::size_t states_per_transition = 0;
     /// A transition that reaches that figure, "Source -> Target".
     std::string widest_transition;
-    /// The most transitions that fire together in one microstep: one per orthogonal component.
-    std::size_t components = 0;
-    /// The most microsteps of one run to completion: the dispatched event (or the cycle), then
-    /// the internal events (raised, done, retried deferred events) up to the policy's
-    /// max_internal_events, each followed, where the chart has eventless transitions and the
-    /// policy settles them, by up to max_eventless_steps + 1 of them (the last one reports the
-    /// livelock).
+    /// The most transitions that fire in one microstep: one per active basic state in a
+    /// dispatch; in a cycle, one per BSC component (the root and each child of a parallel
+    /// state) active at once.
+    std::size_t transitions_per_microstep = 0;
+    /// The most microsteps of one run: the dispatched event or the cycle, then the internal
+    /// events (raised, done, retried deferred events) up to the policy's max_internal_events;
+    /// in a dispatch whose policy settles eventless transitions and whose chart has any, each
+    /// followed by up to max_eventless_steps + 1 of them (the last one reports the livelock).
     std::size_t microsteps = 0;
     /// How `microsteps` is made up, in words.
     std::string microsteps_from;
+    /// The most states one run can exit and enter: per microstep, the transitions' exit and
+    /// entry sets (at most every active state out and as many in), and where the chart can
+    /// halt (a final child of the root), every active state's exit when it does.
+    std::size_t states_per_run = 0;
 };
 
 }  // namespace bsc
 
 namespace bsc::detail {
 
+// `stepped`: the run is a cycle (step), not a dispatch.
 template <class Machine>
-dispatch_bound bound_of() {
+dispatch_bound bound_of(bool stepped) {
     using chart_type = typename Machine::chart_type;
     using policy = typename Machine::policy_type;
     using model = chart_model<std::remove_cv_t<chart_type>>;
     constexpr auto const& tree = model::tree;
     constexpr auto const& rows = model::rows;
     constexpr int n = model::N;
-    // span[s]: the most states active at once in s's subtree, s included; leaves[s]: the most
-    // leaves (orthogonal components) active at once there. Children follow their parents in
-    // the numbering, so a backward pass sees every child first.
+    constexpr int root = 1;  // index 0 is the implicit top above the root
+    // In s's subtree, s included, at once: span, the most states active; leaves, the most
+    // basic states active; regions, the most children of parallel states active. Children
+    // follow their parents in the numbering, so a backward pass sees every child first.
     std::size_t span[static_cast<std::size_t>(n)] = {};
     std::size_t leaves[static_cast<std::size_t>(n)] = {};
+    std::size_t regions[static_cast<std::size_t>(n)] = {};
     for (int s = n - 1; s >= 0; --s) {
         auto const i = static_cast<std::size_t>(s);
         if (tree.kinds[i] == kind::history) continue;  // a marker, never active itself
-        std::size_t sum = 0, most = 0, sum_leaves = 0, most_leaves = 0;
+        bool const parallel = tree.kinds[i] == kind::parallel;
+        std::size_t all_span = 0, most_span = 0, all_leaves = 0, most_leaves = 0, all_regions = 0, most_regions = 0;
         for (int c = tree.first_child[i]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)]) {
             auto const k = static_cast<std::size_t>(c);
-            sum += span[k];
-            most = span[k] > most ? span[k] : most;
-            sum_leaves += leaves[k];
+            if (tree.kinds[k] == kind::history) continue;
+            all_span += span[k];
+            most_span = span[k] > most_span ? span[k] : most_span;
+            all_leaves += leaves[k];
             most_leaves = leaves[k] > most_leaves ? leaves[k] : most_leaves;
+            all_regions += 1 + regions[k];
+            most_regions = regions[k] > most_regions ? regions[k] : most_regions;
         }
-        bool const parallel = tree.kinds[i] == kind::parallel;
-        span[i] = 1 + (parallel ? sum : most);
-        leaves[i] = (parallel ? sum_leaves : most_leaves);
+        span[i] = 1 + (parallel ? all_span : most_span);
+        leaves[i] = parallel ? all_leaves : most_leaves;
         if (leaves[i] == 0) leaves[i] = 1;
+        regions[i] = parallel ? all_regions : most_regions;
     }
     dispatch_bound b;
-    // Index 0 is the implicit top above the root: it is never exited, so it does not count.
-    b.states_at_once = span[0] - 1;
-    b.components = leaves[0];
+    b.states_at_once = span[root];
+    b.transitions_per_microstep = stepped ? 1 + regions[root] : leaves[root];
     constexpr auto const& names = state_names_of<model>;
     bool eventless = false;
+    bool defers = false;
     for (std::size_t r = 0; r < rows.kinds.size(); ++r) {
         if (rows.kinds[r] != row_kind::transition) continue;
-        if (rows.trigger[r] == eventless_id) eventless = true;
+        eventless = eventless || rows.trigger[r] == eventless_id;
+        defers = defers || rows.defers[r];
         if (rows.target[r] < 0 || rows.domain[r] < 0) continue;  // internal: nothing exits or enters
         std::size_t const moved = 2 * (span[static_cast<std::size_t>(rows.domain[r])] - 1);
         if (moved > b.states_per_transition) {
@@ -82,22 +94,30 @@ dispatch_bound bound_of() {
                                   std::string(names[static_cast<std::size_t>(rows.target[r])]);
         }
     }
-    bool defers = false;
-    for (bool const d : rows.defers) defers = defers || d;
+    bool halts = false;
+    for (int c = tree.first_child[root]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
+        halts = halts || tree.kinds[static_cast<std::size_t>(c)] == kind::final_state;
+
     // Raised and done events, and deferred events retried, count against one limit.
     std::size_t const internal = Machine::queue_capacity > 0 || defers ? policy::max_internal_events : 0;
-    std::string from = policy::settle_eventless ? "1 dispatched event" : "1 cycle (one transition per component)";
+    std::string from = stepped ? "1 cycle" : "1 dispatched event";
     if (internal > 0) from += " + " + std::to_string(internal) + " internal events (max_internal_events)";
-    // The eventless transitions after each: up to max_eventless_steps, and one more, which
-    // reports the livelock. A scan policy leaves them to the next cycle.
+    // A cycle leaves eventless transitions to the components; a dispatch settles them where
+    // the policy says so.
     std::size_t each = 1;
-    if (eventless && policy::settle_eventless) {
+    if (!stepped && eventless && policy::settle_eventless) {
         each += policy::max_eventless_steps + 1;
         from = "(" + from + ") x (1 + " + std::to_string(policy::max_eventless_steps + 1) +
                " eventless transitions (max_eventless_steps + 1))";
     }
     b.microsteps = (1 + internal) * each;
     b.microsteps_from = from;
+    // One microstep moves at most its transitions' sets, and never more than every active
+    // state out and as many in.
+    std::size_t const per_microstep = b.transitions_per_microstep * b.states_per_transition < 2 * b.states_at_once
+                                          ? b.transitions_per_microstep * b.states_per_transition
+                                          : 2 * b.states_at_once;
+    b.states_per_run = b.microsteps * per_microstep + (halts ? b.states_at_once : 0);
     return b;
 }
 
