@@ -10,7 +10,8 @@
 #                                 every header under include/bsc compiles on its own
 #   packaging.standard_library_only
 #                                 the headers include the standard library and bsc only
-#                                 (and <mosquitto.h> for bsc::mqtt, Boost.Hana for bsc::hana)
+#                                 (and <mosquitto.h> for bsc::mqtt, Boost.Hana for bsc::hana,
+#                                 Google Benchmark and valgrind's header for <bsc/benchmark.hpp>)
 # Each consumer is configured and built by a cmake subprocess with this build's compiler,
 # generator and build type (tests/packaging/run_consumer.cmake).
 if(TARGET bsc::hana)

@@ -1,6 +1,8 @@
 # packaging.standard_library_only: the library's headers (include/ and single_include/) include
 # only the standard library, bsc's own headers and, for bsc::mqtt alone, <mosquitto.h>, and for
-# bsc::hana alone (include/bsc/adapt/hana.hpp, single_include/bsc/hana.hpp) Boost.Hana's. (One header of the standard
+# bsc::hana alone (include/bsc/adapt/hana.hpp, single_include/bsc/hana.hpp) Boost.Hana's, and for
+# the latency benchmark alone (include/bsc/benchmark.hpp and its detail/benchmark/callgrind_counter.hpp)
+# Google Benchmark's, valgrind's <valgrind/callgrind.h> and <unistd.h>. (One header of the standard
 # library's own is named: libstdc++'s <bits/chrono.h>, the part of <chrono> bsc uses, included
 # only where __GLIBCXX__ says it is libstdc++: BSC_DETAIL_CHRONO_HEADER in detail/config.hpp,
 # which detail/chrono.hpp includes.) The single-header consumer
@@ -18,6 +20,15 @@ foreach(header IN LISTS headers)
       continue()
     endif()
     if(header MATCHES "/(include/bsc/adapt|single_include/bsc)/hana\\.hpp$" AND name MATCHES "^boost/hana/")
+      continue()
+    endif()
+    # The latency benchmark (opt-in, include/ only): Google Benchmark, and valgrind's client
+    # requests with the process id they need, where __has_include finds them.
+    if(header MATCHES "/include/bsc/benchmark\\.hpp$" AND name STREQUAL "benchmark/benchmark.h")
+      continue()
+    endif()
+    if(header MATCHES "/include/bsc/detail/benchmark/callgrind_counter\\.hpp$"
+       AND (name STREQUAL "valgrind/callgrind.h" OR name STREQUAL "unistd.h"))
       continue()
     endif()
     list(APPEND offending "${header}: #include <${name}>")
