@@ -16,37 +16,13 @@
 #include <string_view>
 
 #include "../harness.hpp"
+#include "mcs_display.hpp"
 
 namespace mcs_bench {
 
 inline constexpr std::size_t event_count = 13;
 
 enum class leaf : std::uint8_t { Off, Estop, Mem, Mdi, Tape, Handle, Jog, Rpd, Zrn, Edit, Setup };
-
-/// The display of examples/mcs/mcs.hpp, for the implementations that do not use bsc: the last
-/// 16 lines Show wrote, "+S" on entry and "-S" on exit.
-class display {
-public:
-    static constexpr std::size_t capacity = 16;
-    struct line {
-        std::string_view state;
-        bool entered = false;
-        bool operator==(line const& o) const { return state == o.state && entered == o.entered; }
-    };
-    void show(std::string_view state, bool entered) {
-        lines_[count_ % capacity] = {state, entered};
-        ++count_;
-    }
-    std::size_t size() const { return count_ < capacity ? count_ : capacity; }
-    line operator[](std::size_t i) const {
-        std::size_t const first = count_ < capacity ? 0 : count_ - capacity;
-        return lines_[(first + i) % capacity];
-    }
-
-private:
-    std::array<line, capacity> lines_{};
-    std::size_t count_ = 0;
-};
 
 struct panel {
     int error = 0;

@@ -33,6 +33,7 @@
 #include <bsc/detail/access.hpp>
 #include <bsc/detail/benchmark/callgrind_counter.hpp>
 #include <bsc/detail/benchmark/dispatch_bound.hpp>
+#include <bsc/detail/machine_base.hpp>
 #include <bsc/logger.hpp>
 #include <bsc/verify/explorer.hpp>
 #include <bsc/verify/models.hpp>
@@ -133,19 +134,29 @@ struct latency_report {
 
 namespace detail {
 
-// The same machine type with another observer (both back ends: machine<Chart, Policy, Observer>).
-template <class Machine, class Observer>
-struct with_observer {};
+// The same machine type with another observer (both back ends: machine<Chart, Policy, Observer>);
+// a state that is no machine stays itself.
+template <class State, class Observer>
+struct with_observer {
+    using type = State;
+};
 template <template <class, class, class> class Machine, class C, class P, class O, class Observer>
 struct with_observer<Machine<C, P, O>, Observer> {
     using type = Machine<C, P, Observer>;
 };
-template <class S>
-concept bsc_machine = requires(S const& s) {
-    typename S::chart_type;
-    typename S::policy_type;
-    s.active_states();
-};
+
+// One batch: each copy set to `from`, then `label` taken on each, timed together (ns).
+template <class Model, class State>
+double timed_batch(Model const& model, std::vector<State>& copies, State const& from, std::uint16_t label) {
+    std::fill(copies.begin(), copies.end(), from);
+    auto const start = std::chrono::steady_clock::now();
+    for (auto& s : copies) {
+        model.advance(s, label);
+        ::benchmark::DoNotOptimize(s);
+    }
+    auto const stop = std::chrono::steady_clock::now();
+    return std::chrono::duration<double, std::nano>(stop - start).count();
+}
 
 // The alternatives a model offers, as the labels its advance takes (the explorer's are 16 bits).
 template <class Model>
@@ -170,7 +181,7 @@ public:
         report.pairs = report.states * report.labels;
         report.complete = complete;
         if constexpr (stepped) report.offered = "inputs";
-        if constexpr (bsc_machine<state>) report.bound = bound_of<state>(stepped);
+        if constexpr (is_machine<state>) report.bound = bound_of<state>(stepped);
         callgrind_counter counter{options_.callgrind_out_file};
         bool counting = options_.count_instructions && callgrind_counter::available();
         std::vector<pair_latency> pairs;
@@ -262,14 +273,7 @@ private:
         std::vector<double> per_dispatch;
         // One batch untimed first: the code and the state's memory are then warm.
         for (std::size_t r = 0; r <= repetitions; ++r) {
-            std::fill(copies.begin(), copies.end(), from);
-            auto const start = std::chrono::steady_clock::now();
-            for (auto& s : copies) {
-                model_.advance(s, label);
-                ::benchmark::DoNotOptimize(s);
-            }
-            auto const stop = std::chrono::steady_clock::now();
-            double const batch_ns = std::chrono::duration<double, std::nano>(stop - start).count() - clock_;
+            double const batch_ns = timed_batch(model_, copies, from, label) - clock_;
             if (r > 0) per_dispatch.push_back(std::max(batch_ns, 0.0) / static_cast<double>(batch));
         }
         std::sort(per_dispatch.begin(), per_dispatch.end());
@@ -282,7 +286,7 @@ private:
     // the explorer's encoding (the observer is not part of it), its context copied whole (the
     // members the encoding leaves out included).
     void explain(state const& from, std::uint16_t label, pair_latency& p) {
-        if constexpr (bsc_machine<state>) {
+        if constexpr (is_machine<state>) {
             using traced = typename with_observer<state, logger>::type;
             if constexpr (requires(traced & t) { model_.advance(t, label); }) {
                 duration period{};
@@ -313,20 +317,11 @@ private:
         }
     }
 
-    // The machine a pair is replayed on, with a logger (for a model whose state is a machine).
-    template <class S>
-    struct traced_of {
-        using type = int;
-    };
-    template <bsc_machine S>
-    struct traced_of<S> {
-        using type = typename with_observer<S, logger>::type;
-    };
-
     Model const& model_;
     latency_options const& options_;
     double clock_ = -1;
-    std::optional<typename traced_of<state>::type> prototype_;
+    // The machine a pair is replayed on, with a logger (for a model whose state is a machine).
+    std::optional<typename with_observer<state, logger>::type> prototype_;
 };
 
 }  // namespace detail
@@ -390,17 +385,9 @@ void register_latency_benchmarks(std::string const& prefix, Model const& model, 
                     [model, s, label](::benchmark::State& st) {
                         constexpr std::size_t batch = 32;
                         std::vector<typename Model::state> copies(batch, s);
-                        for (auto _ : st) {
-                            std::fill(copies.begin(), copies.end(), s);
-                            auto const start = std::chrono::steady_clock::now();
-                            for (auto& c : copies) {
-                                model.advance(c, label);
-                                ::benchmark::DoNotOptimize(c);
-                            }
-                            auto const stop = std::chrono::steady_clock::now();
-                            st.SetIterationTime(std::chrono::duration<double>(stop - start).count() /
+                        for (auto _ : st)
+                            st.SetIterationTime(detail::timed_batch(model, copies, s, label) * 1e-9 /
                                                 static_cast<double>(batch));
-                        }
                     })
                     ->UseManualTime();
             }

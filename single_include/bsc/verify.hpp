@@ -1783,14 +1783,25 @@ struct codec {
         return prototype;
     }
 };
-// What every model of a bsc state keeps and does alike: the initial state, and its states
-// encoded and decoded by the codec.
-template <class State>
+// What every model of a bsc state keeps and does alike: the initial state, its states encoded
+// and decoded by the codec, and the successors of a state, one per alternative the model
+// offers (Model's labels() and advance(state, label)).
+template <class Model, class State>
 class encoded_model {
 public:
     using state = State;
     static constexpr std::size_t key_size = codec<State>::key_size;
 
+    template <class Emit>
+    void successors(state const& s, Emit&& emit) const {
+        auto const& model = static_cast<Model const&>(*this);
+        auto const labels = static_cast<std::uint16_t>(model.labels());
+        for (std::uint16_t label = 0; label < labels; ++label) {
+            state next = s;
+            model.advance(next, label);
+            emit(label, next);
+        }
+    }
     state initial() const { return initial_; }
     void encode(state const& s, std::byte* out) const { codec_.encode(s, out); }
     state decode(std::byte const* in) const { return codec_.decode(initial_, in); }
@@ -1810,20 +1821,13 @@ namespace bsc::verify {
 
 /// Offers each of the events Es... to the machine in every state (dispatch).
 template <class Machine, class... Es>
-class event_model : public detail::encoded_model<Machine> {
+class event_model : public detail::encoded_model<event_model<Machine, Es...>, Machine> {
 public:
     using state = Machine;
 
-    explicit event_model(Machine initial) : detail::encoded_model<Machine>(std::move(initial), duration{}) {}
+    explicit event_model(Machine initial)
+        : detail::encoded_model<event_model, Machine>(std::move(initial), duration{}) {}
 
-    template <class Emit>
-    void successors(state const& s, Emit&& emit) const {
-        for (std::uint16_t label = 0; label < labels(); ++label) {
-            state next = s;
-            advance(next, label);
-            emit(label, next);
-        }
-    }
     /// The number of alternatives offered in every state: the events.
     static constexpr std::size_t labels() { return sizeof...(Es); }
     /// Takes alternative `label` in place: dispatches the label-th event. `M` is the machine
@@ -1852,25 +1856,17 @@ struct numbered_inputs {
 /// ("P1=1 S1=0"), a trace shows only the words that changed from one step to the next
 /// (verdict::to_string).
 template <class Machine, class Apply, class Label = numbered_inputs>
-class cycle_model : public detail::encoded_model<Machine> {
+class cycle_model : public detail::encoded_model<cycle_model<Machine, Apply, Label>, Machine> {
 public:
     using state = Machine;
 
     // (The parameter is not `label`: a function pointer of that name shadows label() for -Wshadow.)
     cycle_model(Machine initial, duration period, std::size_t choices, Apply apply, Label choice_label = {})
-        : detail::encoded_model<Machine>(std::move(initial), period),
+        : detail::encoded_model<cycle_model, Machine>(std::move(initial), period),
           choices_(choices),
           apply_(std::move(apply)),
           label_(std::move(choice_label)) {}
 
-    template <class Emit>
-    void successors(state const& s, Emit&& emit) const {
-        for (std::size_t c = 0; c < choices_; ++c) {
-            state next = s;
-            advance(next, static_cast<std::uint16_t>(c));
-            emit(static_cast<std::uint16_t>(c), next);
-        }
-    }
     /// The number of alternatives offered in every state: the choices of inputs.
     std::size_t labels() const { return choices_; }
     /// Takes alternative `choice` in place: sets its inputs, then steps one period on. `M` is
@@ -1895,25 +1891,17 @@ private:
 /// `step(system, choice, now)` for each of `choices` alternatives per cycle. `describe`
 /// names a system state for traces; `label(choice)` names an alternative.
 template <class System, class Step, class Describe, class Label>
-class system_model : public detail::encoded_model<System> {
+class system_model : public detail::encoded_model<system_model<System, Step, Describe, Label>, System> {
 public:
     using state = System;
 
     system_model(System initial, duration period, std::size_t choices, Step step, Describe describe, Label choice_label)
-        : detail::encoded_model<System>(std::move(initial), period),
+        : detail::encoded_model<system_model, System>(std::move(initial), period),
           choices_(choices),
           step_(std::move(step)),
           describe_(std::move(describe)),
           label_(std::move(choice_label)) {}
 
-    template <class Emit>
-    void successors(state const& s, Emit&& emit) const {
-        for (std::size_t c = 0; c < choices_; ++c) {
-            state next = s;
-            advance(next, static_cast<std::uint16_t>(c));
-            emit(static_cast<std::uint16_t>(c), next);
-        }
-    }
     /// The number of alternatives offered in every state.
     std::size_t labels() const { return choices_; }
     /// Takes alternative `choice` in place: one step of the system.

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "../../bench/mcs/mcs_display.hpp"
 #include "../../examples/mcs/mcs.hpp"
 #include "driver.hpp"
 
@@ -117,28 +118,8 @@ struct bsc_adapter {
 
 // ---- By hand ----------------------------------------------------------------------------------
 
-/// The last 16 lines Show wrote, as mcs::display keeps them.
-class display {
-public:
-    static constexpr std::size_t capacity = 16;
-    struct line {
-        std::string_view state;
-        bool entered = false;
-    };
-    void show(std::string_view state, bool entered) {
-        lines_[count_ % capacity] = {state, entered};
-        ++count_;
-    }
-    std::size_t shown() const { return count_; }
-    std::size_t size() const { return count_ < capacity ? count_ : capacity; }
-    line operator[](std::size_t i) const {
-        return lines_[((count_ < capacity ? 0 : count_ - capacity) + i) % capacity];
-    }
-
-private:
-    line lines_[capacity] = {};
-    std::size_t count_ = 0;
-};
+/// The last 16 lines Show wrote, as mcs::display keeps them (bench/mcs's).
+using display = mcs_bench::display;
 
 /// One enum per composite, which also keeps On's deep history (nothing resets them when On is
 /// left); a switch on the button, then on the state; Show called in the chart's order (exits

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include <bsc/detail/model/chart_model.hpp>
+#include <bsc/detail/model/layout.hpp>
 
 namespace bsc {
 
@@ -80,12 +81,8 @@ dispatch_bound bound_of(bool stepped) {
     b.states_at_once = span[root];
     b.transitions_per_microstep = stepped ? 1 + regions[root] : leaves[root];
     constexpr auto const& names = state_names_of<model>;
-    bool eventless = false;
-    bool defers = false;
     for (std::size_t r = 0; r < rows.kinds.size(); ++r) {
         if (rows.kinds[r] != row_kind::transition) continue;
-        eventless = eventless || rows.trigger[r] == eventless_id;
-        defers = defers || rows.defers[r];
         if (rows.target[r] < 0 || rows.domain[r] < 0) continue;  // internal: nothing exits or enters
         std::size_t const moved = 2 * (span[static_cast<std::size_t>(rows.domain[r])] - 1);
         if (moved > b.states_per_transition) {
@@ -94,12 +91,11 @@ dispatch_bound bound_of(bool stepped) {
                                   std::string(names[static_cast<std::size_t>(rows.target[r])]);
         }
     }
-    bool halts = false;
-    for (int c = tree.first_child[root]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
-        halts = halts || tree.kinds[static_cast<std::size_t>(c)] == kind::final_state;
+    using layout = chart_layout<model>;
+    bool const eventless = layout::has_trigger(eventless_id);
 
     // Raised and done events, and deferred events retried, count against one limit.
-    std::size_t const internal = Machine::queue_capacity > 0 || defers ? policy::max_internal_events : 0;
+    std::size_t const internal = Machine::queue_capacity > 0 || model::has_deferral ? policy::max_internal_events : 0;
     std::string from = stepped ? "1 cycle" : "1 dispatched event";
     if (internal > 0) from += " + " + std::to_string(internal) + " internal events (max_internal_events)";
     // A cycle leaves eventless transitions to the components; a dispatch settles them where
@@ -117,7 +113,7 @@ dispatch_bound bound_of(bool stepped) {
     std::size_t const per_microstep = b.transitions_per_microstep * b.states_per_transition < 2 * b.states_at_once
                                           ? b.transitions_per_microstep * b.states_per_transition
                                           : 2 * b.states_at_once;
-    b.states_per_run = b.microsteps * per_microstep + (halts ? b.states_at_once : 0);
+    b.states_per_run = b.microsteps * per_microstep + (layout::can_halt ? b.states_at_once : 0);
     return b;
 }
 
