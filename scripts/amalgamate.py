@@ -6,8 +6,10 @@ include/ is inlined in place, depth-first and only the first time it is seen;
 all other includes are kept as they are. The opt-in parts, the explorer (include/bsc/verify.hpp), the diagram exports
 (include/bsc/export.hpp), the logger (include/bsc/logger.hpp), the retentive state
 (include/bsc/retain.hpp), the VCD recorder (include/bsc/vcd.hpp) and the distributed
-systems (include/bsc/net.hpp, and include/bsc/mqtt.hpp over MQTT) and the Boost.Hana adapter
-(include/bsc/adapt/hana.hpp, as hana.hpp), become files of
+systems (include/bsc/net.hpp, and include/bsc/mqtt.hpp over MQTT), the Boost.Hana adapter
+(include/bsc/adapt/hana.hpp, as hana.hpp), several observers as one (include/bsc/observers.hpp),
+the trace stream (include/bsc/trace.hpp, include/bsc/trace_reader.hpp) and the inspector
+(include/bsc/inspector.hpp), become files of
 their own that include the first and add only what it lacks; a part whose entry
 includes another part's entry includes that part's single header instead of a copy of
 it (net.hpp includes retain.hpp, mqtt.hpp includes net.hpp); a header two of them
@@ -33,6 +35,10 @@ VCD_ENTRY = INCLUDE_DIR / "bsc" / "vcd.hpp"
 NET_ENTRY = INCLUDE_DIR / "bsc" / "net.hpp"
 MQTT_ENTRY = INCLUDE_DIR / "bsc" / "mqtt.hpp"
 HANA_ENTRY = INCLUDE_DIR / "bsc" / "adapt" / "hana.hpp"
+OBSERVERS_ENTRY = INCLUDE_DIR / "bsc" / "observers.hpp"
+TRACE_ENTRY = INCLUDE_DIR / "bsc" / "trace.hpp"
+TRACE_READER_ENTRY = INCLUDE_DIR / "bsc" / "trace_reader.hpp"
+INSPECTOR_ENTRY = INCLUDE_DIR / "bsc" / "inspector.hpp"
 DEFAULT_OUTPUT = ROOT / "single_include" / "bsc" / "bsc.hpp"
 COMMAND = "python3 scripts/amalgamate.py"
 
@@ -111,6 +117,39 @@ MQTT_HEADER = f"""\
 """
 
 
+OBSERVERS_HEADER = f"""\
+#pragma once
+// bsc::observers - several observers as one, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/observers.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+TRACE_HEADER = f"""\
+#pragma once
+// bsc::tracer and bsc::trace_buffer - the trace stream, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/trace.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+TRACE_READER_HEADER = f"""\
+#pragma once
+// bsc::trace_reader - the trace stream read back, single-header distribution (needs bsc.hpp beside it).
+// Generated from include/bsc/trace_reader.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+INSPECTOR_HEADER = f"""\
+#pragma once
+// bsc::inspector - a live view in the browser, single-header distribution (needs bsc.hpp beside it; POSIX).
+// Generated from include/bsc/inspector.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
+
 def relative(path: Path) -> str:
     return path.relative_to(ROOT).as_posix()
 
@@ -169,7 +208,10 @@ def inline(path: Path, seen: set[Path], out: list[str], guarded: set[Path] = fro
 PARTS = [(VERIFY_ENTRY, VERIFY_HEADER, "verify.hpp"), (EXPORT_ENTRY, EXPORT_HEADER, "export.hpp"),
          (LOGGER_ENTRY, LOGGER_HEADER, "logger.hpp"), (RETAIN_ENTRY, RETAIN_HEADER, "retain.hpp"),
          (VCD_ENTRY, VCD_HEADER, "vcd.hpp"), (NET_ENTRY, NET_HEADER, "net.hpp"),
-         (MQTT_ENTRY, MQTT_HEADER, "mqtt.hpp"), (HANA_ENTRY, HANA_HEADER, "hana.hpp")]
+         (MQTT_ENTRY, MQTT_HEADER, "mqtt.hpp"), (HANA_ENTRY, HANA_HEADER, "hana.hpp"),
+         (OBSERVERS_ENTRY, OBSERVERS_HEADER, "observers.hpp"), (TRACE_ENTRY, TRACE_HEADER, "trace.hpp"),
+         (TRACE_READER_ENTRY, TRACE_READER_HEADER, "trace_reader.hpp"),
+         (INSPECTOR_ENTRY, INSPECTOR_HEADER, "inspector.hpp")]
 
 
 def amalgamate() -> list[tuple[str, str]]:

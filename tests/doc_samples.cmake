@@ -102,6 +102,8 @@ bsc_add_doc_samples(docs/checks.md checks)
 bsc_add_doc_samples(docs/composition.md composition)
 bsc_add_doc_samples(docs/verification.md verification)
 bsc_add_doc_samples(docs/table-runtime.md table_runtime)
+bsc_add_doc_samples(docs/trace.md trace)
+bsc_add_doc_samples(docs/inspector.md inspector)
 bsc_add_doc_samples(docs/examples/eca_cell.md eca_cell_page)
 
 get_property(bsc_doc_sample_pages GLOBAL PROPERTY bsc_doc_sample_pages)

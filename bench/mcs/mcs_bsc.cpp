@@ -12,27 +12,19 @@
 #endif
 
 #include "../../examples/mcs/mcs.hpp"
+#include "mcs_buttons.hpp"
 #include "mcs_workload.hpp"
 
 namespace {
 
 using namespace mcs_bench;
 
-template <std::size_t I, class List>
-struct button_at;
-template <std::size_t I, class B, class... Bs>
-struct button_at<I, mcs::button_list<B, Bs...>> : button_at<I - 1, mcs::button_list<Bs...>> {};
-template <class B, class... Bs>
-struct button_at<0, mcs::button_list<B, Bs...>> {
-    using type = B;
-};
-
 template <class Machine>
 class supervisor {
 public:
     void on(std::uint8_t event) {
         bench::with_index<event_count>(
-            event, [&](auto i) { m_.dispatch(typename button_at<decltype(i)::value, mcs::buttons>::type{}); });
+            event, [&](auto i) { m_.dispatch(typename mcs_bench::button_at<decltype(i)::value>::type{}); });
     }
 
     workload::observation observe() const {

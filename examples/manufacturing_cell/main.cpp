@@ -2,7 +2,7 @@
 // runs in closed loop with a plant model (plant.hpp) at a fixed scan period, and every cycle is
 // checked against the paper's requirements (monitor.hpp).
 //
-//   manufacturing_cell [--pieces N] [--seed S] [--period MS] [--quiet] [--vcd FILE]
+//   manufacturing_cell [--pieces N] [--seed S] [--period MS] [--quiet] [--vcd FILE] [--trace FILE]
 //
 // Without --seed the pieces arrive by a fixed script (a steady start, a burst, stragglers);
 // with --seed they arrive at random gaps of 0.5 s to 12 s drawn from that seed. The trace has one
@@ -19,8 +19,12 @@
 // one line. The run exits with status 1 if a piece was not stored or a requirement was
 // violated. With --vcd every cycle is also recorded in FILE as a waveform (bsc::vcd_recorder:
 // the components' states, the sensors, the actuators, E1..E4 and the timers), for GTKWave.
+// With --trace it is recorded in FILE as a trace stream (bsc::tracer, docs/trace.md): every
+// cycle, exit, transition and entry, and the values that changed, for the inspector's page.
 
+#include <array>
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -30,6 +34,7 @@
 #include <string_view>
 #include <vector>
 
+#include <bsc/trace.hpp>
 #include <bsc/vcd.hpp>
 
 #include "controller.hpp"
@@ -46,8 +51,12 @@ struct options {
     std::uint32_t seed = 0;
     bsc::duration period = 100ms;
     bool quiet = false;
-    std::string vcd;  // the waveform file, if any
+    std::string vcd;    // the waveform file, if any
+    std::string trace;  // the trace file, if any
 };
+
+// The example's machine: the controller with a tracer, whose frames are read only with --trace.
+using machine = bsc::machine<bsc::chart_ref<cell::chart>, bsc::scan_policy, bsc::tracer<decltype(cell::chart)>>;
 
 // The active state of each component, in the paper's order.
 struct snapshot {
@@ -57,7 +66,7 @@ struct snapshot {
     bool operator==(snapshot const&) const = default;
 };
 
-snapshot take(cell::machine const& m, cell::sensors const& in) {
+snapshot take(machine const& m, cell::sensors const& in) {
     snapshot s;
     s.belt = m.is<cell::BeltOn>() ? "On" : m.is<cell::BeltDone>() ? "Done" : "Off";
     s.drill = m.is<cell::DrillOn>() ? "On" : "Off";
@@ -109,15 +118,17 @@ std::vector<bsc::duration> scripted_arrivals(int pieces) {
 
 // Prints the usage text to `to`; returns the exit status: 0 when asked for, 2 after a wrong flag.
 int usage(std::FILE* to, int status) {
-    std::fprintf(to,
-                 "usage: manufacturing_cell [--pieces N] [--seed S] [--period MS] [--quiet] [--vcd FILE]\n"
-                 "Runs pieces through the manufacturing cell in closed loop with its plant and checks the run.\n"
-                 "  --pieces N   pieces to run through the cell, 0 to 10000 (default: 8)\n"
-                 "  --seed S     random arrivals from seed S (default: the fixed script of arrivals)\n"
-                 "  --period MS  scan period in milliseconds, 1 to 1000 (default: 100)\n"
-                 "  --quiet      print the summary only (default: print every piece's events too)\n"
-                 "  --vcd FILE   record every cycle in FILE as a value change dump, for GTKWave (default: none)\n"
-                 "  -h, --help   print this text and exit\n");
+    std::fprintf(
+        to,
+        "usage: manufacturing_cell [--pieces N] [--seed S] [--period MS] [--quiet] [--vcd FILE] [--trace FILE]\n"
+        "Runs pieces through the manufacturing cell in closed loop with its plant and checks the run.\n"
+        "  --pieces N   pieces to run through the cell, 0 to 10000 (default: 8)\n"
+        "  --seed S     random arrivals from seed S (default: the fixed script of arrivals)\n"
+        "  --period MS  scan period in milliseconds, 1 to 1000 (default: 100)\n"
+        "  --quiet      print the summary only (default: print every piece's events too)\n"
+        "  --vcd FILE   record every cycle in FILE as a value change dump, for GTKWave (default: none)\n"
+        "  --trace FILE record every cycle in FILE as a trace stream, for the inspector (default: none)\n"
+        "  -h, --help   print this text and exit\n");
     return status;
 }
 
@@ -140,6 +151,8 @@ bool parse(int argc, char** argv, options& o) {
             o.seed = static_cast<std::uint32_t>(v);
         } else if (a == "--vcd" && i + 1 < argc) {
             o.vcd = argv[++i];
+        } else if (a == "--trace" && i + 1 < argc) {
+            o.trace = argv[++i];
         } else if (a == "--period" && value(v) && v > 0 && v <= 1000) {
             o.period = std::chrono::milliseconds{v};
         } else {
@@ -165,10 +178,27 @@ int main(int argc, char** argv) {
                 o.random ? ("random arrivals, seed " + std::to_string(o.seed)).c_str() : "scripted arrivals",
                 ms(o.period), ms(cell::drill_time), ms(cell::test_time), ms(cell::robot_time));
 
-    cell::machine m{cell::chart};
+    // The trace's ring, drained after every cycle: 64 KiB holds the dictionary and many cycles.
+    static std::array<std::byte, 1 << 16> trace_storage;
+    bsc::trace_buffer trace_buffer{o.trace.empty() ? std::span<std::byte>{} : std::span<std::byte>{trace_storage}};
+    std::ofstream trace_file;
+    if (!o.trace.empty()) {
+        trace_file.open(o.trace, std::ios::binary);
+        if (!trace_file) {
+            std::fprintf(stderr, "manufacturing_cell: cannot write %s\n", o.trace.c_str());
+            return 2;
+        }
+    }
+    auto const drain_trace = [&] {
+        std::array<std::byte, 4096> chunk;
+        while (std::size_t const n = trace_buffer.read(chunk))
+            trace_file.write(reinterpret_cast<char const*>(chunk.data()), static_cast<std::streamsize>(n));
+    };
+
+    machine m{cell::chart, cell::data{}, bsc::tracer{cell::chart, trace_buffer}};
     cell::closed_loop loop{m, arrivals, o.period};
     std::ofstream vcd_file;
-    std::optional<bsc::vcd_recorder<cell::machine>> vcd;
+    std::optional<bsc::vcd_recorder<machine>> vcd;
     if (!o.vcd.empty()) {
         vcd_file.open(o.vcd);
         if (!vcd_file) {
@@ -196,6 +226,10 @@ int main(int argc, char** argv) {
     while (!loop.done() && loop.cycles() < max_cycles) {
         cell::cycle_record const r = loop.cycle();
         if (vcd) vcd->sample();
+        if (trace_file.is_open()) {
+            m.observer().sample(m);
+            drain_trace();
+        }
         snapshot const now = take(m, r.latched);
         if (!o.quiet && (cycle == 0 || now != last)) {
             // An empty phase alternates two snapshots that differ only in the belt's state.
@@ -230,6 +264,16 @@ int main(int argc, char** argv) {
                         o.vcd.c_str());
         } else {
             std::printf("FAILED: could not write the waveform to %s\n", o.vcd.c_str());
+            ok = false;
+        }
+    }
+    if (trace_file.is_open()) {
+        trace_file.flush();
+        if (trace_file && trace_buffer.dropped() == 0) {
+            std::printf("trace: %llu frames in %s\n", static_cast<unsigned long long>(trace_buffer.written()),
+                        o.trace.c_str());
+        } else {
+            std::printf("FAILED: could not write the whole trace to %s\n", o.trace.c_str());
             ok = false;
         }
     }

@@ -1,41 +1,83 @@
 // The Mode Control Supervisor at work.
 //   mcs                 runs a scripted operator run and checks every step of it
 //   mcs --interactive   the paper's virtual HMI: reads button names from standard input
-//   --log               (with either) also writes bsc::logger's record of every exit,
+//   mcs --inspect PORT  the same, watched in the browser (bsc::inspector, docs/inspector.md) at
+//                       http://127.0.0.1:PORT/; with --commands the page's buttons push too
+//   --log               (with any) also writes bsc::logger's record of every exit,
 //                       transition and entry to standard error
+//   --trace FILE        (with any) records the run in FILE as a trace stream (docs/trace.md)
 // Each push prints the button, the resulting active configuration, the error code and what
 // Show put on the display, e.g.
 //   JOG_P     -> MCS On Manual Jog        error 0  show -Setup +Manual +Jog
 // A button is pushed by name: bsc::event_set names the chart's events (each button's `name`),
 // and dispatch_by_number dispatches the one found.
 
+#include <poll.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <charconv>
+#include <chrono>
+#include <cstddef>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include <bsc/inspector.hpp>
 #include <bsc/logger.hpp>
+#include <bsc/observers.hpp>
+#include <bsc/trace.hpp>
 
 #include "mcs.hpp"
 
 namespace {
 
-// The example's machine: the MCS chart with a logger, which writes only when given a stream.
-using machine = bsc::machine<bsc::chart_ref<mcs::chart>, bsc::default_policy, bsc::logger>;
+// The example's machine: the MCS chart with a logger, which writes only when given a stream,
+// and a tracer, whose frames are read only when the run is recorded or inspected.
+using tracer = bsc::tracer<decltype(mcs::chart)>;
+using machine = bsc::machine<bsc::chart_ref<mcs::chart>, bsc::default_policy, bsc::observers<bsc::logger, tracer>>;
 using events = bsc::event_set<decltype(mcs::chart)>;
+
+struct options {
+    bool interactive = false;
+    bool log = false;
+    std::string trace;  // the file to record the trace in, if any
+    int inspect = -1;   // the inspector's port, if any
+    bool commands = false;
+    std::string web_root = BSC_MCS_WEB_ROOT;
+};
 
 // The transitions the logger has recorded, which the scripted run checks against its pushes.
 long logged_transitions = 0;
 
-machine make_machine(bool log) {
-    if (!log) return machine{mcs::chart, mcs::panel{}, bsc::logger{bsc::logger::sink_type{}}};
-    return machine{mcs::chart, mcs::panel{}, bsc::logger{[](bsc::log_record const& r) {
-                       std::clog << bsc::to_string(r) << '\n';
-                       logged_transitions += r.what == bsc::log_record::kind::transition;
-                   }}};
+// The trace's ring, drained after every push (to the file) or poll (to the page): 64 KiB
+// holds the dictionary and far more than one push writes. Without a reader it stays unused.
+std::array<std::byte, 1 << 16> trace_storage;
+bsc::trace_buffer trace_buffer{trace_storage};
+bsc::trace_buffer unread_trace{std::span<std::byte>{}};  // drops every frame: nothing reads it
+
+machine make_machine(options const& o) {
+    bool const traced = !o.trace.empty() || o.inspect >= 0;
+    tracer t{mcs::chart, traced ? trace_buffer : unread_trace};
+    if (!o.log) return machine{mcs::chart, mcs::panel{}, bsc::observers{bsc::logger{bsc::logger::sink_type{}}, t}};
+    return machine{mcs::chart, mcs::panel{},
+                   bsc::observers{bsc::logger{[](bsc::log_record const& r) {
+                                      std::clog << bsc::to_string(r) << '\n';
+                                      logged_transitions += r.what == bsc::log_record::kind::transition;
+                                  }},
+                                  t}};
+}
+
+// Writes what the trace's ring holds to `file` (if open).
+void drain_trace(std::ofstream& file) {
+    std::array<std::byte, 4096> chunk;
+    while (std::size_t const n = trace_buffer.read(chunk))
+        if (file) file.write(reinterpret_cast<char const*>(chunk.data()), static_cast<std::streamsize>(n));
 }
 
 bool same_name(std::string_view a, std::string_view b) {
@@ -120,11 +162,22 @@ constexpr step script[] = {
     {"OFF_P", "MCS Off", 0, consumed},
 };
 
+bool open_trace(std::ofstream& file, std::string const& path) {
+    file.open(path, std::ios::binary);
+    if (!file) std::cerr << "mcs: cannot write " << path << '\n';
+    return static_cast<bool>(file);
+}
+
 char const* to_string(bsc::outcome o) { return o == consumed ? "consumed" : o == ignored ? "ignored" : "other"; }
 
-int run_script(bool log) {
+int run_script(options const& o) {
+    bool const log = o.log;
     std::cout << "MCS scripted operator run\n";
-    machine m = make_machine(log);
+    std::ofstream trace_file;
+    if (!o.trace.empty() && !open_trace(trace_file, o.trace)) return 2;
+    machine m = make_machine(o);
+    m.observer().get<1>().sample(m);
+    drain_trace(trace_file);
     print("(start)", m, consumed, 0);
     if (m.active_states().joined() != "MCS Off" || m.context().error != 0) {
         std::cerr << "mcs: the machine does not start in 'MCS Off' with error 0\n";
@@ -140,6 +193,8 @@ int run_script(bool log) {
             return 1;
         }
         print(pushed->button, m, pushed->outcome, pushed->shown_before);
+        m.observer().get<1>().sample(m);
+        drain_trace(trace_file);
         std::string const got = m.active_states().joined();
         if (got != s.expected || m.context().error != s.error || pushed->outcome != s.outcome) {
             std::cerr << "mcs: step " << number << " (" << s.button << "): expected '" << s.expected << "', error "
@@ -181,21 +236,73 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-int run_interactive(bool log) {
+// One line of the operator's: a button, help or quit. Returns false for quit.
+bool take_line(machine& m, std::string_view line) {
+    std::string_view const name = trim(line);
+    if (name.empty()) return true;
+    if (same_name(name, "quit")) return false;
+    if (same_name(name, "help")) {
+        print_help();
+    } else if (auto const pushed = press(m, name)) {
+        print(pushed->button, m, pushed->outcome, pushed->shown_before);
+        m.observer().get<1>().sample(m);
+    } else {
+        std::cerr << "mcs: " << events::unknown(name) << " (any case; 'help' lists the buttons)\n";
+    }
+    return true;
+}
+
+int run_interactive(options const& o) {
     std::cout << "MCS virtual HMI: one button per line, 'help' lists them, 'quit' leaves\n";
-    machine m = make_machine(log);
+    std::ofstream trace_file;
+    if (!o.trace.empty() && !open_trace(trace_file, o.trace)) return 2;
+    machine m = make_machine(o);
+    m.observer().get<1>().sample(m);
     print("(start)", m, consumed, 0);
     for (std::string line; std::getline(std::cin, line);) {
-        std::string_view const name = trim(line);
-        if (name.empty()) continue;
-        if (same_name(name, "quit")) break;
-        if (same_name(name, "help")) {
-            print_help();
-        } else if (auto const pushed = press(m, name)) {
-            print(pushed->button, m, pushed->outcome, pushed->shown_before);
-        } else {
-            std::cerr << "mcs: " << events::unknown(name) << " (any case; 'help' lists the buttons)\n";
+        bool const more = take_line(m, line);
+        drain_trace(trace_file);
+        if (!more) break;
+    }
+    return 0;
+}
+
+// The virtual HMI watched, and with --commands driven, from the browser: the inspector serves
+// the page between the lines read from standard input, which stay open until quit or its end.
+int run_inspected(options const& o) {
+    machine m = make_machine(o);
+    m.observer().get<1>().sample(m);
+    bsc::inspector_options view_options;
+    view_options.port = static_cast<std::uint16_t>(o.inspect);
+    view_options.commands = o.commands;
+    view_options.web_root = o.web_root;
+    view_options.on_command = [&m](std::string_view command, std::string_view answer) {
+        std::cout << "  page: " << std::left << std::setw(16) << command << " -> " << std::setw(22)
+                  << m.active_states().joined() << "  error " << m.context().error << "  (" << answer << ")"
+                  << std::endl;
+    };
+    bsc::inspector view{m, trace_buffer, std::move(view_options)};
+    std::cout << "MCS virtual HMI, inspected: one button per line, 'help' lists them, 'quit' leaves\n"
+              << "inspect: " << view.url() << (o.commands ? "" : " (read-only: --commands lets the page push)")
+              << std::endl;
+    print("(start)", m, consumed, 0);
+    std::cout << std::flush;
+    std::string pending;
+    for (;;) {
+        view.poll(std::chrono::milliseconds{50});
+        pollfd input{0, POLLIN, 0};
+        if (::poll(&input, 1, 0) <= 0 || (input.revents & (POLLIN | POLLHUP)) == 0) continue;
+        char chunk[256];
+        ssize_t const n = ::read(0, chunk, sizeof chunk);
+        if (n <= 0) break;  // end of input: leave
+        pending.append(chunk, static_cast<std::size_t>(n));
+        bool more = true;
+        for (std::size_t end; more && (end = pending.find('\n')) != std::string::npos;) {
+            more = take_line(m, std::string_view{pending}.substr(0, end));
+            pending.erase(0, end + 1);
         }
+        std::cout << std::flush;
+        if (!more) break;
     }
     return 0;
 }
@@ -203,24 +310,46 @@ int run_interactive(bool log) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    bool interactive = false;
-    bool log = false;
-    for (int i = 1; i < argc; ++i) {
+    options o;
+    bool bad = false;
+    for (int i = 1; i < argc && !bad; ++i) {
         std::string_view const a = argv[i];
-        if (a == "--interactive" && !interactive) {
-            interactive = true;
-        } else if (a == "--log" && !log) {
-            log = true;
+        if (a == "--interactive" && !o.interactive) {
+            o.interactive = true;
+        } else if (a == "--log" && !o.log) {
+            o.log = true;
+        } else if (a == "--trace" && i + 1 < argc && o.trace.empty()) {
+            o.trace = argv[++i];
+        } else if (a == "--inspect" && i + 1 < argc && o.inspect < 0) {
+            std::string_view const port = argv[++i];
+            int value = 0;
+            auto const r = std::from_chars(port.data(), port.data() + port.size(), value);
+            bad = r.ec != std::errc{} || r.ptr != port.data() + port.size() || value < 0 || value > 65535;
+            o.inspect = value;
+        } else if (a == "--commands" && !o.commands) {
+            o.commands = true;
+        } else if (a == "--web-root" && i + 1 < argc) {
+            o.web_root = argv[++i];
         } else {
-            bool const asked = a == "--help" || a == "-h";
-            (asked ? std::cout : std::cerr)
-                << "usage: mcs [--interactive] [--log]\n"
-                   "  without flags:  run the scripted operator run and check it\n"
-                   "  --interactive   push buttons by name, one per line on standard input (default: off, the script)\n"
-                   "  --log           write every exit, transition and entry to standard error (default: off)\n"
-                   "  -h, --help      print this text and exit\n";
-            return asked ? 0 : 2;
+            bad = true;
         }
     }
-    return interactive ? run_interactive(log) : run_script(log);
+    bool const asked = argc == 2 && (std::string_view{argv[1]} == "--help" || std::string_view{argv[1]} == "-h");
+    if (bad || asked || (o.commands && o.inspect < 0)) {
+        (asked ? std::cout : std::cerr)
+            << "usage: mcs [--interactive | --inspect PORT [--commands] [--web-root DIR]] [--log] [--trace FILE]\n"
+               "  without flags:   run the scripted operator run and check it\n"
+               "  --interactive    push buttons by name, one per line on standard input (default: off, the script)\n"
+               "  --inspect PORT   as --interactive, and serve the live view at http://127.0.0.1:PORT/ (0: any free\n"
+               "                   port; the address is printed) until quit or the end of standard input\n"
+               "  --commands       (with --inspect) let the page push buttons (default: the view is read-only)\n"
+               "  --web-root DIR   the inspector page's folder (default: the build's, " BSC_MCS_WEB_ROOT
+               ")\n"
+               "  --log            write every exit, transition and entry to standard error (default: off)\n"
+               "  --trace FILE     record the run in FILE as a trace stream (default: none)\n"
+               "  -h, --help       print this text and exit\n";
+        return asked ? 0 : 2;
+    }
+    if (o.inspect >= 0) return run_inspected(o);
+    return o.interactive ? run_interactive(o) : run_script(o);
 }

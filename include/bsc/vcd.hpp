@@ -38,113 +38,14 @@
 #include <utility>
 #include <vector>
 
-#include <bsc/data/channel.hpp>
-#include <bsc/data/timer.hpp>
 #include <bsc/detail/access.hpp>
 #include <bsc/detail/members.hpp>
+#include <bsc/detail/recorded_members.hpp>
 #include <bsc/detail/type_name.hpp>
 #include <bsc/duration.hpp>
 #include <bsc/detail/model/chart_model.hpp>
 
 namespace bsc::detail::vcd {
-
-// integer: a signed integral type; reg: an unsigned one, an enum or a bool wider than a wire.
-enum class var_kind : std::uint8_t { wire, integer, reg, real, string };
-
-// One variable's value: the bits of a wire or integer, a real, or a string's text (a state's
-// name, which lives as long as the program).
-struct value {
-    std::uint64_t bits = 0;
-    double real = 0;
-    std::string_view text;
-    friend bool operator==(value const& a, value const& b) {
-        // Reals compare by representation, so that a NaN equals itself and is written once.
-        return a.bits == b.bits && std::bit_cast<std::uint64_t>(a.real) == std::bit_cast<std::uint64_t>(b.real) &&
-               a.text == b.text;
-    }
-};
-
-template <class T>
-constexpr bool is_scalar_variable = std::is_arithmetic_v<T> || std::is_enum_v<T>;
-
-template <class T>
-value scalar_value(T v) {
-    value out;
-    if constexpr (std::is_floating_point_v<T>) {
-        out.real = static_cast<double>(v);
-    } else if constexpr (std::is_enum_v<T>) {
-        out.bits = static_cast<std::uint64_t>(
-            static_cast<std::make_unsigned_t<std::underlying_type_t<T>>>(static_cast<std::underlying_type_t<T>>(v)));
-    } else if constexpr (std::is_same_v<T, bool>) {
-        out.bits = v ? 1 : 0;
-    } else {
-        out.bits = static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<T>>(v));
-    }
-    return out;
-}
-
-template <class T>
-constexpr var_kind var_kind_of() {
-    if constexpr (std::is_same_v<T, bool>)
-        return var_kind::wire;
-    else if constexpr (std::is_floating_point_v<T>)
-        return var_kind::real;
-    else if constexpr (std::is_integral_v<T> && std::is_signed_v<T>)
-        return var_kind::integer;
-    else
-        return var_kind::reg;
-}
-
-template <class T>
-constexpr unsigned width_of() {
-    if constexpr (std::is_same_v<T, bool>)
-        return 1;
-    else if constexpr (std::is_floating_point_v<T>)
-        return 64;
-    else
-        return 8 * sizeof(T);
-}
-
-// What the recorder shows: a channel of a scalar type, a timer, a plain scalar variable, found
-// by the member layer (detail/members.hpp) as the machine finds its channels.
-template <class T>
-constexpr bool is_recorded() {
-    if constexpr (is_channel<T>)
-        return is_scalar_variable<channel_value<T>>;
-    else
-        return is_timer<T> || is_scalar_variable<T>;
-}
-
-// Walks a context's recorded members, calling the visitor's scope(name), upscope() and
-// var(kind, width, name, value), in declaration order: a struct is a scope, a timer a scope of
-// three variables, an array's elements are name_0, name_1, ...
-template <class Visitor>
-struct recorded_members {
-    static constexpr bool named = true;
-    template <class T>
-    static constexpr bool visits = is_recorded<T>();
-    Visitor& v;
-    std::string element_name(std::string_view name, std::size_t i) const {
-        return std::string{name} + "_" + std::to_string(i);
-    }
-    void enter(std::string_view name) { v.scope(name); }
-    void leave() { v.upscope(); }
-    template <class T>
-    void leaf(T const& member, std::string_view name) {
-        if constexpr (is_channel<T>) {
-            using V = channel_value<T>;
-            v.var(var_kind_of<V>(), width_of<V>(), name, scalar_value(member.get()));
-        } else if constexpr (is_timer<T>) {
-            v.scope(name);
-            v.var(var_kind::wire, 1, "running", scalar_value(member.running()));
-            v.var(var_kind::wire, 1, "expired", scalar_value(member.expired()));
-            v.var(var_kind::integer, 64, "elapsed", scalar_value(static_cast<std::int64_t>(member.elapsed().count())));
-            v.upscope();
-        } else {
-            v.var(var_kind_of<T>(), width_of<T>(), name, scalar_value(member));
-        }
-    }
-};
 
 // Identifiers of variables: the printable characters '!' to '~' but for '#' and '$' (legal,
 // but they start a time and a keyword, which trips simple readers), in base 92.
@@ -177,27 +78,27 @@ std::string number(T v) {
     return std::string(buffer, result.ptr);
 }
 
-inline void write_value(std::ostream& out, var_kind kind, value const& v, std::string const& id) {
+inline void write_value(std::ostream& out, recorded::var_kind kind, recorded::value const& v, std::string const& id) {
     switch (kind) {
-        case var_kind::wire:
+        case recorded::var_kind::wire:
             if (v.bits <= 1) {
                 out << (v.bits ? '1' : '0') << id << '\n';
                 return;
             }
             [[fallthrough]];
-        case var_kind::integer:
-        case var_kind::reg: {
+        case recorded::var_kind::integer:
+        case recorded::var_kind::reg: {
             // Leading zeros are left out: a reader extends a vector's value with zeros.
             std::string digits;
             for (std::uint64_t b = v.bits; b != 0; b >>= 1) digits.insert(digits.begin(), (b & 1) ? '1' : '0');
             out << 'b' << (digits.empty() ? "0" : digits) << ' ' << id << '\n';
             return;
         }
-        case var_kind::real:
+        case recorded::var_kind::real:
             // The shortest text that reads back as the same double.
             out << 'r' << number(v.real) << ' ' << id << '\n';
             return;
-        case var_kind::string: out << 's' << token(v.text) << ' ' << id << '\n'; return;
+        case recorded::var_kind::string: out << 's' << token(v.text) << ' ' << id << '\n'; return;
     }
 }
 
@@ -263,9 +164,9 @@ private:
     static constexpr auto const& state_names = detail::state_names_of<model>;
 
     struct variable {
-        detail::vcd::var_kind kind;
+        detail::recorded::var_kind kind;
         std::string id;
-        detail::vcd::value last;
+        detail::recorded::value last;
     };
 
     // Writes the declarations and keeps the variables.
@@ -273,7 +174,8 @@ private:
         vcd_recorder& self;
         void scope(std::string_view name) { self.out_ << "$scope module " << detail::vcd::token(name) << " $end\n"; }
         void upscope() { self.out_ << "$upscope $end\n"; }
-        void var(detail::vcd::var_kind kind, unsigned width, std::string_view name, detail::vcd::value const&) {
+        void var(detail::recorded::var_kind kind, unsigned width, std::string_view name,
+                 detail::recorded::value const&) {
             static constexpr char const* kinds[] = {"wire", "integer", "reg", "real", "string"};
             auto id = detail::vcd::identifier(self.vars_.size());
             self.out_ << "$var " << kinds[static_cast<int>(kind)] << ' ' << detail::vcd::number(width) << ' ' << id
@@ -291,7 +193,7 @@ private:
         bool written = false;
         void scope(std::string_view) {}
         void upscope() {}
-        void var(detail::vcd::var_kind, unsigned, std::string_view, detail::vcd::value const& v) {
+        void var(detail::recorded::var_kind, unsigned, std::string_view, detail::recorded::value const& v) {
             variable& var = self.vars_[next++];
             if (self.sampled_ && var.last == v) return;
             if (!written) {
@@ -313,20 +215,20 @@ private:
         // Each composite state's active child, by name.
         for (std::size_t s = 1; s < state_count; ++s) {
             if (tree.kinds[s] != detail::kind::composite) continue;
-            detail::vcd::value current;
+            detail::recorded::value current;
             current.text = "-";
             for (int c = tree.first_child[s]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
                 if (active[static_cast<std::size_t>(c)]) current.text = state_names[static_cast<std::size_t>(c)];
-            v.var(detail::vcd::var_kind::string, 1, state_names[s], current);
+            v.var(detail::recorded::var_kind::string, 1, state_names[s], current);
         }
         v.scope("active");
         for (std::size_t s = 1; s < state_count; ++s)
-            v.var(detail::vcd::var_kind::wire, 1, state_names[s], detail::vcd::scalar_value(bool{active[s]}));
+            v.var(detail::recorded::var_kind::wire, 1, state_names[s], detail::recorded::scalar_value(bool{active[s]}));
         v.upscope();
         v.upscope();
-        using recorded = detail::vcd::recorded_members<Visitor>;
-        if constexpr (detail::reaches<recorded, typename Machine::context_type>()) {
-            recorded data{v};
+        using members_visitor = detail::recorded::recorded_members<Visitor>;
+        if constexpr (detail::reaches<members_visitor, typename Machine::context_type>()) {
+            members_visitor data{v};
             detail::walk(machine_.context(), data, std::string_view{"data"});
         }
     }

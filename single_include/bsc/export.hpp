@@ -33,6 +33,8 @@
 #include <string_view>
 
 // begin include/bsc/detail/export/model.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_EXPORT_MODEL_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_EXPORT_MODEL_HPP
 // The chart as the diagram exports see it: its states in document order with their names,
 // identifiers, kinds, initial children, history and entry/exit actions, and its transitions
 // with the labels of their triggers, guards and actions. Built at run time from a chart object
@@ -496,6 +498,7 @@ inline std::vector<std::string> activity_lines(diagram const& m, int s) {
 }
 
 }  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_EXPORT_MODEL_HPP
 // end include/bsc/detail/export/model.hpp
 
 namespace bsc::detail {

@@ -43,8 +43,22 @@
 #include <utility>
 #include <vector>
 
+// begin include/bsc/detail/recorded_members.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
+// The members a recorder shows (the waveform, the trace stream): the channels of a scalar type,
+// the timers and the plain scalar variables of a context, walked by the member layer
+// (detail/members.hpp) with their names, each leaf given as a kind, a width and a value.
 
-namespace bsc::detail::vcd {
+#include <bit>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+
+namespace bsc::detail::recorded {
 
 // integer: a signed integral type; reg: an unsigned one, an enum or a bool wider than a wire.
 enum class var_kind : std::uint8_t { wire, integer, reg, real, string };
@@ -144,6 +158,33 @@ struct recorded_members {
     }
 };
 
+// The dotted name of a member during a walk: "axis.position", "dwell.running". Each scope
+// entered is left again in order, an unnamed one (the walk's root) too.
+class dotted_path {
+public:
+    void enter(std::string_view name) {
+        starts_.push_back(text_.size());
+        if (!name.empty()) text_.append(name).push_back('.');
+    }
+    void leave() {
+        if (starts_.empty()) return;
+        text_.resize(starts_.back());
+        starts_.pop_back();
+    }
+    /// The full name of the member `name` in the present scope.
+    std::string of(std::string_view name) const { return text_ + std::string{name}; }
+
+private:
+    std::string text_;
+    std::vector<std::size_t> starts_;  // text_'s length before each scope entered
+};
+
+}  // namespace bsc::detail::recorded
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
+// end include/bsc/detail/recorded_members.hpp
+
+namespace bsc::detail::vcd {
+
 // Identifiers of variables: the printable characters '!' to '~' but for '#' and '$' (legal,
 // but they start a time and a keyword, which trips simple readers), in base 92.
 inline std::string identifier(std::size_t n) {
@@ -175,27 +216,27 @@ std::string number(T v) {
     return std::string(buffer, result.ptr);
 }
 
-inline void write_value(std::ostream& out, var_kind kind, value const& v, std::string const& id) {
+inline void write_value(std::ostream& out, recorded::var_kind kind, recorded::value const& v, std::string const& id) {
     switch (kind) {
-        case var_kind::wire:
+        case recorded::var_kind::wire:
             if (v.bits <= 1) {
                 out << (v.bits ? '1' : '0') << id << '\n';
                 return;
             }
             [[fallthrough]];
-        case var_kind::integer:
-        case var_kind::reg: {
+        case recorded::var_kind::integer:
+        case recorded::var_kind::reg: {
             // Leading zeros are left out: a reader extends a vector's value with zeros.
             std::string digits;
             for (std::uint64_t b = v.bits; b != 0; b >>= 1) digits.insert(digits.begin(), (b & 1) ? '1' : '0');
             out << 'b' << (digits.empty() ? "0" : digits) << ' ' << id << '\n';
             return;
         }
-        case var_kind::real:
+        case recorded::var_kind::real:
             // The shortest text that reads back as the same double.
             out << 'r' << number(v.real) << ' ' << id << '\n';
             return;
-        case var_kind::string: out << 's' << token(v.text) << ' ' << id << '\n'; return;
+        case recorded::var_kind::string: out << 's' << token(v.text) << ' ' << id << '\n'; return;
     }
 }
 
@@ -261,9 +302,9 @@ private:
     static constexpr auto const& state_names = detail::state_names_of<model>;
 
     struct variable {
-        detail::vcd::var_kind kind;
+        detail::recorded::var_kind kind;
         std::string id;
-        detail::vcd::value last;
+        detail::recorded::value last;
     };
 
     // Writes the declarations and keeps the variables.
@@ -271,7 +312,8 @@ private:
         vcd_recorder& self;
         void scope(std::string_view name) { self.out_ << "$scope module " << detail::vcd::token(name) << " $end\n"; }
         void upscope() { self.out_ << "$upscope $end\n"; }
-        void var(detail::vcd::var_kind kind, unsigned width, std::string_view name, detail::vcd::value const&) {
+        void var(detail::recorded::var_kind kind, unsigned width, std::string_view name,
+                 detail::recorded::value const&) {
             static constexpr char const* kinds[] = {"wire", "integer", "reg", "real", "string"};
             auto id = detail::vcd::identifier(self.vars_.size());
             self.out_ << "$var " << kinds[static_cast<int>(kind)] << ' ' << detail::vcd::number(width) << ' ' << id
@@ -289,7 +331,7 @@ private:
         bool written = false;
         void scope(std::string_view) {}
         void upscope() {}
-        void var(detail::vcd::var_kind, unsigned, std::string_view, detail::vcd::value const& v) {
+        void var(detail::recorded::var_kind, unsigned, std::string_view, detail::recorded::value const& v) {
             variable& var = self.vars_[next++];
             if (self.sampled_ && var.last == v) return;
             if (!written) {
@@ -311,20 +353,20 @@ private:
         // Each composite state's active child, by name.
         for (std::size_t s = 1; s < state_count; ++s) {
             if (tree.kinds[s] != detail::kind::composite) continue;
-            detail::vcd::value current;
+            detail::recorded::value current;
             current.text = "-";
             for (int c = tree.first_child[s]; c >= 0; c = tree.next_sibling[static_cast<std::size_t>(c)])
                 if (active[static_cast<std::size_t>(c)]) current.text = state_names[static_cast<std::size_t>(c)];
-            v.var(detail::vcd::var_kind::string, 1, state_names[s], current);
+            v.var(detail::recorded::var_kind::string, 1, state_names[s], current);
         }
         v.scope("active");
         for (std::size_t s = 1; s < state_count; ++s)
-            v.var(detail::vcd::var_kind::wire, 1, state_names[s], detail::vcd::scalar_value(bool{active[s]}));
+            v.var(detail::recorded::var_kind::wire, 1, state_names[s], detail::recorded::scalar_value(bool{active[s]}));
         v.upscope();
         v.upscope();
-        using recorded = detail::vcd::recorded_members<Visitor>;
-        if constexpr (detail::reaches<recorded, typename Machine::context_type>()) {
-            recorded data{v};
+        using members_visitor = detail::recorded::recorded_members<Visitor>;
+        if constexpr (detail::reaches<members_visitor, typename Machine::context_type>()) {
+            members_visitor data{v};
             detail::walk(machine_.context(), data, std::string_view{"data"});
         }
     }

@@ -2,7 +2,8 @@
 # only the standard library, bsc's own headers and, for bsc::mqtt alone, <mosquitto.h>, and for
 # bsc::hana alone (include/bsc/adapt/hana.hpp, single_include/bsc/hana.hpp) Boost.Hana's, and for
 # the latency benchmark alone (include/bsc/benchmark.hpp and its detail/benchmark/callgrind_counter.hpp)
-# Google Benchmark's, valgrind's <valgrind/callgrind.h> and <unistd.h>. (One header of the standard
+# Google Benchmark's, valgrind's <valgrind/callgrind.h> and <unistd.h>, and for the inspector's
+# server alone (include/bsc/detail/inspector/http.hpp, single_include/bsc/inspector.hpp) POSIX's sockets. (One header of the standard
 # library's own is named: libstdc++'s <bits/chrono.h>, the part of <chrono> bsc uses, included
 # only where __GLIBCXX__ says it is libstdc++: BSC_DETAIL_CHRONO_HEADER in detail/config.hpp,
 # which detail/chrono.hpp includes.) The single-header consumer
@@ -29,6 +30,11 @@ foreach(header IN LISTS headers)
     endif()
     if(header MATCHES "/include/bsc/detail/benchmark/callgrind_counter\\.hpp$"
        AND (name STREQUAL "valgrind/callgrind.h" OR name STREQUAL "unistd.h"))
+      continue()
+    endif()
+    # The inspector's server (opt-in, POSIX): the socket interface.
+    if(header MATCHES "/(include/bsc/detail/inspector/http|single_include/bsc/inspector)\\.hpp$"
+       AND name MATCHES "^(arpa/inet|netinet/in|poll|sys/socket|unistd)\\.h$")
       continue()
     endif()
     list(APPEND offending "${header}: #include <${name}>")

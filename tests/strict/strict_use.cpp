@@ -6,7 +6,12 @@
 
 #include <bsc/bsc.hpp>
 #include <bsc/export.hpp>
+#include <bsc/inspector.hpp>
+#include <bsc/logger.hpp>
+#include <bsc/observers.hpp>
 #include <bsc/retain.hpp>
+#include <bsc/trace.hpp>
+#include <bsc/trace_reader.hpp>
 #include <bsc/vcd.hpp>
 #include <bsc/verify.hpp>
 
@@ -114,6 +119,23 @@ int main() {
     sum += bsc::verify::deadlock_free(ex).holds();
     sum += bsc::verify::reachable(ex, "R2", [](auto const& m) { return m.template is<strict::R2>(); }).holds();
     sum += bsc::verify::always_reachable(ex, "L1", [](auto const& m) { return m.template is<strict::L1>(); }).holds();
+    // The trace stream of the cell's controller, logged at once, read back; an inspector that
+    // only listens.
+    {
+        std::array<std::byte, 1 << 14> storage{};
+        bsc::trace_buffer buffer{storage};
+        bsc::machine traced{cell::chart, cell::data{},
+                            bsc::observers{bsc::logger{bsc::logger::sink_type{}}, bsc::tracer{cell::chart, buffer}}};
+        traced.step(0ms);
+        traced.observer().get<1>().sample(traced);
+        bsc::inspector view{traced, buffer, {}};
+        view.poll();
+        sum += static_cast<int>(view.may_step());
+        std::array<std::byte, 1 << 14> bytes{};
+        bsc::trace_reader reader;
+        reader.feed(std::span{bytes}.first(buffer.read(bytes)));
+        while (auto r = reader.next()) sum += static_cast<int>(reader.describe(*r).size() > 0);
+    }
     bsc::verify::explorer cell_ex{cell::finite::model(cell::chart)};
     cell_ex.run();
     sum += static_cast<int>(cell_ex.count() > 0);

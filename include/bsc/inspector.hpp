@@ -1,0 +1,374 @@
+#pragma once
+// bsc::inspector: a live view of a running machine in the browser. It serves the inspector's
+// page (web/inspector, docs/inspector.md) on 127.0.0.1 and the machine's trace stream to it,
+// and, when the program allows it, runs the page's commands on the machine:
+//
+//   std::array<std::byte, 1 << 16> storage;
+//   bsc::trace_buffer buffer{storage};
+//   bsc::machine m{chart, ctx{}, bsc::tracer{chart, buffer}};
+//   bsc::inspector view{m, buffer, {.port = 8080, .commands = true, .web_root = "web/inspector"}};
+//   for (;;) {
+//       view.poll(10ms);                  // serve the page, run its commands
+//       if (view.may_step()) m.step(now);  // a scan machine: paused and stepped from the page
+//   }
+//
+// Nothing runs behind the program's back: there is no thread; the page's commands run in
+// poll(), through the machine's own interface (dispatch_by_name; an input's set, latched at the
+// next step), so that the checks and the reentrancy rules hold. The server binds to the
+// loopback address only, refuses commands unless `commands` is set, and refuses a command from a
+// page of another origin.
+//
+// Opt-in and POSIX only: <bsc/bsc.hpp> does not include it.
+
+#include <charconv>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include <bsc/detail/inspector/http.hpp>
+#include <bsc/detail/members.hpp>
+#include <bsc/detail/recorded_members.hpp>
+#include <bsc/observers.hpp>
+#include <bsc/outcome.hpp>
+#include <bsc/trace.hpp>
+#include <bsc/trace_buffer.hpp>
+
+namespace bsc {
+
+/// How an inspector serves.
+struct inspector_options {
+    std::uint16_t port = 0;  ///< the port on 127.0.0.1; 0: one the system picks (port() tells)
+    bool commands = false;   ///< run the page's commands: dispatch, set, pause, resume, step
+    /// The program asks may_step() before each step, so that the page may pause it and step it
+    /// one step at a time (a scan loop).
+    bool stepping = false;
+    std::string web_root;  ///< the folder of the page's files (index.html, inspector.js, ...)
+    /// The trace bytes kept for a page that opens later; past it the oldest half is let go and
+    /// the dictionary written again.
+    std::size_t history_limit = std::size_t{64} << 20;
+    /// Called after each command the page sent, with the command and the answer it got (the
+    /// program's own log of what was done to it).
+    std::function<void(std::string_view command, std::string_view answer)> on_command;
+};
+
+namespace detail::inspector {
+
+// The tracer among a machine's observers: the observer itself, or the first tracer part of a
+// bsc::observers; a no_tracer when there is none (which the inspector refuses).
+struct no_tracer {
+    template <class Machine>
+    void write_dictionary(Machine const&) {}
+    template <class Machine>
+    void sample(Machine const&) {}
+};
+template <class T>
+inline constexpr bool is_tracer = false;
+template <class C>
+inline constexpr bool is_tracer<tracer<C>> = true;
+
+template <class O>
+auto* tracer_of(O& o) {
+    if constexpr (is_tracer<O>) {
+        return &o;
+    } else {
+        (void)o;
+        return static_cast<no_tracer*>(nullptr);
+    }
+}
+template <class... Parts>
+auto* tracer_of(observers<Parts...>& o) {
+    constexpr std::size_t first = [] {
+        constexpr bool tracers[] = {is_tracer<Parts>...};
+        std::size_t i = 0;
+        while (i < sizeof...(Parts) && !tracers[i]) ++i;
+        return i;
+    }();
+    if constexpr (first < sizeof...(Parts))
+        return &o.template get<first>();
+    else
+        return static_cast<no_tracer*>(nullptr);
+}
+
+// An output channel: the chart's own, never set from outside (its const set() is an error).
+template <class T>
+inline constexpr bool is_output = false;
+template <class V>
+inline constexpr bool is_output<output<V>> = true;
+
+// Finds the context member named `path` (dotted, as the trace names members) in a walk
+// (detail/members.hpp) and, if it is an input of a scalar type, sets it to the value `text`
+// reads as; `answer` is then empty, or says why not.
+struct input_setter {
+    static constexpr bool named = true;
+    std::string_view path;
+    std::string_view text;
+    recorded::dotted_path prefix;
+    std::string answer;
+    bool found = false;
+
+    std::string element_name(std::string_view name, std::size_t i) const {
+        return std::string{name} + "_" + std::to_string(i);
+    }
+    void enter(std::string_view name) { prefix.enter(name); }
+    void leave() { prefix.leave(); }
+    template <class T>
+    void leaf(T const& member, std::string_view name) {
+        if (found || prefix.of(name) != path) return;
+        found = true;
+        std::string const what{path};
+        if constexpr (is_channel<T>) {
+            using V = channel_value<T>;
+            if constexpr (is_output<T>) {
+                answer = what + " is an output: only inputs can be set";
+            } else if constexpr (!recorded::is_scalar_variable<V>) {
+                answer = what + " is not of a scalar type";
+            } else {
+                V value{};
+                if (read(text, value)) {
+                    member.set(value);
+                    answer.clear();
+                } else {
+                    answer = "'" + std::string{text} + "' is not a value of " + what;
+                }
+            }
+        } else {
+            (void)member;
+            answer = what + " is not an input channel: only inputs can be set";
+        }
+    }
+    template <class V>
+    static bool read(std::string_view t, V& value) {
+        if constexpr (std::is_same_v<V, bool>) {
+            bool const yes = t == "true" || t == "1";
+            bool const no = t == "false" || t == "0";
+            if (yes || no) value = yes;
+            return yes || no;
+        } else if constexpr (std::is_enum_v<V>) {
+            std::underlying_type_t<V> n{};
+            if (!read(t, n)) return false;
+            value = static_cast<V>(n);
+            return true;
+        } else {
+            auto const r = std::from_chars(t.data(), t.data() + t.size(), value);
+            return r.ec == std::errc{} && r.ptr == t.data() + t.size();
+        }
+    }
+};
+
+// Sets the input named `path` of `context` to `text`'s value: "" (done), or why not.
+template <class Context>
+std::string set_input(Context const& context, std::string_view path, std::string_view text) {
+    input_setter setter{path, text, {}, "no input is named '" + std::string{path} + "'", false};
+    if constexpr (reaches<input_setter, Context>()) walk(context, setter, std::string_view{});
+    return setter.answer;
+}
+
+}  // namespace detail::inspector
+
+/// Serves a live view of `Machine` to the browser; see the top of this header.
+/// Requirements: the machine's observer is a bsc::tracer writing into `buffer`, or a
+/// bsc::observers holding one; the machine and the buffer outlive the inspector.
+template <class Machine>
+class inspector {
+public:
+    /// Listens on 127.0.0.1:options.port; throws std::system_error if it cannot.
+    inspector(Machine& machine, trace_buffer& buffer, inspector_options options)
+        : machine_(machine), buffer_(buffer), options_(std::move(options)), server_(options_.port) {
+        static_assert(!std::is_same_v<decltype(tracer()), detail::inspector::no_tracer*>,
+                      "bsc::inspector: the machine's observer must be a bsc::tracer, or a bsc::observers holding one");
+    }
+
+    /// The port it listens on.
+    std::uint16_t port() const { return server_.port(); }
+    /// The page's address: "http://127.0.0.1:<port>/".
+    std::string url() const { return "http://127.0.0.1:" + std::to_string(port()) + "/"; }
+
+    /// Moves the trace into the history, then serves the requests that arrive within `wait`
+    /// (and runs their commands).
+    void poll(std::chrono::milliseconds wait = {}) {
+        collect();
+        server_.serve(wait, [this](detail::inspector::request const& r) { return answer(r); });
+        collect();
+    }
+
+    /// For a scan loop: whether to run the next step. Always true while not paused; while
+    /// paused, true once for each "step" command.
+    bool may_step() {
+        if (!paused_) return true;
+        if (steps_ == 0) return false;
+        --steps_;
+        return true;
+    }
+    /// Whether the page paused the machine.
+    bool paused() const { return paused_; }
+    /// The commands run so far.
+    std::uint64_t commands_run() const { return commands_; }
+    /// The trace bytes the page can read (from its start, less what the history let go).
+    std::size_t trace_end() const { return base_ + history_.size(); }
+
+private:
+    using response = detail::inspector::response;
+
+    void collect() {
+        std::byte chunk[4096];
+        while (std::size_t const n = buffer_.read(chunk)) history_.insert(history_.end(), chunk, chunk + n);
+        if (history_.size() > options_.history_limit) {
+            std::size_t const drop = history_.size() / 2;
+            history_.erase(history_.begin(), history_.begin() + static_cast<std::ptrdiff_t>(drop));
+            base_ += drop;
+            // A page that starts here reads frames only after a resynchronisation: the names again.
+            if (auto* t = tracer()) t->write_dictionary(machine_);
+        }
+    }
+
+    auto* tracer() { return detail::inspector::tracer_of(machine_.observer()); }
+
+    response answer(detail::inspector::request const& r) {
+        std::string_view target = r.target;
+        std::string_view query;
+        if (auto const q = target.find('?'); q != std::string_view::npos) {
+            query = target.substr(q + 1);
+            target = target.substr(0, q);
+        }
+        if (target == "/command") {
+            response done = command(r);
+            if (options_.on_command) options_.on_command(r.body, done.body);
+            return done;
+        }
+        if (r.method != "GET") return {405, "text/plain; charset=utf-8", "GET or POST /command only", {}};
+        if (target == "/info") return info();
+        if (target == "/trace") return trace(query);
+        return file(target == "/" ? std::string_view{"index.html"} : target.substr(1));
+    }
+
+    response info() const {
+        std::string body = "{\"chart\": \"";
+        for (char c : std::string_view{detail::state_names_of<model>[1]})
+            if (c != '"' && c != '\\' && static_cast<unsigned char>(c) >= ' ') body += c;
+        body += "\", \"commands\": " + std::string(options_.commands ? "true" : "false");
+        body += ", \"paused\": " + std::string(paused_ ? "true" : "false");
+        body += ", \"scan\": " + std::string(options_.stepping ? "true" : "false") + "}";
+        return {200, "application/json", body, {}};
+    }
+
+    response trace(std::string_view query) const {
+        std::size_t from = 0;
+        if (query.starts_with("from=")) {
+            auto const digits = query.substr(5);
+            std::from_chars(digits.data(), digits.data() + digits.size(), from);
+        }
+        std::size_t const start = from < base_ ? base_ : from;
+        std::size_t const end = trace_end();
+        response r{200, "application/octet-stream", {}, {}};
+        if (start < end) r.body.assign(reinterpret_cast<char const*>(history_.data()) + (start - base_), end - start);
+        r.headers = {{"X-Trace-Start", std::to_string(start)}, {"X-Trace-End", std::to_string(end)}};
+        return r;
+    }
+
+    response file(std::string_view name) const {
+        bool const plain = !name.empty() && name.front() != '.' &&
+                           name.find_first_not_of(
+                               "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") ==
+                               std::string_view::npos;
+        if (!plain || options_.web_root.empty()) return {404, "text/plain; charset=utf-8", "not found", {}};
+        std::ifstream in{options_.web_root + "/" + std::string{name}, std::ios::binary};
+        if (!in) return {404, "text/plain; charset=utf-8", "not found", {}};
+        std::string body{std::istreambuf_iterator<char>(in), {}};
+        std::string type = "application/octet-stream";
+        if (name.ends_with(".html")) type = "text/html; charset=utf-8";
+        if (name.ends_with(".js") || name.ends_with(".mjs")) type = "text/javascript; charset=utf-8";
+        if (name.ends_with(".css")) type = "text/css; charset=utf-8";
+        if (name.ends_with(".svg")) type = "image/svg+xml";
+        if (name.ends_with(".png")) type = "image/png";
+        if (name.ends_with(".json")) type = "application/json";
+        return {200, type, std::move(body), {}};
+    }
+
+    response command(detail::inspector::request const& r) {
+        auto const text = [](int status, std::string body) {
+            return response{status, "text/plain; charset=utf-8", std::move(body), {}};
+        };
+        if (r.method != "POST") return text(405, "POST a command");
+        if (!options_.commands) return text(403, "this program does not accept commands: the view is read-only");
+        std::string const own = "http://127.0.0.1:" + std::to_string(port());
+        std::string const own_name = "http://localhost:" + std::to_string(port());
+        if (!r.origin.empty() && r.origin != own && r.origin != own_name && r.origin != "null")
+            return text(403, "a command from another origin is refused");
+        std::string_view body = r.body;
+        while (!body.empty() && (body.back() == '\n' || body.back() == '\r' || body.back() == ' '))
+            body.remove_suffix(1);
+        auto const space = body.find(' ');
+        std::string_view const verb = body.substr(0, space);
+        std::string_view const rest = space == std::string_view::npos ? std::string_view{} : body.substr(space + 1);
+        ++commands_;
+        if (verb == "dispatch" && !rest.empty()) {
+            outcome const o = machine_.dispatch_by_name(rest);
+            sample();
+            if (o == outcome::unknown_event)
+                return text(400, "no event of this chart is named '" + std::string{rest} + "'");
+            return text(200, "ok " + std::string{rest} + ": " + outcome_text(o));
+        }
+        if (verb == "set" && !rest.empty()) {
+            auto const split = rest.find(' ');
+            if (split == std::string_view::npos) return text(400, "set <input> <value>");
+            std::string const why = detail::inspector::set_input(machine_.context(), rest.substr(0, split),
+                                                                 rest.substr(split + 1));
+            if (!why.empty()) return text(400, why);
+            return text(200, "ok " + std::string{rest.substr(0, split)} + " = " + std::string{rest.substr(split + 1)} +
+                                 (options_.stepping ? " (latched at the next step)" : ""));
+        }
+        if (!options_.stepping && (verb == "pause" || verb == "resume" || verb == "step"))
+            return text(409, "pause, resume and step are for a program that runs the machine in steps");
+        if (verb == "pause") return paused_ = true, text(200, "ok paused");
+        if (verb == "resume") return paused_ = false, steps_ = 0, text(200, "ok running");
+        if (verb == "step") {
+            if (!paused_) return text(409, "step while paused");
+            ++steps_;
+            return text(200, "ok one step");
+        }
+        --commands_;
+        return text(400, "commands: dispatch <event>, set <input> <value>, pause, resume, step");
+    }
+
+    void sample() {
+        if (auto* t = tracer()) t->sample(machine_);
+    }
+
+    static std::string outcome_text(outcome o) {
+        switch (o) {
+            case outcome::consumed: return "consumed";
+            case outcome::ignored: return "ignored";
+            case outcome::queue_overflow: return "queue overflow";
+            case outcome::livelock: return "livelock";
+            case outcome::halted: return "halted";
+            case outcome::reentrant: return "reentrant";
+            case outcome::failed: return "failed";
+            case outcome::unknown_event: return "unknown event";
+        }
+        return "?";
+    }
+
+    using model = detail::chart_model<std::remove_cv_t<typename Machine::chart_type>>;
+
+    Machine& machine_;
+    trace_buffer& buffer_;
+    inspector_options options_;
+    detail::inspector::server server_;
+    std::vector<std::byte> history_;
+    std::size_t base_ = 0;  // the offset in the whole trace of history_'s first byte
+    bool paused_ = false;
+    std::uint64_t steps_ = 0;
+    std::uint64_t commands_ = 0;
+};
+
+template <class Machine>
+inspector(Machine&, trace_buffer&, inspector_options) -> inspector<Machine>;
+
+}  // namespace bsc

@@ -1,0 +1,743 @@
+#pragma once
+// bsc::inspector - a live view in the browser, single-header distribution (needs bsc.hpp beside it; POSIX).
+// Generated from include/bsc/inspector.hpp by `python3 scripts/amalgamate.py`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+// begin include/bsc/inspector.hpp
+// bsc::inspector: a live view of a running machine in the browser. It serves the inspector's
+// page (web/inspector, docs/inspector.md) on 127.0.0.1 and the machine's trace stream to it,
+// and, when the program allows it, runs the page's commands on the machine:
+//
+//   std::array<std::byte, 1 << 16> storage;
+//   bsc::trace_buffer buffer{storage};
+//   bsc::machine m{chart, ctx{}, bsc::tracer{chart, buffer}};
+//   bsc::inspector view{m, buffer, {.port = 8080, .commands = true, .web_root = "web/inspector"}};
+//   for (;;) {
+//       view.poll(10ms);                  // serve the page, run its commands
+//       if (view.may_step()) m.step(now);  // a scan machine: paused and stepped from the page
+//   }
+//
+// Nothing runs behind the program's back: there is no thread; the page's commands run in
+// poll(), through the machine's own interface (dispatch_by_name; an input's set, latched at the
+// next step), so that the checks and the reentrancy rules hold. The server binds to the
+// loopback address only, refuses commands unless `commands` is set, and refuses a command from a
+// page of another origin.
+//
+// Opt-in and POSIX only: <bsc/bsc.hpp> does not include it.
+
+#include <charconv>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+// begin include/bsc/detail/inspector/http.hpp
+// The inspector's HTTP server: a listening socket on 127.0.0.1 and its clients, served one
+// request per connection, without threads: poll() is called from the program's own loop, so
+// that every command runs between two of the machine's steps (POSIX sockets; Linux).
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace bsc::detail::inspector {
+
+struct request {
+    std::string method;
+    std::string target;  // the path and the query
+    std::string origin;  // the Origin header, if any
+    std::string body;
+};
+
+struct response {
+    int status = 200;
+    std::string content_type = "text/plain; charset=utf-8";
+    std::string body;
+    std::vector<std::pair<std::string, std::string>> headers;
+};
+
+inline std::string_view reason(int status) {
+    switch (status) {
+        case 200: return "OK";
+        case 400: return "Bad Request";
+        case 403: return "Forbidden";
+        case 404: return "Not Found";
+        case 405: return "Method Not Allowed";
+        case 409: return "Conflict";
+        case 413: return "Payload Too Large";
+        default: return "Error";
+    }
+}
+
+inline std::string lowercase(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    return out;
+}
+
+// The request in `data` if it is whole: 1 (parsed into `r`), 0 (more bytes needed), -1 (not a
+// request this server reads, or larger than `limit`).
+inline int parse(std::string const& data, request& r, std::size_t limit) {
+    auto const end_of_headers = data.find("\r\n\r\n");
+    if (end_of_headers == std::string::npos) return data.size() > limit ? -1 : 0;
+    std::string_view const head{data.data(), end_of_headers};
+    auto const line_end = head.find("\r\n");
+    std::string_view const line = head.substr(0, line_end);
+    auto const first = line.find(' ');
+    auto const second = first == std::string_view::npos ? first : line.find(' ', first + 1);
+    if (second == std::string_view::npos) return -1;
+    r.method = std::string(line.substr(0, first));
+    r.target = std::string(line.substr(first + 1, second - first - 1));
+    std::size_t length = 0;
+    for (std::size_t at = line_end; at != std::string_view::npos && at < head.size();) {
+        auto const next = head.find("\r\n", at + 2);
+        std::string_view const header = head.substr(at + 2, next == std::string_view::npos ? next : next - at - 2);
+        auto const colon = header.find(':');
+        if (colon != std::string_view::npos) {
+            std::string const name = lowercase(header.substr(0, colon));
+            std::string_view value = header.substr(colon + 1);
+            while (!value.empty() && value.front() == ' ') value.remove_prefix(1);
+            if (name == "content-length") {
+                char* stop = nullptr;
+                std::string const digits(value);
+                auto const n = std::strtoull(digits.c_str(), &stop, 10);
+                if (digits.empty() || *stop != '\0' || n > limit) return -1;
+                length = static_cast<std::size_t>(n);
+            } else if (name == "origin") {
+                r.origin = std::string(value);
+            }
+        }
+        at = next;
+    }
+    std::size_t const body_start = end_of_headers + 4;
+    if (data.size() - body_start < length) return 0;
+    r.body = data.substr(body_start, length);
+    return 1;
+}
+
+inline std::string serialize(response const& r) {
+    std::string out = "HTTP/1.1 " + std::to_string(r.status) + " " + std::string(reason(r.status)) + "\r\n";
+    out += "Content-Type: " + r.content_type + "\r\n";
+    out += "Content-Length: " + std::to_string(r.body.size()) + "\r\n";
+    out += "Cache-Control: no-store\r\nConnection: close\r\n";
+    for (auto const& [name, value] : r.headers) out += name + ": " + value + "\r\n";
+    out += "\r\n";
+    out += r.body;
+    return out;
+}
+
+// A listening socket on 127.0.0.1 and the connections it accepted.
+class server {
+public:
+    static constexpr std::size_t request_limit = 64 * 1024;
+    static constexpr std::size_t max_clients = 32;
+
+    // Listens on 127.0.0.1:port (0: a port the system picks); throws std::system_error.
+    explicit server(std::uint16_t port) {
+        listener_ = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+        if (listener_ < 0) fail("socket");
+        int const yes = 1;
+        ::setsockopt(listener_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_port = htons(port);
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);  // loopback only, never another interface
+        if (::bind(listener_, reinterpret_cast<sockaddr const*>(&address), sizeof address) != 0) fail("bind");
+        if (::listen(listener_, 16) != 0) fail("listen");
+        socklen_t size = sizeof address;
+        if (::getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &size) != 0) fail("getsockname");
+        port_ = ntohs(address.sin_port);
+    }
+    ~server() {
+        for (auto const& c : clients_) ::close(c.fd);
+        if (listener_ >= 0) ::close(listener_);
+    }
+    server(server const&) = delete;
+    server& operator=(server const&) = delete;
+
+    std::uint16_t port() const { return port_; }
+
+    // Waits at most `wait` for something to do, then accepts, reads and writes what is ready:
+    // each whole request is answered by handle(request) -> response.
+    template <class Handler>
+    void serve(std::chrono::milliseconds wait, Handler&& handle) {
+        std::vector<pollfd> fds;
+        fds.push_back({listener_, POLLIN, 0});
+        for (auto const& c : clients_) fds.push_back({c.fd, static_cast<short>(c.out.empty() ? POLLIN : POLLOUT), 0});
+        int const ready = ::poll(fds.data(), fds.size(), static_cast<int>(wait.count()));
+        if (ready <= 0) return;
+        if (fds[0].revents & POLLIN) accept_all();
+        for (std::size_t i = 1; i < fds.size(); ++i) {
+            if (fds[i].revents == 0) continue;
+            client& c = clients_[i - 1];
+            if (c.out.empty())
+                receive(c, handle);
+            else
+                transmit(c);
+        }
+        std::erase_if(clients_, [](client const& c) {
+            if (c.closed) ::close(c.fd);
+            return c.closed;
+        });
+    }
+
+private:
+    struct client {
+        int fd = -1;
+        std::string in;
+        std::string out;
+        std::size_t sent = 0;
+        bool closed = false;
+    };
+
+    [[noreturn]] void fail(char const* what) {
+        int const error = errno;
+        if (listener_ >= 0) ::close(listener_);
+        listener_ = -1;
+        throw std::system_error(error, std::generic_category(), std::string("bsc::inspector: ") + what);
+    }
+
+    void accept_all() {
+        for (;;) {
+            int const fd = ::accept4(listener_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+            if (fd < 0) return;
+            if (clients_.size() >= max_clients) {
+                ::close(fd);
+                continue;
+            }
+            clients_.push_back({fd, {}, {}, 0, false});
+        }
+    }
+
+    template <class Handler>
+    void receive(client& c, Handler& handle) {
+        char buffer[4096];
+        ssize_t const n = ::recv(c.fd, buffer, sizeof buffer, 0);
+        if (n <= 0) {
+            if (n == 0 || (errno != EAGAIN && errno != EWOULDBLOCK)) c.closed = true;
+            return;
+        }
+        c.in.append(buffer, static_cast<std::size_t>(n));
+        request r;
+        int const parsed = parse(c.in, r, request_limit);
+        if (parsed == 0) return;
+        response const answer = parsed < 0 ? response{413, "text/plain; charset=utf-8", "request not understood", {}}
+                                           : handle(r);
+        c.out = serialize(answer);
+        transmit(c);
+    }
+
+    void transmit(client& c) {
+        while (c.sent < c.out.size()) {
+            ssize_t const n = ::send(c.fd, c.out.data() + c.sent, c.out.size() - c.sent, MSG_NOSIGNAL);
+            if (n < 0) {
+                if (errno != EAGAIN && errno != EWOULDBLOCK) c.closed = true;
+                return;
+            }
+            c.sent += static_cast<std::size_t>(n);
+        }
+        c.closed = true;  // one request per connection
+    }
+
+    int listener_ = -1;
+    std::uint16_t port_ = 0;
+    std::vector<client> clients_;
+};
+
+}  // namespace bsc::detail::inspector
+// end include/bsc/detail/inspector/http.hpp
+// begin include/bsc/detail/recorded_members.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
+// The members a recorder shows (the waveform, the trace stream): the channels of a scalar type,
+// the timers and the plain scalar variables of a context, walked by the member layer
+// (detail/members.hpp) with their names, each leaf given as a kind, a width and a value.
+
+#include <bit>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+
+namespace bsc::detail::recorded {
+
+// integer: a signed integral type; reg: an unsigned one, an enum or a bool wider than a wire.
+enum class var_kind : std::uint8_t { wire, integer, reg, real, string };
+
+// One variable's value: the bits of a wire or integer, a real, or a string's text (a state's
+// name, which lives as long as the program).
+struct value {
+    std::uint64_t bits = 0;
+    double real = 0;
+    std::string_view text;
+    friend bool operator==(value const& a, value const& b) {
+        // Reals compare by representation, so that a NaN equals itself and is written once.
+        return a.bits == b.bits && std::bit_cast<std::uint64_t>(a.real) == std::bit_cast<std::uint64_t>(b.real) &&
+               a.text == b.text;
+    }
+};
+
+template <class T>
+constexpr bool is_scalar_variable = std::is_arithmetic_v<T> || std::is_enum_v<T>;
+
+template <class T>
+value scalar_value(T v) {
+    value out;
+    if constexpr (std::is_floating_point_v<T>) {
+        out.real = static_cast<double>(v);
+    } else if constexpr (std::is_enum_v<T>) {
+        out.bits = static_cast<std::uint64_t>(
+            static_cast<std::make_unsigned_t<std::underlying_type_t<T>>>(static_cast<std::underlying_type_t<T>>(v)));
+    } else if constexpr (std::is_same_v<T, bool>) {
+        out.bits = v ? 1 : 0;
+    } else {
+        out.bits = static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<T>>(v));
+    }
+    return out;
+}
+
+template <class T>
+constexpr var_kind var_kind_of() {
+    if constexpr (std::is_same_v<T, bool>)
+        return var_kind::wire;
+    else if constexpr (std::is_floating_point_v<T>)
+        return var_kind::real;
+    else if constexpr (std::is_integral_v<T> && std::is_signed_v<T>)
+        return var_kind::integer;
+    else
+        return var_kind::reg;
+}
+
+template <class T>
+constexpr unsigned width_of() {
+    if constexpr (std::is_same_v<T, bool>)
+        return 1;
+    else if constexpr (std::is_floating_point_v<T>)
+        return 64;
+    else
+        return 8 * sizeof(T);
+}
+
+// What the recorder shows: a channel of a scalar type, a timer, a plain scalar variable, found
+// by the member layer (detail/members.hpp) as the machine finds its channels.
+template <class T>
+constexpr bool is_recorded() {
+    if constexpr (is_channel<T>)
+        return is_scalar_variable<channel_value<T>>;
+    else
+        return is_timer<T> || is_scalar_variable<T>;
+}
+
+// Walks a context's recorded members, calling the visitor's scope(name), upscope() and
+// var(kind, width, name, value), in declaration order: a struct is a scope, a timer a scope of
+// three variables, an array's elements are name_0, name_1, ...
+template <class Visitor>
+struct recorded_members {
+    static constexpr bool named = true;
+    template <class T>
+    static constexpr bool visits = is_recorded<T>();
+    Visitor& v;
+    std::string element_name(std::string_view name, std::size_t i) const {
+        return std::string{name} + "_" + std::to_string(i);
+    }
+    void enter(std::string_view name) { v.scope(name); }
+    void leave() { v.upscope(); }
+    template <class T>
+    void leaf(T const& member, std::string_view name) {
+        if constexpr (is_channel<T>) {
+            using V = channel_value<T>;
+            v.var(var_kind_of<V>(), width_of<V>(), name, scalar_value(member.get()));
+        } else if constexpr (is_timer<T>) {
+            v.scope(name);
+            v.var(var_kind::wire, 1, "running", scalar_value(member.running()));
+            v.var(var_kind::wire, 1, "expired", scalar_value(member.expired()));
+            v.var(var_kind::integer, 64, "elapsed", scalar_value(static_cast<std::int64_t>(member.elapsed().count())));
+            v.upscope();
+        } else {
+            v.var(var_kind_of<T>(), width_of<T>(), name, scalar_value(member));
+        }
+    }
+};
+
+// The dotted name of a member during a walk: "axis.position", "dwell.running". Each scope
+// entered is left again in order, an unnamed one (the walk's root) too.
+class dotted_path {
+public:
+    void enter(std::string_view name) {
+        starts_.push_back(text_.size());
+        if (!name.empty()) text_.append(name).push_back('.');
+    }
+    void leave() {
+        if (starts_.empty()) return;
+        text_.resize(starts_.back());
+        starts_.pop_back();
+    }
+    /// The full name of the member `name` in the present scope.
+    std::string of(std::string_view name) const { return text_ + std::string{name}; }
+
+private:
+    std::string text_;
+    std::vector<std::size_t> starts_;  // text_'s length before each scope entered
+};
+
+}  // namespace bsc::detail::recorded
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
+// end include/bsc/detail/recorded_members.hpp
+#include "observers.hpp"
+#include "trace.hpp"
+
+namespace bsc {
+
+/// How an inspector serves.
+struct inspector_options {
+    std::uint16_t port = 0;  ///< the port on 127.0.0.1; 0: one the system picks (port() tells)
+    bool commands = false;   ///< run the page's commands: dispatch, set, pause, resume, step
+    /// The program asks may_step() before each step, so that the page may pause it and step it
+    /// one step at a time (a scan loop).
+    bool stepping = false;
+    std::string web_root;  ///< the folder of the page's files (index.html, inspector.js, ...)
+    /// The trace bytes kept for a page that opens later; past it the oldest half is let go and
+    /// the dictionary written again.
+    std::size_t history_limit = std::size_t{64} << 20;
+    /// Called after each command the page sent, with the command and the answer it got (the
+    /// program's own log of what was done to it).
+    std::function<void(std::string_view command, std::string_view answer)> on_command;
+};
+
+namespace detail::inspector {
+
+// The tracer among a machine's observers: the observer itself, or the first tracer part of a
+// bsc::observers; a no_tracer when there is none (which the inspector refuses).
+struct no_tracer {
+    template <class Machine>
+    void write_dictionary(Machine const&) {}
+    template <class Machine>
+    void sample(Machine const&) {}
+};
+template <class T>
+inline constexpr bool is_tracer = false;
+template <class C>
+inline constexpr bool is_tracer<tracer<C>> = true;
+
+template <class O>
+auto* tracer_of(O& o) {
+    if constexpr (is_tracer<O>) {
+        return &o;
+    } else {
+        (void)o;
+        return static_cast<no_tracer*>(nullptr);
+    }
+}
+template <class... Parts>
+auto* tracer_of(observers<Parts...>& o) {
+    constexpr std::size_t first = [] {
+        constexpr bool tracers[] = {is_tracer<Parts>...};
+        std::size_t i = 0;
+        while (i < sizeof...(Parts) && !tracers[i]) ++i;
+        return i;
+    }();
+    if constexpr (first < sizeof...(Parts))
+        return &o.template get<first>();
+    else
+        return static_cast<no_tracer*>(nullptr);
+}
+
+// An output channel: the chart's own, never set from outside (its const set() is an error).
+template <class T>
+inline constexpr bool is_output = false;
+template <class V>
+inline constexpr bool is_output<output<V>> = true;
+
+// Finds the context member named `path` (dotted, as the trace names members) in a walk
+// (detail/members.hpp) and, if it is an input of a scalar type, sets it to the value `text`
+// reads as; `answer` is then empty, or says why not.
+struct input_setter {
+    static constexpr bool named = true;
+    std::string_view path;
+    std::string_view text;
+    recorded::dotted_path prefix;
+    std::string answer;
+    bool found = false;
+
+    std::string element_name(std::string_view name, std::size_t i) const {
+        return std::string{name} + "_" + std::to_string(i);
+    }
+    void enter(std::string_view name) { prefix.enter(name); }
+    void leave() { prefix.leave(); }
+    template <class T>
+    void leaf(T const& member, std::string_view name) {
+        if (found || prefix.of(name) != path) return;
+        found = true;
+        std::string const what{path};
+        if constexpr (is_channel<T>) {
+            using V = channel_value<T>;
+            if constexpr (is_output<T>) {
+                answer = what + " is an output: only inputs can be set";
+            } else if constexpr (!recorded::is_scalar_variable<V>) {
+                answer = what + " is not of a scalar type";
+            } else {
+                V value{};
+                if (read(text, value)) {
+                    member.set(value);
+                    answer.clear();
+                } else {
+                    answer = "'" + std::string{text} + "' is not a value of " + what;
+                }
+            }
+        } else {
+            (void)member;
+            answer = what + " is not an input channel: only inputs can be set";
+        }
+    }
+    template <class V>
+    static bool read(std::string_view t, V& value) {
+        if constexpr (std::is_same_v<V, bool>) {
+            bool const yes = t == "true" || t == "1";
+            bool const no = t == "false" || t == "0";
+            if (yes || no) value = yes;
+            return yes || no;
+        } else if constexpr (std::is_enum_v<V>) {
+            std::underlying_type_t<V> n{};
+            if (!read(t, n)) return false;
+            value = static_cast<V>(n);
+            return true;
+        } else {
+            auto const r = std::from_chars(t.data(), t.data() + t.size(), value);
+            return r.ec == std::errc{} && r.ptr == t.data() + t.size();
+        }
+    }
+};
+
+// Sets the input named `path` of `context` to `text`'s value: "" (done), or why not.
+template <class Context>
+std::string set_input(Context const& context, std::string_view path, std::string_view text) {
+    input_setter setter{path, text, {}, "no input is named '" + std::string{path} + "'", false};
+    if constexpr (reaches<input_setter, Context>()) walk(context, setter, std::string_view{});
+    return setter.answer;
+}
+
+}  // namespace detail::inspector
+
+/// Serves a live view of `Machine` to the browser; see the top of this header.
+/// Requirements: the machine's observer is a bsc::tracer writing into `buffer`, or a
+/// bsc::observers holding one; the machine and the buffer outlive the inspector.
+template <class Machine>
+class inspector {
+public:
+    /// Listens on 127.0.0.1:options.port; throws std::system_error if it cannot.
+    inspector(Machine& machine, trace_buffer& buffer, inspector_options options)
+        : machine_(machine), buffer_(buffer), options_(std::move(options)), server_(options_.port) {
+        static_assert(!std::is_same_v<decltype(tracer()), detail::inspector::no_tracer*>,
+                      "bsc::inspector: the machine's observer must be a bsc::tracer, or a bsc::observers holding one");
+    }
+
+    /// The port it listens on.
+    std::uint16_t port() const { return server_.port(); }
+    /// The page's address: "http://127.0.0.1:<port>/".
+    std::string url() const { return "http://127.0.0.1:" + std::to_string(port()) + "/"; }
+
+    /// Moves the trace into the history, then serves the requests that arrive within `wait`
+    /// (and runs their commands).
+    void poll(std::chrono::milliseconds wait = {}) {
+        collect();
+        server_.serve(wait, [this](detail::inspector::request const& r) { return answer(r); });
+        collect();
+    }
+
+    /// For a scan loop: whether to run the next step. Always true while not paused; while
+    /// paused, true once for each "step" command.
+    bool may_step() {
+        if (!paused_) return true;
+        if (steps_ == 0) return false;
+        --steps_;
+        return true;
+    }
+    /// Whether the page paused the machine.
+    bool paused() const { return paused_; }
+    /// The commands run so far.
+    std::uint64_t commands_run() const { return commands_; }
+    /// The trace bytes the page can read (from its start, less what the history let go).
+    std::size_t trace_end() const { return base_ + history_.size(); }
+
+private:
+    using response = detail::inspector::response;
+
+    void collect() {
+        std::byte chunk[4096];
+        while (std::size_t const n = buffer_.read(chunk)) history_.insert(history_.end(), chunk, chunk + n);
+        if (history_.size() > options_.history_limit) {
+            std::size_t const drop = history_.size() / 2;
+            history_.erase(history_.begin(), history_.begin() + static_cast<std::ptrdiff_t>(drop));
+            base_ += drop;
+            // A page that starts here reads frames only after a resynchronisation: the names again.
+            if (auto* t = tracer()) t->write_dictionary(machine_);
+        }
+    }
+
+    auto* tracer() { return detail::inspector::tracer_of(machine_.observer()); }
+
+    response answer(detail::inspector::request const& r) {
+        std::string_view target = r.target;
+        std::string_view query;
+        if (auto const q = target.find('?'); q != std::string_view::npos) {
+            query = target.substr(q + 1);
+            target = target.substr(0, q);
+        }
+        if (target == "/command") {
+            response done = command(r);
+            if (options_.on_command) options_.on_command(r.body, done.body);
+            return done;
+        }
+        if (r.method != "GET") return {405, "text/plain; charset=utf-8", "GET or POST /command only", {}};
+        if (target == "/info") return info();
+        if (target == "/trace") return trace(query);
+        return file(target == "/" ? std::string_view{"index.html"} : target.substr(1));
+    }
+
+    response info() const {
+        std::string body = "{\"chart\": \"";
+        for (char c : std::string_view{detail::state_names_of<model>[1]})
+            if (c != '"' && c != '\\' && static_cast<unsigned char>(c) >= ' ') body += c;
+        body += "\", \"commands\": " + std::string(options_.commands ? "true" : "false");
+        body += ", \"paused\": " + std::string(paused_ ? "true" : "false");
+        body += ", \"scan\": " + std::string(options_.stepping ? "true" : "false") + "}";
+        return {200, "application/json", body, {}};
+    }
+
+    response trace(std::string_view query) const {
+        std::size_t from = 0;
+        if (query.starts_with("from=")) {
+            auto const digits = query.substr(5);
+            std::from_chars(digits.data(), digits.data() + digits.size(), from);
+        }
+        std::size_t const start = from < base_ ? base_ : from;
+        std::size_t const end = trace_end();
+        response r{200, "application/octet-stream", {}, {}};
+        if (start < end) r.body.assign(reinterpret_cast<char const*>(history_.data()) + (start - base_), end - start);
+        r.headers = {{"X-Trace-Start", std::to_string(start)}, {"X-Trace-End", std::to_string(end)}};
+        return r;
+    }
+
+    response file(std::string_view name) const {
+        bool const plain = !name.empty() && name.front() != '.' &&
+                           name.find_first_not_of(
+                               "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") ==
+                               std::string_view::npos;
+        if (!plain || options_.web_root.empty()) return {404, "text/plain; charset=utf-8", "not found", {}};
+        std::ifstream in{options_.web_root + "/" + std::string{name}, std::ios::binary};
+        if (!in) return {404, "text/plain; charset=utf-8", "not found", {}};
+        std::string body{std::istreambuf_iterator<char>(in), {}};
+        std::string type = "application/octet-stream";
+        if (name.ends_with(".html")) type = "text/html; charset=utf-8";
+        if (name.ends_with(".js") || name.ends_with(".mjs")) type = "text/javascript; charset=utf-8";
+        if (name.ends_with(".css")) type = "text/css; charset=utf-8";
+        if (name.ends_with(".svg")) type = "image/svg+xml";
+        if (name.ends_with(".png")) type = "image/png";
+        if (name.ends_with(".json")) type = "application/json";
+        return {200, type, std::move(body), {}};
+    }
+
+    response command(detail::inspector::request const& r) {
+        auto const text = [](int status, std::string body) {
+            return response{status, "text/plain; charset=utf-8", std::move(body), {}};
+        };
+        if (r.method != "POST") return text(405, "POST a command");
+        if (!options_.commands) return text(403, "this program does not accept commands: the view is read-only");
+        std::string const own = "http://127.0.0.1:" + std::to_string(port());
+        std::string const own_name = "http://localhost:" + std::to_string(port());
+        if (!r.origin.empty() && r.origin != own && r.origin != own_name && r.origin != "null")
+            return text(403, "a command from another origin is refused");
+        std::string_view body = r.body;
+        while (!body.empty() && (body.back() == '\n' || body.back() == '\r' || body.back() == ' '))
+            body.remove_suffix(1);
+        auto const space = body.find(' ');
+        std::string_view const verb = body.substr(0, space);
+        std::string_view const rest = space == std::string_view::npos ? std::string_view{} : body.substr(space + 1);
+        ++commands_;
+        if (verb == "dispatch" && !rest.empty()) {
+            outcome const o = machine_.dispatch_by_name(rest);
+            sample();
+            if (o == outcome::unknown_event)
+                return text(400, "no event of this chart is named '" + std::string{rest} + "'");
+            return text(200, "ok " + std::string{rest} + ": " + outcome_text(o));
+        }
+        if (verb == "set" && !rest.empty()) {
+            auto const split = rest.find(' ');
+            if (split == std::string_view::npos) return text(400, "set <input> <value>");
+            std::string const why = detail::inspector::set_input(machine_.context(), rest.substr(0, split),
+                                                                 rest.substr(split + 1));
+            if (!why.empty()) return text(400, why);
+            return text(200, "ok " + std::string{rest.substr(0, split)} + " = " + std::string{rest.substr(split + 1)} +
+                                 (options_.stepping ? " (latched at the next step)" : ""));
+        }
+        if (!options_.stepping && (verb == "pause" || verb == "resume" || verb == "step"))
+            return text(409, "pause, resume and step are for a program that runs the machine in steps");
+        if (verb == "pause") return paused_ = true, text(200, "ok paused");
+        if (verb == "resume") return paused_ = false, steps_ = 0, text(200, "ok running");
+        if (verb == "step") {
+            if (!paused_) return text(409, "step while paused");
+            ++steps_;
+            return text(200, "ok one step");
+        }
+        --commands_;
+        return text(400, "commands: dispatch <event>, set <input> <value>, pause, resume, step");
+    }
+
+    void sample() {
+        if (auto* t = tracer()) t->sample(machine_);
+    }
+
+    static std::string outcome_text(outcome o) {
+        switch (o) {
+            case outcome::consumed: return "consumed";
+            case outcome::ignored: return "ignored";
+            case outcome::queue_overflow: return "queue overflow";
+            case outcome::livelock: return "livelock";
+            case outcome::halted: return "halted";
+            case outcome::reentrant: return "reentrant";
+            case outcome::failed: return "failed";
+            case outcome::unknown_event: return "unknown event";
+        }
+        return "?";
+    }
+
+    using model = detail::chart_model<std::remove_cv_t<typename Machine::chart_type>>;
+
+    Machine& machine_;
+    trace_buffer& buffer_;
+    inspector_options options_;
+    detail::inspector::server server_;
+    std::vector<std::byte> history_;
+    std::size_t base_ = 0;  // the offset in the whole trace of history_'s first byte
+    bool paused_ = false;
+    std::uint64_t steps_ = 0;
+    std::uint64_t commands_ = 0;
+};
+
+template <class Machine>
+inspector(Machine&, trace_buffer&, inspector_options) -> inspector<Machine>;
+
+}  // namespace bsc
+// end include/bsc/inspector.hpp

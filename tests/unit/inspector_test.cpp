@@ -1,0 +1,219 @@
+// bsc::inspector (<bsc/inspector.hpp>) asked over a real loopback socket, in one thread: the
+// client sends its request, the inspector's poll() answers it. Its trace, its commands (an
+// input set and latched at the next step, an output refused, a pause and single steps), a
+// read-only view, a page of another origin, and a history that lets its oldest half go and
+// writes the dictionary again.
+
+#include <doctest/doctest.h>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <bsc/bsc.hpp>
+#include <bsc/inspector.hpp>
+#include <bsc/observers.hpp>
+#include <bsc/trace.hpp>
+#include <bsc/trace_reader.hpp>
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace inspector_test {
+
+using namespace std::chrono_literals;
+
+struct Root;
+struct Idle;
+struct Busy;
+struct stop {};
+struct io {
+    bsc::input<bool> start;
+    bsc::output<int> count{0};
+    int steps = 0;
+};
+
+inline constexpr auto chart = bsc::make_chart<io>(
+    bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+    bsc::state<Idle>[([](io const& c) { return c.start.get(); })] /
+        [](io& c) { c.count.set(c.count.pending() + 1); } = bsc::state<Busy>,
+    bsc::state<Busy> + bsc::event<stop> = bsc::state<Idle>);
+
+using tracer = bsc::tracer<decltype(chart)>;
+using machine = bsc::machine<decltype(chart), bsc::scan_policy, tracer>;
+
+struct answer {
+    int status = 0;
+    std::string headers;
+    std::string body;
+};
+
+// Sends one request to the inspector on 127.0.0.1:port and polls it until the answer is whole
+// (it closes the connection after each).
+template <class Inspector>
+answer ask(Inspector& view, std::string_view method, std::string_view target, std::string_view body = {},
+           std::string_view origin = {}) {
+    int const fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    REQUIRE(fd >= 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(view.port());
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    REQUIRE(::connect(fd, reinterpret_cast<sockaddr const*>(&address), sizeof address) == 0);
+    std::string request = std::string{method} + " " + std::string{target} + " HTTP/1.1\r\nHost: 127.0.0.1\r\n";
+    if (!origin.empty()) request += "Origin: " + std::string{origin} + "\r\n";
+    request += "Content-Length: " + std::to_string(body.size()) + "\r\n\r\n" + std::string{body};
+    REQUIRE(::send(fd, request.data(), request.size(), 0) == static_cast<ssize_t>(request.size()));
+    std::string reply;
+    for (int round = 0; round < 200; ++round) {
+        view.poll(5ms);
+        char chunk[4096];
+        ssize_t const n = ::recv(fd, chunk, sizeof chunk, MSG_DONTWAIT);
+        if (n == 0) break;
+        if (n > 0) reply.append(chunk, static_cast<std::size_t>(n));
+    }
+    ::close(fd);
+    answer a;
+    auto const end = reply.find("\r\n\r\n");
+    REQUIRE(end != std::string::npos);
+    a.status = std::stoi(reply.substr(9, 3));
+    a.headers = reply.substr(0, end);
+    a.body = reply.substr(end + 4);
+    return a;
+}
+
+std::string header(answer const& a, std::string_view name) {
+    auto const at = a.headers.find(std::string{name} + ": ");
+    if (at == std::string::npos) return {};
+    auto const end = a.headers.find("\r\n", at);
+    return a.headers.substr(at + name.size() + 2,
+                            end == std::string::npos ? std::string::npos : end - at - name.size() - 2);
+}
+
+}  // namespace inspector_test
+
+TEST_CASE("the inspector serves the trace and runs a stepping program's commands through the machine") {
+    using namespace inspector_test;
+    std::array<std::byte, 1 << 14> storage{};
+    bsc::trace_buffer buffer{storage};
+    machine m{chart, io{}, tracer{chart, buffer}};
+    std::string log;
+    bsc::inspector_options options;
+    options.commands = true;
+    options.stepping = true;
+    options.on_command = [&](std::string_view command, std::string_view reply) {
+        log.append(command).append(" -> ").append(reply).append("\n");
+    };
+    bsc::inspector view{m, buffer, options};
+    CHECK(view.port() != 0);
+    CHECK(view.url() == "http://127.0.0.1:" + std::to_string(view.port()) + "/");
+    m.step(0ms);
+
+    auto const info = ask(view, "GET", "/info");
+    CHECK(info.status == 200);
+    CHECK(info.body == R"({"chart": "Root", "commands": true, "paused": false, "scan": true})");
+
+    auto const trace = ask(view, "GET", "/trace?from=0");
+    CHECK(trace.status == 200);
+    CHECK(header(trace, "X-Trace-Start") == "0");
+    CHECK(header(trace, "X-Trace-End") == std::to_string(trace.body.size()));
+    bsc::trace_reader reader;
+    reader.feed(std::as_bytes(std::span{trace.body}));
+    int cycles = 0;
+    while (auto r = reader.next()) cycles += r->type == bsc::trace_record_type::cycle;
+    CHECK(reader.dictionary().chart == "Root");
+    CHECK(reader.dictionary().states.size() == 4);
+    CHECK(cycles == 1);
+
+    // An input is set through the machine's interface: latched at the next step.
+    auto const set = ask(view, "POST", "/command", "set start true");
+    CHECK(set.status == 200);
+    CHECK(set.body == "ok start = true (latched at the next step)");
+    CHECK(m.is<Idle>());
+    m.step(100ms);
+    CHECK(m.is<Busy>());
+    CHECK(m.context().count.get() == 1);
+    CHECK(ask(view, "POST", "/command", "set count 5").body == "count is an output: only inputs can be set");
+    CHECK(ask(view, "POST", "/command", "set start maybe").body == "'maybe' is not a value of start");
+    CHECK(ask(view, "POST", "/command", "set steps 2").body == "steps is not an input channel: only inputs can be set");
+    CHECK(ask(view, "POST", "/command", "set nothing 1").body == "no input is named 'nothing'");
+
+    // Pause, single steps, resume.
+    CHECK(view.may_step());
+    CHECK(ask(view, "POST", "/command", "pause").body == "ok paused");
+    CHECK(view.paused());
+    CHECK_FALSE(view.may_step());
+    CHECK(ask(view, "POST", "/command", "step").body == "ok one step");
+    CHECK(ask(view, "POST", "/command", "step").body == "ok one step");
+    CHECK(view.may_step());
+    CHECK(view.may_step());
+    CHECK_FALSE(view.may_step());
+    CHECK(ask(view, "GET", "/info").body.find(R"("paused": true)") != std::string::npos);
+    CHECK(ask(view, "POST", "/command", "resume").body == "ok running");
+    CHECK(view.may_step());
+
+    // An event by name; an unknown one; a command from another origin.
+    auto const dispatched = ask(view, "POST", "/command", "dispatch stop");
+    CHECK(dispatched.body == "ok stop: consumed");
+    CHECK(m.is<Idle>());
+    CHECK(ask(view, "POST", "/command", "dispatch go").status == 400);
+    auto const foreign = ask(view, "POST", "/command", "dispatch stop", "http://example.com");
+    CHECK(foreign.status == 403);
+    CHECK(ask(view, "POST", "/command", "dance").status == 400);
+    CHECK(ask(view, "GET", "/command").status == 405);
+    CHECK(view.commands_run() == 11);  // not those refused before they ran: another origin, unknown, GET
+    CHECK(log.find("set start true -> ok start = true (latched at the next step)\n") == 0);
+
+    // The trace from where the page stopped reading: the dispatch and the transition it made.
+    auto const more = ask(view, "GET", "/trace?from=" + header(trace, "X-Trace-End"));
+    reader.feed(std::as_bytes(std::span{more.body}));
+    std::string lines;
+    while (auto r = reader.next()) lines += reader.describe(*r) + "\n";
+    CHECK(lines.find("[100ms] dispatch stop\n[100ms] exit Busy\n[100ms] transition Busy -> Idle on stop (row 1)\n") !=
+          std::string::npos);
+    CHECK(reader.missing() == 0);
+
+    // No files without a web root; nothing outside it.
+    CHECK(ask(view, "GET", "/").status == 404);
+    CHECK(ask(view, "GET", "/../secret").status == 404);
+}
+
+TEST_CASE("a read-only inspector refuses commands; a long run's history lets its oldest half go") {
+    using namespace inspector_test;
+    std::array<std::byte, 1 << 12> storage{};
+    bsc::trace_buffer buffer{storage};
+    bsc::machine m{chart, io{}, bsc::observers{tracer{chart, buffer}}};
+    bsc::inspector_options options;
+    options.history_limit = 2000;
+    bsc::inspector view{m, buffer, options};
+    auto const refused = ask(view, "POST", "/command", "dispatch stop");
+    CHECK(refused.status == 403);
+    CHECK(refused.body == "this program does not accept commands: the view is read-only");
+    CHECK(m.is<Idle>());
+    CHECK(view.commands_run() == 0);
+
+    for (int i = 0; i < 200; ++i) {
+        m.step(i * 100ms);
+        view.poll();
+    }
+    CHECK(buffer.dropped() == 0);
+    auto const trace = ask(view, "GET", "/trace?from=0");
+    std::size_t const start = std::stoul(header(trace, "X-Trace-Start"));
+    CHECK(start > 0);
+    CHECK(start + trace.body.size() == std::stoul(header(trace, "X-Trace-End")));
+    CHECK(trace.body.size() <= 2000 + 1000);
+    // A page that opens now resynchronises and learns the names again.
+    bsc::trace_reader reader;
+    reader.feed(std::as_bytes(std::span{trace.body}));
+    std::string configuration;
+    while (auto r = reader.next())
+        if (r->type == bsc::trace_record_type::configuration) configuration = reader.describe(*r);
+    CHECK(reader.dictionary().chart == "Root");
+    CHECK(reader.dictionary().states.size() == 4);
+    CHECK(configuration.ends_with("] configuration Root Idle"));
+}
