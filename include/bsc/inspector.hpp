@@ -50,8 +50,8 @@ struct inspector_options {
     /// one step at a time (a scan loop).
     bool stepping = false;
     std::string web_root;  ///< the folder of the page's files (index.html, inspector.js, ...)
-    /// The trace bytes kept for a page that opens later; past it the oldest half is let go and
-    /// the dictionary written again.
+    /// The trace bytes kept for a page that opens later; past it the history starts again with
+    /// the dictionary and the configuration written anew.
     std::size_t history_limit = std::size_t{64} << 20;
     /// Called after each command the page sent, with the command and the answer it got (the
     /// program's own log of what was done to it).
@@ -151,10 +151,16 @@ struct input_setter {
             if (yes || no) value = yes;
             return yes || no;
         } else if constexpr (std::is_enum_v<V>) {
-            std::underlying_type_t<V> n{};
-            if (!read(t, n)) return false;
-            value = static_cast<V>(n);
-            return true;
+            // Only an enum with a fixed underlying type takes any of its values: list
+            // initialisation from an integer compiles for exactly those.
+            if constexpr (requires(std::underlying_type_t<V> u) { V{u}; }) {
+                std::underlying_type_t<V> n{};
+                if (!read(t, n)) return false;
+                value = V{n};
+                return true;
+            } else {
+                return false;
+            }
         } else {
             auto const r = std::from_chars(t.data(), t.data() + t.size(), value);
             return r.ec == std::errc{} && r.ptr == t.data() + t.size();
@@ -217,20 +223,28 @@ private:
     using response = detail::inspector::response;
 
     void collect() {
+        drain();
+        if (history_.size() > options_.history_limit) {
+            // The history starts again at a dictionary and the configuration written now, so
+            // that a page that opens later begins with every name and where the machine stands.
+            base_ += history_.size();
+            history_.clear();
+            tracer()->write_dictionary(machine_);
+            drain();
+        }
+    }
+    void drain() {
         std::byte chunk[4096];
         while (std::size_t const n = buffer_.read(chunk)) history_.insert(history_.end(), chunk, chunk + n);
-        if (history_.size() > options_.history_limit) {
-            std::size_t const drop = history_.size() / 2;
-            history_.erase(history_.begin(), history_.begin() + static_cast<std::ptrdiff_t>(drop));
-            base_ += drop;
-            // A page that starts here reads frames only after a resynchronisation: the names again.
-            if (auto* t = tracer()) t->write_dictionary(machine_);
-        }
     }
 
     auto* tracer() { return detail::inspector::tracer_of(machine_.observer()); }
 
     response answer(detail::inspector::request const& r) {
+        // A page of another site that a rebinding of its name sends here reads nothing either.
+        std::string const port_text = ":" + std::to_string(port());
+        if (r.host != "127.0.0.1" + port_text && r.host != "localhost" + port_text)
+            return {421, "text/plain; charset=utf-8", "this server answers for 127.0.0.1" + port_text + " only", {}};
         std::string_view target = r.target;
         std::string_view query;
         if (auto const q = target.find('?'); q != std::string_view::npos) {
@@ -265,7 +279,7 @@ private:
             std::from_chars(digits.data(), digits.data() + digits.size(), from);
         }
         std::size_t const start = from < base_ ? base_ : from;
-        std::size_t const end = trace_end();
+        std::size_t const end = trace_end() - start > max_answer ? start + max_answer : trace_end();
         response r{200, "application/octet-stream", {}, {}};
         if (start < end) r.body.assign(reinterpret_cast<char const*>(history_.data()) + (start - base_), end - start);
         r.headers = {{"X-Trace-Start", std::to_string(start)}, {"X-Trace-End", std::to_string(end)}};
@@ -297,9 +311,11 @@ private:
         };
         if (r.method != "POST") return text(405, "POST a command");
         if (!options_.commands) return text(403, "this program does not accept commands: the view is read-only");
+        // Only the page's own script sends the custom header: a browser asks this server before
+        // another site's page may send it, and this server never says yes.
         std::string const own = "http://127.0.0.1:" + std::to_string(port());
         std::string const own_name = "http://localhost:" + std::to_string(port());
-        if (!r.origin.empty() && r.origin != own && r.origin != own_name && r.origin != "null")
+        if ((!r.origin.empty() && r.origin != own && r.origin != own_name) || !r.command)
             return text(403, "a command from another origin is refused");
         std::string_view body = r.body;
         while (!body.empty() && (body.back() == '\n' || body.back() == '\r' || body.back() == ' '))
@@ -356,6 +372,8 @@ private:
     }
 
     using model = detail::chart_model<std::remove_cv_t<typename Machine::chart_type>>;
+    // The most trace bytes one answer carries: the page asks again from where it ends.
+    static constexpr std::size_t max_answer = std::size_t{4} << 20;
 
     Machine& machine_;
     trace_buffer& buffer_;

@@ -13,8 +13,11 @@
 //
 // Opt-in: <bsc/bsc.hpp> does not include it, and a machine without it pays nothing. With it,
 // each record costs a frame of 7 bytes plus its payload (an exit or entry: 9 bytes) and the
-// instructions docs/trace.md gives; it never blocks and never allocates outside sample().
+// instructions docs/trace.md gives; it never blocks. It allocates where it writes names: the
+// dictionary (construction, write_dictionary) and sample()'s first call, and in sample() for the
+// names of array elements; the hooks never allocate.
 
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -22,6 +25,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <bsc/detail/access.hpp>
@@ -86,9 +90,9 @@ public:
             p = t::put(payload, static_cast<std::uint16_t>(row.row));
             p = t::put(p, static_cast<std::uint16_t>(row.source + 1));  // the diagram leaves out the top
             p = t::put(p, row.target < 0 ? t::no_number : static_cast<std::uint16_t>(row.target + 1));
-            p = t::put(p, row.trigger == detail::trigger_kind::eventless ? t::eventless_trigger
-                          : row.trigger == detail::trigger_kind::timeout ? t::timeout_trigger
-                                                                         : event_named(row.event));
+            p = t::put(p, row.trigger == detail::trigger_kind::timeout
+                              ? t::timeout_trigger
+                              : row_triggers[static_cast<std::size_t>(row.row)]);
             p = t::put(p, static_cast<std::uint8_t>((row.defers ? 1 : 0) | (row.local ? 2 : 0)));
             write(t::record_type::row, with_text(payload, p, row.label()));
         }
@@ -118,7 +122,8 @@ public:
 
     /// Writes the machine's channels, timers and scalar variables that changed since the last
     /// sample (all of them, with their names, at the first), at the machine's time. Call it
-    /// after each step or dispatch you want the values of. Allocates at the first call only.
+    /// after each step or dispatch you want the values of. Allocates at the first call, and
+    /// where it names the elements of an array member.
     template <class Machine>
     void sample(Machine const& machine) {
         using context = typename Machine::context_type;
@@ -206,16 +211,14 @@ private:
         }
     }
 
-    // The number of the event named `name` (a row's trigger, as the exports name it).
-    static std::uint16_t event_named(std::string_view name) {
-        // clang-format off
-        return [&]<class... Es>(detail::type_list<Es...>) {
-            std::uint16_t number = 0, found = detail::trace::no_number;
-            ((found = (found == detail::trace::no_number && event_name<Es> == name) ? number : found, ++number), ...);
-            return found;
-        }(events{});
-        // clang-format on
-    }
+    // Each row's trigger by its type (an eventless row's, and a timeout's, as eventless: the
+    // diagram tells the timeouts apart), as the transition records number it.
+    // clang-format off
+    static constexpr auto row_triggers = []<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<std::uint16_t, sizeof...(I)>{
+            event_number<detail::row_event_t<typename model::template row_at<static_cast<int>(I)>>>()...};
+    }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
+    // clang-format on
 
     void write(detail::trace::record_type type, std::span<std::byte const> payload) { buffer_->write(type, payload); }
     void write_state(detail::trace::record_type type, std::uint16_t state) {
@@ -234,12 +237,12 @@ private:
     // Receives the context's recorded members (detail/recorded_members.hpp) in walk order,
     // names them at the first sample and writes the values that changed, in frames of up to 24.
     struct value_writer {
-        value_writer(tracer& owner, std::int64_t now) : self(owner), time(now) {}
+        value_writer(tracer& owner, std::int64_t now) : self(owner), time(now), path(owner.path_) { path.clear(); }
 
         tracer& self;
         std::int64_t time;
-        std::size_t next = 0;  // the member's number
-        detail::recorded::dotted_path path;
+        std::size_t next = 0;                 // the member's number
+        detail::recorded::dotted_path& path;  // the tracer's, whose memory each sample reuses
         std::byte payload[detail::trace::max_payload]{};
         std::byte* end = nullptr;
 
@@ -283,7 +286,8 @@ private:
     std::int64_t delay_ = 0;
     bool deferring_ = false;
     bool members_named_ = false;
-    std::vector<std::uint64_t> last_;  // each member's last value written
+    std::vector<std::uint64_t> last_;     // each member's last value written
+    detail::recorded::dotted_path path_;  // the member names of sample()'s walk
 };
 
 template <class Chart>

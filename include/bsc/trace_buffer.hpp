@@ -41,8 +41,8 @@ public:
         if (payload.size() > t::max_payload) payload = payload.first(t::max_payload);
         std::size_t const needed = t::header_size + payload.size() + t::trailer_size;
         std::size_t constexpr overflow_frame = t::header_size + 8 + t::trailer_size;
-        std::size_t const used = head_.load(std::memory_order_relaxed) - tail_.load(std::memory_order_acquire);
-        std::size_t const room = storage_.size() - used;
+        std::size_t const room = storage_.size() -
+                                 used(head_.load(std::memory_order_relaxed), tail_.load(std::memory_order_acquire));
         if (overflow_pending_) {
             if (room < overflow_frame + needed) return drop();
             std::byte count[8];
@@ -60,21 +60,21 @@ public:
     /// between two reads: a reader joins the pieces.
     std::size_t read(std::span<std::byte> out) noexcept {
         std::size_t const tail = tail_.load(std::memory_order_relaxed);
-        std::size_t const available = head_.load(std::memory_order_acquire) - tail;
+        std::size_t const available = used(head_.load(std::memory_order_acquire), tail);
         std::size_t const n = available < out.size() ? available : out.size();
         if (n > 0) {
-            std::size_t const at = tail % storage_.size();
+            std::size_t const at = index(tail);
             std::size_t const first = n < storage_.size() - at ? n : storage_.size() - at;  // up to the ring's end
             std::memcpy(out.data(), storage_.data() + at, first);
             std::memcpy(out.data() + first, storage_.data(), n - first);
         }
-        tail_.store(tail + n, std::memory_order_release);
+        tail_.store(advance(tail, n), std::memory_order_release);
         return n;
     }
 
     /// The bytes waiting to be read.
     std::size_t size() const noexcept {
-        return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire);
+        return used(head_.load(std::memory_order_acquire), tail_.load(std::memory_order_acquire));
     }
     /// The storage's size.
     std::size_t capacity() const noexcept { return storage_.size(); }
@@ -105,17 +105,30 @@ private:
         t::put(frame + body, t::crc(std::span<std::byte const>{frame + 1, body - 1}));
         std::size_t const size = body + t::trailer_size;
         std::size_t const head = head_.load(std::memory_order_relaxed);
-        std::size_t const at = head % storage_.size();
+        std::size_t const at = index(head);
         std::size_t const first = size < storage_.size() - at ? size : storage_.size() - at;
         std::memcpy(storage_.data() + at, frame, first);
         std::memcpy(storage_.data(), frame + first, size - first);
-        head_.store(head + size, std::memory_order_release);
+        head_.store(advance(head, size), std::memory_order_release);
         written_.store(written_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
     }
 
+    // Positions run over twice the storage's size, so that a full ring (head a lap ahead of tail)
+    // differs from an empty one, and never wrap the size type, whatever its width.
+    std::size_t used(std::size_t head, std::size_t tail) const noexcept {
+        return head >= tail ? head - tail : head + 2 * storage_.size() - tail;
+    }
+    std::size_t index(std::size_t position) const noexcept {
+        return position < storage_.size() ? position : position - storage_.size();
+    }
+    std::size_t advance(std::size_t position, std::size_t n) const noexcept {
+        std::size_t const next = position + n;  // n <= the storage's size: no overflow below twice it
+        return next < 2 * storage_.size() ? next : next - 2 * storage_.size();
+    }
+
     std::span<std::byte> storage_;
-    std::atomic<std::size_t> head_{0};  // bytes ever written: moved by the writer only
-    std::atomic<std::size_t> tail_{0};  // bytes ever read: moved by the reader only
+    std::atomic<std::size_t> head_{0};  // where the writer writes next, in [0, 2 * size): moved by the writer only
+    std::atomic<std::size_t> tail_{0};  // where the reader reads next, in [0, 2 * size): moved by the reader only
     std::atomic<std::uint64_t> dropped_{0};
     std::atomic<std::uint64_t> written_{0};
     std::uint16_t sequence_ = 0;

@@ -63,8 +63,10 @@ namespace bsc::detail::inspector {
 
 struct request {
     std::string method;
-    std::string target;  // the path and the query
-    std::string origin;  // the Origin header, if any
+    std::string target;    // the path and the query
+    std::string host;      // the Host header
+    std::string origin;    // the Origin header, if any
+    bool command = false;  // the X-Bsc-Command header: only the page's own script sends it
     std::string body;
 };
 
@@ -84,6 +86,7 @@ inline std::string_view reason(int status) {
         case 405: return "Method Not Allowed";
         case 409: return "Conflict";
         case 413: return "Payload Too Large";
+        case 421: return "Misdirected Request";
         default: return "Error";
     }
 }
@@ -96,10 +99,10 @@ inline std::string lowercase(std::string_view s) {
 }
 
 // The request in `data` if it is whole: 1 (parsed into `r`), 0 (more bytes needed), -1 (not a
-// request this server reads, or larger than `limit`).
+// request this server reads), -2 (larger than `limit`).
 inline int parse(std::string const& data, request& r, std::size_t limit) {
     auto const end_of_headers = data.find("\r\n\r\n");
-    if (end_of_headers == std::string::npos) return data.size() > limit ? -1 : 0;
+    if (end_of_headers == std::string::npos) return data.size() > limit ? -2 : 0;
     std::string_view const head{data.data(), end_of_headers};
     auto const line_end = head.find("\r\n");
     std::string_view const line = head.substr(0, line_end);
@@ -116,15 +119,21 @@ inline int parse(std::string const& data, request& r, std::size_t limit) {
         if (colon != std::string_view::npos) {
             std::string const name = lowercase(header.substr(0, colon));
             std::string_view value = header.substr(colon + 1);
-            while (!value.empty() && value.front() == ' ') value.remove_prefix(1);
+            while (!value.empty() && (value.front() == ' ' || value.front() == '\t')) value.remove_prefix(1);
+            while (!value.empty() && (value.back() == ' ' || value.back() == '\t')) value.remove_suffix(1);
             if (name == "content-length") {
                 char* stop = nullptr;
                 std::string const digits(value);
                 auto const n = std::strtoull(digits.c_str(), &stop, 10);
-                if (digits.empty() || *stop != '\0' || n > limit) return -1;
+                if (digits.empty() || *stop != '\0') return -1;
+                if (n > limit) return -2;
                 length = static_cast<std::size_t>(n);
+            } else if (name == "host") {
+                r.host = std::string(value);
             } else if (name == "origin") {
                 r.origin = std::string(value);
+            } else if (name == "x-bsc-command") {
+                r.command = true;
             }
         }
         at = next;
@@ -151,6 +160,9 @@ class server {
 public:
     static constexpr std::size_t request_limit = 64 * 1024;
     static constexpr std::size_t max_clients = 32;
+    // A connection that has not sent its request and read the answer by then is closed, so
+    // that idle ones cannot keep others out.
+    static constexpr std::chrono::seconds client_deadline{10};
 
     // Listens on 127.0.0.1:port (0: a port the system picks); throws std::system_error.
     explicit server(std::uint16_t port) {
@@ -185,25 +197,30 @@ public:
         fds.push_back({listener_, POLLIN, 0});
         for (auto const& c : clients_) fds.push_back({c.fd, static_cast<short>(c.out.empty() ? POLLIN : POLLOUT), 0});
         int const ready = ::poll(fds.data(), fds.size(), static_cast<int>(wait.count()));
-        if (ready <= 0) return;
-        if (fds[0].revents & POLLIN) accept_all();
-        for (std::size_t i = 1; i < fds.size(); ++i) {
-            if (fds[i].revents == 0) continue;
-            client& c = clients_[i - 1];
-            if (c.out.empty())
-                receive(c, handle);
-            else
-                transmit(c);
+        if (ready > 0) {
+            std::size_t const waiting = clients_.size();  // accept_all adds after them
+            if (fds[0].revents & POLLIN) accept_all();
+            for (std::size_t i = 1; i < fds.size() && i - 1 < waiting; ++i) {
+                if (fds[i].revents == 0) continue;
+                client& c = clients_[i - 1];
+                if (c.out.empty())
+                    receive(c, handle);
+                else
+                    transmit(c);
+            }
         }
-        std::erase_if(clients_, [](client const& c) {
-            if (c.closed) ::close(c.fd);
-            return c.closed;
+        auto const now = std::chrono::steady_clock::now();
+        std::erase_if(clients_, [&](client const& c) {
+            bool const done = c.closed || now - c.since > client_deadline;
+            if (done) ::close(c.fd);
+            return done;
         });
     }
 
 private:
     struct client {
         int fd = -1;
+        std::chrono::steady_clock::time_point since;
         std::string in;
         std::string out;
         std::size_t sent = 0;
@@ -225,7 +242,7 @@ private:
                 ::close(fd);
                 continue;
             }
-            clients_.push_back({fd, {}, {}, 0, false});
+            clients_.push_back({fd, std::chrono::steady_clock::now(), {}, {}, 0, false});
         }
     }
 
@@ -241,8 +258,10 @@ private:
         request r;
         int const parsed = parse(c.in, r, request_limit);
         if (parsed == 0) return;
-        response const answer = parsed < 0 ? response{413, "text/plain; charset=utf-8", "request not understood", {}}
-                                           : handle(r);
+        response const answer = parsed == -2 ? response{413, "text/plain; charset=utf-8", "request too large", {}}
+                                : parsed == -1
+                                    ? response{400, "text/plain; charset=utf-8", "request not understood", {}}
+                                    : handle(r);
         c.out = serialize(answer);
         transmit(c);
     }
@@ -396,6 +415,11 @@ public:
     }
     /// The full name of the member `name` in the present scope.
     std::string of(std::string_view name) const { return text_ + std::string{name}; }
+    /// Back to no scope, keeping the memory, so that a walk after the first allocates nothing.
+    void clear() {
+        text_.clear();
+        starts_.clear();
+    }
 
 private:
     std::string text_;
@@ -418,8 +442,8 @@ struct inspector_options {
     /// one step at a time (a scan loop).
     bool stepping = false;
     std::string web_root;  ///< the folder of the page's files (index.html, inspector.js, ...)
-    /// The trace bytes kept for a page that opens later; past it the oldest half is let go and
-    /// the dictionary written again.
+    /// The trace bytes kept for a page that opens later; past it the history starts again with
+    /// the dictionary and the configuration written anew.
     std::size_t history_limit = std::size_t{64} << 20;
     /// Called after each command the page sent, with the command and the answer it got (the
     /// program's own log of what was done to it).
@@ -519,10 +543,16 @@ struct input_setter {
             if (yes || no) value = yes;
             return yes || no;
         } else if constexpr (std::is_enum_v<V>) {
-            std::underlying_type_t<V> n{};
-            if (!read(t, n)) return false;
-            value = static_cast<V>(n);
-            return true;
+            // Only an enum with a fixed underlying type takes any of its values: list
+            // initialisation from an integer compiles for exactly those.
+            if constexpr (requires(std::underlying_type_t<V> u) { V{u}; }) {
+                std::underlying_type_t<V> n{};
+                if (!read(t, n)) return false;
+                value = V{n};
+                return true;
+            } else {
+                return false;
+            }
         } else {
             auto const r = std::from_chars(t.data(), t.data() + t.size(), value);
             return r.ec == std::errc{} && r.ptr == t.data() + t.size();
@@ -585,20 +615,28 @@ private:
     using response = detail::inspector::response;
 
     void collect() {
+        drain();
+        if (history_.size() > options_.history_limit) {
+            // The history starts again at a dictionary and the configuration written now, so
+            // that a page that opens later begins with every name and where the machine stands.
+            base_ += history_.size();
+            history_.clear();
+            tracer()->write_dictionary(machine_);
+            drain();
+        }
+    }
+    void drain() {
         std::byte chunk[4096];
         while (std::size_t const n = buffer_.read(chunk)) history_.insert(history_.end(), chunk, chunk + n);
-        if (history_.size() > options_.history_limit) {
-            std::size_t const drop = history_.size() / 2;
-            history_.erase(history_.begin(), history_.begin() + static_cast<std::ptrdiff_t>(drop));
-            base_ += drop;
-            // A page that starts here reads frames only after a resynchronisation: the names again.
-            if (auto* t = tracer()) t->write_dictionary(machine_);
-        }
     }
 
     auto* tracer() { return detail::inspector::tracer_of(machine_.observer()); }
 
     response answer(detail::inspector::request const& r) {
+        // A page of another site that a rebinding of its name sends here reads nothing either.
+        std::string const port_text = ":" + std::to_string(port());
+        if (r.host != "127.0.0.1" + port_text && r.host != "localhost" + port_text)
+            return {421, "text/plain; charset=utf-8", "this server answers for 127.0.0.1" + port_text + " only", {}};
         std::string_view target = r.target;
         std::string_view query;
         if (auto const q = target.find('?'); q != std::string_view::npos) {
@@ -633,7 +671,7 @@ private:
             std::from_chars(digits.data(), digits.data() + digits.size(), from);
         }
         std::size_t const start = from < base_ ? base_ : from;
-        std::size_t const end = trace_end();
+        std::size_t const end = trace_end() - start > max_answer ? start + max_answer : trace_end();
         response r{200, "application/octet-stream", {}, {}};
         if (start < end) r.body.assign(reinterpret_cast<char const*>(history_.data()) + (start - base_), end - start);
         r.headers = {{"X-Trace-Start", std::to_string(start)}, {"X-Trace-End", std::to_string(end)}};
@@ -665,9 +703,11 @@ private:
         };
         if (r.method != "POST") return text(405, "POST a command");
         if (!options_.commands) return text(403, "this program does not accept commands: the view is read-only");
+        // Only the page's own script sends the custom header: a browser asks this server before
+        // another site's page may send it, and this server never says yes.
         std::string const own = "http://127.0.0.1:" + std::to_string(port());
         std::string const own_name = "http://localhost:" + std::to_string(port());
-        if (!r.origin.empty() && r.origin != own && r.origin != own_name && r.origin != "null")
+        if ((!r.origin.empty() && r.origin != own && r.origin != own_name) || !r.command)
             return text(403, "a command from another origin is refused");
         std::string_view body = r.body;
         while (!body.empty() && (body.back() == '\n' || body.back() == '\r' || body.back() == ' '))
@@ -724,6 +764,8 @@ private:
     }
 
     using model = detail::chart_model<std::remove_cv_t<typename Machine::chart_type>>;
+    // The most trace bytes one answer carries: the page asks again from where it ends.
+    static constexpr std::size_t max_answer = std::size_t{4} << 20;
 
     Machine& machine_;
     trace_buffer& buffer_;

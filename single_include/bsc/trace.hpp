@@ -20,8 +20,11 @@
 //
 // Opt-in: <bsc/bsc.hpp> does not include it, and a machine without it pays nothing. With it,
 // each record costs a frame of 7 bytes plus its payload (an exit or entry: 9 bytes) and the
-// instructions docs/trace.md gives; it never blocks and never allocates outside sample().
+// instructions docs/trace.md gives; it never blocks. It allocates where it writes names: the
+// dictionary (construction, write_dictionary) and sample()'s first call, and in sample() for the
+// names of array elements; the hooks never allocate.
 
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -29,6 +32,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 // begin include/bsc/detail/export/model.hpp
@@ -629,6 +633,11 @@ public:
     }
     /// The full name of the member `name` in the present scope.
     std::string of(std::string_view name) const { return text_ + std::string{name}; }
+    /// Back to no scope, keeping the memory, so that a walk after the first allocates nothing.
+    void clear() {
+        text_.clear();
+        starts_.clear();
+    }
 
 private:
     std::string text_;
@@ -777,8 +786,8 @@ public:
         if (payload.size() > t::max_payload) payload = payload.first(t::max_payload);
         std::size_t const needed = t::header_size + payload.size() + t::trailer_size;
         std::size_t constexpr overflow_frame = t::header_size + 8 + t::trailer_size;
-        std::size_t const used = head_.load(std::memory_order_relaxed) - tail_.load(std::memory_order_acquire);
-        std::size_t const room = storage_.size() - used;
+        std::size_t const room = storage_.size() -
+                                 used(head_.load(std::memory_order_relaxed), tail_.load(std::memory_order_acquire));
         if (overflow_pending_) {
             if (room < overflow_frame + needed) return drop();
             std::byte count[8];
@@ -796,21 +805,21 @@ public:
     /// between two reads: a reader joins the pieces.
     std::size_t read(std::span<std::byte> out) noexcept {
         std::size_t const tail = tail_.load(std::memory_order_relaxed);
-        std::size_t const available = head_.load(std::memory_order_acquire) - tail;
+        std::size_t const available = used(head_.load(std::memory_order_acquire), tail);
         std::size_t const n = available < out.size() ? available : out.size();
         if (n > 0) {
-            std::size_t const at = tail % storage_.size();
+            std::size_t const at = index(tail);
             std::size_t const first = n < storage_.size() - at ? n : storage_.size() - at;  // up to the ring's end
             std::memcpy(out.data(), storage_.data() + at, first);
             std::memcpy(out.data() + first, storage_.data(), n - first);
         }
-        tail_.store(tail + n, std::memory_order_release);
+        tail_.store(advance(tail, n), std::memory_order_release);
         return n;
     }
 
     /// The bytes waiting to be read.
     std::size_t size() const noexcept {
-        return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire);
+        return used(head_.load(std::memory_order_acquire), tail_.load(std::memory_order_acquire));
     }
     /// The storage's size.
     std::size_t capacity() const noexcept { return storage_.size(); }
@@ -841,17 +850,30 @@ private:
         t::put(frame + body, t::crc(std::span<std::byte const>{frame + 1, body - 1}));
         std::size_t const size = body + t::trailer_size;
         std::size_t const head = head_.load(std::memory_order_relaxed);
-        std::size_t const at = head % storage_.size();
+        std::size_t const at = index(head);
         std::size_t const first = size < storage_.size() - at ? size : storage_.size() - at;
         std::memcpy(storage_.data() + at, frame, first);
         std::memcpy(storage_.data(), frame + first, size - first);
-        head_.store(head + size, std::memory_order_release);
+        head_.store(advance(head, size), std::memory_order_release);
         written_.store(written_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
     }
 
+    // Positions run over twice the storage's size, so that a full ring (head a lap ahead of tail)
+    // differs from an empty one, and never wrap the size type, whatever its width.
+    std::size_t used(std::size_t head, std::size_t tail) const noexcept {
+        return head >= tail ? head - tail : head + 2 * storage_.size() - tail;
+    }
+    std::size_t index(std::size_t position) const noexcept {
+        return position < storage_.size() ? position : position - storage_.size();
+    }
+    std::size_t advance(std::size_t position, std::size_t n) const noexcept {
+        std::size_t const next = position + n;  // n <= the storage's size: no overflow below twice it
+        return next < 2 * storage_.size() ? next : next - 2 * storage_.size();
+    }
+
     std::span<std::byte> storage_;
-    std::atomic<std::size_t> head_{0};  // bytes ever written: moved by the writer only
-    std::atomic<std::size_t> tail_{0};  // bytes ever read: moved by the reader only
+    std::atomic<std::size_t> head_{0};  // where the writer writes next, in [0, 2 * size): moved by the writer only
+    std::atomic<std::size_t> tail_{0};  // where the reader reads next, in [0, 2 * size): moved by the reader only
     std::atomic<std::uint64_t> dropped_{0};
     std::atomic<std::uint64_t> written_{0};
     std::uint16_t sequence_ = 0;
@@ -912,9 +934,9 @@ public:
             p = t::put(payload, static_cast<std::uint16_t>(row.row));
             p = t::put(p, static_cast<std::uint16_t>(row.source + 1));  // the diagram leaves out the top
             p = t::put(p, row.target < 0 ? t::no_number : static_cast<std::uint16_t>(row.target + 1));
-            p = t::put(p, row.trigger == detail::trigger_kind::eventless ? t::eventless_trigger
-                          : row.trigger == detail::trigger_kind::timeout ? t::timeout_trigger
-                                                                         : event_named(row.event));
+            p = t::put(p, row.trigger == detail::trigger_kind::timeout
+                              ? t::timeout_trigger
+                              : row_triggers[static_cast<std::size_t>(row.row)]);
             p = t::put(p, static_cast<std::uint8_t>((row.defers ? 1 : 0) | (row.local ? 2 : 0)));
             write(t::record_type::row, with_text(payload, p, row.label()));
         }
@@ -944,7 +966,8 @@ public:
 
     /// Writes the machine's channels, timers and scalar variables that changed since the last
     /// sample (all of them, with their names, at the first), at the machine's time. Call it
-    /// after each step or dispatch you want the values of. Allocates at the first call only.
+    /// after each step or dispatch you want the values of. Allocates at the first call, and
+    /// where it names the elements of an array member.
     template <class Machine>
     void sample(Machine const& machine) {
         using context = typename Machine::context_type;
@@ -1032,16 +1055,14 @@ private:
         }
     }
 
-    // The number of the event named `name` (a row's trigger, as the exports name it).
-    static std::uint16_t event_named(std::string_view name) {
-        // clang-format off
-        return [&]<class... Es>(detail::type_list<Es...>) {
-            std::uint16_t number = 0, found = detail::trace::no_number;
-            ((found = (found == detail::trace::no_number && event_name<Es> == name) ? number : found, ++number), ...);
-            return found;
-        }(events{});
-        // clang-format on
-    }
+    // Each row's trigger by its type (an eventless row's, and a timeout's, as eventless: the
+    // diagram tells the timeouts apart), as the transition records number it.
+    // clang-format off
+    static constexpr auto row_triggers = []<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<std::uint16_t, sizeof...(I)>{
+            event_number<detail::row_event_t<typename model::template row_at<static_cast<int>(I)>>>()...};
+    }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
+    // clang-format on
 
     void write(detail::trace::record_type type, std::span<std::byte const> payload) { buffer_->write(type, payload); }
     void write_state(detail::trace::record_type type, std::uint16_t state) {
@@ -1060,12 +1081,12 @@ private:
     // Receives the context's recorded members (detail/recorded_members.hpp) in walk order,
     // names them at the first sample and writes the values that changed, in frames of up to 24.
     struct value_writer {
-        value_writer(tracer& owner, std::int64_t now) : self(owner), time(now) {}
+        value_writer(tracer& owner, std::int64_t now) : self(owner), time(now), path(owner.path_) { path.clear(); }
 
         tracer& self;
         std::int64_t time;
-        std::size_t next = 0;  // the member's number
-        detail::recorded::dotted_path path;
+        std::size_t next = 0;                 // the member's number
+        detail::recorded::dotted_path& path;  // the tracer's, whose memory each sample reuses
         std::byte payload[detail::trace::max_payload]{};
         std::byte* end = nullptr;
 
@@ -1109,7 +1130,8 @@ private:
     std::int64_t delay_ = 0;
     bool deferring_ = false;
     bool members_named_ = false;
-    std::vector<std::uint64_t> last_;  // each member's last value written
+    std::vector<std::uint64_t> last_;     // each member's last value written
+    detail::recorded::dotted_path path_;  // the member names of sample()'s walk
 };
 
 template <class Chart>

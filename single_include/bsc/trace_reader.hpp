@@ -252,6 +252,10 @@ public:
         pending_.insert(pending_.end(), bytes.begin(), bytes.end());
     }
 
+    /// Says that no more bytes will come (the end of a file): a frame begun at the end can no
+    /// longer be completed, so next() skips its first byte and reads on instead of waiting.
+    void finish() { finished_ = true; }
+
     /// The next whole frame whose checksum holds, or nothing until more bytes are fed. Bytes
     /// that start no valid frame are skipped (skipped_bytes()); a frame whose payload does not
     /// fit its type is dropped (malformed()).
@@ -259,11 +263,19 @@ public:
         namespace t = detail::trace;
         for (;;) {
             while (start_ < pending_.size() && pending_[start_] != t::sync) skip();
-            if (pending_.size() - start_ < t::header_size) return std::nullopt;
+            if (pending_.size() - start_ < t::header_size) {
+                if (!finished_ || start_ == pending_.size()) return std::nullopt;
+                skip();
+                continue;
+            }
             std::byte const* frame = pending_.data() + start_;
             std::size_t const length = static_cast<std::size_t>(frame[4]);
             std::size_t const size = t::header_size + length + t::trailer_size;
-            if (pending_.size() - start_ < size) return std::nullopt;
+            if (pending_.size() - start_ < size) {
+                if (!finished_) return std::nullopt;
+                skip();
+                continue;
+            }
             std::uint16_t const expected = t::get<std::uint16_t>(frame + t::header_size + length);
             if (t::crc(std::span<std::byte const>{frame + 1, 4 + length}) != expected) {
                 skip();
@@ -304,6 +316,7 @@ public:
             case trace_record_type::event:
                 return line + "event " + std::to_string(r.event) + " " + d.event_name(r.event);
             case trace_record_type::row: {
+                if (r.row >= d.rows.size()) return line + "row " + std::to_string(r.row);
                 auto const& row = d.rows[r.row];
                 return line + "row " + std::to_string(r.row) + " " + d.state_name(row.source) + " -> " +
                        (row.target == trace_record::none ? std::string{"internal"} : d.state_name(row.target)) +
@@ -467,6 +480,7 @@ private:
     std::uint64_t frames_ = 0, missing_ = 0, skipped_ = 0, malformed_ = 0;
     std::uint16_t next_sequence_ = 0;
     bool sequenced_ = false;
+    bool finished_ = false;
 };
 
 }  // namespace bsc

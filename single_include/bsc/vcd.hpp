@@ -173,6 +173,11 @@ public:
     }
     /// The full name of the member `name` in the present scope.
     std::string of(std::string_view name) const { return text_ + std::string{name}; }
+    /// Back to no scope, keeping the memory, so that a walk after the first allocates nothing.
+    void clear() {
+        text_.clear();
+        starts_.clear();
+    }
 
 private:
     std::string text_;

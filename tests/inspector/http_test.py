@@ -21,8 +21,11 @@ import urllib.request
 DEADLINE = 30  # seconds for the whole test
 
 
-def request(url, body=None, origin=None):
+def request(url, body=None, origin=None, as_page=True):
+    """As the page's script asks: a command with the X-Bsc-Command header (as_page)."""
     headers = {"Origin": origin} if origin else {}
+    if body is not None and as_page:
+        headers["X-Bsc-Command"] = "1"
     req = urllib.request.Request(url, data=body.encode() if body is not None else None, headers=headers)
     try:
         with urllib.request.urlopen(req, timeout=5) as r:
@@ -88,6 +91,8 @@ def main():
             check(status == 400 and b"no event of this chart is named 'NOPE'" in body, f"NOPE: {status} {body!r}")
             status, _, body = request(url + "command", "dispatch ESTOP_P", origin="http://example.com")
             check(status == 403 and b"another origin" in body, f"another origin: {status} {body!r}")
+            status, _, body = request(url + "command", "dispatch ESTOP_P", as_page=False)
+            check(status == 403, f"a command without the page's header: {status} {body!r}")
             status, _, body = request(url + "command", "set error 1")
             check(status == 400 and b"not an input channel" in body, f"set a non-input: {status} {body!r}")
             status, _, body = request(url + "command", "step")

@@ -32,10 +32,14 @@ struct Root;
 struct Idle;
 struct Busy;
 struct stop {};
+enum class speed : std::uint8_t { slow, fast };
+enum legacy_mode { manual, automatic };  // no fixed underlying type: not every number is a value
 struct io {
     bsc::input<bool> start;
     bsc::output<int> count{0};
     int steps = 0;
+    bsc::input<speed> rate;
+    bsc::input<legacy_mode> mode;
 };
 
 inline constexpr auto chart = bsc::make_chart<io>(
@@ -55,9 +59,17 @@ struct answer {
 
 // Sends one request to the inspector on 127.0.0.1:port and polls it until the answer is whole
 // (it closes the connection after each).
+// A request as the page's script sends it: to the inspector's own host, a command with the
+// X-Bsc-Command header; `origin`, `host` and `as_page` change that.
+struct sent_as {
+    std::string_view origin;
+    std::string_view host;  // empty: 127.0.0.1:<port>
+    bool as_page = true;
+};
+
 template <class Inspector>
 answer ask(Inspector& view, std::string_view method, std::string_view target, std::string_view body = {},
-           std::string_view origin = {}) {
+           sent_as how = {}) {
     int const fd = ::socket(AF_INET, SOCK_STREAM, 0);
     REQUIRE(fd >= 0);
     sockaddr_in address{};
@@ -65,8 +77,10 @@ answer ask(Inspector& view, std::string_view method, std::string_view target, st
     address.sin_port = htons(view.port());
     address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     REQUIRE(::connect(fd, reinterpret_cast<sockaddr const*>(&address), sizeof address) == 0);
-    std::string request = std::string{method} + " " + std::string{target} + " HTTP/1.1\r\nHost: 127.0.0.1\r\n";
-    if (!origin.empty()) request += "Origin: " + std::string{origin} + "\r\n";
+    std::string const host = how.host.empty() ? "127.0.0.1:" + std::to_string(view.port()) : std::string{how.host};
+    std::string request = std::string{method} + " " + std::string{target} + " HTTP/1.1\r\nHost: " + host + "\r\n";
+    if (!how.origin.empty()) request += "Origin: " + std::string{how.origin} + "\r\n";
+    if (how.as_page && method == "POST") request += "X-Bsc-Command: 1\r\n";
     request += "Content-Length: " + std::to_string(body.size()) + "\r\n\r\n" + std::string{body};
     REQUIRE(::send(fd, request.data(), request.size(), 0) == static_cast<ssize_t>(request.size()));
     std::string reply;
@@ -142,6 +156,10 @@ TEST_CASE("the inspector serves the trace and runs a stepping program's commands
     CHECK(ask(view, "POST", "/command", "set start maybe").body == "'maybe' is not a value of start");
     CHECK(ask(view, "POST", "/command", "set steps 2").body == "steps is not an input channel: only inputs can be set");
     CHECK(ask(view, "POST", "/command", "set nothing 1").body == "no input is named 'nothing'");
+    CHECK(ask(view, "POST", "/command", "set rate 1").status == 200);
+    m.step(150ms);
+    CHECK(m.context().rate.get() == speed::fast);
+    CHECK(ask(view, "POST", "/command", "set mode 7").body == "'7' is not a value of mode");
 
     // Pause, single steps, resume.
     CHECK(view.may_step());
@@ -162,11 +180,27 @@ TEST_CASE("the inspector serves the trace and runs a stepping program's commands
     CHECK(dispatched.body == "ok stop: consumed");
     CHECK(m.is<Idle>());
     CHECK(ask(view, "POST", "/command", "dispatch go").status == 400);
-    auto const foreign = ask(view, "POST", "/command", "dispatch stop", "http://example.com");
+    auto const foreign = ask(view, "POST", "/command", "dispatch stop",
+                             {.origin = "http://example.com", .host = {}, .as_page = true});
     CHECK(foreign.status == 403);
+    CHECK(foreign.body == "a command from another origin is refused");
+    // What another site's page can send without asking first: no custom header; or its origin
+    // hidden (a sandboxed frame's "null").
+    CHECK(ask(view, "POST", "/command", "dispatch stop", {.origin = {}, .host = {}, .as_page = false}).status == 403);
+    CHECK(ask(view, "POST", "/command", "dispatch stop", {.origin = "null", .host = {}, .as_page = true}).status ==
+          403);
+    CHECK(ask(view, "POST", "/command", "resume",
+              {.origin = "http://localhost:" + std::to_string(view.port()), .host = {}, .as_page = true})
+              .status == 200);
+    // A name that resolves here but is not this server's (DNS rebinding): nothing answered.
+    auto const rebound = ask(view, "GET", "/trace?from=0", {},
+                             {.origin = {}, .host = "attacker.example:80", .as_page = true});
+    CHECK(rebound.status == 421);
+    CHECK(rebound.body.empty() == false);
+    CHECK(rebound.body.find('\xB5') == std::string::npos);
     CHECK(ask(view, "POST", "/command", "dance").status == 400);
     CHECK(ask(view, "GET", "/command").status == 405);
-    CHECK(view.commands_run() == 11);  // not those refused before they ran: another origin, unknown, GET
+    CHECK(view.commands_run() == 14);  // not those refused before they ran: another origin, unknown, GET
     CHECK(log.find("set start true -> ok start = true (latched at the next step)\n") == 0);
 
     // The trace from where the page stopped reading: the dispatch and the transition it made.
@@ -174,7 +208,7 @@ TEST_CASE("the inspector serves the trace and runs a stepping program's commands
     reader.feed(std::as_bytes(std::span{more.body}));
     std::string lines;
     while (auto r = reader.next()) lines += reader.describe(*r) + "\n";
-    CHECK(lines.find("[100ms] dispatch stop\n[100ms] exit Busy\n[100ms] transition Busy -> Idle on stop (row 1)\n") !=
+    CHECK(lines.find("[150ms] dispatch stop\n[150ms] exit Busy\n[150ms] transition Busy -> Idle on stop (row 1)\n") !=
           std::string::npos);
     CHECK(reader.missing() == 0);
 
@@ -183,7 +217,7 @@ TEST_CASE("the inspector serves the trace and runs a stepping program's commands
     CHECK(ask(view, "GET", "/../secret").status == 404);
 }
 
-TEST_CASE("a read-only inspector refuses commands; a long run's history lets its oldest half go") {
+TEST_CASE("a read-only inspector refuses commands; a long run's history starts again at the dictionary") {
     using namespace inspector_test;
     std::array<std::byte, 1 << 12> storage{};
     bsc::trace_buffer buffer{storage};
@@ -207,7 +241,10 @@ TEST_CASE("a read-only inspector refuses commands; a long run's history lets its
     CHECK(start > 0);
     CHECK(start + trace.body.size() == std::stoul(header(trace, "X-Trace-End")));
     CHECK(trace.body.size() <= 2000 + 1000);
-    // A page that opens now resynchronises and learns the names again.
+    // A page that opens now starts at a hello: every name, then where the machine stands.
+    REQUIRE(trace.body.size() > 2);
+    CHECK(trace.body[0] == '\xB5');
+    CHECK(trace.body[1] == '\x01');
     bsc::trace_reader reader;
     reader.feed(std::as_bytes(std::span{trace.body}));
     std::string configuration;
@@ -216,4 +253,6 @@ TEST_CASE("a read-only inspector refuses commands; a long run's history lets its
     CHECK(reader.dictionary().chart == "Root");
     CHECK(reader.dictionary().states.size() == 4);
     CHECK(configuration.ends_with("] configuration Root Idle"));
+    CHECK(reader.skipped_bytes() == 0);
+    CHECK(reader.missing() == 0);
 }

@@ -81,6 +81,17 @@ inline std::vector<std::byte> drain(bsc::trace_buffer& buffer) {
     return bytes;
 }
 
+// Two events of the same name in two namespaces: rows and transitions number them by type.
+namespace a {
+struct press {};
+}  // namespace a
+namespace b {
+struct press {};
+}  // namespace b
+inline constexpr auto twins = bsc::make_chart<int>(bsc::composite<Root>(bsc::initial<Idle>, bsc::state<Busy>),
+                                                   bsc::state<Idle> + bsc::event<a::press> = bsc::state<Busy>,
+                                                   bsc::state<Busy> + bsc::event<b::press> = bsc::state<Idle>);
+
 }  // namespace trace_test
 
 using bsc_test::compiled;
@@ -237,6 +248,28 @@ TEST_CASE("a full ring drops whole frames, counts them, and says so when room re
     CHECK(reader.missing() == 4);  // the reader sees the drops as a gap in the sequence numbers
     CHECK(buffer.written() == 24);
 
+    // Lap after lap around a ring whose size divides nothing: every frame read back whole.
+    {
+        std::array<std::byte, 97> small{};
+        bsc::trace_buffer ring{small};
+        bsc::trace_reader laps;
+        std::array<std::byte, 13> out{};
+        std::size_t frames = 0;
+        for (int i = 0; i < 5000; ++i) {
+            std::array<std::byte, 9> payload{};
+            payload[0] = static_cast<std::byte>(i);
+            REQUIRE(ring.write(bsc::trace_record_type::cycle_end,
+                               std::span{payload}.first(static_cast<std::size_t>(i % 10))));
+            while (std::size_t const n = ring.read(out)) laps.feed(std::span{out}.first(n));
+            while (laps.next()) ++frames;
+        }
+        CHECK(laps.frames() == 5000);
+        CHECK(laps.malformed() == 5000 - 500);  // a cycle end has no payload: only those of length 0 fit
+        CHECK(frames == 500);
+        CHECK(laps.missing() == 0);
+        CHECK(laps.skipped_bytes() == 0);
+    }
+
     // A frame longer than the storage is always dropped; a buffer without storage drops everything.
     bsc::trace_buffer empty{std::span<std::byte>{}};
     CHECK_FALSE(empty.write(bsc::trace_record_type::cycle_end, {}));
@@ -279,6 +312,23 @@ TEST_CASE("a reader joins frames cut anywhere, resynchronises after damage and c
         CAPTURE(at);
         CHECK(n == reference.size() - 1);
         CHECK(reader.skipped_bytes() > 0);
+        CHECK(reader.missing() == 1);
+    }
+
+    // A damaged length near the end: the frame it announces cannot end within the stream. The
+    // reader waits for bytes that will not come, until told the stream is whole.
+    {
+        auto damaged = bytes;
+        std::size_t const at = bytes.size() - 7 - 9 + 4;  // the length of the last frame but one (entry Done)
+        damaged[at] = std::byte{0xF0};
+        bsc::trace_reader reader;
+        reader.feed(damaged);
+        std::size_t n = 0;
+        while (reader.next()) ++n;
+        CHECK(n == reference.size() - 2);
+        reader.finish();
+        while (reader.next()) ++n;
+        CHECK(n == reference.size() - 1);  // the last frame read after all
         CHECK(reader.missing() == 1);
     }
 
@@ -338,4 +388,23 @@ TEST_CASE("any bytes are safe to feed a reader: random input, and a real stream 
         CHECK(records + reader.malformed() == reader.frames());
         CHECK(reader.frames() * 7 + reader.skipped_bytes() <= input.size());
     }
+}
+
+TEST_CASE("a row's trigger is numbered by its event's type, as the transition records number it") {
+    using namespace trace_test;
+    std::array<std::byte, 1024> storage{};
+    bsc::trace_buffer buffer{storage};
+    bsc::machine m{twins, 0, bsc::tracer{twins, buffer}};
+    m.dispatch(a::press{});
+    m.dispatch(b::press{});
+    bsc::trace_reader reader;
+    reader.feed(drain(buffer));
+    std::vector<std::uint16_t> fired;
+    while (auto r = reader.next())
+        if (r->type == bsc::trace_record_type::transition) fired.push_back(r->event);
+    auto const& d = reader.dictionary();
+    REQUIRE(d.rows.size() == 2);
+    CHECK(d.rows[0].trigger == 0);
+    CHECK(d.rows[1].trigger == 1);
+    CHECK(fired == std::vector<std::uint16_t>{0, 1});
 }

@@ -674,7 +674,8 @@
   async function command(text) {
     setStatus(`${text}…`);
     try {
-      const response = await fetch('/command', { method: 'POST', headers: { 'Content-Type': 'text/plain' }, body: text });
+      // The custom header makes a browser ask the server before another site's page could send it.
+      const response = await fetch('/command', { method: 'POST', headers: { 'Content-Type': 'text/plain', 'X-Bsc-Command': '1' }, body: text });
       const body = (await response.text()).trim();
       if (response.ok) setStatus(body || 'ok', 'ok');
       else setStatus(`${text}: ${response.status} ${body || response.statusText}`, 'error');
@@ -793,6 +794,7 @@
 
   function loadTrace(bytes, name) {
     resetTrace();
+    app.reader.finish(); // a file is whole: a frame cut at its end is damage, not bytes to wait for
     ingest(bytes);
     const r = app.reader;
     setStatus(`${name}: ${app.records.length} records`, 'ok');

@@ -162,6 +162,7 @@
   class TraceReader {
     constructor() {
       this.pending = new Uint8Array(4096);
+      this.finished = false; // no more bytes will come
       this.start = 0; // the first unread byte of pending
       this.end = 0; // one past the last byte fed
       this.dictionary = new TraceDictionary();
@@ -202,16 +203,32 @@
       this.end += input.length;
     }
 
+    /**
+     * Says that no more bytes will come (a whole file): a frame begun at the end can no longer be
+     * completed, so next() skips its first byte and reads on instead of waiting.
+     */
+    finish() {
+      this.finished = true;
+    }
+
     /** The next whole frame whose checksum holds as a record, or null until more bytes are fed. */
     next() {
       const p = this.pending;
       for (;;) {
         while (this.start < this.end && p[this.start] !== SYNC) this.skip();
-        if (this.end - this.start < HEADER) return null;
+        if (this.end - this.start < HEADER) {
+          if (!this.finished || this.start === this.end) return null;
+          this.skip();
+          continue;
+        }
         const f = this.start;
         const length = p[f + 4];
         const size = HEADER + length + TRAILER;
-        if (this.end - f < size) return null;
+        if (this.end - f < size) {
+          if (!this.finished) return null;
+          this.skip();
+          continue;
+        }
         const expected = p[f + HEADER + length] | (p[f + HEADER + length + 1] << 8);
         if (crc16(p, f + 1, f + HEADER + length) !== expected) {
           this.skip();

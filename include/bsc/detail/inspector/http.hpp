@@ -24,8 +24,10 @@ namespace bsc::detail::inspector {
 
 struct request {
     std::string method;
-    std::string target;  // the path and the query
-    std::string origin;  // the Origin header, if any
+    std::string target;    // the path and the query
+    std::string host;      // the Host header
+    std::string origin;    // the Origin header, if any
+    bool command = false;  // the X-Bsc-Command header: only the page's own script sends it
     std::string body;
 };
 
@@ -45,6 +47,7 @@ inline std::string_view reason(int status) {
         case 405: return "Method Not Allowed";
         case 409: return "Conflict";
         case 413: return "Payload Too Large";
+        case 421: return "Misdirected Request";
         default: return "Error";
     }
 }
@@ -57,10 +60,10 @@ inline std::string lowercase(std::string_view s) {
 }
 
 // The request in `data` if it is whole: 1 (parsed into `r`), 0 (more bytes needed), -1 (not a
-// request this server reads, or larger than `limit`).
+// request this server reads), -2 (larger than `limit`).
 inline int parse(std::string const& data, request& r, std::size_t limit) {
     auto const end_of_headers = data.find("\r\n\r\n");
-    if (end_of_headers == std::string::npos) return data.size() > limit ? -1 : 0;
+    if (end_of_headers == std::string::npos) return data.size() > limit ? -2 : 0;
     std::string_view const head{data.data(), end_of_headers};
     auto const line_end = head.find("\r\n");
     std::string_view const line = head.substr(0, line_end);
@@ -77,15 +80,21 @@ inline int parse(std::string const& data, request& r, std::size_t limit) {
         if (colon != std::string_view::npos) {
             std::string const name = lowercase(header.substr(0, colon));
             std::string_view value = header.substr(colon + 1);
-            while (!value.empty() && value.front() == ' ') value.remove_prefix(1);
+            while (!value.empty() && (value.front() == ' ' || value.front() == '\t')) value.remove_prefix(1);
+            while (!value.empty() && (value.back() == ' ' || value.back() == '\t')) value.remove_suffix(1);
             if (name == "content-length") {
                 char* stop = nullptr;
                 std::string const digits(value);
                 auto const n = std::strtoull(digits.c_str(), &stop, 10);
-                if (digits.empty() || *stop != '\0' || n > limit) return -1;
+                if (digits.empty() || *stop != '\0') return -1;
+                if (n > limit) return -2;
                 length = static_cast<std::size_t>(n);
+            } else if (name == "host") {
+                r.host = std::string(value);
             } else if (name == "origin") {
                 r.origin = std::string(value);
+            } else if (name == "x-bsc-command") {
+                r.command = true;
             }
         }
         at = next;
@@ -112,6 +121,9 @@ class server {
 public:
     static constexpr std::size_t request_limit = 64 * 1024;
     static constexpr std::size_t max_clients = 32;
+    // A connection that has not sent its request and read the answer by then is closed, so
+    // that idle ones cannot keep others out.
+    static constexpr std::chrono::seconds client_deadline{10};
 
     // Listens on 127.0.0.1:port (0: a port the system picks); throws std::system_error.
     explicit server(std::uint16_t port) {
@@ -146,25 +158,30 @@ public:
         fds.push_back({listener_, POLLIN, 0});
         for (auto const& c : clients_) fds.push_back({c.fd, static_cast<short>(c.out.empty() ? POLLIN : POLLOUT), 0});
         int const ready = ::poll(fds.data(), fds.size(), static_cast<int>(wait.count()));
-        if (ready <= 0) return;
-        if (fds[0].revents & POLLIN) accept_all();
-        for (std::size_t i = 1; i < fds.size(); ++i) {
-            if (fds[i].revents == 0) continue;
-            client& c = clients_[i - 1];
-            if (c.out.empty())
-                receive(c, handle);
-            else
-                transmit(c);
+        if (ready > 0) {
+            std::size_t const waiting = clients_.size();  // accept_all adds after them
+            if (fds[0].revents & POLLIN) accept_all();
+            for (std::size_t i = 1; i < fds.size() && i - 1 < waiting; ++i) {
+                if (fds[i].revents == 0) continue;
+                client& c = clients_[i - 1];
+                if (c.out.empty())
+                    receive(c, handle);
+                else
+                    transmit(c);
+            }
         }
-        std::erase_if(clients_, [](client const& c) {
-            if (c.closed) ::close(c.fd);
-            return c.closed;
+        auto const now = std::chrono::steady_clock::now();
+        std::erase_if(clients_, [&](client const& c) {
+            bool const done = c.closed || now - c.since > client_deadline;
+            if (done) ::close(c.fd);
+            return done;
         });
     }
 
 private:
     struct client {
         int fd = -1;
+        std::chrono::steady_clock::time_point since;
         std::string in;
         std::string out;
         std::size_t sent = 0;
@@ -186,7 +203,7 @@ private:
                 ::close(fd);
                 continue;
             }
-            clients_.push_back({fd, {}, {}, 0, false});
+            clients_.push_back({fd, std::chrono::steady_clock::now(), {}, {}, 0, false});
         }
     }
 
@@ -202,8 +219,10 @@ private:
         request r;
         int const parsed = parse(c.in, r, request_limit);
         if (parsed == 0) return;
-        response const answer = parsed < 0 ? response{413, "text/plain; charset=utf-8", "request not understood", {}}
-                                           : handle(r);
+        response const answer = parsed == -2 ? response{413, "text/plain; charset=utf-8", "request too large", {}}
+                                : parsed == -1
+                                    ? response{400, "text/plain; charset=utf-8", "request not understood", {}}
+                                    : handle(r);
         c.out = serialize(answer);
         transmit(c);
     }
