@@ -33,6 +33,7 @@
 #include <vector>
 
 #include <bsc/detail/inspector/http.hpp>
+#include <bsc/detail/member_path.hpp>
 #include <bsc/detail/members.hpp>
 #include <bsc/detail/recorded_members.hpp>
 #include <bsc/observers.hpp>
@@ -96,12 +97,6 @@ auto* tracer_of(observers<Parts...>& o) {
         return static_cast<no_tracer*>(nullptr);
 }
 
-// An output channel: the chart's own, never set from outside (its const set() is an error).
-template <class T>
-inline constexpr bool is_output = false;
-template <class V>
-inline constexpr bool is_output<output<V>> = true;
-
 // Finds the context member named `path` (dotted, as the trace names members) in a walk
 // (detail/members.hpp) and, if it is an input of a scalar type, sets it to the value `text`
 // reads as; `answer` is then empty, or says why not.
@@ -109,13 +104,12 @@ struct input_setter {
     static constexpr bool named = true;
     std::string_view path;
     std::string_view text;
-    recorded::dotted_path prefix;
+    member_path prefix;
     std::string answer;
     bool found = false;
 
-    std::string element_name(std::string_view name, std::size_t i) const {
-        return std::string{name} + "_" + std::to_string(i);
-    }
+    // As the trace names them (the page sets what the trace showed it).
+    std::string element_name(std::string_view name, std::size_t i) const { return recorded::element_name(name, i); }
     void enter(std::string_view name) { prefix.enter(name); }
     void leave() { prefix.leave(); }
     template <class T>
@@ -125,7 +119,7 @@ struct input_setter {
         std::string const what{path};
         if constexpr (is_channel<T>) {
             using V = channel_value<T>;
-            if constexpr (is_output<T>) {
+            if constexpr (is_output_channel<T>) {  // the chart's own: its const set() is an error
                 answer = what + " is an output: only inputs can be set";
             } else if constexpr (!recorded::is_scalar_variable<V>) {
                 answer = what + " is not of a scalar type";

@@ -180,20 +180,6 @@ struct link_entry : std::bool_constant<is_link<T>> {};
 template <class T>
 struct from_outside_entry : std::bool_constant<is_from_outside<T>> {};
 
-// Channel kinds: bsc::input, bsc::output, bsc::inout (each only itself).
-template <class T>
-inline constexpr bool is_input_channel = false;
-template <class T>
-inline constexpr bool is_input_channel<input<T>> = true;
-template <class T>
-inline constexpr bool is_output_channel = false;
-template <class T>
-inline constexpr bool is_output_channel<output<T>> = true;
-template <class T>
-inline constexpr bool is_inout_channel = false;
-template <class T>
-inline constexpr bool is_inout_channel<inout<T>> = true;
-
 // An actor of Actors that has a context (a machine), and the member Channel of that context.
 template <class Actors, auto Actor>
 concept actor_with_context = requires(Actors const& actors) {

@@ -30,6 +30,7 @@
 
 #include <bsc/detail/access.hpp>
 #include <bsc/detail/export/model.hpp>
+#include <bsc/detail/member_path.hpp>
 #include <bsc/detail/members.hpp>
 #include <bsc/detail/model/chart_model.hpp>
 #include <bsc/detail/recorded_members.hpp>
@@ -241,8 +242,8 @@ private:
 
         tracer& self;
         std::int64_t time;
-        std::size_t next = 0;                 // the member's number
-        detail::recorded::dotted_path& path;  // the tracer's, whose memory each sample reuses
+        std::size_t next = 0;       // the member's number
+        detail::member_path& path;  // the tracer's, whose memory each sample reuses
         std::byte payload[detail::trace::max_payload]{};
         std::byte* end = nullptr;
 
@@ -286,8 +287,8 @@ private:
     std::int64_t delay_ = 0;
     bool deferring_ = false;
     bool members_named_ = false;
-    std::vector<std::uint64_t> last_;     // each member's last value written
-    detail::recorded::dotted_path path_;  // the member names of sample()'s walk
+    std::vector<std::uint64_t> last_;  // each member's last value written
+    detail::member_path path_;         // the member names of sample()'s walk
 };
 
 template <class Chart>

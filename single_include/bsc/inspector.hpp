@@ -285,6 +285,55 @@ private:
 
 }  // namespace bsc::detail::inspector
 // end include/bsc/detail/inspector/http.hpp
+// begin include/bsc/detail/member_path.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
+// The dotted name of a member during a named walk of a context (detail/members.hpp): "axis.position",
+// "dwell.running". The explorer's codec names the fields of a state with it, the trace names the
+// members it samples, and the inspector finds the input a page sets by it. Its own header: the
+// machines' walks name nothing and need no strings.
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bsc::detail {
+
+class member_path {
+public:
+    /// Enters the scope `name` (an unnamed one, the walk's root, adds nothing); each is left again
+    /// in order.
+    void enter(std::string_view name) {
+        starts_.push_back(text_.size());
+        if (name.empty()) return;
+        if (!text_.empty()) text_ += '.';
+        text_ += name;
+    }
+    void leave() {
+        if (starts_.empty()) return;
+        text_.resize(starts_.back());
+        starts_.pop_back();
+    }
+    /// The full name of the member `name` in the present scope (of "" the scope's own).
+    std::string of(std::string_view name) const {
+        if (text_.empty()) return std::string{name};
+        return name.empty() ? text_ : text_ + "." + std::string{name};
+    }
+    /// Back to no scope, keeping the memory, so that a walk after the first allocates nothing.
+    void clear() {
+        text_.clear();
+        starts_.clear();
+    }
+
+private:
+    std::string text_;
+    std::vector<std::size_t> starts_;  // text_'s length before each scope entered
+};
+
+}  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
+// end include/bsc/detail/member_path.hpp
 // begin include/bsc/detail/recorded_members.hpp
 #ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
 #define BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
@@ -297,7 +346,6 @@ private:
 #include <string>
 #include <string_view>
 #include <type_traits>
-#include <vector>
 
 
 namespace bsc::detail::recorded {
@@ -369,6 +417,11 @@ constexpr bool is_recorded() {
         return is_timer<T> || is_scalar_variable<T>;
 }
 
+// An array's element as the recorders name it: name_0, name_1, ...
+inline std::string element_name(std::string_view name, std::size_t i) {
+    return std::string{name} + "_" + std::to_string(i);
+}
+
 // Walks a context's recorded members, calling the visitor's scope(name), upscope() and
 // var(kind, width, name, value), in declaration order: a struct is a scope, a timer a scope of
 // three variables, an array's elements are name_0, name_1, ...
@@ -378,9 +431,7 @@ struct recorded_members {
     template <class T>
     static constexpr bool visits = is_recorded<T>();
     Visitor& v;
-    std::string element_name(std::string_view name, std::size_t i) const {
-        return std::string{name} + "_" + std::to_string(i);
-    }
+    std::string element_name(std::string_view name, std::size_t i) const { return recorded::element_name(name, i); }
     void enter(std::string_view name) { v.scope(name); }
     void leave() { v.upscope(); }
     template <class T>
@@ -398,32 +449,6 @@ struct recorded_members {
             v.var(var_kind_of<T>(), width_of<T>(), name, scalar_value(member));
         }
     }
-};
-
-// The dotted name of a member during a walk: "axis.position", "dwell.running". Each scope
-// entered is left again in order, an unnamed one (the walk's root) too.
-class dotted_path {
-public:
-    void enter(std::string_view name) {
-        starts_.push_back(text_.size());
-        if (!name.empty()) text_.append(name).push_back('.');
-    }
-    void leave() {
-        if (starts_.empty()) return;
-        text_.resize(starts_.back());
-        starts_.pop_back();
-    }
-    /// The full name of the member `name` in the present scope.
-    std::string of(std::string_view name) const { return text_ + std::string{name}; }
-    /// Back to no scope, keeping the memory, so that a walk after the first allocates nothing.
-    void clear() {
-        text_.clear();
-        starts_.clear();
-    }
-
-private:
-    std::string text_;
-    std::vector<std::size_t> starts_;  // text_'s length before each scope entered
 };
 
 }  // namespace bsc::detail::recorded
@@ -488,12 +513,6 @@ auto* tracer_of(observers<Parts...>& o) {
         return static_cast<no_tracer*>(nullptr);
 }
 
-// An output channel: the chart's own, never set from outside (its const set() is an error).
-template <class T>
-inline constexpr bool is_output = false;
-template <class V>
-inline constexpr bool is_output<output<V>> = true;
-
 // Finds the context member named `path` (dotted, as the trace names members) in a walk
 // (detail/members.hpp) and, if it is an input of a scalar type, sets it to the value `text`
 // reads as; `answer` is then empty, or says why not.
@@ -501,13 +520,12 @@ struct input_setter {
     static constexpr bool named = true;
     std::string_view path;
     std::string_view text;
-    recorded::dotted_path prefix;
+    member_path prefix;
     std::string answer;
     bool found = false;
 
-    std::string element_name(std::string_view name, std::size_t i) const {
-        return std::string{name} + "_" + std::to_string(i);
-    }
+    // As the trace names them (the page sets what the trace showed it).
+    std::string element_name(std::string_view name, std::size_t i) const { return recorded::element_name(name, i); }
     void enter(std::string_view name) { prefix.enter(name); }
     void leave() { prefix.leave(); }
     template <class T>
@@ -517,7 +535,7 @@ struct input_setter {
         std::string const what{path};
         if constexpr (is_channel<T>) {
             using V = channel_value<T>;
-            if constexpr (is_output<T>) {
+            if constexpr (is_output_channel<T>) {  // the chart's own: its const set() is an error
                 answer = what + " is an output: only inputs can be set";
             } else if constexpr (!recorded::is_scalar_variable<V>) {
                 answer = what + " is not of a scalar type";

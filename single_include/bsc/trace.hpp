@@ -503,6 +503,55 @@ inline std::vector<std::string> activity_lines(diagram const& m, int s) {
 }  // namespace bsc::detail
 #endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_EXPORT_MODEL_HPP
 // end include/bsc/detail/export/model.hpp
+// begin include/bsc/detail/member_path.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
+// The dotted name of a member during a named walk of a context (detail/members.hpp): "axis.position",
+// "dwell.running". The explorer's codec names the fields of a state with it, the trace names the
+// members it samples, and the inspector finds the input a page sets by it. Its own header: the
+// machines' walks name nothing and need no strings.
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bsc::detail {
+
+class member_path {
+public:
+    /// Enters the scope `name` (an unnamed one, the walk's root, adds nothing); each is left again
+    /// in order.
+    void enter(std::string_view name) {
+        starts_.push_back(text_.size());
+        if (name.empty()) return;
+        if (!text_.empty()) text_ += '.';
+        text_ += name;
+    }
+    void leave() {
+        if (starts_.empty()) return;
+        text_.resize(starts_.back());
+        starts_.pop_back();
+    }
+    /// The full name of the member `name` in the present scope (of "" the scope's own).
+    std::string of(std::string_view name) const {
+        if (text_.empty()) return std::string{name};
+        return name.empty() ? text_ : text_ + "." + std::string{name};
+    }
+    /// Back to no scope, keeping the memory, so that a walk after the first allocates nothing.
+    void clear() {
+        text_.clear();
+        starts_.clear();
+    }
+
+private:
+    std::string text_;
+    std::vector<std::size_t> starts_;  // text_'s length before each scope entered
+};
+
+}  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
+// end include/bsc/detail/member_path.hpp
 // begin include/bsc/detail/recorded_members.hpp
 #ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
 #define BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
@@ -515,7 +564,6 @@ inline std::vector<std::string> activity_lines(diagram const& m, int s) {
 #include <string>
 #include <string_view>
 #include <type_traits>
-#include <vector>
 
 
 namespace bsc::detail::recorded {
@@ -587,6 +635,11 @@ constexpr bool is_recorded() {
         return is_timer<T> || is_scalar_variable<T>;
 }
 
+// An array's element as the recorders name it: name_0, name_1, ...
+inline std::string element_name(std::string_view name, std::size_t i) {
+    return std::string{name} + "_" + std::to_string(i);
+}
+
 // Walks a context's recorded members, calling the visitor's scope(name), upscope() and
 // var(kind, width, name, value), in declaration order: a struct is a scope, a timer a scope of
 // three variables, an array's elements are name_0, name_1, ...
@@ -596,9 +649,7 @@ struct recorded_members {
     template <class T>
     static constexpr bool visits = is_recorded<T>();
     Visitor& v;
-    std::string element_name(std::string_view name, std::size_t i) const {
-        return std::string{name} + "_" + std::to_string(i);
-    }
+    std::string element_name(std::string_view name, std::size_t i) const { return recorded::element_name(name, i); }
     void enter(std::string_view name) { v.scope(name); }
     void leave() { v.upscope(); }
     template <class T>
@@ -616,32 +667,6 @@ struct recorded_members {
             v.var(var_kind_of<T>(), width_of<T>(), name, scalar_value(member));
         }
     }
-};
-
-// The dotted name of a member during a walk: "axis.position", "dwell.running". Each scope
-// entered is left again in order, an unnamed one (the walk's root) too.
-class dotted_path {
-public:
-    void enter(std::string_view name) {
-        starts_.push_back(text_.size());
-        if (!name.empty()) text_.append(name).push_back('.');
-    }
-    void leave() {
-        if (starts_.empty()) return;
-        text_.resize(starts_.back());
-        starts_.pop_back();
-    }
-    /// The full name of the member `name` in the present scope.
-    std::string of(std::string_view name) const { return text_ + std::string{name}; }
-    /// Back to no scope, keeping the memory, so that a walk after the first allocates nothing.
-    void clear() {
-        text_.clear();
-        starts_.clear();
-    }
-
-private:
-    std::string text_;
-    std::vector<std::size_t> starts_;  // text_'s length before each scope entered
 };
 
 }  // namespace bsc::detail::recorded
@@ -1085,8 +1110,8 @@ private:
 
         tracer& self;
         std::int64_t time;
-        std::size_t next = 0;                 // the member's number
-        detail::recorded::dotted_path& path;  // the tracer's, whose memory each sample reuses
+        std::size_t next = 0;       // the member's number
+        detail::member_path& path;  // the tracer's, whose memory each sample reuses
         std::byte payload[detail::trace::max_payload]{};
         std::byte* end = nullptr;
 
@@ -1130,8 +1155,8 @@ private:
     std::int64_t delay_ = 0;
     bool deferring_ = false;
     bool members_named_ = false;
-    std::vector<std::uint64_t> last_;     // each member's last value written
-    detail::recorded::dotted_path path_;  // the member names of sample()'s walk
+    std::vector<std::uint64_t> last_;  // each member's last value written
+    detail::member_path path_;         // the member names of sample()'s walk
 };
 
 template <class Chart>

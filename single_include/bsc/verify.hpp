@@ -49,6 +49,55 @@ struct encoded_field {
 
 }  // namespace bsc::detail
 // end include/bsc/detail/key_field.hpp
+// begin include/bsc/detail/member_path.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
+// The dotted name of a member during a named walk of a context (detail/members.hpp): "axis.position",
+// "dwell.running". The explorer's codec names the fields of a state with it, the trace names the
+// members it samples, and the inspector finds the input a page sets by it. Its own header: the
+// machines' walks name nothing and need no strings.
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bsc::detail {
+
+class member_path {
+public:
+    /// Enters the scope `name` (an unnamed one, the walk's root, adds nothing); each is left again
+    /// in order.
+    void enter(std::string_view name) {
+        starts_.push_back(text_.size());
+        if (name.empty()) return;
+        if (!text_.empty()) text_ += '.';
+        text_ += name;
+    }
+    void leave() {
+        if (starts_.empty()) return;
+        text_.resize(starts_.back());
+        starts_.pop_back();
+    }
+    /// The full name of the member `name` in the present scope (of "" the scope's own).
+    std::string of(std::string_view name) const {
+        if (text_.empty()) return std::string{name};
+        return name.empty() ? text_ : text_ + "." + std::string{name};
+    }
+    /// Back to no scope, keeping the memory, so that a walk after the first allocates nothing.
+    void clear() {
+        text_.clear();
+        starts_.clear();
+    }
+
+private:
+    std::string text_;
+    std::vector<std::size_t> starts_;  // text_'s length before each scope entered
+};
+
+}  // namespace bsc::detail
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
+// end include/bsc/detail/member_path.hpp
 // begin include/bsc/detail/state_bytes.hpp
 #ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_STATE_BYTES_HPP
 #define BSC_SINGLE_INCLUDE_BSC_DETAIL_STATE_BYTES_HPP
@@ -1019,27 +1068,16 @@ struct encode_visitor {
     bit_writer& out;
     time_frame frame;
     std::vector<encoded_field>* fields = nullptr;
-    std::string path{};
-    std::vector<std::size_t> scopes{};
+    member_path path{};
 
     static constexpr bool named = true;
     std::string element_name(std::string_view name, std::size_t i) const {
         return std::string{name} + "[" + std::to_string(i) + "]";
     }
-    void enter(std::string_view name) {
-        scopes.push_back(path.size());
-        if (!name.empty()) path += (path.empty() ? "" : ".") + std::string{name};
-    }
-    void leave() {
-        path.resize(scopes.back());
-        scopes.pop_back();
-    }
-    std::string full(std::string_view name) const {
-        if (path.empty()) return std::string{name};
-        return name.empty() ? path : path + "." + std::string{name};
-    }
+    void enter(std::string_view name) { path.enter(name); }
+    void leave() { path.leave(); }
     void record(std::string_view name, std::size_t first) {
-        if (fields != nullptr && out.bits() > first) fields->push_back({full(name), first, out.bits() - first});
+        if (fields != nullptr && out.bits() > first) fields->push_back({path.of(name), first, out.bits() - first});
     }
 
     template <class T, class Name>

@@ -140,6 +140,20 @@ inline constexpr bool is_channel = std::is_base_of_v<detail::channel_base, T>;
 }  // namespace bsc
 
 namespace bsc::detail {
+// Channel kinds: bsc::input, bsc::output, bsc::inout (each only itself).
+template <class T>
+inline constexpr bool is_input_channel = false;
+template <class T>
+inline constexpr bool is_input_channel<input<T>> = true;
+template <class T>
+inline constexpr bool is_output_channel = false;
+template <class T>
+inline constexpr bool is_output_channel<output<T>> = true;
+template <class T>
+inline constexpr bool is_inout_channel = false;
+template <class T>
+inline constexpr bool is_inout_channel<inout<T>> = true;
+
 // The type of a channel's value.
 template <class Channel>
 using channel_value = std::remove_cvref_t<decltype(std::declval<Channel const&>().get())>;

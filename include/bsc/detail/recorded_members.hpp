@@ -8,7 +8,6 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
-#include <vector>
 
 #include <bsc/data/channel.hpp>
 #include <bsc/data/timer.hpp>
@@ -83,6 +82,11 @@ constexpr bool is_recorded() {
         return is_timer<T> || is_scalar_variable<T>;
 }
 
+// An array's element as the recorders name it: name_0, name_1, ...
+inline std::string element_name(std::string_view name, std::size_t i) {
+    return std::string{name} + "_" + std::to_string(i);
+}
+
 // Walks a context's recorded members, calling the visitor's scope(name), upscope() and
 // var(kind, width, name, value), in declaration order: a struct is a scope, a timer a scope of
 // three variables, an array's elements are name_0, name_1, ...
@@ -92,9 +96,7 @@ struct recorded_members {
     template <class T>
     static constexpr bool visits = is_recorded<T>();
     Visitor& v;
-    std::string element_name(std::string_view name, std::size_t i) const {
-        return std::string{name} + "_" + std::to_string(i);
-    }
+    std::string element_name(std::string_view name, std::size_t i) const { return recorded::element_name(name, i); }
     void enter(std::string_view name) { v.scope(name); }
     void leave() { v.upscope(); }
     template <class T>
@@ -112,32 +114,6 @@ struct recorded_members {
             v.var(var_kind_of<T>(), width_of<T>(), name, scalar_value(member));
         }
     }
-};
-
-// The dotted name of a member during a walk: "axis.position", "dwell.running". Each scope
-// entered is left again in order, an unnamed one (the walk's root) too.
-class dotted_path {
-public:
-    void enter(std::string_view name) {
-        starts_.push_back(text_.size());
-        if (!name.empty()) text_.append(name).push_back('.');
-    }
-    void leave() {
-        if (starts_.empty()) return;
-        text_.resize(starts_.back());
-        starts_.pop_back();
-    }
-    /// The full name of the member `name` in the present scope.
-    std::string of(std::string_view name) const { return text_ + std::string{name}; }
-    /// Back to no scope, keeping the memory, so that a walk after the first allocates nothing.
-    void clear() {
-        text_.clear();
-        starts_.clear();
-    }
-
-private:
-    std::string text_;
-    std::vector<std::size_t> starts_;  // text_'s length before each scope entered
 };
 
 }  // namespace bsc::detail::recorded

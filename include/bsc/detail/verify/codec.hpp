@@ -24,6 +24,7 @@
 #include <bsc/machine.hpp>
 #include <bsc/data/timer.hpp>
 #include <bsc/detail/key_field.hpp>
+#include <bsc/detail/member_path.hpp>
 #include <bsc/detail/members.hpp>
 #include <bsc/detail/state_bytes.hpp>
 #include <bsc/detail/runtime/driver.hpp>
@@ -269,27 +270,16 @@ struct encode_visitor {
     bit_writer& out;
     time_frame frame;
     std::vector<encoded_field>* fields = nullptr;
-    std::string path{};
-    std::vector<std::size_t> scopes{};
+    member_path path{};
 
     static constexpr bool named = true;
     std::string element_name(std::string_view name, std::size_t i) const {
         return std::string{name} + "[" + std::to_string(i) + "]";
     }
-    void enter(std::string_view name) {
-        scopes.push_back(path.size());
-        if (!name.empty()) path += (path.empty() ? "" : ".") + std::string{name};
-    }
-    void leave() {
-        path.resize(scopes.back());
-        scopes.pop_back();
-    }
-    std::string full(std::string_view name) const {
-        if (path.empty()) return std::string{name};
-        return name.empty() ? path : path + "." + std::string{name};
-    }
+    void enter(std::string_view name) { path.enter(name); }
+    void leave() { path.leave(); }
     void record(std::string_view name, std::size_t first) {
-        if (fields != nullptr && out.bits() > first) fields->push_back({full(name), first, out.bits() - first});
+        if (fields != nullptr && out.bits() > first) fields->push_back({path.of(name), first, out.bits() - first});
     }
 
     template <class T, class Name>
