@@ -8,8 +8,8 @@ all other includes are kept as they are. The opt-in parts, the explorer (include
 (include/bsc/retain.hpp), the VCD recorder (include/bsc/vcd.hpp) and the distributed
 systems (include/bsc/net.hpp, and include/bsc/mqtt.hpp over MQTT), the Boost.Hana adapter
 (include/bsc/adapt/hana.hpp, as hana.hpp), several observers as one (include/bsc/observers.hpp),
-the trace stream (include/bsc/trace.hpp, include/bsc/trace_reader.hpp) and the inspector
-(include/bsc/inspector.hpp), become files of
+the trace stream (include/bsc/trace.hpp, include/bsc/trace_reader.hpp) and the inspectors
+(include/bsc/inspector.hpp, include/bsc/system_inspector.hpp), become files of
 their own that include the first and add only what it lacks; a part whose entry
 includes another part's entry includes that part's single header instead of a copy of
 it (net.hpp includes retain.hpp, mqtt.hpp includes net.hpp); a header two of them
@@ -39,6 +39,7 @@ OBSERVERS_ENTRY = INCLUDE_DIR / "bsc" / "observers.hpp"
 TRACE_ENTRY = INCLUDE_DIR / "bsc" / "trace.hpp"
 TRACE_READER_ENTRY = INCLUDE_DIR / "bsc" / "trace_reader.hpp"
 INSPECTOR_ENTRY = INCLUDE_DIR / "bsc" / "inspector.hpp"
+SYSTEM_INSPECTOR_ENTRY = INCLUDE_DIR / "bsc" / "system_inspector.hpp"
 DEFAULT_OUTPUT = ROOT / "single_include" / "bsc" / "bsc.hpp"
 COMMAND = "python3 scripts/amalgamate.py"
 
@@ -149,6 +150,15 @@ INSPECTOR_HEADER = f"""\
 #include "bsc.hpp"
 """
 
+SYSTEM_INSPECTOR_HEADER = f"""\
+#pragma once
+// bsc::system_inspector - a live view of a system in the browser, single-header distribution (needs bsc.hpp and
+// inspector.hpp beside it; POSIX).
+// Generated from include/bsc/system_inspector.hpp by `{COMMAND}`.
+// Do not edit: change the headers under include/ and regenerate.
+#include "bsc.hpp"
+"""
+
 
 def relative(path: Path) -> str:
     return path.relative_to(ROOT).as_posix()
@@ -211,7 +221,8 @@ PARTS = [(VERIFY_ENTRY, VERIFY_HEADER, "verify.hpp"), (EXPORT_ENTRY, EXPORT_HEAD
          (MQTT_ENTRY, MQTT_HEADER, "mqtt.hpp"), (HANA_ENTRY, HANA_HEADER, "hana.hpp"),
          (OBSERVERS_ENTRY, OBSERVERS_HEADER, "observers.hpp"), (TRACE_ENTRY, TRACE_HEADER, "trace.hpp"),
          (TRACE_READER_ENTRY, TRACE_READER_HEADER, "trace_reader.hpp"),
-         (INSPECTOR_ENTRY, INSPECTOR_HEADER, "inspector.hpp")]
+         (INSPECTOR_ENTRY, INSPECTOR_HEADER, "inspector.hpp"),
+         (SYSTEM_INSPECTOR_ENTRY, SYSTEM_INSPECTOR_HEADER, "system_inspector.hpp")]
 
 
 def amalgamate() -> list[tuple[str, str]]:

@@ -1,6 +1,7 @@
 # inspector.*: the inspector's page in a real browser (tests/inspector/inspector_test.mjs):
 # Debian's Chromium, headless, driven by playwright-core from web/node_modules. inspector.live
-# runs the MCS with its view and pushes buttons on the page; inspector.replay opens a recorded
+# runs the MCS with its view and pushes buttons on the page; inspector.system watches and drives
+# the production cell, a system of ten actors; inspector.replay opens a recorded
 # run of the manufacturing cell from file:// and steps through it. Screenshots go to
 # <build>/tests/inspector/. Without Node.js, Chromium or the npm packages (scripts/run deps
 # installs them; the build copies elk.bundled.js beside the page) the tests report skipped,
@@ -19,6 +20,12 @@ add_test(NAME inspector.live
   COMMAND ${bsc_browser_test} live --program $<TARGET_FILE:mcs> --out ${bsc_inspector_out}
     --node-modules ${bsc_node_modules})
 
+# inspector.system: the production cell with its view, one panel per actor and the links
+# between them; the page shows another actor's chart, pauses and steps the cell, sets an input.
+add_test(NAME inspector.system
+  COMMAND ${bsc_browser_test} system --program $<TARGET_FILE:production_cell> --out ${bsc_inspector_out}
+    --node-modules ${bsc_node_modules})
+
 # The recorded run the replay opens: two pieces through the cell.
 add_test(NAME inspector.record_cell
   COMMAND manufacturing_cell --quiet --pieces 2 --trace ${bsc_inspector_out}/cell.bsctrace)
@@ -29,5 +36,5 @@ add_test(NAME inspector.replay
 set_tests_properties(inspector.replay PROPERTIES FIXTURES_REQUIRED bsc_cell_trace)
 
 file(MAKE_DIRECTORY ${bsc_inspector_out})
-set_tests_properties(inspector.live inspector.replay PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 150 LABELS browser
+set_tests_properties(inspector.live inspector.system inspector.replay PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 150 LABELS browser
   RESOURCE_LOCK browser)

@@ -2,7 +2,7 @@
 # sources as bsc_tests with single_include/ before include/ on the include path, so that
 # <bsc/bsc.hpp> and the opt-in parts' headers (<bsc/verify.hpp>, <bsc/export.hpp>, <bsc/logger.hpp>,
 # <bsc/retain.hpp>, <bsc/vcd.hpp>, <bsc/net.hpp>, <bsc/observers.hpp>, <bsc/trace.hpp>,
-# <bsc/trace_reader.hpp>, <bsc/inspector.hpp>) are the generated single headers. (<bsc/mqtt.hpp>
+# <bsc/trace_reader.hpp>, <bsc/inspector.hpp>, <bsc/system_inspector.hpp>) are the generated single headers. (<bsc/mqtt.hpp>
 # needs libmosquitto, which the unit tests do not use.)
 # It doubles the compile time of the unit tests; BSC_TEST_SINGLE_HEADER=OFF leaves it out (the
 # dev preset does; the clang preset builds it instead of the unit tests against include/).
@@ -18,7 +18,7 @@ if(BSC_TEST_SINGLE_HEADER)
   set(bsc_single_dir ${PROJECT_SOURCE_DIR}/single_include)
   set(bsc_forward_dir ${CMAKE_CURRENT_BINARY_DIR}/single_include_forward)
   foreach(umbrella IN ITEMS bsc.hpp verify.hpp export.hpp logger.hpp retain.hpp vcd.hpp net.hpp observers.hpp trace.hpp
-                           trace_reader.hpp inspector.hpp)
+                           trace_reader.hpp inspector.hpp system_inspector.hpp)
     set(single ${bsc_single_dir}/bsc/${umbrella})
     if(NOT EXISTS ${single})
       message(FATAL_ERROR "${single} is missing; run `python3 scripts/amalgamate.py`")

@@ -3,15 +3,34 @@
 // in which a controller's state or a brick's place changes, then a summary, and fails (exit
 // status 1) if a plant model reaches Damage, a brick is lost, or a brick leaves unforged or not
 // at all within the time limit.
+//
+//   production_cell --inspect PORT [--commands] [--web-root DIR] [--period-ms MS]
+//     runs the cell in real time, a brick offered every 15 s, watched in the browser: one panel
+//     per actor and the links between them (bsc::system_inspector, docs/inspector.md). With
+//     --commands the page may pause and step the cell and set the operator's inputs. It stops
+//     at the end of standard input or at a line "quit".
+
+#include <poll.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <iostream>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <bsc/system_inspector.hpp>
+
+#include "inspected.hpp"
 #include "operation.hpp"
+
+#ifndef BSC_CELL_WEB_ROOT
+#define BSC_CELL_WEB_ROOT ""
+#endif
 
 namespace {
 
@@ -33,7 +52,8 @@ std::string states(Machine const& m) {
     return out;
 }
 
-std::string line(pcell::cell const& s) {
+template <class System>
+std::string line(System const& s) {
     auto const& a = s.actors;
     return "feed " + states(a.feed_belt) + " | table " + states(a.table) + " | robot " + states(a.robot) + " | press " +
            states(a.press) + " | deposit " + states(a.deposit_belt) + " || " + pcell::picture(s);
@@ -41,9 +61,8 @@ std::string line(pcell::cell const& s) {
 
 double seconds(bsc::duration d) { return std::chrono::duration<double>(d).count(); }
 
-}  // namespace
-
-int main() {
+/// The checked run: five bricks, as fast as the machine goes.
+int run_checked() {
     // Two bricks at once, one shortly after, then two more later.
     std::vector<bsc::duration> const offers{0s, 0s, 2s, 15s, 16s};
     constexpr auto time_limit = 90s;
@@ -85,4 +104,106 @@ int main() {
     }
     if (ok) std::printf("ok: every brick forged and deposited, no Damage\n");
     return ok ? 0 : 1;
+}
+
+struct options {
+    int inspect = -1;  // the inspector's port, if any
+    bool commands = false;
+    std::string web_root = BSC_CELL_WEB_ROOT;
+    int period_ms = 100;  // wall time per step
+};
+
+// The cell in real time, watched from the browser: the inspector serves the page between steps;
+// standard input, read without blocking, ends the run at its end or at "quit".
+int run_inspected(options const& o) {
+    std::vector<bsc::duration> offers;
+    for (int k = 0; k < 250; ++k) offers.push_back(std::chrono::seconds{15 * k});  // a brick id is one byte
+    pcell::run<pcell::traced_cell> r{offers};
+    bsc::inspector_options view_options;
+    view_options.port = static_cast<std::uint16_t>(o.inspect);
+    view_options.commands = o.commands;
+    view_options.stepping = true;
+    view_options.web_root = o.web_root;
+    view_options.on_command = [&r](std::string_view command, std::string_view answer) {
+        std::cout << "  page: " << command << " -> " << answer << " (at " << seconds(r.now()) << " s)" << std::endl;
+    };
+    bsc::system_inspector view{r.cell, std::move(view_options)};
+    view.sample();
+    std::cout << "production cell, inspected: 'quit' or the end of input leaves\n"
+              << "inspect: " << view.url() << (o.commands ? "" : " (read-only: --commands lets the page drive it)")
+              << std::endl;
+    auto const period = std::chrono::milliseconds{o.period_ms};
+    auto next = std::chrono::steady_clock::now();
+    std::string previous, pending;
+    for (;;) {
+        auto const now = std::chrono::steady_clock::now();
+        auto const wait = std::chrono::ceil<std::chrono::milliseconds>(next - now);
+        view.poll(std::clamp(wait, std::chrono::milliseconds{0}, std::chrono::milliseconds{50}));
+        if (std::chrono::steady_clock::now() >= next || view.paused()) {
+            if (view.may_step()) {
+                auto const t = r.now();
+                r.step();
+                view.sample();
+                auto const changed = line(r.cell);
+                if (changed != previous) std::printf("%6.1f s  %s\n", seconds(t), changed.c_str());
+                previous = changed;
+                std::fflush(stdout);
+                // Late (a slow poll, a pause just ended): start the pace again from now.
+                next = std::max(next + period, std::chrono::steady_clock::now());
+            }
+        }
+        pollfd input{0, POLLIN, 0};
+        if (::poll(&input, 1, 0) <= 0 || (input.revents & (POLLIN | POLLHUP)) == 0) continue;
+        char chunk[256];
+        ssize_t const n = ::read(0, chunk, sizeof chunk);
+        if (n <= 0) break;
+        pending.append(chunk, static_cast<std::size_t>(n));
+        if (pending.find("quit") != std::string::npos) break;
+    }
+    if (!pcell::no_damage(r.cell)) {
+        std::printf("FAILED: Damage in %s\n", pcell::damaged(r.cell).c_str());
+        return 1;
+    }
+    return 0;
+}
+
+bool read_number(std::string_view text, int low, int high, int& value) {
+    auto const r = std::from_chars(text.data(), text.data() + text.size(), value);
+    return r.ec == std::errc{} && r.ptr == text.data() + text.size() && value >= low && value <= high;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    options o;
+    bool bad = false, asked = false;
+    for (int i = 1; i < argc && !bad; ++i) {
+        std::string_view const a = argv[i];
+        if (a == "--inspect" && i + 1 < argc && o.inspect < 0) {
+            bad = !read_number(argv[++i], 0, 65535, o.inspect);
+        } else if (a == "--commands" && !o.commands) {
+            o.commands = true;
+        } else if (a == "--web-root" && i + 1 < argc) {
+            o.web_root = argv[++i];
+        } else if (a == "--period-ms" && i + 1 < argc) {
+            bad = !read_number(argv[++i], 1, 10000, o.period_ms);
+        } else if (a == "--help") {
+            asked = true;
+        } else {
+            bad = true;
+        }
+    }
+    if (bad || asked || (o.inspect < 0 && (o.commands || argc > 1))) {
+        (asked ? std::cout : std::cerr)
+            << "usage: production_cell [--inspect PORT [--commands] [--web-root DIR] [--period-ms MS]]\n"
+               "  (no flag)        the checked run: five bricks, a summary, exit status 1 on a failure\n"
+               "  --inspect PORT   the cell in real time, a brick every 15 s, served to the browser at\n"
+               "                   http://127.0.0.1:PORT/ (0: any free port); ends at 'quit' or the end of input\n"
+               "  --commands       let the page pause, step and set the operator's inputs (default: read-only)\n"
+               "  --web-root DIR   the inspector page's folder (default: the build's, " BSC_CELL_WEB_ROOT
+               ")\n"
+               "  --period-ms MS   wall time per step of 100 ms of the cell's time (default: 100)\n";
+        return asked ? 0 : 2;
+    }
+    return o.inspect >= 0 ? run_inspected(o) : run_checked();
 }

@@ -24,40 +24,21 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <fstream>
-#include <functional>
-#include <iterator>
 #include <string>
 #include <string_view>
 #include <type_traits>
-#include <vector>
 
-#include <bsc/detail/inspector/http.hpp>
+#include <bsc/detail/inspector/site.hpp>
 #include <bsc/detail/member_path.hpp>
 #include <bsc/detail/members.hpp>
 #include <bsc/detail/recorded_members.hpp>
+#include <bsc/inspector_options.hpp>
 #include <bsc/observers.hpp>
 #include <bsc/outcome.hpp>
 #include <bsc/trace.hpp>
 #include <bsc/trace_buffer.hpp>
 
 namespace bsc {
-
-/// How an inspector serves.
-struct inspector_options {
-    std::uint16_t port = 0;  ///< the port on 127.0.0.1; 0: one the system picks (port() tells)
-    bool commands = false;   ///< run the page's commands: dispatch, set, pause, resume, step
-    /// The program asks may_step() before each step, so that the page may pause it and step it
-    /// one step at a time (a scan loop).
-    bool stepping = false;
-    std::string web_root;  ///< the folder of the page's files (index.html, inspector.js, ...)
-    /// The trace bytes kept for a page that opens later; past it the history starts again with
-    /// the dictionary and the configuration written anew.
-    std::size_t history_limit = std::size_t{64} << 20;
-    /// Called after each command the page sent, with the command and the answer it got (the
-    /// program's own log of what was done to it).
-    std::function<void(std::string_view command, std::string_view answer)> on_command;
-};
 
 namespace detail::inspector {
 
@@ -180,204 +161,77 @@ class inspector {
 public:
     /// Listens on 127.0.0.1:options.port; throws std::system_error if it cannot.
     inspector(Machine& machine, trace_buffer& buffer, inspector_options options)
-        : machine_(machine), buffer_(buffer), options_(std::move(options)), server_(options_.port) {
+        : machine_(machine), history_(&buffer), site_(std::move(options)) {
         static_assert(!std::is_same_v<decltype(tracer()), detail::inspector::no_tracer*>,
                       "bsc::inspector: the machine's observer must be a bsc::tracer, or a bsc::observers holding one");
     }
 
     /// The port it listens on.
-    std::uint16_t port() const { return server_.port(); }
+    std::uint16_t port() const { return site_.port(); }
     /// The page's address: "http://127.0.0.1:<port>/".
-    std::string url() const { return "http://127.0.0.1:" + std::to_string(port()) + "/"; }
+    std::string url() const { return site_.url(); }
 
     /// Moves the trace into the history, then serves the requests that arrive within `wait`
     /// (and runs their commands).
     void poll(std::chrono::milliseconds wait = {}) {
         collect();
-        server_.serve(wait, [this](detail::inspector::request const& r) { return answer(r); });
+        site_.serve(wait, *this);
         collect();
     }
 
     /// For a scan loop: whether to run the next step. Always true while not paused; while
     /// paused, true once for each "step" command.
-    bool may_step() {
-        if (!paused_) return true;
-        if (steps_ == 0) return false;
-        --steps_;
-        return true;
-    }
+    bool may_step() { return site_.may_step(); }
     /// Whether the page paused the machine.
-    bool paused() const { return paused_; }
+    bool paused() const { return site_.paused(); }
     /// The commands run so far.
-    std::uint64_t commands_run() const { return commands_; }
+    std::uint64_t commands_run() const { return site_.commands_run(); }
     /// The trace bytes the page can read (from its start, less what the history let go).
-    std::size_t trace_end() const { return base_ + history_.size(); }
+    std::size_t trace_end() const { return history_.end(); }
 
 private:
-    using response = detail::inspector::response;
+    // The site's handler (detail/inspector/site.hpp): the machine's own answers.
+    friend class detail::inspector::site;
+    detail::inspector::response info(std::string const& run) const {
+        std::string body = "{\"chart\": \"" + detail::inspector::json_name(detail::state_names_of<model>[1]) + "\", ";
+        return {200, "application/json", body + run + "}", {}};
+    }
+    detail::inspector::response trace(std::string_view query) const {
+        return history_.answer(detail::inspector::query_number(query, "from"));
+    }
+    detail::inspector::response command(std::string_view verb, std::string_view rest) {
+        using detail::inspector::text;
+        if (verb == "dispatch" && !rest.empty()) {
+            outcome const o = machine_.dispatch_by_name(rest);
+            tracer()->sample(machine_);
+            if (o == outcome::unknown_event)
+                return text(400, "no event of this chart is named '" + std::string{rest} + "'");
+            return text(200, "ok " + std::string{rest} + ": " + detail::inspector::outcome_text(o));
+        }
+        if (verb == "set" && !rest.empty()) {
+            auto const [member, value] = detail::inspector::split_word(rest);
+            if (value.empty()) return text(400, "set <input> <value>");
+            std::string const why = detail::inspector::set_input(machine_.context(), member, value);
+            if (!why.empty()) return text(400, why);
+            return text(200, "ok " + std::string{member} + " = " + std::string{value} +
+                                 (site_.options().stepping ? " (latched at the next step)" : ""));
+        }
+        return text(400, "commands: dispatch <event>, set <input> <value>, pause, resume, step");
+    }
 
     void collect() {
-        drain();
-        if (history_.size() > options_.history_limit) {
-            // The history starts again at a dictionary and the configuration written now, so
-            // that a page that opens later begins with every name and where the machine stands.
-            base_ += history_.size();
-            history_.clear();
-            tracer()->write_dictionary(machine_);
-            drain();
-        }
-    }
-    void drain() {
-        std::byte chunk[4096];
-        while (std::size_t const n = buffer_.read(chunk)) history_.insert(history_.end(), chunk, chunk + n);
+        // The history starts again at a dictionary and the configuration written now, so that
+        // a page that opens later begins with every name and where the machine stands.
+        history_.collect(site_.options().history_limit, [this] { tracer()->write_dictionary(machine_); });
     }
 
     auto* tracer() { return detail::inspector::tracer_of(machine_.observer()); }
 
-    response answer(detail::inspector::request const& r) {
-        // A page of another site that a rebinding of its name sends here reads nothing either.
-        std::string const port_text = ":" + std::to_string(port());
-        if (r.host != "127.0.0.1" + port_text && r.host != "localhost" + port_text)
-            return {421, "text/plain; charset=utf-8", "this server answers for 127.0.0.1" + port_text + " only", {}};
-        std::string_view target = r.target;
-        std::string_view query;
-        if (auto const q = target.find('?'); q != std::string_view::npos) {
-            query = target.substr(q + 1);
-            target = target.substr(0, q);
-        }
-        if (target == "/command") {
-            response done = command(r);
-            if (options_.on_command) options_.on_command(r.body, done.body);
-            return done;
-        }
-        if (r.method != "GET") return {405, "text/plain; charset=utf-8", "GET or POST /command only", {}};
-        if (target == "/info") return info();
-        if (target == "/trace") return trace(query);
-        return file(target == "/" ? std::string_view{"index.html"} : target.substr(1));
-    }
-
-    response info() const {
-        std::string body = "{\"chart\": \"";
-        for (char c : std::string_view{detail::state_names_of<model>[1]})
-            if (c != '"' && c != '\\' && static_cast<unsigned char>(c) >= ' ') body += c;
-        body += "\", \"commands\": " + std::string(options_.commands ? "true" : "false");
-        body += ", \"paused\": " + std::string(paused_ ? "true" : "false");
-        body += ", \"scan\": " + std::string(options_.stepping ? "true" : "false") + "}";
-        return {200, "application/json", body, {}};
-    }
-
-    response trace(std::string_view query) const {
-        std::size_t from = 0;
-        if (query.starts_with("from=")) {
-            auto const digits = query.substr(5);
-            std::from_chars(digits.data(), digits.data() + digits.size(), from);
-        }
-        std::size_t const start = from < base_ ? base_ : from;
-        std::size_t const end = trace_end() - start > max_answer ? start + max_answer : trace_end();
-        response r{200, "application/octet-stream", {}, {}};
-        if (start < end) r.body.assign(reinterpret_cast<char const*>(history_.data()) + (start - base_), end - start);
-        r.headers = {{"X-Trace-Start", std::to_string(start)}, {"X-Trace-End", std::to_string(end)}};
-        return r;
-    }
-
-    response file(std::string_view name) const {
-        bool const plain = !name.empty() && name.front() != '.' &&
-                           name.find_first_not_of(
-                               "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") ==
-                               std::string_view::npos;
-        if (!plain || options_.web_root.empty()) return {404, "text/plain; charset=utf-8", "not found", {}};
-        std::ifstream in{options_.web_root + "/" + std::string{name}, std::ios::binary};
-        if (!in) return {404, "text/plain; charset=utf-8", "not found", {}};
-        std::string body{std::istreambuf_iterator<char>(in), {}};
-        std::string type = "application/octet-stream";
-        if (name.ends_with(".html")) type = "text/html; charset=utf-8";
-        if (name.ends_with(".js") || name.ends_with(".mjs")) type = "text/javascript; charset=utf-8";
-        if (name.ends_with(".css")) type = "text/css; charset=utf-8";
-        if (name.ends_with(".svg")) type = "image/svg+xml";
-        if (name.ends_with(".png")) type = "image/png";
-        if (name.ends_with(".json")) type = "application/json";
-        return {200, type, std::move(body), {}};
-    }
-
-    response command(detail::inspector::request const& r) {
-        auto const text = [](int status, std::string body) {
-            return response{status, "text/plain; charset=utf-8", std::move(body), {}};
-        };
-        if (r.method != "POST") return text(405, "POST a command");
-        if (!options_.commands) return text(403, "this program does not accept commands: the view is read-only");
-        // Only the page's own script sends the custom header: a browser asks this server before
-        // another site's page may send it, and this server never says yes.
-        std::string const own = "http://127.0.0.1:" + std::to_string(port());
-        std::string const own_name = "http://localhost:" + std::to_string(port());
-        if ((!r.origin.empty() && r.origin != own && r.origin != own_name) || !r.command)
-            return text(403, "a command from another origin is refused");
-        std::string_view body = r.body;
-        while (!body.empty() && (body.back() == '\n' || body.back() == '\r' || body.back() == ' '))
-            body.remove_suffix(1);
-        auto const space = body.find(' ');
-        std::string_view const verb = body.substr(0, space);
-        std::string_view const rest = space == std::string_view::npos ? std::string_view{} : body.substr(space + 1);
-        ++commands_;
-        if (verb == "dispatch" && !rest.empty()) {
-            outcome const o = machine_.dispatch_by_name(rest);
-            sample();
-            if (o == outcome::unknown_event)
-                return text(400, "no event of this chart is named '" + std::string{rest} + "'");
-            return text(200, "ok " + std::string{rest} + ": " + outcome_text(o));
-        }
-        if (verb == "set" && !rest.empty()) {
-            auto const split = rest.find(' ');
-            if (split == std::string_view::npos) return text(400, "set <input> <value>");
-            std::string const why = detail::inspector::set_input(machine_.context(), rest.substr(0, split),
-                                                                 rest.substr(split + 1));
-            if (!why.empty()) return text(400, why);
-            return text(200, "ok " + std::string{rest.substr(0, split)} + " = " + std::string{rest.substr(split + 1)} +
-                                 (options_.stepping ? " (latched at the next step)" : ""));
-        }
-        if (!options_.stepping && (verb == "pause" || verb == "resume" || verb == "step"))
-            return text(409, "pause, resume and step are for a program that runs the machine in steps");
-        if (verb == "pause") return paused_ = true, text(200, "ok paused");
-        if (verb == "resume") return paused_ = false, steps_ = 0, text(200, "ok running");
-        if (verb == "step") {
-            if (!paused_) return text(409, "step while paused");
-            ++steps_;
-            return text(200, "ok one step");
-        }
-        --commands_;
-        return text(400, "commands: dispatch <event>, set <input> <value>, pause, resume, step");
-    }
-
-    void sample() {
-        if (auto* t = tracer()) t->sample(machine_);
-    }
-
-    static std::string outcome_text(outcome o) {
-        switch (o) {
-            case outcome::consumed: return "consumed";
-            case outcome::ignored: return "ignored";
-            case outcome::queue_overflow: return "queue overflow";
-            case outcome::livelock: return "livelock";
-            case outcome::halted: return "halted";
-            case outcome::reentrant: return "reentrant";
-            case outcome::failed: return "failed";
-            case outcome::unknown_event: return "unknown event";
-        }
-        return "?";
-    }
-
     using model = detail::chart_model<std::remove_cv_t<typename Machine::chart_type>>;
-    // The most trace bytes one answer carries: the page asks again from where it ends.
-    static constexpr std::size_t max_answer = std::size_t{4} << 20;
 
     Machine& machine_;
-    trace_buffer& buffer_;
-    inspector_options options_;
-    detail::inspector::server server_;
-    std::vector<std::byte> history_;
-    std::size_t base_ = 0;  // the offset in the whole trace of history_'s first byte
-    bool paused_ = false;
-    std::uint64_t steps_ = 0;
-    std::uint64_t commands_ = 0;
+    detail::inspector::trace_history history_;
+    detail::inspector::site site_;
 };
 
 template <class Machine>

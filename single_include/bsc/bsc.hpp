@@ -10178,7 +10178,7 @@ public:
                 if (!s.pending) {
                     s.pending = true;
                     s.due = clock_ + delay;
-                    s.order = sent_++;
+                    s.sent = sent_++;
                     s.id = id;
                     s.event = value_type{std::in_place_type<F>, event_as<F>(e)};
                     return true;
@@ -10218,7 +10218,7 @@ public:
             slot* next = nullptr;
             for (auto& s : slots_)
                 if (s.pending && s.due <= now &&
-                    (next == nullptr || s.due < next->due || (s.due == next->due && s.order < next->order)))
+                    (next == nullptr || s.due < next->due || (s.due == next->due && s.sent < next->sent)))
                     next = &s;
             if (next == nullptr) return;
             next->pending = false;
@@ -10242,10 +10242,10 @@ public:
         for (;;) {
             slot const* next = nullptr;
             for (auto const& s : slots_)
-                if (s.pending && (first || s.order > after) && (next == nullptr || s.order < next->order)) next = &s;
+                if (s.pending && (first || s.sent > after) && (next == nullptr || s.sent < next->sent)) next = &s;
             if (next == nullptr) return;
             f(next->due, next->id, next->event);
-            after = next->order;
+            after = next->sent;
             first = false;
         }
     }
@@ -10275,7 +10275,7 @@ private:
     struct slot {
         bool pending = false;
         duration due{};
-        std::uint32_t order = 0;
+        std::uint32_t sent = 0;  // (not "order": in a template, `s.order <` would name bsc::order)
         int id = 0;
         value_type event{};
     };

@@ -4,6 +4,8 @@
 // Do not edit: change the headers under include/ and regenerate.
 #include "bsc.hpp"
 // begin include/bsc/inspector.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_INSPECTOR_HPP
+#define BSC_SINGLE_INCLUDE_BSC_INSPECTOR_HPP
 // bsc::inspector: a live view of a running machine in the browser. It serves the inspector's
 // page (web/inspector, docs/inspector.md) on 127.0.0.1 and the machine's trace stream to it,
 // and, when the program allows it, runs the page's commands on the machine:
@@ -29,15 +31,32 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <fstream>
-#include <functional>
-#include <iterator>
 #include <string>
 #include <string_view>
 #include <type_traits>
+
+// begin include/bsc/detail/inspector/site.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_INSPECTOR_SITE_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_INSPECTOR_SITE_HPP
+// What every inspector's server does alike: it answers only for its own host name, serves the
+// page's files, keeps the trace's history for pages that open later, checks that a command
+// comes from its own page and is allowed, and runs pause, resume and step. The machine's or the
+// system's own answers (/info, /trace, the other commands) come from the inspector's handler.
+
+#include <charconv>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 // begin include/bsc/detail/inspector/http.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_INSPECTOR_HTTP_HPP
+#define BSC_SINGLE_INCLUDE_BSC_DETAIL_INSPECTOR_HTTP_HPP
 // The inspector's HTTP server: a listening socket on 127.0.0.1 and its clients, served one
 // request per connection, without threads: poll() is called from the program's own loop, so
 // that every command runs between two of the machine's steps (POSIX sockets; Linux).
@@ -284,178 +303,18 @@ private:
 };
 
 }  // namespace bsc::detail::inspector
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_INSPECTOR_HTTP_HPP
 // end include/bsc/detail/inspector/http.hpp
-// begin include/bsc/detail/member_path.hpp
-#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
-#define BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
-// The dotted name of a member during a named walk of a context (detail/members.hpp): "axis.position",
-// "dwell.running". The explorer's codec names the fields of a state with it, the trace names the
-// members it samples, and the inspector finds the input a page sets by it. Its own header: the
-// machines' walks name nothing and need no strings.
+// begin include/bsc/inspector_options.hpp
+#ifndef BSC_SINGLE_INCLUDE_BSC_INSPECTOR_OPTIONS_HPP
+#define BSC_SINGLE_INCLUDE_BSC_INSPECTOR_OPTIONS_HPP
+// bsc::inspector_options: how a bsc::inspector or a bsc::system_inspector serves its page.
 
 #include <cstddef>
-#include <string>
-#include <string_view>
-#include <vector>
-
-namespace bsc::detail {
-
-class member_path {
-public:
-    /// Enters the scope `name` (an unnamed one, the walk's root, adds nothing); each is left again
-    /// in order.
-    void enter(std::string_view name) {
-        starts_.push_back(text_.size());
-        if (name.empty()) return;
-        if (!text_.empty()) text_ += '.';
-        text_ += name;
-    }
-    void leave() {
-        if (starts_.empty()) return;
-        text_.resize(starts_.back());
-        starts_.pop_back();
-    }
-    /// The full name of the member `name` in the present scope (of "" the scope's own).
-    std::string of(std::string_view name) const {
-        if (text_.empty()) return std::string{name};
-        return name.empty() ? text_ : text_ + "." + std::string{name};
-    }
-    /// Back to no scope, keeping the memory, so that a walk after the first allocates nothing.
-    void clear() {
-        text_.clear();
-        starts_.clear();
-    }
-
-private:
-    std::string text_;
-    std::vector<std::size_t> starts_;  // text_'s length before each scope entered
-};
-
-}  // namespace bsc::detail
-#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_MEMBER_PATH_HPP
-// end include/bsc/detail/member_path.hpp
-// begin include/bsc/detail/recorded_members.hpp
-#ifndef BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
-#define BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
-// The members a recorder shows (the waveform, the trace stream): the channels of a scalar type,
-// the timers and the plain scalar variables of a context, walked by the member layer
-// (detail/members.hpp) with their names, each leaf given as a kind, a width and a value.
-
-#include <bit>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
-#include <type_traits>
-
-
-namespace bsc::detail::recorded {
-
-// integer: a signed integral type; reg: an unsigned one, an enum or a bool wider than a wire.
-enum class var_kind : std::uint8_t { wire, integer, reg, real, string };
-
-// One variable's value: the bits of a wire or integer, a real, or a string's text (a state's
-// name, which lives as long as the program).
-struct value {
-    std::uint64_t bits = 0;
-    double real = 0;
-    std::string_view text;
-    friend bool operator==(value const& a, value const& b) {
-        // Reals compare by representation, so that a NaN equals itself and is written once.
-        return a.bits == b.bits && std::bit_cast<std::uint64_t>(a.real) == std::bit_cast<std::uint64_t>(b.real) &&
-               a.text == b.text;
-    }
-};
-
-template <class T>
-constexpr bool is_scalar_variable = std::is_arithmetic_v<T> || std::is_enum_v<T>;
-
-template <class T>
-value scalar_value(T v) {
-    value out;
-    if constexpr (std::is_floating_point_v<T>) {
-        out.real = static_cast<double>(v);
-    } else if constexpr (std::is_enum_v<T>) {
-        out.bits = static_cast<std::uint64_t>(
-            static_cast<std::make_unsigned_t<std::underlying_type_t<T>>>(static_cast<std::underlying_type_t<T>>(v)));
-    } else if constexpr (std::is_same_v<T, bool>) {
-        out.bits = v ? 1 : 0;
-    } else {
-        out.bits = static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<T>>(v));
-    }
-    return out;
-}
-
-template <class T>
-constexpr var_kind var_kind_of() {
-    if constexpr (std::is_same_v<T, bool>)
-        return var_kind::wire;
-    else if constexpr (std::is_floating_point_v<T>)
-        return var_kind::real;
-    else if constexpr (std::is_integral_v<T> && std::is_signed_v<T>)
-        return var_kind::integer;
-    else
-        return var_kind::reg;
-}
-
-template <class T>
-constexpr unsigned width_of() {
-    if constexpr (std::is_same_v<T, bool>)
-        return 1;
-    else if constexpr (std::is_floating_point_v<T>)
-        return 64;
-    else
-        return 8 * sizeof(T);
-}
-
-// What the recorder shows: a channel of a scalar type, a timer, a plain scalar variable, found
-// by the member layer (detail/members.hpp) as the machine finds its channels.
-template <class T>
-constexpr bool is_recorded() {
-    if constexpr (is_channel<T>)
-        return is_scalar_variable<channel_value<T>>;
-    else
-        return is_timer<T> || is_scalar_variable<T>;
-}
-
-// An array's element as the recorders name it: name_0, name_1, ...
-inline std::string element_name(std::string_view name, std::size_t i) {
-    return std::string{name} + "_" + std::to_string(i);
-}
-
-// Walks a context's recorded members, calling the visitor's scope(name), upscope() and
-// var(kind, width, name, value), in declaration order: a struct is a scope, a timer a scope of
-// three variables, an array's elements are name_0, name_1, ...
-template <class Visitor>
-struct recorded_members {
-    static constexpr bool named = true;
-    template <class T>
-    static constexpr bool visits = is_recorded<T>();
-    Visitor& v;
-    std::string element_name(std::string_view name, std::size_t i) const { return recorded::element_name(name, i); }
-    void enter(std::string_view name) { v.scope(name); }
-    void leave() { v.upscope(); }
-    template <class T>
-    void leaf(T const& member, std::string_view name) {
-        if constexpr (is_channel<T>) {
-            using V = channel_value<T>;
-            v.var(var_kind_of<V>(), width_of<V>(), name, scalar_value(member.get()));
-        } else if constexpr (is_timer<T>) {
-            v.scope(name);
-            v.var(var_kind::wire, 1, "running", scalar_value(member.running()));
-            v.var(var_kind::wire, 1, "expired", scalar_value(member.expired()));
-            v.var(var_kind::integer, 64, "elapsed", scalar_value(static_cast<std::int64_t>(member.elapsed().count())));
-            v.upscope();
-        } else {
-            v.var(var_kind_of<T>(), width_of<T>(), name, scalar_value(member));
-        }
-    }
-};
-
-}  // namespace bsc::detail::recorded
-#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_RECORDED_MEMBERS_HPP
-// end include/bsc/detail/recorded_members.hpp
-#include "observers.hpp"
-#include "trace.hpp"
 
 namespace bsc {
 
@@ -467,13 +326,239 @@ struct inspector_options {
     /// one step at a time (a scan loop).
     bool stepping = false;
     std::string web_root;  ///< the folder of the page's files (index.html, inspector.js, ...)
-    /// The trace bytes kept for a page that opens later; past it the history starts again with
-    /// the dictionary and the configuration written anew.
+    /// The trace bytes kept for a page that opens later (for each actor of a system); past it
+    /// the history starts again with the dictionary and the configuration written anew.
     std::size_t history_limit = std::size_t{64} << 20;
     /// Called after each command the page sent, with the command and the answer it got (the
     /// program's own log of what was done to it).
     std::function<void(std::string_view command, std::string_view answer)> on_command;
 };
+
+}  // namespace bsc
+#endif  // BSC_SINGLE_INCLUDE_BSC_INSPECTOR_OPTIONS_HPP
+// end include/bsc/inspector_options.hpp
+#include "trace.hpp"
+
+namespace bsc::detail::inspector {
+
+inline response text(int status, std::string body) {
+    return response{status, "text/plain; charset=utf-8", std::move(body), {}};
+}
+
+// The number after `key=` in a query such as "actor=2&from=100"; `otherwise` when absent.
+inline std::size_t query_number(std::string_view query, std::string_view key, std::size_t otherwise = 0) {
+    while (!query.empty()) {
+        auto const amp = query.find('&');
+        std::string_view const part = query.substr(0, amp);
+        if (part.size() > key.size() && part.starts_with(key) && part[key.size()] == '=') {
+            std::size_t n = otherwise;
+            auto const digits = part.substr(key.size() + 1);
+            auto const r = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+            return r.ec == std::errc{} && r.ptr == digits.data() + digits.size() ? n : otherwise;
+        }
+        query = amp == std::string_view::npos ? std::string_view{} : query.substr(amp + 1);
+    }
+    return otherwise;
+}
+
+// The first word of `s`, and the rest after one space.
+inline std::pair<std::string_view, std::string_view> split_word(std::string_view s) {
+    auto const space = s.find(' ');
+    if (space == std::string_view::npos) return {s, {}};
+    return {s.substr(0, space), s.substr(space + 1)};
+}
+
+inline std::string outcome_text(outcome o) {
+    switch (o) {
+        case outcome::consumed: return "consumed";
+        case outcome::ignored: return "ignored";
+        case outcome::queue_overflow: return "queue overflow";
+        case outcome::livelock: return "livelock";
+        case outcome::halted: return "halted";
+        case outcome::reentrant: return "reentrant";
+        case outcome::failed: return "failed";
+        case outcome::unknown_event: return "unknown event";
+    }
+    return "?";
+}
+
+// A name as a JSON string's content: quotes, backslashes and control characters left out (the
+// names are identifiers; this only keeps a strange one from breaking the document).
+inline std::string json_name(std::string_view name) {
+    std::string out;
+    for (char c : name)
+        if (c != '"' && c != '\\' && static_cast<unsigned char>(c) >= ' ') out += c;
+    return out;
+}
+
+// The trace bytes one tracer wrote, drained from its ring and kept for pages that read them
+// later, up to a limit past which they start again at a dictionary written anew.
+class trace_history {
+public:
+    trace_history() = default;
+    explicit trace_history(trace_buffer* buffer) : buffer_(buffer) {}
+
+    bool traced() const { return buffer_ != nullptr; }
+    // The trace bytes the page can read (from its start, less what the history let go).
+    std::size_t end() const { return base_ + bytes_.size(); }
+
+    // Moves what the ring holds into the history; past `limit`, lets it all go and keeps what
+    // `rewrite()` writes (the dictionary and the configuration) instead.
+    template <class Rewrite>
+    void collect(std::size_t limit, Rewrite&& rewrite) {
+        drain();
+        if (bytes_.size() > limit) {
+            base_ += bytes_.size();
+            bytes_.clear();
+            rewrite();
+            drain();
+        }
+    }
+
+    // The answer to GET /trace?from=N: at most `max_answer` bytes from N (or from the oldest
+    // kept, if the history let N go), with the range in X-Trace-Start and X-Trace-End.
+    response answer(std::size_t from) const {
+        std::size_t const start = from < base_ ? base_ : from;
+        std::size_t const stop = end() - start > max_answer ? start + max_answer : end();
+        response r{200, "application/octet-stream", {}, {}};
+        if (start < stop) r.body.assign(reinterpret_cast<char const*>(bytes_.data()) + (start - base_), stop - start);
+        r.headers = {{"X-Trace-Start", std::to_string(start)}, {"X-Trace-End", std::to_string(stop)}};
+        return r;
+    }
+
+    // The most trace bytes one answer carries: the page asks again from where it ends.
+    static constexpr std::size_t max_answer = std::size_t{4} << 20;
+
+private:
+    void drain() {
+        if (buffer_ == nullptr) return;
+        std::byte chunk[4096];
+        while (std::size_t const n = buffer_->read(chunk)) bytes_.insert(bytes_.end(), chunk, chunk + n);
+    }
+
+    trace_buffer* buffer_ = nullptr;
+    std::vector<std::byte> bytes_;
+    std::size_t base_ = 0;  // the offset in the whole trace of bytes_'s first byte
+};
+
+// The server and the commands every inspector shares. The handler answers the rest:
+//   response info(std::string const& run_fields)   GET /info, given the fields all share
+//   response trace(std::string_view query)         GET /trace?...
+//   response command(std::string_view verb, std::string_view rest)   a command but pause,
+//       resume and step (400 with the list of commands for one it does not know)
+class site {
+public:
+    explicit site(inspector_options options) : options_(std::move(options)), server_(options_.port) {}
+
+    std::uint16_t port() const { return server_.port(); }
+    std::string url() const { return "http://127.0.0.1:" + std::to_string(port()) + "/"; }
+    inspector_options const& options() const { return options_; }
+
+    bool may_step() {
+        if (!paused_) return true;
+        if (steps_ == 0) return false;
+        --steps_;
+        return true;
+    }
+    bool paused() const { return paused_; }
+    std::uint64_t commands_run() const { return commands_; }
+
+    template <class Handler>
+    void serve(std::chrono::milliseconds wait, Handler& handler) {
+        server_.serve(wait, [this, &handler](request const& r) { return answer(r, handler); });
+    }
+
+private:
+    template <class Handler>
+    response answer(request const& r, Handler& handler) {
+        // A page of another site that a rebinding of its name sends here reads nothing either.
+        std::string const port_text = ":" + std::to_string(port());
+        if (r.host != "127.0.0.1" + port_text && r.host != "localhost" + port_text)
+            return text(421, "this server answers for 127.0.0.1" + port_text + " only");
+        std::string_view target = r.target;
+        std::string_view query;
+        if (auto const q = target.find('?'); q != std::string_view::npos) {
+            query = target.substr(q + 1);
+            target = target.substr(0, q);
+        }
+        if (target == "/command") {
+            response done = command(r, handler);
+            if (options_.on_command) options_.on_command(r.body, done.body);
+            return done;
+        }
+        if (r.method != "GET") return text(405, "GET or POST /command only");
+        if (target == "/info") {
+            std::string run = "\"commands\": " + std::string(options_.commands ? "true" : "false");
+            run += ", \"paused\": " + std::string(paused_ ? "true" : "false");
+            run += ", \"scan\": " + std::string(options_.stepping ? "true" : "false");
+            return handler.info(run);
+        }
+        if (target == "/trace") return handler.trace(query);
+        return file(target == "/" ? std::string_view{"index.html"} : target.substr(1));
+    }
+
+    response file(std::string_view name) const {
+        bool const plain = !name.empty() && name.front() != '.' &&
+                           name.find_first_not_of(
+                               "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") ==
+                               std::string_view::npos;
+        if (!plain || options_.web_root.empty()) return text(404, "not found");
+        std::ifstream in{options_.web_root + "/" + std::string{name}, std::ios::binary};
+        if (!in) return text(404, "not found");
+        std::string body{std::istreambuf_iterator<char>(in), {}};
+        std::string type = "application/octet-stream";
+        if (name.ends_with(".html")) type = "text/html; charset=utf-8";
+        if (name.ends_with(".js") || name.ends_with(".mjs")) type = "text/javascript; charset=utf-8";
+        if (name.ends_with(".css")) type = "text/css; charset=utf-8";
+        if (name.ends_with(".svg")) type = "image/svg+xml";
+        if (name.ends_with(".png")) type = "image/png";
+        if (name.ends_with(".json")) type = "application/json";
+        return {200, type, std::move(body), {}};
+    }
+
+    template <class Handler>
+    response command(request const& r, Handler& handler) {
+        if (r.method != "POST") return text(405, "POST a command");
+        if (!options_.commands) return text(403, "this program does not accept commands: the view is read-only");
+        // Only the page's own script sends the custom header: a browser asks this server before
+        // another site's page may send it, and this server never says yes.
+        std::string const own = "http://127.0.0.1:" + std::to_string(port());
+        std::string const own_name = "http://localhost:" + std::to_string(port());
+        if ((!r.origin.empty() && r.origin != own && r.origin != own_name) || !r.command)
+            return text(403, "a command from another origin is refused");
+        std::string_view body = r.body;
+        while (!body.empty() && (body.back() == '\n' || body.back() == '\r' || body.back() == ' '))
+            body.remove_suffix(1);
+        auto const [verb, rest] = split_word(body);
+        bool const run_control = verb == "pause" || verb == "resume" || verb == "step";
+        ++commands_;
+        if (run_control && !options_.stepping)
+            return text(409, "pause, resume and step are for a program that runs in steps");
+        if (verb == "pause") return paused_ = true, text(200, "ok paused");
+        if (verb == "resume") return paused_ = false, steps_ = 0, text(200, "ok running");
+        if (verb == "step") {
+            if (!paused_) return text(409, "step while paused");
+            ++steps_;
+            return text(200, "ok one step");
+        }
+        response answer = handler.command(verb, rest);
+        if (answer.status == 400 && answer.body.starts_with("commands:")) --commands_;
+        return answer;
+    }
+
+    inspector_options options_;
+    server server_;
+    bool paused_ = false;
+    std::uint64_t steps_ = 0;
+    std::uint64_t commands_ = 0;
+};
+
+}  // namespace bsc::detail::inspector
+#endif  // BSC_SINGLE_INCLUDE_BSC_DETAIL_INSPECTOR_SITE_HPP
+// end include/bsc/detail/inspector/site.hpp
+#include "observers.hpp"
+
+namespace bsc {
 
 namespace detail::inspector {
 
@@ -596,208 +681,82 @@ class inspector {
 public:
     /// Listens on 127.0.0.1:options.port; throws std::system_error if it cannot.
     inspector(Machine& machine, trace_buffer& buffer, inspector_options options)
-        : machine_(machine), buffer_(buffer), options_(std::move(options)), server_(options_.port) {
+        : machine_(machine), history_(&buffer), site_(std::move(options)) {
         static_assert(!std::is_same_v<decltype(tracer()), detail::inspector::no_tracer*>,
                       "bsc::inspector: the machine's observer must be a bsc::tracer, or a bsc::observers holding one");
     }
 
     /// The port it listens on.
-    std::uint16_t port() const { return server_.port(); }
+    std::uint16_t port() const { return site_.port(); }
     /// The page's address: "http://127.0.0.1:<port>/".
-    std::string url() const { return "http://127.0.0.1:" + std::to_string(port()) + "/"; }
+    std::string url() const { return site_.url(); }
 
     /// Moves the trace into the history, then serves the requests that arrive within `wait`
     /// (and runs their commands).
     void poll(std::chrono::milliseconds wait = {}) {
         collect();
-        server_.serve(wait, [this](detail::inspector::request const& r) { return answer(r); });
+        site_.serve(wait, *this);
         collect();
     }
 
     /// For a scan loop: whether to run the next step. Always true while not paused; while
     /// paused, true once for each "step" command.
-    bool may_step() {
-        if (!paused_) return true;
-        if (steps_ == 0) return false;
-        --steps_;
-        return true;
-    }
+    bool may_step() { return site_.may_step(); }
     /// Whether the page paused the machine.
-    bool paused() const { return paused_; }
+    bool paused() const { return site_.paused(); }
     /// The commands run so far.
-    std::uint64_t commands_run() const { return commands_; }
+    std::uint64_t commands_run() const { return site_.commands_run(); }
     /// The trace bytes the page can read (from its start, less what the history let go).
-    std::size_t trace_end() const { return base_ + history_.size(); }
+    std::size_t trace_end() const { return history_.end(); }
 
 private:
-    using response = detail::inspector::response;
+    // The site's handler (detail/inspector/site.hpp): the machine's own answers.
+    friend class detail::inspector::site;
+    detail::inspector::response info(std::string const& run) const {
+        std::string body = "{\"chart\": \"" + detail::inspector::json_name(detail::state_names_of<model>[1]) + "\", ";
+        return {200, "application/json", body + run + "}", {}};
+    }
+    detail::inspector::response trace(std::string_view query) const {
+        return history_.answer(detail::inspector::query_number(query, "from"));
+    }
+    detail::inspector::response command(std::string_view verb, std::string_view rest) {
+        using detail::inspector::text;
+        if (verb == "dispatch" && !rest.empty()) {
+            outcome const o = machine_.dispatch_by_name(rest);
+            tracer()->sample(machine_);
+            if (o == outcome::unknown_event)
+                return text(400, "no event of this chart is named '" + std::string{rest} + "'");
+            return text(200, "ok " + std::string{rest} + ": " + detail::inspector::outcome_text(o));
+        }
+        if (verb == "set" && !rest.empty()) {
+            auto const [member, value] = detail::inspector::split_word(rest);
+            if (value.empty()) return text(400, "set <input> <value>");
+            std::string const why = detail::inspector::set_input(machine_.context(), member, value);
+            if (!why.empty()) return text(400, why);
+            return text(200, "ok " + std::string{member} + " = " + std::string{value} +
+                                 (site_.options().stepping ? " (latched at the next step)" : ""));
+        }
+        return text(400, "commands: dispatch <event>, set <input> <value>, pause, resume, step");
+    }
 
     void collect() {
-        drain();
-        if (history_.size() > options_.history_limit) {
-            // The history starts again at a dictionary and the configuration written now, so
-            // that a page that opens later begins with every name and where the machine stands.
-            base_ += history_.size();
-            history_.clear();
-            tracer()->write_dictionary(machine_);
-            drain();
-        }
-    }
-    void drain() {
-        std::byte chunk[4096];
-        while (std::size_t const n = buffer_.read(chunk)) history_.insert(history_.end(), chunk, chunk + n);
+        // The history starts again at a dictionary and the configuration written now, so that
+        // a page that opens later begins with every name and where the machine stands.
+        history_.collect(site_.options().history_limit, [this] { tracer()->write_dictionary(machine_); });
     }
 
     auto* tracer() { return detail::inspector::tracer_of(machine_.observer()); }
 
-    response answer(detail::inspector::request const& r) {
-        // A page of another site that a rebinding of its name sends here reads nothing either.
-        std::string const port_text = ":" + std::to_string(port());
-        if (r.host != "127.0.0.1" + port_text && r.host != "localhost" + port_text)
-            return {421, "text/plain; charset=utf-8", "this server answers for 127.0.0.1" + port_text + " only", {}};
-        std::string_view target = r.target;
-        std::string_view query;
-        if (auto const q = target.find('?'); q != std::string_view::npos) {
-            query = target.substr(q + 1);
-            target = target.substr(0, q);
-        }
-        if (target == "/command") {
-            response done = command(r);
-            if (options_.on_command) options_.on_command(r.body, done.body);
-            return done;
-        }
-        if (r.method != "GET") return {405, "text/plain; charset=utf-8", "GET or POST /command only", {}};
-        if (target == "/info") return info();
-        if (target == "/trace") return trace(query);
-        return file(target == "/" ? std::string_view{"index.html"} : target.substr(1));
-    }
-
-    response info() const {
-        std::string body = "{\"chart\": \"";
-        for (char c : std::string_view{detail::state_names_of<model>[1]})
-            if (c != '"' && c != '\\' && static_cast<unsigned char>(c) >= ' ') body += c;
-        body += "\", \"commands\": " + std::string(options_.commands ? "true" : "false");
-        body += ", \"paused\": " + std::string(paused_ ? "true" : "false");
-        body += ", \"scan\": " + std::string(options_.stepping ? "true" : "false") + "}";
-        return {200, "application/json", body, {}};
-    }
-
-    response trace(std::string_view query) const {
-        std::size_t from = 0;
-        if (query.starts_with("from=")) {
-            auto const digits = query.substr(5);
-            std::from_chars(digits.data(), digits.data() + digits.size(), from);
-        }
-        std::size_t const start = from < base_ ? base_ : from;
-        std::size_t const end = trace_end() - start > max_answer ? start + max_answer : trace_end();
-        response r{200, "application/octet-stream", {}, {}};
-        if (start < end) r.body.assign(reinterpret_cast<char const*>(history_.data()) + (start - base_), end - start);
-        r.headers = {{"X-Trace-Start", std::to_string(start)}, {"X-Trace-End", std::to_string(end)}};
-        return r;
-    }
-
-    response file(std::string_view name) const {
-        bool const plain = !name.empty() && name.front() != '.' &&
-                           name.find_first_not_of(
-                               "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") ==
-                               std::string_view::npos;
-        if (!plain || options_.web_root.empty()) return {404, "text/plain; charset=utf-8", "not found", {}};
-        std::ifstream in{options_.web_root + "/" + std::string{name}, std::ios::binary};
-        if (!in) return {404, "text/plain; charset=utf-8", "not found", {}};
-        std::string body{std::istreambuf_iterator<char>(in), {}};
-        std::string type = "application/octet-stream";
-        if (name.ends_with(".html")) type = "text/html; charset=utf-8";
-        if (name.ends_with(".js") || name.ends_with(".mjs")) type = "text/javascript; charset=utf-8";
-        if (name.ends_with(".css")) type = "text/css; charset=utf-8";
-        if (name.ends_with(".svg")) type = "image/svg+xml";
-        if (name.ends_with(".png")) type = "image/png";
-        if (name.ends_with(".json")) type = "application/json";
-        return {200, type, std::move(body), {}};
-    }
-
-    response command(detail::inspector::request const& r) {
-        auto const text = [](int status, std::string body) {
-            return response{status, "text/plain; charset=utf-8", std::move(body), {}};
-        };
-        if (r.method != "POST") return text(405, "POST a command");
-        if (!options_.commands) return text(403, "this program does not accept commands: the view is read-only");
-        // Only the page's own script sends the custom header: a browser asks this server before
-        // another site's page may send it, and this server never says yes.
-        std::string const own = "http://127.0.0.1:" + std::to_string(port());
-        std::string const own_name = "http://localhost:" + std::to_string(port());
-        if ((!r.origin.empty() && r.origin != own && r.origin != own_name) || !r.command)
-            return text(403, "a command from another origin is refused");
-        std::string_view body = r.body;
-        while (!body.empty() && (body.back() == '\n' || body.back() == '\r' || body.back() == ' '))
-            body.remove_suffix(1);
-        auto const space = body.find(' ');
-        std::string_view const verb = body.substr(0, space);
-        std::string_view const rest = space == std::string_view::npos ? std::string_view{} : body.substr(space + 1);
-        ++commands_;
-        if (verb == "dispatch" && !rest.empty()) {
-            outcome const o = machine_.dispatch_by_name(rest);
-            sample();
-            if (o == outcome::unknown_event)
-                return text(400, "no event of this chart is named '" + std::string{rest} + "'");
-            return text(200, "ok " + std::string{rest} + ": " + outcome_text(o));
-        }
-        if (verb == "set" && !rest.empty()) {
-            auto const split = rest.find(' ');
-            if (split == std::string_view::npos) return text(400, "set <input> <value>");
-            std::string const why = detail::inspector::set_input(machine_.context(), rest.substr(0, split),
-                                                                 rest.substr(split + 1));
-            if (!why.empty()) return text(400, why);
-            return text(200, "ok " + std::string{rest.substr(0, split)} + " = " + std::string{rest.substr(split + 1)} +
-                                 (options_.stepping ? " (latched at the next step)" : ""));
-        }
-        if (!options_.stepping && (verb == "pause" || verb == "resume" || verb == "step"))
-            return text(409, "pause, resume and step are for a program that runs the machine in steps");
-        if (verb == "pause") return paused_ = true, text(200, "ok paused");
-        if (verb == "resume") return paused_ = false, steps_ = 0, text(200, "ok running");
-        if (verb == "step") {
-            if (!paused_) return text(409, "step while paused");
-            ++steps_;
-            return text(200, "ok one step");
-        }
-        --commands_;
-        return text(400, "commands: dispatch <event>, set <input> <value>, pause, resume, step");
-    }
-
-    void sample() {
-        if (auto* t = tracer()) t->sample(machine_);
-    }
-
-    static std::string outcome_text(outcome o) {
-        switch (o) {
-            case outcome::consumed: return "consumed";
-            case outcome::ignored: return "ignored";
-            case outcome::queue_overflow: return "queue overflow";
-            case outcome::livelock: return "livelock";
-            case outcome::halted: return "halted";
-            case outcome::reentrant: return "reentrant";
-            case outcome::failed: return "failed";
-            case outcome::unknown_event: return "unknown event";
-        }
-        return "?";
-    }
-
     using model = detail::chart_model<std::remove_cv_t<typename Machine::chart_type>>;
-    // The most trace bytes one answer carries: the page asks again from where it ends.
-    static constexpr std::size_t max_answer = std::size_t{4} << 20;
 
     Machine& machine_;
-    trace_buffer& buffer_;
-    inspector_options options_;
-    detail::inspector::server server_;
-    std::vector<std::byte> history_;
-    std::size_t base_ = 0;  // the offset in the whole trace of history_'s first byte
-    bool paused_ = false;
-    std::uint64_t steps_ = 0;
-    std::uint64_t commands_ = 0;
+    detail::inspector::trace_history history_;
+    detail::inspector::site site_;
 };
 
 template <class Machine>
 inspector(Machine&, trace_buffer&, inspector_options) -> inspector<Machine>;
 
 }  // namespace bsc
+#endif  // BSC_SINGLE_INCLUDE_BSC_INSPECTOR_HPP
 // end include/bsc/inspector.hpp

@@ -928,6 +928,9 @@ public:
     /// must outlive the tracer.
     tracer(Chart const& chart, trace_buffer& buffer) : chart_(&chart), buffer_(&buffer) { write_dictionary(); }
 
+    /// The ring it writes into.
+    trace_buffer& buffer() const { return *buffer_; }
+
     /// Writes the dictionary again (for a reader that joins late): the hello, the states,
     /// events and transitions now, the members at the next sample(). The transitions' labels
     /// are built as the exports build them (with std::string: this allocates).

@@ -3,7 +3,7 @@
 # bsc::hana alone (include/bsc/adapt/hana.hpp, single_include/bsc/hana.hpp) Boost.Hana's, and for
 # the latency benchmark alone (include/bsc/benchmark.hpp and its detail/benchmark/callgrind_counter.hpp)
 # Google Benchmark's, valgrind's <valgrind/callgrind.h> and <unistd.h>, and for the inspector's
-# server alone (include/bsc/detail/inspector/http.hpp, single_include/bsc/inspector.hpp) POSIX's sockets. (One header of the standard
+# server alone (include/bsc/detail/inspector/http.hpp, single_include/bsc/inspector.hpp and system_inspector.hpp) POSIX's sockets. (One header of the standard
 # library's own is named: libstdc++'s <bits/chrono.h>, the part of <chrono> bsc uses, included
 # only where __GLIBCXX__ says it is libstdc++: BSC_DETAIL_CHRONO_HEADER in detail/config.hpp,
 # which detail/chrono.hpp includes.) The single-header consumer
@@ -33,7 +33,7 @@ foreach(header IN LISTS headers)
       continue()
     endif()
     # The inspector's server (opt-in, POSIX): the socket interface.
-    if(header MATCHES "/(include/bsc/detail/inspector/http|single_include/bsc/inspector)\\.hpp$"
+    if(header MATCHES "/(include/bsc/detail/inspector/http|single_include/bsc/(system_)?inspector)\\.hpp$"
        AND name MATCHES "^(arpa/inet|netinet/in|poll|sys/socket|unistd)\\.h$")
       continue()
     endif()

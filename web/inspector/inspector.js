@@ -20,17 +20,28 @@
 
   const $ = (id) => document.getElementById(id);
 
+  // One trace stream: a machine's, or one actor's of a system.
+  function newStream(actor = -1) {
+    return {
+      actor, // the actor's place in the system's order; -1 for a machine
+      reader: new TraceReader(),
+      records: [], // the records read, each with its describe() text as `text`
+      dropped: 0, // records trimmed off the front in a long live run
+      checkpoints: [new TraceState()], // checkpoints[k]: the state before records[k * CHECKPOINT]
+      head: new TraceState(), // the state after every record read
+      position: -1, // the index of the last record shown
+      following: true, // whether new records move the position to the newest
+      offset: 0, // live: the byte offset of the next /trace request
+      log: { from: 0, to: -1 }, // the absolute record indices the log shows
+    };
+  }
+
   const app = {
     mode: null, // 'live' or 'replay'
     info: null, // the program's /info
-    reader: new TraceReader(),
-    records: [], // the records read, each with its describe() text as `text`
-    dropped: 0, // records trimmed off the front in a long live run
-    checkpoints: [new TraceState()], // checkpoints[k]: the state before records[k * CHECKPOINT]
-    head: new TraceState(), // the state after every record read
-    position: -1, // the index of the last record shown
-    following: true, // whether new records move the position to the newest
-    offset: 0, // live: the byte offset of the next /trace request
+    system: null, // a system's description ({actors, links}), or null for a machine
+    streams: [newStream()], // a system's: one per actor (null for an actor without a tracer)
+    stream: null, // the stream shown: the machine's, or the selected actor's
     ready: false,
     zoom: 'fit', // 'fit' or a scale
     scale: 1, // the scale shown
@@ -38,40 +49,49 @@
     chartSignature: '', // the dictionary the drawing shows
     layoutRunning: false,
     layoutAgain: false,
-    log: { from: 0, to: -1 }, // the absolute record indices the log shows
+    systemSize: null, // the system's drawing and its size at full scale
   };
+  app.stream = app.streams[0];
+  // The panes show the stream selected: app.records and the like are its.
+  for (const field of ['reader', 'records', 'dropped', 'checkpoints', 'head', 'position', 'following', 'offset', 'log']) {
+    Object.defineProperty(app, field, {
+      get: () => app.stream[field],
+      set: (value) => {
+        app.stream[field] = value;
+      },
+    });
+  }
 
   // ---- Reading records ------------------------------------------------------------------------
 
-  function resetTrace() {
-    app.reader = new TraceReader();
-    app.records.length = 0;
-    app.dropped = 0;
-    app.checkpoints = [new TraceState()];
-    app.head = new TraceState();
-    app.position = -1;
-    app.following = true;
-    app.log = { from: 0, to: -1 };
+  function resetStream(s) {
+    Object.assign(s, newStream(s.actor));
+  }
+
+  function resetTrace(s = app.stream) {
+    resetStream(s);
+    if (app.system) updateActor(s);
+    if (s !== app.stream) return;
     $('log').replaceChildren();
     scheduleLayout();
     renderMembersTable();
     renderEventButtons();
   }
 
-  /** Feeds bytes of the trace and shows what they add. */
-  function ingest(bytes) {
-    const reader = app.reader;
+  /** Feeds bytes of stream s's trace and, if it is the one shown, shows what they add. */
+  function ingest(bytes, s = app.stream) {
+    const reader = s.reader;
     reader.feed(bytes);
     let layout = false;
     let events = false;
     let members = false;
     const fired = [];
-    const first = app.records.length;
+    const first = s.records.length;
     for (let r; (r = reader.next()); ) {
       r.text = reader.describe(r);
-      if (app.records.length > 0 && app.records.length % CHECKPOINT === 0) app.checkpoints.push(app.head.clone());
-      app.records.push(r);
-      app.head.apply(r);
+      if (s.records.length > 0 && s.records.length % CHECKPOINT === 0) s.checkpoints.push(s.head.clone());
+      s.records.push(r);
+      s.head.apply(r);
       switch (r.type) {
         case RecordType.hello:
           layout = events = members = true;
@@ -93,8 +113,13 @@
           break;
       }
     }
-    const added = app.records.length - first;
-    trim();
+    const added = s.records.length - first;
+    trim(s);
+    if (app.system) {
+      updateActor(s);
+      if (app.mode === 'live' && fired.length > 0) pulseActor(s.actor);
+    }
+    if (s !== app.stream) return;
     if (layout) scheduleLayout();
     if (events) renderEventButtons();
     if (members) renderMembersTable();
@@ -108,12 +133,12 @@
   }
 
   // Drops the oldest records of a long run, keeping the state before the first one kept.
-  function trim() {
-    while (app.records.length > MAX_RECORDS) {
-      app.records.splice(0, TRIM);
-      app.checkpoints.splice(0, TRIM / CHECKPOINT);
-      app.dropped += TRIM;
-      app.position = Math.max(app.position - TRIM, 0);
+  function trim(s) {
+    while (s.records.length > MAX_RECORDS) {
+      s.records.splice(0, TRIM);
+      s.checkpoints.splice(0, TRIM / CHECKPOINT);
+      s.dropped += TRIM;
+      s.position = Math.max(s.position - TRIM, 0);
     }
   }
 
@@ -486,8 +511,10 @@
 
   async function layoutChart() {
     const d = app.reader.dictionary;
-    $('chart-name').textContent = d.chart;
-    document.title = d.chart ? `${d.chart} · bsc inspector` : 'bsc inspector';
+    const actor = app.system ? app.system.actors[app.stream.actor].name : '';
+    const title = actor ? `${actor} · ${d.chart}` : d.chart;
+    $('chart-name').textContent = title;
+    document.title = title ? `${title} · bsc inspector` : 'bsc inspector';
     // A dictionary written again (for late readers) mostly names the same chart: keep the drawing.
     const signature = JSON.stringify([d.states, d.rows]);
     if (app.chart && signature === app.chartSignature) return;
@@ -697,7 +724,7 @@
       button.dataset.event = name;
       button.textContent = name;
       button.title = `dispatch ${name}`;
-      button.addEventListener('click', () => command(`dispatch ${name}`));
+      button.addEventListener('click', () => command(`dispatch ${actorWord()}${name}`));
       buttons.push(button);
     }
     $('events').replaceChildren(...buttons);
@@ -749,28 +776,34 @@
     poll();
   }
 
+  // Reads what is new in stream s's trace: a machine's, or an actor's of a system.
+  async function pollStream(s) {
+    const actor = s.actor >= 0 ? `actor=${s.actor}&` : '';
+    const response = await fetch(`/trace?${actor}from=${s.offset}`, { cache: 'no-store' });
+    if (!response.ok) throw new Error(`HTTP ${response.status}`);
+    const body = new Uint8Array(await response.arrayBuffer());
+    const number = (name) => {
+      const text = (response.headers.get(name) ?? '').trim();
+      return /^\d+$/.test(text) ? Number(text) : null;
+    };
+    const end = number('X-Trace-End') ?? s.offset + body.length;
+    const start = number('X-Trace-Start') ?? end - body.length;
+    // The program keeps a bounded history: bytes it let go before this page read them are lost.
+    if (start > s.offset && s.offset > 0) setStatus(`the program let go of ${start - s.offset} trace bytes before they were read`, 'error');
+    if (end < s.offset) {
+      // The program's trace is shorter than what was read: a new run; read it from the start.
+      resetTrace(s);
+      s.offset = 0;
+    } else {
+      s.offset = end;
+      if (body.length) ingest(body, s);
+    }
+  }
+
   async function poll() {
     polling = true;
     try {
-      const response = await fetch(`/trace?from=${app.offset}`, { cache: 'no-store' });
-      if (!response.ok) throw new Error(`HTTP ${response.status}`);
-      const body = new Uint8Array(await response.arrayBuffer());
-      const number = (name) => {
-        const text = (response.headers.get(name) ?? '').trim();
-        return /^\d+$/.test(text) ? Number(text) : null;
-      };
-      const end = number('X-Trace-End') ?? app.offset + body.length;
-      const start = number('X-Trace-Start') ?? end - body.length;
-      // The program keeps a bounded history: bytes it let go before this page read them are lost.
-      if (start > app.offset && app.offset > 0) setStatus(`the program let go of ${start - app.offset} trace bytes before they were read`, 'error');
-      if (end < app.offset) {
-        // The program's trace is shorter than what was read: a new run; read it from the start.
-        resetTrace();
-        app.offset = 0;
-      } else {
-        app.offset = end;
-        if (body.length) ingest(body);
-      }
+      await Promise.all(app.streams.filter((s) => s !== null).map(pollStream));
       if (failures) setStatus('connected again', 'ok');
       failures = 0;
       setConnection('connected', 'ok');
@@ -840,6 +873,195 @@
     });
   }
 
+  // ---- A system: one box per actor, the links between them ------------------------------------
+
+  const actorWord = () => (app.system ? `${app.system.actors[app.stream.actor].name} ` : '');
+  const actorBox = (i) => document.querySelector(`#system-svg .actor[data-actor="${i}"]`);
+
+  function startSystem(info) {
+    const actors = info.actors.map((a) => ({ name: String(a.name ?? ''), chart: String(a.chart ?? ''), traced: a.traced === true }));
+    const count = actors.length;
+    const links = (Array.isArray(info.links) ? info.links : []).filter(
+      (l) => Number.isInteger(l.from) && Number.isInteger(l.to) && l.from >= 0 && l.to >= 0 && l.from < count && l.to < count,
+    );
+    app.system = { actors, links };
+    app.streams = actors.map((a, i) => (a.traced ? newStream(i) : null));
+    const first = app.streams.find((s) => s !== null);
+    app.stream = first ?? newStream();
+    $('system-pane').hidden = false;
+    $('system-note').textContent = `${count} actors · ${links.length} links · click an actor to show its chart`;
+    layoutSystem();
+    if (first) selectActor(first.actor);
+  }
+
+  // The links between two actors as one edge: its label names the channels.
+  function linkGroups(links, names) {
+    const groups = new Map();
+    for (const l of links) {
+      const key = `${l.from}>${l.to}`;
+      if (!groups.has(key)) groups.set(key, { from: l.from, to: l.to, channels: [] });
+      const from = String(l.from_channel ?? ''), to = String(l.to_channel ?? '');
+      groups.get(key).channels.push({ text: from === to ? from : `${from}→${to}`, title: `${names[l.from]}.${from} → ${names[l.to]}.${to}${l.lossless ? ' (lossless)' : ''}` });
+    }
+    return [...groups.values()];
+  }
+
+  const ACTOR_WIDTH = 200;
+  const ACTOR_HEIGHT = 50;
+  const LABEL_CHARS = 30;
+
+  async function layoutSystem() {
+    const { actors, links } = app.system;
+    const names = actors.map((a) => a.name);
+    const groups = linkGroups(links, names);
+    const label = (g) => {
+      const text = g.channels.map((c) => c.text).join(', ');
+      return text.length > LABEL_CHARS ? `${text.slice(0, LABEL_CHARS - 1)}…` : text;
+    };
+    const graph = {
+      id: 'system',
+      layoutOptions: {
+        'elk.algorithm': 'layered',
+        'elk.direction': 'RIGHT',
+        'elk.spacing.nodeNode': '24',
+        'elk.layered.spacing.nodeNodeBetweenLayers': '60',
+        'elk.edgeRouting': 'SPLINES',
+        'elk.edgeLabels.placement': 'CENTER',
+      },
+      children: actors.map((a, i) => ({ id: `a${i}`, width: Math.max(ACTOR_WIDTH, measure(a.name, NAME_FONT) + 24), height: ACTOR_HEIGHT })),
+      edges: groups.map((g, k) => ({ id: `l${k}`, sources: [`a${g.from}`], targets: [`a${g.to}`], labels: [{ text: label(g), width: measure(label(g), SMALL_FONT) + 6, height: 14 }] })),
+    };
+    let laid = null;
+    if (typeof ELK === 'function') {
+      try {
+        laid = await new ELK().layout(graph);
+      } catch (e) {
+        console.warn('system layout failed:', e);
+      }
+    }
+    if (!laid) {
+      // Without the layout engine: the actors in rows, the links left out.
+      const perRow = 4;
+      graph.children.forEach((c, i) => Object.assign(c, { x: 8 + (i % perRow) * (ACTOR_WIDTH + 30), y: 8 + Math.floor(i / perRow) * (ACTOR_HEIGHT + 20) }));
+      laid = { ...graph, edges: [], width: 16 + Math.min(actors.length, perRow) * (ACTOR_WIDTH + 30), height: 16 + Math.ceil(actors.length / perRow) * (ACTOR_HEIGHT + 20) };
+      $('system-note').textContent += ' · links not drawn (no layout engine)';
+    }
+    renderSystem(laid, groups);
+  }
+
+  function renderSystem(laid, groups) {
+    const width = Math.ceil(laid.width ?? 0);
+    const height = Math.ceil(laid.height ?? 0);
+    const svg = el('svg', { id: 'system-svg', viewBox: `0 0 ${width} ${height}`, width, height });
+    const defs = el('defs');
+    const marker = el('marker', { id: 'link-arrow', viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 7, markerHeight: 7, orient: 'auto-start-reverse' });
+    marker.append(el('path', { d: 'M0,0 L10,5 L0,10 z', class: 'arrow' }));
+    defs.append(marker);
+    svg.append(defs);
+    const edges = el('g', { class: 'links' });
+    for (const e of laid.edges ?? []) {
+      const g = groups[Number(e.id.slice(1))];
+      const group = el('g', { class: 'link' });
+      group.dataset.from = String(g.from);
+      group.dataset.to = String(g.to);
+      group.dataset.channels = g.channels.map((c) => c.text).join(', ');
+      for (const section of e.sections ?? []) {
+        const points = [section.startPoint, ...(section.bendPoints ?? []), section.endPoint];
+        group.append(el('path', { d: points.map((p, i) => `${i ? 'L' : 'M'}${p.x},${p.y}`).join(' '), class: 'line' }));
+      }
+      for (const l of e.labels ?? []) {
+        group.append(el('rect', { x: l.x, y: l.y, width: l.width, height: l.height, rx: 3, class: 'label-back' }));
+        group.append(el('text', { x: l.x + 3, y: l.y + l.height - 3, class: 'label' }, l.text));
+      }
+      group.append(el('title', {}, g.channels.map((c) => c.title).join('\n')));
+      edges.append(group);
+    }
+    const boxes = el('g', { class: 'actors' });
+    for (const c of laid.children ?? []) {
+      const i = Number(c.id.slice(1));
+      const a = app.system.actors[i];
+      const group = el('g', { class: `actor${a.traced ? '' : ' untraced'}` });
+      group.dataset.actor = String(i);
+      group.dataset.name = a.name;
+      group.append(el('title', {}, a.traced ? `${a.name}: ${a.chart} (click to show its chart)` : `${a.name}: not traced`));
+      group.append(el('rect', { x: c.x, y: c.y, width: c.width, height: c.height, rx: 7, class: 'shape' }));
+      group.append(el('text', { x: c.x + 10, y: c.y + 19, class: 'name' }, a.name));
+      group.append(el('text', { x: c.x + 10, y: c.y + 38, class: 'states' }, a.traced ? '' : 'not traced'));
+      if (a.traced) group.addEventListener('click', () => selectActor(i));
+      boxes.append(group);
+    }
+    svg.append(edges, boxes);
+    $('system').replaceChildren(svg);
+    app.systemSize = { svg, width, height };
+    fitSystem();
+    for (const s of app.streams) if (s) updateActor(s);
+    markSelected();
+  }
+
+  // The diagram scaled down to the pane's width (never up): a wide system stays readable by
+  // scrolling down rather than sideways.
+  function fitSystem() {
+    const size = app.systemSize;
+    if (!size) return;
+    const scale = Math.max(0.3, Math.min(1, ($('system').clientWidth - 4) / size.width));
+    size.svg.setAttribute('width', String(Math.round(size.width * scale)));
+    size.svg.setAttribute('height', String(Math.round(size.height * scale)));
+  }
+
+  // The leaf states of s's configuration, as its box shows them.
+  function updateActor(s) {
+    const box = actorBox(s.actor);
+    if (!box) return;
+    const d = s.reader.dictionary;
+    const active = [...s.head.active];
+    const parents = new Set(active.map((n) => d.states[n]?.parent));
+    const leaves = active.filter((n) => !parents.has(n) && d.states[n] && d.states[n].kind !== StateKind.top).sort((a, b) => a - b);
+    const text = leaves.map((n) => d.stateName(n)).join(' ');
+    if (box.dataset.states === text) return;
+    box.dataset.states = text;
+    const line = box.querySelector('.states');
+    const width = Number(box.querySelector('.shape').getAttribute('width')) - 20;
+    let shown = text;
+    while (shown.length > 1 && measure(shown, SMALL_FONT) > width) shown = `${shown.slice(0, -2)}…`;
+    line.textContent = shown;
+    box.querySelector('title').textContent = `${s.actor >= 0 ? app.system.actors[s.actor].name : ''}: ${text || '(no configuration yet)'}`;
+  }
+
+  // Live: an actor whose transitions fired pulses for a moment.
+  const pulseTimers = new Map();
+  function pulseActor(i) {
+    const box = actorBox(i);
+    if (!box) return;
+    box.classList.remove('pulse');
+    void box.getBoundingClientRect();
+    box.classList.add('pulse');
+    clearTimeout(pulseTimers.get(i));
+    pulseTimers.set(i, setTimeout(() => box.classList.remove('pulse'), FLASH_MS));
+  }
+
+  function markSelected() {
+    for (const box of document.querySelectorAll('#system-svg .actor')) box.classList.toggle('selected', Number(box.dataset.actor) === app.stream.actor);
+  }
+
+  /** Shows actor i's chart, members, log and timeline; commands go to it. */
+  function selectActor(i) {
+    const s = app.streams[i];
+    if (!app.system || !s) return false;
+    app.stream = s;
+    s.log = { from: 0, to: -1 };
+    $('log').replaceChildren();
+    app.chart = null;
+    app.chartSignature = '';
+    $('chart').replaceChildren(placeholder('Waiting for the trace\u2019s dictionary…'));
+    markSelected();
+    scheduleLayout();
+    renderEventButtons();
+    renderMembersTable();
+    show(s.following ? s.records.length - 1 : s.position);
+    updateCounters();
+    return true;
+  }
+
   // ---- Counters, wiring, start ----------------------------------------------------------------
 
   function updateCounters() {
@@ -866,6 +1088,7 @@
       applyZoom();
     });
     new ResizeObserver(() => app.zoom === 'fit' && applyZoom()).observe($('chart'));
+    new ResizeObserver(fitSystem).observe($('system'));
     $('set-form').addEventListener('submit', (e) => {
       e.preventDefault();
       const member = $('set-member').value;
@@ -874,7 +1097,7 @@
         setStatus('set: choose a member and give a value', 'error');
         return;
       }
-      command(`set ${member} ${value}`);
+      command(`set ${actorWord()}${member} ${value}`);
     });
     for (const name of ['pause', 'resume', 'step']) $(name).addEventListener('click', () => command(name));
   }
@@ -904,6 +1127,7 @@
     app.mode = 'live';
     $('mode').textContent = 'live';
     if (app.info.chart) $('chart-name').textContent = app.info.chart;
+    if (app.info.system === true && Array.isArray(app.info.actors)) startSystem(app.info);
     renderControls();
     poll();
   }
@@ -921,9 +1145,21 @@
     get following() {
       return app.following;
     },
-    records: app.records,
+    get records() {
+      return app.records;
+    },
     active: activeNames,
     position: () => app.position,
+    get system() {
+      return app.system !== null;
+    },
+    /** A system's actors: their names and the leaf states each box shows. */
+    actors: () => (app.system ? app.system.actors.map((a, i) => ({ name: a.name, states: actorBox(i)?.dataset.states ?? null })) : []),
+    /** The place of the actor whose panes are shown (-1 for a machine). */
+    get selected() {
+      return app.stream.actor;
+    },
+    select: (i) => selectActor(i),
   };
 
   start();

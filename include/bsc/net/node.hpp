@@ -44,6 +44,7 @@
 #include <vector>
 
 #include <bsc/detail/member_names.hpp>
+#include <bsc/detail/system_plan.hpp>
 #include <bsc/net/transport.hpp>
 #include <bsc/net/wire.hpp>
 #include <bsc/retain.hpp>
@@ -80,67 +81,9 @@ struct node_stats {
 
 namespace detail {
 
-template <std::size_t I, auto... Members>
-struct nth_member;
-template <auto First, auto... Rest>
-struct nth_member<0, First, Rest...> {
-    static constexpr auto value = First;
-};
-template <std::size_t I, auto First, auto... Rest>
-struct nth_member<I, First, Rest...> : nth_member<I - 1, Rest...> {};
-
+// What a node knows of its system: the actors' places and names, the links' ends.
 template <class System>
-struct deployment {
-    static_assert(sizeof(System) == 0,
-                  "bsc::net::node<System>: System must be a bsc::system<Actors, bsc::order<...>, links...>");
-};
-
-template <class Actors, auto... Steps, class... Entries>
-struct deployment<system<Actors, order<Steps...>, Entries...>> {
-    // The links only: a system's bsc::from_outside entries are the environment's business.
-    using links = typename system<Actors, order<Steps...>, Entries...>::links_type;
-    static constexpr std::size_t actor_count = sizeof...(Steps);
-    static constexpr std::size_t link_count = std::tuple_size_v<links>;
-    static constexpr std::array<std::string_view, actor_count> names{bsc::detail::member_name<Steps>()...};
-
-    template <auto Actor>
-    static constexpr std::size_t place() {
-        std::size_t i = 0, found = actor_count;
-        ((bsc::detail::same_member_pointer<Actor, Steps>() ? (found = i, ++i) : ++i), ...);
-        return found;
-    }
-    template <std::size_t I>
-    static constexpr auto step_at = nth_member<I, Steps...>::value;
-    template <std::size_t I>
-    using machine_at = std::remove_cvref_t<decltype(std::declval<Actors&>().*nth_member<I, Steps...>::value)>;
-
-    // What link L carries over the network: the source's value, as its publisher published it
-    // (the consumer's side applies the link's bsc::convert).
-    template <class L>
-    using value_of = bsc::detail::channel_value<
-        std::remove_cvref_t<decltype(((std::declval<Actors&>().*L::from_actor).context()).*L::from_channel)>>;
-    // What the consumer of link L reads: its input's value type.
-    template <class L>
-    using target_value_of = bsc::detail::channel_value<
-        std::remove_cvref_t<decltype(((std::declval<Actors&>().*L::to_actor).context()).*L::to_channel)>>;
-
-    // (Every actor a link names is in the order: bsc::system checks it.)
-    // clang-format off
-    static constexpr std::array<std::size_t, link_count> from = []<class... L>(std::tuple<L...>*) {
-        return std::array<std::size_t, link_count>{place<L::from_actor>()...};
-    }(static_cast<links*>(nullptr));
-    // clang-format on
-    // clang-format off
-    static constexpr std::array<std::size_t, link_count> to = []<class... L>(std::tuple<L...>*) {
-        return std::array<std::size_t, link_count>{place<L::to_actor>()...};
-    }(static_cast<links*>(nullptr));
-    // clang-format on
-    // clang-format off
-    static constexpr std::array<bool, link_count> lossless = []<class... L>(std::tuple<L...>*) {
-        return std::array<bool, link_count>{std::is_same_v<typename L::when_stale, bsc::lossless>...};
-    }(static_cast<links*>(nullptr));
-    // clang-format on
-};
+using deployment = bsc::detail::system_plan<System>;
 
 }  // namespace detail
 
