@@ -1,7 +1,8 @@
 # inspector.*: the inspector's page in a real browser (tests/inspector/inspector_test.mjs):
 # Debian's Chromium, headless, driven by playwright-core from web/node_modules. inspector.live
 # runs the MCS with its view and pushes buttons on the page; inspector.system watches and drives
-# the production cell, a system of ten actors; inspector.replay opens a recorded
+# the production cell, a system of ten actors, and inspector.replay_system opens a recording of it;
+# inspector.replay opens a recorded
 # run of the manufacturing cell from file:// and steps through it. Screenshots go to
 # <build>/tests/inspector/. Without Node.js, Chromium or the npm packages (scripts/run deps
 # installs them; the build copies elk.bundled.js beside the page) the tests report skipped,
@@ -35,6 +36,17 @@ add_test(NAME inspector.replay
     --out ${bsc_inspector_out} --node-modules ${bsc_node_modules} --python ${Python3_EXECUTABLE})
 set_tests_properties(inspector.replay PROPERTIES FIXTURES_REQUIRED bsc_cell_trace)
 
+# A system's recording (the production cell's checked run: system.json and a trace per actor),
+# replayed from file:// with every actor's box following the time of the actor shown.
+add_test(NAME inspector.record_system
+  COMMAND sh -c "rm -rf \"$1\" && mkdir -p \"$1\" && \"$2\" --trace \"$1\" > /dev/null"
+    record ${bsc_inspector_out}/production_cell $<TARGET_FILE:production_cell>)
+set_tests_properties(inspector.record_system PROPERTIES FIXTURES_SETUP bsc_system_trace)
+add_test(NAME inspector.replay_system
+  COMMAND ${bsc_browser_test} replay-system --folder ${bsc_inspector_out}/production_cell --web-root ${BSC_INSPECTOR_WEB_ROOT}
+    --out ${bsc_inspector_out} --node-modules ${bsc_node_modules})
+set_tests_properties(inspector.replay_system PROPERTIES FIXTURES_REQUIRED bsc_system_trace)
+
 file(MAKE_DIRECTORY ${bsc_inspector_out})
-set_tests_properties(inspector.live inspector.system inspector.replay PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 150 LABELS browser
+set_tests_properties(inspector.live inspector.system inspector.replay inspector.replay_system PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 150 LABELS browser
   RESOURCE_LOCK browser)

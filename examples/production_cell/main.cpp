@@ -4,6 +4,8 @@
 // status 1) if a plant model reaches Damage, a brick is lost, or a brick leaves unforged or not
 // at all within the time limit.
 //
+//   production_cell --trace DIR
+//     the same run, recorded into the folder DIR for the inspector's page to replay.
 //   production_cell --inspect PORT [--commands] [--web-root DIR] [--period-ms MS]
 //     runs the cell in real time, a brick offered every 15 s, watched in the browser: one panel
 //     per actor and the links between them (bsc::system_inspector, docs/inspector.md). With
@@ -14,10 +16,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <string_view>
@@ -61,18 +65,20 @@ std::string line(System const& s) {
 
 double seconds(bsc::duration d) { return std::chrono::duration<double>(d).count(); }
 
-/// The checked run: five bricks, as fast as the machine goes.
-int run_checked() {
+/// The checked run: five bricks, as fast as the machine goes; `stepped(cell)` after each step.
+template <class System, class Stepped>
+int run_checked(Stepped stepped) {
     // Two bricks at once, one shortly after, then two more later.
     std::vector<bsc::duration> const offers{0s, 0s, 2s, 15s, 16s};
     constexpr auto time_limit = 90s;
 
-    pcell::run<pcell::cell> r{offers};
+    pcell::run<System> r{offers};
     std::string previous;
     bool conserved = true;
     while (!r.done() && r.now() <= time_limit && pcell::no_damage(r.cell)) {
         auto const t = r.now();
         r.step();
+        stepped(r.cell);
         conserved = conserved && r.bricks_conserved();
         auto const now = line(r.cell);
         if (now != previous) std::printf("%6.1f s  %s\n", seconds(t), now.c_str());
@@ -106,8 +112,40 @@ int run_checked() {
     return ok ? 0 : 1;
 }
 
+// The checked run recorded into `folder`: system.json (the system's description) and one
+// <actor>.bsctrace per actor, which the inspector's page replays from disk.
+int run_recorded(std::string const& folder) {
+    using view = bsc::system_inspector<pcell::traced_cell>;
+    std::ofstream description{folder + "/system.json"};
+    description << view::description() << "\n";
+    std::array<std::ofstream, pcell::traced_actor_names.size()> files;
+    for (std::size_t i = 0; i < files.size(); ++i)
+        files[i].open(folder + "/" + std::string{pcell::traced_actor_names[i]} + ".bsctrace", std::ios::binary);
+    auto const drain = [&files] {
+        std::array<std::byte, 4096> chunk;
+        for (std::size_t i = 0; i < files.size(); ++i)
+            while (std::size_t const n = pcell::trace_rings[i].read(chunk))
+                files[i].write(reinterpret_cast<char const*>(chunk.data()), static_cast<std::streamsize>(n));
+    };
+    drain();  // the dictionaries and the construction, written before the first step
+    int const status = run_checked<pcell::traced_cell>([&drain](pcell::traced_cell& cell) {
+        pcell::sample_all(cell);
+        drain();
+    });
+    bool written = static_cast<bool>(description.flush());
+    for (auto& f : files) written = written && static_cast<bool>(f.flush());
+    for (auto const& ring : pcell::trace_rings) written = written && ring.dropped() == 0;
+    if (!written) {
+        std::fprintf(stderr, "production_cell: could not record the run into %s\n", folder.c_str());
+        return 2;
+    }
+    std::printf("recorded into %s: system.json and %zu traces\n", folder.c_str(), files.size());
+    return status;
+}
+
 struct options {
-    int inspect = -1;  // the inspector's port, if any
+    std::string trace;  // the folder to record into, if any
+    int inspect = -1;   // the inspector's port, if any
     bool commands = false;
     std::string web_root = BSC_CELL_WEB_ROOT;
     int period_ms = 100;  // wall time per step
@@ -158,7 +196,10 @@ int run_inspected(options const& o) {
         ssize_t const n = ::read(0, chunk, sizeof chunk);
         if (n <= 0) break;
         pending.append(chunk, static_cast<std::size_t>(n));
-        if (pending.find("quit") != std::string::npos) break;
+        bool quit = false;
+        for (std::size_t end; !quit && (end = pending.find('\n')) != std::string::npos; pending.erase(0, end + 1))
+            quit = std::string_view{pending}.substr(0, end) == "quit";
+        if (quit) break;
     }
     if (!pcell::no_damage(r.cell)) {
         std::printf("FAILED: Damage in %s\n", pcell::damaged(r.cell).c_str());
@@ -187,16 +228,21 @@ int main(int argc, char** argv) {
             o.web_root = argv[++i];
         } else if (a == "--period-ms" && i + 1 < argc) {
             bad = !read_number(argv[++i], 1, 10000, o.period_ms);
+        } else if (a == "--trace" && i + 1 < argc && o.trace.empty()) {
+            o.trace = argv[++i];
         } else if (a == "--help") {
             asked = true;
         } else {
             bad = true;
         }
     }
-    if (bad || asked || (o.inspect < 0 && (o.commands || argc > 1))) {
+    bool const inspect_flags = o.commands || o.period_ms != 100 || o.web_root != BSC_CELL_WEB_ROOT;
+    if (bad || asked || (o.inspect < 0 && inspect_flags) || (o.inspect >= 0 && !o.trace.empty())) {
         (asked ? std::cout : std::cerr)
-            << "usage: production_cell [--inspect PORT [--commands] [--web-root DIR] [--period-ms MS]]\n"
+            << "usage: production_cell [--trace DIR | --inspect PORT [--commands] [--web-root DIR] [--period-ms MS]]\n"
                "  (no flag)        the checked run: five bricks, a summary, exit status 1 on a failure\n"
+               "  --trace DIR      the checked run, recorded into the folder DIR (which must exist): system.json\n"
+               "                   and one <actor>.bsctrace per actor, for the inspector's page to replay\n"
                "  --inspect PORT   the cell in real time, a brick every 15 s, served to the browser at\n"
                "                   http://127.0.0.1:PORT/ (0: any free port); ends at 'quit' or the end of input\n"
                "  --commands       let the page pause, step and set the operator's inputs (default: read-only)\n"
@@ -205,5 +251,7 @@ int main(int argc, char** argv) {
                "  --period-ms MS   wall time per step of 100 ms of the cell's time (default: 100)\n";
         return asked ? 0 : 2;
     }
-    return o.inspect >= 0 ? run_inspected(o) : run_checked();
+    if (o.inspect >= 0) return run_inspected(o);
+    if (!o.trace.empty()) return run_recorded(o.trace);
+    return run_checked<pcell::cell>([](pcell::cell const&) {});
 }

@@ -24,6 +24,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -79,12 +80,14 @@ auto* tracer_of(observers<Parts...>& o) {
 }
 
 // Finds the context member named `path` (dotted, as the trace names members) in a walk
-// (detail/members.hpp) and, if it is an input of a scalar type, sets it to the value `text`
-// reads as; `answer` is then empty, or says why not.
+// (detail/members.hpp) and, if it is an input of a scalar type that `refuse` does not refuse
+// (given its address, it says why not, or nothing), sets it to the value `text` reads as;
+// `answer` is then empty, or says why not.
 struct input_setter {
     static constexpr bool named = true;
     std::string_view path;
     std::string_view text;
+    std::function<std::string(void const*)> refuse;
     member_path prefix;
     std::string answer;
     bool found = false;
@@ -104,6 +107,8 @@ struct input_setter {
                 answer = what + " is an output: only inputs can be set";
             } else if constexpr (!recorded::is_scalar_variable<V>) {
                 answer = what + " is not of a scalar type";
+            } else if (std::string why = refuse ? refuse(&member) : std::string{}; !why.empty()) {
+                answer = std::move(why);
             } else {
                 V value{};
                 if (read(text, value)) {
@@ -143,10 +148,12 @@ struct input_setter {
     }
 };
 
-// Sets the input named `path` of `context` to `text`'s value: "" (done), or why not.
+// Sets the input named `path` of `context` to `text`'s value: "" (done), or why not (`refuse`'s
+// answer for the input's address among them).
 template <class Context>
-std::string set_input(Context const& context, std::string_view path, std::string_view text) {
-    input_setter setter{path, text, {}, "no input is named '" + std::string{path} + "'", false};
+std::string set_input(Context const& context, std::string_view path, std::string_view text,
+                      std::function<std::string(void const*)> refuse = {}) {
+    input_setter setter{path, text, std::move(refuse), {}, "no input is named '" + std::string{path} + "'", false};
     if constexpr (reaches<input_setter, Context>()) walk(context, setter, std::string_view{});
     return setter.answer;
 }

@@ -31,6 +31,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -418,7 +419,9 @@ public:
     // The answer to GET /trace?from=N: at most `max_answer` bytes from N (or from the oldest
     // kept, if the history let N go), with the range in X-Trace-Start and X-Trace-End.
     response answer(std::size_t from) const {
-        std::size_t const start = from < base_ ? base_ : from;
+        // Past the end (a page that read an earlier run of the program): an empty answer at the
+        // end, which tells the page to read again from the start.
+        std::size_t const start = from < base_ ? base_ : from > end() ? end() : from;
         std::size_t const stop = end() - start > max_answer ? start + max_answer : end();
         response r{200, "application/octet-stream", {}, {}};
         if (start < stop) r.body.assign(reinterpret_cast<char const*>(bytes_.data()) + (start - base_), stop - start);
@@ -599,12 +602,14 @@ auto* tracer_of(observers<Parts...>& o) {
 }
 
 // Finds the context member named `path` (dotted, as the trace names members) in a walk
-// (detail/members.hpp) and, if it is an input of a scalar type, sets it to the value `text`
-// reads as; `answer` is then empty, or says why not.
+// (detail/members.hpp) and, if it is an input of a scalar type that `refuse` does not refuse
+// (given its address, it says why not, or nothing), sets it to the value `text` reads as;
+// `answer` is then empty, or says why not.
 struct input_setter {
     static constexpr bool named = true;
     std::string_view path;
     std::string_view text;
+    std::function<std::string(void const*)> refuse;
     member_path prefix;
     std::string answer;
     bool found = false;
@@ -624,6 +629,8 @@ struct input_setter {
                 answer = what + " is an output: only inputs can be set";
             } else if constexpr (!recorded::is_scalar_variable<V>) {
                 answer = what + " is not of a scalar type";
+            } else if (std::string why = refuse ? refuse(&member) : std::string{}; !why.empty()) {
+                answer = std::move(why);
             } else {
                 V value{};
                 if (read(text, value)) {
@@ -663,10 +670,12 @@ struct input_setter {
     }
 };
 
-// Sets the input named `path` of `context` to `text`'s value: "" (done), or why not.
+// Sets the input named `path` of `context` to `text`'s value: "" (done), or why not (`refuse`'s
+// answer for the input's address among them).
 template <class Context>
-std::string set_input(Context const& context, std::string_view path, std::string_view text) {
-    input_setter setter{path, text, {}, "no input is named '" + std::string{path} + "'", false};
+std::string set_input(Context const& context, std::string_view path, std::string_view text,
+                      std::function<std::string(void const*)> refuse = {}) {
+    input_setter setter{path, text, std::move(refuse), {}, "no input is named '" + std::string{path} + "'", false};
     if constexpr (reaches<input_setter, Context>()) walk(context, setter, std::string_view{});
     return setter.answer;
 }

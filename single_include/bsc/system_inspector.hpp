@@ -27,6 +27,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -67,7 +68,6 @@ template <class Actors, auto... Steps, class... Entries>
 struct system_plan<system<Actors, order<Steps...>, Entries...>> {
     // The links only: a system's bsc::from_outside entries are the environment's business.
     using links = typename system<Actors, order<Steps...>, Entries...>::links_type;
-    using outside = typename system<Actors, order<Steps...>, Entries...>::from_outside_type;
     static constexpr std::size_t actor_count = sizeof...(Steps);
     static constexpr std::size_t link_count = std::tuple_size_v<links>;
     static constexpr std::array<std::string_view, actor_count> names{member_name<Steps>()...};
@@ -98,6 +98,7 @@ struct system_plan<system<Actors, order<Steps...>, Entries...>> {
     static constexpr std::array<std::size_t, link_count> from = []<class... L>(std::tuple<L...>*) {
         return std::array<std::size_t, link_count>{place<L::from_actor>()...};
     }(static_cast<links*>(nullptr));
+    // clang-format on
     // clang-format off
     static constexpr std::array<std::size_t, link_count> to = []<class... L>(std::tuple<L...>*) {
         return std::array<std::size_t, link_count>{place<L::to_actor>()...};
@@ -132,7 +133,6 @@ struct system_plan<system<Actors, order<Steps...>, Entries...>> {
         }(static_cast<links*>(nullptr));
         // clang-format on
     }
-    // clang-format on
 };
 
 }  // namespace bsc::detail
@@ -152,9 +152,19 @@ class system_inspector {
 
 public:
     /// Listens on 127.0.0.1:options.port; throws std::system_error if it cannot.
+    /// Throws std::invalid_argument if two actors' tracers write into one ring (each stream
+    /// needs its own: the reader of one would take the other's frames).
     system_inspector(System& system, inspector_options options) : system_(system), site_(std::move(options)) {
+        std::array<trace_buffer const*, N> rings{};
         each([&]<std::size_t I>() {
-            if constexpr (traced<I>) histories_[I] = detail::inspector::trace_history{&tracer<I>()->buffer()};
+            if constexpr (traced<I>) {
+                rings[I] = &tracer<I>()->buffer();
+                for (std::size_t j = 0; j < I; ++j)
+                    if (rings[j] == rings[I])
+                        throw std::invalid_argument("bsc::system_inspector: " + std::string{plan::names[j]} + " and " +
+                                                    std::string{plan::names[I]} + " trace into the same ring");
+                histories_[I] = detail::inspector::trace_history{&tracer<I>()->buffer()};
+            }
         });
     }
 
@@ -186,6 +196,34 @@ public:
     bool paused() const { return site_.paused(); }
     /// The commands run so far.
     std::uint64_t commands_run() const { return site_.commands_run(); }
+    /// The system as GET /info describes it, without the run's fields: a JSON object
+    /// {"system": true, "actors": [{"name", "chart", "traced"}...], "links": [{"from",
+    /// "from_channel", "to", "to_channel", "lossless"}...]}, actors and links in the system's
+    /// order. Saved as system.json beside the actors' recorded traces (<name>.bsctrace), it lets
+    /// the page replay the system from files.
+    static std::string description() {
+        using detail::inspector::json_name;
+        std::string body = "{\"system\": true, \"actors\": [";
+        // clang-format off
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((body += std::string(I > 0 ? ", " : "") + "{\"name\": \"" + json_name(plan::names[I]) + "\", \"chart\": \"" +
+                      json_name(chart_name<I>()) + "\", \"traced\": " + (traced<I> ? "true" : "false") + "}"),
+             ...);
+        }(std::make_index_sequence<N>{});
+        // clang-format on
+        body += "], \"links\": [";
+        static constexpr auto from_channels = plan::from_channels();
+        static constexpr auto to_channels = plan::to_channels();
+        for (std::size_t k = 0; k < plan::link_count; ++k) {
+            if (k > 0) body += ", ";
+            body += "{\"from\": " + std::to_string(plan::from[k]) + ", \"from_channel\": \"" +
+                    json_name(from_channels[k]) + "\", \"to\": " + std::to_string(plan::to[k]) +
+                    ", \"to_channel\": \"" + json_name(to_channels[k]) +
+                    "\", \"lossless\": " + (plan::lossless[k] ? "true" : "false") + "}";
+        }
+        return body + "]}";
+    }
+
     /// The trace bytes of the actor at `place` in the system's order that the page can read.
     std::size_t trace_end(std::size_t place) const { return place < N ? histories_[place].end() : 0; }
 
@@ -258,25 +296,10 @@ private:
     }
 
     // The site's handler (detail/inspector/site.hpp): the system's own answers.
-    response info(std::string const& run) {
-        using detail::inspector::json_name;
-        std::string body = "{\"system\": true, \"actors\": [";
-        each([&]<std::size_t I>() {
-            if (I > 0) body += ", ";
-            body += "{\"name\": \"" + json_name(plan::names[I]) + "\", \"chart\": \"" + json_name(chart_name<I>()) +
-                    "\", \"traced\": " + (traced<I> ? "true" : "false") + "}";
-        });
-        body += "], \"links\": [";
-        static constexpr auto from_channels = plan::from_channels();
-        static constexpr auto to_channels = plan::to_channels();
-        for (std::size_t k = 0; k < plan::link_count; ++k) {
-            if (k > 0) body += ", ";
-            body += "{\"from\": " + std::to_string(plan::from[k]) + ", \"from_channel\": \"" +
-                    json_name(from_channels[k]) + "\", \"to\": " + std::to_string(plan::to[k]) +
-                    ", \"to_channel\": \"" + json_name(to_channels[k]) +
-                    "\", \"lossless\": " + (plan::lossless[k] ? "true" : "false") + "}";
-        }
-        return {200, "application/json", body + "], " + run + "}", {}};
+    response info(std::string const& run) const {
+        std::string body = description();
+        body.pop_back();  // the closing brace: the run's fields follow
+        return {200, "application/json", body + ", " + run + "}", {}};
     }
 
     response trace(std::string_view query) const {
@@ -323,17 +346,55 @@ private:
         if (value.empty()) return text(400, "set <actor> <input> <value>");
         std::string const who{plan::names[I]};
         // A linked input takes its sender's value at every step: setting it would last no step.
-        static constexpr auto from_channels = plan::from_channels();
-        static constexpr auto to_channels = plan::to_channels();
-        for (std::size_t k = 0; k < plan::link_count; ++k)
-            if (plan::to[k] == I && to_channels[k] == member)
-                return text(400, who + "." + std::string{member} + " is driven by the link from " +
-                                     std::string{plan::names[plan::from[k]]} + "." + std::string{from_channels[k]} +
-                                     ": only inputs no link drives can be set");
-        std::string const why = detail::inspector::set_input(actor<I>().context(), member, value);
-        if (!why.empty()) return text(400, who + ": " + why);
+        // Found by its address, which does not depend on how the context names its members.
+        bool by_link = false;
+        auto const linked = [this, &who, &by_link, member](void const* input) -> std::string {
+            std::string why;
+            // clang-format off
+            [&]<class... L>(std::tuple<L...>*) {
+                ((why.empty() && plan::to[index_of<L>()] == I && linked_input<I, L>() == input
+                      ? (why = who + "." + std::string{member} + " is driven by the link from " +
+                               link_source<L>() + ": only inputs no link drives can be set",
+                         0)
+                      : 0),
+                 ...);
+            }(static_cast<typename plan::links*>(nullptr));
+            // clang-format on
+            by_link = !why.empty();
+            return why;
+        };
+        std::string const why = detail::inspector::set_input(actor<I>().context(), member, value, linked);
+        if (!why.empty()) return text(400, by_link ? why : who + ": " + why);
         return text(200, "ok " + who + "." + std::string{member} + " = " + std::string{value} +
                              (site_.options().stepping ? " (latched at the next step)" : ""));
+    }
+
+    // The place of link L in the system's list of links.
+    template <class L>
+    static constexpr std::size_t index_of() {
+        // clang-format off
+        return []<class... Ls>(std::tuple<Ls...>*) {
+            std::size_t i = 0, found = plan::link_count;
+            ((std::is_same_v<L, Ls> && found == plan::link_count ? (found = i, ++i) : ++i), ...);
+            return found;
+        }(static_cast<typename plan::links*>(nullptr));
+        // clang-format on
+    }
+    // The input that link L drives, if it is an input of the actor at place I (else nullptr).
+    template <std::size_t I, class L>
+    void const* linked_input() {
+        if constexpr (plan::template place<L::to_actor>() == I)
+            return &(actor<I>().context().*L::to_channel);
+        else
+            return nullptr;
+    }
+    // "robot.press_loaded": the actor and the channel link L takes its value from.
+    template <class L>
+    static std::string link_source() {
+        static constexpr auto from_channels = plan::from_channels();
+        std::string out{plan::names[plan::from[index_of<L>()]]};
+        if (!from_channels[index_of<L>()].empty()) out += "." + std::string{from_channels[index_of<L>()]};
+        return out;
     }
 
     System& system_;

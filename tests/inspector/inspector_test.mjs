@@ -8,6 +8,11 @@
 //       box per actor and one edge per pair of linked actors against the program's /info, follows
 //       the actors' states, shows another actor's chart, pauses and single-steps the cell, and sets
 //       an operator's input and refuses one a link drives.
+//   node inspector_test.mjs replay-system --folder <dir> --web-root <dir> --out <dir> [--node-modules <dir>]
+//       opens a system's recording (`production_cell --trace <dir>`: system.json and one .bsctrace
+//       per actor) from file://, checks the boxes and edges against system.json, shows the robot,
+//       and at several timeline positions checks that every other actor's box shows that actor's
+//       leaf states at the time of the robot's record, worked out here from its own trace.
 //   node inspector_test.mjs replay --trace <file> --web-root <dir> --out <dir> [--node-modules <dir>]
 //                                  [--python <python3>]
 //       opens <web-root>/index.html from file:// (with no browser flag: a user's browser has
@@ -53,7 +58,7 @@ function parseArgs(argv) {
     if (!rest[i].startsWith('--') || i + 1 >= rest.length) usage(`bad argument '${rest[i]}'`);
     options[rest[i].slice(2)] = rest[i + 1];
   }
-  const needed = { live: ['program', 'out'], system: ['program', 'out'], replay: ['trace', 'web-root', 'out'] }[mode];
+  const needed = { live: ['program', 'out'], system: ['program', 'out'], 'replay-system': ['folder', 'web-root', 'out'], replay: ['trace', 'web-root', 'out'] }[mode];
   if (!needed) usage(`unknown mode '${mode ?? ''}'`);
   for (const name of needed) if (!options[name]) usage(`--${name} is missing`);
   options['node-modules'] ??= path.resolve(here, '../../web/node_modules');
@@ -65,6 +70,7 @@ function usage(why) {
   console.error(`inspector_test: ${why}
 usage: node inspector_test.mjs live --program <mcs> --out <dir> [--node-modules <dir>] [--web-root <dir>]
        node inspector_test.mjs system --program <production_cell> --out <dir> [--node-modules <dir>] [--web-root <dir>]
+       node inspector_test.mjs replay-system --folder <dir> --web-root <dir> --out <dir> [--node-modules <dir>]
        node inspector_test.mjs replay --trace <file> --web-root <dir> --out <dir> [--node-modules <dir>] [--python <python3>]`);
   process.exit(1);
 }
@@ -325,6 +331,89 @@ async function system(page, options, out) {
   }
 }
 
+// ---- A system's recording -------------------------------------------------------------------
+
+// The leaf states after each record of a trace: the active states that are no other active
+// state's parent, by name, sorted as the page sorts them (by number).
+function leafStates(BscTrace, trace) {
+  const d = trace.reader.dictionary;
+  return configurations(BscTrace, trace.records).map((active) => {
+    const parents = new Set(active.map((n) => d.states[n]?.parent));
+    return active
+      .filter((n) => !parents.has(n) && d.states[n] && d.states[n].kind !== BscTrace.StateKind.top)
+      .sort((a, b) => a - b)
+      .map((n) => d.stateName(n))
+      .join(' ');
+  });
+}
+
+async function replaySystem(page, options, out) {
+  const webRoot = path.resolve(options['web-root']);
+  if (!fs.existsSync(path.join(webRoot, 'elk.bundled.js'))) throw new Skip(`no elk.bundled.js in ${webRoot} (npm install in web/, then build)`);
+  const BscTrace = loadReader(webRoot);
+  const folder = path.resolve(options.folder);
+  const info = JSON.parse(fs.readFileSync(path.join(folder, 'system.json'), 'utf8'));
+  check(info.system === true && info.actors.length > 1, `system.json describes ${info.actors.length} actors`);
+  const traces = new Map();
+  for (const a of info.actors) {
+    const trace = readTrace(BscTrace, fs.readFileSync(path.join(folder, `${a.name}.bsctrace`)));
+    trace.leaves = leafStates(BscTrace, trace);
+    traces.set(a.name, trace);
+  }
+  check([...traces.values()].every((t) => t.reader.missing === 0 && t.reader.skippedBytes === 0 && t.records.length > 0), 'every actor\u2019s trace is whole');
+
+  await page.goto(pathToFileURL(path.join(webRoot, 'index.html')).href);
+  await page.waitForSelector('#trace-file', { state: 'attached', timeout: WAIT_MS });
+  const files = fs.readdirSync(folder).filter((n) => n === 'system.json' || n.endsWith('.bsctrace'));
+  await page.setInputFiles('#trace-file', files.map((n) => path.join(folder, n)));
+  check(await waitFor(page, () => window.bscInspector?.system && window.bscInspector.ready, null, 'the system'), 'the page drew the recorded system');
+  const boxes = await page.$$eval('#system-svg .actor', (gs) => gs.map((g) => g.dataset.name));
+  check(sameSet(boxes, info.actors.map((a) => a.name)), `one box per actor (${boxes.length})`);
+  const pairs = new Set(info.links.map((l) => `${l.from}>${l.to}`));
+  check((await page.$$eval('#system-svg .link', (gs) => gs.length)) === pairs.size, `one edge per pair of linked actors (${pairs.size})`);
+  await waitFor(page, () => document.getElementById('status').textContent.startsWith('system.json:'), null, 'every file read');
+  const status = (await page.textContent('#status')).trim();
+  const total = [...traces.values()].reduce((n, t) => n + t.records.length, 0);
+  check(status === `system.json: ${info.actors.length} actors, ${total} records`, `the page read every record ('${status}')`);
+
+  // At the end, every box shows its actor's last leaf states.
+  const boxStates = async () => Object.fromEntries((await page.evaluate(() => window.bscInspector.actors())).map((a) => [a.name, a.states]));
+  let shown = await boxStates();
+  check(info.actors.every((a) => shown[a.name] === traces.get(a.name).leaves.at(-1)), 'at the end every box shows its actor\u2019s last states');
+
+  // The robot shown; at positions of its timeline every other box follows the robot's time.
+  await page.click('#system-svg .actor[data-name="robot"]');
+  const robotPlace = info.actors.findIndex((a) => a.name === 'robot');
+  check(await waitFor(page, (i) => window.bscInspector.selected === i && window.bscInspector.dictionary.chart === 'RobotActor', robotPlace, 'the robot'), 'a click shows the robot\u2019s chart');
+  const robot = traces.get('robot');
+  const moveTo = (i) =>
+    page.$eval('#timeline', (range, value) => {
+      range.value = String(value);
+      range.dispatchEvent(new Event('input', { bubbles: true }));
+    }, i);
+  const transitions = robot.records.map((r, i) => (r.type === BscTrace.RecordType.transition ? i : -1)).filter((i) => i >= 0);
+  const picks = [transitions[2], transitions[Math.floor(transitions.length / 2)], transitions.at(-3)].filter((i) => i !== undefined);
+  const seen = new Set();
+  for (const i of picks) {
+    await moveTo(i);
+    const time = robot.records[i].time;
+    shown = await boxStates();
+    const want = Object.fromEntries(
+      info.actors.map((a) => {
+        const t = traces.get(a.name);
+        let k = -1;
+        while (k + 1 < t.records.length && t.records[k + 1].time <= time) ++k;
+        return [a.name, a.name === 'robot' ? t.leaves[i] : k >= 0 ? t.leaves[k] : ''];
+      }),
+    );
+    const wrong = info.actors.filter((a) => shown[a.name] !== want[a.name]).map((a) => `${a.name}: '${shown[a.name]}' not '${want[a.name]}'`);
+    check(wrong.length === 0, `at the robot's record ${i} (${robot.records[i].text}) every box shows its actor then${wrong.length ? `: ${wrong.join('; ')}` : ''}`);
+    seen.add(JSON.stringify(want));
+  }
+  check(seen.size === picks.length && picks.length === 3, `the ${picks.length} positions show different moments of the cell`);
+  await page.screenshot({ path: path.join(out, 'inspector_replay_system.png') });
+}
+
 // ---- Replay ---------------------------------------------------------------------------------
 
 // The reader the page uses, loaded from the page's folder and run as the page runs it: a classic
@@ -561,6 +650,7 @@ async function main() {
     page.on('response', (r) => r.status() >= 400 && !refused(r) && problems.push(`HTTP ${r.status()} for ${r.url()}`));
     if (mode === 'live') await live(page, options, out);
     else if (mode === 'system') await system(page, options, out);
+    else if (mode === 'replay-system') await replaySystem(page, options, out);
     else await replay(page, options, out);
     check(problems.length === 0, `the page reported no error${problems.length ? `: ${problems.join('; ')}` : ''}`);
   } catch (e) {

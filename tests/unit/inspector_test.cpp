@@ -154,6 +154,13 @@ TEST_CASE("the inspector serves the trace and runs a stepping program's commands
     CHECK(lines.find("[150ms] dispatch stop\n[150ms] exit Busy\n[150ms] transition Busy -> Idle on stop (row 1)\n") !=
           std::string::npos);
     CHECK(reader.missing() == 0);
+    // From past the end (a page that read an earlier, longer run): nothing, and the end to
+    // start again from; never bytes beyond the history.
+    auto const beyond = ask(view, "GET", "/trace?from=" + std::to_string(view.trace_end() + 1000));
+    CHECK(beyond.status == 200);
+    CHECK(beyond.body.empty());
+    CHECK(header(beyond, "X-Trace-Start") == std::to_string(view.trace_end()));
+    CHECK(header(beyond, "X-Trace-End") == std::to_string(view.trace_end()));
 
     // No files without a web root; nothing outside it.
     CHECK(ask(view, "GET", "/").status == 404);

@@ -87,6 +87,62 @@ std::string lines(View& view, std::size_t actor) {
     return out;
 }
 
+// A belt whose context is not an aggregate (a constructor): described by bsc::fields, so that
+// its members' names are the description's, not known from the class itself.
+class held_belt_io {
+public:
+    held_belt_io() = default;
+    bsc::input<bool> motor;
+    bsc::input<bool> brake;
+};
+}  // namespace system_inspector_test
+
+template <>
+struct bsc::fields<system_inspector_test::held_belt_io> {
+    static constexpr std::array<std::string_view, 2> names{"motor", "brake"};
+    template <class Self, class F>
+    static constexpr decltype(auto) apply(Self& self, F&& f) {
+        return f(self.motor, self.brake);
+    }
+};
+
+namespace system_inspector_test {
+inline constexpr auto held_belt = bsc::make_chart<held_belt_io>(
+    bsc::composite<Root>(bsc::initial<Still>, bsc::state<Moving>),
+    bsc::state<Still>[([](held_belt_io const& b) { return b.motor.get(); })] = bsc::state<Moving>,
+    bsc::state<Moving>[([](held_belt_io const& b) { return !b.motor.get(); })] = bsc::state<Still>);
+using held_tracer = bsc::tracer<decltype(held_belt) const>;
+
+inline std::array<std::byte, 1 << 12> held_storage{};
+inline bsc::trace_buffer held_ring{held_storage};
+
+struct held_actors {
+    bsc::machine<decltype(controller), bsc::scan_policy> control{controller};
+    bsc::machine<decltype(held_belt), bsc::scan_policy, held_tracer> conveyor{held_belt, held_belt_io{},
+                                                                              held_tracer{held_belt, held_ring}};
+};
+using held_line =
+    bsc::system<held_actors, bsc::order<&held_actors::control, &held_actors::conveyor>,
+                bsc::link<&held_actors::control, &controller_io::motor, &held_actors::conveyor, &held_belt_io::motor>,
+                bsc::from_outside<&held_actors::control, &controller_io::request>,
+                bsc::from_outside<&held_actors::control, &controller_io::arrived>,
+                bsc::from_outside<&held_actors::conveyor, &held_belt_io::brake>>;
+
+// Two actors whose tracers share one ring: refused.
+inline std::array<std::byte, 1 << 12> shared_storage{};
+inline bsc::trace_buffer shared_ring{shared_storage};
+struct sharing_actors {
+    bsc::machine<decltype(controller), bsc::scan_policy, control_tracer> control{
+        controller, controller_io{}, control_tracer{controller, shared_ring}};
+    bsc::machine<decltype(belt), bsc::scan_policy, belt_tracer> conveyor{belt, belt_io{},
+                                                                         belt_tracer{belt, shared_ring}};
+};
+using sharing_line =
+    bsc::system<sharing_actors, bsc::order<&sharing_actors::control, &sharing_actors::conveyor>,
+                bsc::link<&sharing_actors::control, &controller_io::motor, &sharing_actors::conveyor, &belt_io::motor>,
+                bsc::from_outside<&sharing_actors::control, &controller_io::request>,
+                bsc::from_outside<&sharing_actors::control, &controller_io::arrived>,
+                bsc::from_outside<&sharing_actors::conveyor, &belt_io::brake>>;
 }  // namespace system_inspector_test
 
 TEST_CASE("a system inspector describes the system and serves one trace per traced actor") {
@@ -113,6 +169,11 @@ TEST_CASE("a system inspector describes the system and serves one trace per trac
     CHECK(info.body.find("{\"from\": 0, \"from_channel\": \"motor\", \"to\": 2, \"to_channel\": \"on\", "
                          "\"lossless\": false}") != std::string::npos);
     CHECK(info.body.ends_with("\"commands\": true, \"paused\": false, \"scan\": true}"));
+    // The description a recording keeps: /info without the run's fields.
+    auto const description = bsc::system_inspector<line>::description();
+    CHECK(description.ends_with("]}"));
+    CHECK(info.body ==
+          description.substr(0, description.size() - 1) + ", \"commands\": true, \"paused\": false, \"scan\": true}");
 
     // Each traced actor's stream begins with its own dictionary; the lamp has none.
     CHECK(lines(view, 0).find("state 2 Idle") != std::string::npos);
@@ -120,6 +181,12 @@ TEST_CASE("a system inspector describes the system and serves one trace per trac
     CHECK(ask(view, "GET", "/trace?actor=2&from=0").status == 404);
     CHECK(ask(view, "GET", "/trace?actor=3&from=0").status == 404);
     CHECK(ask(view, "GET", "/trace?from=0").status == 404);
+    // Past the end (a page that read an earlier run): an empty answer at the end, no bytes beyond.
+    auto const beyond = ask(view, "GET", "/trace?actor=1&from=99999999");
+    CHECK(beyond.status == 200);
+    CHECK(beyond.body.empty());
+    CHECK(inspector_client::header(beyond, "X-Trace-Start") == std::to_string(view.trace_end(1)));
+    CHECK(inspector_client::header(beyond, "X-Trace-End") == std::to_string(view.trace_end(1)));
 
     // A from_outside input is set and latched at the next step; the link carries the motor on.
     auto const set = ask(view, "POST", "/command", "set control request true");
@@ -181,4 +248,32 @@ TEST_CASE("a read-only system inspector refuses commands and other hosts") {
     CHECK(ask(view, "GET", "/info", {}, {.origin = {}, .host = "evil.example:80"}).status == 421);
     CHECK(ask(view, "GET", "/info").body.find("\"commands\": false") != std::string::npos);
     CHECK_FALSE(cell.actors.control.context().request.pending());
+}
+
+TEST_CASE("a system inspector refuses a linked input found by its address, whatever names the context has") {
+    using namespace system_inspector_test;
+    using inspector_client::ask;
+    held_line cell{};
+    bsc::inspector_options options;
+    options.commands = true;
+    bsc::system_inspector view{cell, std::move(options)};
+    // The context is described by bsc::fields: its names are unknown to the link, but its address is not.
+    CHECK(ask(view, "GET", "/info")
+              .body.find("{\"from\": 0, \"from_channel\": \"motor\", \"to\": 1, \"to_channel\": "
+                         "\"\", \"lossless\": false}") != std::string::npos);
+    CHECK(ask(view, "POST", "/command", "set conveyor motor true").body ==
+          "conveyor.motor is driven by the link from control.motor: only inputs no link drives can be set");
+    CHECK_FALSE(cell.actors.conveyor.context().motor.pending());
+    CHECK(ask(view, "POST", "/command", "set conveyor brake true").body == "ok conveyor.brake = true");
+    CHECK(cell.actors.conveyor.context().brake.pending());
+    // An actor without a tracer has no stream.
+    CHECK(ask(view, "GET", "/trace?actor=0&from=0").status == 404);
+    CHECK(ask(view, "GET", "/trace?actor=1&from=0").status == 200);
+}
+
+TEST_CASE("two actors that trace into one ring are refused") {
+    using namespace system_inspector_test;
+    sharing_line cell{};
+    CHECK_THROWS_WITH_AS(bsc::system_inspector(cell, bsc::inspector_options{}),
+                         "bsc::system_inspector: control and conveyor trace into the same ring", std::invalid_argument);
 }

@@ -115,7 +115,7 @@
     }
     const added = s.records.length - first;
     trim(s);
-    if (app.system) {
+    if (app.system && app.stream.following) {
       updateActor(s);
       if (app.mode === 'live' && fired.length > 0) pulseActor(s.actor);
     }
@@ -143,12 +143,12 @@
   }
 
   /** The state after records[0..pos]. */
-  function stateAt(pos) {
-    if (pos === app.records.length - 1) return app.head;
-    if (pos < 0) return app.checkpoints[0];
+  function stateAt(pos, stream = app.stream) {
+    if (pos === stream.records.length - 1) return stream.head;
+    if (pos < 0) return stream.checkpoints[0];
     const k = Math.floor(pos / CHECKPOINT);
-    const s = app.checkpoints[k].clone();
-    for (let i = k * CHECKPOINT; i <= pos; ++i) s.apply(app.records[i]);
+    const s = stream.checkpoints[k].clone();
+    for (let i = k * CHECKPOINT; i <= pos; ++i) s.apply(stream.records[i]);
     return s;
   }
 
@@ -163,6 +163,7 @@
     renderValues(s);
     renderLog();
     updateTimeline();
+    if (app.system) syncActors();
   }
 
   function renderActive(s) {
@@ -511,7 +512,7 @@
 
   async function layoutChart() {
     const d = app.reader.dictionary;
-    const actor = app.system ? app.system.actors[app.stream.actor].name : '';
+    const actor = app.system && app.stream.actor >= 0 ? app.system.actors[app.stream.actor].name : '';
     const title = actor ? `${actor} · ${d.chart}` : d.chart;
     $('chart-name').textContent = title;
     document.title = title ? `${title} · bsc inspector` : 'bsc inspector';
@@ -803,7 +804,11 @@
   async function poll() {
     polling = true;
     try {
-      await Promise.all(app.streams.filter((s) => s !== null).map(pollStream));
+      // Every stream's request ends before the next poll, also when one of them fails: a stream
+      // read twice from one offset would take its bytes twice.
+      const results = await Promise.allSettled(app.streams.filter((s) => s !== null).map(pollStream));
+      const failed = results.find((r) => r.status === 'rejected');
+      if (failed) throw failed.reason;
       if (failures) setStatus('connected again', 'ok');
       failures = 0;
       setConnection('connected', 'ok');
@@ -836,9 +841,54 @@
 
   async function loadFile(file) {
     try {
+      leaveSystem();
       loadTrace(new Uint8Array(await file.arrayBuffer()), file.name);
     } catch (e) {
       setStatus(`${file.name}: ${e.message}`, 'error');
+    }
+  }
+
+  // One file: a machine's trace. Several: a system's recording, system.json (its description)
+  // and <actor>.bsctrace for each traced actor.
+  function loadFiles(list) {
+    const files = [...(list ?? [])];
+    if (files.length === 1 && !files[0].name.endsWith('.json')) return loadFile(files[0]);
+    if (files.length > 0) return loadSystem(files);
+    return undefined;
+  }
+
+  async function loadSystem(files) {
+    const described = files.find((f) => f.name === 'system.json');
+    if (!described) {
+      setStatus('a system\u2019s recording needs its system.json among the files chosen', 'error');
+      return;
+    }
+    try {
+      const info = JSON.parse(await described.text());
+      if (!info || info.system !== true || !Array.isArray(info.actors)) throw new Error('not a system\u2019s description');
+      leaveSystem();
+      startSystem(info);
+      let records = 0;
+      const missing = [];
+      for (const s of app.streams) {
+        if (!s) continue;
+        const name = app.system.actors[s.actor].name;
+        const file = files.find((f) => f.name === `${name}.bsctrace`);
+        if (!file) {
+          missing.push(name);
+          continue;
+        }
+        s.reader.finish(); // a file is whole: a frame cut at its end is damage
+        ingest(new Uint8Array(await file.arrayBuffer()), s);
+        records += s.records.length;
+      }
+      selectActor(app.stream.actor);
+      setStatus(
+        `system.json: ${app.system.actors.length} actors, ${records} records` + (missing.length ? `; no trace of ${missing.join(', ')}` : ''),
+        missing.length ? 'error' : 'ok',
+      );
+    } catch (e) {
+      setStatus(`system.json: ${e.message}`, 'error');
     }
   }
 
@@ -861,21 +911,17 @@
     $('live').title = 'Go to the last record';
     setConnection('', '');
     renderControls();
-    $('trace-file').addEventListener('change', (e) => {
-      const file = e.target.files?.[0];
-      if (file) loadFile(file);
-    });
+    $('trace-file').addEventListener('change', (e) => loadFiles(e.target.files));
     document.addEventListener('dragover', (e) => e.preventDefault());
     document.addEventListener('drop', (e) => {
       e.preventDefault();
-      const file = e.dataTransfer?.files?.[0];
-      if (file) loadFile(file);
+      loadFiles(e.dataTransfer?.files);
     });
   }
 
   // ---- A system: one box per actor, the links between them ------------------------------------
 
-  const actorWord = () => (app.system ? `${app.system.actors[app.stream.actor].name} ` : '');
+  const actorWord = () => (app.system && app.stream.actor >= 0 ? `${app.system.actors[app.stream.actor].name} ` : '');
   const actorBox = (i) => document.querySelector(`#system-svg .actor[data-actor="${i}"]`);
 
   function startSystem(info) {
@@ -1008,12 +1054,50 @@
     size.svg.setAttribute('height', String(Math.round(size.height * scale)));
   }
 
-  // The leaf states of s's configuration, as its box shows them.
-  function updateActor(s) {
+  // Back to a single machine's panes (a machine's file opened after a system's).
+  function leaveSystem() {
+    if (!app.system) return;
+    app.system = null;
+    app.systemSize = null;
+    app.streams = [newStream()];
+    app.stream = app.streams[0];
+    $('system-pane').hidden = true;
+    $('system').replaceChildren();
+  }
+
+  // Each box shows its actor where the selected actor's position is: at the time of the record
+  // shown (the newest records while following).
+  function syncActors() {
+    const shown = app.stream;
+    if (shown.following) {
+      for (const s of app.streams) if (s) updateActor(s);
+      return;
+    }
+    const time = shown.records[shown.position]?.time;
+    for (const s of app.streams) {
+      if (!s) continue;
+      if (s === shown || time === undefined) {
+        updateActor(s, s === shown ? stateAt(shown.position) : s.head);
+        continue;
+      }
+      // The last record at or before that time (the times of a stream never go back).
+      let low = 0;
+      let high = s.records.length;
+      while (low < high) {
+        const middle = (low + high) >> 1;
+        if (s.records[middle].time <= time) low = middle + 1;
+        else high = middle;
+      }
+      updateActor(s, stateAt(low - 1, s));
+    }
+  }
+
+  // The leaf states of s's configuration (its newest, or `state`), as its box shows them.
+  function updateActor(s, state = s.head) {
     const box = actorBox(s.actor);
     if (!box) return;
     const d = s.reader.dictionary;
-    const active = [...s.head.active];
+    const active = [...state.active];
     const parents = new Set(active.map((n) => d.states[n]?.parent));
     const leaves = active.filter((n) => !parents.has(n) && d.states[n] && d.states[n].kind !== StateKind.top).sort((a, b) => a - b);
     const text = leaves.map((n) => d.stateName(n)).join(' ');

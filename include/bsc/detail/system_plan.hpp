@@ -33,7 +33,6 @@ template <class Actors, auto... Steps, class... Entries>
 struct system_plan<system<Actors, order<Steps...>, Entries...>> {
     // The links only: a system's bsc::from_outside entries are the environment's business.
     using links = typename system<Actors, order<Steps...>, Entries...>::links_type;
-    using outside = typename system<Actors, order<Steps...>, Entries...>::from_outside_type;
     static constexpr std::size_t actor_count = sizeof...(Steps);
     static constexpr std::size_t link_count = std::tuple_size_v<links>;
     static constexpr std::array<std::string_view, actor_count> names{member_name<Steps>()...};
@@ -64,6 +63,7 @@ struct system_plan<system<Actors, order<Steps...>, Entries...>> {
     static constexpr std::array<std::size_t, link_count> from = []<class... L>(std::tuple<L...>*) {
         return std::array<std::size_t, link_count>{place<L::from_actor>()...};
     }(static_cast<links*>(nullptr));
+    // clang-format on
     // clang-format off
     static constexpr std::array<std::size_t, link_count> to = []<class... L>(std::tuple<L...>*) {
         return std::array<std::size_t, link_count>{place<L::to_actor>()...};
@@ -98,7 +98,6 @@ struct system_plan<system<Actors, order<Steps...>, Entries...>> {
         }(static_cast<links*>(nullptr));
         // clang-format on
     }
-    // clang-format on
 };
 
 }  // namespace bsc::detail

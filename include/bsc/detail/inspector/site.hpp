@@ -99,7 +99,9 @@ public:
     // The answer to GET /trace?from=N: at most `max_answer` bytes from N (or from the oldest
     // kept, if the history let N go), with the range in X-Trace-Start and X-Trace-End.
     response answer(std::size_t from) const {
-        std::size_t const start = from < base_ ? base_ : from;
+        // Past the end (a page that read an earlier run of the program): an empty answer at the
+        // end, which tells the page to read again from the start.
+        std::size_t const start = from < base_ ? base_ : from > end() ? end() : from;
         std::size_t const stop = end() - start > max_answer ? start + max_answer : end();
         response r{200, "application/octet-stream", {}, {}};
         if (start < stop) r.body.assign(reinterpret_cast<char const*>(bytes_.data()) + (start - base_), stop - start);
