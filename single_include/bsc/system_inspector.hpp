@@ -342,7 +342,9 @@ private:
     template <std::size_t I>
     response set(std::string_view rest) {
         using detail::inspector::text;
-        auto const [member, value] = detail::inspector::split_word(rest);
+        // (Not a structured binding: Clang 14 does not capture one in a lambda.)
+        auto const words = detail::inspector::split_word(rest);
+        std::string_view const member = words.first, value = words.second;
         if (value.empty()) return text(400, "set <actor> <input> <value>");
         std::string const who{plan::names[I]};
         // A linked input takes its sender's value at every step: setting it would last no step.
