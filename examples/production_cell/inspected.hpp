@@ -5,7 +5,6 @@
 
 #include <array>
 #include <cstddef>
-#include <string_view>
 #include <tuple>
 #include <type_traits>
 
@@ -49,11 +48,6 @@ struct traced_actors {
 
 /// The production cell, every actor traced.
 using traced_cell = system_of<traced_actors>;
-
-/// The actors' names, in the order of traced_actors and of the rings.
-inline constexpr std::array<std::string_view, 10> traced_actor_names{
-    "feed_belt",     "table",     "robot",     "press",     "deposit_belt",
-    "env_feed_belt", "env_table", "env_robot", "env_press", "env_deposit_belt"};
 
 /// Writes the channels, timers and variables of every actor that changed (each tracer's sample).
 inline void sample_all(traced_cell& cell) {

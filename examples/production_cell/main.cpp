@@ -118,9 +118,10 @@ int run_recorded(std::string const& folder) {
     using view = bsc::system_inspector<pcell::traced_cell>;
     std::ofstream description{folder + "/system.json"};
     description << view::description() << "\n";
-    std::array<std::ofstream, pcell::traced_actor_names.size()> files;
+    // (The rings are in the system's order: inspected.hpp declares them so.)
+    std::array<std::ofstream, view::actor_names().size()> files;
     for (std::size_t i = 0; i < files.size(); ++i)
-        files[i].open(folder + "/" + std::string{pcell::traced_actor_names[i]} + ".bsctrace", std::ios::binary);
+        files[i].open(folder + "/" + std::string{view::actor_names()[i]} + ".bsctrace", std::ios::binary);
     auto const drain = [&files] {
         std::array<std::byte, 4096> chunk;
         for (std::size_t i = 0; i < files.size(); ++i)

@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <span>
 #include <string_view>
 #include <type_traits>
 #include <utility>
@@ -196,6 +197,9 @@ public:
     bool paused() const { return site_.paused(); }
     /// The commands run so far.
     std::uint64_t commands_run() const { return site_.commands_run(); }
+    /// The actors' names, in the system's order (as bsc::net::node gives them).
+    static constexpr std::span<std::string_view const, N> actor_names() { return plan::names; }
+
     /// The system as GET /info describes it, without the run's fields: a JSON object
     /// {"system": true, "actors": [{"name", "chart", "traced"}...], "links": [{"from",
     /// "from_channel", "to", "to_channel", "lossless"}...]}, actors and links in the system's
@@ -349,37 +353,33 @@ private:
         std::string const who{plan::names[I]};
         // A linked input takes its sender's value at every step: setting it would last no step.
         // Found by its address, which does not depend on how the context names its members.
-        bool by_link = false;
-        auto const linked = [this, &who, &by_link, member](void const* input) -> std::string {
-            std::string why;
-            // clang-format off
-            [&]<class... L>(std::tuple<L...>*) {
-                ((why.empty() && plan::to[index_of<L>()] == I && linked_input<I, L>() == input
-                      ? (why = who + "." + std::string{member} + " is driven by the link from " +
-                               link_source<L>() + ": only inputs no link drives can be set",
-                         0)
-                      : 0),
-                 ...);
-            }(static_cast<typename plan::links*>(nullptr));
-            // clang-format on
-            by_link = !why.empty();
-            return why;
+        std::size_t driving = plan::link_count;  // the link that drives the input, if one does
+        auto const refuse = [this, &driving](void const* input) {
+            driving = link_driving<I>(input);
+            return driving < plan::link_count ? std::string{"driven"} : std::string{};
         };
-        std::string const why = detail::inspector::set_input(actor<I>().context(), member, value, linked);
-        if (!why.empty()) return text(400, by_link ? why : who + ": " + why);
+        std::string const why = detail::inspector::set_input(actor<I>().context(), member, value, refuse);
+        if (driving < plan::link_count)
+            return text(400, who + "." + std::string{member} + " is driven by the link from " + link_source(driving) +
+                                 ": only inputs no link drives can be set");
+        if (!why.empty()) return text(400, who + ": " + why);
         return text(200, "ok " + who + "." + std::string{member} + " = " + std::string{value} +
                              (site_.options().stepping ? " (latched at the next step)" : ""));
     }
 
-    // The place of link L in the system's list of links.
-    template <class L>
-    static constexpr std::size_t index_of() {
+    // The place in the system's list of links of the link that drives `input`, an input of the
+    // actor at place I; link_count if none does.
+    template <std::size_t I>
+    std::size_t link_driving(void const* input) {
         // clang-format off
-        return []<class... Ls>(std::tuple<Ls...>*) {
-            std::size_t i = 0, found = plan::link_count;
-            ((std::is_same_v<L, Ls> && found == plan::link_count ? (found = i, ++i) : ++i), ...);
+        return [&]<std::size_t... K>(std::index_sequence<K...>) {
+            std::size_t found = plan::link_count;
+            ((found == plan::link_count && linked_input<I, std::tuple_element_t<K, typename plan::links>>() == input
+                  ? (found = K, 0)
+                  : 0),
+             ...);
             return found;
-        }(static_cast<typename plan::links*>(nullptr));
+        }(std::make_index_sequence<plan::link_count>{});
         // clang-format on
     }
     // The input that link L drives, if it is an input of the actor at place I (else nullptr).
@@ -390,12 +390,11 @@ private:
         else
             return nullptr;
     }
-    // "robot.press_loaded": the actor and the channel link L takes its value from.
-    template <class L>
-    static std::string link_source() {
+    // "robot.press_loaded": the actor and the channel that link k takes its value from.
+    static std::string link_source(std::size_t k) {
         static constexpr auto from_channels = plan::from_channels();
-        std::string out{plan::names[plan::from[index_of<L>()]]};
-        if (!from_channels[index_of<L>()].empty()) out += "." + std::string{from_channels[index_of<L>()]};
+        std::string out{plan::names[plan::from[k]]};
+        if (!from_channels[k].empty()) out += "." + std::string{from_channels[k]};
         return out;
     }
 

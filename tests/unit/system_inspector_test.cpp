@@ -171,6 +171,8 @@ TEST_CASE("a system inspector describes the system and serves one trace per trac
     CHECK(info.body.ends_with("\"commands\": true, \"paused\": false, \"scan\": true}"));
     // The description a recording keeps: /info without the run's fields.
     auto const description = bsc::system_inspector<line>::description();
+    static_assert(bsc::system_inspector<line>::actor_names().size() == 3);
+    CHECK(bsc::system_inspector<line>::actor_names()[2] == "light");
     CHECK(description.ends_with("]}"));
     CHECK(info.body ==
           description.substr(0, description.size() - 1) + ", \"commands\": true, \"paused\": false, \"scan\": true}");
