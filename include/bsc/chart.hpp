@@ -56,9 +56,9 @@ struct flat_positions {
 // the group it is.
 template <std::size_t Argument, std::size_t Position, class Arguments>
 constexpr auto&& flat_row(Arguments& arguments) {
-    auto&& a = take_row<Argument>(arguments);
+    auto&& a = detail::take_row<Argument>(arguments);
     if constexpr (is_row_group<std::remove_cvref_t<decltype(a)>>)
-        return take_row<Position>(a.rows);
+        return detail::take_row<Position>(a.rows);
     else
         return static_cast<std::remove_cvref_t<decltype(a)>&&>(a);
 }
@@ -209,7 +209,7 @@ constexpr void mark_dead_timeout(dead_timeout const& dead, Rows&... rows) {
         if constexpr (is_timeout_row<std::remove_cvref_t<decltype(row)>>)
             if (position == dead.row) row.trigger_value.delay = timeout_trigger::dead_mark(dead.row, dead.fires_first);
     };
-    (mark(rows), ...);
+    [[maybe_unused]] int const marked[] = {(mark(rows), 0)..., 0};  // (a list: detail::max_fold)
 }
 
 template <class... Rows>
@@ -254,7 +254,7 @@ template <class Context, priority Order = priority::child_first, class Allowed =
 constexpr auto make_chart(Root root, Rows... rows) {
     if constexpr (!detail::is_allow<Allowed> || !detail::all_allowable<Allowed>) {
         return detail::rejected_chart<Context, error::finding_not_allowable<Allowed>>{};
-    } else if constexpr ((detail::is_row_group<Rows> || ...)) {
+    } else if constexpr (detail::any_true({detail::is_row_group<Rows>..., false})) {
         auto group = detail::flatten_rows(std::move(rows)...);
         // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
@@ -263,7 +263,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
         // clang-format on
     } else if constexpr (!detail::is_compound_root<Root>()) {
         return detail::rejected_chart<Context, error::root_must_be_composite<Root>>{};
-    } else if constexpr (!(detail::is_row<Rows> && ...)) {
+    } else if constexpr (!detail::all_true({detail::is_row<Rows>...})) {
         constexpr int bad =
             detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_row<Rows>>...>>::value;
         return detail::rejected_chart<
@@ -274,7 +274,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
         using chart_type = chart<Context, Root, Order, Rows...>;
         using errors = typename detail::without_allowed<Allowed, decltype(detail::check_chart<chart_type>())>::type;
         if constexpr (errors::size == 0) {
-            if constexpr ((detail::is_timeout_row<Rows> || ...)) {
+            if constexpr (detail::any_true({detail::is_timeout_row<Rows>..., false})) {
                 auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree,
                                                             detail::chart_model<chart_type>::rows,
                                                             detail::delays_of(rows...), Order);

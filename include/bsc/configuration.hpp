@@ -9,16 +9,19 @@
 
 namespace bsc {
 
-/// The active configuration: one byte per composite state, holding the position of its active
-/// child. An inactive composite keeps the child it had when it was last active, which is all
-/// that shallow and deep history need. Parallel and basic states take no storage.
-template <std::size_t Composites>
+/// The active configuration: one ordinal per composite state, the position of its active child
+/// (a byte; two bytes in a chart where a composite has more than 255 children). An inactive
+/// composite keeps the child it had when it was last active, which is all that shallow and deep
+/// history need. Parallel and basic states take no storage.
+template <std::size_t Composites, class Ordinal = std::uint8_t>
 struct configuration {
-    std::array<std::uint8_t, Composites> active{};
+    using ordinal_type = Ordinal;
+    std::array<Ordinal, Composites> active{};
     friend constexpr bool operator==(configuration const&, configuration const&) = default;
 };
-template <>
-struct configuration<0> {
+template <class Ordinal>
+struct configuration<0, Ordinal> {
+    using ordinal_type = Ordinal;
     friend constexpr bool operator==(configuration const&, configuration const&) = default;
 };
 

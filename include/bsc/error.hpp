@@ -290,15 +290,6 @@ struct initial_not_a_child {
     }
 };
 
-template <class Composite>
-struct too_many_children {
-    constexpr ~too_many_children() {
-        static_assert(detail::dependent_false<too_many_children>,
-                      "bsc: a composite state may have at most 255 children (its active child is kept in one "
-                      "byte); group some of them into a nested composite");
-    }
-};
-
 template <class State>
 struct eventless_livelock {
     constexpr ~eventless_livelock() {

@@ -91,7 +91,7 @@ private:
     template <int S>
     constexpr void set_active_child(int ordinal) {
         if constexpr (tree.slot[S] >= 0)
-            config_.active[static_cast<std::size_t>(tree.slot[S])] = static_cast<std::uint8_t>(ordinal);
+            config_.active[static_cast<std::size_t>(tree.slot[S])] = static_cast<typename model::ordinal_type>(ordinal);
     }
     template <int S>
     constexpr bool is_active() const {
@@ -170,7 +170,9 @@ private:
         constexpr auto const& children = plan::template children<S>;
         // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (f(detail::int_c<children[I]>{}), ...);
+            // (In order, as a list: a composite may have more children than a fold takes,
+            // detail::max_fold.)
+            [[maybe_unused]] int const visited[] = {((void)f(detail::int_c<children[I]>{}), 0)..., 0};
         }(std::make_index_sequence<children.size()>{});
         // clang-format on
     }
@@ -190,9 +192,16 @@ private:
         constexpr bool every_child = n >= 4 && static_cast<int>(n) == tree.child_count[S];
         // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) BSC_DETAIL_WALK_INLINE {
-            return ((active == tree.ordinal[children[I]] || (every_child && I + 1 == n) ? (f(detail::int_c<children[I]>{}), true)
-                                                                                          : false) ||
-                    ...);
+            if constexpr (n <= detail::max_fold) {
+                return ((active == tree.ordinal[children[I]] || (every_child && I + 1 == n) ? (f(detail::int_c<children[I]>{}), true)
+                                                                                              : false) ||
+                        ...);
+            } else {  // more children than a fold takes: a list of tests, one of which holds
+                bool found = false;
+                [[maybe_unused]] bool const tested[] = {
+                    (active == tree.ordinal[children[I]] ? (f(detail::int_c<children[I]>{}), found = true) : false)...};
+                return found;
+            }
         }(std::make_index_sequence<n>{});
         // clang-format on
     }
@@ -255,7 +264,7 @@ private:
     template <int H>
     constexpr void enter_history() {
         constexpr int p = tree.parent[H];
-        if (plan::template never_active_byte<p>(static_cast<std::uint8_t>(active_child<p>()))) {
+        if (plan::template never_active_byte<p>(active_child<p>())) {
             run_state_actions<detail::row_kind::initial, H>();
             constexpr int c = tree.initial[H];
             if constexpr (tree.initial_target[H] == c) {
@@ -373,7 +382,7 @@ private:
         else
             return this->test(this->template row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e), active);
     }
-    constexpr std::uint8_t const* configuration_bytes() const {
+    constexpr typename model::ordinal_type const* configuration_bytes() const {
         if constexpr (tree.slots > 0)
             return config_.active.data();
         else

@@ -18,7 +18,7 @@
 //                       the saved bytes mean)
 //          20  8 bytes  the context's fingerprint: each member's name, kind, size and order, at
 //                       any depth (a renamed, retyped, added or moved member changes it)
-//          28  payload  the machine: one byte per composite (its active or remembered child: the
+//          28  payload  the machine: one byte per composite (two if one has over 255 children; its active or remembered child: the
 //                       configuration and the history), the clock, whether a cycle has run, each
 //                       timeout's start, the last outcome, the events it keeps pending (deferred,
 //                       and delayed with their ids and due times); then the context member by

@@ -230,6 +230,27 @@ struct indexer_of<type_list<Ts...>> {
     using type = indexer<std::index_sequence_for<Ts...>, Ts...>;
 };
 
+// How many of the flags are true. (A list and a loop where a fold expression would do: GCC
+// takes time superlinear in the length of a fold, and the lists here are as long as a chart.)
+constexpr int count_true(std::initializer_list<bool> flags) {
+    int n = 0;
+    for (bool flag : flags) n += flag ? 1 : 0;
+    return n;
+}
+
+// Whether any of the flags is true; whether all are. (For packs as long as a chart, in place of
+// a fold expression: see count_true.)
+constexpr bool any_true(std::initializer_list<bool> flags) {
+    for (bool flag : flags)
+        if (flag) return true;
+    return false;
+}
+constexpr bool all_true(std::initializer_list<bool> flags) {
+    for (bool flag : flags)
+        if (!flag) return false;
+    return true;
+}
+
 // The position of the first true among the flags, or -1.
 constexpr int first_true(std::initializer_list<bool> flags) {
     int i = 0;
@@ -253,14 +274,15 @@ template <class T, class List, class = void>
 struct position_in : scan_for<T, List> {};  // absent, or present twice (the base is ambiguous)
 template <class T, class List>
 struct position_in<
-    T, List, std::void_t<decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr)))>>
-    : decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr))) {};
+    T, List,
+    std::void_t<decltype(detail::position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr)))>>
+    : decltype(detail::position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr))) {};
 
 template <std::size_t I, class List>
 struct at_impl;
 template <std::size_t I, class... Ts>
 struct at_impl<I, type_list<Ts...>> {
-    using type = typename decltype(select_indexed<I>(indexer<std::index_sequence_for<Ts...>, Ts...>{}))::type;
+    using type = typename decltype(detail::select_indexed<I>(indexer<std::index_sequence_for<Ts...>, Ts...>{}))::type;
 };
 template <std::size_t I, class List>
 using at = typename at_impl<I, List>::type;
@@ -268,10 +290,18 @@ using at = typename at_impl<I, List>::type;
 template <int I>
 using int_c = std::integral_constant<int, I>;
 
+// The longest pack the library folds with a fold expression; longer ones, which a chart's states,
+// rows or events can be, are lists (an array's initializers, or count_true and the like):
+// Clang nests a fold at most 256 deep, and GCC's time grows faster than the length of a fold.
+inline constexpr std::size_t max_fold = 128;
+
 // Calls f(int_c<I>) for the I in [0, N) equal to i; compilers turn the chain into a jump table.
 template <int N, class F, int... Is>
 constexpr void visit_index_impl(int i, F& f, std::integer_sequence<int, Is...>) {
-    (void)((i == Is ? (f(int_c<Is>{}), true) : false) || ...);
+    if constexpr (sizeof...(Is) <= max_fold)
+        (void)((i == Is ? (f(int_c<Is>{}), true) : false) || ...);
+    else [[maybe_unused]]
+        bool const visited[] = {(i == Is ? (f(int_c<Is>{}), true) : false)...};
 }
 template <int N, class F>
 constexpr void visit_index(int i, F&& f) {
@@ -590,15 +620,6 @@ struct initial_not_a_child {
         static_assert(detail::dependent_false<initial_not_a_child>,
                       "bsc: the initial state named by this composite is declared elsewhere in the tree, not inside "
                       "it; name one of its own children, or a state below it, in bsc::initial<...>");
-    }
-};
-
-template <class Composite>
-struct too_many_children {
-    constexpr ~too_many_children() {
-        static_assert(detail::dependent_false<too_many_children>,
-                      "bsc: a composite state may have at most 255 children (its active child is kept in one "
-                      "byte); group some of them into a nested composite");
     }
 };
 
@@ -1798,7 +1819,8 @@ struct join_raised_of<false, Lists...> {
     using type = concat_t<Lists...>;
 };
 template <class... Lists>
-using join_raised = typename join_raised_of<(std::is_same_v<Lists, raises_anything> || ...), Lists...>::type;
+using join_raised =
+    typename join_raised_of<any_true({std::is_same_v<Lists, raises_anything>..., false}), Lists...>::type;
 
 // (A sequence, and an entry or exit action wrapping one of bsc's, are looked into; any other
 // action raises anything if may_raise says it can raise at all.)
@@ -2340,7 +2362,8 @@ inline constexpr bool row_tests_configuration<transition_row<S, Tr, G, A, T>> = 
 template <class Rows>
 inline constexpr bool any_row_tests_configuration = false;
 template <class... Rows>
-inline constexpr bool any_row_tests_configuration<type_list<Rows...>> = (row_tests_configuration<Rows> || ...);
+inline constexpr bool any_row_tests_configuration<type_list<Rows...>> = any_true({row_tests_configuration<Rows>...,
+                                                                                  false});
 
 }  // namespace bsc::detail
 
@@ -2656,7 +2679,7 @@ constexpr bool declares_below() {
 }
 template <class S, class... A>
 constexpr bool declared_below(type_list<A...>) {
-    return (declares_below<S, A>() || ...);
+    return any_true({declares_below<S, A>()..., false});
 }
 
 // The child declarations an argument of composite<S>(...) contributes, in document order.
@@ -2666,7 +2689,7 @@ constexpr bool declared_below(type_list<A...>) {
 template <class A, bool FirstOfItsKind, class Args, class... Declared>
 constexpr auto children_from_initial() {
     using S = typename tag_of<A>::type;
-    if constexpr ((std::is_same_v<S, Declared> || ...) || !FirstOfItsKind)
+    if constexpr (any_true({std::is_same_v<S, Declared>..., false}) || !FirstOfItsKind)
         return type_list<>{};
     else if constexpr (declared_below<S>(Args{}))
         return type_list<>{};
@@ -2716,10 +2739,12 @@ constexpr auto declared_tag() {
 template <class... A>
 constexpr history history_from() {
     history h = history::none;
-    ((h = std::is_same_v<A, history_marker<history::deep>>      ? history::deep
-          : std::is_same_v<A, history_marker<history::shallow>> ? history::shallow
-                                                                : h),
-     ...);
+    // (In order, as a list: detail::max_fold.)
+    [[maybe_unused]] history const seen[] = {
+        (h = std::is_same_v<A, history_marker<history::deep>>      ? history::deep
+             : std::is_same_v<A, history_marker<history::shallow>> ? history::shallow
+                                                                   : h)...,
+        h};
     return h;
 }
 
@@ -2788,9 +2813,11 @@ inline constexpr detail::leaf_node<S, detail::kind::final_state> final_state{};
 /// A composite (OR, exclusive) state: exactly one child is active while it is.
 template <class S, class... A>
 constexpr auto composite(A...) {
-    constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A> || detail::is_initial_marker<A> ||
-                                 detail::is_history_marker<A>)&&...);
-    constexpr int history_markers = (0 + ... + int{detail::is_history_marker<A>});
+    // (Lists, not fold expressions, here and below: a composite may have more children than
+    // Clang nests a fold, 256, and GCC's time grows faster than the length of a fold.)
+    constexpr bool all_valid = detail::all_true({(detail::is_node<A> || detail::is_state_ref<A> ||
+                                                  detail::is_initial_marker<A> || detail::is_history_marker<A>)...});
+    constexpr int history_markers = detail::count_true({detail::is_history_marker<A>..., false});
     if constexpr (!all_valid) {
         constexpr int bad = detail::position_in<
             std::false_type, detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
@@ -2812,7 +2839,7 @@ constexpr auto composite(A...) {
 /// A parallel (AND) state: all of its children (its components, or regions) are active while it is.
 template <class S, class... A>
 constexpr auto parallel(A...) {
-    constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A>)&&...);
+    constexpr bool all_valid = detail::all_true({(detail::is_node<A> || detail::is_state_ref<A>)...});
     if constexpr (!all_valid) {
         constexpr int bad = detail::position_in<
             std::false_type,
@@ -2902,17 +2929,20 @@ template <class... Us>
 struct event_families<type_list<Us...>> {
     static constexpr std::size_t K = sizeof...(Us);
     // Whether the chart names bsc::any_event, every other event's family.
-    static constexpr bool names_any_event = (false || ... || BSC_DETAIL_IS_SAME(Us, any_event));
+    static constexpr bool names_any_event = position_in<any_event, type_list<Us...>>::value >= 0;
     // How many chart events E derives from, E itself included if it is one (a class is its own
     // base). One built-in per pair and nothing else: a chart of K events asks K * K times.
+    // (An array and a loop, not a fold expression: GCC takes time superlinear in the length of
+    // a fold, and a chart of K events has K of them here.)
     template <class E>
-    static constexpr int chart_bases = (0 + ... + static_cast<int>(BSC_DETAIL_IS_BASE_OF(Us, E)));
+    static constexpr int chart_bases = count_true({BSC_DETAIL_IS_BASE_OF(Us, E)...});
     // Whether event E, which the chart does not name (trigger_of asks only then), has a family
     // among the chart's events; any: whether a chart event has.
     template <class E>
     static constexpr bool has_family = (names_any_event && !BSC_DETAIL_IS_SAME(E, any_event)) || chart_bases<E> > 0;
     static constexpr bool any = (names_any_event && K > 1) ||
-                                (false || ... || (chart_bases<Us> > static_cast<int>(BSC_DETAIL_IS_CLASS(Us))));
+                                first_true({(chart_bases<Us> > static_cast<int>(BSC_DETAIL_IS_CLASS(Us)))..., false}) >=
+                                    0;
     // family[t][u]: chart event u is a family of chart event t. (Built only where some event
     // has a family: a chart of K events would otherwise hold K * K flags for nothing.)
     static constexpr auto family = [] {
@@ -3045,6 +3075,15 @@ struct topology {
     std::array<bool, N> implicit{};
     int slots = 0;
 
+    // The most children any composite has: the configuration keeps each composite's active
+    // child in a byte up to 255 of them, in two bytes above (ordinal_for).
+    constexpr int most_children() const {
+        int most = 0;
+        for (std::size_t s = 0; s < N; ++s)
+            if (slot[s] >= 0 && child_count[s] > most) most = child_count[s];
+        return most;
+    }
+
     // States are numbered by int (negative numbers mean "none"); the arrays by size_t.
     static constexpr std::size_t at(int s) { return static_cast<std::size_t>(s); }
 
@@ -3073,7 +3112,7 @@ struct topology {
 // Whether one of a node's children is a history state.
 template <class... C>
 constexpr bool has_history_child(type_list<C...>) {
-    return ((C::node_kind == kind::history) || ...);
+    return any_true({(C::node_kind == kind::history)...});
 }
 
 // Links the next child of node i into the sibling chain.
@@ -3112,7 +3151,9 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     int previous = -1;
     // clang-format off
     [&]<class... C>(type_list<C...>) {
-        ((link_child(t, i, previous, next), next = fill_topology<C>(t, next, index, count++, depth + 1)), ...);
+        // (An array's initializers, evaluated in order, and not a fold expression: see count_true.)
+        [[maybe_unused]] int const linked[] = {
+            (link_child(t, i, previous, next), next = fill_topology<C>(t, next, index, count++, depth + 1))..., 0};
         if constexpr (Node::initials::size == 1) {
             using initial_tag = at<0, typename Node::initials>;
             constexpr int pos = position_in<initial_tag, type_list<typename C::tag...>>::value;
@@ -3150,7 +3191,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     if constexpr (Node::node_kind == kind::composite && has_history_child(typename Node::children{}))
         // clang-format off
         [&]<class... C>(type_list<C...>) {
-            (
+            [[maybe_unused]] int const placed[] = {(  // (a list: max_fold)
                 [&] {
                     if constexpr (C::node_kind == kind::history) {
                         using tags = typename tags_of<decltype(flatten<Node>())>::type;
@@ -3162,7 +3203,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
                         }
                     }
                 }(),
-                ...);
+                0)...};
         }(typename Node::children{});
     // clang-format on
     return next;
@@ -3297,6 +3338,8 @@ struct chart_model {
         fill_topology<top_node<root>>(t, 0, -1, 0, 0);
         return t;
     }();
+    // The type of a composite's entry in the configuration (bsc::configuration::active).
+    using ordinal_type = std::conditional_t<(tree.most_children() > 255), std::uint16_t, std::uint8_t>;
 
     // clang-format off
     static constexpr row_table<row_types::size> rows = []<class... Rs>(type_list<Rs...>) {
@@ -3305,8 +3348,9 @@ struct chart_model {
         std::size_t e = 0;
         for (int f : event_families<events>::nearest) r.event_family[e++] = f;
         std::size_t i = 0;
-        (
-            [&] {
+        // (An array's initializers, evaluated in order, and not a fold expression: see count_true.)
+        [[maybe_unused]] int const filled[] = {
+            ([&] {
                 r.kinds[i] = kind_of_row<Rs>();
                 r.source[i] = state_index<typename Rs::source, tags>::value;
                 r.target[i] = no_state;
@@ -3333,8 +3377,7 @@ struct chart_model {
                 if (r.source[i] >= 0 && r.target[i] >= 0)
                     r.domain[i] = transition_domain(tree, r.source[i], r.target[i], r.local[i], r.more_targets[i]);
                 ++i;
-            }(),
-            ...);
+            }(), 0)...};
         return r;
     }(row_types{});
     // clang-format on
@@ -3590,7 +3633,7 @@ constexpr done_finding find_dead_done_row(topology<N> const& t, row_table<R> con
 // Whether a chart's events include a completion event: only then is there a row to check.
 template <class... Events>
 constexpr bool takes_done_event(type_list<Events...>) {
-    return (!std::is_void_v<typename completed_state<Events>::type> || ...);
+    return any_true({!std::is_void_v<typename completed_state<Events>::type>..., false});
 }
 
 // completes[e] for the events of a chart (see find_dead_done_row).
@@ -4419,8 +4462,7 @@ constexpr int find_duplicate(type_list<Tags...>) {
 template <std::size_t N>
 constexpr int find_initial_problem(topology<N> const& t) {
     for (std::size_t s = 1; s < N; ++s)
-        if (t.kinds[s] == kind::composite && (t.initial_count[s] != 1 || t.child_count[s] > 255))
-            return static_cast<int>(s);
+        if (t.kinds[s] == kind::composite && t.initial_count[s] != 1) return static_cast<int>(s);
     return -1;
 }
 
@@ -4600,9 +4642,7 @@ constexpr auto check_structure() {
             constexpr int composite = find_initial_problem(model::tree);
             if constexpr (composite >= 0) {
                 using S = typename model::template tag_at<composite>;
-                if constexpr (model::tree.child_count[composite] > 255)
-                    return type_list<error::too_many_children<S>>{};
-                else if constexpr (model::tree.initial_count[composite] == 0)
+                if constexpr (model::tree.initial_count[composite] == 0)
                     return type_list<error::missing_initial_state<S>>{};
                 else
                     return type_list<error::multiple_initial_states<S>>{};
@@ -4921,7 +4961,7 @@ constexpr Row&& take_row(row_slot<I, Row>& slot) {
 /// Calls f with every row, in order.
 template <class F, std::size_t... I, class... Rows>
 constexpr decltype(auto) with_rows(row_slots<std::index_sequence<I...>, Rows...> const& rows, F&& f) {
-    return std::forward<F>(f)(row_at<I>(rows)...);
+    return std::forward<F>(f)(detail::row_at<I>(rows)...);
 }
 
 }  // namespace bsc::detail
@@ -4967,9 +5007,9 @@ struct flat_positions {
 // the group it is.
 template <std::size_t Argument, std::size_t Position, class Arguments>
 constexpr auto&& flat_row(Arguments& arguments) {
-    auto&& a = take_row<Argument>(arguments);
+    auto&& a = detail::take_row<Argument>(arguments);
     if constexpr (is_row_group<std::remove_cvref_t<decltype(a)>>)
-        return take_row<Position>(a.rows);
+        return detail::take_row<Position>(a.rows);
     else
         return static_cast<std::remove_cvref_t<decltype(a)>&&>(a);
 }
@@ -5120,7 +5160,7 @@ constexpr void mark_dead_timeout(dead_timeout const& dead, Rows&... rows) {
         if constexpr (is_timeout_row<std::remove_cvref_t<decltype(row)>>)
             if (position == dead.row) row.trigger_value.delay = timeout_trigger::dead_mark(dead.row, dead.fires_first);
     };
-    (mark(rows), ...);
+    [[maybe_unused]] int const marked[] = {(mark(rows), 0)..., 0};  // (a list: detail::max_fold)
 }
 
 template <class... Rows>
@@ -5165,7 +5205,7 @@ template <class Context, priority Order = priority::child_first, class Allowed =
 constexpr auto make_chart(Root root, Rows... rows) {
     if constexpr (!detail::is_allow<Allowed> || !detail::all_allowable<Allowed>) {
         return detail::rejected_chart<Context, error::finding_not_allowable<Allowed>>{};
-    } else if constexpr ((detail::is_row_group<Rows> || ...)) {
+    } else if constexpr (detail::any_true({detail::is_row_group<Rows>..., false})) {
         auto group = detail::flatten_rows(std::move(rows)...);
         // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
@@ -5174,7 +5214,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
         // clang-format on
     } else if constexpr (!detail::is_compound_root<Root>()) {
         return detail::rejected_chart<Context, error::root_must_be_composite<Root>>{};
-    } else if constexpr (!(detail::is_row<Rows> && ...)) {
+    } else if constexpr (!detail::all_true({detail::is_row<Rows>...})) {
         constexpr int bad =
             detail::position_in<std::false_type, detail::type_list<std::bool_constant<detail::is_row<Rows>>...>>::value;
         return detail::rejected_chart<
@@ -5185,7 +5225,7 @@ constexpr auto make_chart(Root root, Rows... rows) {
         using chart_type = chart<Context, Root, Order, Rows...>;
         using errors = typename detail::without_allowed<Allowed, decltype(detail::check_chart<chart_type>())>::type;
         if constexpr (errors::size == 0) {
-            if constexpr ((detail::is_timeout_row<Rows> || ...)) {
+            if constexpr (detail::any_true({detail::is_timeout_row<Rows>..., false})) {
                 auto const dead = detail::find_dead_timeout(detail::chart_model<chart_type>::tree,
                                                             detail::chart_model<chart_type>::rows,
                                                             detail::delays_of(rows...), Order);
@@ -5274,16 +5314,19 @@ inline constexpr bool is_chart_ref<chart_ref<Chart>> = true;
 
 namespace bsc {
 
-/// The active configuration: one byte per composite state, holding the position of its active
-/// child. An inactive composite keeps the child it had when it was last active, which is all
-/// that shallow and deep history need. Parallel and basic states take no storage.
-template <std::size_t Composites>
+/// The active configuration: one ordinal per composite state, the position of its active child
+/// (a byte; two bytes in a chart where a composite has more than 255 children). An inactive
+/// composite keeps the child it had when it was last active, which is all that shallow and deep
+/// history need. Parallel and basic states take no storage.
+template <std::size_t Composites, class Ordinal = std::uint8_t>
 struct configuration {
-    std::array<std::uint8_t, Composites> active{};
+    using ordinal_type = Ordinal;
+    std::array<Ordinal, Composites> active{};
     friend constexpr bool operator==(configuration const&, configuration const&) = default;
 };
-template <>
-struct configuration<0> {
+template <class Ordinal>
+struct configuration<0, Ordinal> {
+    using ordinal_type = Ordinal;
     friend constexpr bool operator==(configuration const&, configuration const&) = default;
 };
 
@@ -5891,6 +5934,7 @@ namespace bsc::detail {
 template <class Model>
 struct chart_layout {
     static constexpr auto const& tree = Model::tree;
+    using ordinal_type = typename Model::ordinal_type;
     static constexpr auto const& rows = Model::rows;
     static constexpr int N = Model::N;
     static constexpr int R = Model::R;
@@ -6113,16 +6157,16 @@ struct chart_layout {
     // composite with history states at the first of them, which is never active: the mark of a
     // composite that has never been active, whose history states take their defaults.
     static constexpr auto initial_bytes = [] {
-        std::array<std::uint8_t, static_cast<std::size_t>(tree.slots)> bytes{};
+        std::array<ordinal_type, static_cast<std::size_t>(tree.slots)> bytes{};
         for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s)
             if (tree.slot[s] >= 0)
-                bytes[static_cast<std::size_t>(tree.slot[s])] = static_cast<std::uint8_t>(
+                bytes[static_cast<std::size_t>(tree.slot[s])] = static_cast<ordinal_type>(
                     tree.ordinal[static_cast<std::size_t>(history_child[s] >= 0 ? history_child[s] : tree.initial[s])]);
         return bytes;
     }();
     // Whether composite s's byte says it has never been active (it selects a history state).
     template <int S>
-    static constexpr bool never_active_byte(std::uint8_t byte) {
+    static constexpr bool never_active_byte(int byte) {
         bool is_history = false;
         for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
              c = tree.next_sibling[static_cast<std::size_t>(c)])
@@ -6567,7 +6611,7 @@ inline constexpr auto in_tests = [] {
 /// no test reads a byte).
 template <class Model, int Source>
 struct configuration_view {
-    std::uint8_t const* active;
+    typename Model::ordinal_type const* active;
 
     template <class S>
     constexpr bool is_active() const noexcept {
@@ -6580,7 +6624,7 @@ struct configuration_view {
             // clang-format off
             return [&]<std::size_t... I>(std::index_sequence<I...>) {
                 return ((active[static_cast<std::size_t>(tests[I].slot)] ==
-                         static_cast<std::uint8_t>(tests[I].ordinal)) && ...);
+                         static_cast<typename Model::ordinal_type>(tests[I].ordinal)) && ...);
             }(std::make_index_sequence<tests.size()>{});
             // clang-format on
         }
@@ -8345,7 +8389,7 @@ struct completion {
     // Whether a row of the chart can take a done event.
     // clang-format off
     static constexpr bool takes_any = []<class... Es>(type_list<Es...>) {
-        return (is_done_event<Es> || ...);
+        return any_true({is_done_event<Es>..., false});
     }(typename Model::events{});
     // clang-format on
 
@@ -8358,11 +8402,11 @@ struct completion {
             // clang-format off
             [&]<class... Tags>(type_list<Tags...>) {
                 std::size_t s = 0;
-                ((out[s] = s > 1 && (tree.kinds[s] == kind::composite || tree.kinds[s] == kind::parallel)
-                               ? Model::template trigger_of<done<Tags>>
-                               : -1,
-                  ++s),
-                 ...);
+                [[maybe_unused]] int const set[] = {  // (in order, as a list: max_fold)
+                    (out[s] = s > 1 && (tree.kinds[s] == kind::composite || tree.kinds[s] == kind::parallel)
+                                  ? Model::template trigger_of<done<Tags>>
+                                  : -1,
+                     ++s, 0)...};
             }(typename Model::tags{});
         // clang-format on
         return out;
@@ -8761,7 +8805,7 @@ constexpr bool chart_may_throw() {
 #if defined(__cpp_exceptions)
     // clang-format off
     return []<class... Rows>(type_list<Rows...>) {
-        return !(row_nothrow<typename Model::chart_context, Queue, Rows>::value && ...);
+        return !all_true({row_nothrow<typename Model::chart_context, Queue, Rows>::value...});
     }(typename Model::row_types{});
     // clang-format on
 #else
@@ -8779,8 +8823,8 @@ template <class Chart, class Rows = typename Chart::row_types>
 inline constexpr bool is_shared_chart = false;
 template <class Chart, class... Rows>
 inline constexpr bool is_shared_chart<Chart, type_list<Rows...>> =
-    is_chart_ref<Chart> ||
-    (((std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>)&&...) && std::is_default_constructible_v<Chart>);
+    is_chart_ref<Chart> || (all_true({(std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>)...}) &&
+                            std::is_default_constructible_v<Chart>);
 template <class Chart>
 inline constexpr Chart shared_chart{};
 
@@ -8860,7 +8904,7 @@ protected:
 public:
     using chart_type = std::remove_cv_t<Chart>;
     using context_type = typename chart_type::context_type;
-    using configuration_type = configuration<static_cast<std::size_t>(tree.slots)>;
+    using configuration_type = configuration<static_cast<std::size_t>(tree.slots), typename model::ordinal_type>;
     using event_types = typename model::events;
     using policy_type = Policy;
     using observer_type = Observer;
@@ -8934,8 +8978,8 @@ protected:
         if constexpr (tree.slots > 0)
             for (std::size_t s = 1; s < state_count; ++s) {
                 auto const p = static_cast<std::size_t>(tree.parent[s]);
-                active[s] = active[p] && (tree.slot[p] < 0 || config_.active[static_cast<std::size_t>(tree.slot[p])] ==
-                                                                  static_cast<std::uint8_t>(tree.ordinal[s]));
+                active[s] = active[p] && (tree.slot[p] < 0 ||
+                                          config_.active[static_cast<std::size_t>(tree.slot[p])] == tree.ordinal[s]);
             }
         else
             for (std::size_t s = 1; s < state_count; ++s) active[s] = true;
@@ -9100,12 +9144,12 @@ protected:
         std::array<duration, static_cast<std::size_t>(model::R)> delays{};
         // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (
+            [[maybe_unused]] int const read[] = {(  // (a list: detail::max_fold)
                 [&] {
                     if constexpr (layout::is_timeout_row(static_cast<int>(I)))
                         delays[I] = this->template row<static_cast<int>(I)>().trigger_value.delay;
                 }(),
-                ...);
+                0)...};
         }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
         // clang-format on
         return delays;
@@ -9505,7 +9549,10 @@ private:
     constexpr void raise_done(int s) {
         // clang-format off
         [&]<std::size_t... S>(std::index_sequence<S...>) {
-            (void)((s == static_cast<int>(S) ? (raise_done_of<S>(), true) : false) || ...);
+            if constexpr (state_count <= max_fold)
+                (void)((s == static_cast<int>(S) ? (raise_done_of<S>(), true) : false) || ...);
+            else  // (a list: detail::max_fold)
+                [[maybe_unused]] bool const raised[] = {(s == static_cast<int>(S) ? (raise_done_of<S>(), true) : false)...};
         }(std::make_index_sequence<state_count>{});
         // clang-format on
     }
@@ -10311,7 +10358,7 @@ template <class Model>
 constexpr bool chart_sends_delayed() {
     // clang-format off
     return []<class... Rows>(type_list<Rows...>) {
-        return (sends_delayed<std::remove_cv_t<decltype(Rows::action)>> || ...);
+        return any_true({sends_delayed<std::remove_cv_t<decltype(Rows::action)>>..., false});
     }(typename Model::row_types{});
     // clang-format on
 }
@@ -10568,7 +10615,7 @@ private:
     template <int S>
     constexpr void set_active_child(int ordinal) {
         if constexpr (tree.slot[S] >= 0)
-            config_.active[static_cast<std::size_t>(tree.slot[S])] = static_cast<std::uint8_t>(ordinal);
+            config_.active[static_cast<std::size_t>(tree.slot[S])] = static_cast<typename model::ordinal_type>(ordinal);
     }
     template <int S>
     constexpr bool is_active() const {
@@ -10647,7 +10694,9 @@ private:
         constexpr auto const& children = plan::template children<S>;
         // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (f(detail::int_c<children[I]>{}), ...);
+            // (In order, as a list: a composite may have more children than a fold takes,
+            // detail::max_fold.)
+            [[maybe_unused]] int const visited[] = {((void)f(detail::int_c<children[I]>{}), 0)..., 0};
         }(std::make_index_sequence<children.size()>{});
         // clang-format on
     }
@@ -10667,9 +10716,16 @@ private:
         constexpr bool every_child = n >= 4 && static_cast<int>(n) == tree.child_count[S];
         // clang-format off
         return [&]<std::size_t... I>(std::index_sequence<I...>) BSC_DETAIL_WALK_INLINE {
-            return ((active == tree.ordinal[children[I]] || (every_child && I + 1 == n) ? (f(detail::int_c<children[I]>{}), true)
-                                                                                          : false) ||
-                    ...);
+            if constexpr (n <= detail::max_fold) {
+                return ((active == tree.ordinal[children[I]] || (every_child && I + 1 == n) ? (f(detail::int_c<children[I]>{}), true)
+                                                                                              : false) ||
+                        ...);
+            } else {  // more children than a fold takes: a list of tests, one of which holds
+                bool found = false;
+                [[maybe_unused]] bool const tested[] = {
+                    (active == tree.ordinal[children[I]] ? (f(detail::int_c<children[I]>{}), found = true) : false)...};
+                return found;
+            }
         }(std::make_index_sequence<n>{});
         // clang-format on
     }
@@ -10732,7 +10788,7 @@ private:
     template <int H>
     constexpr void enter_history() {
         constexpr int p = tree.parent[H];
-        if (plan::template never_active_byte<p>(static_cast<std::uint8_t>(active_child<p>()))) {
+        if (plan::template never_active_byte<p>(active_child<p>())) {
             run_state_actions<detail::row_kind::initial, H>();
             constexpr int c = tree.initial[H];
             if constexpr (tree.initial_target[H] == c) {
@@ -10850,7 +10906,7 @@ private:
         else
             return this->test(this->template row<Row>().guard, std::as_const(context_.value), seen_by<Row>(e), active);
     }
-    constexpr std::uint8_t const* configuration_bytes() const {
+    constexpr typename model::ordinal_type const* configuration_bytes() const {
         if constexpr (tree.slots > 0)
             return config_.active.data();
         else
@@ -11904,7 +11960,7 @@ struct state_row {
     state_id initial_target = no_state;  ///< its initial state: `initial`, or a descendant below it (a deep initial)
     std::array<state_id, 3>
         more_initial{};              ///< its initial states after the first (`initial<A, B>`); no_state where fewer
-    std::uint8_t ordinal = 0;        ///< position among its siblings: the configuration byte that selects it
+    std::uint16_t ordinal = 0;       ///< position among its siblings: the configuration entry that selects it
     std::int16_t slot = -1;          ///< the byte of the configuration a composite owns, -1 for others
     state_id end = 0;                ///< one past its last descendant: d is below s iff s < d < end
     std::int16_t timeout_slot = -1;  ///< the first slot of its timeout rows (see transition_row), else -1
@@ -11925,7 +11981,7 @@ struct transition_row {
     /// configuration bytes as `active`.
     using guard_fn = std::conditional_t<guards_read_configuration,
                                         bool (*)(Chart const& chart, context_type const& context, void const* event,
-                                                 std::uint8_t const* active),
+                                                 typename bsc::detail::chart_model<Chart>::ordinal_type const* active),
                                         bool (*)(Chart const& chart, context_type const& context, void const* event)>;
     using action_fn = void (*)(Chart const& chart, context_type& context, void const* event, Raise& raise);
     /// The delay of a timeout. `after(d)` stores d in the chart object, not in its type, so the
@@ -11997,7 +12053,7 @@ private:
     // compile time), the others ignore it.
     template <int Row>
     static bool configuration_guard_thunk(chart_type const& chart, context_type const& context, void const* event,
-                                          [[maybe_unused]] std::uint8_t const* active) {
+                                          [[maybe_unused]] typename model::ordinal_type const* active) {
         auto const& guard = bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows).guard;
         auto const& e = *static_cast<event_type_of<Row> const*>(event);
         using view = bsc::detail::configuration_view<model, rows.source[Row]>;
@@ -12063,7 +12119,7 @@ private:
         row.initial_target = id(tree.initial_target[i]);
         for (std::size_t k = 0; k < row.more_initial.size(); ++k) row.more_initial[k] = id(tree.more_initial[i][k]);
         row.initial_action = state_action_of<row_kind::initial, S>();
-        row.ordinal = static_cast<std::uint8_t>(tree.ordinal[i]);
+        row.ordinal = static_cast<std::uint16_t>(tree.ordinal[i]);
         row.slot = static_cast<std::int16_t>(tree.slot[i]);
         row.end = static_cast<state_id>(tree.end[i]);
         row.timeout_slot = static_cast<std::int16_t>(layout::timeout_slot[i]);
@@ -12336,20 +12392,22 @@ private:
     using transition_row_type = typename tables_type::transition_row_type;
 
     // ---- the configuration ----------------------------------------------------------------
-    std::uint8_t byte(std::int16_t slot) const {
+    int byte(std::int16_t slot) const {
         if constexpr (tables_type::slots > 0)
             return this->config_.active[static_cast<std::size_t>(slot)];
         else
             return 0;
     }
-    void set_byte(std::int16_t slot, std::uint8_t value) {
-        if constexpr (tables_type::slots > 0) this->config_.active[static_cast<std::size_t>(slot)] = value;
+    void set_byte(std::int16_t slot, int value) {
+        if constexpr (tables_type::slots > 0)
+            this->config_.active[static_cast<std::size_t>(slot)] =
+                static_cast<typename base::configuration_type::ordinal_type>(value);
     }
     // The child of a composite (or of the top) that its byte selects.
     state_id active_child(state_id s) const {
         state_id c = states[s].first_child;
         if (states[s].slot >= 0)
-            for (std::uint8_t k = byte(states[s].slot); k > 0; --k) c = states[c].next_sibling;
+            for (int k = byte(states[s].slot); k > 0; --k) c = states[c].next_sibling;
         return c;
     }
     // s is active if its parent is: a composite parent selects it, a parallel parent or the
@@ -12576,7 +12634,7 @@ private:
         else
             return g == nullptr || this->test(g, this->chart(), this->context_.value, e);
     }
-    std::uint8_t const* configuration_bytes() const {
+    typename base::configuration_type::ordinal_type const* configuration_bytes() const {
         if constexpr (tables_type::slots > 0)
             return this->config_.active.data();
         else

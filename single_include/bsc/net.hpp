@@ -468,7 +468,8 @@ private:
 // bsc::restore reads (bsc/retain.hpp), and the values bsc::net sends (net/wire.hpp). Walked by
 // the member layer (detail/members.hpp), so that every kind of member is encoded in one place:
 //
-//   a machine   one byte per composite (its active or remembered child: the configuration and
+//   a machine   one byte per composite, two in a chart with a composite of more than 255
+//               children (its active or remembered child: the configuration and
 //               the history), the clock (8), whether a cycle has run (1), each timeout's start
 //               (8 each), the last outcome (1); for a chart that defers: whether the deferred
 //               events wait for a retry (1), their number (2) and each of them (an event slot);
@@ -662,8 +663,9 @@ template <class Machine>
 constexpr std::size_t machine_size() {
     using layout = chart_layout<machine_model<Machine>>;
     static_assert(pending_layout<Machine>::checked || true);
-    return static_cast<std::size_t>(machine_model<Machine>::tree.slots) + 8 + 1 +
-           8 * static_cast<std::size_t>(layout::timeout_slots) + 1 + pending_layout<Machine>::size +
+    return static_cast<std::size_t>(machine_model<Machine>::tree.slots) *
+               sizeof(typename machine_model<Machine>::ordinal_type) +
+           8 + 1 + 8 * static_cast<std::size_t>(layout::timeout_slots) + 1 + pending_layout<Machine>::size +
            size_of<typename Machine::context_type>();
 }
 
@@ -780,7 +782,9 @@ constexpr std::uint64_t layout_fingerprint() {
         f.add(pending::delayed_capacity);
         // clang-format off
         [&]<class... Es>(type_list<Es...>) {
-            ((f.add(name_of<Es>), f.add(std::is_same_v<Es, action_failed> ? 0 : describe<Es>())), ...);
+            // (In order, as a list: a chart may have more events than a fold takes, detail::max_fold.)
+            [[maybe_unused]] int const added[] = {
+                (f.add(name_of<Es>), f.add(std::is_same_v<Es, action_failed> ? 0 : describe<Es>()), 0)..., 0};
         }(typename machine_model<Machine>::events{});
         // clang-format on
     }
@@ -878,7 +882,7 @@ void put_pending(byte_writer& w, Machine const& m) {
 template <class Machine>
 void put_machine(byte_writer& w, Machine const& m) {
     auto& machine = const_cast<Machine&>(m);  // access reads through non-const references too
-    for (auto byte : access::configuration(machine).active) w.put(byte, 1);
+    for (auto ordinal : access::configuration(machine).active) w.put(ordinal, sizeof(ordinal));
     w.put(static_cast<std::uint64_t>(access::clock(m).count()), 8);
     w.put(access::clock_started(m) ? 1 : 0, 1);
     for (duration armed : access::armed(machine)) w.put(static_cast<std::uint64_t>(armed.count()), 8);
@@ -1062,7 +1066,8 @@ void get_machine(byte_reader& r, Machine& m, pass const& p) {
     if (access::running(m)) r.refuse(byte_reader::fault::machine_running, r.position());  // one held in the context
     auto config = access::configuration(m);
     for (std::size_t k = 0; k < children_by_slot.size(); ++k)
-        config.active[k] = static_cast<std::uint8_t>(r.get_below(1, static_cast<std::uint64_t>(children_by_slot[k])));
+        config.active[k] = static_cast<typename decltype(config)::ordinal_type>(
+            r.get_below(sizeof(config.active[k]), static_cast<std::uint64_t>(children_by_slot[k])));
     auto const clock = duration{static_cast<duration::rep>(r.get(8))};
     bool const started = r.get_below(1, 2) != 0;
     auto armed = access::armed(m);

@@ -423,7 +423,9 @@ diagram model_of(Chart const& chart) {
     }
     // clang-format off
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (add_row<model>(m, detail::row_at<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), ...);
+        // (In order, as a list: a chart may have more rows than a fold takes, detail::max_fold.)
+        [[maybe_unused]] int const added[] = {
+            (add_row<model>(m, detail::row_at<I>(chart.rows), static_cast<int>(I), model::rows.source[I] - 1), 0)..., 0};
     }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
     // clang-format on
     for (std::size_t k = 0; k < m.transitions.size(); ++k) {

@@ -340,7 +340,6 @@ DEFECTS = {
     # bsc::in<S> in a guard (tests/compile_fail/in_of_*.fail.cpp)
     "in_of_state_not_in_chart": Defect(r"bsc: a row's guard tests bsc::in<State>, but State is not a state"),
     "in_of_history_state": Defect(r"bsc: a row's guard tests bsc::in<State>, but State is a history pseudo-state"),
-    "too_many_children": Defect(r"bsc: a composite state may have at most 255 children"),
     "finding_not_allowable": Defect(r"bsc: make_chart's third argument must be bsc::allow<...> of findings a chart may allow"),
     "root_must_be_composite": Defect(r"bsc: the first argument of make_chart is the root of the state tree"),
     "not_a_state_declaration": Defect(r"bsc: an argument of this state's declaration is not a state or marker"),

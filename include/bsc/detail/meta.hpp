@@ -71,6 +71,27 @@ struct indexer_of<type_list<Ts...>> {
     using type = indexer<std::index_sequence_for<Ts...>, Ts...>;
 };
 
+// How many of the flags are true. (A list and a loop where a fold expression would do: GCC
+// takes time superlinear in the length of a fold, and the lists here are as long as a chart.)
+constexpr int count_true(std::initializer_list<bool> flags) {
+    int n = 0;
+    for (bool flag : flags) n += flag ? 1 : 0;
+    return n;
+}
+
+// Whether any of the flags is true; whether all are. (For packs as long as a chart, in place of
+// a fold expression: see count_true.)
+constexpr bool any_true(std::initializer_list<bool> flags) {
+    for (bool flag : flags)
+        if (flag) return true;
+    return false;
+}
+constexpr bool all_true(std::initializer_list<bool> flags) {
+    for (bool flag : flags)
+        if (!flag) return false;
+    return true;
+}
+
 // The position of the first true among the flags, or -1.
 constexpr int first_true(std::initializer_list<bool> flags) {
     int i = 0;
@@ -94,14 +115,15 @@ template <class T, class List, class = void>
 struct position_in : scan_for<T, List> {};  // absent, or present twice (the base is ambiguous)
 template <class T, class List>
 struct position_in<
-    T, List, std::void_t<decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr)))>>
-    : decltype(position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr))) {};
+    T, List,
+    std::void_t<decltype(detail::position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr)))>>
+    : decltype(detail::position_by_type<T>(static_cast<typename indexer_of<List>::type const*>(nullptr))) {};
 
 template <std::size_t I, class List>
 struct at_impl;
 template <std::size_t I, class... Ts>
 struct at_impl<I, type_list<Ts...>> {
-    using type = typename decltype(select_indexed<I>(indexer<std::index_sequence_for<Ts...>, Ts...>{}))::type;
+    using type = typename decltype(detail::select_indexed<I>(indexer<std::index_sequence_for<Ts...>, Ts...>{}))::type;
 };
 template <std::size_t I, class List>
 using at = typename at_impl<I, List>::type;
@@ -109,10 +131,18 @@ using at = typename at_impl<I, List>::type;
 template <int I>
 using int_c = std::integral_constant<int, I>;
 
+// The longest pack the library folds with a fold expression; longer ones, which a chart's states,
+// rows or events can be, are lists (an array's initializers, or count_true and the like):
+// Clang nests a fold at most 256 deep, and GCC's time grows faster than the length of a fold.
+inline constexpr std::size_t max_fold = 128;
+
 // Calls f(int_c<I>) for the I in [0, N) equal to i; compilers turn the chain into a jump table.
 template <int N, class F, int... Is>
 constexpr void visit_index_impl(int i, F& f, std::integer_sequence<int, Is...>) {
-    (void)((i == Is ? (f(int_c<Is>{}), true) : false) || ...);
+    if constexpr (sizeof...(Is) <= max_fold)
+        (void)((i == Is ? (f(int_c<Is>{}), true) : false) || ...);
+    else [[maybe_unused]]
+        bool const visited[] = {(i == Is ? (f(int_c<Is>{}), true) : false)...};
 }
 template <int N, class F>
 constexpr void visit_index(int i, F&& f) {

@@ -39,7 +39,7 @@ constexpr Row&& take_row(row_slot<I, Row>& slot) {
 /// Calls f with every row, in order.
 template <class F, std::size_t... I, class... Rows>
 constexpr decltype(auto) with_rows(row_slots<std::index_sequence<I...>, Rows...> const& rows, F&& f) {
-    return std::forward<F>(f)(row_at<I>(rows)...);
+    return std::forward<F>(f)(detail::row_at<I>(rows)...);
 }
 
 }  // namespace bsc::detail

@@ -172,7 +172,8 @@ struct join_raised_of<false, Lists...> {
     using type = concat_t<Lists...>;
 };
 template <class... Lists>
-using join_raised = typename join_raised_of<(std::is_same_v<Lists, raises_anything> || ...), Lists...>::type;
+using join_raised =
+    typename join_raised_of<any_true({std::is_same_v<Lists, raises_anything>..., false}), Lists...>::type;
 
 // (A sequence, and an entry or exit action wrapping one of bsc's, are looked into; any other
 // action raises anything if may_raise says it can raise at all.)

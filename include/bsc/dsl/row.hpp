@@ -11,6 +11,7 @@
 
 #include <bsc/duration.hpp>
 #include <bsc/detail/chrono.hpp>
+#include <bsc/detail/meta.hpp>
 #include <bsc/error.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
@@ -283,7 +284,8 @@ inline constexpr bool row_tests_configuration<transition_row<S, Tr, G, A, T>> = 
 template <class Rows>
 inline constexpr bool any_row_tests_configuration = false;
 template <class... Rows>
-inline constexpr bool any_row_tests_configuration<type_list<Rows...>> = (row_tests_configuration<Rows> || ...);
+inline constexpr bool any_row_tests_configuration<type_list<Rows...>> = any_true({row_tests_configuration<Rows>...,
+                                                                                  false});
 
 }  // namespace bsc::detail
 

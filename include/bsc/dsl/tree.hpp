@@ -119,7 +119,7 @@ constexpr bool declares_below() {
 }
 template <class S, class... A>
 constexpr bool declared_below(type_list<A...>) {
-    return (declares_below<S, A>() || ...);
+    return any_true({declares_below<S, A>()..., false});
 }
 
 // The child declarations an argument of composite<S>(...) contributes, in document order.
@@ -129,7 +129,7 @@ constexpr bool declared_below(type_list<A...>) {
 template <class A, bool FirstOfItsKind, class Args, class... Declared>
 constexpr auto children_from_initial() {
     using S = typename tag_of<A>::type;
-    if constexpr ((std::is_same_v<S, Declared> || ...) || !FirstOfItsKind)
+    if constexpr (any_true({std::is_same_v<S, Declared>..., false}) || !FirstOfItsKind)
         return type_list<>{};
     else if constexpr (declared_below<S>(Args{}))
         return type_list<>{};
@@ -179,10 +179,12 @@ constexpr auto declared_tag() {
 template <class... A>
 constexpr history history_from() {
     history h = history::none;
-    ((h = std::is_same_v<A, history_marker<history::deep>>      ? history::deep
-          : std::is_same_v<A, history_marker<history::shallow>> ? history::shallow
-                                                                : h),
-     ...);
+    // (In order, as a list: detail::max_fold.)
+    [[maybe_unused]] history const seen[] = {
+        (h = std::is_same_v<A, history_marker<history::deep>>      ? history::deep
+             : std::is_same_v<A, history_marker<history::shallow>> ? history::shallow
+                                                                   : h)...,
+        h};
     return h;
 }
 
@@ -251,9 +253,11 @@ inline constexpr detail::leaf_node<S, detail::kind::final_state> final_state{};
 /// A composite (OR, exclusive) state: exactly one child is active while it is.
 template <class S, class... A>
 constexpr auto composite(A...) {
-    constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A> || detail::is_initial_marker<A> ||
-                                 detail::is_history_marker<A>)&&...);
-    constexpr int history_markers = (0 + ... + int{detail::is_history_marker<A>});
+    // (Lists, not fold expressions, here and below: a composite may have more children than
+    // Clang nests a fold, 256, and GCC's time grows faster than the length of a fold.)
+    constexpr bool all_valid = detail::all_true({(detail::is_node<A> || detail::is_state_ref<A> ||
+                                                  detail::is_initial_marker<A> || detail::is_history_marker<A>)...});
+    constexpr int history_markers = detail::count_true({detail::is_history_marker<A>..., false});
     if constexpr (!all_valid) {
         constexpr int bad = detail::position_in<
             std::false_type, detail::type_list<std::bool_constant<detail::is_node<A> || detail::is_state_ref<A> ||
@@ -275,7 +279,7 @@ constexpr auto composite(A...) {
 /// A parallel (AND) state: all of its children (its components, or regions) are active while it is.
 template <class S, class... A>
 constexpr auto parallel(A...) {
-    constexpr bool all_valid = ((detail::is_node<A> || detail::is_state_ref<A>)&&...);
+    constexpr bool all_valid = detail::all_true({(detail::is_node<A> || detail::is_state_ref<A>)...});
     if constexpr (!all_valid) {
         constexpr int bad = detail::position_in<
             std::false_type,

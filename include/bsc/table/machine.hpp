@@ -150,20 +150,22 @@ private:
     using transition_row_type = typename tables_type::transition_row_type;
 
     // ---- the configuration ----------------------------------------------------------------
-    std::uint8_t byte(std::int16_t slot) const {
+    int byte(std::int16_t slot) const {
         if constexpr (tables_type::slots > 0)
             return this->config_.active[static_cast<std::size_t>(slot)];
         else
             return 0;
     }
-    void set_byte(std::int16_t slot, std::uint8_t value) {
-        if constexpr (tables_type::slots > 0) this->config_.active[static_cast<std::size_t>(slot)] = value;
+    void set_byte(std::int16_t slot, int value) {
+        if constexpr (tables_type::slots > 0)
+            this->config_.active[static_cast<std::size_t>(slot)] =
+                static_cast<typename base::configuration_type::ordinal_type>(value);
     }
     // The child of a composite (or of the top) that its byte selects.
     state_id active_child(state_id s) const {
         state_id c = states[s].first_child;
         if (states[s].slot >= 0)
-            for (std::uint8_t k = byte(states[s].slot); k > 0; --k) c = states[c].next_sibling;
+            for (int k = byte(states[s].slot); k > 0; --k) c = states[c].next_sibling;
         return c;
     }
     // s is active if its parent is: a composite parent selects it, a parallel parent or the
@@ -390,7 +392,7 @@ private:
         else
             return g == nullptr || this->test(g, this->chart(), this->context_.value, e);
     }
-    std::uint8_t const* configuration_bytes() const {
+    typename base::configuration_type::ordinal_type const* configuration_bytes() const {
         if constexpr (tables_type::slots > 0)
             return this->config_.active.data();
         else

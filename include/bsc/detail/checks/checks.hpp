@@ -78,9 +78,7 @@ constexpr auto check_structure() {
             constexpr int composite = find_initial_problem(model::tree);
             if constexpr (composite >= 0) {
                 using S = typename model::template tag_at<composite>;
-                if constexpr (model::tree.child_count[composite] > 255)
-                    return type_list<error::too_many_children<S>>{};
-                else if constexpr (model::tree.initial_count[composite] == 0)
+                if constexpr (model::tree.initial_count[composite] == 0)
                     return type_list<error::missing_initial_state<S>>{};
                 else
                     return type_list<error::multiple_initial_states<S>>{};

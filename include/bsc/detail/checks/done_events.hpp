@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <type_traits>
 
+#include <bsc/detail/meta.hpp>
 #include <bsc/dsl/row.hpp>
 #include <bsc/detail/model/chart_model.hpp>
 
@@ -81,7 +82,7 @@ constexpr done_finding find_dead_done_row(topology<N> const& t, row_table<R> con
 // Whether a chart's events include a completion event: only then is there a row to check.
 template <class... Events>
 constexpr bool takes_done_event(type_list<Events...>) {
-    return (!std::is_void_v<typename completed_state<Events>::type> || ...);
+    return any_true({!std::is_void_v<typename completed_state<Events>::type>..., false});
 }
 
 // completes[e] for the events of a chart (see find_dead_done_row).

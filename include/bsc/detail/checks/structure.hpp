@@ -19,8 +19,7 @@ constexpr int find_duplicate(type_list<Tags...>) {
 template <std::size_t N>
 constexpr int find_initial_problem(topology<N> const& t) {
     for (std::size_t s = 1; s < N; ++s)
-        if (t.kinds[s] == kind::composite && (t.initial_count[s] != 1 || t.child_count[s] > 255))
-            return static_cast<int>(s);
+        if (t.kinds[s] == kind::composite && t.initial_count[s] != 1) return static_cast<int>(s);
     return -1;
 }
 

@@ -82,6 +82,15 @@ struct topology {
     std::array<bool, N> implicit{};
     int slots = 0;
 
+    // The most children any composite has: the configuration keeps each composite's active
+    // child in a byte up to 255 of them, in two bytes above (ordinal_for).
+    constexpr int most_children() const {
+        int most = 0;
+        for (std::size_t s = 0; s < N; ++s)
+            if (slot[s] >= 0 && child_count[s] > most) most = child_count[s];
+        return most;
+    }
+
     // States are numbered by int (negative numbers mean "none"); the arrays by size_t.
     static constexpr std::size_t at(int s) { return static_cast<std::size_t>(s); }
 
@@ -110,7 +119,7 @@ struct topology {
 // Whether one of a node's children is a history state.
 template <class... C>
 constexpr bool has_history_child(type_list<C...>) {
-    return ((C::node_kind == kind::history) || ...);
+    return any_true({(C::node_kind == kind::history)...});
 }
 
 // Links the next child of node i into the sibling chain.
@@ -149,7 +158,9 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     int previous = -1;
     // clang-format off
     [&]<class... C>(type_list<C...>) {
-        ((link_child(t, i, previous, next), next = fill_topology<C>(t, next, index, count++, depth + 1)), ...);
+        // (An array's initializers, evaluated in order, and not a fold expression: see count_true.)
+        [[maybe_unused]] int const linked[] = {
+            (link_child(t, i, previous, next), next = fill_topology<C>(t, next, index, count++, depth + 1))..., 0};
         if constexpr (Node::initials::size == 1) {
             using initial_tag = at<0, typename Node::initials>;
             constexpr int pos = position_in<initial_tag, type_list<typename C::tag...>>::value;
@@ -187,7 +198,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
     if constexpr (Node::node_kind == kind::composite && has_history_child(typename Node::children{}))
         // clang-format off
         [&]<class... C>(type_list<C...>) {
-            (
+            [[maybe_unused]] int const placed[] = {(  // (a list: max_fold)
                 [&] {
                     if constexpr (C::node_kind == kind::history) {
                         using tags = typename tags_of<decltype(flatten<Node>())>::type;
@@ -199,7 +210,7 @@ constexpr int fill_topology(topology<N>& t, int index, int parent, int ordinal, 
                         }
                     }
                 }(),
-                ...);
+                0)...};
         }(typename Node::children{});
     // clang-format on
     return next;
@@ -334,6 +345,8 @@ struct chart_model {
         fill_topology<top_node<root>>(t, 0, -1, 0, 0);
         return t;
     }();
+    // The type of a composite's entry in the configuration (bsc::configuration::active).
+    using ordinal_type = std::conditional_t<(tree.most_children() > 255), std::uint16_t, std::uint8_t>;
 
     // clang-format off
     static constexpr row_table<row_types::size> rows = []<class... Rs>(type_list<Rs...>) {
@@ -342,8 +355,9 @@ struct chart_model {
         std::size_t e = 0;
         for (int f : event_families<events>::nearest) r.event_family[e++] = f;
         std::size_t i = 0;
-        (
-            [&] {
+        // (An array's initializers, evaluated in order, and not a fold expression: see count_true.)
+        [[maybe_unused]] int const filled[] = {
+            ([&] {
                 r.kinds[i] = kind_of_row<Rs>();
                 r.source[i] = state_index<typename Rs::source, tags>::value;
                 r.target[i] = no_state;
@@ -370,8 +384,7 @@ struct chart_model {
                 if (r.source[i] >= 0 && r.target[i] >= 0)
                     r.domain[i] = transition_domain(tree, r.source[i], r.target[i], r.local[i], r.more_targets[i]);
                 ++i;
-            }(),
-            ...);
+            }(), 0)...};
         return r;
     }(row_types{});
     // clang-format on

@@ -28,7 +28,7 @@ struct completion {
     // Whether a row of the chart can take a done event.
     // clang-format off
     static constexpr bool takes_any = []<class... Es>(type_list<Es...>) {
-        return (is_done_event<Es> || ...);
+        return any_true({is_done_event<Es>..., false});
     }(typename Model::events{});
     // clang-format on
 
@@ -41,11 +41,11 @@ struct completion {
             // clang-format off
             [&]<class... Tags>(type_list<Tags...>) {
                 std::size_t s = 0;
-                ((out[s] = s > 1 && (tree.kinds[s] == kind::composite || tree.kinds[s] == kind::parallel)
-                               ? Model::template trigger_of<done<Tags>>
-                               : -1,
-                  ++s),
-                 ...);
+                [[maybe_unused]] int const set[] = {  // (in order, as a list: max_fold)
+                    (out[s] = s > 1 && (tree.kinds[s] == kind::composite || tree.kinds[s] == kind::parallel)
+                                  ? Model::template trigger_of<done<Tags>>
+                                  : -1,
+                     ++s, 0)...};
             }(typename Model::tags{});
         // clang-format on
         return out;

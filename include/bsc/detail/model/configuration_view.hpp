@@ -60,7 +60,7 @@ inline constexpr auto in_tests = [] {
 /// no test reads a byte).
 template <class Model, int Source>
 struct configuration_view {
-    std::uint8_t const* active;
+    typename Model::ordinal_type const* active;
 
     template <class S>
     constexpr bool is_active() const noexcept {
@@ -73,7 +73,7 @@ struct configuration_view {
             // clang-format off
             return [&]<std::size_t... I>(std::index_sequence<I...>) {
                 return ((active[static_cast<std::size_t>(tests[I].slot)] ==
-                         static_cast<std::uint8_t>(tests[I].ordinal)) && ...);
+                         static_cast<typename Model::ordinal_type>(tests[I].ordinal)) && ...);
             }(std::make_index_sequence<tests.size()>{});
             // clang-format on
         }

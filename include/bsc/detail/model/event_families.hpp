@@ -49,17 +49,20 @@ template <class... Us>
 struct event_families<type_list<Us...>> {
     static constexpr std::size_t K = sizeof...(Us);
     // Whether the chart names bsc::any_event, every other event's family.
-    static constexpr bool names_any_event = (false || ... || BSC_DETAIL_IS_SAME(Us, any_event));
+    static constexpr bool names_any_event = position_in<any_event, type_list<Us...>>::value >= 0;
     // How many chart events E derives from, E itself included if it is one (a class is its own
     // base). One built-in per pair and nothing else: a chart of K events asks K * K times.
+    // (An array and a loop, not a fold expression: GCC takes time superlinear in the length of
+    // a fold, and a chart of K events has K of them here.)
     template <class E>
-    static constexpr int chart_bases = (0 + ... + static_cast<int>(BSC_DETAIL_IS_BASE_OF(Us, E)));
+    static constexpr int chart_bases = count_true({BSC_DETAIL_IS_BASE_OF(Us, E)...});
     // Whether event E, which the chart does not name (trigger_of asks only then), has a family
     // among the chart's events; any: whether a chart event has.
     template <class E>
     static constexpr bool has_family = (names_any_event && !BSC_DETAIL_IS_SAME(E, any_event)) || chart_bases<E> > 0;
     static constexpr bool any = (names_any_event && K > 1) ||
-                                (false || ... || (chart_bases<Us> > static_cast<int>(BSC_DETAIL_IS_CLASS(Us))));
+                                first_true({(chart_bases<Us> > static_cast<int>(BSC_DETAIL_IS_CLASS(Us)))..., false}) >=
+                                    0;
     // family[t][u]: chart event u is a family of chart event t. (Built only where some event
     // has a family: a chart of K events would otherwise hold K * K flags for nothing.)
     static constexpr auto family = [] {

@@ -15,6 +15,7 @@ namespace bsc::detail {
 template <class Model>
 struct chart_layout {
     static constexpr auto const& tree = Model::tree;
+    using ordinal_type = typename Model::ordinal_type;
     static constexpr auto const& rows = Model::rows;
     static constexpr int N = Model::N;
     static constexpr int R = Model::R;
@@ -237,16 +238,16 @@ struct chart_layout {
     // composite with history states at the first of them, which is never active: the mark of a
     // composite that has never been active, whose history states take their defaults.
     static constexpr auto initial_bytes = [] {
-        std::array<std::uint8_t, static_cast<std::size_t>(tree.slots)> bytes{};
+        std::array<ordinal_type, static_cast<std::size_t>(tree.slots)> bytes{};
         for (std::size_t s = 0; s < static_cast<std::size_t>(N); ++s)
             if (tree.slot[s] >= 0)
-                bytes[static_cast<std::size_t>(tree.slot[s])] = static_cast<std::uint8_t>(
+                bytes[static_cast<std::size_t>(tree.slot[s])] = static_cast<ordinal_type>(
                     tree.ordinal[static_cast<std::size_t>(history_child[s] >= 0 ? history_child[s] : tree.initial[s])]);
         return bytes;
     }();
     // Whether composite s's byte says it has never been active (it selects a history state).
     template <int S>
-    static constexpr bool never_active_byte(std::uint8_t byte) {
+    static constexpr bool never_active_byte(int byte) {
         bool is_history = false;
         for (int c = tree.first_child[static_cast<std::size_t>(S)]; c >= 0;
              c = tree.next_sibling[static_cast<std::size_t>(c)])

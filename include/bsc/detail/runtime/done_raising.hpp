@@ -120,7 +120,10 @@ private:
     constexpr void raise_done(int s) {
         // clang-format off
         [&]<std::size_t... S>(std::index_sequence<S...>) {
-            (void)((s == static_cast<int>(S) ? (raise_done_of<S>(), true) : false) || ...);
+            if constexpr (state_count <= max_fold)
+                (void)((s == static_cast<int>(S) ? (raise_done_of<S>(), true) : false) || ...);
+            else  // (a list: detail::max_fold)
+                [[maybe_unused]] bool const raised[] = {(s == static_cast<int>(S) ? (raise_done_of<S>(), true) : false)...};
         }(std::make_index_sequence<state_count>{});
         // clang-format on
     }

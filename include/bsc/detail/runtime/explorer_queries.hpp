@@ -71,12 +71,12 @@ protected:
         std::array<duration, static_cast<std::size_t>(model::R)> delays{};
         // clang-format off
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (
+            [[maybe_unused]] int const read[] = {(  // (a list: detail::max_fold)
                 [&] {
                     if constexpr (layout::is_timeout_row(static_cast<int>(I)))
                         delays[I] = this->template row<static_cast<int>(I)>().trigger_value.delay;
                 }(),
-                ...);
+                0)...};
         }(std::make_index_sequence<static_cast<std::size_t>(model::R)>{});
         // clang-format on
         return delays;

@@ -15,6 +15,7 @@
 #include <bsc/chart_ref.hpp>
 #include <bsc/configuration.hpp>
 #include <bsc/detail/machine_base.hpp>
+#include <bsc/detail/meta.hpp>
 #include <bsc/detail/model/completion.hpp>
 #include <bsc/detail/model/layout.hpp>
 #include <bsc/detail/row_storage.hpp>
@@ -56,7 +57,7 @@ constexpr bool chart_may_throw() {
 #if defined(__cpp_exceptions)
     // clang-format off
     return []<class... Rows>(type_list<Rows...>) {
-        return !(row_nothrow<typename Model::chart_context, Queue, Rows>::value && ...);
+        return !all_true({row_nothrow<typename Model::chart_context, Queue, Rows>::value...});
     }(typename Model::row_types{});
     // clang-format on
 #else
@@ -74,8 +75,8 @@ template <class Chart, class Rows = typename Chart::row_types>
 inline constexpr bool is_shared_chart = false;
 template <class Chart, class... Rows>
 inline constexpr bool is_shared_chart<Chart, type_list<Rows...>> =
-    is_chart_ref<Chart> ||
-    (((std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>)&&...) && std::is_default_constructible_v<Chart>);
+    is_chart_ref<Chart> || (all_true({(std::is_empty_v<Rows> && std::is_default_constructible_v<Rows>)...}) &&
+                            std::is_default_constructible_v<Chart>);
 template <class Chart>
 inline constexpr Chart shared_chart{};
 
@@ -155,7 +156,7 @@ protected:
 public:
     using chart_type = std::remove_cv_t<Chart>;
     using context_type = typename chart_type::context_type;
-    using configuration_type = configuration<static_cast<std::size_t>(tree.slots)>;
+    using configuration_type = configuration<static_cast<std::size_t>(tree.slots), typename model::ordinal_type>;
     using event_types = typename model::events;
     using policy_type = Policy;
     using observer_type = Observer;
@@ -229,8 +230,8 @@ protected:
         if constexpr (tree.slots > 0)
             for (std::size_t s = 1; s < state_count; ++s) {
                 auto const p = static_cast<std::size_t>(tree.parent[s]);
-                active[s] = active[p] && (tree.slot[p] < 0 || config_.active[static_cast<std::size_t>(tree.slot[p])] ==
-                                                                  static_cast<std::uint8_t>(tree.ordinal[s]));
+                active[s] = active[p] && (tree.slot[p] < 0 ||
+                                          config_.active[static_cast<std::size_t>(tree.slot[p])] == tree.ordinal[s]);
             }
         else
             for (std::size_t s = 1; s < state_count; ++s) active[s] = true;

@@ -39,7 +39,7 @@ template <class Model>
 constexpr bool chart_sends_delayed() {
     // clang-format off
     return []<class... Rows>(type_list<Rows...>) {
-        return (sends_delayed<std::remove_cv_t<decltype(Rows::action)>> || ...);
+        return any_true({sends_delayed<std::remove_cv_t<decltype(Rows::action)>>..., false});
     }(typename Model::row_types{});
     // clang-format on
 }

@@ -84,7 +84,7 @@ struct state_row {
     state_id initial_target = no_state;  ///< its initial state: `initial`, or a descendant below it (a deep initial)
     std::array<state_id, 3>
         more_initial{};              ///< its initial states after the first (`initial<A, B>`); no_state where fewer
-    std::uint8_t ordinal = 0;        ///< position among its siblings: the configuration byte that selects it
+    std::uint16_t ordinal = 0;       ///< position among its siblings: the configuration entry that selects it
     std::int16_t slot = -1;          ///< the byte of the configuration a composite owns, -1 for others
     state_id end = 0;                ///< one past its last descendant: d is below s iff s < d < end
     std::int16_t timeout_slot = -1;  ///< the first slot of its timeout rows (see transition_row), else -1
@@ -105,7 +105,7 @@ struct transition_row {
     /// configuration bytes as `active`.
     using guard_fn = std::conditional_t<guards_read_configuration,
                                         bool (*)(Chart const& chart, context_type const& context, void const* event,
-                                                 std::uint8_t const* active),
+                                                 typename bsc::detail::chart_model<Chart>::ordinal_type const* active),
                                         bool (*)(Chart const& chart, context_type const& context, void const* event)>;
     using action_fn = void (*)(Chart const& chart, context_type& context, void const* event, Raise& raise);
     /// The delay of a timeout. `after(d)` stores d in the chart object, not in its type, so the
@@ -177,7 +177,7 @@ private:
     // compile time), the others ignore it.
     template <int Row>
     static bool configuration_guard_thunk(chart_type const& chart, context_type const& context, void const* event,
-                                          [[maybe_unused]] std::uint8_t const* active) {
+                                          [[maybe_unused]] typename model::ordinal_type const* active) {
         auto const& guard = bsc::detail::row_at<static_cast<std::size_t>(Row)>(chart.rows).guard;
         auto const& e = *static_cast<event_type_of<Row> const*>(event);
         using view = bsc::detail::configuration_view<model, rows.source[Row]>;
@@ -243,7 +243,7 @@ private:
         row.initial_target = id(tree.initial_target[i]);
         for (std::size_t k = 0; k < row.more_initial.size(); ++k) row.more_initial[k] = id(tree.more_initial[i][k]);
         row.initial_action = state_action_of<row_kind::initial, S>();
-        row.ordinal = static_cast<std::uint8_t>(tree.ordinal[i]);
+        row.ordinal = static_cast<std::uint16_t>(tree.ordinal[i]);
         row.slot = static_cast<std::int16_t>(tree.slot[i]);
         row.end = static_cast<state_id>(tree.end[i]);
         row.timeout_slot = static_cast<std::int16_t>(layout::timeout_slot[i]);

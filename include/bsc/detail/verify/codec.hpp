@@ -536,7 +536,8 @@ void decode_visitor::leaf(T& value, no_name) {
     if constexpr (k == member_kind::machine) {
         auto& cfg = access::configuration(value);
         constexpr auto bits = slot_bits<U>();
-        for (std::size_t s = 0; s < bits.size(); ++s) cfg.active[s] = static_cast<std::uint8_t>(in.get(bits[s]));
+        for (std::size_t s = 0; s < bits.size(); ++s)
+            cfg.active[s] = static_cast<std::remove_cvref_t<decltype(cfg.active[s])>>(in.get(bits[s]));
         access::set_clock(value, frame.clock);
         for (auto& armed : access::armed(value)) armed = frame.before(in.get(cycle_bits));
         decode_pending(value, in, frame);
