@@ -15,14 +15,16 @@ workload exceeds the baseline by more than 0.5 % (plus 0.1 instruction for round
 counts are deterministic for a given compiler and library, so the margin is small; a change that
 makes dispatch cheaper passes and should record the new, lower baseline.
 
-compile-time: compiles the 50-state flat chart probe (bench/compile_time/flat_bsc.cpp.in) and a
-reference translation unit (bench/compile_time/reference.cpp: the hand-written flat workload,
-which includes the same standard and benchmark headers) alternately, five times each. The CPU
-ratio is the median of the five ratios probe / reference of a pair compiled one after the other
-(CPU time, user + system), so that the speed and load of the machine cancel and one unusually
-quick or slow compilation does not move it; the memory ratio is that of the largest peak memory
-of each. It fails if the CPU ratio exceeds its baseline by more than 25 % or the memory ratio by
-more than 15 %.
+compile-time: compiles each probe of COMPILE_PROBES alternately with its reference, five times
+each: the 50-state flat chart (bench/compile_time/flat_bsc.cpp.in, bsc::machine<decltype(chart)>)
+and the 200-state one (flat_bsc_ref.cpp.in, bsc::machine<bsc::chart_ref<chart>>), each against
+bench/compile_time/reference.cpp (the hand-written flat workload, which includes the same standard
+and benchmark headers); and Boost.SML's CD player (bench/sml_simple/sml_simple_bsc.cpp), a small
+chart, against the same chart written by hand (sml_simple_hand.cpp). The CPU ratio is the median
+of the five ratios probe / reference of a pair compiled one after the other (CPU time, user +
+system), so that the speed and load of the machine cancel and one unusually quick or slow
+compilation does not move it; the memory ratio is that of the largest peak memory of each. It
+fails if a CPU ratio exceeds its baseline by more than 25 % or a memory ratio by more than 15 %.
 
 Baselines are kept per compiler and major version in bench/baselines.json; --record writes the
 measured values there instead of checking them. A compiler with no baseline is reported and the
@@ -164,11 +166,25 @@ def timed_compile(cxx, source, work):
     return usage.ru_utime + usage.ru_stime, usage.ru_maxrss
 
 
-def measure_compile_time(cxx, work):
-    probe = work / "flat_bsc_50.cpp"
-    template = (ROOT / "bench" / "compile_time" / "flat_bsc.cpp.in").read_text()
-    probe.write_text(template.replace("@N@", "50"))
-    reference = ROOT / "bench" / "compile_time" / "reference.cpp"
+# The compile-time probes: (name, how to make the probe, the reference it is compiled alternately
+# with). flat_50: the 50-state flat chart as bsc::machine<decltype(chart)>; flat_200_ref: the
+# 200-state one as bsc::machine<bsc::chart_ref<chart>>, the spelling docs/api.md recommends for
+# large charts; cd_player: Boost.SML's CD player (bench/sml_simple), a small chart, against the
+# same chart written by hand with the same includes.
+COMPILE_PROBES = [
+    ("flat_50", ("flat_bsc.cpp.in", 50), ROOT / "bench" / "compile_time" / "reference.cpp"),
+    ("flat_200_ref", ("flat_bsc_ref.cpp.in", 200), ROOT / "bench" / "compile_time" / "reference.cpp"),
+    ("cd_player", ROOT / "bench" / "sml_simple" / "sml_simple_bsc.cpp", ROOT / "bench" / "sml_simple" / "sml_simple_hand.cpp"),
+]
+
+
+def measure_probe(cxx, work, name, source, reference):
+    if isinstance(source, tuple):
+        template, n = source
+        probe = work / f"{name}.cpp"
+        probe.write_text((ROOT / "bench" / "compile_time" / template).read_text().replace("@N@", str(n)))
+    else:
+        probe = source
     results = {"probe": [], "reference": []}
     for _ in range(REPEATS):
         results["reference"].append(timed_compile(cxx, reference, work))
@@ -181,21 +197,30 @@ def measure_compile_time(cxx, work):
     measured = {"probe_cpu_seconds": round(probe_cpu, 3), "reference_cpu_seconds": round(ref_cpu, 3),
                 "probe_peak_kib": probe_mem, "reference_peak_kib": ref_mem,
                 "cpu_ratio": round(ratios[len(ratios) // 2], 3), "memory_ratio": round(probe_mem / ref_mem, 3)}
-    print(f"50-state flat chart: {probe_cpu:.2f} s CPU, {probe_mem / 1024:.0f} MiB; reference: {ref_cpu:.2f} s, "
+    print(f"{name}: {probe_cpu:.2f} s CPU, {probe_mem / 1024:.0f} MiB; reference {reference.name}: {ref_cpu:.2f} s, "
           f"{ref_mem / 1024:.0f} MiB; ratios: CPU {measured['cpu_ratio']:.3f}, memory {measured['memory_ratio']:.3f}")
     return measured
 
 
-def check_compile_time(measured, baseline):
+def measure_compile_time(cxx, work):
+    return {name: measure_probe(cxx, work, name, source, reference) for name, source, reference in COMPILE_PROBES}
+
+
+def check_compile_time(measured, baselines):
     failures = []
-    cpu_limit = baseline["cpu_ratio"] * (1 + CPU_MARGIN)
-    mem_limit = baseline["memory_ratio"] * (1 + MEMORY_MARGIN)
-    if measured["cpu_ratio"] > cpu_limit:
-        failures.append(f"compile CPU ratio {measured['cpu_ratio']:.3f} over its baseline {baseline['cpu_ratio']:.3f} "
-                        f"(limit {cpu_limit:.3f})")
-    if measured["memory_ratio"] > mem_limit:
-        failures.append(f"compile memory ratio {measured['memory_ratio']:.3f} over its baseline "
-                        f"{baseline['memory_ratio']:.3f} (limit {mem_limit:.3f})")
+    for name, m in measured.items():
+        baseline = baselines.get(name)
+        if baseline is None:
+            failures.append(f"{name}: no baseline (record one with --record)")
+            continue
+        cpu_limit = baseline["cpu_ratio"] * (1 + CPU_MARGIN)
+        mem_limit = baseline["memory_ratio"] * (1 + MEMORY_MARGIN)
+        if m["cpu_ratio"] > cpu_limit:
+            failures.append(f"{name}: compile CPU ratio {m['cpu_ratio']:.3f} over its baseline "
+                            f"{baseline['cpu_ratio']:.3f} (limit {cpu_limit:.3f})")
+        if m["memory_ratio"] > mem_limit:
+            failures.append(f"{name}: compile memory ratio {m['memory_ratio']:.3f} over its baseline "
+                            f"{baseline['memory_ratio']:.3f} (limit {mem_limit:.3f})")
     return failures
 
 

@@ -199,7 +199,7 @@ public:
 private:
     template <class S>
     static constexpr std::uint16_t state_number() {
-        return static_cast<std::uint16_t>(model::template index_of_state<S>);
+        return static_cast<std::uint16_t>(model::template index_of_state<S>::value);
     }
     template <class E>
     static constexpr std::uint16_t event_number() {
@@ -209,7 +209,7 @@ private:
             return detail::trace::timeout_trigger;
         } else {
             constexpr int at = detail::position_in<E, events>::value;
-            constexpr int family = model::template trigger_of<E>;
+            constexpr int family = model::template trigger_of<E>::value;
             return at >= 0 ? static_cast<std::uint16_t>(at)
                            : (family >= 0 ? static_cast<std::uint16_t>(family) : detail::trace::no_number);
         }

@@ -92,6 +92,13 @@
 #define BSC_DETAIL_IS_BASE_OF(Base, Derived) (std::is_base_of_v<Base, Derived>)
 #define BSC_DETAIL_IS_CLASS(T) (std::is_class_v<T>)
 #endif
+// BSC_DETAIL_BASES_OF(T): GCC's __bases, every base class of class T as a pack, so that the
+// event families (detail/model/event_families.hpp) ask each event of its own bases, not of every
+// other event: GCC takes 1.7 s for the 250,000 pairs of a chart of 500 events. Clang has no
+// __bases, and asks the pairs in a tenth of the time.
+#if defined(__GNUC__) && !defined(__clang__)
+#define BSC_DETAIL_BASES_OF(T) __bases(T)
+#endif
 
 // ---- names -----------------------------------------------------------------------------------------
 // BSC_DETAIL_FUNCTION_SIGNATURE: the enclosing function's signature, with its template arguments

@@ -59,7 +59,7 @@ constexpr auto check_structure() {
     constexpr int duplicate = find_duplicate(typename model::tags{});
     if constexpr (duplicate >= 0) {
         using S = typename model::template tag_at<duplicate>;
-        constexpr int first = model::template index_of_state<S>;
+        constexpr int first = model::template index_of_state<S>::value;
         constexpr int implicit = model::tree.implicit[duplicate] ? duplicate : model::tree.implicit[first] ? first : -1;
         if constexpr (implicit >= 0)
             return type_list<

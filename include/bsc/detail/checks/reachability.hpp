@@ -7,14 +7,34 @@
 
 namespace bsc::detail {
 
+// The states marked: flags, or flags and the list of the states in the order they were first
+// marked (reachable_states works through that list).
 template <std::size_t N>
-constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int domain, int target);
+constexpr void set_mark(std::array<bool, N>& m, int s) {
+    m[static_cast<std::size_t>(s)] = true;
+}
+template <std::size_t N>
+struct marked_states {
+    std::array<bool, N> flag{};
+    std::array<int, N> in_order{};
+    std::size_t count = 0;
+};
+template <std::size_t N>
+constexpr void set_mark(marked_states<N>& m, int s) {
+    auto const i = static_cast<std::size_t>(s);
+    if (m.flag[i]) return;
+    m.flag[i] = true;
+    m.in_order[m.count++] = s;
+}
+
+template <std::size_t N, class Marks>
+constexpr void mark_entry(topology<N> const& t, Marks& m, int domain, int target);
 
 // Marks s and the states its default entry activates (initial states, all regions, a
 // history state's default).
-template <std::size_t N>
-constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, int s) {
-    m[static_cast<std::size_t>(s)] = true;
+template <std::size_t N, class Marks>
+constexpr void mark_default_entry(topology<N> const& t, Marks& m, int s) {
+    set_mark(m, s);
     auto const i = static_cast<std::size_t>(s);
     if (t.is_compound(s)) {
         if (t.initial_target[i] >= 0 && t.initial_target[i] != t.initial[i])
@@ -38,10 +58,10 @@ constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, 
 // with several targets (bsc::targets) is marked target by target: each marks the default
 // entry of the regions the others enter otherwise, which keeps reachability an
 // over-approximation (a state it calls unreachable is, whatever the targets).
-template <std::size_t N>
-constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int domain, int target) {
+template <std::size_t N, class Marks>
+constexpr void mark_entry(topology<N> const& t, Marks& m, int domain, int target) {
     for (int a = target; a != domain && a >= 0; a = t.parent[static_cast<std::size_t>(a)]) {
-        m[static_cast<std::size_t>(a)] = true;
+        set_mark(m, a);
         int const p = t.parent[static_cast<std::size_t>(a)];
         if (p >= 0 && p != domain && t.kinds[static_cast<std::size_t>(p)] == kind::parallel)
             for (int c = t.first_child[static_cast<std::size_t>(p)]; c >= 0;
@@ -62,37 +82,42 @@ constexpr int restored_by_shallow_history(topology<N> const& t, int s) {
     return t.kinds[i] == kind::composite ? s : -1;
 }
 
+// The states some sequence of firing rows reaches. Each state is visited once, when first
+// reached, and then follows its own rows (grouped by source, rows_by_source.hpp): linear in
+// the chart, whatever the order of its rows.
 template <std::size_t N, std::size_t R>
 constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R> const& r,
                                                std::array<bool, R> const& dead) {
-    std::array<bool, N> reach{};
-    std::array<bool, R> applied{};
-    std::array<bool, N> restored{};  // children a shallow history has re-entered by default
+    auto const rows = rows_by_source<N>(r, [&](std::size_t i) { return !dead[i] && r.target[i] >= 0; });
+    marked_states<N> reach;
+    std::array<bool, N> restoring{};  // composites a reached shallow history restores a child of
+    std::array<bool, N> restored{};   // children a shallow history has re-entered by default
+    // A shallow history restores a child that has been active, and enters it by default: its
+    // initial states become active even if they never were (SCXML IRP test 388).
+    auto const restore = [&](int c) {
+        auto const ci = static_cast<std::size_t>(c);
+        if (restored[ci] || t.kinds[ci] == kind::history) return;
+        restored[ci] = true;
+        mark_default_entry(t, reach, c);
+    };
     mark_default_entry(t, reach, 0);
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (std::size_t i = 0; i < R; ++i) {
-            if (applied[i] || dead[i] || r.kinds[i] != row_kind::transition || r.target[i] < 0) continue;
-            if (!reach[static_cast<std::size_t>(r.source[i])]) continue;
-            applied[i] = changed = true;
-            for (int target : r.targets_of(i))
+    for (std::size_t next = 0; next < reach.count; ++next) {
+        int const s = reach.in_order[next];
+        auto const si = static_cast<std::size_t>(s);
+        for (int k = rows.begin[si]; k < rows.begin[si + 1]; ++k)
+            for (int target : r.targets_of(static_cast<std::size_t>(rows.order[static_cast<std::size_t>(k)])))
                 if (target >= 0) mark_entry(t, reach, -1, target);
-        }
-        // A shallow history restores a child that has been active, and enters it by default:
-        // its initial states become active even if they never were (SCXML IRP test 388).
-        for (int s = 1; s < static_cast<int>(N); ++s) {
-            int const of = reach[static_cast<std::size_t>(s)] ? restored_by_shallow_history(t, s) : -1;
-            if (of < 0) continue;
+        int const parent = t.parent[si];
+        if (parent >= 0 && restoring[static_cast<std::size_t>(parent)]) restore(s);
+        int const of = restored_by_shallow_history(t, s);
+        if (of >= 0 && !restoring[static_cast<std::size_t>(of)]) {
+            restoring[static_cast<std::size_t>(of)] = true;
             for (int c = t.first_child[static_cast<std::size_t>(of)]; c >= 0;
-                 c = t.next_sibling[static_cast<std::size_t>(c)]) {
-                auto const ci = static_cast<std::size_t>(c);
-                if (!reach[ci] || restored[ci] || t.kinds[ci] == kind::history) continue;
-                restored[ci] = changed = true;
-                mark_default_entry(t, reach, c);
-            }
+                 c = t.next_sibling[static_cast<std::size_t>(c)])
+                if (reach.flag[static_cast<std::size_t>(c)]) restore(c);
         }
     }
-    return reach;
+    return reach.flag;
 }
 
 template <std::size_t N>

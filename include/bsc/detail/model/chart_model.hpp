@@ -15,6 +15,11 @@
 #include <bsc/priority.hpp>
 #include <bsc/detail/model/event_families.hpp>
 
+namespace bsc {
+template <auto const& Chart>
+struct chart_ref;
+}  // namespace bsc
+
 namespace bsc::detail {
 
 // The implicit top of every chart: the compound state above the user's root, so that a
@@ -308,6 +313,56 @@ struct state_index<no_target, Tags> {
     enum : int { value = no_state };
 };
 
+// What the row table holds of a row, found from its type alone: classes whose enumerators are
+// the values, which make no symbol. (A function or variable per row, named with the chart's
+// states and events, would be one, and a large chart's names then took quadratic time.)
+template <class Row, int K, class Tags, bool = (K < static_cast<int>(Row::targets::size))>
+struct nth_target {
+    enum : int { value = no_state };
+};
+template <class Row, int K, class Tags>
+struct nth_target<Row, K, Tags, true> {
+    enum : int { value = state_index<at<static_cast<std::size_t>(K), typename Row::targets>, Tags>::value };
+};
+template <class E, class Events>
+struct trigger_position {
+    enum : int { value = position_in<E, Events>::value };
+};
+template <class Events>
+struct trigger_position<void, Events> {
+    enum : int { value = eventless_id };
+};
+template <class Row, class Tags, class Events, bool = is_transition_row<Row>>
+struct row_facts {  // an entry, exit or initial row
+    enum : int {
+        source = state_index<typename Row::source, Tags>::value,
+        target = no_state,
+        trigger = eventless_id,
+        timeout = 0,
+        guarded = 0,
+        local = 0,
+        defers = 0,
+        more0 = no_state,
+        more1 = no_state,
+        more2 = no_state
+    };
+};
+template <class Row, class Tags, class Events>
+struct row_facts<Row, Tags, Events, true> {
+    enum : int {
+        source = state_index<typename Row::source, Tags>::value,
+        target = state_index<typename Row::target, Tags>::value,
+        trigger = trigger_position<typename trigger_event<Row>::type, Events>::value,
+        timeout = is_timeout_row<Row> ? 1 : 0,
+        guarded = Row::guarded ? 1 : 0,
+        local = Row::local ? 1 : 0,
+        defers = Row::defers ? 1 : 0,
+        more0 = nth_target<Row, 1, Tags>::value,
+        more1 = nth_target<Row, 2, Tags>::value,
+        more2 = nth_target<Row, 3, Tags>::value
+    };
+};
+
 template <std::size_t N, std::size_t M = 0>
 constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false,
                                 std::array<int, M> const& more = {}) {
@@ -354,37 +409,29 @@ struct chart_model {
         for (int& f : r.event_family) f = -1;
         std::size_t e = 0;
         for (int f : event_families<events>::nearest) r.event_family[e++] = f;
-        std::size_t i = 0;
-        // (An array's initializers, evaluated in order, and not a fold expression: see count_true.)
-        [[maybe_unused]] int const filled[] = {
-            ([&] {
-                r.kinds[i] = kind_of_row<Rs>();
-                r.source[i] = state_index<typename Rs::source, tags>::value;
-                r.target[i] = no_state;
-                r.trigger[i] = eventless_id;
-                r.guarded[i] = false;
-                if constexpr (is_transition_row<Rs>) {
-                    r.target[i] = state_index<typename Rs::target, tags>::value;
-                    r.guarded[i] = Rs::guarded;
-                    r.local[i] = Rs::local;
-                    r.defers[i] = Rs::defers;
-                    using E = typename trigger_event<Rs>::type;
-                    if constexpr (!std::is_void_v<E>) r.trigger[i] = position_in<E, events>::value;
-                    if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
-                }
-                for (int& m : r.more_targets[i]) m = no_state;
-                if constexpr (is_transition_row<Rs>) {
-                    if constexpr (Rs::targets::size > 1)
-                        [&]<class First, class... More>(type_list<First, More...>*) {
-                            std::size_t k = 0;
-                            ((r.more_targets[i][k++] = state_index<More, tags>::value), ...);
-                        }(static_cast<typename Rs::targets*>(nullptr));
-                }
+        if constexpr (sizeof...(Rs) > 0) {
+            // One list per column, each entry read from the row's facts (row_facts).
+            row_kind const kinds[] = {kind_of_row<Rs>()...};
+            int const facts[][10] = {{row_facts<Rs, tags, events>::source, row_facts<Rs, tags, events>::target,
+                                      row_facts<Rs, tags, events>::trigger, row_facts<Rs, tags, events>::timeout,
+                                      row_facts<Rs, tags, events>::guarded, row_facts<Rs, tags, events>::local,
+                                      row_facts<Rs, tags, events>::defers, row_facts<Rs, tags, events>::more0,
+                                      row_facts<Rs, tags, events>::more1, row_facts<Rs, tags, events>::more2}...};
+            for (std::size_t i = 0; i < sizeof...(Rs); ++i) {
+                auto const& f = facts[i];
+                r.kinds[i] = kinds[i];
+                r.source[i] = f[0];
+                r.target[i] = f[1];
+                r.trigger[i] = f[3] != 0 ? timeout_trigger_id(static_cast<int>(i)) : f[2];
+                r.guarded[i] = f[4] != 0;
+                r.local[i] = f[5] != 0;
+                r.defers[i] = f[6] != 0;
+                r.more_targets[i] = {f[7], f[8], f[9]};
                 r.domain[i] = no_state;
                 if (r.source[i] >= 0 && r.target[i] >= 0)
                     r.domain[i] = transition_domain(tree, r.source[i], r.target[i], r.local[i], r.more_targets[i]);
-                ++i;
-            }(), 0)...};
+            }
+        }
         return r;
     }(row_types{});
     // clang-format on
@@ -393,8 +440,11 @@ struct chart_model {
     using tag_at = at<static_cast<std::size_t>(I), tags>;
     template <int I>
     using row_at = at<static_cast<std::size_t>(I), row_types>;
+    // (The lookups by type are classes, which make no symbol: a variable or function per state
+    // or event would be one, named by spelling the whole chart, and a large chart's symbols
+    // then took time quadratic in its size.)
     template <class S>
-    static constexpr int index_of_state = position_in<S, tags>::value;
+    using index_of_state = std::integral_constant<int, position_in<S, tags>::value>;
     // Whether some event of the chart has a family (a base class among the chart's events, or
     // bsc::any_event): only then can an event take rows of another type.
     static constexpr bool has_families = event_families<events>::any;
@@ -407,8 +457,15 @@ struct chart_model {
     // The trigger of event E: its position among the chart's events, or, for an event the chart
     // does not name, its nearest family's (-1: none; -2: its families are not a chain).
     template <class E>
-    static constexpr int trigger_of = event_families<events>::template trigger_of<E>();
+    using trigger_of = std::integral_constant<int, trigger_in<E, events>::value>;
 };
+
+// The model of bsc::chart_ref<chart> is the model of the chart itself: the same tables,
+// computed once for the chart's checks (make_chart) and its machine, under a type whose name is
+// short, so that what a machine instantiates per event or state from its model (the compiled
+// plan's lists) has a short name too.
+template <auto const& Chart>
+struct chart_model<chart_ref<Chart>> : chart_model<std::remove_cvref_t<decltype(Chart)>> {};
 
 // The unqualified names of a model's states, by index (0: the implicit top). A variable of
 // its own, so that only what shows names (active_states, the tables, reports) instantiates it.

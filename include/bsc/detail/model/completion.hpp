@@ -43,7 +43,7 @@ struct completion {
                 std::size_t s = 0;
                 [[maybe_unused]] int const set[] = {  // (in order, as a list: max_fold)
                     (out[s] = s > 1 && (tree.kinds[s] == kind::composite || tree.kinds[s] == kind::parallel)
-                                  ? Model::template trigger_of<done<Tags>>
+                                  ? Model::template trigger_of<done<Tags>>::value
                                   : -1,
                      ++s, 0)...};
             }(typename Model::tags{});

@@ -64,7 +64,7 @@ struct configuration_view {
 
     template <class S>
     constexpr bool is_active() const noexcept {
-        constexpr int s = Model::template index_of_state<S>;
+        constexpr int s = Model::template index_of_state<S>::value;
         static_assert(s > 0, "bsc::in<S>: S is not a state of the chart (bsc::error::in_of_state_not_in_chart)");
         if constexpr (exclusive_states(Model::tree, s, Source)) {
             return false;

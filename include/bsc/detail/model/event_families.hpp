@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 
 #include <bsc/detail/config.hpp>
 #include <bsc/detail/meta.hpp>
@@ -50,19 +51,47 @@ struct event_families<type_list<Us...>> {
     static constexpr std::size_t K = sizeof...(Us);
     // Whether the chart names bsc::any_event, every other event's family.
     static constexpr bool names_any_event = position_in<any_event, type_list<Us...>>::value >= 0;
-    // How many chart events E derives from, E itself included if it is one (a class is its own
-    // base). One built-in per pair and nothing else: a chart of K events asks K * K times.
-    // (An array and a loop, not a fold expression: GCC takes time superlinear in the length of
-    // a fold, and a chart of K events has K of them here.)
+#if defined(BSC_DETAIL_BASES_OF)
+    // How many of class E's proper bases are chart events (a base reached by two paths counts
+    // twice: the callers ask only whether there are none). Classes, not functions or variables,
+    // which would be symbols named by spelling every event of the chart, one per event.
+    template <class... B>
+    struct base_list {
+        enum : int{in_chart = count_true({(position_in<B, type_list<Us...>>::value >= 0)..., false})};
+    };
+    template <class E, bool = BSC_DETAIL_IS_CLASS(E)>
+    struct bases_below {
+        enum : int{value = base_list<BSC_DETAIL_BASES_OF(E)...>::in_chart};
+    };
     template <class E>
-    static constexpr int chart_bases = count_true({BSC_DETAIL_IS_BASE_OF(Us, E)...});
+    struct bases_below<E, false> {
+        enum : int{value = 0};
+    };
+#endif
+    // How many chart events E derives from, E itself included if it is one (a class is its own
+    // base): one built-in per chart event, or, where the compiler lists a class's bases, E's
+    // bases looked up among the chart's events. (A list, not a fold: detail::max_fold.)
+    template <class E>
+    static constexpr int chart_bases = [] {
+#if defined(BSC_DETAIL_BASES_OF)
+        if constexpr (!BSC_DETAIL_IS_CLASS(E))
+            return 0;
+        else
+            return static_cast<int>(position_in<E, type_list<Us...>>::value >= 0) + bases_below<E>::value;
+#else
+        return count_true({BSC_DETAIL_IS_BASE_OF(Us, E)...});
+#endif
+    }();
     // Whether event E, which the chart does not name (trigger_of asks only then), has a family
     // among the chart's events; any: whether a chart event has.
     template <class E>
     static constexpr bool has_family = (names_any_event && !BSC_DETAIL_IS_SAME(E, any_event)) || chart_bases<E> > 0;
+#if defined(BSC_DETAIL_BASES_OF)
+    static constexpr bool any = (names_any_event && K > 1) || any_true({(bases_below<Us>::value > 0)..., false});
+#else
     static constexpr bool any = (names_any_event && K > 1) ||
-                                first_true({(chart_bases<Us> > static_cast<int>(BSC_DETAIL_IS_CLASS(Us)))..., false}) >=
-                                    0;
+                                any_true({(chart_bases<Us> > static_cast<int>(BSC_DETAIL_IS_CLASS(Us)))..., false});
+#endif
     // family[t][u]: chart event u is a family of chart event t. (Built only where some event
     // has a family: a chart of K events would otherwise hold K * K flags for nothing.)
     static constexpr auto family = [] {
@@ -111,6 +140,22 @@ struct event_families<type_list<Us...>> {
         else
             return single_family(families_of<E, Us...>());
     }
+};
+
+// The trigger of event E among a chart's events: its own position if the chart names it, else
+// its nearest family's (-1: none; -2: its families are not a chain). A class, which makes no
+// symbol, for the events the chart names; event_families::trigger_of only for the others.
+template <class E, class Events>
+struct unnamed_trigger : std::integral_constant<int, event_families<Events>::template trigger_of<E>()> {};
+template <class E, class Events>
+struct trigger_in;
+template <class E, class... Us>
+struct trigger_in<E, type_list<Us...>> {
+    enum : int { own = position_in<E, type_list<Us...>>::value };
+    enum : int {
+        value = std::conditional_t<(own >= 0), std::integral_constant<int, own>,
+                                   unnamed_trigger<E, type_list<Us...>>>::value
+    };
 };
 
 // The event as row Row's guard and action see it, whatever event E took the row: as the row's

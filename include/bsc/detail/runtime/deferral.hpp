@@ -74,7 +74,7 @@ protected:
     // without settling; a failure that no transition takes is kept for the caller.
     template <class E>
     constexpr void fire_queued(E const& e) {
-        constexpr int trigger = model::template trigger_of<E>;
+        constexpr int trigger = model::template trigger_of<E>::value;
         bool fired = false;
         if constexpr (defers)
             fired = fire_or_defer<trigger>(e);

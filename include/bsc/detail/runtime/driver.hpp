@@ -169,7 +169,7 @@ public:
     /// bsc::any_event: bsc::error::event_not_dispatchable).
     template <class E>
     constexpr outcome dispatch(E const& e) {
-        constexpr int trigger = model::template trigger_of<E>;
+        constexpr int trigger = model::template trigger_of<E>::value;
         if constexpr (reserved_event<E>) {
             detail::report<error::event_not_dispatchable<E>>();
             return outcome::ignored;
@@ -187,7 +187,7 @@ public:
     /// As dispatch(e), but an event type that no transition handles is accepted and ignored.
     template <class E>
     constexpr outcome dispatch(E const& e, allow_unhandled_t) {
-        constexpr int trigger = model::template trigger_of<E>;
+        constexpr int trigger = model::template trigger_of<E>::value;
         if constexpr (reserved_event<E>) {
             detail::report<error::event_not_dispatchable<E>>();
             return outcome::ignored;
@@ -238,7 +238,7 @@ public:
     /// True if state S is active.
     template <class S>
     constexpr bool is() const {
-        constexpr int s = model::template index_of_state<S>;
+        constexpr int s = model::template index_of_state<S>::value;
         if constexpr (s < 0) {
             detail::report<error::queried_state_not_in_chart<S>>();
             return false;

@@ -76,7 +76,7 @@ constexpr int queued_index(type_list<Es...>) {
     if constexpr (position_in<E, type_list<Es...>>::value >= 0)
         return position_in<E, type_list<Es...>>::value;
     else
-        return event_families<type_list<Es...>>::template trigger_of<E>();
+        return trigger_in<E, type_list<Es...>>::value;
 }
 
 // Raises e into a queue of Events: push(f) with the event e is queued as, or, for an event the

@@ -111,7 +111,7 @@ template <class Chart, class Policy, class Model = chart_model<std::remove_cv_t<
           bool Delays = chart_sends_delayed<Model>(), class Raised = typename raised_by_chart<Model>::type>
 using queue_for = std::conditional_t<
     Delays, delaying_queue<Policy::queue_capacity, delayed_capacity_of<Policy, Delays>, typename Model::events>,
-    typename raise_queue<!std::is_same_v<Raised, type_list<>> || Model::template trigger_of<action_failed> >= 0 ||
-                             completion<Model>::raises,
+    typename raise_queue<!std::is_same_v<Raised, type_list<>> ||
+                             Model::template trigger_of<action_failed>::value >= 0 || completion<Model>::raises,
                          Model, Policy, Raised>::type>;
 }  // namespace bsc::detail

@@ -89,7 +89,7 @@ protected:
     }
 
     // Whether the chart takes bsc::action_failed: then failures go on the internal queue.
-    static constexpr bool takes_failures = model::template trigger_of<action_failed> >= 0;
+    static constexpr bool takes_failures = model::template trigger_of<action_failed>::value >= 0;
 
     // A guard or action threw: raise bsc::action_failed if the chart takes it (and the queue
     // has room), else keep it for the caller. (Where nothing can throw, nothing gets here: a

@@ -310,10 +310,10 @@ public:
     }();
     /// The number of state S (its row in `states`).
     template <class S>
-    static constexpr state_id state_of = id(model::template index_of_state<S>);
+    static constexpr state_id state_of = id(model::template index_of_state<S>::value);
     /// The number of event type E (-1 if no transition takes it).
     template <class E>
-    static constexpr event_id event_of = static_cast<event_id>(model::template trigger_of<E>);
+    static constexpr event_id event_of = static_cast<event_id>(model::template trigger_of<E>::value);
 
     /// The topology table (BSTATE), in document order: row s describes state s.
     static constexpr std::array<state_row_type, state_count> states =
