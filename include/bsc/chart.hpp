@@ -36,7 +36,11 @@ inline constexpr std::size_t rows_in<row_group<Rows...>> = sizeof...(Rows);
 // Where each row of the flattened list comes from: its argument, and its position there.
 template <class... A>
 struct flat_positions {
-    static constexpr std::size_t size = (rows_in<A> + ... + 0);
+    static constexpr std::size_t size = [] {
+        std::size_t n = 0;
+        for (std::size_t k : {rows_in<A>..., std::size_t{0}}) n += k;  // (a list: detail::max_fold)
+        return n;
+    }();
     struct from {
         std::size_t argument = 0;
         std::size_t position = 0;
@@ -52,30 +56,50 @@ struct flat_positions {
     }();
 };
 
-// Row J of the flattened arguments, moved from where it is: the argument itself, or a row of
-// the group it is.
-template <std::size_t Argument, std::size_t Position, class Arguments>
-constexpr auto&& flat_row(Arguments& arguments) {
-    auto&& a = detail::take_row<Argument>(arguments);
-    if constexpr (is_row_group<std::remove_cvref_t<decltype(a)>>)
-        return detail::take_row<Position>(a.rows);
+// An argument of bsc::rows or make_chart as a group: a group as it is, a row as a group of one;
+// and the rows of a group.
+template <class A>
+struct group_of {
+    using type = row_group<A>;
+};
+template <class... Rows>
+struct group_of<row_group<Rows...>> {
+    using type = row_group<Rows...>;
+};
+template <class Group>
+struct rows_of;
+template <class... Rows>
+struct rows_of<row_group<Rows...>> {
+    using type = type_list<Rows...>;
+};
+template <class A>
+constexpr typename group_of<A>::type as_group(A&& a) {
+    if constexpr (is_row_group<A>)
+        return static_cast<A&&>(a);
     else
-        return static_cast<std::remove_cvref_t<decltype(a)>&&>(a);
+        return {{{static_cast<A&&>(a)}}};
 }
 
-// The rows and groups of rows A..., as one group. (Not std::tuple_cat and std::apply: their
-// instantiations, a recursion over the tuples and a noexcept test of a call with every row,
-// were most of what a chart of many groups cost to declare.)
+// The rows and groups of rows A..., as one group. Each row is moved from the slot that holds
+// it, named by its position and type (a cast to a known base), not found by a deduction among
+// every row, which made a group of n rows cost O(n^2), nor by a function per row, whose name
+// would spell the group. (Not std::tuple_cat and std::apply: their instantiations, a recursion
+// over the tuples and a noexcept test of a call with every row, were most of what a chart of
+// many groups cost to declare.)
 template <class... A>
 constexpr auto flatten_rows(A... a) {
     using positions = flat_positions<A...>;
-    row_storage<A...> arguments{{static_cast<A&&>(a)}...};
+    using groups = type_list<typename group_of<A>::type...>;
+    using flat = concat_t<typename rows_of<typename group_of<A>::type>::type...>;
+    row_storage<typename group_of<A>::type...> arguments{{as_group(static_cast<A&&>(a))}...};
     // clang-format off
-    return [&]<std::size_t... J>(std::index_sequence<J...>) {
-        return row_group<std::remove_cvref_t<
-            decltype(flat_row<positions::of[J].argument, positions::of[J].position>(arguments))>...>{
-            {{flat_row<positions::of[J].argument, positions::of[J].position>(arguments)}...}};
-    }(std::make_index_sequence<positions::size>{});
+    return [&]<std::size_t... J, class... Rs>(std::index_sequence<J...>, type_list<Rs...>) {
+        return row_group<Rs...>{{{static_cast<Rs&&>(
+            static_cast<row_slot<positions::of[J].position, Rs>&>(
+                static_cast<row_slot<positions::of[J].argument, at<positions::of[J].argument, groups>>&>(arguments)
+                    .row.rows)
+                .row)}...}};
+    }(std::make_index_sequence<positions::size>{}, flat{});
     // clang-format on
 }
 
@@ -257,9 +281,10 @@ constexpr auto make_chart(Root root, Rows... rows) {
     } else if constexpr (detail::any_true({detail::is_row_group<Rows>..., false})) {
         auto group = detail::flatten_rows(std::move(rows)...);
         // clang-format off
-        return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return make_chart<Context, Order, Allowed>(std::move(root), detail::take_row<I>(group.rows)...);
-        }(std::make_index_sequence<detail::rows_in<decltype(group)>>{});
+        return [&]<std::size_t... I, class... Rs>(detail::row_slots<std::index_sequence<I...>, Rs...>& slots) {
+            return make_chart<Context, Order, Allowed>(
+                std::move(root), static_cast<Rs&&>(static_cast<detail::row_slot<I, Rs>&>(slots).row)...);
+        }(group.rows);
         // clang-format on
     } else if constexpr (!detail::is_compound_root<Root>()) {
         return detail::rejected_chart<Context, error::root_must_be_composite<Root>>{};

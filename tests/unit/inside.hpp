@@ -51,7 +51,7 @@ using model = bsc::detail::chart_model<std::remove_cv_t<Chart>>;
 template <class Chart>
 using plan = bsc::detail::plan<model<Chart>>;
 template <class Chart, class E>
-inline constexpr int trigger_of = model<Chart>::template trigger_of<E>;
+inline constexpr int trigger_of = model<Chart>::template trigger_of<E>::value;
 
 // Type lists, as the model and the machines' event_types use them.
 template <class... Ts>
