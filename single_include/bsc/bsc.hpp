@@ -115,6 +115,21 @@
 #define BSC_DETAIL_IS_BASE_OF(Base, Derived) (std::is_base_of_v<Base, Derived>)
 #define BSC_DETAIL_IS_CLASS(T) (std::is_class_v<T>)
 #endif
+// BSC_DETAIL_TYPE_PACK_ELEMENT(I, Ts...): the I-th of Ts, a built-in where the compiler has one
+// (Clang), for detail::at: the lookup by overload resolution among every element that it
+// replaces took Clang 5 ms per row of a 200-row chart.
+#if defined(__has_builtin)
+#if __has_builtin(__type_pack_element)
+#define BSC_DETAIL_TYPE_PACK_ELEMENT(I, ...) __type_pack_element<I, __VA_ARGS__>
+#endif
+#endif
+// BSC_DETAIL_BASES_OF(T): GCC's __bases, every base class of class T as a pack, so that the
+// event families (detail/model/event_families.hpp) ask each event of its own bases, not of every
+// other event: GCC takes 1.7 s for the 250,000 pairs of a chart of 500 events. Clang has no
+// __bases, and asks the pairs in a tenth of the time.
+#if defined(__GNUC__) && !defined(__clang__)
+#define BSC_DETAIL_BASES_OF(T) __bases(T)
+#endif
 
 // ---- names -----------------------------------------------------------------------------------------
 // BSC_DETAIL_FUNCTION_SIGNATURE: the enclosing function's signature, with its template arguments
@@ -202,6 +217,19 @@ template <class... As, class... Bs, class... Cs, class... Ds, class... Rest>
 struct concat<type_list<As...>, type_list<Bs...>, type_list<Cs...>, type_list<Ds...>, Rest...> {
     using type = typename concat<type_list<As..., Bs..., Cs..., Ds...>, Rest...>::type;
 };
+// (Sixteen lists a step where there are as many: each step copies the list built so far, so a
+// step per four lists made the concatenation of a chart's n one-element lists cost n^2 / 8.)
+template <class... T0, class... T1, class... T2, class... T3, class... T4, class... T5, class... T6, class... T7,
+          class... T8, class... T9, class... T10, class... T11, class... T12, class... T13, class... T14, class... T15,
+          class... Rest>
+struct concat<type_list<T0...>, type_list<T1...>, type_list<T2...>, type_list<T3...>, type_list<T4...>,
+              type_list<T5...>, type_list<T6...>, type_list<T7...>, type_list<T8...>, type_list<T9...>,
+              type_list<T10...>, type_list<T11...>, type_list<T12...>, type_list<T13...>, type_list<T14...>,
+              type_list<T15...>, Rest...> {
+    using type = typename concat<type_list<T0..., T1..., T2..., T3..., T4..., T5..., T6..., T7..., T8..., T9..., T10...,
+                                           T11..., T12..., T13..., T14..., T15...>,
+                                 Rest...>::type;
+};
 template <class... Lists>
 using concat_t = typename concat<Lists...>::type;
 
@@ -282,7 +310,11 @@ template <std::size_t I, class List>
 struct at_impl;
 template <std::size_t I, class... Ts>
 struct at_impl<I, type_list<Ts...>> {
+#if defined(BSC_DETAIL_TYPE_PACK_ELEMENT)
+    using type = BSC_DETAIL_TYPE_PACK_ELEMENT(I, Ts...);
+#else
     using type = typename decltype(detail::select_indexed<I>(indexer<std::index_sequence_for<Ts...>, Ts...>{}))::type;
+#endif
 };
 template <std::size_t I, class List>
 using at = typename at_impl<I, List>::type;
@@ -2890,6 +2922,7 @@ inline constexpr priority parent_first = priority::parent_first;
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 
 
 namespace bsc::detail {
@@ -2930,19 +2963,47 @@ struct event_families<type_list<Us...>> {
     static constexpr std::size_t K = sizeof...(Us);
     // Whether the chart names bsc::any_event, every other event's family.
     static constexpr bool names_any_event = position_in<any_event, type_list<Us...>>::value >= 0;
-    // How many chart events E derives from, E itself included if it is one (a class is its own
-    // base). One built-in per pair and nothing else: a chart of K events asks K * K times.
-    // (An array and a loop, not a fold expression: GCC takes time superlinear in the length of
-    // a fold, and a chart of K events has K of them here.)
+#if defined(BSC_DETAIL_BASES_OF)
+    // How many of class E's proper bases are chart events (a base reached by two paths counts
+    // twice: the callers ask only whether there are none). Classes, not functions or variables,
+    // which would be symbols named by spelling every event of the chart, one per event.
+    template <class... B>
+    struct base_list {
+        enum : int{in_chart = count_true({(position_in<B, type_list<Us...>>::value >= 0)..., false})};
+    };
+    template <class E, bool = BSC_DETAIL_IS_CLASS(E)>
+    struct bases_below {
+        enum : int{value = base_list<BSC_DETAIL_BASES_OF(E)...>::in_chart};
+    };
     template <class E>
-    static constexpr int chart_bases = count_true({BSC_DETAIL_IS_BASE_OF(Us, E)...});
+    struct bases_below<E, false> {
+        enum : int{value = 0};
+    };
+#endif
+    // How many chart events E derives from, E itself included if it is one (a class is its own
+    // base): one built-in per chart event, or, where the compiler lists a class's bases, E's
+    // bases looked up among the chart's events. (A list, not a fold: detail::max_fold.)
+    template <class E>
+    static constexpr int chart_bases = [] {
+#if defined(BSC_DETAIL_BASES_OF)
+        if constexpr (!BSC_DETAIL_IS_CLASS(E))
+            return 0;
+        else
+            return static_cast<int>(position_in<E, type_list<Us...>>::value >= 0) + bases_below<E>::value;
+#else
+        return count_true({BSC_DETAIL_IS_BASE_OF(Us, E)...});
+#endif
+    }();
     // Whether event E, which the chart does not name (trigger_of asks only then), has a family
     // among the chart's events; any: whether a chart event has.
     template <class E>
     static constexpr bool has_family = (names_any_event && !BSC_DETAIL_IS_SAME(E, any_event)) || chart_bases<E> > 0;
+#if defined(BSC_DETAIL_BASES_OF)
+    static constexpr bool any = (names_any_event && K > 1) || any_true({(bases_below<Us>::value > 0)..., false});
+#else
     static constexpr bool any = (names_any_event && K > 1) ||
-                                first_true({(chart_bases<Us> > static_cast<int>(BSC_DETAIL_IS_CLASS(Us)))..., false}) >=
-                                    0;
+                                any_true({(chart_bases<Us> > static_cast<int>(BSC_DETAIL_IS_CLASS(Us)))..., false});
+#endif
     // family[t][u]: chart event u is a family of chart event t. (Built only where some event
     // has a family: a chart of K events would otherwise hold K * K flags for nothing.)
     static constexpr auto family = [] {
@@ -2993,6 +3054,22 @@ struct event_families<type_list<Us...>> {
     }
 };
 
+// The trigger of event E among a chart's events: its own position if the chart names it, else
+// its nearest family's (-1: none; -2: its families are not a chain). A class, which makes no
+// symbol, for the events the chart names; event_families::trigger_of only for the others.
+template <class E, class Events>
+struct unnamed_trigger : std::integral_constant<int, event_families<Events>::template trigger_of<E>()> {};
+template <class E, class Events>
+struct trigger_in;
+template <class E, class... Us>
+struct trigger_in<E, type_list<Us...>> {
+    enum : int { own = position_in<E, type_list<Us...>>::value };
+    enum : int {
+        value = std::conditional_t<(own >= 0), std::integral_constant<int, own>,
+                                   unnamed_trigger<E, type_list<Us...>>>::value
+    };
+};
+
 // The event as row Row's guard and action see it, whatever event E took the row: as the row's
 // own event type (a row on a family sees the family), or bsc::any_event.
 template <class Seen, class E>
@@ -3007,6 +3084,11 @@ constexpr decltype(auto) event_as(E const& e) {
 
 }  // namespace bsc::detail
 // end include/bsc/detail/model/event_families.hpp
+
+namespace bsc {
+template <auto const& Chart>
+struct chart_ref;
+}  // namespace bsc
 
 namespace bsc::detail {
 
@@ -3301,6 +3383,56 @@ struct state_index<no_target, Tags> {
     enum : int { value = no_state };
 };
 
+// What the row table holds of a row, found from its type alone: classes whose enumerators are
+// the values, which make no symbol. (A function or variable per row, named with the chart's
+// states and events, would be one, and a large chart's names then took quadratic time.)
+template <class Row, int K, class Tags, bool = (K < static_cast<int>(Row::targets::size))>
+struct nth_target {
+    enum : int { value = no_state };
+};
+template <class Row, int K, class Tags>
+struct nth_target<Row, K, Tags, true> {
+    enum : int { value = state_index<at<static_cast<std::size_t>(K), typename Row::targets>, Tags>::value };
+};
+template <class E, class Events>
+struct trigger_position {
+    enum : int { value = position_in<E, Events>::value };
+};
+template <class Events>
+struct trigger_position<void, Events> {
+    enum : int { value = eventless_id };
+};
+template <class Row, class Tags, class Events, bool = is_transition_row<Row>>
+struct row_facts {  // an entry, exit or initial row
+    enum : int {
+        source = state_index<typename Row::source, Tags>::value,
+        target = no_state,
+        trigger = eventless_id,
+        timeout = 0,
+        guarded = 0,
+        local = 0,
+        defers = 0,
+        more0 = no_state,
+        more1 = no_state,
+        more2 = no_state
+    };
+};
+template <class Row, class Tags, class Events>
+struct row_facts<Row, Tags, Events, true> {
+    enum : int {
+        source = state_index<typename Row::source, Tags>::value,
+        target = state_index<typename Row::target, Tags>::value,
+        trigger = trigger_position<typename trigger_event<Row>::type, Events>::value,
+        timeout = is_timeout_row<Row> ? 1 : 0,
+        guarded = Row::guarded ? 1 : 0,
+        local = Row::local ? 1 : 0,
+        defers = Row::defers ? 1 : 0,
+        more0 = nth_target<Row, 1, Tags>::value,
+        more1 = nth_target<Row, 2, Tags>::value,
+        more2 = nth_target<Row, 3, Tags>::value
+    };
+};
+
 template <std::size_t N, std::size_t M = 0>
 constexpr int transition_domain(topology<N> const& t, int source, int target, bool local = false,
                                 std::array<int, M> const& more = {}) {
@@ -3347,37 +3479,29 @@ struct chart_model {
         for (int& f : r.event_family) f = -1;
         std::size_t e = 0;
         for (int f : event_families<events>::nearest) r.event_family[e++] = f;
-        std::size_t i = 0;
-        // (An array's initializers, evaluated in order, and not a fold expression: see count_true.)
-        [[maybe_unused]] int const filled[] = {
-            ([&] {
-                r.kinds[i] = kind_of_row<Rs>();
-                r.source[i] = state_index<typename Rs::source, tags>::value;
-                r.target[i] = no_state;
-                r.trigger[i] = eventless_id;
-                r.guarded[i] = false;
-                if constexpr (is_transition_row<Rs>) {
-                    r.target[i] = state_index<typename Rs::target, tags>::value;
-                    r.guarded[i] = Rs::guarded;
-                    r.local[i] = Rs::local;
-                    r.defers[i] = Rs::defers;
-                    using E = typename trigger_event<Rs>::type;
-                    if constexpr (!std::is_void_v<E>) r.trigger[i] = position_in<E, events>::value;
-                    if constexpr (is_timeout_row<Rs>) r.trigger[i] = timeout_trigger_id(static_cast<int>(i));
-                }
-                for (int& m : r.more_targets[i]) m = no_state;
-                if constexpr (is_transition_row<Rs>) {
-                    if constexpr (Rs::targets::size > 1)
-                        [&]<class First, class... More>(type_list<First, More...>*) {
-                            std::size_t k = 0;
-                            ((r.more_targets[i][k++] = state_index<More, tags>::value), ...);
-                        }(static_cast<typename Rs::targets*>(nullptr));
-                }
+        if constexpr (sizeof...(Rs) > 0) {
+            // One list per column, each entry read from the row's facts (row_facts).
+            row_kind const kinds[] = {kind_of_row<Rs>()...};
+            int const facts[][10] = {{row_facts<Rs, tags, events>::source, row_facts<Rs, tags, events>::target,
+                                      row_facts<Rs, tags, events>::trigger, row_facts<Rs, tags, events>::timeout,
+                                      row_facts<Rs, tags, events>::guarded, row_facts<Rs, tags, events>::local,
+                                      row_facts<Rs, tags, events>::defers, row_facts<Rs, tags, events>::more0,
+                                      row_facts<Rs, tags, events>::more1, row_facts<Rs, tags, events>::more2}...};
+            for (std::size_t i = 0; i < sizeof...(Rs); ++i) {
+                auto const& f = facts[i];
+                r.kinds[i] = kinds[i];
+                r.source[i] = f[0];
+                r.target[i] = f[1];
+                r.trigger[i] = f[3] != 0 ? timeout_trigger_id(static_cast<int>(i)) : f[2];
+                r.guarded[i] = f[4] != 0;
+                r.local[i] = f[5] != 0;
+                r.defers[i] = f[6] != 0;
+                r.more_targets[i] = {f[7], f[8], f[9]};
                 r.domain[i] = no_state;
                 if (r.source[i] >= 0 && r.target[i] >= 0)
                     r.domain[i] = transition_domain(tree, r.source[i], r.target[i], r.local[i], r.more_targets[i]);
-                ++i;
-            }(), 0)...};
+            }
+        }
         return r;
     }(row_types{});
     // clang-format on
@@ -3386,8 +3510,11 @@ struct chart_model {
     using tag_at = at<static_cast<std::size_t>(I), tags>;
     template <int I>
     using row_at = at<static_cast<std::size_t>(I), row_types>;
+    // (The lookups by type are classes, which make no symbol: a variable or function per state
+    // or event would be one, named by spelling the whole chart, and a large chart's symbols
+    // then took time quadratic in its size.)
     template <class S>
-    static constexpr int index_of_state = position_in<S, tags>::value;
+    using index_of_state = std::integral_constant<int, position_in<S, tags>::value>;
     // Whether some event of the chart has a family (a base class among the chart's events, or
     // bsc::any_event): only then can an event take rows of another type.
     static constexpr bool has_families = event_families<events>::any;
@@ -3400,8 +3527,15 @@ struct chart_model {
     // The trigger of event E: its position among the chart's events, or, for an event the chart
     // does not name, its nearest family's (-1: none; -2: its families are not a chain).
     template <class E>
-    static constexpr int trigger_of = event_families<events>::template trigger_of<E>();
+    using trigger_of = std::integral_constant<int, trigger_in<E, events>::value>;
 };
+
+// The model of bsc::chart_ref<chart> is the model of the chart itself: the same tables,
+// computed once for the chart's checks (make_chart) and its machine, under a type whose name is
+// short, so that what a machine instantiates per event or state from its model (the compiled
+// plan's lists) has a short name too.
+template <auto const& Chart>
+struct chart_model<chart_ref<Chart>> : chart_model<std::remove_cvref_t<decltype(Chart)>> {};
 
 // The unqualified names of a model's states, by index (0: the implicit top). A variable of
 // its own, so that only what shows names (active_states, the tables, reports) instantiates it.
@@ -3665,14 +3799,34 @@ constexpr std::array<int, sizeof...(Events)> completed_states(type_list<Events..
 
 namespace bsc::detail {
 
+// The states marked: flags, or flags and the list of the states in the order they were first
+// marked (reachable_states works through that list).
 template <std::size_t N>
-constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int domain, int target);
+constexpr void set_mark(std::array<bool, N>& m, int s) {
+    m[static_cast<std::size_t>(s)] = true;
+}
+template <std::size_t N>
+struct marked_states {
+    std::array<bool, N> flag{};
+    std::array<int, N> in_order{};
+    std::size_t count = 0;
+};
+template <std::size_t N>
+constexpr void set_mark(marked_states<N>& m, int s) {
+    auto const i = static_cast<std::size_t>(s);
+    if (m.flag[i]) return;
+    m.flag[i] = true;
+    m.in_order[m.count++] = s;
+}
+
+template <std::size_t N, class Marks>
+constexpr void mark_entry(topology<N> const& t, Marks& m, int domain, int target);
 
 // Marks s and the states its default entry activates (initial states, all regions, a
 // history state's default).
-template <std::size_t N>
-constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, int s) {
-    m[static_cast<std::size_t>(s)] = true;
+template <std::size_t N, class Marks>
+constexpr void mark_default_entry(topology<N> const& t, Marks& m, int s) {
+    set_mark(m, s);
     auto const i = static_cast<std::size_t>(s);
     if (t.is_compound(s)) {
         if (t.initial_target[i] >= 0 && t.initial_target[i] != t.initial[i])
@@ -3696,10 +3850,10 @@ constexpr void mark_default_entry(topology<N> const& t, std::array<bool, N>& m, 
 // with several targets (bsc::targets) is marked target by target: each marks the default
 // entry of the regions the others enter otherwise, which keeps reachability an
 // over-approximation (a state it calls unreachable is, whatever the targets).
-template <std::size_t N>
-constexpr void mark_entry(topology<N> const& t, std::array<bool, N>& m, int domain, int target) {
+template <std::size_t N, class Marks>
+constexpr void mark_entry(topology<N> const& t, Marks& m, int domain, int target) {
     for (int a = target; a != domain && a >= 0; a = t.parent[static_cast<std::size_t>(a)]) {
-        m[static_cast<std::size_t>(a)] = true;
+        set_mark(m, a);
         int const p = t.parent[static_cast<std::size_t>(a)];
         if (p >= 0 && p != domain && t.kinds[static_cast<std::size_t>(p)] == kind::parallel)
             for (int c = t.first_child[static_cast<std::size_t>(p)]; c >= 0;
@@ -3720,37 +3874,42 @@ constexpr int restored_by_shallow_history(topology<N> const& t, int s) {
     return t.kinds[i] == kind::composite ? s : -1;
 }
 
+// The states some sequence of firing rows reaches. Each state is visited once, when first
+// reached, and then follows its own rows (grouped by source, rows_by_source.hpp): linear in
+// the chart, whatever the order of its rows.
 template <std::size_t N, std::size_t R>
 constexpr std::array<bool, N> reachable_states(topology<N> const& t, row_table<R> const& r,
                                                std::array<bool, R> const& dead) {
-    std::array<bool, N> reach{};
-    std::array<bool, R> applied{};
-    std::array<bool, N> restored{};  // children a shallow history has re-entered by default
+    auto const rows = rows_by_source<N>(r, [&](std::size_t i) { return !dead[i] && r.target[i] >= 0; });
+    marked_states<N> reach;
+    std::array<bool, N> restoring{};  // composites a reached shallow history restores a child of
+    std::array<bool, N> restored{};   // children a shallow history has re-entered by default
+    // A shallow history restores a child that has been active, and enters it by default: its
+    // initial states become active even if they never were (SCXML IRP test 388).
+    auto const restore = [&](int c) {
+        auto const ci = static_cast<std::size_t>(c);
+        if (restored[ci] || t.kinds[ci] == kind::history) return;
+        restored[ci] = true;
+        mark_default_entry(t, reach, c);
+    };
     mark_default_entry(t, reach, 0);
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (std::size_t i = 0; i < R; ++i) {
-            if (applied[i] || dead[i] || r.kinds[i] != row_kind::transition || r.target[i] < 0) continue;
-            if (!reach[static_cast<std::size_t>(r.source[i])]) continue;
-            applied[i] = changed = true;
-            for (int target : r.targets_of(i))
+    for (std::size_t next = 0; next < reach.count; ++next) {
+        int const s = reach.in_order[next];
+        auto const si = static_cast<std::size_t>(s);
+        for (int k = rows.begin[si]; k < rows.begin[si + 1]; ++k)
+            for (int target : r.targets_of(static_cast<std::size_t>(rows.order[static_cast<std::size_t>(k)])))
                 if (target >= 0) mark_entry(t, reach, -1, target);
-        }
-        // A shallow history restores a child that has been active, and enters it by default:
-        // its initial states become active even if they never were (SCXML IRP test 388).
-        for (int s = 1; s < static_cast<int>(N); ++s) {
-            int const of = reach[static_cast<std::size_t>(s)] ? restored_by_shallow_history(t, s) : -1;
-            if (of < 0) continue;
+        int const parent = t.parent[si];
+        if (parent >= 0 && restoring[static_cast<std::size_t>(parent)]) restore(s);
+        int const of = restored_by_shallow_history(t, s);
+        if (of >= 0 && !restoring[static_cast<std::size_t>(of)]) {
+            restoring[static_cast<std::size_t>(of)] = true;
             for (int c = t.first_child[static_cast<std::size_t>(of)]; c >= 0;
-                 c = t.next_sibling[static_cast<std::size_t>(c)]) {
-                auto const ci = static_cast<std::size_t>(c);
-                if (!reach[ci] || restored[ci] || t.kinds[ci] == kind::history) continue;
-                restored[ci] = changed = true;
-                mark_default_entry(t, reach, c);
-            }
+                 c = t.next_sibling[static_cast<std::size_t>(c)])
+                if (reach.flag[static_cast<std::size_t>(c)]) restore(c);
         }
     }
-    return reach;
+    return reach.flag;
 }
 
 template <std::size_t N>
@@ -4623,7 +4782,7 @@ constexpr auto check_structure() {
     constexpr int duplicate = find_duplicate(typename model::tags{});
     if constexpr (duplicate >= 0) {
         using S = typename model::template tag_at<duplicate>;
-        constexpr int first = model::template index_of_state<S>;
+        constexpr int first = model::template index_of_state<S>::value;
         constexpr int implicit = model::tree.implicit[duplicate] ? duplicate : model::tree.implicit[first] ? first : -1;
         if constexpr (implicit >= 0)
             return type_list<
@@ -4987,7 +5146,11 @@ inline constexpr std::size_t rows_in<row_group<Rows...>> = sizeof...(Rows);
 // Where each row of the flattened list comes from: its argument, and its position there.
 template <class... A>
 struct flat_positions {
-    static constexpr std::size_t size = (rows_in<A> + ... + 0);
+    static constexpr std::size_t size = [] {
+        std::size_t n = 0;
+        for (std::size_t k : {rows_in<A>..., std::size_t{0}}) n += k;  // (a list: detail::max_fold)
+        return n;
+    }();
     struct from {
         std::size_t argument = 0;
         std::size_t position = 0;
@@ -5003,30 +5166,50 @@ struct flat_positions {
     }();
 };
 
-// Row J of the flattened arguments, moved from where it is: the argument itself, or a row of
-// the group it is.
-template <std::size_t Argument, std::size_t Position, class Arguments>
-constexpr auto&& flat_row(Arguments& arguments) {
-    auto&& a = detail::take_row<Argument>(arguments);
-    if constexpr (is_row_group<std::remove_cvref_t<decltype(a)>>)
-        return detail::take_row<Position>(a.rows);
+// An argument of bsc::rows or make_chart as a group: a group as it is, a row as a group of one;
+// and the rows of a group.
+template <class A>
+struct group_of {
+    using type = row_group<A>;
+};
+template <class... Rows>
+struct group_of<row_group<Rows...>> {
+    using type = row_group<Rows...>;
+};
+template <class Group>
+struct rows_of;
+template <class... Rows>
+struct rows_of<row_group<Rows...>> {
+    using type = type_list<Rows...>;
+};
+template <class A>
+constexpr typename group_of<A>::type as_group(A&& a) {
+    if constexpr (is_row_group<A>)
+        return static_cast<A&&>(a);
     else
-        return static_cast<std::remove_cvref_t<decltype(a)>&&>(a);
+        return {{{static_cast<A&&>(a)}}};
 }
 
-// The rows and groups of rows A..., as one group. (Not std::tuple_cat and std::apply: their
-// instantiations, a recursion over the tuples and a noexcept test of a call with every row,
-// were most of what a chart of many groups cost to declare.)
+// The rows and groups of rows A..., as one group. Each row is moved from the slot that holds
+// it, named by its position and type (a cast to a known base), not found by a deduction among
+// every row, which made a group of n rows cost O(n^2), nor by a function per row, whose name
+// would spell the group. (Not std::tuple_cat and std::apply: their instantiations, a recursion
+// over the tuples and a noexcept test of a call with every row, were most of what a chart of
+// many groups cost to declare.)
 template <class... A>
 constexpr auto flatten_rows(A... a) {
     using positions = flat_positions<A...>;
-    row_storage<A...> arguments{{static_cast<A&&>(a)}...};
+    using groups = type_list<typename group_of<A>::type...>;
+    using flat = concat_t<typename rows_of<typename group_of<A>::type>::type...>;
+    row_storage<typename group_of<A>::type...> arguments{{as_group(static_cast<A&&>(a))}...};
     // clang-format off
-    return [&]<std::size_t... J>(std::index_sequence<J...>) {
-        return row_group<std::remove_cvref_t<
-            decltype(flat_row<positions::of[J].argument, positions::of[J].position>(arguments))>...>{
-            {{flat_row<positions::of[J].argument, positions::of[J].position>(arguments)}...}};
-    }(std::make_index_sequence<positions::size>{});
+    return [&]<std::size_t... J, class... Rs>(std::index_sequence<J...>, type_list<Rs...>) {
+        return row_group<Rs...>{{{static_cast<Rs&&>(
+            static_cast<row_slot<positions::of[J].position, Rs>&>(
+                static_cast<row_slot<positions::of[J].argument, at<positions::of[J].argument, groups>>&>(arguments)
+                    .row.rows)
+                .row)}...}};
+    }(std::make_index_sequence<positions::size>{}, flat{});
     // clang-format on
 }
 
@@ -5208,9 +5391,10 @@ constexpr auto make_chart(Root root, Rows... rows) {
     } else if constexpr (detail::any_true({detail::is_row_group<Rows>..., false})) {
         auto group = detail::flatten_rows(std::move(rows)...);
         // clang-format off
-        return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return make_chart<Context, Order, Allowed>(std::move(root), detail::take_row<I>(group.rows)...);
-        }(std::make_index_sequence<detail::rows_in<decltype(group)>>{});
+        return [&]<std::size_t... I, class... Rs>(detail::row_slots<std::index_sequence<I...>, Rs...>& slots) {
+            return make_chart<Context, Order, Allowed>(
+                std::move(root), static_cast<Rs&&>(static_cast<detail::row_slot<I, Rs>&>(slots).row)...);
+        }(group.rows);
         // clang-format on
     } else if constexpr (!detail::is_compound_root<Root>()) {
         return detail::rejected_chart<Context, error::root_must_be_composite<Root>>{};
@@ -6615,7 +6799,7 @@ struct configuration_view {
 
     template <class S>
     constexpr bool is_active() const noexcept {
-        constexpr int s = Model::template index_of_state<S>;
+        constexpr int s = Model::template index_of_state<S>::value;
         static_assert(s > 0, "bsc::in<S>: S is not a state of the chart (bsc::error::in_of_state_not_in_chart)");
         if constexpr (exclusive_states(Model::tree, s, Source)) {
             return false;
@@ -8404,7 +8588,7 @@ struct completion {
                 std::size_t s = 0;
                 [[maybe_unused]] int const set[] = {  // (in order, as a list: max_fold)
                     (out[s] = s > 1 && (tree.kinds[s] == kind::composite || tree.kinds[s] == kind::parallel)
-                                  ? Model::template trigger_of<done<Tags>>
+                                  ? Model::template trigger_of<done<Tags>>::value
                                   : -1,
                      ++s, 0)...};
             }(typename Model::tags{});
@@ -8525,7 +8709,7 @@ constexpr int queued_index(type_list<Es...>) {
     if constexpr (position_in<E, type_list<Es...>>::value >= 0)
         return position_in<E, type_list<Es...>>::value;
     else
-        return event_families<type_list<Es...>>::template trigger_of<E>();
+        return trigger_in<E, type_list<Es...>>::value;
 }
 
 // Raises e into a queue of Events: push(f) with the event e is queued as, or, for an event the
@@ -9237,7 +9421,7 @@ protected:
     }
 
     // Whether the chart takes bsc::action_failed: then failures go on the internal queue.
-    static constexpr bool takes_failures = model::template trigger_of<action_failed> >= 0;
+    static constexpr bool takes_failures = model::template trigger_of<action_failed>::value >= 0;
 
     // A guard or action threw: raise bsc::action_failed if the chart takes it (and the queue
     // has room), else keep it for the caller. (Where nothing can throw, nothing gets here: a
@@ -9426,7 +9610,7 @@ protected:
     // without settling; a failure that no transition takes is kept for the caller.
     template <class E>
     constexpr void fire_queued(E const& e) {
-        constexpr int trigger = model::template trigger_of<E>;
+        constexpr int trigger = model::template trigger_of<E>::value;
         bool fired = false;
         if constexpr (defers)
             fired = fire_or_defer<trigger>(e);
@@ -10025,7 +10209,7 @@ public:
     /// bsc::any_event: bsc::error::event_not_dispatchable).
     template <class E>
     constexpr outcome dispatch(E const& e) {
-        constexpr int trigger = model::template trigger_of<E>;
+        constexpr int trigger = model::template trigger_of<E>::value;
         if constexpr (reserved_event<E>) {
             detail::report<error::event_not_dispatchable<E>>();
             return outcome::ignored;
@@ -10043,7 +10227,7 @@ public:
     /// As dispatch(e), but an event type that no transition handles is accepted and ignored.
     template <class E>
     constexpr outcome dispatch(E const& e, allow_unhandled_t) {
-        constexpr int trigger = model::template trigger_of<E>;
+        constexpr int trigger = model::template trigger_of<E>::value;
         if constexpr (reserved_event<E>) {
             detail::report<error::event_not_dispatchable<E>>();
             return outcome::ignored;
@@ -10094,7 +10278,7 @@ public:
     /// True if state S is active.
     template <class S>
     constexpr bool is() const {
-        constexpr int s = model::template index_of_state<S>;
+        constexpr int s = model::template index_of_state<S>::value;
         if constexpr (s < 0) {
             detail::report<error::queried_state_not_in_chart<S>>();
             return false;
@@ -10430,8 +10614,8 @@ template <class Chart, class Policy, class Model = chart_model<std::remove_cv_t<
           bool Delays = chart_sends_delayed<Model>(), class Raised = typename raised_by_chart<Model>::type>
 using queue_for = std::conditional_t<
     Delays, delaying_queue<Policy::queue_capacity, delayed_capacity_of<Policy, Delays>, typename Model::events>,
-    typename raise_queue<!std::is_same_v<Raised, type_list<>> || Model::template trigger_of<action_failed> >= 0 ||
-                             completion<Model>::raises,
+    typename raise_queue<!std::is_same_v<Raised, type_list<>> ||
+                             Model::template trigger_of<action_failed>::value >= 0 || completion<Model>::raises,
                          Model, Policy, Raised>::type>;
 }  // namespace bsc::detail
 // end include/bsc/detail/runtime/queue_for.hpp
@@ -12186,10 +12370,10 @@ public:
     }();
     /// The number of state S (its row in `states`).
     template <class S>
-    static constexpr state_id state_of = id(model::template index_of_state<S>);
+    static constexpr state_id state_of = id(model::template index_of_state<S>::value);
     /// The number of event type E (-1 if no transition takes it).
     template <class E>
-    static constexpr event_id event_of = static_cast<event_id>(model::template trigger_of<E>);
+    static constexpr event_id event_of = static_cast<event_id>(model::template trigger_of<E>::value);
 
     /// The topology table (BSTATE), in document order: row s describes state s.
     static constexpr std::array<state_row_type, state_count> states =

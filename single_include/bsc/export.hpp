@@ -304,7 +304,7 @@ inline std::vector<std::string> unique_identifiers(std::vector<std::string> cons
 template <class Model>
 auto in_state_text(diagram const& m, bool scxml) {
     return [&m, scxml]<class S>(std::type_identity<S>) {
-        constexpr int s = Model::template index_of_state<S>;
+        constexpr int s = Model::template index_of_state<S>::value;
         if constexpr (s < 1) {  // not a state of the chart (which make_chart rejects)
             return "In(" + std::string(name_of<S>) + ")";
         } else {

@@ -307,7 +307,7 @@ inline std::vector<std::string> unique_identifiers(std::vector<std::string> cons
 template <class Model>
 auto in_state_text(diagram const& m, bool scxml) {
     return [&m, scxml]<class S>(std::type_identity<S>) {
-        constexpr int s = Model::template index_of_state<S>;
+        constexpr int s = Model::template index_of_state<S>::value;
         if constexpr (s < 1) {  // not a state of the chart (which make_chart rejects)
             return "In(" + std::string(name_of<S>) + ")";
         } else {
@@ -1069,7 +1069,7 @@ public:
 private:
     template <class S>
     static constexpr std::uint16_t state_number() {
-        return static_cast<std::uint16_t>(model::template index_of_state<S>);
+        return static_cast<std::uint16_t>(model::template index_of_state<S>::value);
     }
     template <class E>
     static constexpr std::uint16_t event_number() {
@@ -1079,7 +1079,7 @@ private:
             return detail::trace::timeout_trigger;
         } else {
             constexpr int at = detail::position_in<E, events>::value;
-            constexpr int family = model::template trigger_of<E>;
+            constexpr int family = model::template trigger_of<E>::value;
             return at >= 0 ? static_cast<std::uint16_t>(at)
                            : (family >= 0 ? static_cast<std::uint16_t>(family) : detail::trace::no_number);
         }

@@ -92,6 +92,14 @@
 #define BSC_DETAIL_IS_BASE_OF(Base, Derived) (std::is_base_of_v<Base, Derived>)
 #define BSC_DETAIL_IS_CLASS(T) (std::is_class_v<T>)
 #endif
+// BSC_DETAIL_TYPE_PACK_ELEMENT(I, Ts...): the I-th of Ts, a built-in where the compiler has one
+// (Clang), for detail::at: the lookup by overload resolution among every element that it
+// replaces took Clang 5 ms per row of a 200-row chart.
+#if defined(__has_builtin)
+#if __has_builtin(__type_pack_element)
+#define BSC_DETAIL_TYPE_PACK_ELEMENT(I, ...) __type_pack_element<I, __VA_ARGS__>
+#endif
+#endif
 // BSC_DETAIL_BASES_OF(T): GCC's __bases, every base class of class T as a pack, so that the
 // event families (detail/model/event_families.hpp) ask each event of its own bases, not of every
 // other event: GCC takes 1.7 s for the 250,000 pairs of a chart of 500 events. Clang has no

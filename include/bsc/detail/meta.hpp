@@ -43,6 +43,19 @@ template <class... As, class... Bs, class... Cs, class... Ds, class... Rest>
 struct concat<type_list<As...>, type_list<Bs...>, type_list<Cs...>, type_list<Ds...>, Rest...> {
     using type = typename concat<type_list<As..., Bs..., Cs..., Ds...>, Rest...>::type;
 };
+// (Sixteen lists a step where there are as many: each step copies the list built so far, so a
+// step per four lists made the concatenation of a chart's n one-element lists cost n^2 / 8.)
+template <class... T0, class... T1, class... T2, class... T3, class... T4, class... T5, class... T6, class... T7,
+          class... T8, class... T9, class... T10, class... T11, class... T12, class... T13, class... T14, class... T15,
+          class... Rest>
+struct concat<type_list<T0...>, type_list<T1...>, type_list<T2...>, type_list<T3...>, type_list<T4...>,
+              type_list<T5...>, type_list<T6...>, type_list<T7...>, type_list<T8...>, type_list<T9...>,
+              type_list<T10...>, type_list<T11...>, type_list<T12...>, type_list<T13...>, type_list<T14...>,
+              type_list<T15...>, Rest...> {
+    using type = typename concat<type_list<T0..., T1..., T2..., T3..., T4..., T5..., T6..., T7..., T8..., T9..., T10...,
+                                           T11..., T12..., T13..., T14..., T15...>,
+                                 Rest...>::type;
+};
 template <class... Lists>
 using concat_t = typename concat<Lists...>::type;
 
@@ -123,7 +136,11 @@ template <std::size_t I, class List>
 struct at_impl;
 template <std::size_t I, class... Ts>
 struct at_impl<I, type_list<Ts...>> {
+#if defined(BSC_DETAIL_TYPE_PACK_ELEMENT)
+    using type = BSC_DETAIL_TYPE_PACK_ELEMENT(I, Ts...);
+#else
     using type = typename decltype(detail::select_indexed<I>(indexer<std::index_sequence_for<Ts...>, Ts...>{}))::type;
+#endif
 };
 template <std::size_t I, class List>
 using at = typename at_impl<I, List>::type;
