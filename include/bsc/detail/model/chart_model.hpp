@@ -88,7 +88,7 @@ struct topology {
     int slots = 0;
 
     // The most children any composite has: the configuration keeps each composite's active
-    // child in a byte up to 255 of them, in two bytes above (ordinal_for).
+    // child in a byte up to 255 of them, in two bytes above (chart_model::ordinal_type).
     constexpr int most_children() const {
         int most = 0;
         for (std::size_t s = 0; s < N; ++s)

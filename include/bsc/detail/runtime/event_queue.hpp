@@ -73,10 +73,7 @@ private:
 // family (detail/model/event_families.hpp): the rows that take it see no more of it than that. -1: none.
 template <class E, class... Es>
 constexpr int queued_index(type_list<Es...>) {
-    if constexpr (position_in<E, type_list<Es...>>::value >= 0)
-        return position_in<E, type_list<Es...>>::value;
-    else
-        return trigger_in<E, type_list<Es...>>::value;
+    return trigger_in<E, type_list<Es...>>::value;  // its own position first, as a chart's trigger
 }
 
 // Raises e into a queue of Events: push(f) with the event e is queued as, or, for an event the
