@@ -19,8 +19,10 @@ compile-time: compiles each probe of COMPILE_PROBES alternately with its referen
 each: the 50-state flat chart (bench/compile_time/flat_bsc.cpp.in, bsc::machine<decltype(chart)>)
 and the 200-state one (flat_bsc_ref.cpp.in, bsc::machine<bsc::chart_ref<chart>>), each against
 bench/compile_time/reference.cpp (the hand-written flat workload, which includes the same standard
-and benchmark headers); and Boost.SML's CD player (bench/sml_simple/sml_simple_bsc.cpp), a small
-chart, against the same chart written by hand (sml_simple_hand.cpp). The CPU ratio is the median
+and benchmark headers); Boost.SML's CD player (bench/sml_simple/sml_simple_bsc.cpp), a small
+chart, against the same chart written by hand (sml_simple_hand.cpp); and the front header alone
+(bench/compile_time/header_bsc.cpp, <bsc/bsc.hpp> in a small program that uses none of it)
+against the same program without it (header_reference.cpp). The CPU ratio is the median
 of the five ratios probe / reference of a pair compiled one after the other (CPU time, user +
 system), so that the speed and load of the machine cancel and one unusually quick or slow
 compilation does not move it; the memory ratio is that of the largest peak memory of each. It
@@ -170,8 +172,10 @@ def timed_compile(cxx, source, work):
 # with). flat_50: the 50-state flat chart as bsc::machine<decltype(chart)>; flat_200_ref: the
 # 200-state one as bsc::machine<bsc::chart_ref<chart>>, the spelling docs/api.md recommends for
 # large charts; cd_player: Boost.SML's CD player (bench/sml_simple), a small chart, against the
-# same chart written by hand with the same includes.
+# same chart written by hand with the same includes; header: <bsc/bsc.hpp> included in a small
+# program and nothing of it used (bench/compile_time/header_bsc.cpp), against the program alone.
 COMPILE_PROBES = [
+    ("header", ROOT / "bench" / "compile_time" / "header_bsc.cpp", ROOT / "bench" / "compile_time" / "header_reference.cpp"),
     ("flat_50", ("flat_bsc.cpp.in", 50), ROOT / "bench" / "compile_time" / "reference.cpp"),
     ("flat_200_ref", ("flat_bsc_ref.cpp.in", 200), ROOT / "bench" / "compile_time" / "reference.cpp"),
     ("cd_player", ROOT / "bench" / "sml_simple" / "sml_simple_bsc.cpp", ROOT / "bench" / "sml_simple" / "sml_simple_hand.cpp"),

@@ -117,7 +117,7 @@ BSC_DETAIL_VISIT_INLINE constexpr decltype(auto) apply_to_fields(T& t, F&& f) {
         detail::report<error::too_many_fields<type>>();
         return f();
     } else {
-        return apply_to_n_fields<n>(t, static_cast<F&&>(f));
+        return field_binder<n>::apply(t, f);
     }
 }
 

@@ -230,7 +230,7 @@ BSC_DETAIL_VISIT_INLINE  // as detail::apply_to_fields (detail/fields.hpp)
     if constexpr (described_by_fields<type>)
         return bsc::fields<type>::apply(t, static_cast<F&&>(f));
     else
-        return apply_to_n_fields<field_count<type>()>(t, static_cast<F&&>(f));
+        return field_binder<field_count<type>()>::apply(t, f);
 }
 
 struct list_member_types {

@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <cstdlib>
 #include <stdexcept>
-#include <string>
 #include <type_traits>
 #include <utility>
 
@@ -30,16 +29,38 @@ template <class E>
 struct event_trigger {
     using event = E;
 };
+// The decimal digits of n written into out, which has room for 20; returns their end.
+inline char* write_decimal(char* out, std::size_t n) {
+    char digits[20];
+    std::size_t count = 0;
+    do {
+        digits[count++] = static_cast<char>('0' + n % 10);
+        n /= 10;
+    } while (n != 0);
+    while (count != 0) *out++ = digits[--count];
+    return out;
+}
 // Deliberately not constexpr (as bsc_after_negative_delay below): in a constexpr chart, reaching
 // it is the compile error, and its name says what is wrong; a chart built at run time throws.
+// (The message is written into a buffer, not built as a std::string: the body of an inline
+// function is compiled in every translation unit that includes it, and std::string's
+// operators would be instantiated there.)
 [[noreturn]] inline void bsc_dead_transition_timeout_behind_a_shorter_unguarded_timeout(std::size_t row,
                                                                                         std::size_t fires_first) {
 #if defined(__cpp_exceptions)
-    throw std::invalid_argument(
-        "bsc::make_chart: the timeout row at position " + std::to_string(row) +
-        " can never fire: the unguarded timeout row at position " + std::to_string(fires_first) +
+    constexpr char head[] = "bsc::make_chart: the timeout row at position ";
+    constexpr char middle[] = " can never fire: the unguarded timeout row at position ";
+    constexpr char tail[] =
         " leaves its state first, every time, with a shorter (or equal) delay, from the same state or "
-        "from a state below it that is active whenever it is");
+        "from a state below it that is active whenever it is";
+    char message[sizeof head + sizeof middle + sizeof tail + 40];
+    char* end = message;
+    for (char c : head) *end++ = c;
+    end = write_decimal(end - 1, row);  // over head's terminating zero
+    for (char c : middle) *end++ = c;
+    end = write_decimal(end - 1, fires_first);
+    for (char c : tail) *end++ = c;
+    throw std::invalid_argument(message);
 #else
     (void)row;
     (void)fires_first;
