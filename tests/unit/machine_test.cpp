@@ -218,3 +218,77 @@ TEST_CASE(
     CHECK(trace == "WG<0>Off<0>G<1>Off<1>G<2>Off<2>Mid<0>Mid<1>Mid<2>Off<0>Off<1>Off<2>");
     CHECK(observed.context().log == "012abc");
 }
+
+namespace mt3 {
+struct go {};
+struct tick {};
+struct Root;
+struct Outer;
+struct Inner;
+struct A;
+struct InnerDone;
+struct OuterDone;
+struct After;
+struct log {
+    std::string text;
+};
+// Completions two deep: go ends Inner, whose completion ends Outer, whose completion leaves it.
+inline constexpr auto chained = bsc::make_chart<log>(
+    bsc::composite<Root>(bsc::initial<Outer>,
+                         bsc::composite<Outer>(bsc::initial<Inner>,
+                                               bsc::composite<Inner>(bsc::initial<A>, bsc::final_state<InnerDone>),
+                                               bsc::final_state<OuterDone>),
+                         bsc::state<After>),
+    bsc::state<A> + bsc::event<go> / [](log& l) { l.text += "a"; } = bsc::state<InnerDone>,
+    bsc::state<Inner> + bsc::event<bsc::done<Inner>> / [](log& l) { l.text += "i"; } = bsc::state<OuterDone>,
+    bsc::state<Outer> + bsc::event<bsc::done<Outer>> / [](log& l) { l.text += "o"; } = bsc::state<After>,
+    bsc::state<After> + bsc::event<go> / [](log& l) { l.text += "r"; } = bsc::state<Outer>);
+struct no_queue : bsc::default_policy {
+    static constexpr std::size_t queue_capacity = 0;
+};
+// The same with an eventless row: taken before queued events, it could add one more.
+inline constexpr auto chained_eventless = bsc::make_chart<log>(
+    bsc::composite<Root>(bsc::initial<Outer>,
+                         bsc::composite<Outer>(bsc::initial<Inner>,
+                                               bsc::composite<Inner>(bsc::initial<A>, bsc::final_state<InnerDone>),
+                                               bsc::final_state<OuterDone>),
+                         bsc::state<After>),
+    bsc::state<A> + bsc::event<go> / [](log& l) { l.text += "a"; } = bsc::state<InnerDone>,
+    bsc::state<Inner> + bsc::event<bsc::done<Inner>> / [](log& l) { l.text += "i"; } = bsc::state<OuterDone>,
+    bsc::state<Outer> + bsc::event<bsc::done<Outer>> / [](log& l) { l.text += "o"; } = bsc::state<After>,
+    bsc::state<After> + bsc::event<tick> = bsc::state<Outer>,
+    bsc::state<After>[([](log const& l) { return l.text.size() > 100; })] = bsc::state<Outer>);
+}  // namespace mt3
+
+TEST_CASE("a chart that queues only done events, one at a time, keeps one slot for them, on either back end") {
+    using compiled = bsc::machine<decltype(mt3::chained)>;
+    using table = bsc::table::machine<decltype(mt3::chained)>;
+    static_assert(compiled::queue_capacity == 1);
+    static_assert(table::queue_capacity == 1);
+    static_assert(bsc::machine<decltype(mt3::chained_eventless)>::queue_capacity ==
+                  bsc::default_policy::queue_capacity);
+    static_assert(bsc::table::machine<decltype(mt3::chained_eventless)>::queue_capacity ==
+                  bsc::default_policy::queue_capacity);
+    // A policy without a queue still has none: a completion is then an overflow.
+    static_assert(bsc::machine<decltype(mt3::chained), mt3::no_queue>::queue_capacity == 0);
+    bsc::machine<decltype(mt3::chained), mt3::no_queue> without{mt3::chained};
+    CHECK(without.dispatch(mt3::go{}) == bsc::outcome::queue_overflow);
+    CHECK(without.is<mt3::InnerDone>());
+
+    compiled fast{mt3::chained};
+    table reference{mt3::chained};
+    for (int round = 0; round < 3; ++round) {
+        CHECK(fast.dispatch(mt3::go{}) == bsc::outcome::consumed);
+        CHECK(reference.dispatch(mt3::go{}) == bsc::outcome::consumed);
+        CHECK(fast.is<mt3::After>());
+        CHECK(fast.active_configuration() == reference.active_configuration());
+        CHECK(fast.dispatch(mt3::go{}) == bsc::outcome::consumed);
+        CHECK(reference.dispatch(mt3::go{}) == bsc::outcome::consumed);
+        CHECK(fast.is<mt3::A>());
+    }
+    CHECK(fast.context().text ==
+          "aior"
+          "aior"
+          "aior");
+    CHECK(reference.context().text == fast.context().text);
+}

@@ -160,8 +160,9 @@ public:
     using event_types = typename model::events;
     using policy_type = Policy;
     using observer_type = Observer;
-    /// How many raised events the internal queue holds: Policy::queue_capacity, or 0 where
-    /// the compiled back end finds that no action of the chart can raise.
+    /// How many raised events the internal queue holds: Policy::queue_capacity; 0 where no
+    /// action of the chart can raise and it takes no done event or bsc::action_failed; 1 where
+    /// only done events are queued, one at a time (detail/runtime/queue_for.hpp).
     static constexpr std::size_t queue_capacity = Queue::capacity();
 
 protected:

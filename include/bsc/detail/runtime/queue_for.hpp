@@ -88,6 +88,28 @@ struct queue_of<Capacity, type_list<E>> {
     using type = single_event_queue<Capacity, E>;
 };
 
+// Whether a machine of the chart never holds more than one queued event: the queue holds done
+// events only (no action raises, the chart takes no bsc::action_failed), no state is parallel
+// (a microstep then enters at most one final state, and raises at most one done event), and no
+// row is eventless, a timeout or deferring (an eventless transition is taken before the queued
+// events, and could raise one more; a cycle's or a deferred event's microsteps alike). Every
+// microstep is then followed by the one that takes what it raised, and a queue of one slot
+// holds what a queue of the policy's capacity would: a completion costs a store and a load, not
+// a ring's arithmetic (docs/performance.md, rule "A completion waits in one slot").
+template <class Model, class Raised>
+constexpr bool one_completion_at_a_time() {
+    if constexpr (!std::is_same_v<Raised, type_list<>> || Model::template trigger_of<action_failed>::value >= 0) {
+        return false;
+    } else {
+        for (auto const k : Model::tree.kinds)
+            if (k == kind::parallel) return false;
+        for (std::size_t r = 0; r < Model::rows.trigger.size(); ++r)
+            if (Model::rows.kinds[r] == row_kind::transition && (Model::rows.trigger[r] < 0 || Model::rows.defers[r]))
+                return false;
+        return true;
+    }
+}
+
 // The queue of raised events, worked out only for a chart that has one.
 template <bool Needed, class Model, class Policy, class Raised>
 struct raise_queue {
@@ -95,7 +117,10 @@ struct raise_queue {
 };
 template <class Model, class Policy, class Raised>
 struct raise_queue<true, Model, Policy, Raised> {
-    using type = typename queue_of<Policy::queue_capacity, typename queued_events<Model, Raised>::type>::type;
+    static constexpr std::size_t capacity = Policy::queue_capacity > 0 && one_completion_at_a_time<Model, Raised>()
+                                                ? 1
+                                                : Policy::queue_capacity;
+    using type = typename queue_of<capacity, typename queued_events<Model, Raised>::type>::type;
 };
 
 template <class Policy, bool Sends>
