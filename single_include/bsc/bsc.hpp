@@ -1474,59 +1474,82 @@ constexpr duration elapsed(duration since, duration now) {
 
 namespace bsc::detail {
 
+// Whether f(args...) is a call, and one that cannot throw: what the helpers below make, asked
+// as requires-expressions. (std::is_invocable answers the same for the callables bsc calls,
+// through INVOKE's machinery: a dozen class templates instantiated per question, and the
+// compile of a chart asks several per guard and action; docs/performance.md, rule "A question
+// about a call is a requires-expression".)
+template <class F, class... Args>
+concept callable_with = requires(F const& f, Args&&... args) {
+    f(static_cast<Args&&>(args)...);
+};
+template <class F, class... Args>
+concept nothrow_callable_with = requires(F const& f, Args&&... args) {
+    { f(static_cast<Args&&>(args)...) }
+    noexcept;
+};
+// The implicit conversion of a guard's result (std::is_invocable_r<bool, ...> asks the same).
+constexpr bool as_test(bool holds) noexcept { return holds; }
+template <class F, class... Args>
+concept test_with = requires(F const& f, Args&&... args) {
+    detail::as_test(f(static_cast<Args&&>(args)...));
+};
+template <class F, class... Args>
+concept nothrow_test_with = requires(F const& f, Args&&... args) {
+    { detail::as_test(f(static_cast<Args&&>(args)...)) }
+    noexcept;
+};
+
 // Whether a callable has one of the signatures below: what make_chart checks
 // (detail/checks/signatures.hpp) and what these helpers call.
 template <class G, class Ctx, class E>
-inline constexpr bool guard_callable = std::is_invocable_r_v<bool, G const&, Ctx const&, E const&> ||
-                                       std::is_invocable_r_v<bool, G const&, Ctx const&> ||
-                                       std::is_invocable_r_v<bool, G const&>;
+inline constexpr bool guard_callable = test_with<G, Ctx const&, E const&> || test_with<G, Ctx const&> || test_with<G>;
 template <class A, class Ctx, class E, class Raise>
-inline constexpr bool action_callable = std::is_invocable_v<A const&, Ctx&, E const&, Raise&> ||
-                                        std::is_invocable_v<A const&, Ctx&, E const&> ||
-                                        std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+inline constexpr bool action_callable = callable_with<A, Ctx&, E const&, Raise&> || callable_with<A, Ctx&, E const&> ||
+                                        callable_with<A, Ctx&> || callable_with<A>;
 template <class A, class Ctx, class Raise>
-inline constexpr bool state_action_callable = std::is_invocable_v<A const&, Ctx&, Raise&> ||
-                                              std::is_invocable_v<A const&, Ctx&> || std::is_invocable_v<A const&>;
+inline constexpr bool state_action_callable = callable_with<A, Ctx&, Raise&> || callable_with<A, Ctx&> ||
+                                              callable_with<A>;
 
 // Whether the call these helpers make cannot throw: the form they pick is noexcept. A chart
 // none of whose guards and actions can throw needs no record of failures (detail/runtime/machine_data.hpp, may_throw).
 template <class G, class Ctx, class E>
 constexpr bool guard_nothrow() {
-    if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&, E const&>)
-        return std::is_nothrow_invocable_r_v<bool, G const&, Ctx const&, E const&>;
-    else if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&>)
-        return std::is_nothrow_invocable_r_v<bool, G const&, Ctx const&>;
+    if constexpr (test_with<G, Ctx const&, E const&>)
+        return nothrow_test_with<G, Ctx const&, E const&>;
+    else if constexpr (test_with<G, Ctx const&>)
+        return nothrow_test_with<G, Ctx const&>;
     else
-        return std::is_nothrow_invocable_r_v<bool, G const&>;
+        return nothrow_test_with<G>;
 }
 template <class A, class Ctx, class E, class Raise>
 constexpr bool action_nothrow() {
-    if constexpr (std::is_invocable_v<A const&, Ctx&, E const&, Raise&>)
-        return std::is_nothrow_invocable_v<A const&, Ctx&, E const&, Raise&>;
-    else if constexpr (std::is_invocable_v<A const&, Ctx&, E const&>)
-        return std::is_nothrow_invocable_v<A const&, Ctx&, E const&>;
-    else if constexpr (std::is_invocable_v<A const&, Ctx&>)
-        return std::is_nothrow_invocable_v<A const&, Ctx&>;
+    if constexpr (callable_with<A, Ctx&, E const&, Raise&>)
+        return nothrow_callable_with<A, Ctx&, E const&, Raise&>;
+    else if constexpr (callable_with<A, Ctx&, E const&>)
+        return nothrow_callable_with<A, Ctx&, E const&>;
+    else if constexpr (callable_with<A, Ctx&>)
+        return nothrow_callable_with<A, Ctx&>;
     else
-        return std::is_nothrow_invocable_v<A const&>;
+        return nothrow_callable_with<A>;
 }
 template <class A, class Ctx, class Raise>
 constexpr bool state_action_nothrow() {
-    if constexpr (std::is_invocable_v<A const&, Ctx&, Raise&>)
-        return std::is_nothrow_invocable_v<A const&, Ctx&, Raise&>;
-    else if constexpr (std::is_invocable_v<A const&, Ctx&>)
-        return std::is_nothrow_invocable_v<A const&, Ctx&>;
+    if constexpr (callable_with<A, Ctx&, Raise&>)
+        return nothrow_callable_with<A, Ctx&, Raise&>;
+    else if constexpr (callable_with<A, Ctx&>)
+        return nothrow_callable_with<A, Ctx&>;
     else
-        return std::is_nothrow_invocable_v<A const&>;
+        return nothrow_callable_with<A>;
 }
 
 template <class G, class Ctx, class E>
 constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) noexcept(guard_nothrow<G, Ctx, E>()) {
-    if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&, E const&>)
+    if constexpr (test_with<G, Ctx const&, E const&>)
         return static_cast<bool>(g(ctx, e));
-    else if constexpr (std::is_invocable_r_v<bool, G const&, Ctx const&>)
+    else if constexpr (test_with<G, Ctx const&>)
         return static_cast<bool>(g(ctx));
-    else if constexpr (std::is_invocable_r_v<bool, G const&>)
+    else if constexpr (test_with<G>)
         return static_cast<bool>(g());
     else
         return report<error::guard_signature_not_supported<G>>();
@@ -1535,13 +1558,13 @@ constexpr bool call_guard(G const& g, Ctx const& ctx, E const& e) noexcept(guard
 template <class A, class Ctx, class E, class Raise>
 constexpr void call_action(A const& a, Ctx& ctx, E const& e,
                            Raise& raise) noexcept(action_nothrow<A, Ctx, E, Raise>()) {
-    if constexpr (std::is_invocable_v<A const&, Ctx&, E const&, Raise&>)
+    if constexpr (callable_with<A, Ctx&, E const&, Raise&>)
         a(ctx, e, raise);
-    else if constexpr (std::is_invocable_v<A const&, Ctx&, E const&>)
+    else if constexpr (callable_with<A, Ctx&, E const&>)
         a(ctx, e);
-    else if constexpr (std::is_invocable_v<A const&, Ctx&>)
+    else if constexpr (callable_with<A, Ctx&>)
         a(ctx);
-    else if constexpr (std::is_invocable_v<A const&>)
+    else if constexpr (callable_with<A>)
         a();
     else
         detail::report<error::action_signature_not_supported<A>>();
@@ -1549,11 +1572,11 @@ constexpr void call_action(A const& a, Ctx& ctx, E const& e,
 
 template <class A, class Ctx, class Raise>
 constexpr void call_state_action(A const& a, Ctx& ctx, Raise& raise) noexcept(state_action_nothrow<A, Ctx, Raise>()) {
-    if constexpr (std::is_invocable_v<A const&, Ctx&, Raise&>)
+    if constexpr (callable_with<A, Ctx&, Raise&>)
         a(ctx, raise);
-    else if constexpr (std::is_invocable_v<A const&, Ctx&>)
+    else if constexpr (callable_with<A, Ctx&>)
         a(ctx);
-    else if constexpr (std::is_invocable_v<A const&>)
+    else if constexpr (callable_with<A>)
         a();
     else
         detail::report<error::action_signature_not_supported<A>>();
@@ -1719,7 +1742,7 @@ struct action_seq : action_base {
     [[no_unique_address]] std::tuple<As...> actions;
     template <class Ctx, class E, class Raise>
     constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const
-        noexcept((std::is_nothrow_invocable_v<As const&, Ctx&, E const&, Raise&> && ...)) {
+        noexcept((nothrow_callable_with<As, Ctx&, E const&, Raise&> && ...)) {
         std::apply([&](auto const&... a) { (a(ctx, e, raise), ...); }, actions);
     }
 };
@@ -1768,7 +1791,7 @@ struct state_action {
     template <class Ctx, class Raise>
     static constexpr bool nothrow() {
         if constexpr (bsc_action<A>)
-            return std::is_nothrow_invocable_v<A const&, Ctx&, state_change const&, Raise&>;
+            return nothrow_callable_with<A, Ctx&, state_change const&, Raise&>;
         else
             return state_action_nothrow<A, Ctx, Raise>();
     }
@@ -1819,11 +1842,11 @@ constexpr bool may_raise(defer_action const*) {
 }
 template <class Ctx, class E, class Raise, class F>
 constexpr bool may_raise(action_fn<F> const*) {
-    return std::is_invocable_v<F const&, Ctx&, E const&, Raise&>;
+    return callable_with<F, Ctx&, E const&, Raise&>;
 }
 template <class Ctx, class E, class Raise, class A>
 constexpr bool may_raise(state_action<A> const*) {  // a plain callable of an entry or exit row
-    return std::is_invocable_v<A const&, Ctx&, Raise&>;
+    return callable_with<A, Ctx&, Raise&>;
 }
 
 // The callable of bsc::raise(e): a type of its own, so that the machine knows which event such an
@@ -4146,8 +4169,8 @@ template <class Name, class F>
 struct named_callable : Name {
     [[no_unique_address]] F fn;
     template <class... Args>
-        requires std::is_invocable_v<F const&, Args...>
-    constexpr decltype(auto) operator()(Args&&... args) const noexcept(std::is_nothrow_invocable_v<F const&, Args...>) {
+        requires callable_with<F, Args...>
+    constexpr decltype(auto) operator()(Args&&... args) const noexcept(nothrow_callable_with<F, Args...>) {
         return fn(std::forward<Args>(args)...);
     }
 };
@@ -9634,18 +9657,18 @@ namespace bsc::detail {
 // (context, queue).
 template <class Context, class Queue, class Row>
 struct row_nothrow {  // an entry or exit row
-    static constexpr bool value = std::is_nothrow_invocable_v<decltype(Row::action) const&, Context&, Queue&>;
+    static constexpr bool value = nothrow_callable_with<decltype(Row::action), Context&, Queue&>;
 };
 template <class G, class Context, class E, bool = tests_configuration<G>>
-inline constexpr bool guard_call_nothrow = std::is_nothrow_invocable_v<G const&, Context const&, E const&>;
+inline constexpr bool guard_call_nothrow = nothrow_callable_with<G, Context const&, E const&>;
 template <class G, class Context, class E>
 inline constexpr bool guard_call_nothrow<G, Context, E, true> =
-    std::is_nothrow_invocable_v<G const&, Context const&, E const&, any_configuration const&>;
+    nothrow_callable_with<G, Context const&, E const&, any_configuration const&>;
 template <class Context, class Queue, class S, class Trigger, class G, class A, class T>
 struct row_nothrow<Context, Queue, transition_row<S, Trigger, G, A, T>> {
     using event = row_event_t<transition_row<S, Trigger, G, A, T>>;
     static constexpr bool value = guard_call_nothrow<G, Context, event> &&
-                                  std::is_nothrow_invocable_v<A const&, Context&, event const&, Queue&>;
+                                  nothrow_callable_with<A, Context&, event const&, Queue&>;
 };
 
 // Whether any guard or action of the chart can throw. If none can (each is noexcept, or the

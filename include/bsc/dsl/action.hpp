@@ -41,7 +41,7 @@ struct action_seq : action_base {
     [[no_unique_address]] std::tuple<As...> actions;
     template <class Ctx, class E, class Raise>
     constexpr void operator()(Ctx& ctx, E const& e, Raise& raise) const
-        noexcept((std::is_nothrow_invocable_v<As const&, Ctx&, E const&, Raise&> && ...)) {
+        noexcept((nothrow_callable_with<As, Ctx&, E const&, Raise&> && ...)) {
         std::apply([&](auto const&... a) { (a(ctx, e, raise), ...); }, actions);
     }
 };
@@ -90,7 +90,7 @@ struct state_action {
     template <class Ctx, class Raise>
     static constexpr bool nothrow() {
         if constexpr (bsc_action<A>)
-            return std::is_nothrow_invocable_v<A const&, Ctx&, state_change const&, Raise&>;
+            return nothrow_callable_with<A, Ctx&, state_change const&, Raise&>;
         else
             return state_action_nothrow<A, Ctx, Raise>();
     }
@@ -141,11 +141,11 @@ constexpr bool may_raise(defer_action const*) {
 }
 template <class Ctx, class E, class Raise, class F>
 constexpr bool may_raise(action_fn<F> const*) {
-    return std::is_invocable_v<F const&, Ctx&, E const&, Raise&>;
+    return callable_with<F, Ctx&, E const&, Raise&>;
 }
 template <class Ctx, class E, class Raise, class A>
 constexpr bool may_raise(state_action<A> const*) {  // a plain callable of an entry or exit row
-    return std::is_invocable_v<A const&, Ctx&, Raise&>;
+    return callable_with<A, Ctx&, Raise&>;
 }
 
 // The callable of bsc::raise(e): a type of its own, so that the machine knows which event such an

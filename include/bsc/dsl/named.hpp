@@ -22,6 +22,7 @@
 #include <utility>
 
 #include <bsc/detail/fixed_string.hpp>
+#include <bsc/detail/invoke.hpp>
 #include <bsc/dsl/action.hpp>
 #include <bsc/dsl/guard.hpp>
 
@@ -55,8 +56,8 @@ template <class Name, class F>
 struct named_callable : Name {
     [[no_unique_address]] F fn;
     template <class... Args>
-        requires std::is_invocable_v<F const&, Args...>
-    constexpr decltype(auto) operator()(Args&&... args) const noexcept(std::is_nothrow_invocable_v<F const&, Args...>) {
+        requires callable_with<F, Args...>
+    constexpr decltype(auto) operator()(Args&&... args) const noexcept(nothrow_callable_with<F, Args...>) {
         return fn(std::forward<Args>(args)...);
     }
 };

@@ -15,6 +15,7 @@
 #include <bsc/chart_ref.hpp>
 #include <bsc/configuration.hpp>
 #include <bsc/detail/machine_base.hpp>
+#include <bsc/detail/invoke.hpp>
 #include <bsc/detail/meta.hpp>
 #include <bsc/detail/model/completion.hpp>
 #include <bsc/detail/model/layout.hpp>
@@ -35,18 +36,18 @@ namespace bsc::detail {
 // (context, queue).
 template <class Context, class Queue, class Row>
 struct row_nothrow {  // an entry or exit row
-    static constexpr bool value = std::is_nothrow_invocable_v<decltype(Row::action) const&, Context&, Queue&>;
+    static constexpr bool value = nothrow_callable_with<decltype(Row::action), Context&, Queue&>;
 };
 template <class G, class Context, class E, bool = tests_configuration<G>>
-inline constexpr bool guard_call_nothrow = std::is_nothrow_invocable_v<G const&, Context const&, E const&>;
+inline constexpr bool guard_call_nothrow = nothrow_callable_with<G, Context const&, E const&>;
 template <class G, class Context, class E>
 inline constexpr bool guard_call_nothrow<G, Context, E, true> =
-    std::is_nothrow_invocable_v<G const&, Context const&, E const&, any_configuration const&>;
+    nothrow_callable_with<G, Context const&, E const&, any_configuration const&>;
 template <class Context, class Queue, class S, class Trigger, class G, class A, class T>
 struct row_nothrow<Context, Queue, transition_row<S, Trigger, G, A, T>> {
     using event = row_event_t<transition_row<S, Trigger, G, A, T>>;
     static constexpr bool value = guard_call_nothrow<G, Context, event> &&
-                                  std::is_nothrow_invocable_v<A const&, Context&, event const&, Queue&>;
+                                  nothrow_callable_with<A, Context&, event const&, Queue&>;
 };
 
 // Whether any guard or action of the chart can throw. If none can (each is noexcept, or the
