@@ -11478,7 +11478,8 @@ class machine : public detail::driver<machine<Chart, Policy, Observer>, Chart, P
     friend class detail::done_raising;
     // A dispatch marks the machine running only where a guard or a transition is about to run
     // (guard_holds, fire_from), or, in a chart with parallel states, at each microstep: an
-    // ignored event in a chart without parallel states writes nothing.
+    // ignored event in a chart without parallel states writes nothing. (What a run takes after
+    // its dispatched event, raised, deferred and eventless, is marked before its walk: fire().)
     static constexpr bool marks_running_lazily = true;
     using typename base::model;
     using plan = detail::plan<model>;
@@ -12074,8 +12075,21 @@ private:
     // become one straight-line nest of switches for the trigger, whatever the compiler's
     // inlining budget for the function that dispatches (a dispatch of a parallel chart otherwise
     // ended up as calls of the walk's lambdas, which cost more than the walk).
+    // (Marked running once, before the walk, where no parallel state marks each microstep: what
+    // fire() takes, a raised, deferred or eventless event, comes within a run, where running
+    // user code is likely; the walk's own marks (guard_holds, fire_from) then write what is
+    // there. Marked only in each transition instead, the walk of a trigger that every state
+    // takes alike, as fsm-benchmark's Large takes the event its exits raise, kept a switch on
+    // the state for the mark alone: docs/performance.md, rule "Marked before a walk within a run".)
     template <int Trigger, class E>
     BSC_DETAIL_FLATTEN constexpr bool fire(E const& e) {
+        if constexpr (!plan::has_parallel) this->mark_running();
+        return select_and_fire<Trigger>(e);
+    }
+    // fire() for a dispatched event, marked only where a guard or transition runs: an ignored
+    // event writes nothing.
+    template <int Trigger, class E>
+    BSC_DETAIL_FLATTEN constexpr bool fire_marking_lazily(E const& e) {
         return select_and_fire<Trigger>(e);
     }
     // fire() for a dispatched event. Where the dispatch has nothing to do after it but record
@@ -12095,7 +12109,7 @@ private:
         if constexpr (dispatch_fires_in_line)
             return fire_in_line<Trigger>(e);
         else
-            return fire<Trigger>(e);
+            return fire_marking_lazily<Trigger>(e);
     }
     // (Flattened before it is put in line: GCC does not flatten what an always-inline function
     // brings into a flattened one, hence select_and_fire itself, not fire().)
