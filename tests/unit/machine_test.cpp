@@ -232,30 +232,27 @@ struct After;
 struct log {
     std::string text;
 };
-// Completions two deep: go ends Inner, whose completion ends Outer, whose completion leaves it.
-inline constexpr auto chained = bsc::make_chart<log>(
-    bsc::composite<Root>(bsc::initial<Outer>,
-                         bsc::composite<Outer>(bsc::initial<Inner>,
-                                               bsc::composite<Inner>(bsc::initial<A>, bsc::final_state<InnerDone>),
-                                               bsc::final_state<OuterDone>),
-                         bsc::state<After>),
-    bsc::state<A> + bsc::event<go> / [](log& l) { l.text += "a"; } = bsc::state<InnerDone>,
-    bsc::state<Inner> + bsc::event<bsc::done<Inner>> / [](log& l) { l.text += "i"; } = bsc::state<OuterDone>,
-    bsc::state<Outer> + bsc::event<bsc::done<Outer>> / [](log& l) { l.text += "o"; } = bsc::state<After>,
+// Completions two deep: go ends Inner, whose completion ends Outer, whose completion leaves it;
+// and `more` rows besides.
+template <class... More>
+constexpr auto completions_two_deep(More... more) {
+    return bsc::make_chart<log>(
+        bsc::composite<Root>(bsc::initial<Outer>,
+                             bsc::composite<Outer>(bsc::initial<Inner>,
+                                                   bsc::composite<Inner>(bsc::initial<A>, bsc::final_state<InnerDone>),
+                                                   bsc::final_state<OuterDone>),
+                             bsc::state<After>),
+        bsc::state<A> + bsc::event<go> / [](log& l) { l.text += "a"; } = bsc::state<InnerDone>,
+        bsc::state<Inner> + bsc::event<bsc::done<Inner>> / [](log& l) { l.text += "i"; } = bsc::state<OuterDone>,
+        bsc::state<Outer> + bsc::event<bsc::done<Outer>> / [](log& l) { l.text += "o"; } = bsc::state<After>, more...);
+}
+inline constexpr auto chained = completions_two_deep(
     bsc::state<After> + bsc::event<go> / [](log& l) { l.text += "r"; } = bsc::state<Outer>);
 struct no_queue : bsc::default_policy {
     static constexpr std::size_t queue_capacity = 0;
 };
 // The same with an eventless row: taken before queued events, it could add one more.
-inline constexpr auto chained_eventless = bsc::make_chart<log>(
-    bsc::composite<Root>(bsc::initial<Outer>,
-                         bsc::composite<Outer>(bsc::initial<Inner>,
-                                               bsc::composite<Inner>(bsc::initial<A>, bsc::final_state<InnerDone>),
-                                               bsc::final_state<OuterDone>),
-                         bsc::state<After>),
-    bsc::state<A> + bsc::event<go> / [](log& l) { l.text += "a"; } = bsc::state<InnerDone>,
-    bsc::state<Inner> + bsc::event<bsc::done<Inner>> / [](log& l) { l.text += "i"; } = bsc::state<OuterDone>,
-    bsc::state<Outer> + bsc::event<bsc::done<Outer>> / [](log& l) { l.text += "o"; } = bsc::state<After>,
+inline constexpr auto chained_eventless = completions_two_deep(
     bsc::state<After> + bsc::event<tick> = bsc::state<Outer>,
     bsc::state<After>[([](log const& l) { return l.text.size() > 100; })] = bsc::state<Outer>);
 }  // namespace mt3
