@@ -2,6 +2,7 @@
 // The chart's second table: transition rows `source + trigger [guard] / action = target`,
 // and entry/exit rows `state<S> + on_entry / action`.
 
+#include <charconv>
 #include <cstddef>
 #include <cstdlib>
 #include <stdexcept>
@@ -29,17 +30,6 @@ template <class E>
 struct event_trigger {
     using event = E;
 };
-// The decimal digits of n written into out, which has room for 20; returns their end.
-inline char* write_decimal(char* out, std::size_t n) {
-    char digits[20];
-    std::size_t count = 0;
-    do {
-        digits[count++] = static_cast<char>('0' + n % 10);
-        n /= 10;
-    } while (n != 0);
-    while (count != 0) *out++ = digits[--count];
-    return out;
-}
 // Deliberately not constexpr (as bsc_after_negative_delay below): in a constexpr chart, reaching
 // it is the compile error, and its name says what is wrong; a chart built at run time throws.
 // (The message is written into a buffer, not built as a std::string: the body of an inline
@@ -53,13 +43,17 @@ inline char* write_decimal(char* out, std::size_t n) {
     constexpr char tail[] =
         " leaves its state first, every time, with a shorter (or equal) delay, from the same state or "
         "from a state below it that is active whenever it is";
-    char message[sizeof head + sizeof middle + sizeof tail + 40];
+    char message[sizeof head + sizeof middle + sizeof tail + 40];  // each number in 20 digits at most
     char* end = message;
-    for (char c : head) *end++ = c;
-    end = write_decimal(end - 1, row);  // over head's terminating zero
-    for (char c : middle) *end++ = c;
-    end = write_decimal(end - 1, fires_first);
-    for (char c : tail) *end++ = c;
+    auto const append = [&](char const* text) {
+        while (*text != '\0') *end++ = *text++;
+    };
+    append(head);
+    end = std::to_chars(end, message + sizeof message, row).ptr;
+    append(middle);
+    end = std::to_chars(end, message + sizeof message, fires_first).ptr;
+    append(tail);
+    *end = '\0';
     throw std::invalid_argument(message);
 #else
     (void)row;
