@@ -11286,16 +11286,9 @@ struct queue_of<Capacity, type_list<E>> {
 // a ring's arithmetic (docs/performance.md, rule "A completion waits in one slot").
 template <class Model, class Raised>
 constexpr bool one_completion_at_a_time() {
-    if constexpr (!std::is_same_v<Raised, type_list<>> || Model::template trigger_of<action_failed>::value >= 0) {
-        return false;
-    } else {
-        for (auto const k : Model::tree.kinds)
-            if (k == kind::parallel) return false;
-        for (std::size_t r = 0; r < Model::rows.trigger.size(); ++r)
-            if (Model::rows.kinds[r] == row_kind::transition && (Model::rows.trigger[r] < 0 || Model::rows.defers[r]))
-                return false;
-        return true;
-    }
+    using layout = chart_layout<Model>;
+    return std::is_same_v<Raised, type_list<>> && Model::template trigger_of<action_failed>::value < 0 &&
+           !layout::has_parallel && !layout::has_trigger(any_condition) && !Model::has_deferral;
 }
 
 // The queue of raised events, worked out only for a chart that has one.
