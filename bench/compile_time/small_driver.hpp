@@ -19,7 +19,18 @@ void time_loop(Loop const& loop) {
 
 template <class Machine>
 void print_size(Machine const& machine) {
-    std::cout << "machine of " << sizeof(machine) << " bytes\n";
+    std::cout << "it takes " << sizeof(machine) << " bytes\n";
+}
+
+// The program of the header probes: a loop timed and a size printed, with no chart, so that a
+// probe differs from its reference by an #include only.
+inline int program_without_chart() {
+    int counted = 0;
+    time_loop([&] {
+        for (int i = 0; i < 1'000'000; ++i) counted += i & 1;
+    });
+    print_size(counted);
+    return 0;
 }
 
 }  // namespace probe_driver
